@@ -1,0 +1,41 @@
+# chaindrive: the set-up contract. `make demo` and `make test` work on a fresh machine
+# with Python >= 3.10 and make.
+PYTHON ?= python3
+VENV := .venv
+PY := $(VENV)/bin/python
+OUT ?= out
+
+.PHONY: demo test bench lint clean venv
+
+$(VENV)/bin/python:
+	$(PYTHON) -m venv $(VENV)
+	$(PY) -m pip install --quiet --upgrade pip
+
+$(VENV)/.installed-all: pyproject.toml | $(VENV)/bin/python
+	$(PY) -m pip install --quiet -e '.[all]'
+	touch $@
+
+$(VENV)/.installed-test: pyproject.toml | $(VENV)/bin/python
+	$(PY) -m pip install --quiet -e '.[test]'
+	touch $@ $(VENV)/.installed-all
+
+$(VENV)/.installed-bench: pyproject.toml | $(VENV)/bin/python
+	$(PY) -m pip install --quiet -e '.[bench]'
+	touch $@ $(VENV)/.installed-all
+
+venv: $(VENV)/.installed-all
+
+demo: $(VENV)/.installed-all
+	$(VENV)/bin/chaindrive demo --output $(OUT)
+
+test: $(VENV)/.installed-test
+	MPLBACKEND=Agg $(PY) -m pytest -n 2 -q
+
+bench: $(VENV)/.installed-bench
+	MPLBACKEND=Agg $(PY) benchmarks/run_all.py
+
+lint: $(VENV)/.installed-test
+	$(VENV)/bin/ruff check src tests benchmarks
+
+clean:
+	rm -rf $(VENV) $(OUT) .pytest_cache build dist

@@ -1,0 +1,104 @@
+"""Input checks shared by the pure functions (internal).
+
+Each check names the parameter and the valid range in its message and raises
+:class:`chaindrive.errors.InputError`; nothing is clamped silently.
+"""
+
+from __future__ import annotations
+
+import warnings
+
+import numpy as np
+
+from .errors import InputError, ValidityRangeWarning
+
+__all__ = [
+    "as_float_array",
+    "check_positive",
+    "check_nonnegative",
+    "check_range",
+    "check_teeth",
+    "warn_outside",
+]
+
+
+def as_float_array(name: str, value) -> np.ndarray:
+    """Convert ``value`` to a float array, rejecting NaN and non-numbers."""
+    try:
+        arr = np.asarray(value, dtype=float)
+    except (TypeError, ValueError) as exc:
+        raise InputError(f"{name} must be a number or an array of numbers, got {value!r}") from exc
+    if np.any(np.isnan(arr)):
+        raise InputError(f"{name} must not be NaN")
+    return arr
+
+
+def check_positive(name: str, value, unit: str = "") -> np.ndarray:
+    """Require ``0 < value < inf``."""
+    arr = as_float_array(name, value)
+    if np.any(arr <= 0) or np.any(~np.isfinite(arr)):
+        raise InputError(
+            f"{name} must be positive and finite (0 < {name} < inf{' ' + unit if unit else ''}), "
+            f"got {_show(arr)}"
+        )
+    return arr
+
+
+def check_nonnegative(name: str, value, unit: str = "") -> np.ndarray:
+    """Require ``0 <= value < inf``."""
+    arr = as_float_array(name, value)
+    if np.any(arr < 0) or np.any(~np.isfinite(arr)):
+        raise InputError(
+            f"{name} must be non-negative and finite (0 <= {name} < inf{' ' + unit if unit else ''}), "
+            f"got {_show(arr)}"
+        )
+    return arr
+
+
+def check_range(
+    name: str,
+    value,
+    low: float = -np.inf,
+    high: float = np.inf,
+    *,
+    low_inclusive: bool = True,
+    high_inclusive: bool = True,
+    unit: str = "",
+) -> np.ndarray:
+    """Require ``low <(=) value <(=) high``."""
+    arr = as_float_array(name, value)
+    lo_ok = arr >= low if low_inclusive else arr > low
+    hi_ok = arr <= high if high_inclusive else arr < high
+    if not np.all(lo_ok & hi_ok):
+        lb = "[" if low_inclusive else "("
+        hb = "]" if high_inclusive else ")"
+        raise InputError(
+            f"{name} must lie in {lb}{low:g}, {high:g}{hb}{' ' + unit if unit else ''}, got {_show(arr)}"
+        )
+    return arr
+
+
+def check_teeth(name: str, value, minimum: int = 3) -> np.ndarray:
+    """Require an integer tooth count ``>= minimum``."""
+    arr = as_float_array(name, value)
+    if np.any(arr != np.round(arr)) or np.any(arr < minimum):
+        raise InputError(f"{name} must be a whole number >= {minimum}, got {_show(arr)}")
+    return arr.astype(int) if arr.ndim else arr.astype(int)
+
+
+def warn_outside(name: str, value, low: float, high: float, source: str, stacklevel: int = 3) -> None:
+    """Warn (do not raise) when an empirical formula is used outside its range."""
+    arr = np.asarray(value, dtype=float)
+    if np.any(arr < low) or np.any(arr > high):
+        warnings.warn(
+            f"{name} = {_show(arr)} is outside the validity range [{low:g}, {high:g}] of {source}",
+            ValidityRangeWarning,
+            stacklevel=stacklevel,
+        )
+
+
+def _show(arr: np.ndarray) -> str:
+    if arr.ndim == 0:
+        return f"{float(arr):g}"
+    bad = arr.ravel()
+    return "[" + ", ".join(f"{v:g}" for v in bad[:5]) + (", ...]" if bad.size > 5 else "]")

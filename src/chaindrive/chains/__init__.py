@@ -1,0 +1,1 @@
+"""chaindrive.chains (see module docs)."""

@@ -1,0 +1,60 @@
+"""Command-line interface ``chaindrive``.
+
+Each topic registers its subcommands in its own module (``cli/<topic>.py``) through
+:func:`chaindrive.cli.app.register`; this keeps the topics independent.
+Errors of the package (:class:`~chaindrive.errors.ChainDriveError`) are printed as one
+line on stderr with exit code 2, never as a traceback.
+"""
+
+from __future__ import annotations
+
+import importlib
+import sys
+
+from ..errors import ChainDriveError
+from .app import app
+
+#: Topic modules that add subcommands; a missing optional one is skipped.
+TOPICS = (
+    "demo",
+    "chains",
+    "kinematics",
+    "vibration",
+    "geometry",
+    "strength",
+    "drive",
+    "simulate",
+    "web",
+)
+
+for _topic in TOPICS:
+    try:
+        importlib.import_module(f"{__name__}.{_topic}")
+    except ModuleNotFoundError as exc:  # a topic module not written yet
+        if exc.name != f"{__name__}.{_topic}":
+            raise
+
+
+def main(argv: list[str] | None = None) -> int:
+    """Entry point of the ``chaindrive`` command; returns the exit code."""
+    try:
+        app(args=argv, prog_name="chaindrive", standalone_mode=False)
+    except ChainDriveError as exc:
+        print(f"error: {exc}", file=sys.stderr)
+        return 2
+    except SystemExit as exc:  # typer/click exits
+        return int(exc.code or 0)
+    except Exception as exc:  # click usage errors in non-standalone mode
+        import click
+
+        if isinstance(exc, click.exceptions.ClickException):
+            exc.show()
+            return 2
+        if isinstance(exc, click.exceptions.Abort):
+            return 1
+        raise
+    return 0
+
+
+if __name__ == "__main__":  # pragma: no cover
+    sys.exit(main())

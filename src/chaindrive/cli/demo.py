@@ -1,0 +1,19 @@
+"""``chaindrive demo``: run the main job on a built-in example (used by ``make demo``)."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import typer
+
+from .app import app
+
+
+@app.command("demo")
+def demo(
+    output: Path = typer.Option(Path("out"), "--output", "-o", help="Folder for the results."),
+) -> None:
+    """Run the built-in example (seed 002: chain 18x64, z = 8, ω = 5 rad/s, l = 0.256 m)."""
+    from ..workflows.demo import run_demo
+
+    run_demo(output)

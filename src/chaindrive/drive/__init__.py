@@ -1,0 +1,1 @@
+"""chaindrive.drive (see module docs)."""

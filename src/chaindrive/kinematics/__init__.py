@@ -1,0 +1,1 @@
+"""chaindrive.kinematics (see module docs)."""

@@ -1,0 +1,1 @@
+"""chaindrive.plotting (see module docs)."""

@@ -1,0 +1,1 @@
+"""chaindrive.simulation (see module docs)."""

@@ -1,0 +1,1 @@
+"""chaindrive.strength (see module docs)."""

@@ -1,0 +1,1 @@
+"""chaindrive.vibration (see module docs)."""

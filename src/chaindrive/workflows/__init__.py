@@ -1,0 +1,1 @@
+"""Workflows on top of the core: demo, analysis pipeline, reports."""

@@ -1,0 +1,21 @@
+"""The CLI's shell: help, demo, error handling."""
+
+import json
+
+from chaindrive.cli import main
+
+
+def test_help_lists_commands(capsys):
+    assert main(["--help"]) == 0
+    out = capsys.readouterr().out
+    assert "demo" in out
+
+
+def test_demo_writes_output(tmp_path, capsys):
+    assert main(["demo", "--output", str(tmp_path)]) == 0
+    assert "results written to" in capsys.readouterr().out
+    assert (tmp_path / "demo.json").exists() or any(tmp_path.iterdir())
+
+
+def test_unknown_command_is_exit_2(capsys):
+    assert main(["no-such-command"]) == 2
