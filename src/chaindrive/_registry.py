@@ -23,7 +23,7 @@ class Registry:
     >>> r.get("tripel")
     Traceback (most recent call last):
     ...
-    chaindrive.errors.UnknownNameError: unknown method 'tripel'; valid: 'double' (did you mean 'double'?)
+    chaindrive.errors.UnknownNameError: unknown method 'tripel'; valid: 'double'
     """
 
     def __init__(self, kind: str):

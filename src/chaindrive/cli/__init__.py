@@ -38,22 +38,20 @@ for _topic in TOPICS:
 def main(argv: list[str] | None = None) -> int:
     """Entry point of the ``chaindrive`` command; returns the exit code."""
     try:
-        app(args=argv, prog_name="chaindrive", standalone_mode=False)
+        rv = app(args=argv, prog_name="chaindrive", standalone_mode=False)
     except ChainDriveError as exc:
         print(f"error: {exc}", file=sys.stderr)
         return 2
     except SystemExit as exc:  # typer/click exits
         return int(exc.code or 0)
     except Exception as exc:  # click usage errors in non-standalone mode
-        import click
-
-        if isinstance(exc, click.exceptions.ClickException):
+        if hasattr(exc, "show") and hasattr(exc, "exit_code"):  # click.ClickException
             exc.show()
             return 2
-        if isinstance(exc, click.exceptions.Abort):
+        if type(exc).__name__ == "Abort":
             return 1
         raise
-    return 0
+    return rv if isinstance(rv, int) else 0
 
 
 if __name__ == "__main__":  # pragma: no cover

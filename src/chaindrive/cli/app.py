@@ -24,6 +24,11 @@ app = typer.Typer(
 )
 
 
+@app.callback()
+def _root() -> None:
+    """chaindrive: design and analysis of chain drives."""
+
+
 def quantity(text: str | None, unit: str, field: str) -> float | None:
     """Parse an option's text into ``unit`` (``None`` stays ``None``)."""
     if text is None:

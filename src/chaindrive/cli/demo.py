@@ -17,3 +17,11 @@ def demo(
     from ..workflows.demo import run_demo
 
     run_demo(output)
+
+
+@app.command("version")
+def version() -> None:
+    """Print the chaindrive version."""
+    from .. import __version__
+
+    print(__version__)
