@@ -1,0 +1,180 @@
+"""Calculation report: sections of tables, checks and figures, rendered to HTML or PDF.
+
+The HTML is self-contained (figures embedded as base64 PNG, CSS inline) so that one file
+is the calculation record. PDF is rendered from the same HTML with WeasyPrint.
+"""
+
+from __future__ import annotations
+
+import base64
+import dataclasses
+import datetime as _dt
+import io
+from pathlib import Path
+from typing import Any
+
+from .._results import Result, jsonable
+
+__all__ = ["Check", "Table", "Figure", "Section", "Report"]
+
+
+@dataclasses.dataclass
+class Check(Result):
+    """One verdict of the calculation.
+
+    ``passed`` is ``True``/``False`` for a check, ``None`` for information only.
+    ``reference`` names the seed equation, standard clause or book page behind it.
+    """
+
+    name: str
+    value: float | str
+    limit: str
+    unit: str
+    passed: bool | None
+    reference: str
+    detail: str = ""
+
+
+@dataclasses.dataclass
+class Table(Result):
+    """A table with a caption, headers and rows of plain values."""
+
+    caption: str
+    headers: list[str]
+    rows: list[list[Any]]
+
+
+@dataclasses.dataclass
+class Figure:
+    """A figure: caption plus PNG bytes (and the file name it is saved under)."""
+
+    caption: str
+    png: bytes
+    filename: str
+
+    @classmethod
+    def from_matplotlib(cls, fig, caption: str, filename: str, dpi: int = 110) -> Figure:
+        buf = io.BytesIO()
+        fig.savefig(buf, format="png", dpi=dpi, bbox_inches="tight")
+        import matplotlib.pyplot as plt
+
+        plt.close(fig)
+        return cls(caption=caption, png=buf.getvalue(), filename=filename)
+
+    @property
+    def data_uri(self) -> str:
+        return "data:image/png;base64," + base64.b64encode(self.png).decode("ascii")
+
+
+@dataclasses.dataclass
+class Section:
+    """A report section: text paragraphs, tables, checks, figures and warnings."""
+
+    title: str
+    paragraphs: list[str] = dataclasses.field(default_factory=list)
+    tables: list[Table] = dataclasses.field(default_factory=list)
+    checks: list[Check] = dataclasses.field(default_factory=list)
+    figures: list[Figure] = dataclasses.field(default_factory=list)
+    warnings: list[str] = dataclasses.field(default_factory=list)
+    results: dict[str, Any] = dataclasses.field(default_factory=dict)
+    skipped: str | None = None
+
+    @property
+    def passed(self) -> bool:
+        return all(c.passed is not False for c in self.checks)
+
+
+@dataclasses.dataclass
+class Report:
+    """The whole calculation record."""
+
+    title: str
+    subtitle: str = ""
+    inputs: Table | None = None
+    sections: list[Section] = dataclasses.field(default_factory=list)
+    created: str = dataclasses.field(
+        default_factory=lambda: _dt.datetime.now().strftime("%Y-%m-%d %H:%M")
+    )
+
+    @property
+    def checks(self) -> list[tuple[str, Check]]:
+        return [(s.title, c) for s in self.sections for c in s.checks]
+
+    @property
+    def passed(self) -> bool:
+        return all(s.passed for s in self.sections)
+
+    def to_dict(self) -> dict[str, Any]:
+        return {
+            "title": self.title,
+            "subtitle": self.subtitle,
+            "created": self.created,
+            "passed": self.passed,
+            "inputs": self.inputs.to_dict() if self.inputs else None,
+            "sections": {
+                s.title: {
+                    "skipped": s.skipped,
+                    "passed": s.passed,
+                    "checks": [c.to_dict() for c in s.checks],
+                    "warnings": list(s.warnings),
+                    "results": jsonable(s.results),
+                    "figures": [f.filename for f in s.figures],
+                }
+                for s in self.sections
+            },
+        }
+
+    def to_html(self) -> str:
+        import jinja2
+
+        from .. import __version__
+
+        env = jinja2.Environment(
+            loader=jinja2.FileSystemLoader(str(Path(__file__).parent / "templates")),
+            autoescape=jinja2.select_autoescape(["html"]),
+        )
+        env.filters["fmt"] = _fmt
+        return env.get_template("report.html").render(report=self, version=__version__)
+
+    def write_html(self, path: str | Path) -> Path:
+        path = Path(path)
+        path.write_text(self.to_html(), encoding="utf-8")
+        return path
+
+    def write_pdf(self, path: str | Path) -> Path:
+        try:
+            import weasyprint
+        except (ImportError, OSError) as exc:  # pragma: no cover - depends on install
+            from ..errors import InputError
+
+            raise InputError(
+                f"PDF output needs WeasyPrint (pip install 'chaindrive[pdf]'): {exc}"
+            ) from exc
+        path = Path(path)
+        weasyprint.HTML(string=self.to_html()).write_pdf(str(path))
+        return path
+
+    def write_figures(self, folder: str | Path) -> list[Path]:
+        folder = Path(folder)
+        out = []
+        for s in self.sections:
+            for f in s.figures:
+                p = folder / f.filename
+                p.write_bytes(f.png)
+                out.append(p)
+        return out
+
+
+def _fmt(value: Any, digits: int = 4) -> str:
+    """Format a number with ``digits`` significant digits; pass text through."""
+    if isinstance(value, bool):
+        return "yes" if value else "no"
+    if isinstance(value, int):
+        return str(value)
+    if isinstance(value, float):
+        if value == 0:
+            return "0"
+        if abs(value) >= 1e6 or abs(value) < 1e-3:
+            return f"{value:.{digits - 1}e}"
+        return f"{value:.{digits}g}"
+    return str(value)
