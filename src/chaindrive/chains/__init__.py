@@ -1,1 +1,20 @@
-"""chaindrive.chains (see module docs)."""
+"""Chain catalogue: ISO 606 roller chains, ANSI B29.1 numbers, DIN 22252 link chains.
+
+The data live in CSV files inside the package (``chaindrive/chains/data``, one file per
+family, in mm/kN/kg/m with the source of every row) and are converted to SI units when
+loaded. Sources, coverage and gaps: ``docs/chains.md``.
+
+Examples
+--------
+>>> from chaindrive import chains
+>>> chains.get("16B").pitch
+0.0254
+>>> chains.get("ANSI 40").roller_diameter == chains.get("08A").roller_diameter
+True
+>>> chains.get("18x64").breaking_force
+410000.0
+"""
+
+from ._catalogue import FAMILIES, Chain, catalogue, get, names, normalize_name
+
+__all__ = ["Chain", "FAMILIES", "get", "catalogue", "names", "normalize_name"]

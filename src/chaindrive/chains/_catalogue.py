@@ -1,0 +1,438 @@
+"""The chain catalogue: data classes, CSV loading and name lookup (internal).
+
+The public names are re-exported by :mod:`chaindrive.chains`.
+"""
+
+from __future__ import annotations
+
+import csv
+import dataclasses
+import difflib
+import math
+import re
+from dataclasses import dataclass
+from decimal import Decimal
+from functools import lru_cache
+from importlib import resources
+
+from ..errors import InputError, UnknownNameError
+
+__all__ = ["Chain", "FAMILIES", "get", "catalogue", "names", "normalize_name"]
+
+#: The chain families of the catalogue, in display order.
+FAMILIES: tuple[str, ...] = ("iso606", "ansi", "din22252")
+
+_MM = 1000  # mm per m
+_KN = Decimal("0.001")  # kN per N
+
+
+@dataclass(frozen=True)
+class Chain:
+    """One chain of the catalogue or a user-defined chain, in SI units.
+
+    Parameters
+    ----------
+    name : str
+        Canonical name, e.g. ``"16B-1"``, ``"ANSI 80-2"``, ``"18x64"``.
+    family : str
+        ``"iso606"``, ``"ansi"`` or ``"din22252"`` (``"custom"`` for :meth:`custom`
+        chains).
+    strands : int
+        Number of strands (1 simplex, 2 duplex, 3 triplex); 1 for link chains.
+    pitch : float
+        Chain pitch [m] (ISO 606 ``p``; DIN 22252 ``t``, the inner link length).
+    roller_diameter : float or None
+        Roller diameter [m] (ISO 606 ``d1`` max; the bush diameter of the rollerless
+        C-series chains 04C/06C); ``None`` for link chains.
+    bar_diameter : float or None
+        Bar (wire) diameter ``d`` of a round link chain [m]; ``None`` for roller chains.
+    inner_width : float or None
+        Width between the inner plates [m] (ISO 606 ``b1`` min, or the ANSI nominal
+        width where the row's source says so); link inner width for link chains.
+    pin_diameter : float or None
+        Pin (bearing pin) diameter [m] (ISO 606 ``d2`` max).
+    plate_height : float or None
+        Inner plate depth [m] (ISO 606 ``h2`` max).
+    transverse_pitch : float or None
+        Distance between strands [m] (ISO 606 ``pt``); ``None`` for simplex chains.
+    breaking_force : float or None
+        Minimum tensile (breaking) strength of the whole chain [N] (all strands).
+    mass_per_length : float or None
+        Mass per unit length [kg/m].
+    source : str
+        Where the values come from (standard, catalogue, which value is used).
+
+    Notes
+    -----
+    ``None`` means the value is not given by the standard or could not be confirmed
+    from a published source; it is never filled with a guess. The catalogue data and
+    their sources are described in ``docs/chains.md`` and in the comment header of each
+    CSV file in ``chaindrive/chains/data``.
+
+    Examples
+    --------
+    >>> from chaindrive.chains import get
+    >>> chain = get("16B")
+    >>> chain.pitch, chain.strands, chain.is_roller_chain
+    (0.0254, 1, True)
+    """
+
+    name: str
+    family: str
+    strands: int
+    pitch: float
+    roller_diameter: float | None
+    bar_diameter: float | None
+    inner_width: float | None
+    pin_diameter: float | None
+    plate_height: float | None
+    transverse_pitch: float | None
+    breaking_force: float | None
+    mass_per_length: float | None
+    source: str
+
+    @property
+    def is_link_chain(self) -> bool:
+        """``True`` for a round link chain (it has a bar diameter)."""
+        return self.bar_diameter is not None
+
+    @property
+    def is_roller_chain(self) -> bool:
+        """``True`` for a roller (or bush) chain."""
+        return self.bar_diameter is None
+
+    @classmethod
+    def custom(
+        cls,
+        name: str = "custom",
+        *,
+        pitch: float,
+        roller_diameter: float | None = None,
+        bar_diameter: float | None = None,
+        strands: int = 1,
+        inner_width: float | None = None,
+        pin_diameter: float | None = None,
+        plate_height: float | None = None,
+        transverse_pitch: float | None = None,
+        breaking_force: float | None = None,
+        mass_per_length: float | None = None,
+        source: str = "user-defined",
+    ) -> Chain:
+        """Build a user chain, checking every value (SI units).
+
+        Exactly one of ``roller_diameter`` (roller chain) and ``bar_diameter`` (round
+        link chain) must be given.
+
+        Parameters
+        ----------
+        name : str
+            A name for the chain.
+        pitch : float
+            Chain pitch [m], ``0 < pitch < inf``.
+        roller_diameter : float, optional
+            Roller diameter [m], ``0 < roller_diameter < pitch``.
+        bar_diameter : float, optional
+            Bar diameter of a round link chain [m], ``0 < bar_diameter < pitch``
+            (the links t + d and t - d of the bi-regular polygon need ``t > d``).
+        strands : int
+            Number of strands, a whole number ``>= 1`` (1 for a link chain).
+        inner_width, pin_diameter, plate_height : float, optional
+            Widths and diameters [m], each ``> 0``; ``pin_diameter < roller_diameter``.
+        transverse_pitch : float, optional
+            Strand spacing [m], ``> 0``, only for ``strands >= 2``.
+        breaking_force : float, optional
+            Minimum breaking force [N], ``> 0``.
+        mass_per_length : float, optional
+            Mass per length [kg/m], ``> 0``.
+        source : str
+            Provenance text.
+
+        Returns
+        -------
+        Chain
+            With ``family="custom"``.
+
+        Raises
+        ------
+        InputError
+            Naming the field and its valid range.
+
+        Examples
+        --------
+        >>> c = Chain.custom("my chain", pitch=0.0254, roller_diameter=0.01588)
+        >>> c.is_roller_chain, c.family
+        (True, 'custom')
+        >>> Chain.custom(pitch=0.064, bar_diameter=0.018).is_link_chain
+        True
+        """
+        p = _check_length("pitch", pitch, "0 < pitch < inf m")
+        if (roller_diameter is None) == (bar_diameter is None):
+            raise InputError(
+                "give exactly one of roller_diameter (roller chain) and bar_diameter "
+                "(round link chain)"
+            )
+        d1 = _check_below("roller_diameter", roller_diameter, p)
+        d = _check_below("bar_diameter", bar_diameter, p)
+        if isinstance(strands, bool) or not isinstance(strands, int) or strands < 1:
+            raise InputError(f"strands must be a whole number >= 1, got {strands!r}")
+        if d is not None and strands != 1:
+            raise InputError(f"strands must be 1 for a round link chain, got {strands}")
+        b1 = _check_length("inner_width", inner_width, "0 < inner_width < inf m")
+        d2 = _check_length("pin_diameter", pin_diameter, "0 < pin_diameter < roller_diameter m")
+        if d2 is not None and d1 is not None and d2 >= d1:
+            raise InputError(
+                f"pin_diameter must lie in (0, roller_diameter = {d1:g}) m, got {d2:g}"
+            )
+        h2 = _check_length("plate_height", plate_height, "0 < plate_height < inf m")
+        pt = _check_length("transverse_pitch", transverse_pitch, "0 < transverse_pitch < inf m")
+        if pt is not None and strands < 2:
+            raise InputError("transverse_pitch is only valid for strands >= 2 (got strands = 1)")
+        fb = _check_length("breaking_force", breaking_force, "0 < breaking_force < inf N")
+        q = _check_length("mass_per_length", mass_per_length, "0 < mass_per_length < inf kg/m")
+        return cls(
+            name=str(name),
+            family="custom",
+            strands=strands,
+            pitch=p,
+            roller_diameter=d1,
+            bar_diameter=d,
+            inner_width=b1,
+            pin_diameter=d2,
+            plate_height=h2,
+            transverse_pitch=pt,
+            breaking_force=fb,
+            mass_per_length=q,
+            source=str(source),
+        )
+
+    def to_dict(self) -> dict:
+        """The fields as a plain dict (SI units, ``None`` for missing values)."""
+        return dataclasses.asdict(self)
+
+
+def _check_length(field: str, value, range_text: str) -> float | None:
+    if value is None:
+        return None
+    try:
+        v = float(value)
+    except (TypeError, ValueError) as exc:
+        raise InputError(f"{field} must be a number ({range_text}), got {value!r}") from exc
+    if not math.isfinite(v) or v <= 0:
+        raise InputError(f"{field} must lie in {range_text}, got {v:g}")
+    return v
+
+
+def _check_below(field: str, value, pitch: float) -> float | None:
+    v = _check_length(field, value, f"0 < {field} < pitch = {pitch:g} m")
+    if v is not None and v >= pitch:
+        raise InputError(f"{field} must lie in (0, pitch = {pitch:g}) m, got {v:g}")
+    return v
+
+
+# --------------------------------------------------------------------------- loading
+
+
+def _rows(filename: str) -> list[dict[str, str]]:
+    text = resources.files(__package__).joinpath("data", filename).read_text(encoding="utf-8")
+    lines = [line for line in text.splitlines() if line.strip() and not line.startswith("#")]
+    return list(csv.DictReader(lines))
+
+
+def _num(text: str, per_si_unit: Decimal | int) -> float | None:
+    """Parse a CSV cell given in a unit with ``per_si_unit`` of it per SI unit.
+
+    Decimal arithmetic, so that "15.88" mm becomes the float nearest to 0.01588 m.
+    """
+    text = text.strip()
+    return None if text == "" else float(Decimal(text) / per_si_unit)
+
+
+def _iso606() -> list[Chain]:
+    chains = []
+    for r in _rows("iso606.csv"):
+        chains.append(
+            Chain(
+                name=r["name"],
+                family="iso606",
+                strands=int(r["strands"]),
+                pitch=_num(r["pitch_mm"], _MM),
+                roller_diameter=_num(r["roller_diameter_mm"], _MM),
+                bar_diameter=None,
+                inner_width=_num(r["inner_width_mm"], _MM),
+                pin_diameter=_num(r["pin_diameter_mm"], _MM),
+                plate_height=_num(r["plate_height_mm"], _MM),
+                transverse_pitch=_num(r["transverse_pitch_mm"], _MM),
+                breaking_force=_num(r["breaking_force_kN"], _KN),
+                mass_per_length=_num(r["mass_per_length_kg_m"], 1),
+                source=r["source"],
+            )
+        )
+    return chains
+
+
+def _ansi(iso: dict[str, Chain]) -> list[Chain]:
+    chains = []
+    for r in _rows("ansi.csv"):
+        twin = iso[r["iso_equivalent"]]
+        chains.append(
+            dataclasses.replace(
+                twin,
+                name=r["name"],
+                family="ansi",
+                breaking_force=_num(r["breaking_force_kN"], _KN),
+                source=r["source"],
+            )
+        )
+    return chains
+
+
+def _din22252() -> list[Chain]:
+    chains = []
+    for r in _rows("din22252.csv"):
+        chains.append(
+            Chain(
+                name=r["name"],
+                family="din22252",
+                strands=1,
+                pitch=_num(r["pitch_mm"], _MM),
+                roller_diameter=None,
+                bar_diameter=_num(r["bar_diameter_mm"], _MM),
+                inner_width=_num(r["inner_width_mm"], _MM),
+                pin_diameter=None,
+                plate_height=None,
+                transverse_pitch=None,
+                breaking_force=_num(r["breaking_force_kN"], _KN),
+                mass_per_length=_num(r["mass_per_length_kg_m"], 1),
+                source=r["source"],
+            )
+        )
+    return chains
+
+
+@lru_cache(maxsize=1)
+def _all() -> tuple[Chain, ...]:
+    iso = _iso606()
+    return tuple(iso) + tuple(_ansi({c.name: c for c in iso})) + tuple(_din22252())
+
+
+@lru_cache(maxsize=1)
+def _index() -> dict[str, Chain]:
+    """Lookup key -> chain, including the simplex aliases without ``-1``."""
+    index: dict[str, Chain] = {}
+    for chain in _all():
+        key = normalize_name(chain.name)
+        index[key] = chain
+        if chain.strands == 1 and key.endswith("-1") and chain.is_roller_chain:
+            index[key[:-2]] = chain
+    return index
+
+
+# --------------------------------------------------------------------------- lookup
+
+_ANSI_PREFIX = re.compile(r"^(ANSI|ASA|RS)(?=\d)")
+
+
+def normalize_name(name: str) -> str:
+    """The lookup key of a chain name: upper case, no blanks, ``x`` for the times sign.
+
+    ``"ANSI"``/``"ASA"``/``"RS"`` prefixes and bare ANSI numbers map to ``"ANSI<n>"``.
+
+    Examples
+    --------
+    >>> normalize_name(" ansi 80-2 "), normalize_name("80"), normalize_name("18 X 64")
+    ('ANSI80-2', 'ANSI80', '18X64')
+    >>> normalize_name("16b")
+    '16B'
+    """
+    key = re.sub(r"\s+", "", str(name)).upper().replace("×", "X").replace("*", "X")
+    key = key.replace("Ø", "").replace("⌀", "")
+    key = _ANSI_PREFIX.sub("ANSI", key)
+    if re.fullmatch(r"\d{2,3}(-\d)?", key):  # a bare ANSI number, e.g. "80" or "80-2"
+        key = "ANSI" + key
+    return key
+
+
+def _check_family(family: str | None) -> None:
+    if family is not None and family not in FAMILIES:
+        raise UnknownNameError(
+            f"unknown chain family {family!r}; valid families: {', '.join(FAMILIES)}"
+        )
+
+
+def get(name: str) -> Chain:
+    """Return the catalogue chain called ``name``.
+
+    Names are case and blank insensitive: ``"16B"`` (simplex), ``"16B-1"``,
+    ``"16B-2"``, ``"ANSI 80"``, ``"80"``, ``"ANSI 80-2"``, ``"18x64"``, ``"18 x 64"``,
+    ``"18X64"``.
+
+    Parameters
+    ----------
+    name : str
+        Chain designation.
+
+    Returns
+    -------
+    Chain
+        In SI units.
+
+    Raises
+    ------
+    UnknownNameError
+        If the name is unknown; the message lists the closest known names.
+
+    Examples
+    --------
+    >>> get("ANSI 80").name, get("16b-2").strands, get("18 x 64").bar_diameter
+    ('ANSI 80-1', 2, 0.018)
+    """
+    if isinstance(name, Chain):
+        return name
+    key = normalize_name(name)
+    index = _index()
+    if key in index:
+        return index[key]
+    suggestions: list[str] = []
+    for k in difflib.get_close_matches(key, list(index), n=10, cutoff=0.5):
+        if index[k].name not in suggestions:
+            suggestions.append(index[k].name)
+    suggestions = suggestions[:5]
+    hint = (
+        f"closest known names: {', '.join(suggestions)}"
+        if suggestions
+        else "known names look like 16B-1, 08A-2, ANSI 80-1, 18x64 (see `chaindrive chains`)"
+    )
+    raise UnknownNameError(f"unknown chain {name!r}; {hint}")
+
+
+def catalogue(family: str | None = None) -> list[Chain]:
+    """All catalogue chains, or those of one ``family``.
+
+    Parameters
+    ----------
+    family : {None, "iso606", "ansi", "din22252"}
+        Family filter.
+
+    Raises
+    ------
+    UnknownNameError
+        For an unknown family (the message lists the valid ones).
+
+    Examples
+    --------
+    >>> len(catalogue("din22252")) >= 9
+    True
+    """
+    _check_family(family)
+    return [c for c in _all() if family is None or c.family == family]
+
+
+def names(family: str | None = None) -> list[str]:
+    """Canonical names of the catalogue chains (optionally of one ``family``).
+
+    Examples
+    --------
+    >>> names("din22252")[:3]
+    ['10x35', '14x50', '18x64']
+    """
+    return [c.name for c in catalogue(family)]
