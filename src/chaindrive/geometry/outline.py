@@ -1,0 +1,194 @@
+"""Closed 2-D outlines made of lines and circular arcs (the drawing layer of the wheels).
+
+An :class:`Outline` is an ordered list of primitives (:class:`Line`, :class:`Arc`) whose
+end points chain up into one closed contour, plus a dense polyline sampled from them
+for plotting. All lengths are in metres; angles in radians, counter-clockwise from +x.
+Exports (DXF, SVG) live in :mod:`chaindrive.geometry.export`.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+
+__all__ = ["Line", "Arc", "Outline", "rotate_points"]
+
+
+def rotate_points(points, angle):
+    """Rotate ``(..., 2)`` points counter-clockwise about the origin by ``angle`` [rad].
+
+    Examples
+    --------
+    >>> np.round(rotate_points([1.0, 0.0], np.pi / 2), 12) + 0.0
+    array([0., 1.])
+    """
+    p = np.asarray(points, dtype=float)
+    c, s = np.cos(angle), np.sin(angle)
+    return np.stack([c * p[..., 0] - s * p[..., 1], s * p[..., 0] + c * p[..., 1]], axis=-1)
+
+
+@dataclass(frozen=True)
+class Line:
+    """Straight segment from ``start`` to ``end`` [m]."""
+
+    start: tuple[float, float]
+    end: tuple[float, float]
+
+    @property
+    def length(self) -> float:
+        return float(np.hypot(self.end[0] - self.start[0], self.end[1] - self.start[1]))
+
+    def sample(self, n: int = 2) -> np.ndarray:
+        t = np.linspace(0.0, 1.0, max(n, 2))[:, None]
+        return (1 - t) * np.asarray(self.start) + t * np.asarray(self.end)
+
+    def rotated(self, angle: float) -> Line:
+        return Line(tuple(rotate_points(self.start, angle)), tuple(rotate_points(self.end, angle)))
+
+    def mirrored_x(self) -> Line:
+        """Mirror about the y axis (x -> -x) and reverse the direction."""
+        return Line((-self.end[0], self.end[1]), (-self.start[0], self.start[1]))
+
+    def reversed(self) -> Line:
+        return Line(self.end, self.start)
+
+    @property
+    def bulge(self) -> float:
+        return 0.0
+
+    def to_dict(self) -> dict:
+        return {"type": "line", "start": list(self.start), "end": list(self.end)}
+
+
+@dataclass(frozen=True)
+class Arc:
+    """Circular arc: ``center`` [m], ``radius`` [m], from ``start_angle`` sweeping ``sweep`` [rad].
+
+    ``sweep > 0`` runs counter-clockwise, ``sweep < 0`` clockwise.
+    """
+
+    center: tuple[float, float]
+    radius: float
+    start_angle: float
+    sweep: float
+
+    @property
+    def end_angle(self) -> float:
+        return self.start_angle + self.sweep
+
+    @property
+    def start(self) -> tuple[float, float]:
+        return self._point(self.start_angle)
+
+    @property
+    def end(self) -> tuple[float, float]:
+        return self._point(self.end_angle)
+
+    def _point(self, a: float) -> tuple[float, float]:
+        return (self.center[0] + self.radius * np.cos(a), self.center[1] + self.radius * np.sin(a))
+
+    @property
+    def length(self) -> float:
+        return abs(self.sweep) * self.radius
+
+    def sample(self, n: int = 16) -> np.ndarray:
+        a = np.linspace(self.start_angle, self.end_angle, max(n, 2))
+        return np.stack(
+            [self.center[0] + self.radius * np.cos(a), self.center[1] + self.radius * np.sin(a)],
+            axis=-1,
+        )
+
+    def rotated(self, angle: float) -> Arc:
+        return Arc(tuple(rotate_points(self.center, angle)), self.radius, self.start_angle + angle, self.sweep)
+
+    def mirrored_x(self) -> Arc:
+        """Mirror about the y axis (x -> -x) and reverse the direction."""
+        return Arc((-self.center[0], self.center[1]), self.radius, np.pi - self.end_angle, self.sweep)
+
+    def reversed(self) -> Arc:
+        return Arc(self.center, self.radius, self.end_angle, -self.sweep)
+
+    @property
+    def bulge(self) -> float:
+        """DXF bulge ``tan(sweep/4)`` (positive counter-clockwise)."""
+        return float(np.tan(self.sweep / 4.0))
+
+    def to_dict(self) -> dict:
+        return {
+            "type": "arc",
+            "center": list(self.center),
+            "radius": self.radius,
+            "start_angle": self.start_angle,
+            "sweep": self.sweep,
+        }
+
+
+@dataclass
+class Outline:
+    """A closed contour of lines and arcs plus reference geometry for drawings.
+
+    Attributes
+    ----------
+    primitives : list of Line or Arc
+        The contour, each primitive starting where the previous one ends [m].
+    pitch_radius : float
+        Radius of the pitch circle [m] (drawn on layer PITCH_CIRCLE).
+    centres : ndarray, shape (n, 2)
+        Reference centres [m]: roller seats, pins or pocket centres (layer CENTRES).
+    circles : dict
+        Further reference circles by layer name -> radius [m] (e.g. ``{"SLOT": r}``).
+    """
+
+    primitives: list
+    pitch_radius: float
+    centres: np.ndarray
+    circles: dict = field(default_factory=dict)
+
+    def polyline(self, points_per_arc: int = 24) -> np.ndarray:
+        """Dense closed polyline ``(n, 2)`` [m]; the first point is repeated at the end."""
+        pts = [self.primitives[0].sample(2)[:1]]
+        for prim in self.primitives:
+            n = 2 if isinstance(prim, Line) else points_per_arc
+            pts.append(prim.sample(n)[1:])
+        return np.concatenate(pts, axis=0)
+
+    def closure_gap(self) -> float:
+        """Largest distance between the end of one primitive and the start of the next [m]."""
+        gaps = [
+            np.hypot(a.end[0] - b.start[0], a.end[1] - b.start[1])
+            for a, b in zip(self.primitives, self.primitives[1:] + self.primitives[:1], strict=True)
+        ]
+        return float(max(gaps))
+
+    def extents(self) -> tuple[float, float, float, float]:
+        """``(xmin, ymin, xmax, ymax)`` of the contour [m] from a dense sampling."""
+        p = self.polyline(180)
+        return float(p[:, 0].min()), float(p[:, 1].min()), float(p[:, 0].max()), float(p[:, 1].max())
+
+    def area(self) -> float:
+        """Enclosed area [m²] (shoelace formula on the dense polyline; positive if CCW)."""
+        p = self.polyline(180)
+        return 0.5 * float(np.sum(p[:-1, 0] * p[1:, 1] - p[1:, 0] * p[:-1, 1]))
+
+    def to_dict(self) -> dict:
+        return {
+            "primitives": [p.to_dict() for p in self.primitives],
+            "pitch_radius": self.pitch_radius,
+            "centres": np.asarray(self.centres).tolist(),
+            "circles": dict(self.circles),
+        }
+
+
+def _repeat(tooth: list, count: int) -> list:
+    """Copies of one period's primitives rotated by ``2π k / count`` (internal)."""
+    out = []
+    for k in range(count):
+        ang = 2.0 * np.pi * k / count
+        out.extend(p.rotated(ang) for p in tooth)
+    return out
+
+
+def _drop_short(prims: list, tol: float = 1e-12) -> list:
+    """Remove zero-length primitives (internal)."""
+    return [p for p in prims if p.length > tol]

@@ -1,0 +1,379 @@
+"""Drive wheel (sprocket) of a tracked vehicle engaging the lantern pins of the track links.
+
+Seed 001 (Sharipov, *Design of tractor running systems*, p. 34) gives:
+
+* root radius ``R_В = R_о − r_цо`` with the pin-seat arc radius ``r_цо = (1.1…1.3) r_ц``;
+* tip radius ``R_Г = R_о + (0.2…0.5) r_ц`` for built-up (composite) links and
+  ``R_Г = R_о + (0.8…1.2) r_ц`` for cast one-piece links,
+
+with ``R_о`` the pitch radius and ``r_ц`` the pin radius. The pitch radius is not printed
+on the page; for pins at the vertices of a regular ``z``-gon of side ``t`` (the track
+pitch) it is ``R_о = t / (2 sin(π/z))``, the same as a roller-chain sprocket.
+
+The seed gives no flank shape. The outline drawn here uses the classical construction
+for pin-gear (lantern) wheels: the flank is a circle of radius ``t − r_цо`` centred on
+the *neighbouring* pin, i.e. the path of a pin that swings about its neighbour as the
+link leaves the wheel, offset by the seat radius. It meets the seat arc tangentially on
+the line joining the two pins.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from .._registry import Registry
+from .._results import Result
+from .._validation import check_positive, check_range, check_teeth
+from ..errors import InfeasibleError, InputError
+from .outline import Arc, Outline, _drop_short, _repeat
+from .polygon import roller_chain_pitch_radius
+from .sprocket import _convex_flank_to_tip, _tip_half
+
+__all__ = [
+    "PIN_SEAT_FACTOR_RANGE",
+    "TIP_FACTOR_RANGES",
+    "track_wheel_pitch_radius",
+    "pin_seat_radius_range",
+    "root_radius",
+    "root_radius_range",
+    "tip_radius_range",
+    "tip_radius",
+    "TrackDriveWheel",
+    "TrackDriveWheelDimensions",
+]
+
+#: ``r_цо / r_ц`` range, seed 001.
+PIN_SEAT_FACTOR_RANGE = (1.1, 1.3)
+#: ``(R_Г − R_о) / r_ц`` ranges by link type, seed 001.
+TIP_FACTOR_RANGES = Registry("link")
+TIP_FACTOR_RANGES.add("built-up", (0.2, 0.5))
+TIP_FACTOR_RANGES.add("cast", (0.8, 1.2))
+
+
+def track_wheel_pitch_radius(pitch, teeth):
+    r"""Pitch radius ``R_о`` of a track drive wheel with pins on a regular polygon.
+
+    .. math:: R_о = \frac{t}{2\sin(\pi/z)}
+
+    Parameters
+    ----------
+    pitch : float or array_like
+        Track pitch ``t`` (pin centre distance) [m].
+    teeth : int or array_like
+        Number of teeth ``z >= 3`` [-].
+
+    Returns
+    -------
+    ndarray
+        [m].
+
+    References
+    ----------
+    Seed 001 (R_о named, not printed); same geometry as ISO 606:2015 5.3.2.
+
+    Examples
+    --------
+    >>> round(float(track_wheel_pitch_radius(0.17, 13)) * 1e3, 3)
+    355.179
+    """
+    return roller_chain_pitch_radius(pitch, teeth)
+
+
+def pin_seat_radius_range(pin_radius):
+    r"""Allowed pin-seat arc radius ``r_цо = (1.1…1.3) r_ц`` (seed 001).
+
+    .. math:: r_{цо} = (1.1 \dots 1.3)\, r_ц
+
+    Parameters
+    ----------
+    pin_radius : float or array_like
+        Pin (lantern) radius ``r_ц`` [m].
+
+    Returns
+    -------
+    low, high : ndarray
+        [m].
+
+    Examples
+    --------
+    >>> [round(float(v), 6) for v in pin_seat_radius_range(0.025)]
+    [0.0275, 0.0325]
+    """
+    r = check_positive("pin_radius", pin_radius, "m")
+    return PIN_SEAT_FACTOR_RANGE[0] * r, PIN_SEAT_FACTOR_RANGE[1] * r
+
+
+def root_radius(pitch_radius, pin_seat_radius):
+    r"""Root radius ``R_В = R_о − r_цо`` (seed 001).
+
+    .. math:: R_В = R_о - r_{цо}
+
+    Parameters
+    ----------
+    pitch_radius : float or array_like
+        ``R_о`` [m].
+    pin_seat_radius : float or array_like
+        ``r_цо`` [m].
+
+    Returns
+    -------
+    ndarray
+        [m].
+
+    Examples
+    --------
+    >>> round(float(root_radius(0.355, 0.03)), 6)
+    0.325
+    """
+    r0 = check_positive("pitch_radius", pitch_radius, "m")
+    rs = check_positive("pin_seat_radius", pin_seat_radius, "m")
+    if np.any(rs >= r0):
+        raise InputError("pin_seat_radius must be smaller than pitch_radius")
+    return r0 - rs
+
+
+def root_radius_range(pitch_radius, pin_radius):
+    r"""Range of ``R_В = R_о − (1.1…1.3) r_ц`` (seed 001); returns ``(low, high)``.
+
+    .. math:: R_В \in [R_о - 1.3 r_ц,\ R_о - 1.1 r_ц]
+
+    Examples
+    --------
+    >>> [round(float(v), 6) for v in root_radius_range(0.355, 0.025)]
+    [0.3225, 0.3275]
+    """
+    lo, hi = pin_seat_radius_range(pin_radius)
+    return root_radius(pitch_radius, hi), root_radius(pitch_radius, lo)
+
+
+def tip_radius_range(pitch_radius, pin_radius, link="built-up"):
+    r"""Range of the tip radius ``R_Г = R_о + k r_ц`` (seed 001).
+
+    .. math:: R_Г = R_о + (0.2 \dots 0.5)\,r_ц\ \text{(built-up links)},\quad
+              R_Г = R_о + (0.8 \dots 1.2)\,r_ц\ \text{(cast links)}
+
+    Parameters
+    ----------
+    pitch_radius : float or array_like
+        ``R_о`` [m].
+    pin_radius : float or array_like
+        ``r_ц`` [m].
+    link : {"built-up", "cast"}
+        Track link construction.
+
+    Returns
+    -------
+    low, high : ndarray
+        [m].
+
+    References
+    ----------
+    Seed 001 (Sharipov, p. 34).
+
+    Examples
+    --------
+    >>> [round(float(v), 6) for v in tip_radius_range(0.355, 0.025, "cast")]
+    [0.375, 0.385]
+    """
+    k_lo, k_hi = TIP_FACTOR_RANGES.get(link)
+    r0 = check_positive("pitch_radius", pitch_radius, "m")
+    r = check_positive("pin_radius", pin_radius, "m")
+    return r0 + k_lo * r, r0 + k_hi * r
+
+
+def tip_radius(pitch_radius, pin_radius, tip_factor, link="built-up"):
+    r"""Tip radius ``R_Г = R_о + k r_ц`` with ``k`` validated inside the seed's range.
+
+    .. math:: R_Г = R_о + k\, r_ц
+
+    Parameters
+    ----------
+    pitch_radius, pin_radius : float or array_like
+        ``R_о``, ``r_ц`` [m].
+    tip_factor : float or array_like
+        ``k``: 0.2…0.5 for built-up links, 0.8…1.2 for cast links [-].
+    link : {"built-up", "cast"}
+
+    Returns
+    -------
+    ndarray
+        [m].
+
+    Raises
+    ------
+    InputError
+        ``k`` outside the range for ``link``.
+
+    Examples
+    --------
+    >>> round(float(tip_radius(0.355, 0.025, 0.35)), 6)
+    0.36375
+    >>> tip_radius(0.355, 0.025, 0.7)
+    Traceback (most recent call last):
+    ...
+    chaindrive.errors.InputError: tip_factor must lie in [0.2, 0.5] for built-up links (seed 001: R_Г = R_о + (0.2...0.5) r_ц), got 0.7
+    """
+    k_lo, k_hi = TIP_FACTOR_RANGES.get(link)
+    k = _factor("tip_factor", tip_factor, k_lo, k_hi, f"{link} links (seed 001: R_Г = R_о + ({k_lo}...{k_hi}) r_ц)")
+    r0 = check_positive("pitch_radius", pitch_radius, "m")
+    r = check_positive("pin_radius", pin_radius, "m")
+    return r0 + k * r
+
+
+def _factor(name, value, lo, hi, what):
+    try:
+        return check_range(name, value, lo, hi)
+    except InputError:
+        v = np.asarray(value, dtype=float)
+        got = f"{float(v):g}" if v.ndim == 0 else str(v.tolist())
+        raise InputError(f"{name} must lie in [{lo:g}, {hi:g}] for {what}, got {got}") from None
+
+
+@dataclass
+class TrackDriveWheelDimensions(Result):
+    """Computed track drive wheel dimensions (m) with the seed's allowed ranges."""
+
+    pitch: float
+    teeth: int
+    pin_radius: float
+    link: str
+    pitch_radius: float
+    root_factor: float
+    root_factor_range: tuple
+    pin_seat_radius: float
+    pin_seat_radius_range: tuple
+    root_radius: float
+    root_radius_range: tuple
+    tip_factor: float
+    tip_factor_range: tuple
+    tip_radius: float
+    tip_radius_range: tuple
+    flank_radius: float
+    pointed_tip_radius: float
+    tooth_pointed: bool
+    sources: dict
+
+
+@dataclass
+class TrackDriveWheel:
+    """Drive wheel of a tracked vehicle engaging lantern pins (thin object, seed 001).
+
+    Parameters
+    ----------
+    pitch : float
+        Track pitch (pin centre distance) ``t`` [m].
+    teeth : int
+        Number of teeth ``z >= 3``.
+    pin_radius : float
+        Pin radius ``r_ц`` [m].
+    link : {"built-up", "cast"}
+        Track link construction (selects the tip-factor range).
+    root_factor : float, optional
+        ``r_цо / r_ц`` in [1.1, 1.3]; default the middle, 1.2.
+    tip_factor : float, optional
+        ``(R_Г − R_о) / r_ц`` inside the range for ``link``; default its middle.
+
+    Examples
+    --------
+    >>> w = TrackDriveWheel(pitch=0.17, teeth=13, pin_radius=0.025, link="cast")
+    >>> d = w.dimensions()
+    >>> round(d.root_radius * 1e3, 3), round(d.tip_radius * 1e3, 3)
+    (325.179, 380.179)
+    """
+
+    pitch: float
+    teeth: int
+    pin_radius: float
+    link: str = "built-up"
+    root_factor: float | None = None
+    tip_factor: float | None = None
+    name: str = ""
+
+    def __post_init__(self):
+        check_positive("pitch", self.pitch, "m")
+        check_positive("pin_radius", self.pin_radius, "m")
+        self.teeth = int(check_teeth("teeth", self.teeth))
+        k_lo, k_hi = TIP_FACTOR_RANGES.get(self.link)
+        if self.root_factor is None:
+            self.root_factor = 0.5 * sum(PIN_SEAT_FACTOR_RANGE)
+        self.root_factor = float(_factor("root_factor", self.root_factor, *PIN_SEAT_FACTOR_RANGE,
+                                         "the pin seat (seed 001: r_цо = (1.1...1.3) r_ц)"))
+        if self.tip_factor is None:
+            self.tip_factor = 0.5 * (k_lo + k_hi)
+        self.tip_factor = float(_factor("tip_factor", self.tip_factor, k_lo, k_hi,
+                                        f"{self.link} links (seed 001: R_Г = R_о + ({k_lo}...{k_hi}) r_ц)"))
+        if self.root_factor * self.pin_radius >= self.pitch / 2:
+            raise InfeasibleError(
+                f"pin seat radius {self.root_factor * self.pin_radius:.6g} m must be < pitch/2 = "
+                f"{self.pitch / 2:.6g} m: neighbouring seats would overlap"
+            )
+
+    def dimensions(self) -> TrackDriveWheelDimensions:
+        """Pitch, root and tip radii with their seed ranges, and the drawn flank."""
+        t, z, r = self.pitch, self.teeth, self.pin_radius
+        r0 = float(track_wheel_pitch_radius(t, z))
+        rs = self.root_factor * r
+        rb_lo, rb_hi = (float(v) for v in root_radius_range(r0, r))
+        rt_lo, rt_hi = (float(v) for v in tip_radius_range(r0, r, self.link))
+        rf = t - rs
+        pointed_r = r0 * np.cos(np.pi / z) + np.sqrt(max(rf**2 - (t / 2) ** 2, 0.0))
+        tip = float(tip_radius(r0, r, self.tip_factor, self.link))
+        return TrackDriveWheelDimensions(
+            pitch=t, teeth=z, pin_radius=r, link=self.link, pitch_radius=r0,
+            root_factor=self.root_factor, root_factor_range=PIN_SEAT_FACTOR_RANGE,
+            pin_seat_radius=rs, pin_seat_radius_range=tuple(float(v) for v in pin_seat_radius_range(r)),
+            root_radius=float(root_radius(r0, rs)), root_radius_range=(rb_lo, rb_hi),
+            tip_factor=self.tip_factor, tip_factor_range=TIP_FACTOR_RANGES.get(self.link),
+            tip_radius=tip, tip_radius_range=(rt_lo, rt_hi),
+            flank_radius=rf, pointed_tip_radius=float(pointed_r), tooth_pointed=bool(pointed_r < tip),
+            sources={
+                "pitch_radius": "R_о = t / (2 sin(π/z)) (regular pin polygon; R_о named in seed 001)",
+                "root_radius": "seed 001: R_В = R_о − r_цо, r_цо = (1.1...1.3) r_ц",
+                "tip_radius": "seed 001: R_Г = R_о + (0.2...0.5) r_ц built-up, (0.8...1.2) r_ц cast links",
+                "flank_radius": "drawing construction: circle of radius t − r_цо about the neighbouring pin",
+            },
+        )
+
+    def outline(self, form=None) -> Outline:
+        """Closed outline: seat arcs round each pin, convex flanks, tip arcs at ``R_Г``.
+
+        Examples
+        --------
+        >>> o = TrackDriveWheel(0.17, 13, 0.025).outline()
+        >>> o.closure_gap() < 1e-12, len(o.centres)
+        (True, 13)
+        """
+        d = self.dimensions()
+        z, t, rs, r0 = self.teeth, self.pitch, d.pin_seat_radius, d.pitch_radius
+        half = np.pi / z
+        p0 = np.array([0.0, r0])
+        u = np.array([np.cos(half), -np.sin(half)])
+        q = p0 + t * u
+        phi_s = np.pi - half
+        phi_t, tip, pointed = _convex_flank_to_tip(q, t - rs, phi_s, d.tip_radius, half)
+        right = _tip_half(tip, half, pointed)
+        right.append(Arc(tuple(q), t - rs, phi_t, phi_s - phi_t))
+        right.append(Arc(tuple(p0), rs, -half, -(np.pi / 2 - half)))
+        right = _drop_short(right)
+        left = [p.mirrored_x() for p in reversed(right)]
+        ang = np.pi / 2 + 2 * np.pi * np.arange(z) / z
+        centres = np.stack([r0 * np.cos(ang), r0 * np.sin(ang)], axis=-1)
+        return Outline(_repeat(right + left, z), r0, centres, {"ROOT": d.root_radius, "TIP": d.tip_radius})
+
+    def to_dict(self) -> dict:
+        return {"name": self.name, **self.dimensions().to_dict()}
+
+    def label(self) -> str:
+        return f"Track drive wheel z = {self.teeth}, {self.link} links (seed 001)"
+
+    def to_dxf(self, path, form=None):
+        from .export import outline_to_dxf
+
+        return outline_to_dxf(self.outline(), path, title=self.label())
+
+    def to_svg(self, path, form=None) -> str:
+        from .export import outline_to_svg
+
+        return outline_to_svg(self.outline(), path, title=self.label())
