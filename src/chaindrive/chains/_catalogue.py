@@ -69,6 +69,12 @@ class Chain:
     their sources are described in ``docs/chains.md`` and in the comment header of each
     CSV file in ``chaindrive/chains/data``.
 
+    References
+    ----------
+    ISO 606:2015, Table 1 (roller chains); ASME/ANSI B29.1 (ANSI numbers); DIN 22252
+    (round steel link chains for mining), each as reproduced by the public catalogues
+    named in the ``source`` text of every row and listed in ``docs/chains.md``.
+
     Examples
     --------
     >>> from chaindrive.chains import get
@@ -379,7 +385,14 @@ def get(name: str) -> Chain:
     Raises
     ------
     UnknownNameError
-        If the name is unknown; the message lists the closest known names.
+        If the name is unknown; the message lists the closest known names
+        (:func:`difflib.get_close_matches` on the normalised names).
+
+    Notes
+    -----
+    ``"16B"`` means the simplex chain ``"16B-1"``; a bare number (``"80"``) or an
+    ``ANSI``/``ASA``/``RS`` prefix means an ANSI B29.1 chain. A :class:`Chain` passed in
+    is returned unchanged, so functions can accept a name or a chain.
 
     Examples
     --------
