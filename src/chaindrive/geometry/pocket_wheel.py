@@ -57,7 +57,8 @@ def pocket_angles(pitch, bar_diameter, teeth):
     Returns
     -------
     pockets, hinges, vertical : ndarray
-        Angles [rad]; ``hinges`` has ``2z`` entries in counter-clockwise order.
+        Angles in [0, 2π) [rad]; ``hinges`` has ``2z`` entries in counter-clockwise
+        order starting with the first hinge of pocket 0.
 
     References
     ----------
@@ -75,7 +76,8 @@ def pocket_angles(pitch, bar_diameter, teeth):
     hinges = np.empty(2 * z)
     hinges[0::2] = pockets - d1 / 2
     hinges[1::2] = pockets + d1 / 2
-    return pockets, hinges, pockets + np.pi / z
+    two_pi = 2 * np.pi
+    return np.mod(pockets, two_pi), np.mod(hinges, two_pi), np.mod(pockets + np.pi / z, two_pi)
 
 
 @dataclass

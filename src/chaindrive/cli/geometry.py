@@ -1,0 +1,233 @@
+"""``chaindrive sprocket``, ``chaindrive pocket-wheel``, ``chaindrive track-wheel``: wheel geometry.
+
+Text output is in millimetres and degrees; ``--json`` prints every computed dimension in
+SI units (m, rad), the same numbers the Python API returns. ``--dxf``/``--svg`` write the
+outline (in mm).
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+import typer
+
+from ..errors import InputError
+from .app import app, echo_json, quantity
+
+# Path options as module-level singletons (ruff B008)
+_SPROCKET_DXF = typer.Option(None, "--dxf", help="Write the outline to this DXF file (mm; layers OUTLINE, PITCH_CIRCLE, CENTRES, ROOT, TIP).")
+_SPROCKET_SVG = typer.Option(None, "--svg", help="Write the outline to this SVG file (viewBox in mm).")
+_POCKET_DXF = typer.Option(None, "--dxf", help="Write the outline to this DXF file (mm; layers OUTLINE, PITCH_CIRCLE, CENTRES, SLOT, TIP).")
+_POCKET_SVG = typer.Option(None, "--svg", help="Write the outline to this SVG file (viewBox in mm).")
+_TRACK_DXF = typer.Option(None, "--dxf", help="Write the outline to this DXF file (mm; layers OUTLINE, PITCH_CIRCLE, CENTRES, ROOT, TIP).")
+_TRACK_SVG = typer.Option(None, "--svg", help="Write the outline to this SVG file (viewBox in mm).")
+
+
+def _chain(name: str | None):
+    if name is None:
+        return None
+    from .. import chains
+
+    return chains.get(name)
+
+
+def _write(wheel, dxf: Path | None, svg: Path | None, form=None) -> list[str]:
+    done = []
+    if dxf is not None:
+        wheel.to_dxf(dxf, form=form)
+        done.append(f"wrote {dxf}")
+    if svg is not None:
+        wheel.to_svg(svg, form=form)
+        done.append(f"wrote {svg}")
+    return done
+
+
+def _table(title: str, rows: list[tuple[str, str, str]]) -> None:
+    print(title)
+    width = max(len(r[0]) for r in rows)
+    for name, value, src in rows:
+        print(f"  {name:<{width}}  {value:>22}   {src}")
+
+
+def _mm(v) -> str:
+    return "-" if v is None else f"{v * 1e3:.3f} mm"
+
+
+def _rng(lo, hi, unit="mm", f=1e3) -> str:
+    return f"{lo * f:.3f} ... {hi * f:.3f} {unit}"
+
+
+@app.command("sprocket")
+def sprocket_command(
+    chain: str | None = typer.Option(None, "--chain", "-c", help="Chain designation from the catalogue, e.g. 16B or 80 (ISO 606 / ANSI B29.1)."),
+    teeth: int = typer.Option(..., "--teeth", "-z", help="Number of teeth z (9...150, ISO 606:2015 Annex A)."),
+    form: str | None = typer.Option(None, "--form", help="ISO 606:2015 5.4 tooth gap form for the outline: 'min' (ri min, α max, re max, tip da max) or 'max' (ri max, α min, re min, tip da min). Default min; not used with --method ansi."),
+    method: str = typer.Option("iso606", "--method", help="Tooth form: iso606 (ISO 606:2015 clause 5) or ansi (ASME B29.1, Machinery's Handbook)."),
+    pitch: str | None = typer.Option(None, "--pitch", help="Chain pitch p [m, or with unit '25.4 mm'] when no --chain is given."),
+    roller_diameter: str | None = typer.Option(None, "--roller-diameter", help="Roller diameter d1 [m or '15.88 mm'] when no --chain is given."),
+    inner_width: str | None = typer.Option(None, "--inner-width", help="Width between inner plates b1 [m or mm with unit] for the tooth width bf1 (ISO 606:2015 5.6)."),
+    plate_height: str | None = typer.Option(None, "--plate-height", help="Inner plate depth h2 [m or mm with unit] for the max hub diameter dg (ISO 606:2015 5.6)."),
+    tip_diameter: str | None = typer.Option(None, "--tip-diameter", help="Tip diameter da of the outline [m or mm with unit], inside da min...da max (ISO 606:2015 5.5)."),
+    dxf: Path | None = _SPROCKET_DXF,
+    svg: Path | None = _SPROCKET_SVG,
+    as_json: bool = typer.Option(False, "--json", help="Print every computed dimension as JSON in SI units (m, rad)."),
+) -> None:
+    """Roller-chain sprocket dimensions and tooth outline to ISO 606:2015 clause 5 (or ASME B29.1).
+
+    d = p / sin(180°/z) (5.3); df = d − d1 (5.3); da min/max (5.5); ri, α, re of the
+    minimum and maximum tooth gap forms (5.4); bf1, rx, ba, dg (5.6); measurement over
+    pins MR (5.3).
+    """
+    from ..geometry.sprocket import Sprocket
+
+    ch = _chain(chain)
+    if ch is not None:
+        s = Sprocket.from_chain(ch, teeth, method=method)
+    else:
+        if pitch is None or roller_diameter is None:
+            raise InputError("give --chain NAME, or both --pitch and --roller-diameter")
+        s = Sprocket(
+            pitch=quantity(pitch, "m", "pitch"),
+            teeth=teeth,
+            roller_diameter=quantity(roller_diameter, "m", "roller_diameter"),
+            method=method,
+        )
+    if inner_width is not None:
+        s.inner_width = quantity(inner_width, "m", "inner_width")
+    if plate_height is not None:
+        s.plate_height = quantity(plate_height, "m", "plate_height")
+    tip = quantity(tip_diameter, "m", "tip_diameter")
+    outline = s.outline(form=form, tip_diameter=tip)  # validates form / tip before any output
+    d = s.dimensions()
+    if dxf is not None or svg is not None:
+        from ..geometry.export import outline_to_dxf, outline_to_svg
+
+        if dxf is not None:
+            outline_to_dxf(outline, dxf, title=s.label())
+        if svg is not None:
+            outline_to_svg(outline, svg, title=s.label())
+    if as_json:
+        out = s.to_dict()
+        out["outline"] = {"form": form or ("min" if method == "iso606" else None),
+                          "tip_diameter": 2 * outline.circles["TIP"],
+                          "root_seat_diameter": 2 * outline.circles["ROOT"],
+                          "primitives": len(outline.primitives)}
+        echo_json(out)
+        return
+    deg = np.degrees
+    rows = [
+        ("pitch diameter d", _mm(d.pitch_diameter), "ISO 606:2015 5.3.2  d = p/sin(180°/z)"),
+        ("root diameter df", _mm(d.root_diameter), "ISO 606:2015 5.3.2  df = d − d1"),
+        ("tip diameter da", _rng(d.tip_diameter_min, d.tip_diameter_max), "ISO 606:2015 5.5.2"),
+        ("roller seating radius ri", _rng(d.seating_radius_min, d.seating_radius_max), "ISO 606:2015 5.4.2"),
+        ("roller seating angle α", f"{deg(d.seating_angle_min):.3f} ... {deg(d.seating_angle_max):.3f} °", "ISO 606:2015 5.4.2"),
+        ("tooth flank radius re", _rng(d.flank_radius_min, d.flank_radius_max), "ISO 606:2015 5.4.2"),
+        ("tooth height ha", _rng(d.tooth_height_min, d.tooth_height_max), "ISO 606:2015 5.5.2"),
+        ("measurement over pins MR", _mm(d.measurement_over_pins), "ISO 606:2015 5.3.2"),
+        ("tooth width bf1", _mm(d.tooth_width), "ISO 606:2015 5.6.2"),
+        ("tooth side radius rx", _mm(d.tooth_side_radius), "ISO 606:2015 5.6.2"),
+        ("tooth side relief ba", _rng(d.tooth_side_relief_min, d.tooth_side_relief_max), "ISO 606:2015 5.6.2"),
+        ("max hub diameter dg", _mm(d.max_hub_diameter), "ISO 606:2015 5.6.2"),
+        ("outline tip diameter", _mm(2 * outline.circles["TIP"]), f"drawn ({method}, form {form or 'min' if method == 'iso606' else 'ASME B29.1'})"),
+    ]
+    _table(s.label(), rows)
+    for line in _write_msgs(dxf, svg):
+        print(line)
+
+
+def _write_msgs(dxf, svg):
+    return [f"wrote {p}" for p in (dxf, svg) if p is not None]
+
+
+@app.command("pocket-wheel")
+def pocket_wheel_command(
+    chain: str | None = typer.Option(None, "--chain", "-c", help="Round link chain from the catalogue, e.g. 18x64 (DIN 22252: d x t in mm)."),
+    teeth: int = typer.Option(..., "--teeth", "-z", help="Number of pockets z (horizontal links per turn), >= 3."),
+    pitch: str | None = typer.Option(None, "--pitch", help="Inner link length t [m or '64 mm'] when no --chain is given."),
+    bar_diameter: str | None = typer.Option(None, "--bar-diameter", help="Bar diameter d [m or '18 mm'] when no --chain is given."),
+    inner_width: str | None = typer.Option(None, "--inner-width", help="Inner width of a link b [m or mm with unit]; default 21/18 d (DIN 22252, 18x64). Sets the slot depth."),
+    clearance: str = typer.Option("0", "--clearance", help="Play round the link in pocket and slot [m or mm with unit] (drawing only)."),
+    dxf: Path | None = _POCKET_DXF,
+    svg: Path | None = _POCKET_SVG,
+    as_json: bool = typer.Option(False, "--json", help="Print every computed dimension as JSON in SI units (m, rad)."),
+) -> None:
+    """Pocket wheel for a round link chain: pitch radius (seed 002 eq. 6), central angles
+    δ1, δ2 (seed 002 eqs 7-9), pocket and hinge positions, and a basic outline."""
+    from ..geometry.pocket_wheel import PocketWheel
+
+    kw = {"clearance": quantity(clearance, "m", "clearance")}
+    if inner_width is not None:
+        kw["inner_width"] = quantity(inner_width, "m", "inner_width")
+    ch = _chain(chain)
+    if ch is not None:
+        w = PocketWheel.from_chain(ch, teeth, **kw)
+        if inner_width is not None:
+            w.inner_width = kw["inner_width"]
+    else:
+        if pitch is None or bar_diameter is None:
+            raise InputError("give --chain NAME, or both --pitch and --bar-diameter")
+        w = PocketWheel(pitch=quantity(pitch, "m", "pitch"), bar_diameter=quantity(bar_diameter, "m", "bar_diameter"),
+                        teeth=teeth, **kw)
+    w.outline()  # validate before output
+    _write(w, dxf, svg)
+    d = w.dimensions()
+    if as_json:
+        echo_json(w.to_dict())
+        return
+    deg = np.degrees
+    rows = [
+        ("pitch radius R", _mm(d.pitch_radius), "seed 002 eq. (6)"),
+        ("central angle δ1 (t + d)", f"{deg(d.central_angle_horizontal):.4f} °", "seed 002 eq. (7)"),
+        ("central angle δ2 (t − d)", f"{deg(d.central_angle_vertical):.4f} °", "seed 002 eq. (8)"),
+        ("pocket floor from axis", _mm(d.pocket_floor_distance), "R cos(δ1/2) − d/2 − c"),
+        ("pocket length", _mm(d.pocket_length), "t + 2d + 2c"),
+        ("slot bottom radius", _mm(d.slot_radius), "R cos(δ2/2) − (b + 2d)/2 − c"),
+        ("tip radius", _mm(d.tip_radius), "R + d/2 (drawing choice)"),
+        ("pocket centre angles", ", ".join(f"{a:.2f}" for a in deg(d.pocket_angles)) + " °", "θk = 90° + 360° k/z"),
+    ]
+    _table(w.label(), rows)
+    for line in _write_msgs(dxf, svg):
+        print(line)
+
+
+@app.command("track-wheel")
+def track_wheel_command(
+    pitch: str = typer.Option(..., "--pitch", help="Track pitch t (pin centre distance) [m or '170 mm']; R_о = t/(2 sin(π/z))."),
+    teeth: int = typer.Option(..., "--teeth", "-z", help="Number of teeth z (>= 3)."),
+    pin_radius: str = typer.Option(..., "--pin-radius", help="Lantern pin radius r_ц [m or '25 mm'] (seed 001)."),
+    link: str = typer.Option("built-up", "--link", help="Track links: built-up (R_Г = R_о + (0.2...0.5) r_ц) or cast (R_Г = R_о + (0.8...1.2) r_ц), seed 001."),
+    root_factor: float | None = typer.Option(None, "--root-factor", help="r_цо / r_ц in [1.1, 1.3] (seed 001: R_В = R_о − r_цо); default 1.2."),
+    tip_factor: float | None = typer.Option(None, "--tip-factor", help="(R_Г − R_о)/r_ц inside the seed 001 range for --link; default its middle."),
+    dxf: Path | None = _TRACK_DXF,
+    svg: Path | None = _TRACK_SVG,
+    as_json: bool = typer.Option(False, "--json", help="Print every computed dimension and allowed range as JSON in SI units (m)."),
+) -> None:
+    """Drive wheel of a tracked vehicle engaging lantern pins (seed 001, Sharipov p. 34):
+    root radius R_В = R_о − r_цо, r_цо = (1.1...1.3) r_ц; tip radius R_Г = R_о + (0.2...0.5) r_ц
+    (built-up links) or R_о + (0.8...1.2) r_ц (cast links)."""
+    from ..geometry.track_wheel import TrackDriveWheel
+
+    w = TrackDriveWheel(pitch=quantity(pitch, "m", "pitch"), teeth=teeth,
+                        pin_radius=quantity(pin_radius, "m", "pin_radius"), link=link,
+                        root_factor=root_factor, tip_factor=tip_factor)
+    w.outline()
+    _write(w, dxf, svg)
+    d = w.dimensions()
+    if as_json:
+        echo_json(w.to_dict())
+        return
+    rows = [
+        ("pitch radius R_о", _mm(d.pitch_radius), "t / (2 sin(π/z))"),
+        ("pin seat radius r_цо", _mm(d.pin_seat_radius) + f" (k = {d.root_factor:g})", "seed 001, k = 1.1...1.3"),
+        ("  allowed", _rng(*d.pin_seat_radius_range), "seed 001"),
+        ("root radius R_В", _mm(d.root_radius), "seed 001: R_В = R_о − r_цо"),
+        ("  allowed", _rng(*d.root_radius_range), "seed 001"),
+        ("tip radius R_Г", _mm(d.tip_radius) + f" (k = {d.tip_factor:g})", f"seed 001, {d.link} links"),
+        ("  allowed", _rng(*d.tip_radius_range), "seed 001"),
+        ("flank radius", _mm(d.flank_radius), "t − r_цо about the next pin (drawing)"),
+        ("tooth pointed below R_Г", "yes" if d.tooth_pointed else "no", ""),
+    ]
+    _table(w.label(), rows)
+    for line in _write_msgs(dxf, svg):
+        print(line)
