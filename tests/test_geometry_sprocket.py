@@ -101,11 +101,15 @@ def test_iso_16b_19_regression_and_hand_values():
 
 
 def test_tooth_width_factors():
-    # Textbook worked example (Bhandari-style Scilab solution 14.5): bf1 = 0.95 b1 for p > 12.7 mm
+    # ISO 606 / DIN 8196 face width table as summarised on tandwiel.info ("Roller chain wheels"):
+    # simplex 0.93 b1 (p <= 12.7) / 0.95 b1; duplex, triplex 0.91 / 0.93; quadruple 0.88 / 0.93.
+    # A textbook worked example (Scilab solution 14.5 of a machine design text) uses 0.95 b1, p > 12.7.
     assert tooth_width(P16B, B16B) == pytest.approx(0.95 * B16B)
     assert tooth_width(12.7 * MM, 7.85 * MM) == pytest.approx(0.93 * 7.85 * MM)
     assert tooth_width(P16B, B16B, strands=2) == pytest.approx(0.93 * B16B)
     assert tooth_width(12.7 * MM, B16B, strands=4) == pytest.approx(0.88 * B16B)
+    assert tooth_width(P16B, B16B, strands=3) == pytest.approx(0.93 * B16B)
+    assert tooth_width(12.7 * MM, B16B, strands=3) == pytest.approx(0.91 * B16B)
 
 
 def test_ansi_tooth_form_against_worked_sheet():
@@ -340,3 +344,27 @@ def test_property_iso_limits_ordered(z, d1):
     re = flank_radius_limits(d1, z)
     ri = seating_radius_limits(d1)
     assert a[0] < a[1] and re[0] < re[1] and ri[0] < ri[1]
+
+
+@pytest.mark.parametrize("z", [9, 19, 60])
+def test_minimum_gap_form_removes_less_material(z):
+    # independent check of the ISO pairing (ri min, α max, re max) = minimum tooth gap form:
+    # with the same tip diameter its gaps are smaller, so the wheel's area is larger
+    lo, hi = (float(v) for v in tip_diameter_limits(P16B, z, D16B))
+    da = 0.5 * (lo + hi)
+    a_min = sprocket_outline(P16B, z, D16B, form="min", tip_diameter=da).area()
+    a_max = sprocket_outline(P16B, z, D16B, form="max", tip_diameter=da).area()
+    assert a_min > a_max
+    # and the brief's swapped pairing (ri min, α min, re min) would not be the tightest gap
+    rp = float(pitch_diameter(P16B, z)) / 2
+    ri = float(seating_radius_limits(D16B)[0])
+    al, ah = (float(v) for v in seating_angle_limits(z))
+    rl, rh = (float(v) for v in flank_radius_limits(D16B, z))
+    from chaindrive.geometry.outline import Outline
+    from chaindrive.geometry.sprocket import _full_from_half, _iso_half_gap
+
+    def area(alpha, re):
+        half, _ = _iso_half_gap(rp, z, ri, alpha, re, da / 2)
+        return Outline(_full_from_half(half, z), rp, np.zeros((0, 2))).area()
+
+    assert area(ah, rh) == max(area(al, rl), area(ah, rl), area(al, rh), area(ah, rh))

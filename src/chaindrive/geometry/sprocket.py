@@ -360,9 +360,9 @@ def tooth_width(pitch, inner_width, strands=1):
 
     Notes
     -----
-    The simplex factors are checked against a textbook worked example (0.95 b1 for
-    p = 25.4 mm); the multi-strand factors are as recalled from the ISO 606 table and
-    not independently checked (docs/geometry.md).
+    Factors as in the ISO 606 / DIN 8196 table (simplex 0.93/0.95, duplex and triplex
+    0.91/0.93, quadruple 0.88/0.93; summarised on tandwiel.info "Roller chain wheels");
+    the simplex 0.95 b1 also appears in a textbook worked example (docs/geometry.md).
 
     References
     ----------
@@ -497,8 +497,11 @@ def max_hub_diameter(pitch, teeth, plate_height):
 
     References
     ----------
-    ISO 606:2015, clause 5.6.2 (also DIN 8196). Compare ASME B29.1's maximum hub
-    diameter ``p (cot(180°/z) − 1) − 0.030 in``.
+    ISO 606:2015, clause 5.6.2, as given in the task brief: NOT verified against the text
+    of the standard (not available). DIN 8196-1:1987 gives the absolute maximum shroud
+    diameter as ``d5 = p cot(180°/z) − 1.05 h2 − 2 r4 − 1 mm`` (r4 shroud fillet radius),
+    which is a few mm smaller. Compare ASME B29.1's maximum hub diameter
+    ``p (cot(180°/z) − 1) − 0.030 in``.
 
     Examples
     --------
