@@ -1,1 +1,40 @@
-"""chaindrive.kinematics (see module docs)."""
+"""Kinematics of a chain entering (or leaving) a wheel: the polygonal effect.
+
+Public API:
+
+* :func:`chain_entry` - free, chordal, tangential or custom-height guided entry of a
+  round link chain (bi-regular polygon) or a roller chain (regular polygon), with
+  ``model="exact"`` (general rigid-link solver) or ``model="paper"`` (seed 002's
+  corrected closed forms); returns :class:`EntryKinematics`.
+* :func:`seed002_case` - the three entries of seed 002's worked case.
+* :mod:`.paper` - the closed forms, :mod:`.solver` - the general vectorised solver.
+
+See ``docs/kinematics.md``.
+"""
+
+from .entry import ENTRIES, MODELS, SUMMARY_KEYS, EntryKinematics, chain_entry, seed002_case
+from .paper import (
+    paper_chordal_entry,
+    paper_free_entry,
+    paper_tangential_entry,
+    paper_tangential_limit_angles,
+)
+from .solver import WheelPolygon, rod_entry, rod_seating_schedule, taut_entry, taut_seating_angles
+
+__all__ = [
+    "ENTRIES",
+    "MODELS",
+    "SUMMARY_KEYS",
+    "EntryKinematics",
+    "WheelPolygon",
+    "chain_entry",
+    "paper_chordal_entry",
+    "paper_free_entry",
+    "paper_tangential_entry",
+    "paper_tangential_limit_angles",
+    "rod_entry",
+    "rod_seating_schedule",
+    "seed002_case",
+    "taut_entry",
+    "taut_seating_angles",
+]

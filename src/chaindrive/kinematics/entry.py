@@ -1,0 +1,573 @@
+r"""Kinematics of a chain running onto (or off) a polygonal wheel: free and guided entry.
+
+This is the public layer over :mod:`~chaindrive.kinematics.solver` (general mechanism)
+and :mod:`~chaindrive.kinematics.paper` (seed 002's closed forms, corrected).
+
+Sketch and definitions (SI units)::
+
+         y ^
+           |  S_prev   S                        G = (l, H)
+           |     o-----o.                        *=====o=====o====  guide line y = H
+           |    /        ` - . _  free span    / |        chain moves towards -x
+           |   /  R             ` - . _ N o   /  |
+           |  /                         `-.  /   |
+      -----O--------------------------------------+-----> x
+           |<-------------------- l ------------>|
+           O: wheel axis, ω counter-clockwise (the top moves towards -x)
+
+* ``H`` (``guide_height``): distance of the guide line from the wheel axis
+  (``H >= 0``, above the axis).
+* ``l`` (``guide_end_distance``): distance of the guide end ``G`` from the wheel axis
+  measured along the guide line, i.e. from the foot of the perpendicular dropped from
+  the axis onto the guide line. ``G = (l, H)``; the chain is in the guide for ``x >= l``.
+* ``φ = ωt``: wheel angle; results cover one period ``0 <= φ <= 2π/z``.
+* ``x``: displacement of the chain in the guide (or of the free span) towards the wheel;
+  ``v = dx/dt``, ``a = dv/dt``.
+* Phase ``φ = 0`` (as in seed 002's figures): free, chordal and custom-``H`` entry:
+  the link ``t + d`` (roller chain: a link) is centred on the top of the wheel, i.e. its
+  leading hinge is at ``δ1/2`` from the top on the side of the incoming chain;
+  tangential entry: a hinge (the one followed by the link ``t + d``) is at the top.
+
+Named entries: ``"free"`` (no guide; seed 002 eqs 1-13), ``"chordal"``
+(``H = R cos(δ1/2)``, eqs 14-25), ``"tangential"`` (``H = R``, eqs 26-43), or any
+``guide_height`` (``entry="guided"``).
+
+Models (``model=``):
+
+``"exact"`` (default)
+    Rigid links, seated hinges on the polygon vertices, a *taut* straight span from the
+    last seated hinge to the guide end with the unseated hinges on it, the chain lying
+    on the guide line beyond the guide end and wrapping over the guide end (an edge of
+    negligible radius). A hinge seats when it reaches the span (found by root finding);
+    the span then shortens by exactly the seated link, so ``x`` and ``v`` are
+    continuous. Free entry is the same mechanism with ``G`` at infinity.
+``"paper"``
+    Seed 002's own simplified mechanism: a rigid rod of fixed length from the seated
+    hinge to a point sliding on the guide line, closed forms (14)-(43) with the
+    printed errors corrected (list in :mod:`chaindrive.kinematics.paper`).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from .._registry import Registry
+from .._results import Result
+from .._validation import as_float_array, check_nonnegative, check_positive, check_teeth
+from ..errors import InfeasibleError, InputError
+from ..geometry.polygon import bi_regular_polygon, roller_chain_pitch_radius
+from . import paper as _paper
+from .solver import WheelPolygon, taut_entry, taut_seating_angles
+
+__all__ = [
+    "EntryKinematics",
+    "chain_entry",
+    "seed002_case",
+    "ENTRIES",
+    "MODELS",
+    "SUMMARY_KEYS",
+]
+
+#: Named entry types.
+ENTRIES = Registry("entry")
+for _name in ("free", "chordal", "tangential", "guided"):
+    ENTRIES.add(_name, _name)
+
+#: Models of the guided mechanism.
+MODELS = Registry("model")
+
+#: Keys of :attr:`EntryKinematics.summary` required by the CLI's JSON.
+SUMMARY_KEYS = (
+    "v_mean",
+    "v_min",
+    "v_max",
+    "nonuniformity",
+    "a_min",
+    "a_max",
+    "sign_change_at_period_end",
+    "transverse_throw",
+)
+
+
+@dataclass
+class EntryKinematics(Result):
+    """Kinematics of the chain over the requested wheel angles.
+
+    Attributes
+    ----------
+    phi : ndarray
+        Wheel angles ``φ`` [rad].
+    x : ndarray
+        Chain displacement towards the wheel, ``x(0) = 0`` [m].
+    velocity : ndarray
+        Chain velocity ``v`` [m/s].
+    acceleration : ndarray
+        Chain acceleration ``a`` [m/s²].
+    transverse_position, transverse_velocity, transverse_acceleration : ndarray or None
+        Free entry only: height of the span above the axis [m], its rate [m/s] and
+        acceleration [m/s²] (seed 002 eqs 3-4, 12-13); ``None`` for guided entry (the
+        chain in the guide has no transverse motion).
+    summary : dict
+        ``v_mean``, ``v_min``, ``v_max`` [m/s], ``nonuniformity`` [-], ``a_min``,
+        ``a_max`` [m/s²], ``sign_change_at_period_end`` (bool), ``transverse_throw`` [m],
+        plus ``advance_per_period`` [m], ``a_end_left``/``a_end_right`` (acceleration
+        just before the end / just after the start of the period) [m/s²],
+        ``a_abs_max`` [m/s²], ``a_jump_at_period_end`` [m/s²]. Computed on a dense
+        internal grid including both sides of every seating, not on ``phi``.
+    entry, model : str
+        Entry type and model.
+    chain_type : str
+        ``"link"`` or ``"roller"``.
+    pitch, bar_diameter, radius : float
+        ``t`` (``p``), ``d`` (0 for a roller chain), ``R`` [m].
+    teeth : int
+        ``z``.
+    angular_velocity : float
+        ``ω`` [rad/s].
+    delta1, delta2 : float
+        Central angles [rad].
+    guide_height, guide_end_distance : float or None
+        ``H``, ``l`` [m].
+    period : float
+        ``2π/z`` [rad].
+    seating_angles : ndarray
+        Wheel angles of the seatings inside ``[0, 2π/z)`` (exact model, and tangential
+        paper model ``φ_g1, φ_g2``) [rad].
+    """
+
+    phi: np.ndarray
+    x: np.ndarray
+    velocity: np.ndarray
+    acceleration: np.ndarray
+    transverse_position: np.ndarray | None
+    transverse_velocity: np.ndarray | None
+    transverse_acceleration: np.ndarray | None
+    summary: dict
+    entry: str
+    model: str
+    chain_type: str
+    pitch: float
+    bar_diameter: float
+    teeth: int
+    angular_velocity: float
+    radius: float
+    delta1: float
+    delta2: float
+    guide_height: float | None
+    guide_end_distance: float | None
+    period: float
+    seating_angles: np.ndarray = field(default_factory=lambda: np.zeros(0))
+
+
+@dataclass(frozen=True)
+class _Case:
+    roller: bool
+    t: float
+    d: float
+    z: int
+    R: float
+    d1: float
+    d2: float
+    w: float
+    entry: str
+    H: float | None
+    l: float | None
+
+    @property
+    def period(self) -> float:
+        return 2.0 * np.pi / self.z
+
+    def polygon(self) -> WheelPolygon:
+        if self.roller:
+            phase = 0.0 if self.entry == "tangential" else 0.5 * self.d1
+            return WheelPolygon(self.R, (self.t,), (self.d1,), phase)
+        if self.entry == "tangential":
+            return WheelPolygon(self.R, (self.t + self.d, self.t - self.d), (self.d1, self.d2), 0.0)
+        return WheelPolygon(self.R, (self.t - self.d, self.t + self.d), (self.d2, self.d1), 0.5 * self.d1)
+
+    def guide(self):
+        return None if self.entry == "free" else (self.l, self.H)
+
+
+# ----------------------------------------------------------------------------- models
+
+
+@MODELS.register("exact")
+def _exact(case: _Case, phi):
+    poly = case.polygon()
+    guide = case.guide()
+    seats = taut_seating_angles(poly, guide)
+    if guide is not None:
+        _check_reach(case, poly, seats)
+    r = taut_entry(poly, phi, case.w, guide, seats)
+    T = case.period
+    s = np.mod(seats[:-1], T)
+    r["seats"] = np.sort(np.where(np.isclose(s, T, rtol=0, atol=1e-12), 0.0, s))
+    r["advance"] = poly.advance
+    return r
+
+
+def _check_reach(case, poly, seats):
+    """At every seating the span must be at least as long as the seated link."""
+    gx, gy = case.guide()
+    for j in range(len(poly.links)):
+        b_prev, _ = poly.vertex(j - 1)
+        beta = b_prev - seats[j]
+        D = np.hypot(gx - case.R * np.sin(beta), gy - case.R * np.cos(beta))
+        if D <= poly.link_after(j - 1) * (1 + 1e-9):
+            raise InfeasibleError("the guide end is closer to the wheel than one link")
+
+
+@MODELS.register("paper")
+def _paper_model(case: _Case, phi):
+    t, d = (case.t, 0.0) if case.roller else (case.t, case.d)
+    d1, d2 = case.d1, (case.d1 if case.roller else case.d2)
+    with np.errstate(invalid="ignore"):
+        if case.entry == "free":
+            r = _paper.paper_free_entry(phi, case.R, d1, d2, case.w, roller=case.roller)
+            r["seats"] = np.array([0.0]) if case.roller else np.array([0.0, 0.5 * (d1 + d2)])
+        elif case.entry == "chordal":
+            r = _paper.paper_chordal_entry(phi, t, d, case.R, d1, d2, case.l, case.w,
+                                           roller=case.roller)
+            r["seats"] = np.array([0.0]) if case.roller else np.array([0.0, 0.5 * (d1 + d2)])
+        elif case.entry == "tangential":
+            r = _paper.paper_tangential_entry(phi, t, d, case.R, d1, d2, case.l, case.w,
+                                              roller=case.roller)
+            g1, g2 = r["limit_angles"]
+            r["seats"] = np.array([g1]) if case.roller else np.array([g1, g2])
+            if not case.roller and not (g1 < d1 < g2 < d1 + d2):
+                raise InfeasibleError("limit angles out of order")
+        else:
+            raise InputError(
+                "model='paper' covers entry 'free', 'chordal' and 'tangential' only "
+                "(the paper gives no closed form for another guide_height); use model='exact'"
+            )
+    for key in ("x", "velocity", "acceleration"):
+        if not np.all(np.isfinite(r[key])):
+            raise InfeasibleError("the rod of the paper's mechanism cannot reach the guide line")
+    return r
+
+
+# ----------------------------------------------------------------------------- public API
+
+
+def _make_case(pitch, teeth, angular_velocity, bar_diameter, entry, guide_end_distance,
+               guide_height) -> _Case:
+    t = float(check_positive("pitch", pitch, "m"))
+    z = int(check_teeth("teeth", teeth))
+    w = float(check_positive("angular_velocity", angular_velocity, "rad/s"))
+    roller = bar_diameter is None
+    if roller:
+        d = 0.0
+        R = float(roller_chain_pitch_radius(t, z))
+        d1 = d2 = 2.0 * np.pi / z
+    else:
+        d = float(check_nonnegative("bar_diameter", bar_diameter, "m"))
+        if d >= t:
+            raise InputError(f"bar_diameter must lie in [0, pitch) = [0, {t:g}) m, got {d:g}")
+        R, d1, d2 = (float(v) for v in bi_regular_polygon(t + d, t - d, z))
+    if entry is None:
+        entry = "free" if guide_height is None else "guided"
+    entry = ENTRIES.get(entry)
+    if guide_height is not None:
+        if entry in ("chordal", "tangential"):
+            raise InputError(
+                f"give either entry='{entry}' (which fixes the guide height) or guide_height, not both"
+            )
+        entry = "guided"
+    H = None
+    if entry == "chordal":
+        H = R * np.cos(0.5 * d1)
+    elif entry == "tangential":
+        H = R
+    elif entry == "guided":
+        if guide_height is None:
+            raise InputError("entry='guided' needs guide_height [m], 0 <= guide_height < inf")
+        H = float(check_nonnegative("guide_height", guide_height, "m"))
+    l = None
+    if entry != "free":
+        if guide_end_distance is None:
+            raise InputError(f"entry={entry!r} needs guide_end_distance [m] (0 < l < inf)")
+        l = float(check_positive("guide_end_distance", guide_end_distance, "m"))
+    return _Case(roller, t, d, z, R, d1, d2, w, entry, H, l)
+
+
+def _run(case: _Case, model: str, phi):
+    fn = MODELS.get(model)
+    return fn(case, phi)
+
+
+def _feasible(case, model) -> bool:
+    try:
+        _run(case, model, np.linspace(0.0, case.period, 64))
+    except InfeasibleError:
+        return False
+    return True
+
+
+def _bisect(pred, lo, hi, n=50):
+    """Smallest value in [lo, hi] with pred true (pred(hi) true, monotone)."""
+    for _ in range(n):
+        mid = 0.5 * (lo + hi)
+        if pred(mid):
+            hi = mid
+        else:
+            lo = mid
+    return hi
+
+
+def _explain_infeasible(case: _Case, model: str, exc: Exception):
+    from dataclasses import replace
+
+    reason = str(exc)
+    hi = case.R + 20 * (case.t + case.d)
+    if not _feasible(replace(case, l=hi), model):
+        raise InfeasibleError(f"infeasible mechanism: {reason}") from None
+    l_min = _bisect(lambda v: _feasible(replace(case, l=v), model), 0.0, hi)
+    msg = (
+        f"guide_end_distance = {case.l:g} m is too close to the wheel for the chain to reach "
+        f"the guide end ({reason}); with guide_height = {case.H:g} m it must be > {l_min:.6g} m"
+    )
+    if case.entry == "guided":
+        Hhi = case.R + 20 * (case.t + case.d)
+        if _feasible(replace(case, H=Hhi), model):
+            H_min = _bisect(lambda v: _feasible(replace(case, H=v), model), 0.0, Hhi)
+            msg += (
+                f"; or, with guide_end_distance = {case.l:g} m, guide_height must lie in "
+                f"[{H_min:.6g}, inf) m"
+            )
+    raise InfeasibleError(msg) from None
+
+
+def _summary(case: _Case, model: str, seats) -> dict:
+    T = case.period
+    base = np.linspace(0.0, T, 4001)
+    eps = 1e-9 * T
+    extra = np.concatenate([seats - eps, seats + eps, [T - eps, eps, T - 1e-4 * T, 1e-4 * T]])
+    extra = extra[(extra > 0) & (extra < T)]
+    grid = np.sort(np.concatenate([base[:-1], extra]))
+    r = _run(case, model, grid)
+    v, a = r["velocity"], r["acceleration"]
+    advance = float(r["advance"])
+    v_mean = advance / (T / case.w)
+    # one-sided limits of the acceleration at the period end (left) and start (right)
+    a_left = float(_run(case, model, np.array([T - 1e-12 * T]))["acceleration"][0])
+    a_right = float(_run(case, model, np.array([1e-12 * T]))["acceleration"][0])
+    amax = float(np.max(np.abs(a)))
+    tol = 1e-6 * amax
+    sign_change = bool((abs(a_left) > tol) and (abs(a_right) > tol) and (a_left * a_right < 0))
+    # jumps of the acceleration at the seatings (and resets) inside the period
+    s_in = np.asarray(seats, dtype=float)
+    s_in = s_in[(s_in > eps) & (s_in < T - eps)]
+    jumps = [a_right - a_left]
+    if s_in.size:
+        lo = _run(case, model, s_in - 1e-12 * T)["acceleration"]
+        hi = _run(case, model, s_in + 1e-12 * T)["acceleration"]
+        jumps += list(hi - lo)
+    jumps = np.asarray(jumps)
+    if case.entry == "free":
+        y = r["y"]
+        throw = float(case.R - case.R * np.cos(0.5 * max(case.d1, case.d2)))
+        throw = max(throw, float(np.max(y) - np.min(y)))
+    else:
+        throw = 0.0
+    return {
+        "v_mean": v_mean,
+        "v_min": float(np.min(v)),
+        "v_max": float(np.max(v)),
+        "nonuniformity": float((np.max(v) - np.min(v)) / v_mean),
+        "a_min": float(np.min(a)),
+        "a_max": float(np.max(a)),
+        "sign_change_at_period_end": sign_change,
+        "transverse_throw": throw,
+        "advance_per_period": advance,
+        "a_end_left": a_left,
+        "a_end_right": a_right,
+        "a_abs_max": amax,
+        "a_jump_at_period_end": a_right - a_left,
+        "a_jump_max": float(np.max(np.abs(jumps))),
+        "sign_changing_jumps": int(np.sum(_sign_jumps(case, model, s_in, T, tol)) + sign_change),
+    }
+
+
+def _sign_jumps(case, model, s_in, T, tol):
+    if s_in.size == 0:
+        return np.zeros(0, dtype=bool)
+    lo = _run(case, model, s_in - 1e-12 * T)["acceleration"]
+    hi = _run(case, model, s_in + 1e-12 * T)["acceleration"]
+    return (np.abs(lo) > tol) & (np.abs(hi) > tol) & (lo * hi < 0)
+
+
+def chain_entry(
+    pitch,
+    teeth,
+    angular_velocity,
+    *,
+    bar_diameter=None,
+    entry: str | None = "free",
+    guide_end_distance=None,
+    guide_height=None,
+    model: str = "exact",
+    points: int = 361,
+    phi=None,
+) -> EntryKinematics:
+    r"""Position, velocity and acceleration of a chain entering a wheel, over one period.
+
+    .. math::
+        v_{free} = ωR\cos β,\qquad v_{guided} = -ω\,u\cdot\frac{dS}{dφ}
+        \ (\text{exact}),\qquad \bar v = \frac{z ω}{2π}\,\sum \text{links}
+
+    Parameters
+    ----------
+    pitch : float
+        Chain pitch: inner link length ``t`` of a round link chain, or roller-chain
+        pitch ``p`` [m].
+    teeth : int
+        Number of pockets/teeth ``z >= 3`` [-].
+    angular_velocity : float
+        Wheel speed ``ω > 0`` [rad/s].
+    bar_diameter : float, optional
+        Bar diameter ``d`` of a round link chain, ``0 <= d < t`` [m]; ``None`` for a
+        roller chain (regular polygon).
+    entry : {"free", "chordal", "tangential", "guided"}
+        Entry type; ``"guided"`` (implied by ``guide_height``) takes ``guide_height``.
+    guide_end_distance : float, optional
+        Distance ``l`` of the guide end from the wheel axis along the guide line [m];
+        required for guided entry.
+    guide_height : float, optional
+        Height ``H >= 0`` of the guide line above the wheel axis [m] (custom guide).
+    model : {"exact", "paper"}
+        Mechanism (see module docstring).
+    points : int
+        Number of samples over ``0 <= φ <= 2π/z`` (ignored if ``phi`` is given).
+    phi : float or array_like, optional
+        Wheel angles to evaluate [rad] (any range; results are periodic with ``2π/z``
+        apart from ``x``, which grows by the advance per period).
+
+    Returns
+    -------
+    EntryKinematics
+        Arrays over ``phi`` and the summary.
+
+    Raises
+    ------
+    InputError
+        Non-positive pitch or speed, ``teeth < 3``, bar diameter outside ``[0, t)``,
+        a missing or negative guide parameter, or conflicting ``entry``/``guide_height``.
+    InfeasibleError
+        The guide end is too close to the wheel for the chain to reach it (the message
+        gives the smallest feasible ``guide_end_distance`` and, for a custom guide, the
+        feasible ``guide_height`` range).
+    UnknownNameError
+        Unknown ``entry`` or ``model``.
+
+    Notes
+    -----
+    Valid for a rigid, inextensible chain at constant ``ω``; ``H >= 0``. At a seating
+    the acceleration jumps; ``phi`` exactly at the period end takes the limit from the
+    left. Mean speed over a period is exactly ``(chain per period) z ω / 2π`` for the
+    exact model and the paper's free and tangential entry; the paper's chordal entry
+    resets its rod at ``π/z`` and advances slightly more (see ``summary``).
+
+    References
+    ----------
+    Seed 002, eqs (1)-(43), Figs 2-5.
+
+    Examples
+    --------
+    Seed 002's case: chain 18x64, z = 8, ω = 5 s⁻¹, tangential entry, l = 0.256 m.
+
+    >>> r = chain_entry(0.064, 8, 5.0, bar_diameter=0.018, entry="tangential",
+    ...                 guide_end_distance=0.256)
+    >>> round(r.summary["v_mean"], 6), round(0.128 * 8 * 5.0 / (2 * np.pi), 6)
+    (0.814873, 0.814873)
+
+    Roller chain, free entry: ``v_min / v_max = cos(π/z)``.
+
+    >>> r = chain_entry(0.0254, 12, 10.0)
+    >>> round(r.summary["v_min"] / r.summary["v_max"], 6), round(float(np.cos(np.pi / 12)), 6)
+    (0.965926, 0.965926)
+    """
+    case = _make_case(pitch, teeth, angular_velocity, bar_diameter, entry, guide_end_distance,
+                      guide_height)
+    MODELS.get(model)
+    T = case.period
+    if phi is None:
+        n = int(check_positive("points", points))
+        if n < 2:
+            raise InputError(f"points must be >= 2, got {n}")
+        phi_arr = np.linspace(0.0, T, n)
+    else:
+        phi_arr = as_float_array("phi", phi)
+        if not np.all(np.isfinite(phi_arr)):
+            raise InputError("phi must be finite [rad] (-inf < phi < inf)")
+    ev = np.atleast_1d(phi_arr).astype(float).copy()
+    at_end = np.isclose(np.mod(ev, T), 0.0, rtol=0, atol=1e-14) & (ev > 0)
+    ev[at_end] = np.nextafter(ev[at_end], -np.inf)  # left limit at the period end
+    try:
+        r = _run(case, model, ev)
+    except InfeasibleError as exc:
+        if case.entry == "free":
+            raise
+        _explain_infeasible(case, model, exc)
+    summary = _summary(case, model, np.asarray(r["seats"], dtype=float))
+    shape = np.shape(phi_arr)
+
+    def out(key):
+        return None if key not in r else np.reshape(r[key], shape)
+
+    free = case.entry == "free"
+    return EntryKinematics(
+        phi=phi_arr,
+        x=out("x"),
+        velocity=out("velocity"),
+        acceleration=out("acceleration"),
+        transverse_position=out("y") if free else None,
+        transverse_velocity=out("vy") if free else None,
+        transverse_acceleration=out("ay") if free else None,
+        summary=summary,
+        entry=case.entry,
+        model=model,
+        chain_type="roller" if case.roller else "link",
+        pitch=case.t,
+        bar_diameter=case.d,
+        teeth=case.z,
+        angular_velocity=case.w,
+        radius=case.R,
+        delta1=case.d1,
+        delta2=case.d2,
+        guide_height=case.H,
+        guide_end_distance=case.l,
+        period=T,
+        seating_angles=np.asarray(r["seats"], dtype=float),
+    )
+
+
+def seed002_case(model: str = "exact", points: int = 361) -> dict[str, EntryKinematics]:
+    """Free, chordal and tangential entry of seed 002's worked case.
+
+    Chain 18x64 (``t = 0.064 m``, ``d = 0.018 m``), ``z = 8``, ``ω = 5 rad/s``,
+    ``l = 0.256 m`` (seed 002, Figs 2 and 3).
+
+    Parameters
+    ----------
+    model : {"exact", "paper"}
+        Mechanism.
+    points : int
+        Samples per period.
+
+    Returns
+    -------
+    dict
+        ``{"free": ..., "chordal": ..., "tangential": ...}`` of :class:`EntryKinematics`.
+
+    Examples
+    --------
+    >>> cases = seed002_case()
+    >>> sorted(cases)
+    ['chordal', 'free', 'tangential']
+    """
+    common = dict(bar_diameter=0.018, guide_end_distance=0.256, model=model, points=points)
+    return {e: chain_entry(0.064, 8, 5.0, entry=e, **common) for e in ("free", "chordal", "tangential")}

@@ -1,0 +1,466 @@
+r"""General vectorised solver of a chain running onto a polygonal wheel.
+
+Geometry (all cases; sketch)::
+
+                 y
+                 ^        guide line y = H         guide end G = (l, H)
+                 |   S_prev  S   free span  N        |
+                 |     o-----o-------------o--------*====o====o====  chain in the guide
+                 |    /       \_  (taut, straight)  |        <- chain moves towards -x
+                 |   /  wheel   \                   |
+            -----O-----------------------------------+-------> x
+                 |  axis, turning counter-clockwise   l
+                 |  (top moves to -x) at ω = dφ/dt
+
+* The wheel axis is the origin O; the chain arrives from ``+x`` and moves towards
+  ``-x``; the wheel turns counter-clockwise (its top moves towards ``-x``).
+* A hinge centre seated on the wheel is a vertex of the pitch polygon (radius ``R``).
+  Its position is ``(R sin β, R cos β)``, ``β`` being its angle from the top measured
+  towards the incoming chain; ``β = β0 - φ``.
+* Vertex ``k`` (any integer) and vertex ``k + 1`` are joined by a link; the link
+  lengths and central angles repeat with the period ``2π/z`` (two links, ``t + d`` and
+  ``t - d``, for a round link chain; one link ``p`` for a roller chain).
+* The guide line is ``y = H``; the guide end is the point ``G = (l, H)``: ``l`` is the
+  distance of the guide end from the wheel axis measured along the guide line (from the
+  foot of the perpendicular dropped from the axis onto the guide line).
+
+Two mechanisms are solved:
+
+``taut`` (the exact model)
+    The free span is a straight segment from the last seated hinge ``S`` to the guide
+    end ``G``; the unseated hinges lie on it at their link distances from ``S``; the
+    chain wraps over the guide end (a corner of negligible radius) and lies on the guide
+    line beyond it. The chain position is the material coordinate of the chain point
+    at ``G``: ``x = c_k + |G - S_k|`` (``c_k`` = chain length from hinge 0 to hinge
+    ``k``). Hinge ``k + 1`` seats when it reaches the span, i.e. when the chord
+    ``S_k → V_{k+1}`` becomes collinear with ``S_k → G``; at that instant the span
+    shortens by exactly the seated link, so ``x`` and (rigid-body property of the
+    wheel) ``dx/dφ`` are continuous. ``G`` at infinity in direction ``+x`` gives the
+    free entry (the span keeps its direction, seed 002 eqs 1-13).
+
+``rod`` (the paper's simplified model)
+    The free span from the seated hinge ``S_k`` to a slider ``P = (X, H)`` on the guide
+    line is a rigid rod of given length ``L``; ``x = l - X`` (+ a constant making ``x``
+    continuous). The rod length and the hinge it starts from change either at a seating
+    event (rod collinear with the next chord; then ``L`` shrinks by that link) or at
+    prescribed angles (the paper's chordal case).
+
+Velocity and acceleration follow analytically (implicit differentiation of the
+closure), never by numerical differencing.
+
+References
+----------
+Seed 002 (Dolipiński, Reich, Adamowicz, Ziegler, "Wymuszone nabieganie łańcucha
+ogniwowego na koło gniazdowe"), Figs 1, 4, 5 and eqs (1)-(43).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+from scipy.optimize import brentq
+
+from ..errors import InfeasibleError
+
+__all__ = [
+    "WheelPolygon",
+    "taut_seating_angles",
+    "taut_entry",
+    "rod_entry",
+    "rod_seating_schedule",
+]
+
+
+@dataclass(frozen=True)
+class WheelPolygon:
+    """Pitch polygon of a chain seated on a wheel, with its phase.
+
+    Parameters
+    ----------
+    radius : float
+        Pitch radius ``R`` [m].
+    links : tuple of float
+        Lengths of the links following vertex 0 towards the incoming chain, one
+        period (``(t - d, t + d)`` or ``(t + d, t - d)``, or ``(p,)``) [m].
+    angles : tuple of float
+        Central angles of those links [rad]; they sum to ``2π/z``.
+    phase : float
+        Angle ``β0`` of vertex 0 from the top (towards the incoming chain) at ``φ = 0``
+        [rad].
+    """
+
+    radius: float
+    links: tuple[float, ...]
+    angles: tuple[float, ...]
+    phase: float
+
+    @property
+    def period(self) -> float:
+        """Angular period ``2π/z`` [rad]."""
+        return float(sum(self.angles))
+
+    @property
+    def advance(self) -> float:
+        """Chain length per period (``2t`` or ``p``) [m]."""
+        return float(sum(self.links))
+
+    def _cum(self):
+        ca = np.concatenate(([0.0], np.cumsum(self.angles)))
+        cl = np.concatenate(([0.0], np.cumsum(self.links)))
+        return ca, cl
+
+    def vertex(self, k) -> tuple[np.ndarray, np.ndarray]:
+        """Angle ``β_k`` at ``φ = 0`` [rad] and material coordinate ``c_k`` [m] of vertex ``k``."""
+        k = np.asarray(k)
+        n = len(self.links)
+        q, r = np.divmod(k, n)
+        ca, cl = self._cum()
+        return self.phase + q * self.period + ca[r], q * self.advance + cl[r]
+
+    def link_after(self, k) -> float:
+        """Length of the link from vertex ``k`` to vertex ``k + 1`` [m]."""
+        return self.links[int(k) % len(self.links)]
+
+    def angle_after(self, k) -> float:
+        """Central angle of the link from vertex ``k`` to ``k + 1`` [rad]."""
+        return self.angles[int(k) % len(self.angles)]
+
+
+def _pos(radius, beta):
+    return radius * np.sin(beta), radius * np.cos(beta)
+
+
+def _taut_gap(poly: WheelPolygon, k: int, phi, guide):
+    """Cross product (N - S) x (G - S): > 0 while vertex k+1 is inside the span line."""
+    b0, _ = poly.vertex(k)
+    b1, _ = poly.vertex(k + 1)
+    sx, sy = _pos(poly.radius, b0 - phi)
+    nx, ny = _pos(poly.radius, b1 - phi)
+    if guide is None:  # free entry: span direction +x
+        wx, wy = 1.0, 0.0
+    else:
+        wx, wy = guide[0] - sx, guide[1] - sy
+    return (nx - sx) * wy - (ny - sy) * wx
+
+
+def _find_crossing(fun, estimate: float, what: str) -> float:
+    """Root of ``fun`` where it goes from + to -, nearest to ``estimate``."""
+    grid = estimate + np.linspace(-0.5 * np.pi, 0.5 * np.pi, 1441)
+    g = fun(grid)
+    idx = np.nonzero((g[:-1] > 0) & (g[1:] <= 0))[0]
+    if idx.size == 0:
+        raise InfeasibleError(f"no seating of {what} found: the span never reaches the next hinge")
+    i = idx[np.argmin(np.abs(grid[idx] - estimate))]
+    if g[i + 1] == 0.0:
+        return float(grid[i + 1])
+    return float(brentq(fun, grid[i], grid[i + 1], xtol=1e-15, rtol=1e-15, maxiter=200))
+
+
+def taut_seating_angles(poly: WheelPolygon, guide=None) -> np.ndarray:
+    """Wheel angles at which vertices 0..n seat (taut span to ``guide``, or free entry).
+
+    Parameters
+    ----------
+    poly : WheelPolygon
+        Pitch polygon and phase.
+    guide : tuple (l, H) or None
+        Guide end ``G`` [m]; ``None`` for free entry (span direction ``+x``).
+
+    Returns
+    -------
+    ndarray, shape (n + 1,)
+        ``φ_k`` [rad]; vertex ``k`` is the last seated hinge for ``φ_k <= φ < φ_{k+1}``;
+        ``φ_n = φ_0 + 2π/z``.
+
+    Examples
+    --------
+    Free entry of a roller chain: a hinge seats when the link before it is horizontal.
+
+    >>> poly = WheelPolygon(1.0, (2 * np.sin(np.pi / 8),), (np.pi / 4,), np.pi / 8)
+    >>> np.round(taut_seating_angles(poly), 12)
+    array([0.      , 0.785398])
+    """
+    n = len(poly.links)
+    out = np.empty(n + 1)
+    if guide is None:
+        beta_t = 0.0  # free entry: the span touches the circle at the top
+    else:
+        rho = float(np.hypot(guide[0], guide[1]))
+        if rho <= poly.radius:
+            raise InfeasibleError("the guide end lies inside the pitch circle")
+        # tangent point of the span seen from G (chain wrapping counter-clockwise)
+        beta_t = float(np.arctan2(guide[0], guide[1]) - np.arccos(poly.radius / rho))
+    for j in range(n):
+        b_prev, _ = poly.vertex(j - 1)
+        b_j, _ = poly.vertex(j)
+        # estimate: link (j-1, j) symmetric about the tangent point
+        est = 0.5 * (b_j + b_prev) - beta_t
+        out[j] = _find_crossing(
+            lambda p, j=j: _taut_gap(poly, j - 1, p, guide), est, f"hinge {j}"
+        )
+    out[n] = out[0] + poly.period
+    if np.any(np.diff(out) <= 0):
+        raise InfeasibleError("seating angles are not increasing: the span cuts the wheel")
+    return out
+
+
+def _locate(poly: WheelPolygon, seats: np.ndarray, phi):
+    """Index k of the last seated vertex and its β at φ = 0 and c_k (vectorised)."""
+    n = len(poly.links)
+    T = poly.period
+    q = np.floor((phi - seats[0]) / T)
+    r = phi - q * T
+    j = np.searchsorted(seats[:n], r, side="right") - 1
+    j = np.clip(j, 0, n - 1)
+    k = (q * n + j).astype(np.int64)
+    beta0, c = poly.vertex(k)
+    return k, beta0, c
+
+
+def taut_entry(poly: WheelPolygon, phi, angular_velocity: float, guide=None, seats=None):
+    r"""Position, velocity and acceleration of the chain for the taut-span mechanism.
+
+    .. math::
+        x = c_k + |G - S_k(φ)| - x_0,\quad
+        \frac{dx}{dφ} = -u\cdot S_φ,\quad
+        \frac{d^2x}{dφ^2} = \frac{R^2 - (u\cdot S_φ)^2}{|G - S|} + u\cdot S
+
+    with ``u = (G - S)/|G - S|``, ``S_φ = dS/dφ``, ``S_φφ = -S``; for free entry
+    (``guide=None``) ``u = (1, 0)`` and the first term vanishes.
+
+    Parameters
+    ----------
+    poly : WheelPolygon
+        Pitch polygon and phase.
+    phi : array_like
+        Wheel angles ``φ`` [rad].
+    angular_velocity : float
+        ``ω`` [rad/s].
+    guide : tuple (l, H) or None
+        Guide end [m]; ``None`` = free entry.
+    seats : ndarray, optional
+        Seating angles from :func:`taut_seating_angles` (computed if omitted).
+
+    Returns
+    -------
+    dict
+        ``x`` [m], ``velocity`` [m/s], ``acceleration`` [m/s²] (along the chain, positive
+        towards the wheel), ``y``, ``vy``, ``ay`` (transverse motion of the last seated
+        hinge, [m], [m/s], [m/s²]), ``k`` (last seated vertex), ``seats``.
+
+    Examples
+    --------
+    >>> poly = WheelPolygon(1.0, (2 * np.sin(np.pi / 8),), (np.pi / 4,), np.pi / 8)
+    >>> r = taut_entry(poly, [0.0, np.pi / 8], 1.0)
+    >>> np.round(r["velocity"], 6)
+    array([0.92388, 1.     ])
+    """
+    phi = np.asarray(phi, dtype=float)
+    if seats is None:
+        seats = taut_seating_angles(poly, guide)
+    R = poly.radius
+    w = angular_velocity
+
+    def geometry(ph):
+        k, b0, c = _locate(poly, seats, ph)
+        beta = b0 - ph
+        sb, cb = np.sin(beta), np.cos(beta)
+        return k, c, sb, cb
+
+    k, c, sb, cb = geometry(phi)
+    sx, sy = R * sb, R * cb
+    spx, spy = -R * cb, R * sb  # dS/dφ
+    if guide is None:
+        m = c - sx
+        m0 = _free_m0(poly, seats)
+        dm = -spx
+        ddm = sx
+    else:
+        gx, gy = guide
+        wx, wy = gx - sx, gy - sy
+        D = np.hypot(wx, wy)
+        ux, uy = wx / D, wy / D
+        us = ux * spx + uy * spy
+        m = c + D
+        _, c0, sb0, cb0 = geometry(np.zeros(1))
+        m0 = float(c0[0] + np.hypot(gx - R * sb0[0], gy - R * cb0[0]))
+        dm = -us
+        ddm = (R * R - us * us) / D + (ux * sx + uy * sy)
+    return {
+        "x": m - m0,
+        "velocity": w * dm,
+        "acceleration": w * w * ddm,
+        "y": sy,
+        "vy": w * spy,
+        "ay": -w * w * sy,
+        "k": k,
+        "seats": seats,
+    }
+
+
+def _free_m0(poly, seats):
+    k, b0, c = _locate(poly, seats, np.zeros(1))
+    return float(c[0] - poly.radius * np.sin(b0[0]))
+
+
+# ----------------------------------------------------------------------------- rod model
+
+
+def _rod_slider(R, beta, H, L):
+    sx, sy = R * np.sin(beta), R * np.cos(beta)
+    h = H - sy
+    disc = L * L - h * h
+    return sx, sy, h, disc
+
+
+def rod_seating_schedule(poly: WheelPolygon, guide, n_events: int | None = None):
+    """Event-driven rod schedule: the rod starts at vertex 0 with length ``|G - V_0(0)|``.
+
+    At ``φ = 0`` the slider is at the guide end; vertex ``k + 1`` seats when the rod
+    from vertex ``k`` is collinear with the chord to it; the rod then shrinks by that
+    link. Returns a list of ``(φ_start, k, L)`` covering ``[0, 2π/z)``.
+
+    Parameters
+    ----------
+    poly : WheelPolygon
+        Pitch polygon and phase (vertex 0 is the seated hinge at ``φ = 0``).
+    guide : tuple (l, H)
+        Guide end [m].
+    n_events : int, optional
+        Number of seatings in the period (default: one per link).
+
+    Returns
+    -------
+    list of tuple
+        ``(φ_start [rad], vertex k, rod length L [m])``.
+
+    Examples
+    --------
+    >>> poly = WheelPolygon(1.0, (2 * np.sin(np.pi / 8),), (np.pi / 4,), 0.0)
+    >>> [(round(p, 6), k, round(L, 6)) for p, k, L in rod_seating_schedule(poly, (5.0, 1.0))]
+    [(0.0, 0, 5.0), (0.409213, 1, 4.234633)]
+    """
+    R = poly.radius
+    gx, gy = guide
+    b0, _ = poly.vertex(0)
+    L = float(np.hypot(gx - R * np.sin(b0), gy - R * np.cos(b0)))
+    sched = [(0.0, 0, L)]
+    n = len(poly.links) if n_events is None else n_events
+    start = 0.0
+    for k in range(n):
+        bk, _ = poly.vertex(k)
+        bn, _ = poly.vertex(k + 1)
+
+        def gap(ph, bk=bk, bn=bn, L=L):
+            sx, sy, h, disc = _rod_slider(R, bk - ph, gy, L)
+            px = sx + np.sqrt(np.maximum(disc, 0.0))
+            nx, ny = R * np.sin(bn - ph), R * np.cos(bn - ph)
+            return (nx - sx) * h - (ny - sy) * (px - sx)
+
+        est = bk + 0.5 * poly.angle_after(k)  # free-entry estimate: chord horizontal
+        phe = _find_crossing(gap, est, f"hinge {k + 1}")
+        if phe <= start or phe >= poly.period:
+            break
+        L = float(L - poly.link_after(k))
+        if L <= 0:
+            raise InfeasibleError("rod length became non-positive: guide end too close")
+        sched.append((float(phe), k + 1, L))
+        start = phe
+    return sched
+
+
+def rod_entry(poly: WheelPolygon, phi, angular_velocity: float, guide, schedule,
+              continuous: bool = True):
+    r"""Position, velocity and acceleration for the rod (slider) mechanism.
+
+    Closure ``F(X, φ) = (X - S_x)^2 + (H - S_y)^2 - L^2 = 0`` solved for the slider
+    abscissa ``X > S_x``; with ``e = X - S_x``, ``h = H - S_y``:
+
+    .. math::
+        e\,e_φ = h\,S_{φ,y},\qquad
+        e_φφ = \frac{h S_{φφ,y} - S_{φ,y}^2 - e_φ^2}{e},\qquad
+        x = l - X,\ \frac{dx}{dφ} = -(S_{φ,x} + e_φ),\
+        \frac{d^2x}{dφ^2} = -(S_{φφ,x} + e_φφ)
+
+    Parameters
+    ----------
+    poly : WheelPolygon
+        Pitch polygon and phase.
+    phi : array_like
+        Wheel angles [rad]; any range (the schedule repeats every period).
+    angular_velocity : float
+        ``ω`` [rad/s].
+    guide : tuple (l, H)
+        Guide end [m].
+    schedule : list of (φ_start, k, L)
+        Intervals of one period ``[0, 2π/z)``; ``k`` the seated vertex, ``L`` the rod.
+    continuous : bool
+        Add constants so that ``x`` is continuous (the paper's chordal case resets the
+        rod, which would otherwise make ``x`` jump).
+
+    Returns
+    -------
+    dict
+        ``x`` [m], ``velocity`` [m/s], ``acceleration`` [m/s²], ``advance`` (chain
+        advance per period [m]), ``k``.
+
+    Examples
+    --------
+    >>> poly = WheelPolygon(1.0, (2 * np.sin(np.pi / 8),), (np.pi / 4,), 0.0)
+    >>> r = rod_entry(poly, [0.0], 1.0, (5.0, 1.0), [(0.0, 0, 5.0)])
+    >>> round(float(r["velocity"][0]), 12)
+    1.0
+    """
+    phi = np.asarray(phi, dtype=float)
+    R = poly.radius
+    gx, H = guide
+    T = poly.period
+    starts = np.array([s[0] for s in schedule])
+    ks = np.array([s[1] for s in schedule])
+    Ls = np.array([s[2] for s in schedule], dtype=float)
+    b0s, _ = poly.vertex(ks)
+
+    def slider(j, ph):
+        beta = b0s[j] - ph
+        sx, sy, h, disc = _rod_slider(R, beta, H, Ls[j])
+        if np.any(disc <= 0):
+            raise InfeasibleError(
+                "guide_end_distance too small: the rod cannot reach the guide line"
+            )
+        return sx + np.sqrt(disc)
+
+    # offsets making x continuous at every switch (zero for event-driven switches)
+    offs = np.zeros(len(schedule))
+    x_start = gx - slider(0, np.array(0.0))
+    for j in range(1, len(schedule)):
+        p = np.array(starts[j])
+        old = gx - slider(j - 1, p) + offs[j - 1]
+        new = gx - slider(j, p)
+        offs[j] = (old - new) if continuous else 0.0
+    advance = float(gx - slider(len(schedule) - 1, np.array(T)) + offs[-1] - x_start)
+
+    q = np.floor(phi / T)
+    r = phi - q * T
+    j = np.clip(np.searchsorted(starts, r, side="right") - 1, 0, len(schedule) - 1)
+    beta = b0s[j] - r
+    sb, cb = np.sin(beta), np.cos(beta)
+    sx, sy = R * sb, R * cb
+    spx, spy = -R * cb, R * sb
+    sppx, sppy = -sx, -sy
+    h = H - sy
+    disc = Ls[j] ** 2 - h * h
+    if np.any(disc <= 0):
+        raise InfeasibleError("guide_end_distance too small: the rod cannot reach the guide line")
+    e = np.sqrt(disc)
+    e1 = h * spy / e
+    e2 = (h * sppy - spy * spy - e1 * e1) / e
+    x = gx - (sx + e) + offs[j] - x_start + q * advance
+    w = angular_velocity
+    return {
+        "x": x,
+        "velocity": -w * (spx + e1),
+        "acceleration": -w * w * (sppx + e2),
+        "advance": advance,
+        "k": ks[j],
+    }
