@@ -210,14 +210,15 @@ def _exact(case: _Case, phi):
 
 
 def _check_reach(case, poly, seats):
-    """At every seating the span must be at least as long as the seated link."""
-    gx, gy = case.guide()
-    for j in range(len(poly.links)):
-        b_prev, _ = poly.vertex(j - 1)
-        beta = b_prev - seats[j]
-        D = np.hypot(gx - case.R * np.sin(beta), gy - case.R * np.cos(beta))
-        if D <= poly.link_after(j - 1) * (1 + 1e-9):
-            raise InfeasibleError("the guide end is closer to the wheel than one link")
+    """At every instant the free span must hold at least one whole (longest) link."""
+    grid = np.linspace(seats[0], seats[-1], 721)
+    span = taut_entry(poly, grid, case.w, case.guide(), seats)["span"]
+    longest = max(poly.links)
+    if np.min(span) < longest:
+        raise InfeasibleError(
+            f"the free span shrinks to {np.min(span):.6g} m, shorter than one link "
+            f"({longest:.6g} m)"
+        )
 
 
 @MODELS.register("paper")

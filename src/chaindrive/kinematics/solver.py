@@ -287,7 +287,9 @@ def taut_entry(poly: WheelPolygon, phi, angular_velocity: float, guide=None, sea
         m0 = float(c0[0] + np.hypot(gx - R * sb0[0], gy - R * cb0[0]))
         dm = -us
         ddm = (R * R - us * us) / D + (ux * sx + uy * sy)
+    span = None if guide is None else D
     return {
+        "span": span,
         "x": m - m0,
         "velocity": w * dm,
         "acceleration": w * w * ddm,

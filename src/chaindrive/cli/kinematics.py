@@ -1,0 +1,117 @@
+"""``chaindrive kinematics``: chain velocity and acceleration at the wheel (seed 002).
+
+Text output gives the summary; ``--json`` prints ``phi``, ``x``, ``velocity``,
+``acceleration`` and ``summary`` in SI units (rad, m, m/s, m/s²); ``--plot FILE`` draws
+free, chordal and tangential entry like seed 002's Figs 2 and 3.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import typer
+
+from ..errors import InputError
+from .app import app, echo_json, quantity
+
+_PLOT = typer.Option(
+    None, "--plot",
+    help="Write a PNG of velocity and acceleration of free, chordal and tangential entry "
+         "(seed 002 Figs 2-3; needs --guide-end).",
+)
+
+
+@app.command("kinematics")
+def kinematics_command(
+    chain: str | None = typer.Option(None, "--chain", "-c", help="Chain from the catalogue, e.g. 18x64 (DIN 22252 round link chain) or 16B (ISO 606 roller chain)."),
+    teeth: int = typer.Option(..., "--teeth", "-z", help="Number of wheel pockets/teeth z >= 3 [-] (seed 002 eq. 6)."),
+    speed: str = typer.Option(..., "--speed", "-w", help="Wheel angular speed ω > 0: '5 rad/s', '48 rpm'; a bare number is rad/s (seed 002 eq. 5, φ = ωt)."),
+    entry: str = typer.Option("free", "--entry", help="Entry type: free (no guide, seed 002 eqs 1-13), chordal (H = R cos δ1/2, eqs 14-25), tangential (H = R, eqs 26-43)."),
+    guide_end: str | None = typer.Option(None, "--guide-end", "-l", help="Distance l of the guide end from the wheel axis along the guide line [m, or '256 mm'] (seed 002 eqs 14-43); needed for guided entry."),
+    guide_height: str | None = typer.Option(None, "--guide-height", help="Custom guide height H above the wheel axis [m, or '160 mm'], H >= 0; replaces --entry chordal/tangential."),
+    model: str = typer.Option("exact", "--model", help="exact: rigid links with a taut span to the guide end (general solver); paper: seed 002's rod mechanism, eqs 14-43 corrected."),
+    points: int = typer.Option(361, "--points", "-n", help="Number of samples over one period 0 <= φ <= 2π/z [-]."),
+    pitch: str | None = typer.Option(None, "--pitch", help="Chain pitch t (link chain) or p (roller chain) [m or '64 mm'] when no --chain is given."),
+    bar_diameter: str | None = typer.Option(None, "--bar-diameter", help="Bar diameter d of a round link chain [m or '18 mm'] (seed 002 eq. 6) when no --chain is given."),
+    roller: bool = typer.Option(False, "--roller", help="Custom chain is a roller chain (regular polygon R = p / (2 sin(π/z))) when no --chain is given."),
+    as_json: bool = typer.Option(False, "--json", help="Print phi [rad], x [m], velocity [m/s], acceleration [m/s²] and the summary as JSON (SI units)."),
+    plot: Path | None = _PLOT,
+) -> None:
+    """Velocity and acceleration of a chain running onto its wheel (polygonal effect).
+
+    Free entry: v = ωR cos β (seed 002 eqs 1-13, ω restored); guided entry through a
+    straight guide at height H with its end at distance l from the axis (eqs 14-43,
+    corrected). Summary: mean, min, max velocity, non-uniformity (vmax - vmin)/vmean,
+    min and max acceleration, sign change of the acceleration at the period end,
+    transverse throw R(1 - cos δ1/2) of free entry.
+    """
+    from ..kinematics import chain_entry
+    from ..kinematics.entry import SUMMARY_KEYS
+
+    t, d = _chain_geometry(chain, pitch, bar_diameter, roller)
+    w = quantity(speed, "rad/s", "speed")
+    l = quantity(guide_end, "m", "guide-end")
+    h = quantity(guide_height, "m", "guide-height")
+    ent = None if (h is not None and entry == "free") else entry
+    r = chain_entry(t, teeth, w, bar_diameter=d, entry=ent, guide_end_distance=l,
+                    guide_height=h, model=model, points=points)
+    if plot is not None:
+        if l is None:
+            raise InputError("--plot draws chordal and tangential entry too: give --guide-end (l > 0 m)")
+        common = dict(bar_diameter=d, guide_end_distance=l, model=model, points=max(points, 721))
+        res = [chain_entry(t, teeth, w, entry=e, **common) for e in ("free", "chordal", "tangential")]
+        if r.entry == "guided":
+            res.append(chain_entry(t, teeth, w, guide_height=h, **common))
+        from ..plotting.kinematics import kinematics_plot
+
+        fig = kinematics_plot(res)
+        fig.savefig(plot, dpi=120)
+        import matplotlib.pyplot as plt
+
+        plt.close(fig)
+    if as_json:
+        summary = {k: r.summary[k] for k in SUMMARY_KEYS}
+        summary.update({k: v for k, v in r.summary.items() if k not in summary})
+        echo_json({"phi": r.phi, "x": r.x, "velocity": r.velocity,
+                   "acceleration": r.acceleration, "summary": summary})
+        return
+    s = r.summary
+    what = f"{r.entry} entry" + (f", H = {r.guide_height * 1e3:.2f} mm" if r.guide_height is not None else "")
+    if r.guide_end_distance is not None:
+        what += f", l = {r.guide_end_distance * 1e3:.1f} mm"
+    print(f"chain entry kinematics ({r.chain_type} chain, z = {r.teeth}, R = {r.radius * 1e3:.3f} mm, "
+          f"ω = {r.angular_velocity:g} rad/s, model {r.model}): {what}")
+    rows = [
+        ("v_mean", f"{s['v_mean']:.6f} m/s"),
+        ("v_min", f"{s['v_min']:.6f} m/s"),
+        ("v_max", f"{s['v_max']:.6f} m/s"),
+        ("nonuniformity", f"{s['nonuniformity']:.6f}"),
+        ("a_min", f"{s['a_min']:.6f} m/s²"),
+        ("a_max", f"{s['a_max']:.6f} m/s²"),
+        ("sign_change_at_period_end", str(s["sign_change_at_period_end"])),
+        ("transverse_throw", f"{s['transverse_throw'] * 1e3:.4f} mm"),
+    ]
+    for k, v in rows:
+        print(f"  {k:<26} {v}")
+    if plot is not None:
+        print(f"wrote {plot}")
+
+
+def _chain_geometry(chain, pitch, bar_diameter, roller):
+    """(pitch [m], bar diameter [m] or None for a roller chain) from --chain or the custom options."""
+    if chain is not None:
+        if pitch is not None or bar_diameter is not None or roller:
+            raise InputError("give either --chain or --pitch with --bar-diameter/--roller, not both")
+        from .. import chains
+
+        c = chains.get(chain)
+        if c.is_link_chain:
+            return c.pitch, c.bar_diameter
+        return c.pitch, None
+    if pitch is None:
+        raise InputError("give --chain (e.g. 18x64) or --pitch with --bar-diameter or --roller")
+    t = quantity(pitch, "m", "pitch")
+    if roller == (bar_diameter is not None):
+        raise InputError("a custom chain needs exactly one of --bar-diameter (link chain) and --roller")
+    d = quantity(bar_diameter, "m", "bar-diameter")
+    return t, d
