@@ -304,6 +304,8 @@ def test_errors():
         tooth_width(P16B, B16B, strands=0)
     with pytest.raises(InfeasibleError, match="no hub fits"):
         max_hub_diameter(P16B, 9, 0.1)
+    with pytest.raises(InputError, match="must be scalars"):
+        sprocket_outline(P16B, [19, 20], D16B)
     with pytest.raises(InfeasibleError, match="topping radius"):
         ansi_tooth_form(P16B, 19, 0.2 * P16B)
 

@@ -818,6 +818,8 @@ def sprocket_outline(pitch, teeth, roller_diameter, *, method="iso606", form=Non
     (True, 19)
     """
     fn = TOOTH_FORMS.get(method)
+    if np.ndim(teeth) or np.ndim(pitch) or np.ndim(roller_diameter):
+        raise InputError("sprocket_outline draws one wheel: pitch, teeth and roller_diameter must be scalars")
     if method == "iso606" and form is None:
         form = "min"
     return fn(pitch, teeth, roller_diameter, form=form, tip_diameter=tip_diameter)
