@@ -7,7 +7,42 @@ import numpy as np
 __all__ = ["geometry_plot"]
 
 
-def geometry_plot(wheel, *, ax=None, form=None, detail: bool = False):
+def _chain_overlay(ax, wheel, mm):
+    """Draw the chain on the wheel: rollers, pins, or round links (internal)."""
+    from matplotlib.patches import Circle, FancyBboxPatch, Rectangle
+    from matplotlib.transforms import Affine2D
+
+    cls = type(wheel).__name__
+    if cls in ("Sprocket", "TrackDriveWheel"):
+        radius = wheel.roller_diameter / 2 if cls == "Sprocket" else wheel.pin_radius
+        name = "rollers" if cls == "Sprocket" else "pins"
+        c = wheel.outline().centres
+        for i, (x, y) in enumerate(c):
+            ax.add_patch(Circle((x * mm, y * mm), radius * mm, fill=False, ec="tab:orange", lw=0.8,
+                                label=name if i == 0 else None, zorder=5))
+    elif cls == "PocketWheel":
+        d = wheel.dimensions()
+        t, bar = d.pitch, d.bar_diameter
+        b = wheel.inner_width if wheel.inner_width is not None else 21.0 / 18.0 * bar
+        for i, th in enumerate(d.pocket_angles):
+            # horizontal link seen edge-on: outer length t + 2d, thickness d, centre on the chord
+            rot = Affine2D().rotate(th - np.pi / 2) + ax.transData
+            hc = d.horizontal_link_centre_distance * mm
+            ax.add_patch(Rectangle((-(t / 2 + bar) * mm, hc - bar / 2 * mm), (t + 2 * bar) * mm, bar * mm,
+                                   fill=False, ec="tab:orange", lw=0.8, transform=rot, zorder=5,
+                                   label="horizontal links (edge-on)" if i == 0 else None))
+        for i, th in enumerate(d.vertical_link_angles):
+            # vertical link in the wheel plane: outer length t + 2d, outer width b + 2d
+            rot = Affine2D().rotate(th - np.pi / 2) + ax.transData
+            vc = d.vertical_link_centre_distance * mm
+            w_out, l_out = (b + 2 * bar) * mm, (t + 2 * bar) * mm
+            ax.add_patch(FancyBboxPatch((-l_out / 2 + w_out / 2, vc - w_out / 2 + w_out / 2), l_out - w_out, 0.0,
+                                        boxstyle=f"round,pad={w_out / 2}", fill=False, ec="tab:purple", lw=0.8,
+                                        transform=rot, zorder=5,
+                                        label="vertical links (in plane)" if i == 0 else None))
+
+
+def geometry_plot(wheel, *, ax=None, form=None, detail: bool = False, chain: bool = True):
     """Plot a wheel outline (mm) with its pitch circle, reference circles and centres.
 
     Parameters
@@ -21,6 +56,9 @@ def geometry_plot(wheel, *, ax=None, form=None, detail: bool = False):
         Tooth form for sprockets (``"min"``/``"max"``); ignored by other wheels.
     detail : bool
         Zoom on the top tooth gap / pocket instead of the whole wheel.
+    chain : bool
+        Draw the chain seated on the wheel: rollers (sprockets), pins (track wheels), or
+        the horizontal links edge-on and the vertical links in plane (pocket wheels).
 
     Returns
     -------
@@ -56,6 +94,8 @@ def geometry_plot(wheel, *, ax=None, form=None, detail: bool = False):
                 label=f"{name.lower()} circle Ø{2 * rr:.2f} mm", zorder=2)
     c = np.asarray(outline.centres) * mm
     ax.plot(c[:, 0], c[:, 1], "g+", ms=8, label="seat / pin / pocket centres", zorder=4)
+    if chain and not isinstance(wheel, Outline):
+        _chain_overlay(ax, wheel, mm)
     ax.set_aspect("equal")
     ax.set_xlabel("x [mm]")
     ax.set_ylabel("y [mm]")
