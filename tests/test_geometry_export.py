@@ -99,3 +99,14 @@ def test_geometry_plot(tmp_path):
         fig.savefig(tmp_path / f"{key}.png", dpi=40)
     fig = geometry_plot(Sprocket(0.0254, 19, 0.01588).outline())
     assert fig.axes[0].get_title() == "Outline"
+
+
+def test_geometry_plot_chain_overlay():
+    pytest.importorskip("matplotlib")
+    from chaindrive.plotting.geometry import geometry_plot
+
+    labels = lambda fig: [t.get_text() for t in fig.axes[0].get_legend().get_texts()]  # noqa: E731
+    assert "rollers" in labels(geometry_plot(WHEELS["sprocket-16B-19"]()))
+    assert "rollers" not in labels(geometry_plot(WHEELS["sprocket-16B-19"](), chain=False))
+    assert "vertical links (in plane)" in labels(geometry_plot(WHEELS["pocket-18x64-8"]()))
+    assert "pins" in labels(geometry_plot(WHEELS["track"](), form="min"))
