@@ -236,7 +236,7 @@ def paper_chordal_entry(phi, pitch, bar_diameter, radius, delta1, delta2, guide_
 
     x0 = piece(0.0)[0]
     jump = 0.0 if roller else float(piece(np.nextafter(half, 0))[0] - piece(half)[0])
-    xend = float(piece(T)[0]) if roller else float(piece(np.nextafter(T, 0))[0])
+    xend = float(piece(np.nextafter(T, 0.0))[0])
     advance = xend - float(x0) + jump
     q, r = _wrap(phi, T)
     x, v, a = piece(r)

@@ -1,0 +1,283 @@
+"""Public API of chaindrive.kinematics: chain_entry, summaries, seed 002's conclusions.
+
+Provenance of reference values is given next to each. "Regression" marks values computed
+with this code after the independent checks in test_kinematics_paper.py passed.
+"""
+
+from __future__ import annotations
+
+import json
+
+import numpy as np
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from chaindrive.errors import InfeasibleError, InputError, UnknownNameError
+from chaindrive.kinematics import SUMMARY_KEYS, chain_entry, seed002_case
+
+T18, D18 = 0.064, 0.018  # chain 18x64 (DIN 22252): t = 64 mm, d = 18 mm (seed 002)
+R18 = 0.164283  # seed 002 eq. (6), also geometry/polygon.py doctest
+
+
+def _entry(**kw):
+    base = dict(bar_diameter=D18, guide_end_distance=0.256)
+    base.update(kw)
+    return chain_entry(T18, 8, 5.0, **base)
+
+
+# ----------------------------------------------------------------------------- limiting cases
+
+
+@pytest.mark.parametrize("z", [3, 6, 11, 25])
+def test_roller_free_entry_velocity_ratio_is_cos_pi_over_z(z):
+    # classical polygonal effect: v = ωR cos β, |β| <= π/z  ->  v_min/v_max = cos(π/z)
+    r = chain_entry(0.0254, z, 12.0)
+    assert r.summary["v_min"] / r.summary["v_max"] == pytest.approx(np.cos(np.pi / z), rel=1e-12)
+    R = 0.0254 / (2 * np.sin(np.pi / z))
+    assert r.summary["v_max"] == pytest.approx(12.0 * R, rel=1e-12)
+    assert r.summary["transverse_throw"] == pytest.approx(R * (1 - np.cos(np.pi / z)), rel=1e-9)
+
+
+@pytest.mark.parametrize("model", ["exact", "paper"])
+@pytest.mark.parametrize("entry", ["free", "chordal", "tangential"])
+@pytest.mark.parametrize("chain", ["link", "roller"])
+def test_mean_speed_equals_advance_times_z_omega_over_2pi(model, entry, chain):
+    # mean speed = chain per period (2t, or p) * z ω / 2π; checked against the numerical
+    # mean of v (trapezoid on a fine grid, independent of the summary's computation)
+    if chain == "link":
+        t, z, kw, per = T18, 8, dict(bar_diameter=D18), 2 * T18
+    else:
+        t, z, kw, per = 0.0254, 11, {}, 0.0254
+    w = 4.0
+    r = chain_entry(t, z, w, entry=entry, guide_end_distance=0.4, model=model, points=200001, **kw)
+    mean_num = np.trapezoid(r.velocity, r.phi) / r.period
+    assert r.summary["v_mean"] == pytest.approx(mean_num, rel=1e-8)
+    expected = per * z * w / (2 * np.pi)
+    if model == "paper" and entry == "chordal" and chain == "link":
+        # the paper's chordal rod is reset at π/z: it advances a little more than 2t
+        assert r.summary["v_mean"] > expected * (1 + 1e-7)
+        assert r.summary["advance_per_period"] - per == pytest.approx(8.525e-7, rel=1e-3)  # regression
+    else:
+        assert r.summary["v_mean"] == pytest.approx(expected, rel=1e-13)
+        assert r.x[-1] - r.x[0] == pytest.approx(per, rel=1e-12)
+
+
+@pytest.mark.parametrize("H", [0.12, 0.159085, R18, 0.2, 0.5])
+def test_exact_custom_height_advance_and_velocity_bounds(H):
+    # taut span: chain speed = hinge velocity projected on the span, so
+    # ωR cos(δ1/2) <= v <= ωR whatever H and l (derivation in docs/kinematics.md)
+    r = chain_entry(T18, 8, 5.0, bar_diameter=D18, guide_height=H, guide_end_distance=0.3)
+    assert r.entry == "guided"
+    assert r.summary["advance_per_period"] == pytest.approx(2 * T18, rel=1e-14)
+    assert r.summary["v_min"] == pytest.approx(5 * r.radius * np.cos(r.delta1 / 2), rel=1e-9)
+    assert r.summary["v_max"] == pytest.approx(5 * r.radius, rel=1e-7)
+
+
+def test_named_heights():
+    # chordal H = R cos(δ1/2), tangential H = R (seed 002, section 3)
+    c, t = _entry(entry="chordal"), _entry(entry="tangential")
+    assert c.guide_height == pytest.approx(c.radius * np.cos(c.delta1 / 2), rel=1e-14)
+    assert t.guide_height == pytest.approx(R18, rel=1e-6)
+    assert t.guide_height == t.radius
+    # same as the custom height (phases coincide for chordal)
+    g = _entry(guide_height=c.guide_height)
+    np.testing.assert_allclose(g.velocity, c.velocity, rtol=1e-13)
+
+
+def test_velocity_continuous_at_every_seating():
+    for entry in ("chordal", "tangential"):
+        r = _entry(entry=entry)
+        for s in r.seating_angles:
+            lo = chain_entry(T18, 8, 5.0, bar_diameter=D18, entry=entry, guide_end_distance=0.256,
+                             phi=np.array([s - 1e-10, s + 1e-10]))
+            assert abs(lo.velocity[1] - lo.velocity[0]) < 1e-9
+            assert abs(lo.x[1] - lo.x[0]) < 1e-9
+            assert abs(lo.acceleration[1] - lo.acceleration[0]) > 1.0  # a jumps at a seating
+
+
+@pytest.mark.parametrize("model", ["exact", "paper"])
+def test_guided_entry_tends_to_free_entry_as_l_grows(model):
+    free = _entry()
+    errs = []
+    for l in (0.5, 5.0, 50.0):
+        c = _entry(entry="chordal", guide_end_distance=l, model=model)
+        # tangential phase = free phase shifted by δ1/2 (a hinge at the top at φ = 0)
+        tg = _entry(entry="tangential", guide_end_distance=l, model=model)
+        ff = _entry(phi=np.mod(tg.phi - tg.delta1 / 2, tg.period))
+        errs.append(max(np.max(np.abs(c.velocity - free.velocity)),
+                        np.max(np.abs(tg.velocity - ff.velocity)),
+                        abs(c.summary["a_max"] - free.summary["a_max"]),
+                        abs(c.summary["a_min"] - free.summary["a_min"]),
+                        abs(tg.summary["a_max"] - free.summary["a_max"])))
+    assert errs[0] > errs[1] > errs[2]
+    assert errs[2] < 5e-3  # ~ 1/l
+
+
+# ----------------------------------------------------------------------------- seed 002
+
+
+def test_seed002_case_regression_exact():
+    # regression (exact model), 18x64, z = 8, ω = 5 1/s, l = 0.256 m
+    c = seed002_case("exact")
+    f, ch, tg = c["free"].summary, c["chordal"].summary, c["tangential"].summary
+    assert f["a_max"] == pytest.approx(5**2 * R18 * np.sin(c["free"].delta1 / 2), rel=1e-5)  # eq. (10)
+    assert ch["a_max"] == pytest.approx(1.220465, abs=2e-6)
+    assert ch["a_min"] == pytest.approx(-0.883502, abs=2e-6)
+    assert tg["a_max"] == pytest.approx(1.217543, abs=2e-6)
+    assert tg["a_min"] == pytest.approx(-0.885039, abs=2e-6)
+    np.testing.assert_allclose(c["tangential"].seating_angles, [0.272412, 0.651242], atol=2e-6)
+
+
+def _claims(cases):
+    f, ch, tg = (cases[k].summary for k in ("free", "chordal", "tangential"))
+    return {
+        # conclusion 1: forced entry gives a more favourable acceleration course than free
+        "guided_smaller_extreme_acc_than_free": max(ch["a_abs_max"], tg["a_abs_max"]) < f["a_abs_max"],
+        # tangential entry: the smallest extreme accelerations of the three
+        "tangential_smallest_extreme_acc": tg["a_abs_max"] < min(ch["a_abs_max"], f["a_abs_max"]),
+        "tangential_smaller_than_chordal": tg["a_abs_max"] < ch["a_abs_max"],
+        # tangential: no sign change of the acceleration at the end of the period
+        "tangential_no_sign_change_at_end": not tg["sign_change_at_period_end"],
+        "free_sign_change_at_end": f["sign_change_at_period_end"],
+        # the jump at the period end is smaller for chordal than for free entry
+        "chordal_jump_smaller_than_free": abs(ch["a_jump_at_period_end"]) < abs(f["a_jump_at_period_end"]),
+        # largest acceleration jump anywhere in the period: tangential below free
+        "tangential_max_jump_below_free": tg["a_jump_max"] < f["a_jump_max"],
+    }
+
+
+@pytest.mark.parametrize("model", ["exact", "paper"])
+def test_seed002_conclusions_as_they_are(model):
+    # The outcome is asserted as the numbers give it (nothing tuned); docs/kinematics.md
+    # states it. Same outcome under both models.
+    got = _claims(seed002_case(model))
+    assert got == {
+        "guided_smaller_extreme_acc_than_free": False,
+        "tangential_smallest_extreme_acc": False,
+        "tangential_smaller_than_chordal": model == "exact",
+        "tangential_no_sign_change_at_end": True,
+        "free_sign_change_at_end": True,
+        "chordal_jump_smaller_than_free": False,
+        "tangential_max_jump_below_free": False,
+    }
+
+
+def test_tangential_acceleration_drops_to_zero_at_period_end():
+    # seed 002: "only a drop of the acceleration to zero" at the period end; at φ = 2π/z
+    # the seated hinge is at the top and the span horizontal, so a = 0 exactly.
+    for model in ("exact", "paper"):
+        s = _entry(entry="tangential", model=model).summary
+        assert abs(s["a_end_left"]) < 1e-9 and abs(s["a_end_right"]) < 1e-9
+
+
+# ----------------------------------------------------------------------------- API shape
+
+
+def test_scalar_and_array_phi():
+    arr = _entry(entry="tangential", phi=np.array([0.1, 0.2]))
+    one = _entry(entry="tangential", phi=0.2)
+    assert np.shape(one.velocity) == ()
+    assert float(one.velocity) == pytest.approx(arr.velocity[1], rel=1e-15)
+    assert float(one.acceleration) == pytest.approx(arr.acceleration[1], rel=1e-15)
+    grid = _entry(entry="tangential", phi=np.zeros((2, 3)) + 0.3)
+    assert grid.velocity.shape == (2, 3)
+
+
+def test_periodicity_beyond_one_period():
+    r = _entry(entry="chordal", phi=np.array([0.3, 0.3 + np.pi / 4, 0.3 + 5 * np.pi / 4]))
+    np.testing.assert_allclose(r.velocity, r.velocity[0], rtol=1e-12)
+    np.testing.assert_allclose(np.diff(r.x), [2 * T18, 8 * T18], rtol=1e-12)
+
+
+def test_result_json_and_summary_keys():
+    r = _entry(entry="tangential", points=5)
+    d = json.loads(r.to_json())
+    for key in ("phi", "x", "velocity", "acceleration", "summary"):
+        assert key in d
+    for key in SUMMARY_KEYS:
+        assert key in d["summary"]
+    assert d["transverse_position"] is None
+    assert r.phi[-1] == pytest.approx(np.pi / 4)
+
+
+# ----------------------------------------------------------------------------- errors
+
+
+@pytest.mark.parametrize(
+    "kwargs, exc, match",
+    [
+        (dict(teeth=2), InputError, r"teeth must be a whole number >= 3"),
+        (dict(teeth=7.5), InputError, r"teeth must be a whole number >= 3"),
+        (dict(pitch=0.0), InputError, r"pitch must be positive.*0 < pitch < inf"),
+        (dict(pitch=-1.0), InputError, r"pitch must be positive"),
+        (dict(angular_velocity=0.0), InputError, r"angular_velocity must be positive.*rad/s"),
+        (dict(angular_velocity=-5.0), InputError, r"angular_velocity must be positive"),
+        (dict(bar_diameter=0.064), InputError, r"bar_diameter must lie in \[0, pitch\)"),
+        (dict(bar_diameter=-0.01), InputError, r"bar_diameter must be non-negative"),
+        (dict(entry="sideways"), UnknownNameError, r"unknown entry 'sideways'; valid: 'free'"),
+        (dict(model="exakt"), UnknownNameError, r"unknown model 'exakt'.*did you mean 'exact'"),
+        (dict(entry="tangential", guide_end_distance=None), InputError,
+         r"needs guide_end_distance \[m\] \(0 < l < inf\)"),
+        (dict(entry="tangential", guide_end_distance=-0.1), InputError,
+         r"guide_end_distance must be positive"),
+        (dict(guide_height=-0.01), InputError, r"guide_height must be non-negative.*0 <= guide_height"),
+        (dict(entry="guided"), InputError, r"needs guide_height"),
+        (dict(entry="chordal", guide_height=0.15), InputError, r"either entry='chordal'.*or guide_height"),
+        (dict(guide_height=0.15, model="paper"), InputError, r"model='paper' covers entry"),
+        (dict(points=1), InputError, r"points must be >= 2"),
+        (dict(phi=[0.1, np.nan]), InputError, r"phi must not be NaN"),
+        (dict(phi=[np.inf]), InputError, r"phi must be finite"),
+    ],
+)
+def test_input_errors(kwargs, exc, match):
+    base = dict(pitch=T18, teeth=8, angular_velocity=5.0, bar_diameter=D18, guide_end_distance=0.256)
+    base.update(kwargs)
+    with pytest.raises(exc, match=match):
+        chain_entry(base.pop("pitch"), base.pop("teeth"), base.pop("angular_velocity"), **base)
+
+
+def test_guide_end_too_close_exact():
+    # l_min: smallest l keeping a whole link (t + d = 82 mm) in the free span (regression)
+    with pytest.raises(InfeasibleError, match=r"guide_end_distance = 0.08 m is too close.*must be > 0.1158"):
+        _entry(entry="tangential", guide_end_distance=0.08)
+    with pytest.raises(InfeasibleError, match=r"must be > 0.123 m"):
+        _entry(entry="chordal", guide_end_distance=0.05)
+    _entry(entry="tangential", guide_end_distance=0.116)  # just feasible
+
+
+def test_guide_end_too_close_paper():
+    # the paper's last rod l - 2t must stay positive: l > 2t = 0.128 m
+    with pytest.raises(InfeasibleError, match=r"must be > 0.128 m"):
+        _entry(entry="tangential", guide_end_distance=0.1, model="paper")
+
+
+def test_guide_height_infeasible_names_range():
+    with pytest.raises(InfeasibleError, match=r"guide_height must lie in \[0.1074\d*, inf\) m"):
+        _entry(guide_height=0.0, guide_end_distance=0.17)
+
+
+# ----------------------------------------------------------------------------- properties
+
+
+@settings(max_examples=25, deadline=None)
+@given(
+    z=st.integers(3, 30),
+    frac=st.floats(0.0, 0.4),
+    w=st.floats(0.1, 50.0),
+    extra=st.floats(0.2, 3.0),
+    entry=st.sampled_from(["free", "chordal", "tangential"]),
+)
+def test_property_exact_model(z, frac, w, extra, entry):
+    t = 0.05
+    r0 = chain_entry(t, z, w, bar_diameter=frac * t, points=3)
+    l = r0.radius * (1 + extra) + 2 * t
+    r = chain_entry(t, z, w, bar_diameter=frac * t, entry=entry, guide_end_distance=l, points=257)
+    s = r.summary
+    # exact advance and mean speed
+    assert s["v_mean"] == pytest.approx(2 * t * z * w / (2 * np.pi), rel=1e-12)
+    # taut span: ωR cos(δ1/2) <= v <= ωR
+    assert s["v_min"] >= w * r.radius * np.cos(r.delta1 / 2) * (1 - 1e-9)
+    assert s["v_max"] <= w * r.radius * (1 + 1e-9)
+    # x monotone (the chain never runs back)
+    assert np.all(np.diff(r.x) > 0)
