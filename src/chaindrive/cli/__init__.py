@@ -25,6 +25,7 @@ TOPICS = (
     "drive",
     "simulate",
     "web",
+    "analyze",
 )
 
 for _topic in TOPICS:

@@ -1,0 +1,1 @@
+"""Analysis steps (filled in as the topic modules land)."""
