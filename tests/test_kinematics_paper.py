@@ -73,7 +73,7 @@ def test_chordal_closed_forms_match_rod_solver(t, d, z, l):
     poly = WheelPolygon(R, (t - d, t + d), (d2, d1), 0.5 * d1)
     # the paper's schedule: hinge at δ1/2 - φ with rod l - (t+d)/2, reset at π/z to the
     # next hinge with rod l - (t-d)/2
-    sched = [(0.0, 0, l - 0.5 * (t + d)), (np.pi / z, 1, l - 0.5 * (t - d))]
+    sched = [(0.0, 0, l - 0.5 * (t + d)), (0.5 * (d1 + d2), 1, l - 0.5 * (t - d))]  # π/z
     ref = rod_entry(poly, phi, w, (l, R * np.cos(0.5 * d1)), sched)
     got = paper_chordal_entry(phi, t, d, R, d1, d2, l, w)
     for key in ("x", "velocity", "acceleration"):

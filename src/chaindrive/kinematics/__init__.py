@@ -12,7 +12,15 @@ Public API:
 See ``docs/kinematics.md``.
 """
 
-from .entry import ENTRIES, MODELS, SUMMARY_KEYS, EntryKinematics, chain_entry, seed002_case
+from .entry import (
+    ENTRIES,
+    MODELS,
+    SUMMARY_KEYS,
+    EntryKinematics,
+    chain_entry,
+    chain_entry_for,
+    seed002_case,
+)
 from .paper import (
     paper_chordal_entry,
     paper_free_entry,
@@ -28,6 +36,7 @@ __all__ = [
     "EntryKinematics",
     "WheelPolygon",
     "chain_entry",
+    "chain_entry_for",
     "paper_chordal_entry",
     "paper_free_entry",
     "paper_tangential_entry",

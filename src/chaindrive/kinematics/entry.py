@@ -64,6 +64,7 @@ from .solver import WheelPolygon, taut_entry, taut_seating_angles
 __all__ = [
     "EntryKinematics",
     "chain_entry",
+    "chain_entry_for",
     "seed002_case",
     "ENTRIES",
     "MODELS",
@@ -111,7 +112,11 @@ class EntryKinematics(Result):
         chain in the guide has no transverse motion).
     summary : dict
         ``v_mean``, ``v_min``, ``v_max`` [m/s], ``nonuniformity`` [-], ``a_min``,
-        ``a_max`` [m/s²], ``sign_change_at_period_end`` (bool), ``transverse_throw`` [m],
+        ``a_max`` [m/s²], ``sign_change_at_period_end`` (bool: the one-sided limits of
+        ``a`` at the period end have opposite signs, neither zero; a continuous passage
+        through zero does not count), ``transverse_throw`` [m] (free entry:
+        ``R(1 - cos(δ1/2))``; guided entry: 0, the chain in the guide does not move
+        sideways),
         plus ``advance_per_period`` [m], ``a_end_left``/``a_end_right`` (acceleration
         just before the end / just after the start of the period) [m/s²],
         ``a_abs_max`` [m/s²], ``a_jump_at_period_end`` [m/s²]. Computed on a dense
@@ -544,6 +549,39 @@ def chain_entry(
         period=T,
         seating_angles=np.asarray(r["seats"], dtype=float),
     )
+
+
+def chain_entry_for(chain, teeth, angular_velocity, **kwargs) -> EntryKinematics:
+    """:func:`chain_entry` for a catalogue chain (``chaindrive.chains.get(name)``).
+
+    Parameters
+    ----------
+    chain : Chain or str
+        A chain object (``pitch`` [m], ``bar_diameter`` [m] or ``None``) or a catalogue
+        name such as ``"18x64"`` or ``"16B"``.
+    teeth : int
+        Number of pockets/teeth ``z >= 3`` [-].
+    angular_velocity : float
+        ``ω > 0`` [rad/s].
+    **kwargs
+        Passed to :func:`chain_entry` (``entry``, ``guide_end_distance``, ...).
+
+    Returns
+    -------
+    EntryKinematics
+
+    Examples
+    --------
+    >>> r = chain_entry_for("18x64", 8, 5.0, entry="chordal", guide_end_distance=0.256)
+    >>> r.chain_type, round(r.radius, 6)
+    ('link', 0.164283)
+    """
+    if isinstance(chain, str):
+        from .. import chains
+
+        chain = chains.get(chain)
+    bar = getattr(chain, "bar_diameter", None)
+    return chain_entry(chain.pitch, teeth, angular_velocity, bar_diameter=bar, **kwargs)
 
 
 def seed002_case(model: str = "exact", points: int = 361) -> dict[str, EntryKinematics]:

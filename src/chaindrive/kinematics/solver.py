@@ -88,6 +88,26 @@ class WheelPolygon:
     phase : float
         Angle ``β0`` of vertex 0 from the top (towards the incoming chain) at ``φ = 0``
         [rad].
+
+    Notes
+    -----
+    Vertex ``k = q n + r`` (``n`` links per period) is at
+    ``β_k = β0 + q·2π/z + Σ_{j<r} δ_j`` and at chain coordinate
+    ``c_k = q·Σ links + Σ_{j<r} links_j``:
+
+    .. math:: β_k(φ) = β_k(0) - φ
+
+    References
+    ----------
+    Seed 002, Fig. 1 and eqs (6)-(9) (bi-regular polygon).
+
+    Examples
+    --------
+    >>> poly = WheelPolygon(1.0, (0.5, 0.3), (0.5, 0.3), 0.25)
+    >>> [round(float(b), 6) for b in poly.vertex([0, 1, 2, -1])[0]]
+    [0.25, 0.75, 1.05, -0.05]
+    >>> round(poly.period, 6), round(poly.advance, 6)
+    (0.8, 0.8)
     """
 
     radius: float
@@ -172,6 +192,24 @@ def taut_seating_angles(poly: WheelPolygon, guide=None) -> np.ndarray:
     ndarray, shape (n + 1,)
         ``φ_k`` [rad]; vertex ``k`` is the last seated hinge for ``φ_k <= φ < φ_{k+1}``;
         ``φ_n = φ_0 + 2π/z``.
+
+    Raises
+    ------
+    InfeasibleError
+        Guide end inside the pitch circle, no seating found, or seatings out of order.
+
+    Notes
+    -----
+    Root of ``g(φ) = (V_{k+1} - S_k) × (G - S_k)`` where it changes from + (hinge
+    outside the span line) to -, bracketed on a 1441-point scan of ``±π/2`` around the
+    estimate "link symmetric about the tangent point seen from ``G``", refined by
+    Brent's method to ``1e-15`` rad. Valid for ``|G| > R``.
+
+    .. math:: (V_{k+1} - S_k) \times (G - S_k) = 0
+
+    References
+    ----------
+    Seed 002, eqs (27)-(29) and (32)-(34) (the same condition for the rod mechanism).
 
     Examples
     --------
