@@ -24,17 +24,17 @@ _PLOT = typer.Option(
 @app.command("kinematics")
 def kinematics_command(
     chain: str | None = typer.Option(None, "--chain", "-c", help="Chain from the catalogue, e.g. 18x64 (DIN 22252 round link chain) or 16B (ISO 606 roller chain)."),
-    teeth: int = typer.Option(..., "--teeth", "-z", help="Number of wheel pockets/teeth z >= 3 [-] (seed 002 eq. 6)."),
-    speed: str = typer.Option(..., "--speed", "-w", help="Wheel angular speed ω > 0: '5 rad/s', '48 rpm'; a bare number is rad/s (seed 002 eq. 5, φ = ωt)."),
+    teeth: int = typer.Option(..., "--teeth", "-z", help="Number of wheel pockets/teeth z >= 3 (dimensionless) (seed 002 eq. 6)."),
+    speed: str = typer.Option(..., "--speed", "-w", help="Wheel angular speed ω > 0, unit rad/s or rpm: '5 rad/s', '48 rpm'; a bare number is rad/s (seed 002 eq. 5, φ = ωt)."),
     entry: str = typer.Option("free", "--entry", help="Entry type: free (no guide, seed 002 eqs 1-13), chordal (H = R cos δ1/2, eqs 14-25), tangential (H = R, eqs 26-43)."),
-    guide_end: str | None = typer.Option(None, "--guide-end", "-l", help="Distance l of the guide end from the wheel axis along the guide line [m, or '256 mm'] (seed 002 eqs 14-43); needed for guided entry."),
-    guide_height: str | None = typer.Option(None, "--guide-height", help="Custom guide height H above the wheel axis [m, or '160 mm'], H >= 0; replaces --entry chordal/tangential."),
+    guide_end: str | None = typer.Option(None, "--guide-end", "-l", help="Distance l of the guide end from the wheel axis along the guide line (unit m; or e.g. '256 mm') (seed 002 eqs 14-43); needed for guided entry."),
+    guide_height: str | None = typer.Option(None, "--guide-height", help="Custom guide height H above the wheel axis (unit m; or e.g. '160 mm'), H >= 0; replaces --entry chordal/tangential."),
     model: str = typer.Option("exact", "--model", help="exact: rigid links with a taut span to the guide end (general solver); paper: seed 002's rod mechanism, eqs 14-43 corrected."),
-    points: int = typer.Option(361, "--points", "-n", help="Number of samples over one period 0 <= φ <= 2π/z [-]."),
-    pitch: str | None = typer.Option(None, "--pitch", help="Chain pitch t (link chain) or p (roller chain) [m or '64 mm'] when no --chain is given."),
-    bar_diameter: str | None = typer.Option(None, "--bar-diameter", help="Bar diameter d of a round link chain [m or '18 mm'] (seed 002 eq. 6) when no --chain is given."),
+    points: int = typer.Option(361, "--points", "-n", help="Number of samples over one period 0 <= φ <= 2π/z."),
+    pitch: str | None = typer.Option(None, "--pitch", help="Chain pitch t (link chain) or p (roller chain) (unit m; or e.g. '64 mm') when no --chain is given."),
+    bar_diameter: str | None = typer.Option(None, "--bar-diameter", help="Bar diameter d of a round link chain (unit m; or e.g. '18 mm') (seed 002 eq. 6) when no --chain is given."),
     roller: bool = typer.Option(False, "--roller", help="Custom chain is a roller chain (regular polygon R = p / (2 sin(π/z))) when no --chain is given."),
-    as_json: bool = typer.Option(False, "--json", help="Print phi [rad], x [m], velocity [m/s], acceleration [m/s²] and the summary as JSON (SI units)."),
+    as_json: bool = typer.Option(False, "--json", help="Print phi (rad), x (m), velocity (m/s), acceleration (m/s²) and the summary as JSON, SI units."),
     plot: Path | None = _PLOT,
 ) -> None:
     """Velocity and acceleration of a chain running onto its wheel (polygonal effect).
