@@ -192,3 +192,37 @@ def test_printed_forms_would_fail():
     assert abs(x30_printed - x26) > 0.05
     x35_printed_end = l - np.sqrt((l - t) ** 2 + R**2 * (1 - np.cos(0.0)) ** 2)
     assert x35_printed_end == pytest.approx(t)  # only half the advance 2t
+
+
+def test_printed_chordal_derivatives_would_fail():
+    # (19) as printed (+ before the fraction) and (22) as printed (bracket cos γ - cos 2γ,
+    # "+ -" before R/Q) disagree with finite differences of (14)/(15); the corrected
+    # forms agree (to FD accuracy).
+    t, d, z, l, w = 0.064, 0.018, 8, 0.256, 5.0
+    R, d1, d2 = _geom(t, d, z)
+    c = np.cos(0.5 * d1)
+    L = l - 0.5 * (t + d)
+
+    def x14(p):
+        g = 0.5 * d1 - p
+        return l - R * np.sin(g) - np.sqrt(L**2 - R**2 * (np.cos(g) - c) ** 2)
+
+    h = 1e-5
+    p = 0.35  # in (15)'s interval δ1/2 < φ < π/z, formula (14) = (15) there
+    v_fd = w * (x14(p + h) - x14(p - h)) / (2 * h)
+    a_fd = w * w * (x14(p + h) - 2 * x14(p) + x14(p - h)) / h**2
+    g = p - 0.5 * d1
+    Q = np.sqrt(L**2 - R**2 * (np.cos(g) - c) ** 2)
+    v19_printed = w * R * (np.cos(g) + R * (np.cos(g) - c) * np.sin(g) / Q)
+    r = paper_chordal_entry(np.array([p, 0.1]), t, d, R, d1, d2, l, w)
+    assert r["velocity"][0] == pytest.approx(v_fd, rel=1e-8)
+    assert abs(v19_printed - v_fd) > 1e-4
+    assert r["acceleration"][0] == pytest.approx(a_fd, rel=1e-4)
+    p = 0.1  # (14)'s interval
+    g = 0.5 * d1 - p
+    Q = np.sqrt(L**2 - R**2 * (np.cos(g) - c) ** 2)
+    a_fd = w * w * (x14(p + h) - 2 * x14(p) + x14(p - h)) / h**2
+    a22_printed = w * w * R * (np.sin(g) - R / Q * (np.cos(g) - np.cos(2 * g)
+                               + R**2 * (np.cos(g) - c) ** 2 * np.sin(g) ** 2 / Q**2))
+    assert r["acceleration"][1] == pytest.approx(a_fd, rel=1e-4)
+    assert abs(a22_printed - a_fd) > 0.01
