@@ -1,1 +1,65 @@
-"""chaindrive.drive (see module docs)."""
+"""The drive as a whole: layout, loads, chain selection, wear life, project files.
+
+Pure functions live in :mod:`~chaindrive.drive.layout`, :mod:`~chaindrive.drive.loads`,
+:mod:`~chaindrive.drive.selection` and :mod:`~chaindrive.drive.wear`; the thin objects
+(:class:`Drive`, :class:`Wheel`, :class:`Tensioner`, :class:`Guide`, :class:`Load`) in
+:mod:`~chaindrive.drive.model`; TOML project files in :mod:`~chaindrive.drive.project`.
+Models and sources: ``docs/drive.md``.
+
+Examples
+--------
+>>> from chaindrive.drive import Drive, Wheel, Load
+>>> from chaindrive.chains import get
+>>> d = Drive(chain=get("16B"), speed=100.53, load=Load(power=15e3, service_factor=1.0),
+...           wheels=[Wheel("motor", "sprocket", 19, (0, 0), driving=True),
+...                   Wheel("fan", "sprocket", 57, (1.05, 0))])
+>>> d.layout().links
+122
+"""
+
+from . import layout, loads, selection, wear
+from .layout import (
+    catenary_sag,
+    centre_distance_approx,
+    centre_distance_polygon,
+    chain_length_approx,
+    chain_length_circles,
+    chain_length_polygon,
+    even_links,
+    parabolic_sag,
+    tension_for_sag,
+    tensioner_travel,
+    wrap_layout,
+)
+from .model import (
+    Check,
+    Drive,
+    DriveLayout,
+    DriveSafety,
+    DriveTensions,
+    Guide,
+    Load,
+    Tensioner,
+    Wheel,
+)
+from .selection import ansi_rated_power, lubrication_type, select
+from .wear import wear_life
+
+__all__ = [
+    "layout", "loads", "selection", "wear",
+    "Drive", "Wheel", "Tensioner", "Guide", "Load", "Check",
+    "DriveLayout", "DriveTensions", "DriveSafety",
+    "chain_length_approx", "centre_distance_approx", "chain_length_circles",
+    "chain_length_polygon", "centre_distance_polygon", "even_links", "wrap_layout",
+    "catenary_sag", "parabolic_sag", "tension_for_sag", "tensioner_travel",
+    "ansi_rated_power", "lubrication_type", "select", "wear_life",
+    "load_project", "Project",
+]
+
+
+def __getattr__(name):  # project files need pydantic (optional extra): import lazily
+    if name in ("load_project", "Project", "project"):
+        from . import project
+
+        return project if name == "project" else getattr(project, name)
+    raise AttributeError(name)

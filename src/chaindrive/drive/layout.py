@@ -479,6 +479,19 @@ def _solve_increasing(fun, target, lo, hi, what):
     return brentq(lambda x: fun(x) - target, lo, hi, xtol=1e-12, rtol=1e-12)
 
 
+def _newton_fixed_slope(fun, target, a0, r1, r2, p, lo, hi):
+    # X(a) grows with slope 2 cos(beta)/p (the two spans); iterate with that slope and
+    # fall back to Brent's method if it does not settle
+    a = a0
+    for _ in range(30):
+        slope = 2.0 * np.sqrt(max(1.0 - ((r2 - r1) / a) ** 2, 1e-12)) / p
+        step = (fun(a) - target) / slope
+        a = a - step
+        if abs(step) < 1e-11 * max(a, 1.0):
+            return a
+    return _solve_increasing(fun, target, lo, hi, "centre distance")
+
+
 def centre_distance_polygon(pitch, teeth_1, teeth_2, links, *, bar_diameter=None,
                             phases: int = 12) -> PolygonCentreDistance:
     r"""Centre distance for a whole number of links, solving the polygon model.
@@ -513,8 +526,9 @@ def centre_distance_polygon(pitch, teeth_1, teeth_2, links, *, bar_diameter=None
 
     Notes
     -----
-    Solved with Brent's method on the centre distance (the taut length grows
-    monotonically with ``a``). See :func:`chain_length_polygon` for the model.
+    Solved by Newton steps with the span slope ``dX/da = 2 cos β / p`` started from
+    the pitch-circle solution (Brent's method as fallback); the taut length grows
+    monotonically with ``a``. See :func:`chain_length_polygon` for the model.
 
     References
     ----------
@@ -548,9 +562,9 @@ def centre_distance_polygon(pitch, teeth_1, teeth_2, links, *, bar_diameter=None
     def xcirc(a):
         return float(chain_length_circles(p, z1, z2, a, bar_diameter))
 
-    taut = _solve_increasing(xmax, N, lo, hi, "centre distance")
-    loose = _solve_increasing(xmin, N, lo, hi, "centre distance")
     circ = _solve_increasing(xcirc, N, lo, hi, "centre distance")
+    taut = _newton_fixed_slope(xmax, N, circ, r1, r2, p, lo, hi)
+    loose = _newton_fixed_slope(xmin, N, taut, r1, r2, p, lo, hi)
     approx = None
     if not bar_diameter:
         try:

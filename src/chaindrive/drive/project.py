@@ -1,0 +1,555 @@
+"""TOML project files: a drive described once, with units, validated with line numbers.
+
+A project file has the tables ``[drive]``, ``[chain]``, ``[load]``, an array
+``[[wheels]]`` (in the order the chain passes them, counter-clockwise), and the
+optional ``[tensioner]`` and ``[[guides]]``. Every quantity may carry a unit
+(``"64 mm"``, ``"300 rpm"``, ``"15 kW"``); a bare number is read in SI units. The
+schema is checked with pydantic; every mistake is reported with its field and its line
+in the file, e.g. ``drive.toml:14: wheels[1].teeth: must be a whole number >= 3``.
+
+:func:`load_project` returns a :class:`~chaindrive.drive.model.Drive`;
+:func:`template` gives the commented templates written by ``chaindrive new``.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import re
+from pathlib import Path
+from typing import Annotated, Any, Literal
+
+from pydantic import (
+    BaseModel,
+    BeforeValidator,
+    ConfigDict,
+    Field,
+    ValidationError,
+    ValidationInfo,
+    field_validator,
+)
+
+try:  # Python >= 3.11
+    import tomllib
+except ModuleNotFoundError:  # pragma: no cover - Python 3.10
+    import tomli as tomllib
+
+from ..errors import ChainDriveError, InputError, UnknownNameError
+from ..units import parse_quantity
+from .model import Drive, Guide, Load, Tensioner, Wheel
+
+__all__ = ["Project", "load_project", "parse_project", "line_index", "template", "TEMPLATES"]
+
+
+# --------------------------------------------------------------------------- quantities
+
+
+def _quantity(unit: str, *, positive: bool = True, allow_zero: bool = False, signed: bool = False):
+    def parse(value: Any, info: ValidationInfo) -> float:
+        name = info.field_name or "value"
+        if isinstance(value, bool):
+            raise ValueError(f"expected a quantity in {unit or 'dimensionless'}, got {value!r}")
+        try:
+            x = parse_quantity(value, unit or "dimensionless", field=name)
+        except InputError as exc:
+            raise ValueError(str(exc)) from None
+        if not signed:
+            if positive and not allow_zero and not x > 0:
+                raise ValueError(f"{name} must be positive (0 < {name} < inf {unit}), got {x:g}")
+            if allow_zero and not x >= 0:
+                raise ValueError(f"{name} must be non-negative (0 <= {name} < inf {unit}), got {x:g}")
+        if x != x or x in (float("inf"), float("-inf")):
+            raise ValueError(f"{name} must be finite, got {x}")
+        return x
+
+    return BeforeValidator(parse)
+
+
+Length = Annotated[float, _quantity("m")]
+Coordinate = Annotated[float, _quantity("m", signed=True)]
+Mass = Annotated[float, _quantity("kg")]
+MassPerLength = Annotated[float, _quantity("kg/m")]
+Force = Annotated[float, _quantity("N")]
+ForceOrZero = Annotated[float, _quantity("N", allow_zero=True)]
+Stiffness = Annotated[float, _quantity("N/m")]
+Power = Annotated[float, _quantity("W")]
+Torque = Annotated[float, _quantity("N*m")]
+AngularVelocity = Annotated[float, _quantity("rad/s")]
+WearCoefficient = Annotated[float, _quantity("m**2/N")]
+Ratio = Annotated[float, _quantity("")]
+
+
+class _Model(BaseModel):
+    model_config = ConfigDict(extra="forbid", frozen=True)
+
+
+class ChainSpec(_Model):
+    """``[chain]``: a catalogue name, optionally with fields overridden, or a custom chain."""
+
+    name: str
+    pitch: Length | None = None
+    roller_diameter: Length | None = None
+    bar_diameter: Length | None = None
+    strands: int | None = Field(default=None, ge=1, le=4)
+    inner_width: Length | None = None
+    pin_diameter: Length | None = None
+    plate_height: Length | None = None
+    breaking_force: Force | None = None
+    mass_per_length: MassPerLength | None = None
+    source: str | None = None
+
+
+class DriveSpec(_Model):
+    """``[drive]``."""
+
+    name: str = "chain drive"
+    description: str = ""
+    speed: AngularVelocity
+    links: int | None = Field(default=None, gt=0)
+    slack_tension: Force | None = None
+    slack_sag_ratio: Ratio = 0.02
+    required_static_safety: Ratio = 7.0
+    elongation_limit: Ratio = 0.03
+    wear_coefficient: WearCoefficient | None = None
+
+    @field_validator("slack_sag_ratio")
+    @classmethod
+    def _sag(cls, v):
+        if not 0 < v <= 0.2:
+            raise ValueError(f"slack_sag_ratio must lie in (0, 0.2], got {v:g}")
+        return v
+
+    @field_validator("elongation_limit")
+    @classmethod
+    def _elong(cls, v):
+        if not 0 < v <= 0.1:
+            raise ValueError(f"elongation_limit must lie in (0, 0.1], got {v:g}")
+        return v
+
+
+class LoadSpec(_Model):
+    """``[load]``: power or torque of the driving wheel, service factor."""
+
+    power: Power | None = None
+    torque: Torque | None = None
+    service_factor: Ratio = 1.0
+
+    @field_validator("service_factor")
+    @classmethod
+    def _sf(cls, v):
+        if v < 1:
+            raise ValueError(f"service_factor must be >= 1, got {v:g}")
+        return v
+
+    def model_post_init(self, _context):
+        if (self.power is None) == (self.torque is None):
+            raise ValueError("give exactly one of power and torque")
+
+
+class WheelSpec(_Model):
+    """``[[wheels]]``."""
+
+    name: str
+    kind: Literal["sprocket", "pocket_wheel", "track_wheel", "idler"]
+    teeth: int | None = Field(default=None, ge=3)
+    diameter: Length | None = None
+    position: tuple[Coordinate, Coordinate]
+    driving: bool = False
+    side: Literal[1, -1] = 1
+
+
+class TensionerSpec(_Model):
+    """``[tensioner]``."""
+
+    wheel: str
+    mass: Mass
+    stiffness: Stiffness
+    kind: Literal["spring", "weight", "screw", "hydraulic"] = "spring"
+    direction: tuple[float, float] = (0.0, 1.0)
+    force: ForceOrZero | None = None
+
+
+class GuideSpec(_Model):
+    """``[[guides]]``."""
+
+    wheel: str
+    end_distance: Length
+    kind: Literal["tangential", "chordal", "guided"] = "tangential"
+    height: Annotated[float, _quantity("m", allow_zero=True)] | None = None
+
+
+class Project(_Model):
+    """The whole project file."""
+
+    drive: DriveSpec
+    chain: ChainSpec
+    load: LoadSpec
+    wheels: list[WheelSpec] = Field(min_length=2)
+    tensioner: TensionerSpec | None = None
+    guides: list[GuideSpec] = []
+
+
+# --------------------------------------------------------------------------- line numbers
+
+_HEADER = re.compile(r"^\s*(\[\[?)\s*([A-Za-z0-9_.\-\" ]+?)\s*\]\]?\s*(#.*)?$")
+_KEY = re.compile(r"^\s*([A-Za-z0-9_\-]+|\"[^\"]*\")\s*=")
+
+
+def line_index(text: str) -> dict[tuple, int]:
+    """Map each table and key path of a TOML text to its (1-based) line.
+
+    Array-of-tables entries get their index: ``("wheels", 1, "teeth")``.
+
+    Examples
+    --------
+    >>> idx = line_index('[drive]\\nspeed = 5\\n[[wheels]]\\nname = "a"\\n[[wheels]]\\nteeth = 8\\n')
+    >>> idx[("drive", "speed")], idx[("wheels", 1)], idx[("wheels", 1, "teeth")]
+    (2, 5, 6)
+    """
+    index: dict[tuple, int] = {}
+    counters: dict[tuple, int] = {}
+    current: tuple = ()
+    for n, raw in enumerate(text.splitlines(), start=1):
+        line = raw.strip()
+        if not line or line.startswith("#"):
+            continue
+        m = _HEADER.match(raw)
+        if m and not _KEY.match(raw):
+            parts = tuple(p.strip().strip('"') for p in m.group(2).split("."))
+            if m.group(1) == "[[":
+                i = counters.get(parts, -1) + 1
+                counters[parts] = i
+                current = parts + (i,)
+            else:
+                current = parts
+            index.setdefault(current, n)
+            if current[-1:] and isinstance(current[-1], int):
+                index.setdefault(parts, n)
+            continue
+        k = _KEY.match(raw)
+        if k:
+            index.setdefault(current + (k.group(1).strip('"'),), n)
+    return index
+
+
+def _line_for(loc: tuple, index: dict[tuple, int]) -> int | None:
+    loc = tuple(loc)
+    for cut in range(len(loc), 0, -1):
+        if loc[:cut] in index:
+            return index[loc[:cut]]
+    return None
+
+
+def _path(loc) -> str:
+    out = ""
+    for part in loc:
+        if isinstance(part, int):
+            out += f"[{part}]"
+        else:
+            out += ("." if out else "") + str(part)
+    return out or "(file)"
+
+
+def _where(filename: str, line: int | None) -> str:
+    return f"{filename}:{line}" if line else filename
+
+
+def _format_errors(exc: ValidationError, index: dict, filename: str) -> str:
+    lines = []
+    for err in exc.errors(include_url=False):
+        loc = tuple(p for p in err["loc"] if not (isinstance(p, str) and p in ("function-after",)))
+        # drop pydantic's internal tags (e.g. tuple/union branch names)
+        loc = tuple(p for p in loc if isinstance(p, int) or not p.startswith(("float", "int", "str",
+                                                                               "tuple", "list", "none")))
+        msg = err["msg"]
+        msg = msg.removeprefix("Value error, ")
+        if err["type"] == "missing":
+            msg = "required field is missing"
+            line = _line_for(loc[:-1], index)
+            where = _where(filename, line)
+            hint = f" (add it to the [{_path(loc[:-1])}] table)" if loc[:-1] else f" (add a [{_path(loc)}] table)"
+            lines.append(f"{where}: {_path(loc)}: {msg}{hint}")
+            continue
+        if err["type"] == "extra_forbidden":
+            msg = "unknown field (check the spelling; see `chaindrive new` for a template)"
+        lines.append(f"{_where(filename, _line_for(loc, index))}: {_path(loc)}: {msg}")
+    return "\n".join(dict.fromkeys(lines))
+
+
+# --------------------------------------------------------------------------- loading
+
+
+def _chain(spec: ChainSpec, index, filename):
+    from ..chains import Chain, get
+
+    overrides = {k: v for k, v in spec.model_dump().items()
+                 if k not in ("name",) and v is not None}
+    try:
+        base = get(spec.name)
+    except UnknownNameError as exc:
+        if "pitch" not in overrides:
+            raise UnknownNameError(
+                f"{_where(filename, _line_for(('chain', 'name'), index))}: chain.name: {exc} "
+                "(or describe a custom chain with pitch, roller_diameter or bar_diameter, ...)"
+            ) from None
+        try:
+            return Chain.custom(spec.name, **overrides)
+        except InputError as exc2:
+            raise InputError(f"{_where(filename, _line_for(('chain',), index))}: chain: {exc2}") from None
+    if overrides:
+        return dataclasses.replace(base, **overrides)
+    return base
+
+
+def parse_project(text: str, filename: str = "<project>") -> Drive:
+    """Validate a project text and build its :class:`Drive`.
+
+    Raises
+    ------
+    InputError
+        TOML syntax, wrong unit, missing field, negative value, unknown field; the
+        message names the field and ``filename:line``.
+    UnknownNameError
+        Unknown chain name (with the closest catalogue names).
+
+    Examples
+    --------
+    >>> d = parse_project(template("roller"))
+    >>> d.chain.name, len(d.wheels)
+    ('16B-1', 2)
+    """
+    try:
+        data = tomllib.loads(text)
+    except tomllib.TOMLDecodeError as exc:
+        raise InputError(f"{filename}: TOML syntax error: {exc}") from None
+    index = line_index(text)
+    try:
+        proj = Project.model_validate(data)
+    except ValidationError as exc:
+        raise InputError(_format_errors(exc, index, filename)) from None
+    chain = _chain(proj.chain, index, filename)
+    names = [w.name for w in proj.wheels]
+    for i, g in enumerate(proj.guides):
+        if g.wheel not in names:
+            raise InputError(f"{_where(filename, _line_for(('guides', i, 'wheel'), index))}: "
+                             f"guides[{i}].wheel: no wheel named {g.wheel!r}; wheels: {', '.join(names)}")
+    if proj.tensioner is not None and proj.tensioner.wheel not in names:
+        raise InputError(f"{_where(filename, _line_for(('tensioner', 'wheel'), index))}: "
+                         f"tensioner.wheel: no wheel named {proj.tensioner.wheel!r}; wheels: {', '.join(names)}")
+    n_drv = sum(w.driving for w in proj.wheels)
+    if n_drv != 1:
+        raise InputError(f"{_where(filename, _line_for(('wheels',), index))}: wheels: exactly one "
+                         f"wheel must have driving = true, got {n_drv}")
+    for i, w in enumerate(proj.wheels):
+        if w.teeth is None and (w.kind != "idler" or w.diameter is None):
+            raise InputError(f"{_where(filename, _line_for(('wheels', i), index))}: wheels[{i}].teeth: "
+                             f"required for a {w.kind} (a toothless idler needs diameter instead)")
+    try:
+        return Drive(
+            chain=chain,
+            wheels=[Wheel(name=w.name, kind=w.kind, teeth=w.teeth, position=w.position,
+                          driving=w.driving, diameter=w.diameter, side=w.side) for w in proj.wheels],
+            speed=proj.drive.speed,
+            load=Load(power=proj.load.power, torque=proj.load.torque,
+                      service_factor=proj.load.service_factor),
+            tensioner=None if proj.tensioner is None else Tensioner(**proj.tensioner.model_dump()),
+            guides=[Guide(**g.model_dump()) for g in proj.guides],
+            links=proj.drive.links, slack_tension=proj.drive.slack_tension,
+            slack_sag_ratio=proj.drive.slack_sag_ratio,
+            required_static_safety=proj.drive.required_static_safety,
+            elongation_limit=proj.drive.elongation_limit,
+            wear_coefficient=proj.drive.wear_coefficient,
+            name=proj.drive.name, description=proj.drive.description,
+        )
+    except ChainDriveError as exc:
+        raise type(exc)(f"{filename}: {exc}") from None
+
+
+def load_project(path) -> Drive:
+    """Read a TOML project file and return its :class:`Drive`.
+
+    Parameters
+    ----------
+    path : str or pathlib.Path
+
+    Raises
+    ------
+    InputError
+        File missing/unreadable or invalid (field and line named).
+
+    Examples
+    --------
+    >>> import pathlib, tempfile
+    >>> f = pathlib.Path(tempfile.mkdtemp()) / "drive.toml"
+    >>> _ = f.write_text(template("mining"))
+    >>> load_project(f).chain.name
+    '18x64'
+    """
+    p = Path(path)
+    try:
+        text = p.read_text(encoding="utf-8")
+    except OSError as exc:
+        raise InputError(f"cannot read project file {str(p)!r}: {exc.strerror or exc}") from None
+    return parse_project(text, filename=p.name)
+
+
+# --------------------------------------------------------------------------- templates
+
+_HEAD = """\
+# chaindrive project file (TOML). Quantities may carry units: "64 mm", "300 rpm",
+# "15 kW", "2 kN"; a bare number is read in SI units (m, rad/s, W, N, kg).
+# Wheels are listed in the order the chain passes them, counter-clockwise round the
+# loop; side = -1 marks an idler pressing on the outside of the chain.
+# Check it with:  chaindrive layout {file}
+"""
+
+TEMPLATES: dict[str, str] = {
+    "roller": _HEAD + """
+[drive]
+name = "Industrial roller chain drive"
+description = "16B simplex, 19/57 teeth, fan drive from a 960 rpm motor"
+speed = "960 rpm"               # driving wheel
+# links = 122                   # chain length in pitches (default: required, rounded up to even)
+slack_sag_ratio = 0.02          # slack-span sag / span (ISO 10823 guidance: about 2 %)
+required_static_safety = 7      # F_B / F_max
+elongation_limit = 0.03         # wear limit (3 %)
+
+[chain]
+name = "16B"                    # catalogue name (see `chaindrive chains`)
+
+[load]
+power = "15 kW"                 # or torque = "150 N*m" (on the driving wheel)
+service_factor = 1.0            # ANSI/ACA service factor (smooth load, electric motor)
+
+[[wheels]]
+name = "motor"
+kind = "sprocket"
+teeth = 19
+position = ["0 mm", "0 mm"]
+driving = true
+
+[[wheels]]
+name = "fan"
+kind = "sprocket"
+teeth = 57
+position = ["1050 mm", "0 mm"]
+""",
+    "mining": _HEAD + """
+[drive]
+name = "Mining scraper conveyor drive (seed 002)"
+description = "Round link chain 18x64 on two 8-pocket wheels, tangential guide at the entry, tensioner on the slack span"
+speed = "5 rad/s"               # seed 002 worked case: omega = 5 1/s
+required_static_safety = 3.5    # mining link chains run at lower static safety than roller chains
+elongation_limit = 0.02         # DIN 22252 chains are replaced at about 2 % elongation
+wear_coefficient = "2e-16 m**2/N"   # Archard coefficient, illustrative (calibrate from tests)
+
+[chain]
+name = "18x64"                  # DIN 22252, t = 64 mm, d = 18 mm
+
+[load]
+power = "25 kW"
+service_factor = 1.5            # heavy shock
+
+[[wheels]]
+name = "drive"
+kind = "pocket_wheel"
+teeth = 8                       # pockets
+position = ["0 m", "0 m"]
+driving = true
+
+[[wheels]]
+name = "tensioner"
+kind = "idler"
+teeth = 6                       # pocket idler inside the loop, pressing the slack span down
+position = ["1.2 m", "-0.4 m"]
+
+[[wheels]]
+name = "return"
+kind = "pocket_wheel"
+teeth = 8
+position = ["4 m", "0 m"]
+
+[tensioner]
+wheel = "tensioner"
+mass = "60 kg"                  # reduced to the tensioner axis (seed 003)
+stiffness = "200 kN/m"
+kind = "spring"
+direction = [0, -1]             # travel that takes up slack
+force = "5 kN"
+
+[[guides]]
+wheel = "drive"
+kind = "tangential"             # guide line tangent to the pitch circle, H = R (seed 002)
+end_distance = "0.256 m"        # l, seed 002 worked case
+""",
+    "crawler": _HEAD + """
+[drive]
+name = "Tracked tractor drive wheel (seed 001)"
+description = "Track of a 70 kN tractor, lantern-pin pitch 170 mm, 13-tooth drive wheel"
+speed = "40 rpm"
+required_static_safety = 5
+elongation_limit = 0.03
+wear_coefficient = "1e-15 m**2/N"   # dry, abrasive: illustrative Archard coefficient
+
+[chain]
+name = "track 170"              # a custom chain: give its fields
+pitch = "170 mm"
+roller_diameter = "45 mm"       # lantern pin (engaging element)
+pin_diameter = "30 mm"
+inner_width = "100 mm"
+breaking_force = "900 kN"
+mass_per_length = "90 kg/m"     # track links with shoes
+source = "illustrative tracked-tractor track"
+
+[load]
+# P = 0.65 G_T phi / i (seed 001): G_T = 70 kN, phi = 1.0, two tracks -> 22.75 kN per
+# track; torque = 22.75 kN x R_0 (R_0 = 0.355 m)
+torque = "8.08 kN*m"
+service_factor = 1.0
+
+[[wheels]]
+name = "drive"
+kind = "track_wheel"
+teeth = 13
+position = ["0 m", "0.5 m"]
+driving = true
+
+[[wheels]]
+name = "rear road wheel"
+kind = "idler"
+diameter = "400 mm"
+position = ["0.55 m", "0.2 m"]
+
+[[wheels]]
+name = "front road wheel"
+kind = "idler"
+diameter = "400 mm"
+position = ["1.9 m", "0.2 m"]
+
+[[wheels]]
+name = "front idler"
+kind = "idler"
+diameter = "600 mm"
+position = ["2.45 m", "0.35 m"]
+
+[tensioner]
+wheel = "front idler"
+mass = "120 kg"
+stiffness = "1.5 MN/m"
+kind = "spring"
+direction = [1, 0]
+""",
+}
+
+
+def template(kind: str = "roller") -> str:
+    """Commented project template: ``"roller"``, ``"mining"`` or ``"crawler"``.
+
+    Examples
+    --------
+    >>> "[[wheels]]" in template("crawler")
+    True
+    """
+    try:
+        return TEMPLATES[kind]
+    except KeyError:
+        raise UnknownNameError(f"unknown template kind {kind!r}; valid: {', '.join(TEMPLATES)}") from None
