@@ -13,7 +13,7 @@ from .app import app
 def demo(
     output: Path = typer.Option(Path("out"), "--output", "-o", help="Folder for the results."),
 ) -> None:
-    """Run the built-in example (seed 002: chain 18x64, z = 8, ω = 5 rad/s, l = 0.256 m)."""
+    """Run the built-in example: seed 002 entry kinematics and the mining conveyor analysis."""
     from ..workflows.demo import run_demo
 
     run_demo(output)
