@@ -15,11 +15,13 @@ The printed ``ρ`` is correct (derivation in ``docs/strength.md``).
 
 from __future__ import annotations
 
+import warnings
+
 import numpy as np
 
 from .._registry import Registry
 from .._validation import check_positive, check_range
-from ..errors import InfeasibleError
+from ..errors import InfeasibleError, ValidityRangeWarning
 
 __all__ = [
     "STEEL_ELASTIC_MODULUS",
@@ -31,7 +33,13 @@ __all__ = [
     "hertz_line_half_width",
     "seed_contact_coefficient",
     "seed_contact_stress",
+    "CONFORMITY_LIMIT",
+    "warn_conformal",
 ]
+
+#: Largest contact half-width / body radius for which Hertz theory is used without a
+#: warning (Hertz assumes the contact small against the radii; Johnson 1985 §4.1).
+CONFORMITY_LIMIT = 0.1
 
 #: Young's modulus of steel used as default [Pa] (2.1e5 MPa, the value of Russian texts).
 STEEL_ELASTIC_MODULUS = 2.1e11
@@ -288,3 +296,25 @@ def seed_contact_stress(load, length, reduced_radius_of_curvature, elastic_modul
     return _out(0.418 * np.sqrt(f * e / (ln * r)))
 
 
+
+
+def warn_conformal(half_width, radius, what="contact"):
+    """Warn (:class:`ValidityRangeWarning`) when ``half_width / radius > CONFORMITY_LIMIT``.
+
+    Hertz theory assumes the contact strip small against the radii of curvature of
+    both bodies (Johnson 1985, §4.1); a roller in a seat only slightly larger than it is
+    a conforming contact, for which the Hertz pressure is an upper estimate.
+
+    Examples
+    --------
+    >>> warn_conformal(0.1e-3, 8e-3)
+    """
+    ratio = np.asarray(half_width, dtype=float) / np.asarray(radius, dtype=float)
+    if np.any(ratio > CONFORMITY_LIMIT):
+        warnings.warn(
+            f"{what}: contact half-width / radius = {float(np.max(ratio)):.3g} > {CONFORMITY_LIMIT} "
+            "(conforming contact): Hertz theory is outside its range (Johnson 1985 4.1), "
+            "the stress is an upper estimate",
+            ValidityRangeWarning,
+            stacklevel=3,
+        )

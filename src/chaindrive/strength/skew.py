@@ -44,6 +44,7 @@ from .hertz import (
     hertz_line_half_width,
     hertz_line_pressure,
     reduced_radius,
+    warn_conformal,
 )
 
 __all__ = [
@@ -396,6 +397,9 @@ def roller_contact_stress(
     Notes
     -----
     Seed 004's range: pitches 12.7…25.4 mm, skews up to 3°26′, ``K_φ = 0.6…0.7``.
+    A roller in a seat barely larger than itself (ISO 606 ``r_i``) is a conforming
+    contact: when the Hertz half-width exceeds 0.1 of the roller radius a
+    :class:`ValidityRangeWarning` says so (the Hertz value is then an upper estimate).
 
     References
     ----------
@@ -403,10 +407,12 @@ def roller_contact_stress(
 
     Examples
     --------
-    >>> r = roller_contact_stress(5e3, 15.88e-3, 8.02e-3, 17e-3, pitch=25.4e-3,
-    ...                           max_skew=50 * ARCMIN)
+    Roller of a 16B chain on a convex flank of radius 68.7 mm (ISO 606 ``r_e,min``, z = 19):
+
+    >>> r = roller_contact_stress(5e3, 15.88e-3, 68.7e-3, 17e-3, contact="convex",
+    ...                           pitch=25.4e-3, max_skew=50 * ARCMIN)
     >>> round(r.stress_unskewed / 1e6), round(r.stress / 1e6), round(r.load_factor, 3)
-    (116, 175, 2.268)
+    (1232, 1855, 2.268)
     """
     q = check_positive("load", load, "N")
     d = check_positive("roller_diameter", roller_diameter, "m")
@@ -427,6 +433,8 @@ def roller_contact_stress(
     qn = q * factor
     s0 = hertz_line_pressure(q, ln, rho, es)
     s = hertz_line_pressure(qn, ln, rho, es)
+    b = hertz_line_half_width(qn, ln, rho, es)
+    warn_conformal(b, d / 2, "roller-tooth contact")
     return RollerContactResult(
         nominal_load=_out(q),
         max_skew=_out(np.asarray(max_skew, dtype=float)),
@@ -439,7 +447,7 @@ def roller_contact_stress(
         stress_unskewed=s0,
         stress=s,
         stress_ratio=_out(np.asarray(s) / np.asarray(s0)),
-        half_width=hertz_line_half_width(qn, ln, rho, es),
+        half_width=b,
         relative_life_wear=relative_life(factor, "wear"),
         relative_life_fatigue=relative_life(factor, "rolling-fatigue"),
         contact=contact,
@@ -467,9 +475,9 @@ class RollerToothContact:
 
     Examples
     --------
-    >>> c = RollerToothContact(0.0254, 15.88e-3, 8.02e-3, 17e-3)
+    >>> c = RollerToothContact(0.0254, 15.88e-3, 68.7e-3, 17e-3, contact="convex")
     >>> round(c.stress(5e3, max_skew=50 * ARCMIN).stress / 1e6)
-    175
+    1855
     """
 
     pitch: float

@@ -31,8 +31,10 @@ from .hertz import (
     STEEL_ELASTIC_MODULUS,
     STEEL_POISSON_RATIO,
     effective_modulus,
+    hertz_line_half_width,
     hertz_line_pressure,
     reduced_radius,
+    warn_conformal,
 )
 
 __all__ = [
@@ -235,6 +237,7 @@ def pin_tooth_contact_stress(force, pin_radius, profile_radius, contact_length, 
     """
     rho = reduced_radius(pin_radius, profile_radius, contact)
     es = effective_modulus(elastic_modulus, poisson_ratio)
+    warn_conformal(hertz_line_half_width(force, contact_length, rho, es), pin_radius, "pin-tooth contact")
     return hertz_line_pressure(force, contact_length, rho, es)
 
 

@@ -1,0 +1,293 @@
+"""``chaindrive contact``, ``tooth-strength``, ``fretting``, ``bolts``: strength and life.
+
+Text output in MPa, mm, arc minutes; ``--json`` prints every computed figure in SI
+units (N, m, Pa, rad, s), the same numbers the Python API returns. Bad input gives a
+one-line ``error: ...`` naming the field and its range, exit code 2; a failed
+strength check (a safety factor below 1) exits with 1.
+"""
+
+from __future__ import annotations
+
+import typer
+
+from ..errors import InputError
+from .app import app, echo_json, exit_code, quantity
+
+
+def _chain(name):
+    from .. import chains
+
+    return chains.get(name)
+
+
+def _rows(title, rows):
+    print(title)
+    w = max(len(r[0]) for r in rows)
+    for name, value, src in rows:
+        print(f"  {name:<{w}}  {value:>18}   {src}")
+
+
+def _mpa(v):
+    return "-" if v is None else f"{v / 1e6:.1f} MPa"
+
+
+def _f(v, fmt="{:.2f}"):
+    return "-" if v is None else fmt.format(v)
+
+
+@app.command("contact")
+def contact_command(
+    load: str = typer.Option(..., "--load", help="Nominal roller load Q_nom [N or '5 kN'] (seed 004 eq. 1-2)."),
+    chain: str | None = typer.Option(None, "--chain", "-c", help="Roller chain from the catalogue, e.g. 16B (gives pitch, D_p = d1, L_p = b1)."),
+    pitch: str | None = typer.Option(None, "--pitch", help="Chain pitch [m or '25.4 mm'] for gamma (seed 004 table, 12.7...25.4 mm)."),
+    roller_diameter: str | None = typer.Option(None, "--roller-diameter", help="Roller diameter D_p [m or mm with unit]."),
+    seat_radius: str | None = typer.Option(None, "--seat-radius", help="Tooth profile radius r1 at the contact [m or mm]; default ISO 606:2015 5.4.2 r_i,min = 0.505 d1."),
+    length: str | None = typer.Option(None, "--length", help="Roller length L_p [m or mm]; default the chain's inner width b1."),
+    contact: str = typer.Option("concave", "--contact", help="'concave' roller in the seat (1/rho = 2/D_p - 1/r1) or 'convex' flank (+), seed 004 rho."),
+    skew: str | None = typer.Option(None, "--skew", help="Largest skew phi_p,max [rad or '50 arcmin'] (seed 004; measured 0°42'...3°26')."),
+    skew_dh: str | None = typer.Option(None, "--skew-dh", help="Measured probe depth difference Delta h [m or mm]: phi = atan(Delta h / B) (seed 004)."),
+    skew_base: str | None = typer.Option(None, "--skew-base", help="Probe base B [m or mm] for --skew-dh (seed 004)."),
+    k_phi: float = typer.Option(0.65, "--k-phi", help="Wear factor K_phi [-], seed 004 range 0.6...0.7: phi_p = phi_p,max K_phi."),
+    gamma: float | None = typer.Option(None, "--gamma", help="gamma [1/arcmin^2] directly instead of the seed 004 pitch table."),
+    outside: str = typer.Option("warn", "--gamma-outside", help="Pitch outside 12.7...25.4 mm: 'warn' (extrapolate gamma ~ 1/p) or 'raise'."),
+    modulus: str = typer.Option("210 GPa", "--modulus", help="Young's modulus E of roller and tooth [Pa or '210 GPa'] (Hertz, Johnson 1985 eq. 4.45)."),
+    poisson: float = typer.Option(0.3, "--poisson", help="Poisson's ratio [-]; 0.3 gives seed 004's 0.418."),
+    as_json: bool = typer.Option(False, "--json", help="Print every figure as JSON in SI units (N, m, Pa, rad)."),
+) -> None:
+    """Roller–tooth contact stress with skew (seed 004, paper 2).
+
+    sigma = sqrt(Q_n E* / (pi L_p rho)) = 0.418 sqrt(Q_n E / (L_p rho)) for steel (eq. 1);
+    Q_n = Q_nom (1 + gamma phi_p^2) (eq. 2), phi_p in arc minutes; relative life
+    L/L0 = (Q_n/Q_nom)^-k, k = 1 wear (Archard), k = 10/3 rolling fatigue (ISO 281).
+    """
+    from ..strength import ARCMIN, roller_contact_stress, skew_from_measurement
+
+    q = quantity(load, "N", "load")
+    c = _chain(chain) if chain else None
+    p = quantity(pitch, "m", "pitch") if pitch else (c.pitch if c else None)
+    d = quantity(roller_diameter, "m", "roller_diameter") if roller_diameter else (c.roller_diameter if c else None)
+    if d is None:
+        raise InputError("roller_diameter is needed (--roller-diameter > 0 m, or --chain of a roller chain)")
+    r1 = quantity(seat_radius, "m", "seat_radius") if seat_radius else 0.505 * d
+    ln = quantity(length, "m", "length") if length else (c.inner_width if c else None)
+    if ln is None:
+        raise InputError("length is needed (--length > 0 m, or --chain with an inner width)")
+    if skew is not None and skew_dh is not None:
+        raise InputError("give either --skew or --skew-dh/--skew-base, not both")
+    if skew_dh is not None:
+        if skew_base is None:
+            raise InputError("skew_base (--skew-base > 0 m) is needed with --skew-dh")
+        phi = skew_from_measurement(quantity(skew_dh, "m", "skew_dh"), quantity(skew_base, "m", "skew_base"))
+    else:
+        phi = quantity(skew, "rad", "skew") if skew else 0.0
+    e = quantity(modulus, "Pa", "modulus")
+    r = roller_contact_stress(q, d, r1, ln, contact=contact, max_skew=phi, wear_factor=k_phi, pitch=p,
+                              gamma=gamma, elastic_modulus=e, poisson_ratio=poisson, outside=outside)
+    if as_json:
+        out = r.to_dict()
+        out.update(pitch=p, roller_diameter=d, seat_radius=r1, length=ln)
+        echo_json(out)
+        return
+    _rows("Roller–tooth contact (seed 004)", [
+        ("load Q_nom", f"{q:.1f} N", "input"),
+        ("skew phi_max", f"{phi / ARCMIN:.1f} arcmin", "input / atan(dh/B)"),
+        ("design skew phi_p", f"{r.design_skew / ARCMIN:.1f} arcmin", "phi_max K_phi"),
+        ("gamma", f"{r.gamma:.5f} /arcmin^2", "seed 004 table"),
+        ("load factor Q_n/Q", f"{r.load_factor:.3f}", "seed 004 eq. (2)"),
+        ("rho", f"{r.reduced_radius * 1e3:.3f} mm", "1/rho = 2/D_p -+ 1/r1"),
+        ("sigma at no skew", _mpa(r.stress_unskewed), "Hertz / seed 004 eq. (1)"),
+        ("sigma with skew", _mpa(r.stress), "seed 004 eq. (1)-(3)"),
+        ("life ratio, wear", f"{r.relative_life_wear:.3f}", "(Q_n/Q)^-1 Archard"),
+        ("life ratio, fatigue", f"{r.relative_life_fatigue:.4f}", "(Q_n/Q)^-10/3 ISO 281"),
+    ])
+
+
+@app.command("tooth-strength")
+def tooth_strength_command(
+    weight: str = typer.Option(..., "--weight", help="Tractor weight G_T [N or '60 kN'] (seed 001: P = 0.65 G_T phi)."),
+    adhesion: float = typer.Option(1.0, "--adhesion", help="Adhesion coefficient phi [-] (seed 001: 1.0), 0 < phi <= 1.5."),
+    rims: int = typer.Option(1, "--rims", help="Toothed rims i: 1 or 2 (seed 001: P_P = P / i)."),
+    pitch: str = typer.Option(..., "--pitch", help="Track pitch t [m or '170 mm']."),
+    teeth: int = typer.Option(..., "--teeth", help="Number of teeth z >= 3."),
+    pin_radius: str = typer.Option(..., "--pin-radius", help="Pin radius r_c [m or mm] (seed 001)."),
+    link: str = typer.Option("built-up", "--link", help="'built-up' or 'cast' track links (seed 001 tip radius range)."),
+    root_factor: float | None = typer.Option(None, "--root-factor", help="r_seat / r_pin in 1.1...1.3 (seed 001), default 1.2."),
+    tip_factor: float | None = typer.Option(None, "--tip-factor", help="(R_tip - R_o) / r_pin (seed 001: 0.2...0.5 built-up, 0.8...1.2 cast)."),
+    tooth_width: str = typer.Option(..., "--tooth-width", help="Tooth width b [m or mm] (bending section and contact length)."),
+    hardness: float | None = typer.Option(None, "--hardness", help="Surface hardness [HRC]; seed 001: 48...60 (outside: warning)."),
+    allowable_bending: str | None = typer.Option(None, "--allowable-bending", help="Allowable bending stress [Pa or '400 MPa'], user value."),
+    allowable_contact: str | None = typer.Option(None, "--allowable-contact", help="Allowable contact stress [Pa or '1200 MPa'], user value."),
+    contact: str = typer.Option("convex", "--contact", help="Pin on the convex flank (radius t - r_seat) or in the 'concave' seat (Hertz, Johnson eq. 4.45)."),
+    kt: float = typer.Option(1.0, "--kt", help="Root stress concentration factor K_t >= 1 (Lewis cantilever, Shigley 9th ed. 14-1)."),
+    as_json: bool = typer.Option(False, "--json", help="Print every figure as JSON in SI units (N, m, Pa)."),
+) -> None:
+    """Tooth of a track drive wheel in bending and contact (seed 001, p. 34).
+
+    P_P = 0.65 G_T phi / i at the tooth tip; sigma_F = K_t 6 P_P h / (b s^2) with
+    s = t - 2 r_seat, h = R_tip - R_o cos(pi/z) (cantilever, Lewis-type); sigma_H Hertz
+    line contact pin/flank.
+    """
+    from ..geometry.track_wheel import TrackDriveWheel
+    from ..strength import track_tooth_check
+
+    w = TrackDriveWheel(pitch=quantity(pitch, "m", "pitch"), teeth=teeth,
+                        pin_radius=quantity(pin_radius, "m", "pin_radius"), link=link,
+                        root_factor=root_factor, tip_factor=tip_factor)
+    r = track_tooth_check(w, quantity(weight, "N", "weight"), quantity(tooth_width, "m", "tooth_width"),
+                          adhesion=adhesion, rims=rims, hardness=hardness,
+                          allowable_bending=quantity(allowable_bending, "Pa", "allowable_bending"),
+                          allowable_contact=quantity(allowable_contact, "Pa", "allowable_contact"),
+                          contact=contact, stress_concentration=kt)
+    if as_json:
+        echo_json(r.to_dict())
+    else:
+        _rows("Track drive wheel tooth (seed 001)", [
+            ("design force P_P", f"{r.design_force:.0f} N", "0.65 G_T phi / i"),
+            ("root thickness s", f"{r.root_thickness * 1e3:.2f} mm", "t - 2 r_seat"),
+            ("lever arm h", f"{r.lever_arm * 1e3:.2f} mm", "R_tip - R_o cos(pi/z)"),
+            ("bending stress", _mpa(r.bending_stress), "K_t 6 P h / (b s^2)"),
+            ("contact stress", _mpa(r.contact_stress), "Hertz line contact"),
+            ("bending safety", _f(r.bending_safety), "allowable / actual"),
+            ("contact safety", _f(r.contact_safety), "allowable / actual"),
+            ("passes", str(r.passes), ""),
+        ])
+    if not r.passes:
+        exit_code(1)
+
+
+@app.command("fretting")
+def fretting_command(
+    load: str = typer.Option(..., "--load", help="Amplitude of the cyclic chain load on the pin [N or '5 kN'] (drives the pin bending)."),
+    chain: str | None = typer.Option(None, "--chain", "-c", help="Multi-strand chain, e.g. 16B-3 (pin diameter d2, transverse pitch pt, b1 from ISO 606)."),
+    pin_diameter: str | None = typer.Option(None, "--pin-diameter", help="Pin diameter d2 [m or mm]."),
+    transverse_pitch: str | None = typer.Option(None, "--transverse-pitch", help="Transverse pitch pt [m or mm]."),
+    strands: int | None = typer.Option(None, "--strands", help="Number of rows n >= 1."),
+    inner_width: str | None = typer.Option(None, "--inner-width", help="Width between inner plates b1 [m or mm]."),
+    end_fixity: str = typer.Option("pinned", "--end-fixity", help="Pin in the outer plates: 'pinned' or 'clamped' (Euler-Bernoulli beam model)."),
+    roughness: str = typer.Option("0.8 um", "--roughness", help="Ra [m or '0.8 um'] (seed 004 paper 3 eq. 1)."),
+    frequency: str = typer.Option("10 Hz", "--frequency", help="Vibration frequency f [Hz] (seed 004 paper 3 eq. 1)."),
+    k1: float | None = typer.Option(None, "--k1", help="K1 [s/m] of tau = K1 Ra exp(-k2 A N f / Ra) (seed 004 eq. 1); empirical."),
+    k2: float | None = typer.Option(None, "--k2", help="k2 = -K2 > 0 [s/N] (seed 004 eq. 1 with the sign made explicit); empirical."),
+    normal_load: str | None = typer.Option(None, "--normal-load", help="Normal load N in the joint [N]; default load / strands."),
+    as_json: bool = typer.Option(False, "--json", help="Print every figure as JSON in SI units (N, m, Pa, rad, s)."),
+) -> None:
+    """Pin bending and fretting latent period of a multi-row chain, with and without
+    working intermediate plates (seed 004, paper 3).
+
+    Slip A = max pin slope x d/2 (Euler-Bernoulli pin across the rows, tiny FE);
+    tau = K1 Ra exp(-k2 A N f / Ra) (eq. 1, K2 = -k2).
+    """
+    from ..strength import MultiRowPin, fretting_comparison
+
+    if chain:
+        pin = MultiRowPin.from_chain(_chain(chain), end_fixity=end_fixity)
+    else:
+        if None in (pin_diameter, transverse_pitch, strands, inner_width):
+            raise InputError("give --chain or all of --pin-diameter, --transverse-pitch, --strands, --inner-width (> 0)")
+        pin = MultiRowPin(quantity(pin_diameter, "m", "pin_diameter"), quantity(transverse_pitch, "m", "transverse_pitch"),
+                          strands, quantity(inner_width, "m", "inner_width"), end_fixity=end_fixity)
+    f = quantity(load, "N", "load")
+    a = pin.bending(f, intermediate_plates=False)
+    b = pin.bending(f, intermediate_plates=True)
+    out = {
+        "pin_diameter": pin.pin_diameter, "transverse_pitch": pin.transverse_pitch, "strands": pin.strands,
+        "inner_width": pin.inner_width, "end_fixity": pin.end_fixity, "load": f,
+        "without_intermediate_plates": {k: v for k, v in a.to_dict().items() if k != "beam"},
+        "with_intermediate_plates": {k: v for k, v in b.to_dict().items() if k != "beam"},
+        "slip_ratio": a.slip_amplitude / b.slip_amplitude,
+    }
+    if (k1 is None) != (k2 is None):
+        raise InputError("give both --k1 (> 0 s/m) and --k2 (> 0 s/N) for the latent period, or neither")
+    if k1 is not None:
+        nl = quantity(normal_load, "N", "normal_load") if normal_load else None
+        c = fretting_comparison(pin, f, quantity(roughness, "m", "roughness"), quantity(frequency, "Hz", "frequency"),
+                                k1, k2, normal_load=nl)
+        out["fretting"] = c.to_dict()
+    if as_json:
+        echo_json(out)
+        return
+    rows = [
+        ("slip A without", f"{a.slip_amplitude * 1e6:.3f} um", "max slope x d/2, plates idle"),
+        ("slip A with", f"{b.slip_amplitude * 1e6:.3f} um", "intermediate plates support the pin"),
+        ("slip ratio", f"{out['slip_ratio']:.2f}", "without / with"),
+        ("pin stress without", _mpa(a.max_stress), "32 M / (pi d^3)"),
+        ("pin stress with", _mpa(b.max_stress), "32 M / (pi d^3)"),
+    ]
+    if "fretting" in out:
+        fr = out["fretting"]
+        rows += [
+            ("tau without", f"{fr['latent_without']:.4g} s", "seed 004 eq. (1)"),
+            ("tau with", f"{fr['latent_with']:.4g} s", "seed 004 eq. (1)"),
+            ("life ratio", f"{fr['life_ratio']:.4g}", "tau_with / tau_without"),
+        ]
+    _rows(f"Multi-row pin, {pin.strands} rows (seed 004, paper 3)", rows)
+
+
+@app.command("bolts")
+def bolts_command(
+    bolt_circle_radius: str = typer.Option(..., "--bolt-circle-radius", help="Bolt circle radius R_b [m or mm]."),
+    bolts: int = typer.Option(..., "--bolts", help="Number of bolts n >= 1."),
+    torque: str | None = typer.Option(None, "--torque", help="Torque on the rim [N m or '7 kN*m']."),
+    force: str | None = typer.Option(None, "--force", help="Instead of --torque: tooth force P_P [N] (seed 001) ..."),
+    pitch_radius: str | None = typer.Option(None, "--pitch-radius", help="... and pitch radius R_o [m]: T = P_P R_o."),
+    joint: str = typer.Option("fitted", "--joint", help="'fitted' bolts in shear (Shigley 9th ed. 8-12) or 'friction' joint (VDI 2230-1 step R2)."),
+    shank_diameter: str | None = typer.Option(None, "--shank-diameter", help="Fitted shank diameter d [m or mm]."),
+    shear_planes: int = typer.Option(1, "--shear-planes", help="Shear planes m (fitted)."),
+    plate_thickness: str | None = typer.Option(None, "--plate-thickness", help="Thinnest clamped part t_min [m or mm] for bearing (fitted)."),
+    allowable_shear: str | None = typer.Option(None, "--allowable-shear", help="Allowable shear stress [Pa or MPa]."),
+    allowable_bearing: str | None = typer.Option(None, "--allowable-bearing", help="Allowable bearing pressure [Pa or MPa]."),
+    friction: float = typer.Option(0.15, "--friction", help="Friction coefficient mu (friction joint), 0 < mu <= 1."),
+    friction_faces: int = typer.Option(1, "--friction-faces", help="Frictional interfaces q (friction joint)."),
+    slip_safety: float = typer.Option(1.25, "--slip-safety", help="Safety against slip S >= 1 (VDI 2230-1: 1.2 static, 1.8 alternating)."),
+    diameter: str | None = typer.Option(None, "--diameter", help="Nominal thread diameter d [m or mm] for A_s (ISO 898-1)."),
+    thread_pitch: str | None = typer.Option(None, "--thread-pitch", help="Thread pitch P [m or mm] for A_s (ISO 898-1)."),
+    yield_strength: str | None = typer.Option(None, "--yield-strength", help="Bolt R_p0.2 [Pa or MPa] (ISO 898-1: 8.8 640 MPa)."),
+    as_json: bool = typer.Option(False, "--json", help="Print every figure as JSON in SI units (N, m, Pa)."),
+) -> None:
+    """Bolts of a toothed rim under the transmitted torque (seed 001 Fig. 14).
+
+    F = T / (n R_b) per bolt; fitted: tau = 4F/(m pi d^2), p = F/(d t); friction:
+    F_V = S T / (mu q n R_b), sigma_V = F_V / A_s (VDI 2230-1 R2, ISO 898-1 A_s).
+    """
+    from ..strength import bolt_stress_area, fitted_bolt_check, friction_bolt_preload
+
+    if torque is not None:
+        t = quantity(torque, "N*m", "torque")
+    elif force is not None and pitch_radius is not None:
+        t = quantity(force, "N", "force") * quantity(pitch_radius, "m", "pitch_radius")
+    else:
+        raise InputError("give --torque (> 0 N m) or both --force and --pitch-radius (> 0)")
+    rb = quantity(bolt_circle_radius, "m", "bolt_circle_radius")
+    if joint == "fitted":
+        if shank_diameter is None:
+            raise InputError("shank_diameter (--shank-diameter > 0 m) is needed for fitted bolts")
+        r = fitted_bolt_check(t, rb, bolts, quantity(shank_diameter, "m", "shank_diameter"), shear_planes=shear_planes,
+                              plate_thickness=quantity(plate_thickness, "m", "plate_thickness"),
+                              allowable_shear=quantity(allowable_shear, "Pa", "allowable_shear"),
+                              allowable_bearing=quantity(allowable_bearing, "Pa", "allowable_bearing"))
+        rows = [("force per bolt", f"{r.bolt_force:.0f} N", "T / (n R_b)"),
+                ("shear stress", _mpa(r.shear_stress), "4F/(m pi d^2)"),
+                ("bearing stress", _mpa(r.bearing_stress), "F/(d t)"),
+                ("shear safety", _f(r.shear_safety), ""), ("bearing safety", _f(r.bearing_safety), "")]
+    elif joint == "friction":
+        a_s = None
+        if diameter is not None or thread_pitch is not None:
+            if diameter is None or thread_pitch is None:
+                raise InputError("give both --diameter and --thread-pitch (> 0 m) for the stress area")
+            a_s = bolt_stress_area(quantity(diameter, "m", "diameter"), quantity(thread_pitch, "m", "thread_pitch"))
+        r = friction_bolt_preload(t, rb, bolts, friction, friction_faces=friction_faces, slip_safety=slip_safety,
+                                  stress_area=a_s, yield_strength=quantity(yield_strength, "Pa", "yield_strength"))
+        rows = [("force per bolt", f"{r.bolt_force:.0f} N", "T / (n R_b)"),
+                ("required preload", f"{r.required_preload:.0f} N", "S T / (mu q n R_b)"),
+                ("preload stress", _mpa(r.preload_stress), "F_V / A_s"),
+                ("yield safety", _f(r.yield_safety), "R_p0.2 / sigma_V")]
+    else:
+        raise InputError(f"joint must be 'fitted' or 'friction', got {joint!r}")
+    if as_json:
+        out = r.to_dict()
+        out.update(torque=t, joint=joint)
+        echo_json(out)
+    else:
+        _rows(f"Rim bolts ({joint}), torque {t:.0f} N m", rows)
+    if not r.passes:
+        exit_code(1)
