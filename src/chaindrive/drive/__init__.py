@@ -59,7 +59,8 @@ __all__ = [
 
 def __getattr__(name):  # project files need pydantic (optional extra): import lazily
     if name in ("load_project", "Project", "project"):
-        from . import project
+        import importlib
 
+        project = importlib.import_module(f"{__name__}.project")
         return project if name == "project" else getattr(project, name)
     raise AttributeError(name)

@@ -1,0 +1,253 @@
+"""Tests of the Drive objects, TOML project files (errors with field and line), CLI."""
+
+from __future__ import annotations
+
+import json
+import math
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from chaindrive.chains import get
+from chaindrive.cli import main
+from chaindrive.drive import Drive, Guide, Load, Tensioner, Wheel, load_project
+from chaindrive.drive.project import line_index, parse_project, template
+from chaindrive.errors import InputError, UnknownNameError
+
+EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
+RPM = 2 * math.pi / 60
+
+
+def _roller():
+    return Drive(chain=get("16B"), speed=960 * RPM, load=Load(power=15e3),
+                 wheels=[Wheel("motor", "sprocket", 19, (0, 0), driving=True),
+                         Wheel("fan", "sprocket", 57, (1.05, 0))])
+
+
+# ---------------------------------------------------------------- objects
+def test_drive_roller_numbers():
+    d = _roller()
+    lay = d.layout()
+    assert lay.links == 122 and lay.links_required == pytest.approx(121.5654, abs=1e-3)
+    assert lay.centre_distance_for_links.taut == pytest.approx(1.05558, abs=1e-5)
+    assert lay.tight_span == 1 and lay.slack_span == 0
+    t = d.tensions()
+    # hand: T = 15e3/(100.531) = 149.208 N·m; R = 77.159 mm; pull = 1933.8 N
+    assert t.effective_pull == pytest.approx(149.208 / 0.0771589, rel=1e-4)
+    assert t.centrifugal == pytest.approx(2.612 * (19 * 0.0254 * 16) ** 2, rel=1e-9)
+    # free entry: a = ω² p / 2 = 100.531² · 0.0127
+    assert t.acceleration_peak == pytest.approx((960 * RPM) ** 2 * 0.0127, rel=1e-9)
+    assert t.maximum == pytest.approx(t.effective_pull + t.slack + t.centrifugal + t.dynamic)
+    # the slack span hangs 2 % of its length (default)
+    j = lay.slack_span
+    assert d.sag() == pytest.approx(0.02 * lay.wrap.span_length[j], rel=1e-6)
+    # shaft loads: both shafts carry the same resultant (only span tensions act)
+    assert t.shaft_loads[0] == pytest.approx(t.shaft_loads[1])
+    assert t.shaft_loads[0] == pytest.approx(t.effective_pull + 2 * t.slack, rel=0.01)
+    s = d.safety()
+    assert s.passed and s.static_safety == pytest.approx(60e3 / t.maximum)
+    r = d.rating()
+    assert r["teeth"] == 19 and r["rated_power"] > 15e3
+    life = d.life()
+    assert life.model == "rating" and life.hours_to_limit > 15000
+    json.dumps(d.summary())
+
+
+def test_drive_given_acceleration_and_entry_cases():
+    d = _roller()
+    t = d.tensions(acceleration_peak=10.0, moving_mass=2.0)
+    assert t.dynamic == 20.0 and "given" in t.acceleration_source
+    cases = d.entry_cases()
+    assert cases == [{"wheel": "motor", "kwargs": dict(pitch=0.0254, teeth=19, angular_velocity=960 * RPM,
+                                                       bar_diameter=None, entry="free")}]
+
+
+def test_drive_object_errors():
+    w = [Wheel("a", "sprocket", 19, (0, 0), driving=True), Wheel("b", "sprocket", 19, (1, 0))]
+    with pytest.raises(InputError, match="exactly one wheel must have driving"):
+        Drive(chain=get("16B"), speed=10, load=Load(power=1e3),
+              wheels=[Wheel("a", "sprocket", 19, (0, 0)), Wheel("b", "sprocket", 19, (1, 0))])
+    with pytest.raises(InputError, match="at least 2 wheels"):
+        Drive(chain=get("16B"), speed=10, load=Load(power=1e3), wheels=w[:1])
+    with pytest.raises(InputError, match="speed must be positive"):
+        Drive(chain=get("16B"), speed=0, load=Load(power=1e3), wheels=w)
+    with pytest.raises(InputError, match="guide.wheel: no wheel named 'c'"):
+        Drive(chain=get("16B"), speed=1, load=Load(power=1e3), wheels=w, guides=[Guide("c", 0.1)])
+    with pytest.raises(InputError, match="tensioner.wheel: no wheel named 'x'"):
+        Drive(chain=get("16B"), speed=1, load=Load(power=1e3), wheels=w, tensioner=Tensioner("x", 1, 1))
+    with pytest.raises(InputError, match="kind must be one of"):
+        Wheel("a", "gear", 19, (0, 0))
+    with pytest.raises(InputError, match="needs teeth"):
+        Wheel("a", "sprocket", None, (0, 0), diameter=0.1)
+    with pytest.raises(InputError, match="exactly one of power and torque"):
+        Load()
+    with pytest.raises(InputError, match="service_factor must be >= 1"):
+        Load(power=1.0, service_factor=0.5)
+
+
+# ---------------------------------------------------------------- examples
+@pytest.mark.parametrize("name", ["mining_conveyor", "roller_industrial", "tractor_track"])
+def test_examples_load_and_validate(name):
+    d = load_project(EXAMPLES / f"{name}.toml")
+    lay = d.layout()
+    assert lay.links >= lay.links_required - 1e-9
+    t = d.tensions()
+    assert t.maximum > t.effective_pull > 0
+    assert d.safety().passed
+    json.dumps(d.summary())
+
+
+def test_mining_example_is_seed_002():
+    d = load_project(EXAMPLES / "mining_conveyor.toml")
+    assert d.chain.name == "18x64" and d.speed == 5.0
+    assert [w.teeth for w in d.wheels if w.kind == "pocket_wheel"] == [8, 8]
+    (case,) = d.entry_cases()
+    assert case["kwargs"]["entry"] == "tangential"
+    assert case["kwargs"]["guide_end_distance"] == pytest.approx(0.256)
+    assert case["kwargs"]["bar_diameter"] == pytest.approx(0.018)
+    span = d.tensioner_span()
+    assert span["mass"] == 60 and span["stiffness"] == 2e5
+    # the tensioner force balances the slack tension over the wrap of the idler
+    lay = d.layout()
+    i = lay.wheel_names.index("tensioner")
+    assert d.tensions().slack * 2 * math.sin(lay.wrap.wrap_angle[i] / 2) == pytest.approx(5e3)
+    assert lay.take_up is not None and np.all(np.diff(lay.take_up) > 0)
+    life = d.life()
+    assert life.model == "archard"
+
+
+def test_tractor_example_seed_001_load():
+    d = load_project(EXAMPLES / "tractor_track.toml")
+    # P = 0.65 G_T φ / 2 = 22.75 kN per track at the pitch radius of 13 teeth, 170 mm
+    R = 0.170 / (2 * math.sin(math.pi / 13))
+    assert d.tensions().effective_pull == pytest.approx(8080 / R, rel=1e-9)
+    assert 8080 / R == pytest.approx(22.75e3, rel=0.001)
+    assert d.rating() is None  # custom chain: no ANSI rating
+
+
+# ---------------------------------------------------------------- schema errors
+def _with(text: str, old: str, new: str) -> str:
+    assert old in text
+    return text.replace(old, new, 1)
+
+
+def _line_of(text: str, needle: str) -> int:
+    return next(i for i, line in enumerate(text.splitlines(), 1) if needle in line)
+
+
+def test_error_wrong_unit_names_field_and_line():
+    text = _with(template("roller"), 'speed = "960 rpm"', 'speed = "960 kg"')
+    with pytest.raises(InputError) as exc:
+        parse_project(text, "drive.toml")
+    n = _line_of(text, 'speed = "960 kg"')
+    assert str(exc.value).startswith(f"drive.toml:{n}: drive.speed: ")
+    assert "[mass]" in str(exc.value) and "rad/s" in str(exc.value)
+
+
+def test_error_missing_field_names_field_and_table_line():
+    text = _with(template("roller"), "teeth = 57\n", "")
+    with pytest.raises(InputError) as exc:
+        parse_project(text, "drive.toml")
+    # the second [[wheels]] table
+    n = [i for i, line in enumerate(text.splitlines(), 1) if line.strip() == "[[wheels]]"][1]
+    assert str(exc.value) == f"drive.toml:{n}: wheels[1].teeth: required for a sprocket (a toothless idler needs diameter instead)"
+
+
+def test_error_missing_required_key():
+    text = _with(template("roller"), 'speed = "960 rpm"', "")
+    with pytest.raises(InputError, match=r"drive.toml:\d+: drive.speed: required field is missing \(add it to the \[drive\] table\)"):
+        parse_project(text, "drive.toml")
+    text = template("roller").split("[load]")[0] + "[[wheels]]" + template("roller").split("[[wheels]]", 1)[1]
+    with pytest.raises(InputError, match=r"drive.toml: load: required field is missing \(add a \[load\] table\)"):
+        parse_project(text, "drive.toml")
+
+
+def test_error_negative_value():
+    text = _with(template("mining"), 'end_distance = "0.256 m"', 'end_distance = "-0.256 m"')
+    with pytest.raises(InputError) as exc:
+        parse_project(text, "m.toml")
+    n = _line_of(text, 'end_distance = "-0.256 m"')
+    assert str(exc.value) == (f"m.toml:{n}: guides[0].end_distance: end_distance must be positive "
+                              "(0 < end_distance < inf m), got -0.256")
+
+
+def test_error_teeth_too_few_and_unknown_field():
+    text = _with(template("roller"), "teeth = 19", "teeth = 2")
+    with pytest.raises(InputError, match=r"drive.toml:\d+: wheels\[0\].teeth: Input should be greater than or equal to 3"):
+        parse_project(text, "drive.toml")
+    text = _with(template("roller"), "teeth = 19", "teeth = 19\ncolour = 'red'")
+    n = _line_of(text, "colour")
+    with pytest.raises(InputError, match=rf"drive.toml:{n}: wheels\[0\].colour: unknown field"):
+        parse_project(text, "drive.toml")
+
+
+def test_error_unknown_chain():
+    text = _with(template("roller"), 'name = "16B"', 'name = "16X"')
+    n = _line_of(text, 'name = "16X"')
+    with pytest.raises(UnknownNameError, match=rf"drive.toml:{n}: chain.name: unknown chain '16X'; closest known names: 16B-1"):
+        parse_project(text, "drive.toml")
+
+
+def test_error_toml_syntax_and_missing_file(tmp_path):
+    with pytest.raises(InputError, match=r"drive.toml: TOML syntax error: .*line 2"):
+        parse_project("[drive]\nspeed = = 3\n", "drive.toml")
+    with pytest.raises(InputError, match="cannot read project file"):
+        load_project(tmp_path / "none.toml")
+
+
+def test_error_two_driving_wheels_and_bad_reference():
+    text = _with(template("roller"), 'teeth = 57\n', 'teeth = 57\ndriving = true\n')
+    with pytest.raises(InputError, match=r"drive.toml:\d+: wheels: exactly one wheel must have driving = true, got 2"):
+        parse_project(text, "drive.toml")
+    text = _with(template("mining"), 'wheel = "drive"', 'wheel = "drve"')
+    n = _line_of(text, 'wheel = "drve"')
+    with pytest.raises(InputError, match=rf"m.toml:{n}: guides\[0\].wheel: no wheel named 'drve'"):
+        parse_project(text, "m.toml")
+
+
+def test_chain_override_and_custom():
+    text = _with(template("roller"), 'name = "16B"', 'name = "ANSI 40"\nmass_per_length = "0.62 kg/m"')
+    d = parse_project(text)
+    assert d.chain.name == "ANSI 40-1" and d.chain.mass_per_length == pytest.approx(0.62)
+    d = load_project(EXAMPLES / "tractor_track.toml")
+    assert d.chain.family == "custom" and d.chain.pitch == pytest.approx(0.17)
+
+
+def test_line_index_arrays_and_nesting():
+    text = "# c\n[drive]\nspeed = 1\n\n[[wheels]]\nname = 'a'\n[[wheels]]\nname = 'b'\nteeth = 3\n[tensioner]\nmass = 1\n"
+    idx = line_index(text)
+    assert idx[("drive",)] == 2 and idx[("drive", "speed")] == 3
+    assert idx[("wheels", 0)] == 5 and idx[("wheels", 1, "teeth")] == 9
+    assert idx[("tensioner", "mass")] == 11
+
+
+def test_template_unknown_kind():
+    with pytest.raises(UnknownNameError, match="unknown template kind 'boat'"):
+        template("boat")
+
+
+# ---------------------------------------------------------------- CLI
+def test_cli_new_layout_select(tmp_path, capsys):
+    f = tmp_path / "drive.toml"
+    assert main(["new", str(f), "--kind", "roller"]) == 0
+    assert main(["new", str(f)]) == 2  # exists
+    assert "exists" in capsys.readouterr().err
+    assert main(["layout", str(f), "--json"]) == 0
+    out = json.loads(capsys.readouterr().out)
+    assert out["layout"]["links"] == 122 and out["safety"]["passed"] is True
+    assert main(["layout", str(f)]) == 0
+    assert "centre distance for 122 links" in capsys.readouterr().out
+    assert main(["select", "--power", "15 kW", "--speed", "1450 rpm", "--ratio", "3", "--json"]) == 0
+    found = json.loads(capsys.readouterr().out)
+    assert found[0]["rated_power"] >= 15e3
+    assert main(["select", "--power", "15 kW", "--speed", "1450 rpm", "--ratio", "3"]) == 0
+    assert main(["select", "--power", "15 kg", "--speed", "1450 rpm", "--ratio", "3"]) == 2
+    assert "power" in capsys.readouterr().err
+
+
+def test_cli_layout_error_exit_code(tmp_path, capsys):
+    f = tmp_path / "bad.toml"
+    f.write_text(template("roller").replace('power = "15 kW"', 'power = "-15 kW"'))
+    assert main(["layout", str(f)]) == 2
+    assert "bad.toml:" in capsys.readouterr().err
