@@ -61,6 +61,25 @@ def test_drive_given_acceleration_and_entry_cases():
     cases = d.entry_cases()
     assert cases == [{"wheel": "motor", "kwargs": dict(pitch=0.0254, teeth=19, angular_velocity=960 * RPM,
                                                        bar_diameter=None, entry="free")}]
+    t = d.tensions(acceleration_peak=lambda **kw: kw["angular_velocity"])
+    assert t.acceleration_peak == pytest.approx(960 * RPM)
+    with pytest.raises(InputError, match="acceleration source"):
+        d.acceleration_peak("paper")
+
+
+def test_free_entry_closed_form_matches_kinematics_module():
+    # independent: the kinematics module's general solver for free entry
+    pytest.importorskip("chaindrive.kinematics")
+    for path in ("roller_industrial", "mining_conveyor"):
+        d = load_project(EXAMPLES / f"{path}.toml")
+        d.guides = []  # free entry on the driving wheel
+        a_free, _ = d.acceleration_peak("free")
+        a_kin, src = d.acceleration_peak("kinematics")
+        assert "kinematics" in src
+        assert a_kin == pytest.approx(a_free, rel=1e-6)
+    d = load_project(EXAMPLES / "mining_conveyor.toml")
+    t = d.tensions(kinematics=True)
+    assert "tangential" in t.acceleration_source
 
 
 def test_drive_object_errors():

@@ -318,6 +318,11 @@ class Drive:
     wear_coefficient : float, optional
         Archard coefficient [m²/N] for the ``"archard"`` wear model (link chains).
     name : str
+    description : str
+    travel : {"ccw", "cw"}
+        Direction the chain runs relative to the listed (counter-clockwise) wheel
+        order: ``"ccw"`` along it, ``"cw"`` against it. The driving wheel pulls the
+        span arriving at it in the direction of travel (the tight span).
     """
 
     chain: Any
@@ -334,8 +339,11 @@ class Drive:
     wear_coefficient: float | None = None
     name: str = "chain drive"
     description: str = ""
+    travel: str = "ccw"
 
     def __post_init__(self):
+        if self.travel not in ("ccw", "cw"):
+            raise InputError(f"travel must be 'ccw' or 'cw', got {self.travel!r}")
         if len(self.wheels) < 2:
             raise InputError(f"a drive needs at least 2 wheels, got {len(self.wheels)}")
         names = [w.name for w in self.wheels]
@@ -474,7 +482,9 @@ class Drive:
             wrap=wrap, wheel_names=[w.name for w in self.wheels], pitch_radii=radii,
             teeth_in_mesh=teeth_mesh, chain_length_circles=wrap.length,
             links_required=links_required, links=links, polygon=polygon, centre_distance=centre,
-            centre_distance_for_links=cd, tight_span=(k - 1) % n, slack_span=k,
+            centre_distance_for_links=cd,
+            tight_span=(k - 1) % n if self.travel == "ccw" else k,
+            slack_span=k if self.travel == "ccw" else (k - 1) % n,
             elongations=elong, take_up=take_up, take_up_kind=kind,
         )
         self._cache["layout"] = out
@@ -506,20 +516,60 @@ class Drive:
         g = math.atan(math.tan(angle)) if abs(math.cos(angle)) > 1e-12 else math.pi / 2
         return g
 
-    def tensions(self, *, acceleration_peak: float | None = None,
-                 moving_mass: float | None = None) -> DriveTensions:
+    def driving_entry(self) -> dict:
+        """Keyword arguments of :func:`chaindrive.kinematics.chain_entry` for the chain
+        entering the driving wheel (its guide if it has one, else free entry)."""
+        name = self.driving_wheel.name
+        return next(c["kwargs"] for c in self.entry_cases() if c["wheel"] == name)
+
+    def acceleration_peak(self, source: str = "free") -> tuple[float, str]:
+        """Peak chain acceleration at the driving wheel [m/s²] and where it came from.
+
+        ``source="free"``: closed form ``ω² R sin(δ/2)`` (seed 002, free entry);
+        ``"kinematics"``: ``summary["a_abs_max"]`` of
+        :func:`chaindrive.kinematics.chain_entry` for :meth:`driving_entry` (guides
+        included); falls back to the closed form if that module is missing.
+        """
+        w = self.driving_wheel
+        if source == "kinematics":
+            try:
+                from ..kinematics import chain_entry
+            except ImportError:  # pragma: no cover - module being written
+                source = "free"
+            else:
+                kw = self.driving_entry()
+                res = chain_entry(**kw)
+                return float(res.summary["a_abs_max"]), f"chaindrive.kinematics.chain_entry ({kw['entry']} entry)"
+        if source != "free":
+            raise InputError(f"acceleration source must be 'free' or 'kinematics', got {source!r}")
+        R = w.pitch_radius(self.chain)
+        if w.teeth is None:
+            raise InputError("the driving wheel needs teeth for the polygonal acceleration")
+        if self.chain.is_link_chain:
+            from ..geometry.polygon import link_chain_central_angles
+
+            half = float(link_chain_central_angles(self.pitch, self.chain.bar_diameter, w.teeth)[0]) / 2
+        else:
+            half = math.pi / w.teeth
+        a = float(F.free_entry_acceleration_peak(self.speed, R, half))
+        return a, "free entry on the driving wheel, ω² R sin(δ/2) (seed 002)"
+
+    def tensions(self, *, acceleration_peak=None, moving_mass: float | None = None,
+                 kinematics: bool = False) -> DriveTensions:
         """Tight/slack/centrifugal/dynamic tensions and shaft loads.
 
         Parameters
         ----------
-        acceleration_peak : float, optional
-            Peak chain acceleration [m/s²] from :mod:`chaindrive.kinematics` (e.g.
-            with guides); default: free entry on the driving wheel,
-            :func:`~chaindrive.drive.loads.free_entry_acceleration_peak`.
+        acceleration_peak : float or callable, optional
+            Peak chain acceleration [m/s²], or a callable taking the keyword
+            arguments of :meth:`driving_entry` and returning it; default: the free-entry
+            closed form (or the kinematics module with ``kinematics=True``).
         moving_mass : float, optional
             Mass moved by the polygonal action [kg]; default the whole chain.
+        kinematics : bool
+            Use :func:`chaindrive.kinematics.chain_entry` (guides included).
         """
-        key = ("tensions", acceleration_peak, moving_mass)
+        key = ("tensions", acceleration_peak, moving_mass, kinematics)
         if key in self._cache:
             return self._cache[key]
         lay = self.layout()
@@ -547,17 +597,11 @@ class Drive:
             src = f"catenary sag {self.slack_sag_ratio:.1%} of the slack span"
         tight = Fe + Fs + Fc
         if acceleration_peak is None:
-            w = self.driving_wheel
-            if self.chain.is_link_chain:
-                from ..geometry.polygon import link_chain_central_angles
-
-                half = float(link_chain_central_angles(self.pitch, self.chain.bar_diameter, w.teeth)[0]) / 2
-            else:
-                half = math.pi / w.teeth
-            a = float(F.free_entry_acceleration_peak(self.speed, R, half))
-            asrc = "free entry on the driving wheel, ω² R sin(δ/2) (seed 002)"
+            a, asrc = self.acceleration_peak("kinematics" if kinematics else "free")
+        elif callable(acceleration_peak):
+            a, asrc = float(acceleration_peak(**self.driving_entry())), "given (callable)"
         else:
-            a, asrc = float(acceleration_peak), "given (kinematics)"
+            a, asrc = float(acceleration_peak), "given"
         m = float(moving_mass) if moving_mass is not None else q * lay.links * self.pitch
         Fd = float(F.dynamic_tension(m, a))
         n = len(self.wheels)

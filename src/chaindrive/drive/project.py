@@ -110,6 +110,7 @@ class DriveSpec(_Model):
     required_static_safety: Ratio = 7.0
     elongation_limit: Ratio = 0.03
     wear_coefficient: WearCoefficient | None = None
+    travel: Literal["ccw", "cw"] = "ccw"
 
     @field_validator("slack_sag_ratio")
     @classmethod
@@ -358,7 +359,7 @@ def parse_project(text: str, filename: str = "<project>") -> Drive:
             required_static_safety=proj.drive.required_static_safety,
             elongation_limit=proj.drive.elongation_limit,
             wear_coefficient=proj.drive.wear_coefficient,
-            name=proj.drive.name, description=proj.drive.description,
+            name=proj.drive.name, description=proj.drive.description, travel=proj.drive.travel,
         )
     except ChainDriveError as exc:
         raise type(exc)(f"{filename}: {exc}") from None
@@ -397,8 +398,8 @@ def load_project(path) -> Drive:
 _HEAD = """\
 # chaindrive project file (TOML). Quantities may carry units: "64 mm", "300 rpm",
 # "15 kW", "2 kN"; a bare number is read in SI units (m, rad/s, W, N, kg).
-# Wheels are listed in the order the chain passes them, counter-clockwise round the
-# loop; side = -1 marks an idler pressing on the outside of the chain.
+# Wheels are listed counter-clockwise round the loop (the chain runs that way unless
+# travel = "cw"); side = -1 marks an idler pressing on the outside of the chain.
 # Check it with:  chaindrive layout {file}
 """
 
@@ -410,6 +411,7 @@ description = "16B simplex, 19/57 teeth, fan drive from a 960 rpm motor"
 speed = "960 rpm"               # driving wheel
 # links = 122                   # chain length in pitches (default: required, rounded up to even)
 slack_sag_ratio = 0.02          # slack-span sag / span (ISO 10823 guidance: about 2 %)
+travel = "ccw"                  # the chain runs along the wheel list ("cw": against it)
 required_static_safety = 7      # F_B / F_max
 elongation_limit = 0.03         # wear limit (3 %)
 
@@ -486,6 +488,7 @@ end_distance = "0.256 m"        # l, seed 002 worked case
 name = "Tracked tractor drive wheel (seed 001)"
 description = "Track of a 70 kN tractor, lantern-pin pitch 170 mm, 13-tooth drive wheel"
 speed = "40 rpm"
+travel = "cw"                   # forward: the chain runs clockwise, the drive wheel pulls the ground run
 required_static_safety = 5
 elongation_limit = 0.03
 wear_coefficient = "1e-15 m**2/N"   # dry, abrasive: illustrative Archard coefficient

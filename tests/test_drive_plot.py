@@ -1,0 +1,42 @@
+"""Smoke tests of chaindrive.plotting.drive (figures returned, labelled, no show())."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+pytest.importorskip("matplotlib")
+
+from chaindrive.drive import load_project  # noqa: E402
+from chaindrive.plotting.drive import layout_plot, rating_plot, wear_plot  # noqa: E402
+
+EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
+
+
+@pytest.mark.parametrize("name", ["mining_conveyor", "roller_industrial", "tractor_track"])
+def test_layout_plot(name, tmp_path):
+    import matplotlib.pyplot as plt
+
+    d = load_project(EXAMPLES / f"{name}.toml")
+    fig = layout_plot(d)
+    ax = fig.axes[0]
+    assert ax.get_xlabel() == "x [mm]" and ax.get_ylabel() == "y [mm]"
+    assert "links" in ax.get_title()
+    fig.savefig(tmp_path / "layout.png", dpi=50)
+    plt.close(fig)
+    fig = layout_plot(d.layout())  # a result alone: geometry only
+    plt.close(fig)
+
+
+def test_wear_and_rating_plots():
+    import matplotlib.pyplot as plt
+
+    d = load_project(EXAMPLES / "roller_industrial.toml")
+    fig = wear_plot(d.life())
+    assert fig.axes[0].get_ylabel() == "chain elongation [%]"
+    plt.close(fig)
+    fig = rating_plot(0.0254, 19, name="16B-1", operating=(d.speed, d.design_power()))
+    assert fig.axes[0].get_xlabel() == "small-sprocket speed [rpm]"
+    assert len(fig.axes[0].get_legend().get_texts()) == 4
+    plt.close(fig)
