@@ -112,8 +112,8 @@ def test_pin_without_intermediate_plates_is_statically_determinate():
     lb = pin.inner_width + 2 * pin.plate_thickness
     assert np.allclose(r.reactions, [f / 2, 0, 0, f / 2])
     m = f / 2 * 1.5 * pt - f / 3 * pt - f / 6 * lb / 4
-    assert r.max_moment == pytest.approx(m, rel=1e-9)
-    assert r.max_stress == pytest.approx(32 * m / (np.pi * 8.28e-3**3), rel=1e-9)
+    assert r.max_moment == pytest.approx(m, rel=1e-7)
+    assert r.max_stress == pytest.approx(32 * m / (np.pi * 8.28e-3**3), rel=1e-7)
 
 
 def test_intermediate_plates_reduce_slip_sample_16b3():

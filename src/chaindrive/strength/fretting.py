@@ -348,7 +348,7 @@ class MultiRowPin:
         sup = self.supports
         active = sup if intermediate_plates else sup[[0, -1]]
         ei = self.elastic_modulus * np.pi * self.pin_diameter**4 / 64
-        sol = beam_solve(active, loads, ei, end_fixity=self.end_fixity)
+        sol = beam_solve(active, loads, ei, end_fixity=self.end_fixity, elements_per_span=16)
         seat_unit = np.interp(sup, sol.x, sol.slope)
         theta_unit = float(np.max(np.abs(sol.slope)))
         m_unit = float(np.max(np.abs(sol.moment)))
