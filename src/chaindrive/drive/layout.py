@@ -1066,13 +1066,13 @@ def tensioner_travel(centres, radii, sides, index, direction, elongation):
 
     out = np.empty(e.size)
     smax = float(np.max(np.hypot(*(c - c[k]).T))) + float(np.max(lay0.radii)) * 4
+    grid = np.linspace(0, smax, 120)
+    vals = np.array([length(s) for s in grid])  # bracket the roots once for all e
     for i, ei in enumerate(e.ravel()):
         target = lay0.length * (1 + ei)
         if ei == 0:
             out[i] = 0.0
             continue
-        grid = np.linspace(0, smax, 200)
-        vals = np.array([length(s) for s in grid])
         idx = np.nonzero(vals >= target)[0]
         if idx.size == 0:
             raise InfeasibleError(

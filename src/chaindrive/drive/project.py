@@ -51,7 +51,7 @@ def _quantity(unit: str, *, positive: bool = True, allow_zero: bool = False, sig
         try:
             x = parse_quantity(value, unit or "dimensionless", field=name)
         except InputError as exc:
-            raise ValueError(str(exc)) from None
+            raise ValueError(str(exc).removeprefix(f"{name}: ")) from None
         if not signed:
             if positive and not allow_zero and not x > 0:
                 raise ValueError(f"{name} must be positive (0 < {name} < inf {unit}), got {x:g}")
