@@ -8,6 +8,8 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from chaindrive.chains import get
 from chaindrive.cli import main
@@ -270,3 +272,27 @@ def test_cli_layout_error_exit_code(tmp_path, capsys):
     f.write_text(template("roller").replace('power = "15 kW"', 'power = "-15 kW"'))
     assert main(["layout", str(f)]) == 2
     assert "bad.toml:" in capsys.readouterr().err
+
+
+def test_cache_cleared_on_change():
+    d = _roller()
+    t1 = d.tensions().effective_pull
+    d.load = Load(power=30e3)
+    assert d.tensions().effective_pull == pytest.approx(2 * t1)
+
+
+@settings(max_examples=12, deadline=None)
+@given(z1=st.integers(11, 25), k=st.integers(1, 4), a=st.floats(30, 60))
+def test_drive_properties(z1, k, a):
+    p = 0.0254
+    d = Drive(chain=get("16B"), speed=50.0, load=Load(power=5e3),
+              wheels=[Wheel("a", "sprocket", z1, (0, 0), driving=True),
+                      Wheel("b", "sprocket", z1 * k, (a * p, 0))])
+    lay = d.layout(phases=4)
+    # links rounded up to even: the centre distance for them is not shorter than given
+    assert lay.links % 2 == 0 and lay.links >= lay.links_required
+    assert lay.centre_distance_for_links.taut >= lay.centre_distance - 1e-9
+    assert np.all(np.diff(lay.take_up) > 0)
+    assert sum(lay.wrap.wrap_angle) == pytest.approx(2 * math.pi)
+    t = d.tensions()
+    assert t.tight > t.effective_pull > 0 and t.dynamic_factor >= 1

@@ -319,10 +319,32 @@ class Drive:
         Archard coefficient [m²/N] for the ``"archard"`` wear model (link chains).
     name : str
     description : str
+        Free text for reports.
     travel : {"ccw", "cw"}
         Direction the chain runs relative to the listed (counter-clockwise) wheel
         order: ``"ccw"`` along it, ``"cw"`` against it. The driving wheel pulls the
         span arriving at it in the direction of travel (the tight span).
+
+    Notes
+    -----
+    Results of :meth:`layout` and :meth:`tensions` are cached; setting any attribute
+    clears the cache.
+
+    References
+    ----------
+    See the functions called (docs/drive.md).
+
+    Examples
+    --------
+    >>> from chaindrive.chains import get
+    >>> d = Drive(chain=get("18x64"), speed=5.0, load=Load(power=25e3, service_factor=1.5),
+    ...           wheels=[Wheel("drive", "pocket_wheel", 8, (0, 0), driving=True),
+    ...                   Wheel("return", "pocket_wheel", 8, (4.0, 0))])
+    >>> lay = d.layout()
+    >>> lay.links, round(lay.centre_distance_for_links.taut, 4)
+    (142, 4.0)
+    >>> round(d.tensions().effective_pull / 1e3, 2)  # K_s T / R = 1.5 · 5000 N·m / 0.16428 m
+    45.65
     """
 
     chain: Any
@@ -359,6 +381,11 @@ class Drive:
         if self.tensioner is not None:
             self.wheel(self.tensioner.wheel, what="tensioner.wheel")
         self._cache: dict[str, Any] = {}
+
+    def __setattr__(self, name, value):
+        object.__setattr__(self, name, value)
+        if name != "_cache" and "_cache" in self.__dict__:
+            self.__dict__["_cache"] = {}
 
     # ------------------------------------------------------------------ helpers
     def wheel(self, name: str, what: str = "wheel") -> Wheel:
