@@ -37,21 +37,21 @@ def _f(v, fmt="{:.2f}"):
 
 @app.command("contact")
 def contact_command(
-    load: str = typer.Option(..., "--load", help="Nominal roller load Q_nom [N or '5 kN'] (seed 004 eq. 1-2)."),
+    load: str = typer.Option(..., "--load", help="Nominal roller load Q_nom (unit N or '5 kN') (seed 004 eq. 1-2)."),
     chain: str | None = typer.Option(None, "--chain", "-c", help="Roller chain from the catalogue, e.g. 16B (gives pitch, D_p = d1, L_p = b1)."),
-    pitch: str | None = typer.Option(None, "--pitch", help="Chain pitch [m or '25.4 mm'] for gamma (seed 004 table, 12.7...25.4 mm)."),
-    roller_diameter: str | None = typer.Option(None, "--roller-diameter", help="Roller diameter D_p [m or mm with unit]."),
-    seat_radius: str | None = typer.Option(None, "--seat-radius", help="Tooth profile radius r1 at the contact [m or mm]; default ISO 606:2015 5.4.2 r_i,min = 0.505 d1."),
-    length: str | None = typer.Option(None, "--length", help="Roller length L_p [m or mm]; default the chain's inner width b1."),
+    pitch: str | None = typer.Option(None, "--pitch", help="Chain pitch (unit m or '25.4 mm') for gamma (seed 004 table, 12.7...25.4 mm)."),
+    roller_diameter: str | None = typer.Option(None, "--roller-diameter", help="Roller diameter D_p (unit m or mm with unit)."),
+    seat_radius: str | None = typer.Option(None, "--seat-radius", help="Tooth profile radius r1 at the contact (unit m or mm); default ISO 606:2015 5.4.2 r_i,min = 0.505 d1."),
+    length: str | None = typer.Option(None, "--length", help="Roller length L_p (unit m or mm); default the chain's inner width b1."),
     contact: str = typer.Option("concave", "--contact", help="'concave' roller in the seat (1/rho = 2/D_p - 1/r1) or 'convex' flank (+), seed 004 rho."),
-    skew: str | None = typer.Option(None, "--skew", help="Largest skew phi_p,max [rad or '50 arcmin'] (seed 004; measured 0°42'...3°26')."),
-    skew_dh: str | None = typer.Option(None, "--skew-dh", help="Measured probe depth difference Delta h [m or mm]: phi = atan(Delta h / B) (seed 004)."),
-    skew_base: str | None = typer.Option(None, "--skew-base", help="Probe base B [m or mm] for --skew-dh (seed 004)."),
-    k_phi: float = typer.Option(0.65, "--k-phi", help="Wear factor K_phi [-], seed 004 range 0.6...0.7: phi_p = phi_p,max K_phi."),
-    gamma: float | None = typer.Option(None, "--gamma", help="gamma [1/arcmin^2] directly instead of the seed 004 pitch table."),
+    skew: str | None = typer.Option(None, "--skew", help="Largest skew phi_p,max (unit rad or '50 arcmin') (seed 004; measured 0°42'...3°26')."),
+    skew_dh: str | None = typer.Option(None, "--skew-dh", help="Measured probe depth difference Delta h (unit m or mm): phi = atan(Delta h / B) (seed 004)."),
+    skew_base: str | None = typer.Option(None, "--skew-base", help="Probe base B (unit m or mm) for --skew-dh (seed 004)."),
+    k_phi: float = typer.Option(0.65, "--k-phi", help="Wear factor K_phi (dimensionless), seed 004 range 0.6...0.7: phi_p = phi_p,max K_phi."),
+    gamma: float | None = typer.Option(None, "--gamma", help="gamma (unit 1/arcmin^2) directly instead of the seed 004 pitch table."),
     outside: str = typer.Option("warn", "--gamma-outside", help="Pitch outside 12.7...25.4 mm: 'warn' (extrapolate gamma ~ 1/p) or 'raise'."),
-    modulus: str = typer.Option("210 GPa", "--modulus", help="Young's modulus E of roller and tooth [Pa or '210 GPa'] (Hertz, Johnson 1985 eq. 4.45)."),
-    poisson: float = typer.Option(0.3, "--poisson", help="Poisson's ratio [-]; 0.3 gives seed 004's 0.418."),
+    modulus: str = typer.Option("210 GPa", "--modulus", help="Young's modulus E of roller and tooth (unit Pa or '210 GPa') (Hertz, Johnson 1985 eq. 4.45)."),
+    poisson: float = typer.Option(0.3, "--poisson", help="Poisson's ratio (dimensionless); 0.3 gives seed 004's 0.418."),
     as_json: bool = typer.Option(False, "--json", help="Print every figure as JSON in SI units (N, m, Pa, rad)."),
 ) -> None:
     """Roller–tooth contact stress with skew (seed 004, paper 2).
@@ -104,19 +104,19 @@ def contact_command(
 
 @app.command("tooth-strength")
 def tooth_strength_command(
-    weight: str = typer.Option(..., "--weight", help="Tractor weight G_T [N or '60 kN'] (seed 001: P = 0.65 G_T phi)."),
-    adhesion: float = typer.Option(1.0, "--adhesion", help="Adhesion coefficient phi [-] (seed 001: 1.0), 0 < phi <= 1.5."),
+    weight: str = typer.Option(..., "--weight", help="Tractor weight G_T (unit N or '60 kN') (seed 001: P = 0.65 G_T phi)."),
+    adhesion: float = typer.Option(1.0, "--adhesion", help="Adhesion coefficient phi (dimensionless) (seed 001: 1.0), 0 < phi <= 1.5."),
     rims: int = typer.Option(1, "--rims", help="Toothed rims i: 1 or 2 (seed 001: P_P = P / i)."),
-    pitch: str = typer.Option(..., "--pitch", help="Track pitch t [m or '170 mm']."),
+    pitch: str = typer.Option(..., "--pitch", help="Track pitch t (unit m or '170 mm')."),
     teeth: int = typer.Option(..., "--teeth", help="Number of teeth z >= 3."),
-    pin_radius: str = typer.Option(..., "--pin-radius", help="Pin radius r_c [m or mm] (seed 001)."),
+    pin_radius: str = typer.Option(..., "--pin-radius", help="Pin radius r_c (unit m or mm) (seed 001)."),
     link: str = typer.Option("built-up", "--link", help="'built-up' or 'cast' track links (seed 001 tip radius range)."),
     root_factor: float | None = typer.Option(None, "--root-factor", help="r_seat / r_pin in 1.1...1.3 (seed 001), default 1.2."),
     tip_factor: float | None = typer.Option(None, "--tip-factor", help="(R_tip - R_o) / r_pin (seed 001: 0.2...0.5 built-up, 0.8...1.2 cast)."),
-    tooth_width: str = typer.Option(..., "--tooth-width", help="Tooth width b [m or mm] (bending section and contact length)."),
-    hardness: float | None = typer.Option(None, "--hardness", help="Surface hardness [HRC]; seed 001: 48...60 (outside: warning)."),
-    allowable_bending: str | None = typer.Option(None, "--allowable-bending", help="Allowable bending stress [Pa or '400 MPa'], user value."),
-    allowable_contact: str | None = typer.Option(None, "--allowable-contact", help="Allowable contact stress [Pa or '1200 MPa'], user value."),
+    tooth_width: str = typer.Option(..., "--tooth-width", help="Tooth width b (unit m or mm) (bending section and contact length)."),
+    hardness: float | None = typer.Option(None, "--hardness", help="Surface hardness (unit HRC); seed 001: 48...60 (outside: warning)."),
+    allowable_bending: str | None = typer.Option(None, "--allowable-bending", help="Allowable bending stress (unit Pa or '400 MPa'), user value."),
+    allowable_contact: str | None = typer.Option(None, "--allowable-contact", help="Allowable contact stress (unit Pa or '1200 MPa'), user value."),
     contact: str = typer.Option("convex", "--contact", help="Pin on the convex flank (radius t - r_seat) or in the 'concave' seat (Hertz, Johnson eq. 4.45)."),
     kt: float = typer.Option(1.0, "--kt", help="Root stress concentration factor K_t >= 1 (Lewis cantilever, Shigley 9th ed. 14-1)."),
     as_json: bool = typer.Option(False, "--json", help="Print every figure as JSON in SI units (N, m, Pa)."),
@@ -157,22 +157,23 @@ def tooth_strength_command(
 
 @app.command("fretting")
 def fretting_command(
-    load: str = typer.Option(..., "--load", help="Amplitude of the cyclic chain load on the pin [N or '5 kN'] (drives the pin bending)."),
+    load: str = typer.Option(..., "--load", help="Amplitude of the cyclic chain load on the pin (unit N or '5 kN') (drives the pin bending)."),
     chain: str | None = typer.Option(None, "--chain", "-c", help="Multi-strand chain, e.g. 16B-3 (pin diameter d2, transverse pitch pt, b1 from ISO 606)."),
-    pin_diameter: str | None = typer.Option(None, "--pin-diameter", help="Pin diameter d2 [m or mm]."),
-    transverse_pitch: str | None = typer.Option(None, "--transverse-pitch", help="Transverse pitch pt [m or mm]."),
+    pin_diameter: str | None = typer.Option(None, "--pin-diameter", help="Pin diameter d2 (unit m or mm)."),
+    transverse_pitch: str | None = typer.Option(None, "--transverse-pitch", help="Transverse pitch pt (unit m or mm)."),
     strands: int | None = typer.Option(None, "--strands", help="Number of rows n >= 1."),
-    inner_width: str | None = typer.Option(None, "--inner-width", help="Width between inner plates b1 [m or mm]."),
+    inner_width: str | None = typer.Option(None, "--inner-width", help="Width between inner plates b1 (unit m or mm)."),
     end_fixity: str = typer.Option("pinned", "--end-fixity", help="Pin in the outer plates: 'pinned' or 'clamped' (Euler-Bernoulli beam model)."),
-    roughness: str = typer.Option("0.8 um", "--roughness", help="Ra [m or '0.8 um'] (seed 004 paper 3 eq. 1)."),
-    frequency: str = typer.Option("10 Hz", "--frequency", help="Vibration frequency f [Hz] (seed 004 paper 3 eq. 1)."),
-    k1: float | None = typer.Option(None, "--k1", help="K1 [s/m] of tau = K1 Ra exp(-k2 A N f / Ra) (seed 004 eq. 1); empirical."),
-    k2: float | None = typer.Option(None, "--k2", help="k2 = -K2 > 0 [s/N] (seed 004 eq. 1 with the sign made explicit); empirical."),
-    normal_load: str | None = typer.Option(None, "--normal-load", help="Normal load N in the joint [N]; default load / strands."),
+    roughness: str = typer.Option("0.8 um", "--roughness", help="Ra (unit m or '0.8 um') (seed 004 paper 3 eq. 1)."),
+    frequency: str = typer.Option("10 Hz", "--frequency", help="Vibration frequency f (unit Hz) (seed 004 paper 3 eq. 1)."),
+    k1: float | None = typer.Option(None, "--k1", help="K1 (unit s/m) of tau = K1 Ra exp(-k2 A N f / Ra) (seed 004 eq. 1); empirical."),
+    k2: float | None = typer.Option(None, "--k2", help="k2 = -K2 > 0 (unit s/N) (seed 004 eq. 1 with the sign made explicit); empirical."),
+    normal_load: str | None = typer.Option(None, "--normal-load", help="Normal load N in the joint (unit N); default load / strands."),
     as_json: bool = typer.Option(False, "--json", help="Print every figure as JSON in SI units (N, m, Pa, rad, s)."),
 ) -> None:
-    """Pin bending and fretting latent period of a multi-row chain, with and without
-    working intermediate plates (seed 004, paper 3).
+    """Pin bending and fretting latent period of a multi-row chain (seed 004, paper 3).
+
+    Compared with and without working intermediate plates.
 
     Slip A = max pin slope x d/2 (Euler-Bernoulli pin across the rows, tiny FE);
     tau = K1 Ra exp(-k2 A N f / Ra) (eq. 1, K2 = -k2).
@@ -225,23 +226,23 @@ def fretting_command(
 
 @app.command("bolts")
 def bolts_command(
-    bolt_circle_radius: str = typer.Option(..., "--bolt-circle-radius", help="Bolt circle radius R_b [m or mm]."),
+    bolt_circle_radius: str = typer.Option(..., "--bolt-circle-radius", help="Bolt circle radius R_b (unit m or mm)."),
     bolts: int = typer.Option(..., "--bolts", help="Number of bolts n >= 1."),
-    torque: str | None = typer.Option(None, "--torque", help="Torque on the rim [N m or '7 kN*m']."),
-    force: str | None = typer.Option(None, "--force", help="Instead of --torque: tooth force P_P [N] (seed 001) ..."),
-    pitch_radius: str | None = typer.Option(None, "--pitch-radius", help="... and pitch radius R_o [m]: T = P_P R_o."),
+    torque: str | None = typer.Option(None, "--torque", help="Torque on the rim (unit N m or '7 kN*m')."),
+    force: str | None = typer.Option(None, "--force", help="Instead of --torque: tooth force P_P (unit N) (seed 001) ..."),
+    pitch_radius: str | None = typer.Option(None, "--pitch-radius", help="... and pitch radius R_o (unit m): T = P_P R_o."),
     joint: str = typer.Option("fitted", "--joint", help="'fitted' bolts in shear (Shigley 9th ed. 8-12) or 'friction' joint (VDI 2230-1 step R2)."),
-    shank_diameter: str | None = typer.Option(None, "--shank-diameter", help="Fitted shank diameter d [m or mm]."),
+    shank_diameter: str | None = typer.Option(None, "--shank-diameter", help="Fitted shank diameter d (unit m or mm)."),
     shear_planes: int = typer.Option(1, "--shear-planes", help="Shear planes m (fitted)."),
-    plate_thickness: str | None = typer.Option(None, "--plate-thickness", help="Thinnest clamped part t_min [m or mm] for bearing (fitted)."),
-    allowable_shear: str | None = typer.Option(None, "--allowable-shear", help="Allowable shear stress [Pa or MPa]."),
-    allowable_bearing: str | None = typer.Option(None, "--allowable-bearing", help="Allowable bearing pressure [Pa or MPa]."),
+    plate_thickness: str | None = typer.Option(None, "--plate-thickness", help="Thinnest clamped part t_min (unit m or mm) for bearing (fitted)."),
+    allowable_shear: str | None = typer.Option(None, "--allowable-shear", help="Allowable shear stress (unit Pa or MPa)."),
+    allowable_bearing: str | None = typer.Option(None, "--allowable-bearing", help="Allowable bearing pressure (unit Pa or MPa)."),
     friction: float = typer.Option(0.15, "--friction", help="Friction coefficient mu (friction joint), 0 < mu <= 1."),
     friction_faces: int = typer.Option(1, "--friction-faces", help="Frictional interfaces q (friction joint)."),
     slip_safety: float = typer.Option(1.25, "--slip-safety", help="Safety against slip S >= 1 (VDI 2230-1: 1.2 static, 1.8 alternating)."),
-    diameter: str | None = typer.Option(None, "--diameter", help="Nominal thread diameter d [m or mm] for A_s (ISO 898-1)."),
-    thread_pitch: str | None = typer.Option(None, "--thread-pitch", help="Thread pitch P [m or mm] for A_s (ISO 898-1)."),
-    yield_strength: str | None = typer.Option(None, "--yield-strength", help="Bolt R_p0.2 [Pa or MPa] (ISO 898-1: 8.8 640 MPa)."),
+    diameter: str | None = typer.Option(None, "--diameter", help="Nominal thread diameter d (unit m or mm) for A_s (ISO 898-1)."),
+    thread_pitch: str | None = typer.Option(None, "--thread-pitch", help="Thread pitch P (unit m or mm) for A_s (ISO 898-1)."),
+    yield_strength: str | None = typer.Option(None, "--yield-strength", help="Bolt R_p0.2 (unit Pa or MPa) (ISO 898-1: 8.8 640 MPa)."),
     as_json: bool = typer.Option(False, "--json", help="Print every figure as JSON in SI units (N, m, Pa)."),
 ) -> None:
     """Bolts of a toothed rim under the transmitted torque (seed 001 Fig. 14).
