@@ -301,3 +301,17 @@ def test_tensioner_travel_errors():
     with pytest.raises(InfeasibleError, match="cannot take up"):
         # moving the idler away from the chain (downwards) shortens the path
         L.tensioner_travel(c, [0.2, 0.05, 0.2], [1, -1, 1], 1, [0, -1], 0.01)
+
+
+def test_jindal_example_30_1_roundtrip():
+    # U. C. Jindal, Machine Design (Pearson), Example 30-1, p. 778 (as reproduced by the
+    # FOSSEE Python/Scilab textbook companion, "sum 30-1"): 17/51 teeth, p = 9.52 mm,
+    # C = 300 mm: chain length from the approximation, then C from the inverse formula
+    # C = (p/4)[(Ln - (n1+n2)/2) + sqrt((Ln - (n1+n2)/2)² - 8((n2-n1)/2π)²)] = 300.00 mm.
+    p = 9.52e-3
+    Ln = float(L.chain_length_approx(p, 17, 51, 0.300))
+    z = Ln - 34
+    book = p / 4 * (z + math.sqrt(z * z - 8 * (34 / (2 * math.pi)) ** 2))
+    assert book == pytest.approx(0.300, abs=5e-6)
+    assert float(L.centre_distance_approx(p, 17, 51, Ln)) == pytest.approx(book, rel=1e-12)
+    assert Ln == pytest.approx(2 * 300 / 9.52 + 34 + (34 / (2 * math.pi)) ** 2 * 9.52 / 300, rel=1e-12)
