@@ -394,3 +394,23 @@ def test_roller_tooth_contact_object():
     assert r.load_factor == pytest.approx(2.2675)
     with pytest.raises(InputError, match=r"has no roller diameter"):
         RollerToothContact.from_chain("18x64")
+
+
+def test_hertz_solution_satisfies_the_contact_condition_numerically():
+    # Independent check of p0 and b: inside the strip the surface slope produced by the
+    # pressure, (2 / (pi E*)) PV int p(s) / (x - s) ds (Johnson 1985 eq. (2.25b)), must equal
+    # the slope of the gap between the bodies, x / R (Johnson eq. (4.41)). The principal
+    # value is computed numerically (QUADPACK Cauchy weight), not from the closed form.
+    from scipy.integrate import quad
+
+    f, ln, rho, es = 7000.0, 0.02, 0.006, 1.15e11
+    p0 = hertz_line_pressure(f, ln, rho, es)
+    b = hertz_line_half_width(f, ln, rho, es)
+
+    def p(s):
+        return p0 * np.sqrt(max(1 - (s / b) ** 2, 0.0))
+
+    for x in np.array([-0.8, -0.3, 0.1, 0.5, 0.9]) * b:
+        pv, _ = quad(p, -b, b, weight="cauchy", wvar=x)  # PV int p(s) / (s - x) ds
+        slope = 2 / (np.pi * es) * (-pv)
+        assert slope == pytest.approx(x / rho, rel=1e-6)
