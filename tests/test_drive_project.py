@@ -296,3 +296,13 @@ def test_drive_properties(z1, k, a):
     assert sum(lay.wrap.wrap_angle) == pytest.approx(2 * math.pi)
     t = d.tensions()
     assert t.tight > t.effective_pull > 0 and t.dynamic_factor >= 1
+
+
+def test_vertical_drive_slack_from_weight():
+    d = Drive(chain=get("16B"), speed=50.0, load=Load(power=5e3),
+              wheels=[Wheel("low", "sprocket", 19, (0, 0), driving=True),
+                      Wheel("high", "sprocket", 19, (0, 1.0))])
+    t = d.tensions()
+    assert t.slack == pytest.approx(2.612 * 9.80665 * 1.0)
+    assert "vertical" in t.slack_source
+    assert d.layout().teeth_in_mesh == [9, 9]

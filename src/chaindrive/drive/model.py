@@ -186,6 +186,8 @@ class DriveLayout(Result):
     pitch_radii : ndarray
         [m].
     teeth_in_mesh : list of int or None
+        Whole teeth (pockets of a pocket wheel) inside the wrap; ``None`` for
+        toothless idlers.
     chain_length_circles : float
         Length on the pitch circles [m].
     links_required : float
@@ -484,7 +486,7 @@ class Drive:
             w1, w2 = self.wheels
             cd = L.centre_distance_polygon(p, w1.teeth, w2.teeth, links,
                                            bar_diameter=self.bar_diameter, phases=phases)
-        teeth_mesh = [int(L.teeth_in_mesh(min(th, 2 * np.pi), w.sides_per_turn(self.chain)))
+        teeth_mesh = [int(L.teeth_in_mesh(min(th, 2 * np.pi), w.teeth))
                       if w.teeth is not None else None
                       for th, w in zip(wrap.wrap_angle, self.wheels, strict=True)]
         k = self.driving_index
@@ -619,9 +621,14 @@ class Drive:
             src = f"tensioner force on wheel {self.tensioner.wheel!r}"
         else:
             span = lay.wrap.span_length[j]
-            Fs = float(L.tension_for_sag(span, self._inclination(lay.wrap.span_angle[j]),
-                                         self.slack_sag_ratio * span, q))
-            src = f"catenary sag {self.slack_sag_ratio:.1%} of the slack span"
+            incl = self._inclination(lay.wrap.span_angle[j])
+            if abs(incl) > math.radians(80):
+                # a (near-)vertical span has no sag to speak of: it hangs in its own weight
+                Fs = float(q * L.GRAVITY * span)
+                src = "weight of the near-vertical slack span, q g l"
+            else:
+                Fs = float(L.tension_for_sag(span, incl, self.slack_sag_ratio * span, q))
+                src = f"catenary sag {self.slack_sag_ratio:.1%} of the slack span"
         tight = Fe + Fs + Fc
         if acceleration_peak is None:
             a, asrc = self.acceleration_peak("kinematics" if kinematics else "free")
