@@ -26,6 +26,7 @@ TOPICS = (
     "simulate",
     "web",
     "analyze",
+    "crawler",
 )
 
 for _topic in TOPICS:

@@ -1,0 +1,111 @@
+"""``chaindrive crawler``: the drive chain of a crawler (caterpillar) conveyor drive (seed 000).
+
+Text output gives the summary; ``--json`` prints ``psi``, ``displacement``, ``velocity``,
+``acceleration`` (and ``force``) with the ``summary`` in SI units (rad, m, m/s, m/s², N);
+``--plot FILE`` draws velocity and acceleration with and without the guide (Fig. 6.9 c).
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import typer
+
+from ..errors import InputError
+from .app import app, echo_json, quantity
+
+_CHAIN = typer.Option(None, "--chain", "-c", help="Drive chain from the catalogue (e.g. 16B, 'ANSI 80'); its pitch t is used. Give either --chain or --pitch.")
+_PITCH = typer.Option(None, "--pitch", "-p", help="Drive-chain pitch t, unit m or e.g. '100 mm' (seed 000 eqs 6.15-6.16).")
+_TEETH = typer.Option(..., "--teeth", "-z", help="Tooth count z >= 3 of both sprockets, dimensionless (in phase; γ = π/z).")
+_SPEED = typer.Option(..., "--speed", "-w", help="Sprocket angular speed ω > 0, unit rad/s or rpm: '3 rad/s', '30 rpm'; a bare number is rad/s (v = ωR, eq. 6.14).")
+_GUIDE = typer.Option(True, "--guide/--no-guide", help="Guide holding the chain axis tangent to the pitch circles (eqs 6.14-6.16), or no guide (free span, chordal action eq. 6.7).")
+_STIFF = typer.Option(None, "--stiffness", "-E", help="Reduced stiffness E_П of the drive chain as axial rigidity EA, unit N or e.g. '5 MN' (a segment of length L has stiffness E_П/L N/m); adds the cam force.")
+_DIST = typer.Option(None, "--sprocket-distance", "-A", help="Centre distance A between the sprockets, unit m or e.g. '2 m'; a whole number of pitches (sprockets in phase).")
+_CAM = typer.Option(None, "--cam-distance", "-l", help="Distance l = l1 + k t_K of the cam hinge from the tensioning sprocket, unit m, 0 < l < A.")
+_POINTS = typer.Option(361, "--points", "-n", help="Samples over one period 0 <= ψ <= 2π/z (>= 2).")
+_JSON = typer.Option(False, "--json", help="Print psi (rad), displacement (m), velocity (m/s), acceleration (m/s²), force (N) and the summary as JSON, SI units.")
+_PLOT = typer.Option(None, "--plot", help="Write a PNG of velocity and acceleration with and without the guide (seed 000 Fig. 6.9 c), plus the cam force if given.")
+
+
+@app.command("crawler")
+def crawler_command(
+    teeth: int = _TEETH,
+    speed: str = _SPEED,
+    pitch: str | None = _PITCH,
+    chain: str | None = _CHAIN,
+    guide: bool = _GUIDE,
+    stiffness: str | None = _STIFF,
+    sprocket_distance: str | None = _DIST,
+    cam_distance: str | None = _CAM,
+    points: int = _POINTS,
+    as_json: bool = _JSON,
+    plot: Path | None = _PLOT,
+) -> None:
+    """Speed of the crawler drive chain with/without the tangent guide and the force on the cam.
+
+    No guide: v = ωR cos(ψ - π/z) (eq. 6.7). Tangent guide: R = R cos ψ1 + t sin φ1
+    (6.15), u = R sin ψ1 + t (1 - cos φ1) (6.16), v = du/dt (6.14). Cam force
+    P = E_П A (u_З - u_П) / (l (A - l)) (rebuilt; cam driven at the mean speed).
+    Summary: mean, min, max speed, non-uniformity (vmax - vmin)/vmean, min and max
+    acceleration, transverse throw.
+    """
+    from ..kinematics.crawler import SUMMARY_KEYS, crawler_drive
+
+    if (chain is None) == (pitch is None):
+        raise InputError("give exactly one of --chain (e.g. 16B) and --pitch (t > 0 m)")
+    if chain is not None:
+        from .. import chains
+
+        t = chains.get(chain).pitch
+    else:
+        t = quantity(pitch, "m", "pitch")
+    w = quantity(speed, "rad/s", "speed")
+    E = quantity(stiffness, "N", "stiffness")
+    A = quantity(sprocket_distance, "m", "sprocket-distance")
+    l = quantity(cam_distance, "m", "cam-distance")
+    kw = dict(points=points, stiffness=E, sprocket_distance=A, cam_distance=l)
+    r = crawler_drive(t, teeth, w, with_guide=guide, **kw)
+    if plot is not None:
+        other = crawler_drive(t, teeth, w, with_guide=not guide, **dict(kw, points=max(points, 361)))
+        main = r if points >= 361 else crawler_drive(t, teeth, w, with_guide=guide, **dict(kw, points=361))
+        from ..plotting.crawler import crawler_plot
+
+        fig = crawler_plot([main, other] if guide else [other, main])
+        fig.savefig(plot, dpi=120)
+        import matplotlib.pyplot as plt
+
+        plt.close(fig)
+    if as_json:
+        summary = {k: r.summary[k] for k in SUMMARY_KEYS}
+        summary.update({k: v for k, v in r.summary.items() if k not in summary})
+        out = {"psi": r.psi, "displacement": r.displacement, "velocity": r.velocity,
+               "acceleration": r.acceleration, "summary": summary}
+        if r.force is not None:
+            out["force"] = r.force
+        echo_json(out)
+        return
+    s = r.summary
+    what = "tangent guide" if guide else "no guide"
+    print(f"crawler drive chain (t = {r.pitch * 1e3:g} mm, z = {r.teeth}, R = {r.radius * 1e3:.3f} mm, "
+          f"ω = {r.angular_velocity:.6g} rad/s): {what}")
+    rows = [
+        ("v_mean", f"{s['v_mean']:.6f} m/s"),
+        ("v_min", f"{s['v_min']:.6f} m/s"),
+        ("v_max", f"{s['v_max']:.6f} m/s"),
+        ("nonuniformity", f"{s['nonuniformity']:.6f}"),
+        ("a_min", f"{s['a_min']:.6f} m/s²"),
+        ("a_max", f"{s['a_max']:.6f} m/s²"),
+        ("sign_change_at_period_end", str(s["sign_change_at_period_end"])),
+        ("transverse_throw", f"{s['transverse_throw'] * 1e3:.4f} mm"),
+    ]
+    if r.force is not None:
+        rows += [
+            ("cam_stiffness", f"{s['cam_stiffness']:.6g} N/m"),
+            ("force_min", f"{s['force_min']:.6g} N (about the mean load)"),
+            ("force_max", f"{s['force_max']:.6g} N (about the mean load)"),
+            ("force_range", f"{s['force_range']:.6g} N"),
+        ]
+    for k, v in rows:
+        print(f"  {k:<26} {v}")
+    if plot is not None:
+        print(f"wrote {plot}")
