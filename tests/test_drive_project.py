@@ -306,3 +306,18 @@ def test_vertical_drive_slack_from_weight():
     assert t.slack == pytest.approx(2.612 * 9.80665 * 1.0)
     assert "vertical" in t.slack_source
     assert d.layout().teeth_in_mesh == [9, 9]
+
+
+@pytest.mark.parametrize("kind", ["roller", "mining", "crawler"])
+def test_cli_new_each_kind_loads(kind, tmp_path, capsys):
+    f = tmp_path / f"{kind}.toml"
+    assert main(["new", str(f), "--kind", kind]) == 0
+    assert f"wrote {f}" in capsys.readouterr().out
+    d = load_project(f)
+    assert d.safety().passed
+    assert f"chaindrive layout {kind}.toml" in f.read_text()
+
+
+def test_cli_new_unknown_kind(tmp_path, capsys):
+    assert main(["new", str(tmp_path / "x.toml"), "--kind", "boat"]) == 2
+    assert "unknown template kind 'boat'" in capsys.readouterr().err
