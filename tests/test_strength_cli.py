@@ -23,6 +23,14 @@ def test_contact_json_si(capsys):
     assert d["max_skew"] == pytest.approx(50 * 3.141592653589793 / 10800)
 
 
+def test_contact_flank_from_teeth(capsys):
+    # ISO 606:2015 5.4.2: r_e,min = 0.12 d1 (z + 2) = 0.12 * 15.88 * 21 = 40.018 mm
+    d = _json(capsys, ["contact", "--chain", "16B", "--contact", "convex", "--teeth", "19", "--load", "5 kN", "--json"])
+    assert d["seat_radius"] == pytest.approx(40.0176e-3, rel=1e-6)
+    assert main(["contact", "--chain", "16B", "--contact", "convex", "--load", "5 kN"]) == 2
+    assert "needs --seat-radius" in capsys.readouterr().err
+
+
 def test_contact_from_measurement_and_text(capsys):
     d = _json(capsys, ["contact", "--pitch", "19.05 mm", "--roller-diameter", "12.07 mm", "--seat-radius", "40 mm",
                        "--contact", "convex", "--length", "11.7 mm", "--load", "3 kN", "--skew-dh", "0.185 mm",

@@ -414,3 +414,11 @@ def test_hertz_solution_satisfies_the_contact_condition_numerically():
         pv, _ = quad(p, -b, b, weight="cauchy", wvar=x)  # PV int p(s) / (s - x) ds
         slope = 2 / (np.pi * es) * (-pv)
         assert slope == pytest.approx(x / rho, rel=1e-6)
+
+
+def test_seed_eq3_is_eq1_with_eq2():
+    # seed 004 eq. (3): sigma = h sqrt(Q_nom (1 + gamma phi_p^2)), h = 0.418 sqrt(E / (L_p rho))
+    q, ln, rho, g, phi = 4e3, 17e-3, 7.1e-3, 0.0016, 32.5
+    h = 0.418 * np.sqrt(E / (ln * rho))
+    eq3 = h * np.sqrt(q * (1 + g * phi**2))
+    assert seed_contact_stress(q * skew_load_factor(phi * ARCMIN, g), ln, rho, E) == pytest.approx(eq3, rel=1e-12)

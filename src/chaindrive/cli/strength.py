@@ -43,6 +43,7 @@ def contact_command(
     roller_diameter: str | None = typer.Option(None, "--roller-diameter", help="Roller diameter D_p (unit m or mm with unit)."),
     seat_radius: str | None = typer.Option(None, "--seat-radius", help="Tooth profile radius r1 at the contact (unit m or mm); default ISO 606:2015 5.4.2 r_i,min = 0.505 d1."),
     length: str | None = typer.Option(None, "--length", help="Roller length L_p (unit m or mm); default the chain's inner width b1."),
+    teeth: int | None = typer.Option(None, "--teeth", help="Sprocket teeth z: with --contact convex and no --seat-radius, r1 = ISO 606:2015 5.4.2 r_e,min = 0.12 d1 (z + 2)."),
     contact: str = typer.Option("concave", "--contact", help="'concave' roller in the seat (1/rho = 2/D_p - 1/r1) or 'convex' flank (+), seed 004 rho."),
     skew: str | None = typer.Option(None, "--skew", help="Largest skew phi_p,max (unit rad or '50 arcmin') (seed 004; measured 0°42'...3°26')."),
     skew_dh: str | None = typer.Option(None, "--skew-dh", help="Measured probe depth difference Delta h (unit m or mm): phi = atan(Delta h / B) (seed 004)."),
@@ -68,7 +69,16 @@ def contact_command(
     d = quantity(roller_diameter, "m", "roller_diameter") if roller_diameter else (c.roller_diameter if c else None)
     if d is None:
         raise InputError("roller_diameter is needed (--roller-diameter > 0 m, or --chain of a roller chain)")
-    r1 = quantity(seat_radius, "m", "seat_radius") if seat_radius else 0.505 * d
+    if seat_radius:
+        r1 = quantity(seat_radius, "m", "seat_radius")
+    elif contact == "convex":
+        if teeth is None:
+            raise InputError("a convex flank needs --seat-radius (> 0 m) or --teeth (>= 9) for ISO 606 r_e,min")
+        from ..geometry.sprocket import flank_radius_limits
+
+        r1 = float(flank_radius_limits(d, teeth)[0])
+    else:
+        r1 = 0.505 * d
     ln = quantity(length, "m", "length") if length else (c.inner_width if c else None)
     if ln is None:
         raise InputError("length is needed (--length > 0 m, or --chain with an inner width)")

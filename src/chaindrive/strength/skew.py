@@ -407,7 +407,7 @@ def roller_contact_stress(
 
     Examples
     --------
-    Roller of a 16B chain on a convex flank of radius 68.7 mm (ISO 606 ``r_e,min``, z = 19):
+    Roller of a 16B chain on a convex flank of radius 68.7 mm (ISO 606 ``r_e,max``, z = 19):
 
     >>> r = roller_contact_stress(5e3, 15.88e-3, 68.7e-3, 17e-3, contact="convex",
     ...                           pitch=25.4e-3, max_skew=50 * ARCMIN)
