@@ -146,3 +146,11 @@ def test_wear_errors():
         W.hours_to_elongation_rating(1, 1, 100, elongation_limit=0.2)
     with pytest.raises(InputError, match="rated_power must be positive"):
         W.hours_to_elongation_rating(0, 1, 100)
+
+
+def test_wear_scalar_vs_array():
+    P = np.array([2e3, 5e3, 10e3])
+    arr = W.hours_to_elongation_rating(10e3, P, 120)
+    assert arr.shape == (3,)
+    assert np.allclose(arr, [float(W.hours_to_elongation_rating(10e3, p, 120)) for p in P])
+    assert np.all(np.diff(arr) < 0)  # more load, shorter life

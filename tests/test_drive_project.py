@@ -321,3 +321,31 @@ def test_cli_new_each_kind_loads(kind, tmp_path, capsys):
 def test_cli_new_unknown_kind(tmp_path, capsys):
     assert main(["new", str(tmp_path / "x.toml"), "--kind", "boat"]) == 2
     assert "unknown template kind 'boat'" in capsys.readouterr().err
+
+
+@pytest.mark.parametrize(
+    ("kind", "old", "new", "pattern"),
+    [
+        ("roller", 'power = "15 kW"', 'power = "15 kW"\ntorque = "100 N*m"',
+         r"d.toml:\d+: load: give exactly one of power and torque"),
+        ("crawler", 'pitch = "170 mm"', 'pitch = "170 mm"\nbar_diameter = "10 mm"',
+         r"d.toml:\d+: chain: give exactly one of roller_diameter"),
+        ("mining", 'wheel = "tensioner"', 'wheel = "tens"',
+         r"d.toml:\d+: tensioner.wheel: no wheel named 'tens'"),
+        ("roller", 'position = ["0 mm", "0 mm"]', 'position = ["0 mm", "0 kg"]',
+         r"d.toml:\d+: wheels\[0\].position\[1\]: '0 kg' has units of \[mass\]"),
+        ("roller", "teeth = 19", "teeth = 19.5",
+         r"d.toml:\d+: wheels\[0\].teeth: Input should be a valid integer"),
+        ("roller", "elongation_limit = 0.03", "elongation_limit = 0.5",
+         r"d.toml:\d+: drive.elongation_limit: elongation_limit must lie in \(0, 0.1\]"),
+        ("roller", "service_factor = 1.0", "service_factor = 0.5",
+         r"d.toml:\d+: load.service_factor: service_factor must be >= 1"),
+        ("roller", 'kind = "sprocket"', 'kind = "gear"',
+         r"d.toml:\d+: wheels\[0\].kind: Input should be 'sprocket', 'pocket_wheel', 'track_wheel' or 'idler'"),
+    ],
+)
+def test_more_schema_errors(kind, old, new, pattern):
+    with pytest.raises(InputError, match=pattern) as exc:
+        parse_project(_with(template(kind), old, new), "d.toml")
+    line = int(str(exc.value).split(":")[1])
+    assert 1 <= line <= len(_with(template(kind), old, new).splitlines())
