@@ -315,3 +315,18 @@ def test_jindal_example_30_1_roundtrip():
     assert book == pytest.approx(0.300, abs=5e-6)
     assert float(L.centre_distance_approx(p, 17, 51, Ln)) == pytest.approx(book, rel=1e-12)
     assert Ln == pytest.approx(2 * 300 / 9.52 + 34 + (34 / (2 * math.pi)) ** 2 * 9.52 / 300, rel=1e-12)
+
+
+def test_tensioner_travel_extra_length_first():
+    c = [[0, 0], [1, -0.2], [2, 0]]
+    args = (c, [0.2, 0.05, 0.2], [1, -1, 1], 1, [0, 1])
+    L0 = L.wrap_layout(*args[:3]).length
+    # 10 mm of initial slack plus 1 % of a chain 10 mm longer than the path
+    s = L.tensioner_travel(*args, [0.0, 0.01], chain_length=L0 + 0.01, extra_length=0.01)
+    s_plain = L.tensioner_travel(*args, (0.01 + 0.01 * (L0 + 0.01)) / L0)
+    assert s[1] == pytest.approx(float(s_plain), rel=1e-9)
+    cc = np.array(c, dtype=float)
+    cc[1, 1] += s[0]
+    assert L.wrap_layout(cc, *args[1:3]).length == pytest.approx(L0 + 0.01)
+    with pytest.raises(InputError, match="extra_length must be non-negative"):
+        L.tensioner_travel(*args, 0.01, extra_length=-1)

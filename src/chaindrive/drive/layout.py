@@ -1000,10 +1000,11 @@ def centre_distance_travel(pitch, teeth_1, teeth_2, centre_distance, elongation,
     return out.reshape(e.shape)
 
 
-def tensioner_travel(centres, radii, sides, index, direction, elongation):
+def tensioner_travel(centres, radii, sides, index, direction, elongation, *, chain_length=None,
+                     extra_length=0.0):
     r"""Travel of a tensioner wheel that takes up a chain elongation (any layout).
 
-    .. math:: L(c_k + s\,\mathbf{u}) = (1 + e)\,L(c_k)
+    .. math:: L(c_k + s\,\mathbf{u}) = L(c_k) + \Delta L_0 + e\,L_{chain}
 
     Parameters
     ----------
@@ -1016,11 +1017,16 @@ def tensioner_travel(centres, radii, sides, index, direction, elongation):
         chain path (e.g. pushing into the slack span).
     elongation : float or array_like
         Relative elongation ``e`` [-] (0.01, 0.02, 0.03).
+    chain_length : float, optional
+        Length of the new chain ``L_chain`` [m]; default the path length ``L(c_k)``.
+    extra_length : float
+        Slack ``ΔL_0 >= 0`` of the new chain over the path at the given position [m]
+        (a chain rounded up to whole links), taken up first.
 
     Returns
     -------
     ndarray
-        Travel ``s`` [m] for each elongation.
+        Travel ``s`` [m] from the given position for each elongation.
 
     Raises
     ------
@@ -1055,6 +1061,8 @@ def tensioner_travel(centres, radii, sides, index, direction, elongation):
     if not 0 <= k < c.shape[0]:
         raise InputError(f"index must lie in [0, {c.shape[0] - 1}], got {index}")
     e = check_nonnegative("elongation", elongation)
+    extra = float(check_nonnegative("extra_length", extra_length, "m"))
+    Lch = lay0.length if chain_length is None else float(check_positive("chain_length", chain_length, "m"))
 
     def length(s):
         cc = c.copy()
@@ -1069,14 +1077,15 @@ def tensioner_travel(centres, radii, sides, index, direction, elongation):
     grid = np.linspace(0, smax, 120)
     vals = np.array([length(s) for s in grid])  # bracket the roots once for all e
     for i, ei in enumerate(e.ravel()):
-        target = lay0.length * (1 + ei)
-        if ei == 0:
+        target = lay0.length + extra + ei * Lch
+        if target <= lay0.length:
             out[i] = 0.0
             continue
         idx = np.nonzero(vals >= target)[0]
         if idx.size == 0:
             raise InfeasibleError(
-                f"the tensioner cannot take up an elongation of {ei:g}: moving it along "
+                f"the tensioner cannot take up an elongation of {ei:g} (plus {extra:g} m of "
+                f"initial slack): moving it along "
                 f"{u.tolist()} lengthens the chain path by at most "
                 f"{(np.max(vals[np.isfinite(vals)]) / lay0.length - 1):.4g}"
             )

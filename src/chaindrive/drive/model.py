@@ -205,7 +205,9 @@ class DriveLayout(Result):
     elongations : ndarray
         0.01, 0.02, 0.03.
     take_up : ndarray or None
-        Tensioner travel (or centre-distance increase) for ``elongations`` [m].
+        Tensioner travel from its given position (first taking up the slack of the
+        chain rounded up to ``links``), or the centre-distance increase from
+        ``centre_distance_for_links.taut``, for ``elongations`` [m].
     take_up_kind : str
     """
 
@@ -497,16 +499,19 @@ class Drive:
             t = self.tensioner
             idx = [w.name for w in self.wheels].index(t.wheel)
             try:
+                # the chain of `links` may be longer than the path: take that up first
+                extra = max(0.0, (links - links_required) * p)
                 take_up = L.tensioner_travel([w.position for w in self.wheels], radii,
-                                             [w.side for w in self.wheels], idx, t.direction, elong)
+                                             [w.side for w in self.wheels], idx, t.direction, elong,
+                                             chain_length=links * p, extra_length=extra)
                 kind = f"travel of tensioner wheel {t.wheel!r}"
             except InfeasibleError as exc:
                 kind = f"tensioner cannot take up the elongation: {exc}"
         elif self.is_two_wheel():
             w1, w2 = self.wheels
-            take_up = L.centre_distance_travel(p, w1.teeth, w2.teeth, centre, elong,
+            take_up = L.centre_distance_travel(p, w1.teeth, w2.teeth, cd.taut, elong,
                                                bar_diameter=self.bar_diameter)
-            kind = "increase of centre distance"
+            kind = f"increase of centre distance from {cd.taut * 1e3:.2f} mm ({links} links)"
         out = DriveLayout(
             wrap=wrap, wheel_names=[w.name for w in self.wheels], pitch_radii=radii,
             teeth_in_mesh=teeth_mesh, chain_length_circles=wrap.length,

@@ -468,7 +468,7 @@ position = ["1.2 m", "-0.4 m"]
 name = "return"
 kind = "pocket_wheel"
 teeth = 8
-position = ["4 m", "0 m"]
+position = ["4.05 m", "0 m"]
 
 [tensioner]
 wheel = "tensioner"
@@ -532,7 +532,7 @@ position = ["1.9 m", "0.2 m"]
 name = "front idler"
 kind = "idler"
 diameter = "600 mm"
-position = ["2.45 m", "0.35 m"]
+position = ["2.52 m", "0.35 m"]
 
 [tensioner]
 wheel = "front idler"
