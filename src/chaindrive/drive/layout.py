@@ -238,11 +238,15 @@ def centre_distance_approx(pitch, teeth_1, teeth_2, links):
     -----
     The larger root of ``2c² - (X - S)c + D²/(4π²) = 0`` with ``c = a/p``,
     ``S = (z1+z2)/2``, ``D = z2 - z1`` (derived here; the handbook form writes
-    ``8/π² ≈ 0.810``). Exact inverse of :func:`chain_length_approx` (tested).
+    ``8/π² ≈ 0.810``). Exact inverse of :func:`chain_length_approx` (tested). Written
+    as ``a = p (2X - z1 - z2) F`` it has the form of ISO 10823 (factor ``F`` tabulated
+    there) with ``F = [1 + √(1 - (8/π²)(D/(2X - z1 - z2))²)] / 8``.
 
     References
     ----------
-    ISO 10823:2004 (centre distance formula); Shigley, 9th ed., eq. (17-35).
+    ISO 10823:2004 (centre distance formula); Shigley, 9th ed., eq. (17-35); Autodesk
+    Inventor help, "Calculating roller chain length" (``C = F p [2X - (z1 + z2)]``);
+    U. C. Jindal, Machine Design, Example 30-1 (round trip, tested).
 
     Examples
     --------
