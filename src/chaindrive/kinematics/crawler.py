@@ -937,7 +937,14 @@ def crawler_drive(pitch, teeth, angular_velocity, *, guide="tangent", with_guide
         a_left, a_right = w**2 * R * np.tan(gamma), 0.0
         grid = np.linspace(0.0, period * (1.0 - 1e-13), 4001)
         ag = guided_acceleration(grid, t, z, w)
-        a_min, a_max = float(ag.min()), max(float(ag.max()), a_left)
+        i = int(np.argmin(ag))
+        from scipy.optimize import minimize_scalar
+
+        opt = minimize_scalar(lambda p: float(guided_acceleration(p, t, z, w)),
+                              bounds=(grid[max(i - 1, 0)], grid[min(i + 1, grid.size - 1)]),
+                              method="bounded", options={"xatol": 1e-14 * period})
+        a_min = min(float(ag.min()), float(opt.fun))
+        a_max = max(float(ag.max()), a_left)
         throw = 0.0
     summary = {
         "v_mean": v_mean,
