@@ -53,7 +53,9 @@ def test_drive_roller_numbers():
     assert r["teeth"] == 19 and r["rated_power"] > 15e3
     life = d.life()
     assert life.model == "rating" and life.hours_to_limit > 15000
-    json.dumps(d.summary())
+    summary = json.loads(json.dumps(d.summary()))
+    assert summary["inputs"]["wheels"][1]["teeth"] == 57
+    assert summary["inputs"]["chain"]["name"] == "16B-1"
 
 
 def test_drive_given_acceleration_and_entry_cases():

@@ -12,6 +12,7 @@ analysis pipeline calls are :meth:`Drive.layout`, :meth:`Drive.tensions`,
 
 from __future__ import annotations
 
+import dataclasses
 import math
 import warnings
 from dataclasses import dataclass, field
@@ -801,12 +802,33 @@ class Drive:
             "frequencies": {w.name: float(o) for w, o in zip(self.wheels, om, strict=True) if w.kind != "idler"},
         }
 
+    def inputs(self) -> dict:
+        """The drive's inputs as a JSON-ready dict in SI units (for reports)."""
+        return {
+            "name": self.name,
+            "description": self.description,
+            "chain": self.chain.to_dict() if hasattr(self.chain, "to_dict") else str(self.chain),
+            "speed": float(self.speed),
+            "travel": self.travel,
+            "load": dataclasses.asdict(self.load),
+            "wheels": [dataclasses.asdict(w) for w in self.wheels],
+            "tensioner": None if self.tensioner is None else dataclasses.asdict(self.tensioner),
+            "guides": [dataclasses.asdict(g) for g in self.guides],
+            "links": self.links,
+            "slack_tension": self.slack_tension,
+            "slack_sag_ratio": self.slack_sag_ratio,
+            "required_static_safety": self.required_static_safety,
+            "elongation_limit": self.elongation_limit,
+            "wear_coefficient": self.wear_coefficient,
+        }
+
     def summary(self) -> dict:
         """Everything in one JSON-ready dict (layout, tensions, safety, rating, life)."""
         life = self.life()
         return {
             "name": self.name,
             "chain": self.chain.name,
+            "inputs": self.inputs(),
             "layout": self.layout().to_dict(),
             "tensions": self.tensions().to_dict(),
             "safety": self.safety().to_dict(),
