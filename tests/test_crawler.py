@@ -242,6 +242,30 @@ def test_guide_halving_claim_in_numbers():
     assert np.all((1 / ratio > 1.687) & (1 / ratio < 1.690))
 
 
+def test_guide_halves_peak_deviation_and_acceleration_jump():
+    # What IS (about) halved: the largest deviation from the mean speed, max|v - v_mean|
+    # (free: v_mean - v_min ≈ ωRγ²/3, guided: v_max - v_mean ≈ ωRγ²/6, ratio -> 1/2 exactly),
+    # and the jump of the acceleration at the period end (free 2ω²R sin γ, guided ω²R tan γ,
+    # ratio tan γ / (2 sin γ) = 1/(2 cos γ) -> 1/2). Computed values: 0.507 (z = 6) ... 0.5002 (z = 40).
+    z = np.arange(6, 41)
+    ratio = (crawler_nonuniformity(z, "tangent", "peak_deviation")
+             / crawler_nonuniformity(z, "none", "peak_deviation"))
+    assert np.all((ratio > 0.5) & (ratio < 0.508)) and np.all(np.diff(ratio) < 0)
+    assert float(crawler_nonuniformity(2000, "tangent", "peak_deviation")
+                 / crawler_nonuniformity(2000, "none", "peak_deviation")) == pytest.approx(0.5, rel=1e-5)
+    for zz in (6, 8, 40):
+        g = crawler_drive(T, zz, W, guide="tangent").summary
+        f = crawler_drive(T, zz, W, guide="none").summary
+        assert g["a_jump_at_period_end"] / f["a_jump_at_period_end"] == pytest.approx(
+            -1 / (2 * np.cos(np.pi / zz)), rel=1e-12)
+        assert g["peak_deviation"] / g["v_mean"] == pytest.approx(
+            float(crawler_nonuniformity(zz, "tangent", "peak_deviation")), rel=1e-12)
+        assert f["peak_deviation"] == pytest.approx(f["v_mean"] - f["v_min"])
+        assert g["peak_deviation"] == pytest.approx(g["v_max"] - g["v_mean"])
+    with pytest.raises(UnknownNameError, match="unknown measure 'rms'"):
+        crawler_nonuniformity(8, "tangent", "rms")
+
+
 @pytest.mark.parametrize("z", [3, 6, 8, 17, 40])
 def test_nonuniformity_against_dense_grid(z):
     for guide in ("none", "tangent"):
@@ -251,6 +275,8 @@ def test_nonuniformity_against_dense_grid(z):
         assert float(crawler_nonuniformity(z, guide)) == pytest.approx(dense, rel=1e-7)
         assert r.summary["nonuniformity"] == pytest.approx(dense, rel=1e-7)
         assert r.summary["v_min"] == pytest.approx(v.min(), rel=1e-10)
+        peak = np.abs(v - r.summary["v_mean"]).max() / r.summary["v_mean"]
+        assert float(crawler_nonuniformity(z, guide, "peak_deviation")) == pytest.approx(peak, rel=1e-7)
         assert r.summary["a_min"] <= r.acceleration.min() + 1e-9
         assert r.summary["a_max"] >= r.acceleration.max() - 1e-9
 

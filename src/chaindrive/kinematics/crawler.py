@@ -81,6 +81,7 @@ from ..geometry.polygon import roller_chain_pitch_radius
 
 __all__ = [
     "GUIDES",
+    "MEASURES",
     "CrawlerKinematics",
     "cam_force",
     "cam_hinge_distance",
@@ -721,7 +722,7 @@ class CrawlerKinematics(Result):
         ``v_mean``, ``v_min``, ``v_max`` [m/s], ``nonuniformity`` = (v_max - v_min)/v_mean
         [-], ``a_min``, ``a_max`` [m/s²], ``sign_change_at_period_end`` (bool),
         ``transverse_throw`` [m], ``a_end_left``, ``a_end_right``, ``a_jump_at_period_end``
-        [m/s²], ``psi_v_min`` [rad]; with stiffness ``cam_stiffness`` [N/m],
+        [m/s²], ``psi_v_min`` [rad], ``peak_deviation`` = max|v - v_mean| [m/s]; with stiffness ``cam_stiffness`` [N/m],
         ``force_min``, ``force_max``, ``force_range`` [N]. Exact over a whole period
         (the minimum of the guided speed is found by root finding), not on ``psi``.
     guide : str
@@ -776,7 +777,13 @@ def _guided_vmin_angle(t, R, gamma):
     return 0.5 * (lo + hi)
 
 
-def crawler_nonuniformity(teeth, guide="tangent"):
+#: Measures of speed non-uniformity for :func:`crawler_nonuniformity`.
+MEASURES = Registry("measure")
+MEASURES.add("range", "range")
+MEASURES.add("peak_deviation", "peak_deviation")
+
+
+def crawler_nonuniformity(teeth, guide="tangent", measure="range"):
     r"""Speed non-uniformity ``(v_max - v_min)/v_mean`` of the crawler drive chain [-].
 
     .. math::
@@ -789,6 +796,9 @@ def crawler_nonuniformity(teeth, guide="tangent"):
         ``z >= 3`` [-] (vectorised).
     guide : {"tangent", "none"}
         Guide type.
+    measure : {"range", "peak_deviation"}
+        ``"range"``: ``(v_max - v_min)/v_mean`` (the usual coefficient);
+        ``"peak_deviation"``: ``max|v - v_mean| / v_mean``.
 
     Returns
     -------
@@ -800,7 +810,9 @@ def crawler_nonuniformity(teeth, guide="tangent"):
     ``v_max = ωR`` in both cases and ``v_mean = zωt/2π = ωR sin γ / γ``. With the guide
     ``ψ*`` is the root of ``a(ψ) = 0`` in ``(0, 2γ)`` (≈ ``4γ/3``). For small ``γ``:
     ``δ_none ≈ γ²/2``, ``δ_tangent ≈ 8γ²/27``; the ratio tends to ``16/27 ≈ 0.593``
-    (seed 000 claims "almost 2 times"; it is a factor of about 1.69).
+    (seed 000 claims "almost 2 times"; it is a factor of about 1.69). The peak
+    deviation from the mean, ``max|v - v_mean|``, is halved: free ``v_mean - v_min ≈
+    ωRγ²/3``, guided ``v_max - v_mean ≈ ωRγ²/6``.
 
     References
     ----------
@@ -813,17 +825,21 @@ def crawler_nonuniformity(teeth, guide="tangent"):
     0.5923
     """
     kind = GUIDES.get(guide)
+    how = MEASURES.get(measure)
     z = check_teeth("teeth", teeth)
     gamma = np.pi / z
-    scale = gamma / np.sin(gamma)
+    vmean = np.sin(gamma) / gamma  # in units of ωR
     if kind == "none":
-        return _out((1.0 - np.cos(gamma)) * scale)
-    t = 1.0
-    R = 0.5 / np.sin(gamma)
-    s = _guided_vmin_angle(t, R, gamma)
-    sp, cp = _guided_parts(s, t, R)
-    vmin = np.cos(s) + np.sin(s) * sp / cp
-    return _out((1.0 - vmin) * scale)
+        vmin = np.cos(gamma)
+    else:
+        t = 1.0
+        R = 0.5 / np.sin(gamma)
+        s = _guided_vmin_angle(t, R, gamma)
+        sp, cp = _guided_parts(s, t, R)
+        vmin = np.cos(s) + np.sin(s) * sp / cp
+    if how == "range":
+        return _out((1.0 - vmin) / vmean)
+    return _out(np.maximum(1.0 - vmean, vmean - vmin) / vmean)
 
 
 def crawler_drive(pitch, teeth, angular_velocity, *, guide="tangent", with_guide=None,
@@ -959,6 +975,7 @@ def crawler_drive(pitch, teeth, angular_velocity, *, guide="tangent", with_guide
         "a_end_right": float(a_right),
         "a_jump_at_period_end": float(a_right - a_left),
         "psi_v_min": float(psi_min),
+        "peak_deviation": float(max(v_max - v_mean, v_mean - v_min)),
     }
     force = None
     given = [x is not None for x in (stiffness, sprocket_distance, cam_distance)]
