@@ -86,7 +86,9 @@ def crawler_plot(result_or_results, *, ax=None, degrees: bool = True):
             f"Force on the cam about its mean (E_П = {fr.stiffness:.3g} N, A = {fr.sprocket_distance:g} m, "
             f"l = {fr.cam_distance:g} m)", fontsize=9)
         axes[2].set_ylabel("force P − P̄ [kN]")
-    axes[-1].set_xlabel("sprocket angle ψ [°]" if degrees else "sprocket angle ψ [rad]")
+    unit = "°" if degrees else "rad"
+    axes[-1].set_xlabel(f"sprocket angle ψ [{unit}]\n(guide: from a hinge seating at the tangency "
+                        "point; no guide: from the change of the supporting vertex)", fontsize=9)
     for a in axes:
         a.grid(True, lw=0.4, alpha=0.6)
         a.legend(fontsize=8, loc="best")
