@@ -477,6 +477,8 @@ def test_errors():
         crawler_drive(T, Z, W, stiffness=1e6)
     with pytest.raises(InfeasibleError, match="whole number of pitches.*nearest valid 2 m or 2.1 m"):
         crawler_drive(T, Z, W, stiffness=1e6, sprocket_distance=2.05, cam_distance=0.5)
+    with pytest.raises(InputError, match="must be scalars in crawler_drive"):
+        crawler_drive(T, Z, W, stiffness=1e6, sprocket_distance=2.0, cam_distance=[0.5, 0.7])
     with pytest.raises(InputError, match="stiffness must be positive"):
         crawler_drive(T, Z, W, stiffness=-1, sprocket_distance=2.0, cam_distance=0.5)
     with pytest.raises(InputError, match=r"cam_distance must lie in \(0, sprocket_distance\)"):

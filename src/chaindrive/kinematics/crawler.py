@@ -983,6 +983,9 @@ def crawler_drive(pitch, teeth, angular_velocity, *, guide="tangent", with_guide
         raise InputError("the cam force needs all of stiffness (E_П > 0 N), "
                          "sprocket_distance (A > 0 m) and cam_distance (0 < l < A m)")
     if all(given):
+        if any(np.ndim(x) for x in (stiffness, sprocket_distance, cam_distance)):
+            raise InputError("stiffness, sprocket_distance and cam_distance must be scalars in "
+                             "crawler_drive (use cam_force for arrays)")
         E = float(check_positive("stiffness", stiffness, "N"))
         A = float(check_positive("sprocket_distance", sprocket_distance, "m"))
         ratio = A / t
