@@ -329,6 +329,14 @@ class Drive:
         Direction the chain runs relative to the listed (counter-clockwise) wheel
         order: ``"ccw"`` along it, ``"cw"`` against it. The driving wheel pulls the
         span arriving at it in the direction of travel (the tight span).
+    contact : dict, optional
+        Roller–tooth contact with skew (seed 004): ``skew`` [rad] or
+        ``skew_height_difference`` and ``skew_base`` [m], ``wear_factor`` K_φ,
+        optional ``seat_radius`` and ``contact_length`` [m].
+    track : dict, optional
+        Track drive wheel strength (seed 001): ``tractor_weight`` [N], ``adhesion``,
+        ``rims``, ``tooth_width`` [m], ``pin_radius`` [m], ``link``, ``hardness`` [HRC],
+        ``allowable_bending``, ``allowable_contact`` [Pa].
 
     Notes
     -----
@@ -367,6 +375,8 @@ class Drive:
     name: str = "chain drive"
     description: str = ""
     travel: str = "ccw"
+    contact: dict | None = None
+    track: dict | None = None
 
     def __post_init__(self):
         if self.travel not in ("ccw", "cw"):
@@ -820,6 +830,8 @@ class Drive:
             "required_static_safety": self.required_static_safety,
             "elongation_limit": self.elongation_limit,
             "wear_coefficient": self.wear_coefficient,
+            "contact": self.contact,
+            "track": self.track,
         }
 
     def summary(self) -> dict:

@@ -76,6 +76,8 @@ Torque = Annotated[float, _quantity("N*m")]
 AngularVelocity = Annotated[float, _quantity("rad/s")]
 WearCoefficient = Annotated[float, _quantity("m**2/N")]
 Ratio = Annotated[float, _quantity("")]
+Angle = Annotated[float, _quantity("rad", allow_zero=True)]
+Stress = Annotated[float, _quantity("Pa")]
 
 
 class _Model(BaseModel):
@@ -178,6 +180,37 @@ class GuideSpec(_Model):
     height: Annotated[float, _quantity("m", allow_zero=True)] | None = None
 
 
+class ContactSpec(_Model):
+    """``[contact]``: roller–tooth contact with skew (seed 004), roller chains."""
+
+    skew: Angle | None = None
+    skew_height_difference: Annotated[float, _quantity("m", allow_zero=True)] | None = None
+    skew_base: Length | None = None
+    wear_factor: Ratio = 0.65
+    seat_radius: Length | None = None
+    contact_length: Length | None = None
+
+    def model_post_init(self, _context):
+        if self.skew is None and (self.skew_height_difference is None or self.skew_base is None):
+            raise ValueError("give skew, or both skew_height_difference and skew_base")
+        if self.skew is not None and self.skew_height_difference is not None:
+            raise ValueError("give skew or the measurement (skew_height_difference, skew_base), not both")
+
+
+class TrackSpec(_Model):
+    """``[track]``: tracked-tractor drive wheel strength (seed 001)."""
+
+    tractor_weight: Force
+    adhesion: Ratio = 1.0
+    rims: Literal[1, 2] = 1
+    tooth_width: Length
+    pin_radius: Length
+    link: Literal["built-up", "cast"] = "cast"
+    hardness: float | None = Field(default=None, gt=0, le=70)
+    allowable_bending: Stress | None = None
+    allowable_contact: Stress | None = None
+
+
 class Project(_Model):
     """The whole project file."""
 
@@ -187,6 +220,8 @@ class Project(_Model):
     wheels: list[WheelSpec] = Field(min_length=2)
     tensioner: TensionerSpec | None = None
     guides: list[GuideSpec] = []
+    contact: ContactSpec | None = None
+    track: TrackSpec | None = None
 
 
 # --------------------------------------------------------------------------- line numbers
@@ -360,6 +395,8 @@ def parse_project(text: str, filename: str = "<project>") -> Drive:
             elongation_limit=proj.drive.elongation_limit,
             wear_coefficient=proj.drive.wear_coefficient,
             name=proj.drive.name, description=proj.drive.description, travel=proj.drive.travel,
+            contact=None if proj.contact is None else proj.contact.model_dump(),
+            track=None if proj.track is None else proj.track.model_dump(),
         )
     except ChainDriveError as exc:
         raise type(exc)(f"{filename}: {exc}") from None

@@ -117,9 +117,6 @@ def analyze(
                 section.warnings.append(msg)
                 seen.add(msg)
         report.sections.append(section)
-        if key == "inputs" and section.tables:
-            report.inputs = section.tables[0]
-            section.tables = section.tables[1:]
     if progress is not None:
         progress("done", len(STEPS), len(STEPS))
     files: dict[str, Path] = {}

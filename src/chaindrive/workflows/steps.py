@@ -1,1 +1,418 @@
-"""Analysis steps (filled in as the topic modules land)."""
+"""The analysis steps of :func:`chaindrive.workflows.analyze.analyze`, in report order.
+
+Each step takes the :class:`~chaindrive.workflows.analyze.AnalysisContext` and returns a
+report :class:`~chaindrive.workflows.report.Section` (or ``None`` when it has nothing to
+say). Steps only call the topic modules; no formula lives here.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from .analyze import AnalysisContext, step
+from .report import Check, Figure, Section, Table
+
+RPM = 60.0 / (2.0 * math.pi)
+
+
+def _fig(ctx: AnalysisContext, fig, caption: str, filename: str) -> list[Figure]:
+    if not ctx.options.get("figures", True):
+        import matplotlib.pyplot as plt
+
+        plt.close(fig)
+        return []
+    return [Figure.from_matplotlib(fig, caption, filename)]
+
+
+def _mm(x):
+    return None if x is None else float(x) * 1e3
+
+
+# --------------------------------------------------------------------------- inputs
+@step("inputs", "Input data")
+def inputs(ctx: AnalysisContext) -> Section:
+    d = ctx.drive
+    c = d.chain
+    rows = [
+        ["drive", d.name, ""],
+        ["chain", f"{c.name} ({c.family}, {c.strands} strand{'s' if c.strands > 1 else ''})", ""],
+        ["pitch", _mm(c.pitch), "mm"],
+    ]
+    if c.is_link_chain:
+        rows.append(["bar diameter", _mm(c.bar_diameter), "mm"])
+    else:
+        rows.append(["roller diameter", _mm(c.roller_diameter), "mm"])
+    rows += [
+        ["minimum breaking force", None if c.breaking_force is None else c.breaking_force / 1e3, "kN"],
+        ["mass per length", c.mass_per_length, "kg/m"],
+        ["driving wheel speed", d.speed, "rad/s"],
+        ["driving wheel speed", d.speed * RPM, "rpm"],
+        ["power (without service factor)", d.power() / 1e3, "kW"],
+        ["torque on the driving wheel", d.torque(), "N·m"],
+        ["service factor", d.load.service_factor, "-"],
+        ["required static safety", d.required_static_safety, "-"],
+        ["wear elongation limit", d.elongation_limit * 100, "%"],
+    ]
+    inputs_table = Table("Input data", ["quantity", "value", "unit"], [[a, "—" if b is None else b, u] for a, b, u in rows])
+    wheels = Table(
+        "Wheels (in the order the chain passes them)",
+        ["name", "kind", "teeth", "x [mm]", "y [mm]", "driving", "side"],
+        [[w.name, w.kind, w.teeth if w.teeth is not None else f"Ø{w.diameter * 1e3:.0f} mm",
+          w.position[0] * 1e3, w.position[1] * 1e3, w.driving, w.side] for w in d.wheels],
+    )
+    tables = [inputs_table, wheels]
+    if d.tensioner is not None:
+        t = d.tensioner
+        tables.append(Table("Tensioner (reduced to its axis, seed 003)", ["wheel", "mass [kg]", "stiffness [kN/m]", "force [kN]", "kind"],
+                            [[t.wheel, t.mass, t.stiffness / 1e3, None if t.force is None else t.force / 1e3, t.kind]]))
+    if d.guides:
+        tables.append(Table("Guides at wheel entries (seed 002)", ["wheel", "kind", "end distance l [mm]", "height H [mm]"],
+                            [[g.wheel, g.kind, g.end_distance * 1e3, "—" if g.height is None else g.height * 1e3] for g in d.guides]))
+    sec = Section("Input data", tables=tables, results={"inputs": d.inputs()})
+    if d.description:
+        sec.paragraphs.append(d.description)
+    sec.paragraphs.append(f"Chain data source: {c.source}")
+    ctx.results["inputs"] = d.inputs()
+    return sec
+
+
+# --------------------------------------------------------------------------- layout
+@step("layout", "Layout: chain length, spans, wraps, take-up")
+def layout(ctx: AnalysisContext) -> Section:
+    d = ctx.drive
+    lay = d.layout()
+    w = lay.wrap
+    sec = Section("Layout: chain length, spans, wraps, take-up")
+    rows = [
+        ["chain length required", lay.links_required, "pitches"],
+        ["chain length used", lay.links, "pitches"],
+        ["chain length", lay.links * d.pitch, "m"],
+        ["length on the pitch circles", lay.chain_length_circles, "m"],
+        ["mean chain speed", d.chain_speed(), "m/s"],
+    ]
+    if lay.centre_distance is not None:
+        rows.append(["centre distance given", lay.centre_distance * 1e3, "mm"])
+    if lay.centre_distance_for_links is not None:
+        cd = lay.centre_distance_for_links
+        rows.append([f"centre distance for {lay.links} links (taut)", cd.taut * 1e3, "mm"])
+        rows.append([f"centre distance for {lay.links} links (loosest fit)", cd.loose * 1e3, "mm"])
+    mass = d.chain_mass()
+    if mass is not None:
+        rows.append(["chain mass", mass, "kg"])
+    sec.tables.append(Table("Chain length and centre distance (exact polygon model for two wheels; docs/drive.md)",
+                            ["quantity", "value", "unit"], rows))
+    om = d.angular_velocities()
+    sec.tables.append(Table(
+        "Wheels on the chain",
+        ["wheel", "pitch radius [mm]", "speed [rpm]", "wrap [°]", "teeth in mesh"],
+        [[n, r * 1e3, o * RPM, math.degrees(a), "—" if t is None else t]
+         for n, r, o, a, t in zip(lay.wheel_names, lay.pitch_radii, om, w.wrap_angle, lay.teeth_in_mesh, strict=True)],
+    ))
+    n = len(lay.wheel_names)
+    sec.tables.append(Table(
+        "Spans (tangent lines between pitch circles)",
+        ["span", "from → to", "length [mm]", "direction [°]", "role"],
+        [[i, f"{lay.wheel_names[i]} → {lay.wheel_names[(i + 1) % n]}", w.span_length[i] * 1e3,
+          math.degrees(w.span_angle[i]),
+          "tight" if i == lay.tight_span else ("slack" if i == lay.slack_span else "")] for i in range(n)],
+    ))
+    if lay.take_up is not None:
+        sec.tables.append(Table(
+            f"Take-up needed for wear elongation: {lay.take_up_kind}",
+            ["elongation [%]", "take-up [mm]"],
+            [[e * 100, t * 1e3] for e, t in zip(lay.elongations, lay.take_up, strict=True)],
+        ))
+    else:
+        sec.warnings.append(f"take-up: {lay.take_up_kind}")
+    try:
+        sag = d.sag()
+        j = lay.slack_span
+        sec.checks.append(Check("sag of the slack span", sag * 1e3, "info", "mm", None,
+                                "catenary, docs/drive.md",
+                                f"{sag / w.span_length[j] * 100:.2f} % of the span at the slack tension"))
+    except Exception as exc:  # noqa: BLE001 - no mass per length etc.
+        sec.warnings.append(f"sag not computed: {exc}")
+    from ..plotting.drive import layout_plot
+
+    try:
+        tens = d.tensions(kinematics=True)
+    except Exception:  # noqa: BLE001
+        tens = None
+    sec.figures += _fig(ctx, layout_plot(d, tensions=tens), "Layout of the drive: pitch circles, spans (tight span marked), wheel names", "layout.png")
+    sec.results = {"layout": lay.to_dict()}
+    ctx.results["layout"] = lay
+    return sec
+
+
+# --------------------------------------------------------------------------- loads
+@step("loads", "Loads and safety")
+def loads(ctx: AnalysisContext) -> Section:
+    d = ctx.drive
+    sec = Section("Loads and safety")
+    t = d.tensions(kinematics=True)
+    s = d.safety(kinematics=True)
+    sec.tables.append(Table(
+        "Chain tensions (F_max = K_s T / R + S_slack + q v² + m a_max)",
+        ["quantity", "value", "unit", "basis"],
+        [
+            ["effective pull K_s T / R", t.effective_pull / 1e3, "kN", "torque over the pitch radius of the driving wheel"],
+            ["slack-side tension", t.slack / 1e3, "kN", t.slack_source],
+            ["centrifugal tension q v²", t.centrifugal / 1e3, "kN", "q v²"],
+            ["tight-side tension", t.tight / 1e3, "kN", "sum of the above"],
+            ["peak chain acceleration", t.acceleration_peak, "m/s²", t.acceleration_source],
+            ["moving mass", t.moving_mass, "kg", "whole chain"],
+            ["inertia force m a_max", t.dynamic / 1e3, "kN", "polygonal effect (seed 002)"],
+            ["maximum tension", t.maximum / 1e3, "kN", "tight + inertia"],
+            ["dynamic factor", t.dynamic_factor, "-", "maximum / tight"],
+        ],
+    ))
+    sec.tables.append(Table(
+        "Shaft loads (vector sum of the span tensions, without centrifugal part)",
+        ["wheel", "load [kN]", "direction [°]"],
+        [[n, f / 1e3, math.degrees(a)] for n, f, a in zip(t.wheel_names, t.shaft_loads, t.shaft_load_angles, strict=True)],
+    ))
+    for c in s.checks:
+        scale = 1e-3 if "power" in c.name else 1.0
+        unit = "°" if "wrap" in c.name else ("kW" if "power" in c.name else "-")
+        value = c.value * scale if c.value is not None else "unknown"
+        limit = f">= {c.limit * scale:.4g}" if c.limit is not None else ""
+        sec.checks.append(Check(c.name, value, limit, unit, c.passed, c.source, c.note))
+    r = d.rating()
+    if r is not None:
+        sec.tables.append(Table(
+            "ANSI/ACA power rating on the smallest wheel (Shigley eqs 17-32, 17-33)",
+            ["quantity", "value", "unit"],
+            [["teeth", r["teeth"], "-"], ["speed", r["angular_velocity"] * RPM, "rpm"],
+             ["link-plate limit", r["link_plate"] / 1e3, "kW"], ["roller-bushing limit", r["roller_bushing"] / 1e3, "kW"],
+             ["rated power", r["rated_power"] / 1e3, "kW"], ["design power", d.design_power() / 1e3, "kW"],
+             ["lubrication", r["lubrication"] or "—", ""]],
+        ))
+        sec.warnings += r.get("warnings", [])
+        if d.rating() is not None:
+            try:
+                from ..plotting.drive import rating_plot
+
+                kp, kr = _ansi_constants(d.chain.name)
+                fig = rating_plot(d.pitch, r["teeth"], strands=d.chain.strands, plate_constant=kp, roller_constant=kr)
+                ax = fig.axes[0]
+                ax.plot([r["angular_velocity"] * RPM], [d.design_power() / 1e3], "r*", ms=14, label="design point")
+                ax.legend()
+                sec.figures += _fig(ctx, fig, "ANSI/ACA rating curve of the chain with the design point", "rating.png")
+            except Exception as exc:  # noqa: BLE001
+                sec.warnings.append(f"rating plot not drawn: {exc}")
+    sec.results = {"tensions": t.to_dict(), "safety": s.to_dict(), "rating": r}
+    ctx.results["tensions"] = t
+    return sec
+
+
+def _ansi_constants(name):
+    from ..drive.selection import ansi_constants
+
+    return ansi_constants(name)
+
+
+# --------------------------------------------------------------------------- kinematics
+@step("kinematics", "Kinematics of the chain entering the wheels (polygonal effect)")
+def kinematics(ctx: AnalysisContext) -> Section | None:
+    from ..kinematics import chain_entry
+    from ..plotting.kinematics import kinematics_plot
+
+    d = ctx.drive
+    sec = Section("Kinematics of the chain entering the wheels (polygonal effect)")
+    cases = d.entry_cases()
+    if not cases:
+        return None
+    rows = []
+    results = {}
+    for case in cases:
+        kw = dict(case["kwargs"])
+        wheel = case["wheel"]
+        res = chain_entry(**kw)
+        label = f"{wheel}: {kw.get('entry', 'free')}"
+        results[label] = res
+        s = res.summary
+        rows.append([wheel, kw.get("entry", "free"), s["v_mean"], s["v_min"], s["v_max"], s["nonuniformity"] * 100,
+                     s["a_min"], s["a_max"], s["sign_change_at_period_end"]])
+        if kw.get("entry", "free") != "free":
+            free_kw = {k: v for k, v in kw.items() if k not in ("entry", "guide_end_distance", "guide_height")}
+            free = chain_entry(**free_kw, entry="free")
+            results[f"{wheel}: free (for comparison)"] = free
+            fs = free.summary
+            rows.append([wheel, "free (comparison)", fs["v_mean"], fs["v_min"], fs["v_max"], fs["nonuniformity"] * 100,
+                         fs["a_min"], fs["a_max"], fs["sign_change_at_period_end"]])
+    sec.tables.append(Table(
+        "Chain velocity and acceleration over one tooth period (exact rigid-link model, seed 002 eqs 1-43 corrected; docs/kinematics.md)",
+        ["wheel", "entry", "v mean [m/s]", "v min [m/s]", "v max [m/s]", "non-uniformity [%]", "a min [m/s²]", "a max [m/s²]", "sign change at period end"],
+        rows,
+    ))
+    for label, res in results.items():
+        if "comparison" in label:
+            continue
+        sec.checks.append(Check(f"speed non-uniformity, {label}", res.summary["nonuniformity"] * 100, "info", "%", None,
+                                "seed 002; exact model"))
+    sec.paragraphs.append(
+        "The chain entering a wheel follows the polygon of seated hinges. With a straight guide "
+        "the chain in the guide is driven through the free span from the last seated hinge "
+        "to the guide end. The peak acceleration enters the dynamic tension of the loads section."
+    )
+    sec.figures += _fig(ctx, kinematics_plot({k: v for k, v in results.items()}),
+                        "Chain velocity and acceleration over one tooth period", "kinematics.png")
+    sec.results = {k: v.summary for k, v in results.items()}
+    return sec
+
+
+# --------------------------------------------------------------------------- geometry
+@step("geometry", "Wheel geometry")
+def geometry(ctx: AnalysisContext) -> Section | None:
+    d = ctx.drive
+    c = d.chain
+    sec = Section("Wheel geometry")
+    wheels = {}
+    rows = []
+    for w in d.wheels:
+        if w.teeth is None:
+            continue
+        obj = _wheel_object(d, w)
+        if obj is None:
+            continue
+        wheels[w.name] = obj
+        dim = obj.dimensions()
+        dd = dim.to_dict()
+        if w.kind == "pocket_wheel" or c.is_link_chain:
+            rows.append([w.name, "pocket wheel", w.teeth, dim.pitch_radius * 2e3, dim.tip_radius * 2e3, "—",
+                         "seed 002 eq. (6)"])
+        elif w.kind == "track_wheel":
+            rows.append([w.name, "track drive wheel", w.teeth, dd["pitch_radius"] * 2e3, dd["tip_radius"] * 2e3,
+                         dd["root_radius"] * 2e3, "seed 001"])
+        else:
+            rows.append([w.name, "sprocket", w.teeth, dim.pitch_diameter * 1e3,
+                         f"{dim.tip_diameter_min * 1e3:.2f} … {dim.tip_diameter_max * 1e3:.2f}",
+                         dim.root_diameter * 1e3, "ISO 606:2015 clause 5"])
+        sec.results[w.name] = dd
+    if not rows:
+        return None
+    sec.tables.append(Table("Main diameters", ["wheel", "kind", "teeth", "pitch Ø [mm]", "tip Ø [mm]", "root Ø [mm]", "basis"], rows))
+    from ..plotting.geometry import geometry_plot
+
+    drv = d.driving_wheel.name
+    if drv in wheels:
+        sec.figures += _fig(ctx, geometry_plot(wheels[drv]), f"Driving wheel '{drv}' with the seated chain", f"wheel_{_slug(drv)}.png")
+    ctx.results["wheels"] = wheels
+    return sec
+
+
+def _slug(name: str) -> str:
+    return "".join(ch if ch.isalnum() else "_" for ch in name)
+
+
+def _wheel_object(d, w):
+    from ..geometry import PocketWheel, Sprocket, TrackDriveWheel
+
+    c = d.chain
+    if c.is_link_chain:
+        return PocketWheel.from_chain(c, w.teeth)
+    if w.kind == "track_wheel":
+        track = d.track or {}
+        r = track.get("pin_radius") or (c.roller_diameter / 2 if c.roller_diameter else None)
+        if r is None:
+            return None
+        return TrackDriveWheel(pitch=c.pitch, teeth=w.teeth, pin_radius=r, link=track.get("link", "built-up"), name=w.name)
+    if w.teeth < 9:
+        return None
+    return Sprocket.from_chain(c, w.teeth)
+
+
+# --------------------------------------------------------------------------- strength
+@step("strength", "Strength: contact with skew, track wheel teeth")
+def strength(ctx: AnalysisContext) -> Section | None:
+    d = ctx.drive
+    c = d.chain
+    sec = Section("Strength: contact with skew, track wheel teeth")
+    done = False
+    if d.contact is not None and c.is_roller_chain and c.roller_diameter is not None:
+        from ..plotting.strength import skew_plot
+        from ..strength import RollerToothContact, skew_from_measurement
+
+        con = d.contact
+        skew = con["skew"] if con.get("skew") is not None else float(
+            skew_from_measurement(con["skew_height_difference"], con["skew_base"]))
+        obj = RollerToothContact.from_chain(c, seat_radius=con.get("seat_radius"), length=con.get("contact_length"))
+        t = ctx.results.get("tensions") or d.tensions(kinematics=True)
+        load = t.tight
+        res = obj.stress(load, max_skew=skew, wear_factor=con.get("wear_factor", 0.65))
+        sec.tables.append(Table(
+            "Roller–tooth contact with skew (seed 004 eqs 1-3; Hertz line contact, Johnson 1985 §4.3)",
+            ["quantity", "value", "unit"],
+            [["roller load Q_nom (tight-side tension on the first tooth)", load / 1e3, "kN"],
+             ["measured skew φ_p,max", math.degrees(skew) * 60, "arcmin"],
+             ["design skew φ_p = K_φ φ_p,max", math.degrees(float(res.design_skew)) * 60, "arcmin"],
+             ["γ (seed 004 table)", float(res.gamma), "1/arcmin²"],
+             ["load factor Q_n / Q_nom", float(res.load_factor), "-"],
+             ["contact stress without skew", float(res.stress_unskewed) / 1e6, "MPa"],
+             ["contact stress with skew", float(res.stress) / 1e6, "MPa"],
+             ["relative life (wear law)", float(res.relative_life_wear), "-"]],
+        ))
+        sec.checks.append(Check("contact stress with skew", float(res.stress) / 1e6, "info", "MPa", None,
+                                "seed 004 eq. (1)-(2)", f"skew raises it {float(res.stress_ratio):.2f} times"))
+        sec.checks.append(Check("life with skew relative to none (wear law)", float(res.relative_life_wear), "info", "-", None,
+                                "seed 004; docs/strength.md"))
+        try:
+            sec.figures += _fig(ctx, skew_plot(obj.stress(load, max_skew=np.linspace(0, max(skew * 1.5, math.radians(1)), 61),
+                                                          wear_factor=con.get("wear_factor", 0.65))),
+                                "Contact stress and relative life against skew", "skew.png")
+        except Exception as exc:  # noqa: BLE001
+            sec.warnings.append(f"skew plot not drawn: {exc}")
+        sec.results["contact"] = res.to_dict()
+        done = True
+    track_wheels = [w for w in d.wheels if w.kind == "track_wheel" and w.teeth is not None]
+    if d.track is not None and track_wheels:
+        from ..strength import track_tooth_check
+
+        tr = d.track
+        w = track_wheels[0]
+        wheel = (ctx.results.get("wheels") or {}).get(w.name) or _wheel_object(d, w)
+        r = track_tooth_check(wheel, tr["tractor_weight"], tr["tooth_width"], adhesion=tr["adhesion"], rims=tr["rims"],
+                              hardness=tr.get("hardness"), allowable_bending=tr.get("allowable_bending"),
+                              allowable_contact=tr.get("allowable_contact"))
+        rd = r.to_dict()
+        sec.tables.append(Table(
+            "Track drive wheel tooth (seed 001: P_Р = 0.65 G_T φ / i)",
+            ["quantity", "value", "unit"],
+            [["design force P_Р", rd["design_force"] / 1e3, "kN"],
+             ["bending stress at the root (force at the tip)", rd["bending_stress"] / 1e6, "MPa"],
+             ["pin–tooth contact stress", rd["contact_stress"] / 1e6, "MPa"]],
+        ))
+        for key, name, allow in (("bending", "tooth bending", tr.get("allowable_bending")),
+                                 ("contact", "pin–tooth contact", tr.get("allowable_contact"))):
+            stress = rd[f"{key}_stress"]
+            if allow is not None:
+                sec.checks.append(Check(f"{name} safety (allowable / stress)", allow / stress, ">= 1", "-",
+                                        bool(allow / stress >= 1), "seed 001; docs/strength.md"))
+        if tr.get("hardness") is not None:
+            ok = 48 <= tr["hardness"] <= 60
+            sec.checks.append(Check("surface hardness", tr["hardness"], "48 … 60", "HRC", ok, "seed 001"))
+        sec.results["track_tooth"] = rd
+        done = True
+    return sec if done else None
+
+
+# --------------------------------------------------------------------------- life
+@step("life", "Wear life")
+def life(ctx: AnalysisContext) -> Section | None:
+    d = ctx.drive
+    res = d.life()
+    if res is None:
+        return Section("Wear life", skipped="no wear model applies (a link chain needs wear_coefficient in [drive])")
+    from ..plotting.drive import wear_plot
+
+    sec = Section("Wear life")
+    sec.tables.append(Table(f"Chain elongation (model: {res.model}; docs/drive.md)", ["quantity", "value", "unit"],
+                            [["elongation limit", res.elongation_limit * 100, "%"],
+                             ["hours to the limit", res.hours_to_limit, "h"]]))
+    sec.checks.append(Check("hours to the elongation limit", res.hours_to_limit, "info", "h", None,
+                            "ANSI/ACA 15 000 h basis" if res.model == "rating" else "Archard wear of the joints"))
+    sec.figures += _fig(ctx, wear_plot(res), "Chain elongation over operating hours", "wear.png")
+    sec.results = {"life": res.to_dict()}
+    return sec

@@ -1,0 +1,99 @@
+"""``chaindrive analyze`` end to end on every example; the JSON checked by hand numbers."""
+
+import json
+import math
+from pathlib import Path
+
+import pytest
+
+from chaindrive.cli import main
+from chaindrive.drive.project import load_project
+from chaindrive.workflows.analyze import analyze
+
+EXAMPLES = sorted((Path(__file__).parents[1] / "examples").glob("*.toml"))
+
+
+@pytest.fixture(scope="module")
+def outcomes(tmp_path_factory):
+    out = {}
+    for ex in EXAMPLES:
+        folder = tmp_path_factory.mktemp(ex.stem)
+        out[ex.stem] = (analyze(load_project(ex), folder, figures=True), folder)
+    return out
+
+
+def test_examples_exist():
+    assert {"mining_conveyor", "roller_industrial", "tractor_track"} <= {e.stem for e in EXAMPLES}
+
+
+@pytest.mark.parametrize("name", ["mining_conveyor", "roller_industrial", "tractor_track"])
+def test_analyze_writes_report_json_plots(outcomes, name):
+    outcome, folder = outcomes[name]
+    assert (folder / "report.html").stat().st_size > 20000
+    data = json.loads((folder / "results.json").read_text())
+    assert {"title", "passed", "sections", "timings_s"} <= set(data)
+    titles = list(data["sections"])
+    assert titles[0] == "Input data"
+    assert any(t.startswith("Layout") for t in titles)
+    assert any(t.startswith("Loads") for t in titles)
+    assert list(folder.glob("*.png"))
+    html = (folder / "report.html").read_text()
+    assert "Overall verdict" in html and "data:image/png;base64," in html
+
+
+def test_roller_json_hand_numbers(outcomes):
+    outcome, folder = outcomes["roller_industrial"]
+    data = json.loads((folder / "results.json").read_text())
+    t = data["sections"]["Loads and safety"]["results"]["tensions"]
+    # hand: T = P / ω = 15 kW / (960 rpm · 2π/60) = 149.21 N·m; R = 25.4 mm / (2 sin(π/19)) = 77.159 mm
+    torque = 15e3 / (960 * 2 * math.pi / 60)
+    radius = 0.0254 / (2 * math.sin(math.pi / 19))
+    assert t["torque"] == pytest.approx(torque, rel=1e-9)
+    assert t["effective_pull"] == pytest.approx(torque / radius, rel=1e-9)
+    # mean chain speed z p n / 60 = 19 · 0.0254 · 16 = 7.7216 m/s; centrifugal q v² with q = 2.6 kg/m class
+    assert t["chain_speed"] == pytest.approx(19 * 0.0254 * 960 / 60, rel=1e-12)
+    assert t["centrifugal"] == pytest.approx(t["chain_speed"] ** 2 * 2.612, rel=1e-3)
+
+
+def test_mining_json_hand_numbers(outcomes):
+    outcome, folder = outcomes["mining_conveyor"]
+    data = json.loads((folder / "results.json").read_text())
+    geo = data["sections"]["Wheel geometry"]["results"]["drive"]
+    # seed 002 eq. (6) for 18x64, z = 8: R = 164.283 mm (independent check in test_foundation)
+    assert geo["pitch_radius"] == pytest.approx(0.16428306864210910, rel=1e-12)
+    t = data["sections"]["Loads and safety"]["results"]["tensions"]
+    # chain speed = 2 z t ω / 2π = 16 · 0.064 · 5 / 2π
+    assert t["chain_speed"] == pytest.approx(16 * 0.064 * 5 / (2 * math.pi), rel=1e-12)
+
+
+def test_tractor_has_track_tooth_checks(outcomes):
+    outcome, folder = outcomes["tractor_track"]
+    names = [c.name for _, c in outcome.report.checks]
+    assert any("tooth bending" in n for n in names)
+    data = json.loads((folder / "results.json").read_text())
+    tt = data["sections"]["Strength: contact with skew, track wheel teeth"]["results"]["track_tooth"]
+    # seed 001: P_R = 0.65 G_T φ / i = 0.65 · 70 kN · 1 / 2 = 22.75 kN
+    assert tt["design_force"] == pytest.approx(22750.0, rel=1e-12)
+
+
+def test_cli_analyze_exit_codes(tmp_path, capsys):
+    ex = next(e for e in EXAMPLES if e.stem == "roller_industrial")
+    assert main(["analyze", str(ex), "-o", str(tmp_path), "--no-figures", "-q"]) == 0
+    assert (tmp_path / "report.html").exists()
+    # a failing check gives exit code 1: demand an absurd static safety
+    bad = tmp_path / "strict.toml"
+    bad.write_text(ex.read_text().replace("required_static_safety = 7", "required_static_safety = 500"))
+    assert main(["analyze", str(bad), "-o", str(tmp_path / "b"), "--no-figures", "-q"]) == 1
+    # bad input: exit code 2 with the field and line named
+    worse = tmp_path / "worse.toml"
+    worse.write_text(ex.read_text().replace('speed = "960 rpm"', 'speed = "960 kg"'))
+    assert main(["analyze", str(worse), "-o", str(tmp_path / "c"), "-q"]) == 2
+    err = capsys.readouterr().err
+    assert "speed" in err and "worse.toml:" in err
+
+
+def test_report_pdf(tmp_path):
+    pytest.importorskip("weasyprint")
+    ex = next(e for e in EXAMPLES if e.stem == "roller_industrial")
+    assert main(["report", str(ex), "-o", str(tmp_path)]) == 0
+    assert (tmp_path / "report.pdf").read_bytes()[:4] == b"%PDF"
