@@ -1,6 +1,5 @@
 """The CLI's shell: help, demo, error handling."""
 
-import json
 
 from chaindrive.cli import main
 

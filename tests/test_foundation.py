@@ -65,7 +65,9 @@ def test_pitch_radius_against_numerical_polygon():
     from scipy.optimize import brentq
 
     t, d, z = 0.064, 0.018, 8
-    f = lambda R: z * (2 * np.arcsin((t + d) / (2 * R)) + 2 * np.arcsin((t - d) / (2 * R))) - 2 * np.pi
+    def f(R):
+        return z * (2 * np.arcsin((t + d) / (2 * R)) + 2 * np.arcsin((t - d) / (2 * R))) - 2 * np.pi
+
     R_num = brentq(f, (t + d) / 2 + 1e-12, 1.0, xtol=1e-15)
     assert link_chain_pitch_radius(t, d, z) == pytest.approx(R_num, rel=1e-12)
     d1, d2 = link_chain_central_angles(t, d, z)
@@ -88,7 +90,7 @@ def test_polygon_scalar_vs_array():
     z = np.array([6, 8, 10])
     R = link_chain_pitch_radius(0.064, 0.018, z)
     assert R.shape == (3,)
-    for zi, Ri in zip(z, R):
+    for zi, Ri in zip(z, R, strict=True):
         assert link_chain_pitch_radius(0.064, 0.018, int(zi)) == pytest.approx(Ri, rel=1e-15)
 
 
