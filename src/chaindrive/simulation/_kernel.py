@@ -31,8 +31,8 @@ NWP = 21
 S_THETA, S_OMEGA, S_S, S_SDOT, S_TORQUE, S_SFORCE = range(6)
 # parameter vector
 P_MASS, P_K, P_C, P_PITCH, P_RROLLER, P_KC, P_CC, P_MU, P_VEPS, P_GX, P_GY, P_DT, P_CGLOB, \
-    P_KG, P_CG = range(15)
-NPAR = 15
+    P_KG, P_CG, P_DTREF = range(16)
+NPAR = 16
 # wheel modes
 MODE_SPEED, MODE_FREE, MODE_LOCKED = 0, 1, 2
 
@@ -61,7 +61,9 @@ def integrate(pos, vel, force, tension, contact, ws, wp, gd, par, t0, nsteps, re
     cglob = par[P_CGLOB]
     kg = par[P_KG]
     cg = par[P_CG]
+    dtref = par[P_DTREF]
     twopi = 2.0 * math.pi
+    inv_m = 1.0 / m
     nrec = rec_start
     for step in range(nsteps):
         t = t0 + step * dt
@@ -109,6 +111,11 @@ def integrate(pos, vel, force, tension, contact, ws, wp, gd, par, t0, nsteps, re
             rout2 = rout * rout
             rin2 = rin * rin
             pitch_angle = twopi / z
+            # tooth corner (in roller-centre coordinates a, |b|): end of the flank at the
+            # tip height plus one roller radius along the flank normal
+            stip = (htip + delta * cps) / sps
+            tca = -delta * cps + stip * sps - rr * cps
+            tcb = delta * sps + stip * cps + rr * sps
             tq = 0.0
             fwx = 0.0
             fwy = 0.0
@@ -125,11 +132,21 @@ def integrate(pos, vel, force, tension, contact, ws, wp, gd, par, t0, nsteps, re
                 ery = math.sin(beta)
                 a = qx * erx + qy * ery - rad
                 b = -qx * ery + qy * erx
-                if a > htip:
-                    continue
                 ab = abs(b)
                 sb = 1.0 if b >= 0.0 else -1.0
-                if ab * cps + a * sps <= 0.0:
+                # position along the flank from the end of the seating arc
+                sf = (a + delta * cps) * sps + (ab - delta * sps) * cps
+                if sf > stip:
+                    # beyond the tooth tip: roller against the rounded tooth corner
+                    ta = a - tca
+                    tb = ab - tcb
+                    d = math.sqrt(ta * ta + tb * tb)
+                    pen = rr - d
+                    if pen <= 0.0:
+                        continue
+                    na = -ta / d
+                    nb = -sb * tb / d
+                elif ab * cps + a * sps <= 0.0:
                     d = math.sqrt(a * a + b * b)
                     pen = d - delta
                     if pen <= 0.0:
@@ -152,7 +169,13 @@ def integrate(pos, vel, force, tension, contact, ws, wp, gd, par, t0, nsteps, re
                     fn = 0.0
                 epot += 0.5 * kc * pen * pen
                 vt = -rvx * ny + rvy * nx
-                ft = -mu * fn * math.tanh(vt / veps)
+                # regularised Coulomb; the slope mu fn / ve is capped at m / dt so that the
+                # explicit step stays stable; capped with the model's reference step, not the
+                # actual one, so that the law does not change when dt is refined
+                ve = mu * fn * dtref * inv_m
+                if ve < veps:
+                    ve = veps
+                ft = -mu * fn * math.tanh(vt / ve)
                 fx = -fn * nx - ft * ny
                 fy = -fn * ny + ft * nx
                 force[i, 0] += fx
@@ -188,27 +211,44 @@ def integrate(pos, vel, force, tension, contact, ws, wp, gd, par, t0, nsteps, re
                     fn = 0.0
                 epot += 0.5 * kg * pen * pen
                 vt = vel[i, 0] * ux + vel[i, 1] * uy
-                ft = -mu * fn * math.tanh(vt / veps)
+                ve = mu * fn * dtref * inv_m
+                if ve < veps:
+                    ve = veps
+                ft = -mu * fn * math.tanh(vt / ve)
                 force[i, 0] += fn * nx + ft * ux
                 force[i, 1] += fn * ny + ft * uy
                 contact[i] += fn
         # record (state at time t, forces of this step)
         if step % record_every == 0 and nrec < rec_t.shape[0]:
+            # velocities at time t (mid-point of the two half-step velocities), so that
+            # the energy estimate is second order
+            hm = 0.5 * dt / m
             ekin = 0.0
             egrav = 0.0
             for i in range(n):
-                ekin += 0.5 * m * (vel[i, 0] * vel[i, 0] + vel[i, 1] * vel[i, 1])
+                vx = vel[i, 0] + hm * force[i, 0]
+                vy = vel[i, 1] + hm * force[i, 1]
+                ekin += 0.5 * m * (vx * vx + vy * vy)
                 egrav -= m * (gx * pos[i, 0] + gy * pos[i, 1])
                 rec_tension[nrec, i] = tension[i]
                 rec_contact[nrec, i] = contact[i]
                 rec_pos[nrec, i, 0] = pos[i, 0]
                 rec_pos[nrec, i, 1] = pos[i, 1]
             for w in range(nw):
-                ekin += 0.5 * wp[w, W_INERTIA] * ws[w, S_OMEGA] ** 2
+                om = ws[w, S_OMEGA]
+                if wp[w, W_MODE] == MODE_FREE:
+                    om += 0.5 * dt * (ws[w, S_TORQUE] + wp[w, W_TORQUE]
+                                      - wp[w, W_DAMP] * ws[w, S_OMEGA]) / wp[w, W_INERTIA]
+                ekin += 0.5 * wp[w, W_INERTIA] * om * om
                 if wp[w, W_SLIDE] > 0.0:
-                    ekin += 0.5 * wp[w, W_SMASS] * ws[w, S_SDOT] ** 2
+                    dxw = wp[w, W_DX]
+                    dyw = wp[w, W_DY]
+                    fs = ws[w, S_SFORCE] + wp[w, W_SF] - wp[w, W_SK] * ws[w, S_S] \
+                        - wp[w, W_SC] * ws[w, S_SDOT] + wp[w, W_SMASS] * (gx * dxw + gy * dyw)
+                    sv = ws[w, S_SDOT] + 0.5 * dt * fs / wp[w, W_SMASS]
+                    ekin += 0.5 * wp[w, W_SMASS] * sv * sv
                     epot += 0.5 * wp[w, W_SK] * ws[w, S_S] ** 2 - wp[w, W_SF] * ws[w, S_S]
-                    egrav -= wp[w, W_SMASS] * (gx * wp[w, W_DX] + gy * wp[w, W_DY]) * ws[w, S_S]
+                    egrav -= wp[w, W_SMASS] * (gx * dxw + gy * dyw) * ws[w, S_S]
                 for col in range(6):
                     rec_ws[nrec, w, col] = ws[w, col]
             rec_energy[nrec] = ekin + epot + egrav
@@ -223,10 +263,10 @@ def integrate(pos, vel, force, tension, contact, ws, wp, gd, par, t0, nsteps, re
                     if dd < best:
                         best = dd
                         ib = i
-                rec_probe[nrec, q] = vel[ib, 0] * probes[q, 2] + vel[ib, 1] * probes[q, 3]
+                rec_probe[nrec, q] = (vel[ib, 0] + hm * force[ib, 0]) * probes[q, 2] \
+                    + (vel[ib, 1] + hm * force[ib, 1]) * probes[q, 3]
             nrec += 1
         # integrate pins: semi-implicit (symplectic) Euler
-        inv_m = 1.0 / m
         for i in range(n):
             vel[i, 0] += force[i, 0] * inv_m * dt
             vel[i, 1] += force[i, 1] * inv_m * dt

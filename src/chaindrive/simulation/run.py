@@ -165,6 +165,7 @@ def kernel_arrays(model: SimulationModel, dt: float | None = None):
     par[K.P_VEPS] = model.friction_velocity
     par[K.P_GX], par[K.P_GY] = model.gravity
     par[K.P_DT] = dt
+    par[K.P_DTREF] = model.stable_time_step()
     par[K.P_KG] = model.guide_stiffness
     par[K.P_CG] = 2.0 * model.contact_damping_ratio * math.sqrt(model.guide_stiffness * model.link_mass)
     nw = len(model.wheels)
@@ -284,6 +285,7 @@ def assemble(model: SimulationModel, *, dt: float | None = None, tolerance: floa
                 wp[adj, K.W_SLIDE] = 0.0
         t_phase = 0.0
         converged = False
+        vtol = math.sqrt(2.0 * tolerance / model.link_mass)
         while t_phase < max_time:
             K.integrate(pos, vel, force, tension, contact, ws, wp, gd, par, 0.0, chunk,
                         chunk + 1, probes, *recs, 0)
@@ -291,8 +293,8 @@ def assemble(model: SimulationModel, *, dt: float | None = None, tolerance: floa
             steps += chunk
             ek = 0.5 * model.link_mass * float(np.mean(np.sum(vel * vel, axis=1)))
             if ek < tolerance and t_phase > 5.0 / par[K.P_CGLOB] \
-                    and np.all(np.abs(ws[:, K.S_OMEGA]) < 1e-4) \
-                    and np.all(np.abs(ws[:, K.S_SDOT]) < 1e-5):
+                    and np.all(np.abs(ws[:, K.S_OMEGA]) * wp[:, K.W_R] < vtol) \
+                    and np.all(np.abs(ws[:, K.S_SDOT]) < vtol):
                 converged = True
                 break
         t += t_phase
@@ -534,4 +536,30 @@ def simulate(model: SimulationModel, duration: float, *, dt: float | None = None
         tight_span=np.array([p1, p2]), pitch=model.pitch, roller_radius=model.roller_radius,
         dt=dt, steps=nsteps, wall_time=wall, assembly_time=state.relax_time)
     res.summary = _summary(res, 0.5 * duration if settle is None else settle)
+    #: state at the end of the run (not a dataclass field: not saved)
+    res.final_state = State(pos, vel, ws, wp, state.gd, par, state.relax_time, state.relax_steps)
     return res
+
+
+def conservative(state: State) -> State:
+    """Copy of ``state`` without any dissipation or external work.
+
+    Link, contact and guide damping, friction and bearing damping set to zero, every
+    wheel free without applied torque and every slide without damper: the remaining
+    system (springs, penalty contacts, inertia, gravity) is conservative, which is what
+    the energy check needs.
+    """
+    par = state.par.copy()
+    par[K.P_C] = 0.0
+    par[K.P_CC] = 0.0
+    par[K.P_CG] = 0.0
+    par[K.P_MU] = 0.0
+    par[K.P_CGLOB] = 0.0
+    wp = state.wp.copy()
+    wp[:, K.W_MODE] = K.MODE_FREE
+    wp[:, K.W_TORQUE] = 0.0
+    wp[:, K.W_DAMP] = 0.0
+    wp[:, K.W_SC] = 0.0
+    return State(state.pos.copy(), state.vel.copy(), state.ws.copy(), wp, state.gd.copy(), par,
+                 state.relax_time, state.relax_steps)
+
