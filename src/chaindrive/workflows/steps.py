@@ -17,13 +17,11 @@ from .report import Check, Figure, Section, Table
 RPM = 60.0 / (2.0 * math.pi)
 
 
-def _fig(ctx: AnalysisContext, fig, caption: str, filename: str) -> list[Figure]:
+def _fig(ctx: AnalysisContext, make, caption: str, filename: str) -> list[Figure]:
+    """Draw ``make()`` (a callable returning a Figure) unless figures are switched off."""
     if not ctx.options.get("figures", True):
-        import matplotlib.pyplot as plt
-
-        plt.close(fig)
         return []
-    return [Figure.from_matplotlib(fig, caption, filename)]
+    return [Figure.from_matplotlib(make(), caption, filename)]
 
 
 def _mm(x):
@@ -140,7 +138,7 @@ def layout(ctx: AnalysisContext) -> Section:
         tens = d.tensions(kinematics=True)
     except Exception:  # noqa: BLE001
         tens = None
-    sec.figures += _fig(ctx, layout_plot(d, tensions=tens), "Layout of the drive: pitch circles, spans (tight span marked), wheel names", "layout.png")
+    sec.figures += _fig(ctx, lambda: layout_plot(d, tensions=tens), "Layout of the drive: pitch circles, spans (tight span marked), wheel names", "layout.png")
     sec.results = {"layout": lay.to_dict()}
     ctx.results["layout"] = lay
     return sec
@@ -190,7 +188,7 @@ def loads(ctx: AnalysisContext) -> Section:
              ["lubrication", r["lubrication"] or "—", ""]],
         ))
         sec.warnings += r.get("warnings", [])
-        if d.rating() is not None:
+        if ctx.options.get("figures", True):
             try:
                 from ..plotting.drive import rating_plot
 
@@ -199,7 +197,7 @@ def loads(ctx: AnalysisContext) -> Section:
                 ax = fig.axes[0]
                 ax.plot([r["angular_velocity"] * RPM], [d.design_power() / 1e3], "r*", ms=14, label="design point")
                 ax.legend()
-                sec.figures += _fig(ctx, fig, "ANSI/ACA rating curve of the chain with the design point", "rating.png")
+                sec.figures += _fig(ctx, lambda: fig, "ANSI/ACA rating curve of the chain with the design point", "rating.png")
             except Exception as exc:  # noqa: BLE001
                 sec.warnings.append(f"rating plot not drawn: {exc}")
     sec.results = {"tensions": t.to_dict(), "safety": s.to_dict(), "rating": r}
@@ -257,7 +255,7 @@ def kinematics(ctx: AnalysisContext) -> Section | None:
         "the chain in the guide is driven through the free span from the last seated hinge "
         "to the guide end. The peak acceleration enters the dynamic tension of the loads section."
     )
-    sec.figures += _fig(ctx, kinematics_plot({k: v for k, v in results.items()}),
+    sec.figures += _fig(ctx, lambda: kinematics_plot({k: v for k, v in results.items()}),
                         "Chain velocity and acceleration over one tooth period", "kinematics.png")
     sec.results = {k: v.summary for k, v in results.items()}
     return sec
@@ -298,7 +296,7 @@ def geometry(ctx: AnalysisContext) -> Section | None:
 
     drv = d.driving_wheel.name
     if drv in wheels:
-        sec.figures += _fig(ctx, geometry_plot(wheels[drv]), f"Driving wheel '{drv}' with the seated chain", f"wheel_{_slug(drv)}.png")
+        sec.figures += _fig(ctx, lambda: geometry_plot(wheels[drv]), f"Driving wheel '{drv}' with the seated chain", f"wheel_{_slug(drv)}.png")
     ctx.results["wheels"] = wheels
     return sec
 
@@ -359,7 +357,7 @@ def strength(ctx: AnalysisContext) -> Section | None:
         sec.checks.append(Check("life with skew relative to none (wear law)", float(res.relative_life_wear), "info", "-", None,
                                 "seed 004; docs/strength.md"))
         try:
-            sec.figures += _fig(ctx, skew_plot(obj.stress(load, max_skew=np.linspace(0, max(skew * 1.5, math.radians(1)), 61),
+            sec.figures += _fig(ctx, lambda: skew_plot(obj.stress(load, max_skew=np.linspace(0, max(skew * 1.5, math.radians(1)), 61),
                                                           wear_factor=con.get("wear_factor", 0.65))),
                                 "Contact stress and relative life against skew", "skew.png")
         except Exception as exc:  # noqa: BLE001
@@ -413,6 +411,6 @@ def life(ctx: AnalysisContext) -> Section | None:
                              ["hours to the limit", res.hours_to_limit, "h"]]))
     sec.checks.append(Check("hours to the elongation limit", res.hours_to_limit, "info", "h", None,
                             "ANSI/ACA 15 000 h basis" if res.model == "rating" else "Archard wear of the joints"))
-    sec.figures += _fig(ctx, wear_plot(res), "Chain elongation over operating hours", "wear.png")
+    sec.figures += _fig(ctx, lambda: wear_plot(res), "Chain elongation over operating hours", "wear.png")
     sec.results = {"life": res.to_dict()}
     return sec
