@@ -349,6 +349,8 @@ class SimulationResult(Result):
     wheel_centres : ndarray (W, 2), pitch_radii : ndarray (W,), teeth : ndarray (W,)
     tight_span : ndarray (2, 2)
         End points of the tight span (entering the driver) [m].
+    slack_span : ndarray (2, 2)
+        End points of the span leaving the driver [m].
     dt : float
         Time step [s].
     steps : int
@@ -373,6 +375,7 @@ class SimulationResult(Result):
     pitch_radii: np.ndarray
     teeth: np.ndarray
     tight_span: np.ndarray
+    slack_span: np.ndarray
     pitch: float
     roller_radius: float
     dt: float
@@ -384,6 +387,10 @@ class SimulationResult(Result):
     def tight_side_tension(self) -> np.ndarray:
         """Tension of the link nearest the middle of the tight span, over time [N]."""
         return self._span_tension(self.tight_span)
+
+    def slack_side_tension(self) -> np.ndarray:
+        """Tension of the link nearest the middle of the span leaving the driver [N]."""
+        return self._span_tension(self.slack_span)
 
     def _span_tension(self, span) -> np.ndarray:
         mid = 0.5 * (span[0] + span[1])
@@ -420,6 +427,7 @@ def _summary(res: SimulationResult, settle: float) -> dict:
         "steady_from": settle,
         "tight_side_tension_mean": float(np.mean(tt)),
         "tight_side_tension_max": float(np.max(tt)),
+        "slack_side_tension_mean": float(np.mean(res.slack_side_tension()[sel])),
         "max_link_tension": float(np.max(res.tension[sel])),
         "max_contact_force": float(np.max(res.contact_force[sel])),
         "wheel_speed_mean": np.mean(res.wheel_speed[sel], axis=0).tolist(),
@@ -445,6 +453,14 @@ def tight_span(model: SimulationModel, state: State):
     c = np.column_stack([state.wp[:, K.W_CX], state.wp[:, K.W_CY]])
     radii = model.pitch_radii()
     p1, p2, _, _ = _tangent(c[nw - 1], radii[nw - 1], c[0], radii[0])
+    return p1, p2
+
+
+def slack_span(model: SimulationModel, state: State):
+    """(start, end) of the span leaving wheel 0 (to wheel 1) [m]."""
+    c = np.column_stack([state.wp[:, K.W_CX], state.wp[:, K.W_CY]])
+    radii = model.pitch_radii()
+    p1, p2, _, _ = _tangent(c[0], radii[0], c[1], radii[1])
     return p1, p2
 
 
@@ -533,7 +549,7 @@ def simulate(model: SimulationModel, duration: float, *, dt: float | None = None
         positions=rpos, energy=ren,
         wheel_centres=np.column_stack([wp[:, K.W_CX], wp[:, K.W_CY]]),
         pitch_radii=wp[:, K.W_R].copy(), teeth=wp[:, K.W_Z].astype(int),
-        tight_span=np.array([p1, p2]), pitch=model.pitch, roller_radius=model.roller_radius,
+        tight_span=np.array([p1, p2]), slack_span=np.array(slack_span(model, state)), pitch=model.pitch, roller_radius=model.roller_radius,
         dt=dt, steps=nsteps, wall_time=wall, assembly_time=state.relax_time)
     res.summary = _summary(res, 0.5 * duration if settle is None else settle)
     #: state at the end of the run (not a dataclass field: not saved)
