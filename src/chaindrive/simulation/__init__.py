@@ -4,6 +4,7 @@ penalty roller-tooth contact, guides, tensioner, gravity), compiled with numba.
 See ``docs/simulation.md`` for the model, the integrator and the validation.
 """
 
+from .from_drive import model_from_drive
 from .model import (
     AXIAL_STIFFNESS_16B,
     SimGuide,
@@ -15,4 +16,4 @@ from .model import (
 from .run import SimulationResult, State, assemble, simulate
 
 __all__ = ["AXIAL_STIFFNESS_16B", "SimGuide", "SimTensioner", "SimulationModel", "SimWheel",
-           "roller_example", "SimulationResult", "State", "assemble", "simulate"]
+           "roller_example", "model_from_drive", "SimulationResult", "State", "assemble", "simulate"]

@@ -1,0 +1,57 @@
+"""CLI and plots of the simulation (chaindrive simulate)."""
+
+from __future__ import annotations
+
+import json
+
+import numpy as np
+import pytest
+
+from chaindrive.cli import main
+
+
+def test_cli_example(tmp_path, capsys):
+    out = tmp_path / "out"
+    assert main(["simulate", "--example", "roller", "--duration", "20 ms", "--ramp", "5 ms",
+                 "-o", str(out), "--frames", "3", "--json"]) == 0
+    summary = json.loads(capsys.readouterr().out)
+    assert summary["tight_side_tension_mean"] > 0
+    for name in ("simulation.npz", "simulation.json", "simulation.png", "frame.png",
+                 "simulation.gif"):
+        assert (out / name).exists()
+    data = np.load(out / "simulation.npz")
+    assert data["tension"].shape[1] == 100
+
+
+def test_cli_project_file(tmp_path, capsys):
+    pytest.importorskip("chaindrive.drive.project")
+    from chaindrive.drive.project import template
+
+    f = tmp_path / "drive.toml"
+    f.write_text(template("roller"))
+    assert main(["simulate", str(f), "--duration", "5 ms", "--ramp", "2 ms",
+                 "-o", str(tmp_path / "o"), "--no-plots"]) == 0
+    assert "link-steps/s" in capsys.readouterr().out
+
+
+def test_cli_errors(tmp_path, capsys):
+    assert main(["simulate", "-o", str(tmp_path)]) == 2
+    assert "exactly one" in capsys.readouterr().err
+    assert main(["simulate", "--example", "bike", "-o", str(tmp_path)]) == 2
+    assert "--example must be" in capsys.readouterr().err
+
+
+def test_model_from_drive_load_and_speed():
+    pytest.importorskip("chaindrive.drive.project")
+    from pathlib import Path
+
+    from chaindrive.drive.project import load_project
+    from chaindrive.simulation import model_from_drive
+
+    path = Path(__file__).resolve().parents[1] / "examples" / "roller_industrial.toml"
+    d = load_project(path)
+    m = model_from_drive(d)
+    assert m.wheels[0].angular_velocity == pytest.approx(d.speed)
+    # load torque on the 57-tooth wheel: T z2/z1 (moment balance through the chain)
+    assert m.wheels[1].torque == pytest.approx(-d.torque() * 57 / 19)
+    assert m.links == d.layout().links
