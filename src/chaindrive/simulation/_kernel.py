@@ -7,12 +7,13 @@ steps. Everything is preallocated by the caller: no allocation inside the loop.
 Layout
 ------
 pos, vel : (N, 2) pin (hinge-centre) positions [m] and velocities [m/s].
-force : (N, 2) work array.
+force, work : (N, 2) work arrays.
 tension : (N,) link forces of the last step [N] (link i joins pin i and i+1).
 contact : (N,) total normal contact force on each pin of the last step [N].
 ws : (W, 6) wheel state: theta, omega, slide s, slide sdot, contact torque, slide force.
 wp : (W, NWP) wheel parameters (column indices ``W_*`` below).
 gd : (G, 7) guides: ax, ay, ux, uy, nx, ny, length.
+tab : (W, zmax, 2) gap directions in the wheel frame (:func:`seat_table`).
 par : parameter vector (indices ``P_*`` below).
 """
 
@@ -37,8 +38,39 @@ NPAR = 16
 MODE_SPEED, MODE_FREE, MODE_LOCKED = 0, 1, 2
 
 
+@njit(cache=True, fastmath=False, inline="always")
+def _fast_atan2(y, x):
+    """atan2 to about 1e-5 rad (polynomial on [0, 1]), in (-π, π]."""
+    ax = abs(x)
+    ay = abs(y)
+    mx = ax if ax > ay else ay
+    mn = ay if ax > ay else ax
+    if mx == 0.0:
+        return 0.0
+    t = mn / mx
+    s = t * t
+    r = ((-0.0464964749 * s + 0.15931422) * s - 0.327622764) * s * t + t
+    if ay > ax:
+        r = 1.5707963267948966 - r
+    if x < 0.0:
+        r = 3.141592653589793 - r
+    if y < 0.0:
+        r = -r
+    return r
+
+
+@njit(cache=True, fastmath=False, inline="always")
+def _sat(x):
+    """Saturation ``clip(x, -1, 1)``: the regularised Coulomb law (linear below v_ε)."""
+    if x > 1.0:
+        return 1.0
+    if x < -1.0:
+        return -1.0
+    return x
+
+
 @njit(cache=True, fastmath=False)
-def integrate(pos, vel, force, tension, contact, ws, wp, gd, par, t0, nsteps, record_every,
+def integrate(pos, vel, force, work, tension, contact, ws, wp, gd, tab, par, t0, nsteps, record_every,
               probes, rec_t, rec_probe, rec_tension, rec_contact, rec_ws, rec_pos, rec_energy,
               rec_start):
     """Advance ``nsteps`` steps from time ``t0``; return the number of records written."""
@@ -65,14 +97,25 @@ def integrate(pos, vel, force, tension, contact, ws, wp, gd, par, t0, nsteps, re
     twopi = 2.0 * math.pi
     inv_m = 1.0 / m
     nrec = rec_start
+    margin = 0.25 * rr
+    cand = np.empty((nw, n), np.int64)
+    ncand = np.zeros(nw, np.int64)
+    countdown = 0
+    vmax_s = 0.0
+    fgx = m * gx
+    fgy = m * gy
+    cm = cglob * m
+    # `force` holds the contact forces only (zero between steps); link, gravity and
+    # damping forces are added in the update loop
+    for i in range(n):
+        force[i, 0] = 0.0
+        force[i, 1] = 0.0
+        contact[i] = 0.0
     for step in range(nsteps):
         t = t0 + step * dt
         epot = 0.0
-        for i in range(n):
-            force[i, 0] = m * gx - cglob * m * vel[i, 0]
-            force[i, 1] = m * gy - cglob * m * vel[i, 1]
-            contact[i] = 0.0
-        # links: axial spring-damper between consecutive pins (closed loop)
+        # links: axial spring-damper between consecutive pins (closed loop); first the
+        # link forces (independent iterations), then the pin forces
         for i in range(n):
             j = i + 1
             if j == n:
@@ -80,18 +123,34 @@ def integrate(pos, vel, force, tension, contact, ws, wp, gd, par, t0, nsteps, re
             dx = pos[j, 0] - pos[i, 0]
             dy = pos[j, 1] - pos[i, 1]
             ll = math.sqrt(dx * dx + dy * dy)
-            ux = dx / ll
-            uy = dy / ll
+            il = 1.0 / ll
+            ux = dx * il
+            uy = dy * il
             dl = ll - p
             ldot = (vel[j, 0] - vel[i, 0]) * ux + (vel[j, 1] - vel[i, 1]) * uy
             tt = k * dl + c * ldot
             tension[i] = tt
             epot += 0.5 * k * dl * dl
-            force[i, 0] += tt * ux
-            force[i, 1] += tt * uy
-            force[j, 0] -= tt * ux
-            force[j, 1] -= tt * uy
-        # wheels: penalty contact of each roller with the nearest tooth gap
+            work[i, 0] = tt * ux
+            work[i, 1] = tt * uy
+        # wheels: penalty contact of each roller with the nearest tooth gap; the pins
+        # near each wheel are listed every `countdown` steps, often enough that no pin
+        # can cover the margin in between (4 x the fastest relative speed)
+        rebuild = countdown <= 0
+        if rebuild:
+            vmax = 0.0
+            for i in range(n):
+                v2 = vel[i, 0] * vel[i, 0] + vel[i, 1] * vel[i, 1]
+                if v2 > vmax:
+                    vmax = v2
+            vmax = math.sqrt(vmax)
+            for w in range(nw):
+                vmax_w = abs(ws[w, S_SDOT])
+                if vmax_w > vmax_s:
+                    vmax_s = vmax_w
+            cnt = margin / (4.0 * (vmax + vmax_s + 1e-12) * dt)
+            countdown = 1 if cnt < 1.0 else (200 if cnt > 200.0 else int(cnt))
+        countdown -= 1
         for w in range(nw):
             cx = wp[w, W_CX] + ws[w, S_S] * wp[w, W_DX]
             cy = wp[w, W_CY] + ws[w, S_S] * wp[w, W_DY]
@@ -111,6 +170,9 @@ def integrate(pos, vel, force, tension, contact, ws, wp, gd, par, t0, nsteps, re
             rout2 = rout * rout
             rin2 = rin * rin
             pitch_angle = twopi / z
+            iz = int(z)
+            cth = math.cos(theta)
+            sth = math.sin(theta)
             # tooth corner (in roller-centre coordinates a, |b|): end of the flank at the
             # tip height plus one roller radius along the flank normal
             stip = (htip + delta * cps) / sps
@@ -119,17 +181,38 @@ def integrate(pos, vel, force, tension, contact, ws, wp, gd, par, t0, nsteps, re
             tq = 0.0
             fwx = 0.0
             fwy = 0.0
-            for i in range(n):
+            if rebuild:
+                # candidate pins: those that can come within reach before the next rebuild
+                rc = rout + margin
+                rc2 = rc * rc
+                nc = 0
+                for i in range(n):
+                    qx = pos[i, 0] - cx
+                    qy = pos[i, 1] - cy
+                    if qx * qx + qy * qy <= rc2:
+                        cand[w, nc] = i
+                        nc += 1
+                ncand[w] = nc
+            for ic in range(ncand[w]):
+                i = cand[w, ic]
                 qx = pos[i, 0] - cx
                 qy = pos[i, 1] - cy
                 r2 = qx * qx + qy * qy
                 if r2 > rout2 or r2 < rin2:
                     continue
-                ang = math.atan2(qy, qx) - theta
-                gap = math.floor(ang / pitch_angle + 0.5)
-                beta = theta + gap * pitch_angle
-                erx = math.cos(beta)
-                ery = math.sin(beta)
+                # wheel frame: rotate by -theta; nearest gap from a cheap atan2 (only
+                # the gap index depends on it), seat direction from the table
+                qxw = qx * cth + qy * sth
+                qyw = -qx * sth + qy * cth
+                g = int(math.floor(_fast_atan2(qyw, qxw) / pitch_angle + 0.5))
+                if g < 0:
+                    g += iz
+                if g >= iz:
+                    g -= iz
+                ex = tab[w, g, 0]
+                ey = tab[w, g, 1]
+                erx = ex * cth - ey * sth
+                ery = ex * sth + ey * cth
                 a = qx * erx + qy * ery - rad
                 b = -qx * ery + qy * erx
                 ab = abs(b)
@@ -175,7 +258,7 @@ def integrate(pos, vel, force, tension, contact, ws, wp, gd, par, t0, nsteps, re
                 ve = mu * fn * dtref * inv_m
                 if ve < veps:
                     ve = veps
-                ft = -mu * fn * math.tanh(vt / ve)
+                ft = -mu * fn * _sat(vt / ve)
                 fx = -fn * nx - ft * ny
                 fy = -fn * ny + ft * nx
                 force[i, 0] += fx
@@ -214,12 +297,18 @@ def integrate(pos, vel, force, tension, contact, ws, wp, gd, par, t0, nsteps, re
                 ve = mu * fn * dtref * inv_m
                 if ve < veps:
                     ve = veps
-                ft = -mu * fn * math.tanh(vt / ve)
+                ft = -mu * fn * _sat(vt / ve)
                 force[i, 0] += fn * nx + ft * ux
                 force[i, 1] += fn * ny + ft * uy
                 contact[i] += fn
         # record (state at time t, forces of this step)
+        assembled = False
         if step % record_every == 0 and nrec < rec_t.shape[0]:
+            assembled = True
+            for i in range(n):
+                im = n - 1 if i == 0 else i - 1
+                force[i, 0] += fgx - cm * vel[i, 0] + work[i, 0] - work[im, 0]
+                force[i, 1] += fgy - cm * vel[i, 1] + work[i, 1] - work[im, 1]
             # velocities at time t (mid-point of the two half-step velocities), so that
             # the energy estimate is second order
             hm = 0.5 * dt / m
@@ -267,11 +356,31 @@ def integrate(pos, vel, force, tension, contact, ws, wp, gd, par, t0, nsteps, re
                     + (vel[ib, 1] + hm * force[ib, 1]) * probes[q, 3]
             nrec += 1
         # integrate pins: semi-implicit (symplectic) Euler
-        for i in range(n):
-            vel[i, 0] += force[i, 0] * inv_m * dt
-            vel[i, 1] += force[i, 1] * inv_m * dt
-            pos[i, 0] += vel[i, 0] * dt
-            pos[i, 1] += vel[i, 1] * dt
+        hdt = inv_m * dt
+        if assembled:
+            for i in range(n):
+                vel[i, 0] += force[i, 0] * hdt
+                vel[i, 1] += force[i, 1] * hdt
+                pos[i, 0] += vel[i, 0] * dt
+                pos[i, 1] += vel[i, 1] * dt
+                force[i, 0] = 0.0
+                force[i, 1] = 0.0
+                contact[i] = 0.0
+        else:
+            wx0 = work[n - 1, 0]
+            wy0 = work[n - 1, 1]
+            for i in range(n):
+                wx1 = work[i, 0]
+                wy1 = work[i, 1]
+                vel[i, 0] += (force[i, 0] + fgx - cm * vel[i, 0] + wx1 - wx0) * hdt
+                vel[i, 1] += (force[i, 1] + fgy - cm * vel[i, 1] + wy1 - wy0) * hdt
+                pos[i, 0] += vel[i, 0] * dt
+                pos[i, 1] += vel[i, 1] * dt
+                force[i, 0] = 0.0
+                force[i, 1] = 0.0
+                contact[i] = 0.0
+                wx0 = wx1
+                wy0 = wy1
         # wheels
         tn = t + dt
         for w in range(nw):
@@ -297,6 +406,17 @@ def integrate(pos, vel, force, tension, contact, ws, wp, gd, par, t0, nsteps, re
                 ws[w, S_SDOT] += fs / wp[w, W_SMASS] * dt
                 ws[w, S_S] += ws[w, S_SDOT] * dt
     return nrec
+
+
+def seat_table(wp):
+    """(W, zmax, 2) unit vectors of the tooth-gap centres in each wheel's frame."""
+    zs = wp[:, W_Z].astype(np.int64)
+    tab = np.zeros((len(zs), int(zs.max()), 2))
+    for w, z in enumerate(zs):
+        a = 2 * np.pi * np.arange(z) / z
+        tab[w, :z, 0] = np.cos(a)
+        tab[w, :z, 1] = np.sin(a)
+    return tab
 
 
 def empty_records(n_records, n_pins, n_wheels, n_probes):

@@ -287,7 +287,7 @@ def assemble(model: SimulationModel, *, dt: float | None = None, tolerance: floa
         converged = False
         vtol = math.sqrt(2.0 * tolerance / model.link_mass)
         while t_phase < max_time:
-            K.integrate(pos, vel, force, tension, contact, ws, wp, gd, par, 0.0, chunk,
+            K.integrate(pos, vel, force, np.zeros_like(pos), tension, contact, ws, wp, gd, K.seat_table(wp), par, 0.0, chunk,
                         chunk + 1, probes, *recs, 0)
             t_phase += chunk * dt
             steps += chunk
@@ -527,6 +527,7 @@ def simulate(model: SimulationModel, duration: float, *, dt: float | None = None
     tension = np.zeros(n)
     contact = np.zeros(n)
     # chunks that are whole multiples of record_every
+    tab = K.seat_table(wp)
     per = max(((nsteps // max(chunks, 1)) // record_every) * record_every, record_every)
     done = 0
     written = 0
@@ -534,7 +535,7 @@ def simulate(model: SimulationModel, duration: float, *, dt: float | None = None
     while done < nsteps:
         m = min(per, nsteps - done)
         t0 = time.perf_counter()
-        written = K.integrate(pos, vel, force, tension, contact, ws, wp, state.gd, par,
+        written = K.integrate(pos, vel, force, np.zeros_like(pos), tension, contact, ws, wp, state.gd, tab, par,
                               done * dt, m, record_every, probes, *recs, written)
         wall += time.perf_counter() - t0
         done += m
