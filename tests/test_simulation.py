@@ -107,11 +107,12 @@ def test_energy_conserved_without_damping():
     dt = 0.25 * m.stable_time_step()
     r0 = simulate(m, 0.06, samples=10, dt=dt)
     st = conservative(r0.final_state)
-    r = simulate(m, 10 * 2 * np.pi / w, state=st, samples=2000, dt=dt)
+    r = simulate(m, 11 * 2 * np.pi / w, state=st, samples=2000, dt=dt)
     turns = (r.wheel_angle[-1, 0] - r.wheel_angle[0, 0]) / (2 * np.pi)
-    assert turns > 9.0
+    assert turns >= 10.0
     e = r.energy
-    assert (e.max() - e.min()) / e.mean() < 0.01
+    # measured 6.3e-4 (range / mean over the run)
+    assert (e.max() - e.min()) / e.mean() < 0.002
 
 
 def test_time_step_halving_changes_mean_tension_little():
