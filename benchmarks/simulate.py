@@ -10,8 +10,9 @@ roller with the ISO 606 seat/flank profile, symplectic Euler at its largest stab
 
 MuJoCo (the peer): the same 100 rollers as point bodies on two slide joints (x-z plane)
 with sphere geoms, links as spatial tendons with the same stiffness and damping,
-teeth as cylinder collision geoms placed so that a roller wedged between two of them
-sits on the pitch circle; driver hinge with a stiff velocity servo, driven hinge with
+teeth as cylinder collision geoms placed so that a roller between two of them
+sits on the pitch circle (resting on a root cylinder R - r_s, held tangentially by the
+teeth with chaindrive's seat clearance); driver hinge with a stiff velocity servo, driven hinge with
 the same inertia and load torque. Its time step is the largest of a ladder of steps
 at which the run stays finite and the chain stays on the wheels.
 
@@ -61,22 +62,33 @@ def run_chaindrive(model, state, duration):
     }, r
 
 
-def mujoco_xml(model, state, dt):
+def mujoco_xml(model, state, dt, solref=None):
     """MJCF of the drive (x-z plane, gravity -z)."""
     p = model.pitch
     rr = model.roller_radius
+    if solref is None:
+        # contact time constant 1/ω_c of chaindrive's roller contact, at least 2 dt
+        solref = f"{max(math.sqrt(model.link_mass / model.contact_stiffness), 2 * dt):.6g} 1"
     k = model.link_stiffness
     c = model.link_damping
     wl = []
     for j, w in enumerate(model.wheels):
         cx, cy = state.wp[j, K.W_CX], state.wp[j, K.W_CY]
         rad = w.pitch_radius(p)
-        rt = 2 * rad * math.sin(math.pi / (2 * w.teeth)) - rr
-        teeth = []
+        # teeth: cylinders whose centres lie on the line through two neighbouring seat
+        # points' tangents (radius R / cos(π/z)), sized so that a roller on the pitch
+        # circle has the same clearance r_s - r as chaindrive's seat on either side; the
+        # roller rests radially on the root cylinder (radius R - r_s, the bottom of chaindrive's seat): it can leave the gap
+        # radially, as on a real sprocket
+        clear = model.seat - rr
+        rho = rad / math.cos(math.pi / w.teeth)
+        rt = rho * math.sin(math.pi / w.teeth) - rr - clear
+        teeth = [f'<geom type="cylinder" size="{rad - rr - clear:.9g} 0.01" zaxis="0 1 0" '
+                 f'contype="2" conaffinity="1" mass="0"/>']
         for g in range(w.teeth):
             a = (g + 0.5) * 2 * math.pi / w.teeth
-            x, z = rad * math.cos(a), rad * math.sin(a)
-            teeth.append(f'<geom type="cylinder" size="{rt:.6g} 0.01" pos="{x:.6g} 0 {z:.6g}" '
+            x, z = rho * math.cos(a), rho * math.sin(a)
+            teeth.append(f'<geom type="cylinder" size="{rt:.6g} 0.01" pos="{x:.9g} 0 {z:.9g}" '
                          f'zaxis="0 1 0" contype="2" conaffinity="1" mass="0"/>')
         joint = (f'<joint name="w{j}" type="hinge" axis="0 -1 0"/>')
         wl.append(f'<body name="wheel{j}" pos="{cx:.9g} 0 {cy:.9g}">{joint}'
@@ -98,7 +110,7 @@ def mujoco_xml(model, state, dt):
                        f'<site site="s{i}"/><site site="s{j}"/></spatial>')
     return f"""<mujoco model="chain drive">
   <option timestep="{dt:.6g}" gravity="0 0 -9.81" integrator="implicitfast" cone="pyramidal"/>
-  <default><geom solref="{-model.contact_stiffness / model.link_mass:.6g} {-model.contact_damping / model.link_mass:.6g}" solimp="0.99 0.99 0.001"/></default>
+  <default><geom solref="{solref}" solimp="0.9 0.95 0.001"/></default>
   <worldbody>{''.join(wl)}{''.join(pins)}</worldbody>
   <tendon>{''.join(tendons)}</tendon>
   <actuator><velocity joint="w0" kv="2000"/></actuator>
@@ -120,6 +132,19 @@ def run_mujoco(model, state, duration, dt, probe, tight_mid, record_every=20):
     n = model.links
     pin_adr = np.array([m.jnt_qposadr[m.joint(f"px{i}").id] for i in range(n)])
     vel_adr = np.array([m.jnt_dofadr[m.joint(f"px{i}").id] for i in range(n)])
+    # MuJoCo's own static equilibrium first (its cylinder teeth differ from chaindrive's
+    # flank profile near the tangent points): driver held, load on, velocities quenched
+    # every 200 steps (kinetic-energy damping) for 0.03 s simulated; not timed
+    d.ctrl[0] = 0.0
+    for s in range(int(0.03 / dt)):
+        d.qfrc_applied[1] = load
+        mujoco.mj_step(m, d)
+        if s % 200 == 0:
+            d.qvel[:] = 0.0
+    d.qvel[:] = 0.0
+    d.time = 0.0
+    if d.warning[mujoco.mjtWarning.mjWARN_BADQACC].number > 0:
+        return None
     times, v, ten = [], [], []
     t0 = time.perf_counter()
     mujoco.set_mjcb_control(None)
@@ -179,18 +204,14 @@ def main():
         else:
             probe = r.probe_points[0]
             tight_mid = 0.5 * (r.tight_span[0] + r.tight_span[1])
-            best = None
-            for dt in (1e-4, 5e-5, 2e-5, 1e-5, 8e-6, 6e-6, 5e-6, 4e-6, 3e-6, 2e-6):
-                res = run_mujoco(model, state, min(args.duration, 0.02), dt, probe, tight_mid)
-                ok = res is not None and abs(res["wheel1_speed"]) < 100
-                print(f"  mujoco probe dt = {dt:g} s: {'stable' if ok else 'unstable'}")
-                if ok:
-                    best = dt
-                    break
-            if best is not None:
-                res = run_mujoco(model, state, args.duration, best, probe, tight_mid)
+            # largest stable step: the full run must stay finite and below the
+            # breaking force of the chain in every link
+            for dt in (1e-4, 3e-5, 1e-5, 6e-6, 5e-6, 4e-6, 3e-6, 2e-6, 1e-6):
+                res = run_mujoco(model, state, args.duration, dt, probe, tight_mid)
+                print(f"  mujoco dt = {dt:g} s: {'stable' if res is not None else 'unstable'}")
                 if res is not None:
                     rows.append(res)
+                    break
     print(f"\n16B chain, {model.links} links, 2 x z = 17, centre distance "
           f"{state.wp[1, K.W_CX]:.4f} m, {args.duration:g} s simulated")
     hdr = f"{'engine':<16}{'dt [s]':>10}{'link-steps/s':>14}{'wall s / sim s':>16}" \

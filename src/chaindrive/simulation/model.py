@@ -274,7 +274,7 @@ class SimulationModel:
 def roller_example(*, chain: str = "16B", teeth: int = 17, links: int = 100,
                    angular_velocity: float = 20.0, load_torque: float = 200.0,
                    ramp_time: float = 0.2, gravity: bool = True,
-                   tensioner: bool = False, **kwargs) -> SimulationModel:
+                   **kwargs) -> SimulationModel:
     """Two equal sprockets, the driver (wheel 0) on the left at prescribed speed.
 
     The centre distance is the exact polygon one for ``links`` (``(N − z)/2 · p`` for
@@ -297,12 +297,9 @@ def roller_example(*, chain: str = "16B", teeth: int = 17, links: int = 100,
         SimWheel((0.0, 0.0), teeth, inertia, "speed", angular_velocity, ramp_time, name="driver"),
         SimWheel((a, 0.0), teeth, inertia, "free", torque=-load_torque, name="driven"),
     ]
-    tens = None
-    if tensioner:
-        raise InputError("roller_example: tensioner=True not supported; build a SimulationModel")
     opts = dict(pitch=p, links=links, link_mass=ch.mass_per_length * p,
                 axial_stiffness=AXIAL_STIFFNESS_16B * (p / 0.0254) ** 2,
-                roller_radius=0.5 * ch.roller_diameter, wheels=wheels, tensioner=tens,
+                roller_radius=0.5 * ch.roller_diameter, wheels=wheels,
                 gravity=(0.0, -9.81) if gravity else (0.0, 0.0))
     opts.update(kwargs)
     return SimulationModel(**opts)
