@@ -144,6 +144,7 @@ def run_mujoco(model, state, duration, dt, probe, tight_mid, record_every=20):
     d.qvel[:] = 0.0
     d.time = 0.0
     if d.warning[mujoco.mjtWarning.mjWARN_BADQACC].number > 0:
+        print("    (diverged while settling)")
         return None
     times, v, ten = [], [], []
     t0 = time.perf_counter()
@@ -155,6 +156,7 @@ def run_mujoco(model, state, duration, dt, probe, tight_mid, record_every=20):
         d.qfrc_applied[1] = load
         mujoco.mj_step(m, d)
         if d.warning[mujoco.mjtWarning.mjWARN_BADQACC].number > 0:
+            print(f"    (diverged at t = {t:.4f} s)")
             return None  # MuJoCo detected divergence (and reset itself)
         if s % record_every == 0:
             xz = state.pos + np.column_stack([d.qpos[pin_adr], d.qpos[pin_adr + 1]])
@@ -170,8 +172,8 @@ def run_mujoco(model, state, duration, dt, probe, tight_mid, record_every=20):
     times, v, ten = map(np.asarray, (times, v, ten))
     # the chain must still run on the wheels: wheel 1 turning with it
     sel = times >= min(0.15, 0.5 * duration)
-    if not (np.all(np.isfinite(v)) and np.all(np.isfinite(ten))) or np.max(np.abs(ten)) > 6e4:
-        return None  # blown up, or a link beyond the breaking force
+    if not (np.all(np.isfinite(v)) and np.all(np.isfinite(ten))):
+        return None
     return {
         "name": f"mujoco {mujoco.__version__}",
         "dt": dt,
@@ -204,8 +206,8 @@ def main():
         else:
             probe = r.probe_points[0]
             tight_mid = 0.5 * (r.tight_span[0] + r.tight_span[1])
-            # largest stable step: the full run must stay finite and below the
-            # breaking force of the chain in every link
+            # largest stable step: the full run stays finite without MuJoCo's divergence
+            # warning (link forces are reported, not limited)
             for dt in (1e-4, 3e-5, 1e-5, 6e-6, 5e-6, 4e-6, 3e-6, 2e-6, 1e-6):
                 res = run_mujoco(model, state, args.duration, dt, probe, tight_mid)
                 print(f"  mujoco dt = {dt:g} s: {'stable' if res is not None else 'unstable'}")
