@@ -99,6 +99,7 @@ def integrate(pos, vel, force, work, tension, contact, ws, wp, gd, tab, par, t0,
     nrec = rec_start
     margin = 0.25 * rr
     cand = np.empty((nw, n), np.int64)
+    gcache = np.full((nw, n), -1, np.int64)
     ncand = np.zeros(nw, np.int64)
     countdown = 0
     vmax_s = 0.0
@@ -130,7 +131,6 @@ def integrate(pos, vel, force, work, tension, contact, ws, wp, gd, tab, par, t0,
             ldot = (vel[j, 0] - vel[i, 0]) * ux + (vel[j, 1] - vel[i, 1]) * uy
             tt = k * dl + c * ldot
             tension[i] = tt
-            epot += 0.5 * k * dl * dl
             work[i, 0] = tt * ux
             work[i, 1] = tt * uy
         # wheels: penalty contact of each roller with the nearest tooth gap; the pins
@@ -171,6 +171,8 @@ def integrate(pos, vel, force, work, tension, contact, ws, wp, gd, tab, par, t0,
             rin2 = rin * rin
             pitch_angle = twopi / z
             iz = int(z)
+            cpz = math.cos(math.pi / z)
+            spz = math.sin(math.pi / z)
             cth = math.cos(theta)
             sth = math.sin(theta)
             # tooth corner (in roller-centre coordinates a, |b|): end of the flank at the
@@ -186,6 +188,8 @@ def integrate(pos, vel, force, work, tension, contact, ws, wp, gd, tab, par, t0,
                 rc = rout + margin
                 rc2 = rc * rc
                 nc = 0
+                for i in range(n):
+                    gcache[w, i] = -1
                 for i in range(n):
                     qx = pos[i, 0] - cx
                     qy = pos[i, 1] - cy
@@ -204,13 +208,28 @@ def integrate(pos, vel, force, work, tension, contact, ws, wp, gd, tab, par, t0,
                 # the gap index depends on it), seat direction from the table
                 qxw = qx * cth + qy * sth
                 qyw = -qx * sth + qy * cth
-                g = int(math.floor(_fast_atan2(qyw, qxw) / pitch_angle + 0.5))
+                # gap of the last step, moved by whole gaps while the pin lies beyond
+                # the half-pitch boundary (b cos(π/z) > a sin(π/z)); a fresh pin
+                # gets its gap from the cheap atan2
+                g = gcache[w, i]
                 if g < 0:
-                    g += iz
-                if g >= iz:
-                    g -= iz
-                ex = tab[w, g, 0]
-                ey = tab[w, g, 1]
+                    g = int(math.floor(_fast_atan2(qyw, qxw) / pitch_angle + 0.5))
+                    if g < 0:
+                        g += iz
+                    if g >= iz:
+                        g -= iz
+                for _it in range(iz):
+                    ex = tab[w, g, 0]
+                    ey = tab[w, g, 1]
+                    ar = qxw * ex + qyw * ey
+                    bt = -qxw * ey + qyw * ex
+                    if bt * cpz > ar * spz:
+                        g = g + 1 if g + 1 < iz else 0
+                    elif -bt * cpz > ar * spz:
+                        g = g - 1 if g > 0 else iz - 1
+                    else:
+                        break
+                gcache[w, i] = g
                 erx = ex * cth - ey * sth
                 ery = ex * sth + ey * cth
                 a = qx * erx + qy * ery - rad
@@ -315,6 +334,11 @@ def integrate(pos, vel, force, work, tension, contact, ws, wp, gd, tab, par, t0,
             ekin = 0.0
             egrav = 0.0
             for i in range(n):
+                j = i + 1 if i + 1 < n else 0
+                ddx = pos[j, 0] - pos[i, 0]
+                ddy = pos[j, 1] - pos[i, 1]
+                dl = math.sqrt(ddx * ddx + ddy * ddy) - p
+                epot += 0.5 * k * dl * dl
                 vx = vel[i, 0] + hm * force[i, 0]
                 vy = vel[i, 1] + hm * force[i, 1]
                 ekin += 0.5 * m * (vx * vx + vy * vy)
