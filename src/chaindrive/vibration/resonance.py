@@ -1,0 +1,637 @@
+"""Exciting frequencies, the resonance check of seed 003, Campbell diagram, resonance map."""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+
+import numpy as np
+
+from .._registry import Registry
+from .._results import Result
+from .._validation import check_nonnegative, check_positive, check_range, check_teeth
+from ..errors import InfeasibleError, InputError
+from .tensioner import (
+    _check_common,
+    heavy_tensioner_frequency,
+    static_rod_force,
+    tensioner_frequencies,
+)
+
+__all__ = [
+    "BAND",
+    "TENSIONER_REDUCTIONS",
+    "TensionerSpan",
+    "ReducedTensioner",
+    "ResonanceCheck",
+    "CampbellResult",
+    "ResonanceMapResult",
+    "SafeTensioner",
+    "reduced_tensioner",
+    "excitation_multipliers",
+    "excitation_frequencies",
+    "resonance_margin",
+    "resonance_check",
+    "campbell",
+    "resonance_map",
+    "propose_safe_tensioner",
+]
+
+#: Forbidden band of P_i / ω_j (seed 003, last equation).
+BAND = (0.7, 1.4)
+
+
+# --------------------------------------------------------------------------- reduction
+@dataclasses.dataclass(frozen=True)
+class ReducedTensioner(Result):
+    """Tensioner mass and stiffness reduced to the sprocket axis (seed 003)."""
+
+    mass: float
+    stiffness: float
+    method: str
+
+
+TENSIONER_REDUCTIONS = Registry("method")
+
+
+@TENSIONER_REDUCTIONS.register("sliding")
+def _sliding(*, carriage_mass, sprocket_mass=0.0, spring_stiffness, spring_mass=0.0,
+             spring_angle=0.0):
+    m0 = check_nonnegative("carriage_mass", carriage_mass, "kg")
+    ms = check_nonnegative("sprocket_mass", sprocket_mass, "kg")
+    k = check_nonnegative("spring_stiffness", spring_stiffness, "N/m")
+    msp = check_nonnegative("spring_mass", spring_mass, "kg")
+    a = check_range("spring_angle", spring_angle, 0.0, np.pi / 2, high_inclusive=False, unit="rad")
+    ca = np.cos(a)
+    # spring end moves u cos α along the spring: T = ½(m0 + ms + msp cos²α/3) u̇², V = ½ k cos²α u²
+    return float(m0 + ms + msp * ca**2 / 3.0), float(k * ca**2)
+
+
+@TENSIONER_REDUCTIONS.register("pivot_arm")
+def _pivot_arm(*, arm_inertia, sprocket_mass, arm_length, spring_stiffness, spring_lever,
+               spring_angle=0.0, torsion_stiffness=0.0, sprocket_inertia=0.0):
+    j = check_nonnegative("arm_inertia", arm_inertia, "kg m²")
+    ms = check_nonnegative("sprocket_mass", sprocket_mass, "kg")
+    L = check_positive("arm_length", arm_length, "m")
+    k = check_nonnegative("spring_stiffness", spring_stiffness, "N/m")
+    a = check_nonnegative("spring_lever", spring_lever, "m")
+    ang = check_range("spring_angle", spring_angle, 0.0, np.pi / 2, high_inclusive=False, unit="rad")
+    kt = check_nonnegative("torsion_stiffness", torsion_stiffness, "N m/rad")
+    js = check_nonnegative("sprocket_inertia", sprocket_inertia, "kg m²")
+    del js  # the sprocket spins with the chain, not with the arm: no contribution
+    # u = L θ; T = ½(J + ms L²) θ̇²; V = ½ (k (a cos γ)² + kt) θ²
+    return float((j + ms * L**2) / L**2), float((k * (a * np.cos(ang)) ** 2 + kt) / L**2)
+
+
+def reduced_tensioner(method="sliding", **parameters):
+    r"""Mass and stiffness of a tensioner reduced to its sprocket axis [kg, N/m].
+
+    Parameters
+    ----------
+    method : {"sliding", "pivot_arm"}
+        ``sliding``: carriage_mass [kg], sprocket_mass [kg], spring_stiffness [N/m],
+        spring_mass [kg] (a third counts), spring_angle [rad] between spring and axis.
+        ``pivot_arm``: arm_inertia about the pivot [kg m²], sprocket_mass [kg] at
+        arm_length L [m], spring_stiffness k [N/m] at spring_lever a [m] from the pivot,
+        spring_angle γ [rad] between the spring and the normal to the arm,
+        torsion_stiffness [N m/rad] (optional).
+    **parameters
+        The parameters of the method, in SI units.
+
+    Returns
+    -------
+    ReducedTensioner
+        ``mass`` m and ``stiffness`` C with the same kinetic and potential energy as
+        the tensioner for a displacement u of the sprocket along its axis.
+
+    .. math:: m = \frac{J + m_s L^2}{L^2}, \quad C = \frac{k (a\cos\gamma)^2 + k_t}{L^2}
+              \quad (\text{pivot arm, } u = L\theta)
+
+    Notes
+    -----
+    Small motions about the working position; the axis of a pivoted tensioner is the
+    normal to the arm at the sprocket centre. Energy balance as seed 003 asks.
+
+    Examples
+    --------
+    >>> r = reduced_tensioner("pivot_arm", arm_inertia=0.05, sprocket_mass=2.0,
+    ...                       arm_length=0.25, spring_stiffness=2e5, spring_lever=0.1)
+    >>> round(r.mass, 3), round(r.stiffness, 1)
+    (2.8, 32000.0)
+    >>> reduced_tensioner("sliding", carriage_mass=1.5, sprocket_mass=1.5, spring_stiffness=5e4).mass
+    3.0
+
+    References
+    ----------
+    seed 003 (reduction by the balance of kinetic and potential energy, text after eq. 13).
+    """
+    fn = TENSIONER_REDUCTIONS.get(method)
+    try:
+        m, c = fn(**parameters)
+    except TypeError as exc:
+        raise InputError(f"reduced_tensioner(method={method!r}): {exc}") from None
+    return ReducedTensioner(mass=m, stiffness=c, method=method)
+
+
+# --------------------------------------------------------------------------- excitation
+def excitation_multipliers(ratio=1.0, teeth=None, *, link_chain=False):
+    r"""Exciting frequencies as multiples of the driving sprocket speed ω1.
+
+    Parameters
+    ----------
+    ratio : float
+        Transmission ratio u = ω1/ω2 (> 0).
+    teeth : int, optional
+        Teeth (pockets) z1 of the driving wheel; adds the meshing excitation.
+    link_chain : bool
+        Round link chain on a pocket wheel: links pass at 2 z1 ω1, and the unequal
+        link lengths t ± d repeat with the pair of links, at z1 ω1 (half of it).
+
+    Returns
+    -------
+    dict
+        name -> multiplier k (ω_j = k ω1).
+
+    .. math:: \omega_1,\ \omega_2 = \omega_1/u,\ z_1\omega_1\ (\text{roller}),\
+              2z_1\omega_1 \text{ and } z_1\omega_1\ (\text{round link})
+
+    Notes
+    -----
+    Roller chain: the pitch polygon has period 2π/z1 → meshing at z1 ω1. Round link
+    chain with z1 pockets: the bi-regular polygon has 2 z1 sides (t + d, t − d) and
+    period 2π/z1 for a *pair* of links (seed 002, δ1 + δ2 = 2π/z): each link passes
+    at 2 z1 ω1, the length difference of the two links excites half of that, z1 ω1.
+
+    Examples
+    --------
+    >>> excitation_multipliers(2.5, 17)
+    {'driving sprocket': 1.0, 'driven sprocket': 0.4, 'meshing': 17.0}
+    >>> excitation_multipliers(2.0, 8, link_chain=True)["link pair (t ± d)"]
+    8.0
+
+    References
+    ----------
+    seed 003 (ω1 = ω, ω2 = ω/u_n, unequal link lengths); seed 002, eq. (6).
+    """
+    u = float(check_positive("ratio", ratio))
+    out = {"driving sprocket": 1.0, "driven sprocket": 1.0 / u}
+    if teeth is not None:
+        z = int(check_teeth("teeth", teeth))
+        if link_chain:
+            out["link passing"] = 2.0 * z
+            out["link pair (t ± d)"] = float(z)
+        else:
+            out["meshing"] = float(z)
+    return out
+
+
+def excitation_frequencies(speed, ratio=1.0, teeth=None, *, link_chain=False):
+    r"""Exciting frequencies [rad/s] for driving sprocket speed ω1.
+
+    Parameters
+    ----------
+    speed : float or array_like
+        ω1 [rad/s], > 0.
+    ratio, teeth, link_chain
+        See :func:`excitation_multipliers`.
+
+    Returns
+    -------
+    dict
+        name -> ω_j [rad/s].
+
+    .. math:: \omega_j = k_j \omega_1
+
+    Notes
+    -----
+    Frequencies in rad/s like the natural frequencies P_i (the ratio is unitless).
+
+    Examples
+    --------
+    >>> {k: round(v, 3) for k, v in excitation_frequencies(10.0, 2.5, 17).items()}
+    {'driving sprocket': 10.0, 'driven sprocket': 4.0, 'meshing': 170.0}
+
+    References
+    ----------
+    seed 003 (exciting frequencies).
+    """
+    w = check_positive("speed", speed, "rad/s")
+    ks = excitation_multipliers(ratio, teeth, link_chain=link_chain)
+    return {k: (float(w) * v if w.ndim == 0 else w * v) for k, v in ks.items()}
+
+
+def resonance_margin(ratio):
+    r"""Margin of P/ω to the forbidden band 0.7 <= P/ω <= 1.4 (> 0 safe).
+
+    Parameters
+    ----------
+    ratio : float or array_like
+        r = P_i / ω_j (>= 0).
+
+    Returns
+    -------
+    numpy.ndarray or float
+        max(r/1.4 − 1, 1 − r/0.7): the relative distance to the nearer band edge;
+        <= 0 inside the band.
+
+    .. math:: \mu = \max(r/1.4 - 1,\ 1 - r/0.7)
+
+    Notes
+    -----
+    0.1 means P is 10 % above 1.4 ω or 10 % (of 0.7 ω) below 0.7 ω.
+
+    Examples
+    --------
+    >>> resonance_margin([0.5, 1.0, 2.8])
+    array([ 0.28571429, -0.28571429,  1.        ])
+
+    References
+    ----------
+    seed 003 (condition 0.7 <= P_i/ω_j <= 1.4).
+    """
+    r = np.asarray(ratio, dtype=float)
+    out = np.maximum(r / BAND[1] - 1.0, 1.0 - r / BAND[0])
+    return out if out.ndim else float(out)
+
+
+# --------------------------------------------------------------------------- results
+@dataclasses.dataclass
+class ResonanceCheck(Result):
+    """Every (mode, excitation) pair of the seed 003 check, as table columns."""
+
+    mode: np.ndarray
+    excitation: list
+    natural_frequency: np.ndarray
+    exciting_frequency: np.ndarray
+    ratio: np.ndarray
+    margin: np.ndarray
+    ok: np.ndarray
+    passed: bool
+
+    def rows(self) -> list[dict]:
+        """The table as a list of dicts (mode, excitation, frequencies, ratio, margin, ok)."""
+        return [
+            {"mode": int(self.mode[i]), "excitation": self.excitation[i],
+             "natural_frequency": float(self.natural_frequency[i]),
+             "exciting_frequency": float(self.exciting_frequency[i]),
+             "ratio": float(self.ratio[i]), "margin": float(self.margin[i]), "ok": bool(self.ok[i])}
+            for i in range(len(self.mode))
+        ]
+
+
+def resonance_check(natural_frequencies, excitations):
+    r"""Seed 003's check 0.7 <= P_i/ω_j <= 1.4 for every pair, with margins.
+
+    Parameters
+    ----------
+    natural_frequencies : array_like
+        P_i [rad/s], 1-D.
+    excitations : dict
+        name -> ω_j [rad/s] (scalars), e.g. from :func:`excitation_frequencies`.
+
+    Returns
+    -------
+    ResonanceCheck
+        One row per pair; ``passed`` when every pair is outside the band.
+
+    .. math:: P_i/\omega_j \notin [0.7, 1.4]
+
+    Notes
+    -----
+    Margin: :func:`resonance_margin`.
+
+    Examples
+    --------
+    >>> r = resonance_check([50.0, 120.0], {"driving sprocket": 100.0})
+    >>> [bool(v) for v in r.ok], r.passed
+    ([True, False], False)
+
+    References
+    ----------
+    seed 003, the last equation.
+    """
+    p = check_positive("natural_frequencies", natural_frequencies, "rad/s").ravel()
+    names = list(excitations)
+    w = np.array([float(check_positive(f"excitation {k!r}", excitations[k], "rad/s")) for k in names])
+    mode = np.repeat(np.arange(1, p.size + 1), len(names))
+    pp = np.repeat(p, len(names))
+    ww = np.tile(w, p.size)
+    r = pp / ww
+    mu = np.asarray(resonance_margin(r))
+    ok = mu > 0
+    return ResonanceCheck(mode=mode, excitation=[names[j] for _ in p for j in range(len(names))],
+                          natural_frequency=pp, exciting_frequency=ww, ratio=r, margin=mu,
+                          ok=ok, passed=bool(ok.all()))
+
+
+@dataclasses.dataclass
+class CampbellResult(Result):
+    """Natural and exciting frequencies against driving speed (rad/s)."""
+
+    speed: np.ndarray
+    natural_frequencies: np.ndarray  # (speeds, modes)
+    excitation_names: list
+    excitation_multipliers: np.ndarray
+    band: tuple
+    design_speed: float | None
+    min_margin: np.ndarray  # (speeds,)
+
+    def plot(self, *, ax=None):
+        from ..plotting.vibration import campbell_plot
+
+        return campbell_plot(self, ax=ax)
+
+
+@dataclasses.dataclass
+class ResonanceMapResult(Result):
+    """Smallest margin to the forbidden band over a speed range, on an (m, C) grid."""
+
+    mass: np.ndarray
+    stiffness: np.ndarray
+    min_margin: np.ndarray  # (masses, stiffnesses)
+    safe: np.ndarray
+    speed_range: tuple
+    speeds: int
+    excitation_names: list
+    design: tuple | None = None
+    proposal: tuple | None = None
+
+    def plot(self, *, ax=None):
+        from ..plotting.vibration import resonance_map_plot
+
+        return resonance_map_plot(self, ax=ax)
+
+
+@dataclasses.dataclass
+class SafeTensioner(Result):
+    """Nearest safe tensioner to a design (seed 003 check over the speed range)."""
+
+    mass: float
+    stiffness: float
+    margin: float
+    distance: float
+    design_mass: float
+    design_stiffness: float
+    design_margin: float
+    changed: bool
+
+
+# --------------------------------------------------------------------------- thin object
+@dataclasses.dataclass(frozen=True)
+class TensionerSpan(Result):
+    """The slack span with a tensioner (seed 003), SI units.
+
+    Examples
+    --------
+    >>> s = TensionerSpan(2000.0, 2.6, 0.8, 0.8, np.radians(20), np.radians(20), 3.0, 5e4)
+    >>> np.round(s.frequencies(), 2)
+    array([ 94.69, 112.36, 146.02])
+    >>> s.check(31.4159, ratio=2.5, teeth=17).passed
+    True
+    """
+
+    tension: float
+    mass_per_length: float
+    length_1: float
+    length_2: float
+    angle_1: float
+    angle_2: float
+    mass: float
+    stiffness: float
+    model: str = "projected"
+
+    def __post_init__(self):
+        _check_common(self.tension, self.mass_per_length, self.length_1, self.length_2,
+                      self.angle_1, self.angle_2, self.mass, self.stiffness)
+
+    def _args(self):
+        return (self.tension, self.mass_per_length, self.length_1, self.length_2,
+                self.angle_1, self.angle_2)
+
+    def frequencies(self, modes=3, *, mass=None, stiffness=None, chain_speed=0.0):
+        """Natural frequencies [rad/s] (:func:`tensioner_frequencies`)."""
+        m = self.mass if mass is None else mass
+        c = self.stiffness if stiffness is None else stiffness
+        return tensioner_frequencies(*self._args(), m, c, modes=modes, model=self.model,
+                                     chain_speed=chain_speed)
+
+    def static_rod_force(self):
+        """F_n [N] (seed 003 eq. 8)."""
+        return static_rod_force(self.tension, self.angle_1, self.angle_2)
+
+    def heavy_tensioner_frequency(self):
+        """Approximate first frequency [rad/s] (seed 003 eq. 13, corrected)."""
+        return heavy_tensioner_frequency(*self._args(), self.mass, self.stiffness, model=self.model)
+
+    def check(self, speed, *, ratio=1.0, teeth=None, link_chain=False, modes=3):
+        """Resonance check at driving speed ``speed`` [rad/s]."""
+        exc = excitation_frequencies(speed, ratio, teeth, link_chain=link_chain)
+        return resonance_check(self.frequencies(modes), exc)
+
+
+# --------------------------------------------------------------------------- design help
+def _speed_grid(speed_range, speeds):
+    lo, hi = (float(v) for v in speed_range)
+    check_positive("speed_range", [lo, hi], "rad/s")
+    if hi < lo:
+        raise InputError(f"speed_range must be (low, high) with low <= high, got ({lo:g}, {hi:g}) rad/s")
+    if int(speeds) < 1:
+        raise InputError(f"speeds must be >= 1, got {speeds!r}")
+    return np.linspace(lo, hi, int(speeds))
+
+
+def _min_margin(p, mult, w):
+    """min over modes, excitations and speeds of the margin; p (..., modes), w (speeds,)."""
+    out = np.full(p.shape[:-1], np.inf)
+    lo, hi = BAND
+    for k in mult:
+        for ws in np.array_split(w, max(1, w.size // 10)):
+            r = p[..., None, :] / (k * ws[:, None])  # (..., speeds, modes)
+            mu = np.maximum(r * (1.0 / hi) - 1.0, 1.0 - r * (1.0 / lo))
+            np.minimum(out, mu.min(axis=(-1, -2)), out=out)
+    return out
+
+
+def campbell(span, speed_range, *, ratio=1.0, teeth=None, link_chain=False, modes=3,
+             speeds=200, chain_speed_per_speed=0.0, design_speed=None):
+    r"""Campbell diagram data: natural and exciting frequencies against ω1.
+
+    Parameters
+    ----------
+    span : TensionerSpan
+        The slack span with its tensioner.
+    speed_range : (float, float)
+        Driving sprocket speed range [rad/s].
+    ratio, teeth, link_chain
+        Excitations, see :func:`excitation_multipliers`.
+    modes : int
+        Natural frequencies drawn.
+    speeds : int
+        Samples of the speed range.
+    chain_speed_per_speed : float
+        Chain speed per unit ω1 [m/rad] (z1 p / 2π for a roller chain, the pitch radius
+        in general): the natural frequencies then fall with speed (moving-string
+        correction); 0 keeps them constant (seed 003's stationary model).
+    design_speed : float, optional
+        Marked on the plot [rad/s].
+
+    Returns
+    -------
+    CampbellResult
+
+    .. math:: P_i(\omega_1), \quad \omega_j = k_j\omega_1, \quad 0.7 k_j\omega_1 \le P \le 1.4 k_j\omega_1
+
+    Notes
+    -----
+    ``min_margin`` per speed is the smallest :func:`resonance_margin` over all pairs.
+
+    Examples
+    --------
+    >>> s = TensionerSpan(2000.0, 2.6, 0.8, 0.8, 0.35, 0.35, 3.0, 5e4)
+    >>> r = campbell(s, (5.0, 60.0), ratio=2.5, teeth=17, speeds=12)
+    >>> r.natural_frequencies.shape
+    (12, 3)
+
+    References
+    ----------
+    seed 003 (resonance condition); Mote 1965 (speed correction).
+    """
+    w = _speed_grid(speed_range, speeds)
+    ks = excitation_multipliers(ratio, teeth, link_chain=link_chain)
+    v = check_nonnegative("chain_speed_per_speed", chain_speed_per_speed, "m/rad") * w
+    p = span.frequencies(modes, chain_speed=v[:, None]) if np.any(v > 0) else np.broadcast_to(
+        span.frequencies(modes), (w.size, modes)).copy()
+    p = p.reshape(w.size, modes)
+    mult = np.array(list(ks.values()))
+    mm = np.min(np.asarray(resonance_margin(p[:, :, None] / (mult[None, None, :] * w[:, None, None]))),
+                axis=(1, 2))
+    return CampbellResult(speed=w, natural_frequencies=p, excitation_names=list(ks),
+                          excitation_multipliers=mult, band=BAND, design_speed=design_speed,
+                          min_margin=mm)
+
+
+def resonance_map(span, masses, stiffnesses, speed_range, *, ratio=1.0, teeth=None,
+                  link_chain=False, modes=3, speeds=50, required_margin=0.0):
+    r"""Smallest margin to the forbidden band over a speed range, on a grid of (m, C).
+
+    Parameters
+    ----------
+    span : TensionerSpan
+        Chain, span geometry and tension (its own mass and stiffness are the design).
+    masses : array_like
+        Tensioner masses m [kg] (1-D, >= 0).
+    stiffnesses : array_like
+        Tensioner stiffnesses C [N/m] (1-D, >= 0).
+    speed_range : (float, float)
+        Driving sprocket speed range [rad/s].
+    ratio, teeth, link_chain
+        Excitations, see :func:`excitation_multipliers`.
+    modes : int
+        Natural frequencies checked (seed 003: the first three).
+    speeds : int
+        Samples of the speed range.
+    required_margin : float
+        A grid point is safe when its smallest margin exceeds this.
+
+    Returns
+    -------
+    ResonanceMapResult
+        ``min_margin`` of shape (len(masses), len(stiffnesses)).
+
+    .. math:: \mu(m, C) = \min_{i,j,\omega_1} \max(P_i/(1.4\omega_j) - 1,\ 1 - P_i/(0.7\omega_j))
+
+    Notes
+    -----
+    All roots of the grid are found at once (:func:`tensioner_frequencies` is
+    vectorised); stationary span (seed 003).
+
+    Examples
+    --------
+    >>> s = TensionerSpan(2000.0, 2.6, 0.8, 0.8, 0.35, 0.35, 3.0, 5e4)
+    >>> r = resonance_map(s, np.geomspace(0.3, 30, 5), np.geomspace(5e3, 5e5, 4), (20, 40),
+    ...                   ratio=2.5, teeth=17)
+    >>> r.min_margin.shape
+    (5, 4)
+
+    References
+    ----------
+    seed 003 (resonance condition, m and C reduced to the tensioner axis).
+    """
+    m = check_nonnegative("masses", masses, "kg").ravel()
+    c = check_nonnegative("stiffnesses", stiffnesses, "N/m").ravel()
+    w = _speed_grid(speed_range, speeds)
+    ks = excitation_multipliers(ratio, teeth, link_chain=link_chain)
+    p = span.frequencies(modes, mass=m[:, None], stiffness=c[None, :])
+    mu = _min_margin(p, list(ks.values()), w)
+    return ResonanceMapResult(mass=m, stiffness=c, min_margin=mu, safe=mu > required_margin,
+                              speed_range=(float(w[0]), float(w[-1])), speeds=int(speeds),
+                              excitation_names=list(ks), design=(span.mass, span.stiffness))
+
+
+def propose_safe_tensioner(span, speed_range, *, ratio=1.0, teeth=None, link_chain=False,
+                           modes=3, speeds=50, required_margin=0.05, decades=1.5, points=241):
+    r"""Nearest safe (m, C) to the span's tensioner in a normalized log metric.
+
+    Parameters
+    ----------
+    span : TensionerSpan
+        The design; its ``mass`` and ``stiffness`` must be > 0.
+    speed_range : (float, float)
+        Driving sprocket speed range [rad/s].
+    ratio, teeth, link_chain, modes, speeds
+        As in :func:`resonance_map`.
+    required_margin : float
+        Smallest acceptable margin (:func:`resonance_margin`) over the range.
+    decades : float
+        Search m and C within ± this many decades of the design.
+    points : int
+        Grid points per axis.
+
+    Returns
+    -------
+    SafeTensioner
+        The safe grid point nearest to the design, distance
+        d = sqrt(log10(m/m0)² + log10(C/C0)²) in decades.
+
+    .. math:: d = \sqrt{\log_{10}^2(m/m_0) + \log_{10}^2(C/C_0)}
+
+    Notes
+    -----
+    The metric treats a factor 2 on the mass like a factor 2 on the stiffness.
+    Resolution is the grid step (2·decades/(points−1) decades). Raises
+    :class:`~chaindrive.errors.InfeasibleError` when nothing in the window is safe.
+
+    Examples
+    --------
+    >>> s = TensionerSpan(2000.0, 2.6, 0.8, 0.8, 0.35, 0.35, 3.0, 5e4)
+    >>> r = propose_safe_tensioner(s, (20.0, 40.0), ratio=1.0, teeth=None, points=61)
+    >>> r.changed
+    False
+
+    References
+    ----------
+    seed 003 (resonance condition).
+    """
+    m0 = float(check_positive("span.mass", span.mass, "kg"))
+    c0 = float(check_positive("span.stiffness", span.stiffness, "N/m"))
+    if not math.isfinite(c0):
+        raise InputError("span.stiffness must be finite (0 < C < inf N/m) to propose a change")
+    f = np.linspace(-decades, decades, int(points))
+    mm = m0 * 10.0**f
+    cc = c0 * 10.0**f
+    r = resonance_map(span, mm, cc, speed_range, ratio=ratio, teeth=teeth, link_chain=link_chain,
+                      modes=modes, speeds=speeds, required_margin=required_margin)
+    w = _speed_grid(speed_range, speeds)
+    p0 = span.frequencies(modes)
+    mu0 = float(_min_margin(p0, list(excitation_multipliers(ratio, teeth, link_chain=link_chain).values()), w))
+    if mu0 > required_margin:
+        return SafeTensioner(m0, c0, mu0, 0.0, m0, c0, mu0, False)
+    d = np.hypot(f[:, None], f[None, :])
+    d = np.where(r.safe, d, np.inf)
+    if not np.isfinite(d).any():
+        raise InfeasibleError(
+            f"no safe tensioner within ±{decades:g} decades of m = {m0:g} kg, C = {c0:g} N/m "
+            f"(required margin {required_margin:g}); widen decades or change the span")
+    i, j = np.unravel_index(np.argmin(d), d.shape)
+    return SafeTensioner(float(mm[i]), float(cc[j]), float(r.min_margin[i, j]), float(d[i, j]),
+                         m0, c0, mu0, True)

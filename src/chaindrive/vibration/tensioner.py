@@ -1,0 +1,574 @@
+"""Slack span split by a tensioner: frequency equation, roots, checks (seed 003).
+
+Model (derived in docs/vibration.md): two strings, part i of length ℓ_i inclined at
+β_i to the line perpendicular to the tensioner axis, tension T_i = S2 / cos β_i along
+it (S2 its perpendicular component, eq. (8)), wave speed c_i = sqrt(T_i / q) (eqs
+(1)-(3)), far ends fixed (eqs (4)-(5)), the near ends attached to the tensioner
+sprocket that moves by u along its axis with mass m and stiffness C. The normal
+displacement of part i at the tensioner is w_i = g_i u with g_i = cos β_i
+(``model="projected"``, derived) or g_i = 1 (``model="seed"``, eq. (7) as printed).
+The frequency equation is
+
+    G(p) = Σ_i a_i k_i cot(k_i ℓ_i) + C − m p² = 0,   k_i = p / c_i,  a_i = T_i g_i²,
+
+G strictly decreasing between the poles p = jπ c_i / ℓ_i, so exactly one root lies
+between consecutive distinct poles, and a pole shared by both parts is itself a root
+(a mode with a node at the tensioner). The solver uses that interlacing.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from .._registry import Registry
+from .._validation import check_nonnegative, check_positive, check_range
+from ..errors import InfeasibleError, InputError
+
+__all__ = [
+    "COUPLING_MODELS",
+    "span_parameters",
+    "frequency_function",
+    "pole_free_function",
+    "tensioner_frequencies",
+    "fe_tensioner_frequencies",
+    "static_rod_force",
+    "heavy_tensioner_frequency",
+    "heavy_tensioner_validity",
+]
+
+#: How the normal displacement of each part follows the tensioner motion u.
+COUPLING_MODELS = Registry("model")
+COUPLING_MODELS.add("projected", lambda beta: np.cos(beta))
+COUPLING_MODELS.add("seed", lambda beta: np.ones_like(beta))
+
+_HALF_PI = np.pi / 2
+
+
+def _check_common(tension, mass_per_length, length_1, length_2, angle_1, angle_2, mass, stiffness):
+    s = check_positive("tension", tension, "N")
+    q = check_positive("mass_per_length", mass_per_length, "kg/m")
+    l1 = check_positive("length_1", length_1, "m")
+    l2 = check_positive("length_2", length_2, "m")
+    b1 = check_range("angle_1", angle_1, 0.0, _HALF_PI, high_inclusive=False, unit="rad")
+    b2 = check_range("angle_2", angle_2, 0.0, _HALF_PI, high_inclusive=False, unit="rad")
+    m = check_nonnegative("mass", mass, "kg")
+    c = np.asarray(stiffness, dtype=float)
+    if np.any(np.isnan(c)) or np.any(c < 0):
+        raise InputError("stiffness must be non-negative (0 <= stiffness <= inf N/m; inf = fixed tensioner)")
+    return s, q, l1, l2, b1, b2, m, c
+
+
+def span_parameters(tension, mass_per_length, angle, *, model="projected", chain_speed=0.0):
+    r"""Wave speed c_i and coupling coefficient a_i of one part of the slack span.
+
+    Parameters
+    ----------
+    tension : float or array_like
+        S2, the tension component perpendicular to the tensioner axis [N].
+    mass_per_length : float or array_like
+        q [kg/m].
+    angle : float or array_like
+        β_i [rad], 0 <= β < π/2.
+    model : {"projected", "seed"}
+        Coupling g_i = cos β_i (derived) or 1 (seed 003 eq. (7) as printed).
+    chain_speed : float
+        Axial chain speed v [m/s]; the wave speed becomes c(1 − v²/c²) (moving-string
+        correction, exact for a fixed-fixed part, approximate for the coupling).
+
+    Returns
+    -------
+    (c, a) : tuple of numpy.ndarray
+        Effective wave speed [m/s] and a_i = T_i g_i² [N].
+
+    .. math:: c_i = \sqrt{S_2/(q\cos\beta_i)}, \quad a_i = \frac{S_2}{\cos\beta_i} g_i^2
+
+    Notes
+    -----
+    Valid for small deflections of a perfectly flexible chain, v < c.
+
+    Examples
+    --------
+    >>> c, a = span_parameters(2000.0, 2.6, 0.0)
+    >>> round(float(c), 3), float(a)
+    (27.735, 2000.0)
+
+    References
+    ----------
+    seed 003, eqs (1)-(3), (7), (8); docs/vibration.md.
+    """
+    g = COUPLING_MODELS.get(model)
+    s = np.asarray(tension, dtype=float)
+    q = np.asarray(mass_per_length, dtype=float)
+    b = np.asarray(angle, dtype=float)
+    t = s / np.cos(b)
+    c = np.sqrt(t / q)
+    v = np.asarray(chain_speed, dtype=float)
+    if np.any(v < 0) or np.any(v >= c):
+        raise InfeasibleError("chain_speed must satisfy 0 <= v < c = sqrt(S/(q cos β)) m/s")
+    return c * (1.0 - v**2 / c**2), t * g(b) ** 2
+
+
+def frequency_function(p, tension, mass_per_length, length_1, length_2, angle_1, angle_2,
+                       mass, stiffness, *, model="projected", chain_speed=0.0):
+    r"""Left side G(p) of the frequency equation of slack span + tensioner [N/m].
+
+    Parameters
+    ----------
+    p : float or array_like
+        Trial circular frequency [rad/s], p > 0.
+    tension, mass_per_length, length_1, length_2, angle_1, angle_2, mass, stiffness
+        S2 [N], q [kg/m], ℓ1 [m], ℓ2 [m], β1 [rad], β2 [rad], m [kg], C [N/m].
+    model : {"projected", "seed"}
+        Coupling model, see :func:`span_parameters`.
+    chain_speed : float
+        Axial chain speed [m/s].
+
+    Returns
+    -------
+    numpy.ndarray
+        G(p); its zeros are the natural frequencies. Poles at p = jπ c_i / ℓ_i.
+
+    .. math:: G(p) = \sum_{i=1}^{2} a_i k_i \cot(k_i \ell_i) + C - m p^2, \quad k_i = p/c_i
+
+    Notes
+    -----
+    This is seed 003's eq. (11) corrected (the printed one swaps ℓ1 and ℓ2 and uses
+    g_i = 1); with ``model="seed"`` and the indices restored it is eq. (11) times S2 p.
+
+    Examples
+    --------
+    >>> float(frequency_function(1e-9, 2000.0, 2.6, 0.8, 0.8, 0.0, 0.0, 3.0, 5e4)) > 0
+    True
+
+    References
+    ----------
+    seed 003, eqs (7), (9)-(11).
+    """
+    c1, a1 = span_parameters(tension, mass_per_length, angle_1, model=model, chain_speed=chain_speed)
+    c2, a2 = span_parameters(tension, mass_per_length, angle_2, model=model, chain_speed=chain_speed)
+    p = np.asarray(p, dtype=float)
+    k1, k2 = p / c1, p / c2
+    l1 = np.asarray(length_1, dtype=float)
+    l2 = np.asarray(length_2, dtype=float)
+    return (a1 * k1 / np.tan(k1 * l1) + a2 * k2 / np.tan(k2 * l2)
+            + np.asarray(stiffness, dtype=float) - np.asarray(mass, dtype=float) * p**2)
+
+
+def pole_free_function(p, tension, mass_per_length, length_1, length_2, angle_1, angle_2,
+                       mass, stiffness, *, model="projected", chain_speed=0.0):
+    r"""Pole-free frequency function D(p) = G(p) sin(k1 ℓ1) sin(k2 ℓ2) [N/m].
+
+    Parameters
+    ----------
+    p, tension, mass_per_length, length_1, length_2, angle_1, angle_2, mass, stiffness
+        As in :func:`frequency_function`; stiffness must be finite here.
+    model : {"projected", "seed"}
+        Coupling model.
+    chain_speed : float
+        Axial chain speed [m/s].
+
+    Returns
+    -------
+    numpy.ndarray
+        D(p), continuous in p; zero at every natural frequency, including the modes
+        with a node at the tensioner when both parts share a fixed-fixed frequency.
+
+    .. math:: D = a_1 k_1 \cos k_1\ell_1 \sin k_2\ell_2 + a_2 k_2 \cos k_2\ell_2 \sin k_1\ell_1
+              + (C - m p^2)\sin k_1\ell_1 \sin k_2\ell_2
+
+    Notes
+    -----
+    At a pole of one part only, D = a_i k_i cos(k_iℓ_i) sin(k_jℓ_j) ≠ 0, so no pole
+    is a root; where both sines vanish D = 0 (a true mode).
+
+    Examples
+    --------
+    >>> p0 = np.pi * np.sqrt(2000.0 / 2.6) / 0.8  # shared first pole of two equal parts
+    >>> abs(float(pole_free_function(p0, 2000.0, 2.6, 0.8, 0.8, 0.0, 0.0, 3.0, 5e4))) < 1e-9
+    True
+
+    References
+    ----------
+    seed 003, eqs (4)-(7), (9)-(11); docs/vibration.md.
+    """
+    c1, a1 = span_parameters(tension, mass_per_length, angle_1, model=model, chain_speed=chain_speed)
+    c2, a2 = span_parameters(tension, mass_per_length, angle_2, model=model, chain_speed=chain_speed)
+    p = np.asarray(p, dtype=float)
+    k1, k2 = p / c1, p / c2
+    x1 = k1 * np.asarray(length_1, dtype=float)
+    x2 = k2 * np.asarray(length_2, dtype=float)
+    s1, s2 = np.sin(x1), np.sin(x2)
+    return (a1 * k1 * np.cos(x1) * s2 + a2 * k2 * np.cos(x2) * s1
+            + (np.asarray(stiffness, dtype=float) - np.asarray(mass, dtype=float) * p**2) * s1 * s2)
+
+
+def _poles(w1, w2, modes):
+    """First ``modes`` merged poles (fixed-fixed frequencies of both parts), sorted."""
+    j = np.arange(1, modes + 1)
+    p = np.concatenate([w1[..., None] * j, w2[..., None] * j], axis=-1)
+    p.sort(axis=-1)
+    return p[..., :modes]
+
+
+def _solve_interlaced(c1, l1, a1, c2, l2, a2, m, c, modes, *, iterations=60, rtol=1e-13):
+    """Vectorised root finder: one root of G in each gap between consecutive poles.
+
+    All inputs broadcast; returns shape ``broadcast + (modes,)``. G strictly decreasing,
+    so each gap holds exactly one root; a zero-width gap (a pole of both parts) is a root.
+    """
+    w1 = np.pi * c1 / l1
+    w2 = np.pi * c2 / l2
+    poles = _poles(np.asarray(w1), np.asarray(w2), modes)
+    hi = poles
+    lo = np.concatenate([np.zeros(poles.shape[:-1] + (1,)), poles[..., :-1]], axis=-1)
+    ex = [np.asarray(x, dtype=float)[..., None] for x in (c1, l1, a1, c2, l2, a2, m, c)]
+    c1, l1, a1, c2, l2, a2, m, c = ex
+    inf_c = np.isinf(c)
+    c_fin = np.where(inf_c, 0.0, c)
+    shared = (hi - lo) <= 1e-9 * hi  # a pole of both parts (within 1e-9): a root itself
+    done = shared | inf_c
+    b1, b2 = l1 / c1, l2 / c2  # ℓ_i / c_i
+    al1, al2 = a1 / c1, a2 / c2
+
+    shape = np.broadcast_shapes(lo.shape, m.shape, c.shape, c1.shape, c2.shape, l1.shape, l2.shape)
+    lo = np.broadcast_to(lo, shape)
+    hi = np.broadcast_to(hi, shape)
+
+    def owns(p, b):  # is p a fixed-fixed frequency jπ c_i/ℓ_i of part i (b = ℓ_i/c_i)?
+        r = p * b / np.pi
+        return np.abs(r - np.round(r)) <= 1e-9 * np.maximum(r, 1.0)
+
+    # H(p) = G(p) (hi - p) w(p), w = p - lo (lo > 0) or 1 (first gap): G with its poles
+    # at the gap ends removed, finite and of opposite signs at the two ends.
+    # End values from the residues a_i p_j / ℓ_i of a_i k cot(k ℓ_i) at p_j = jπ c_i/ℓ_i.
+    res_lo = (np.where(owns(lo, b1), a1 / l1, 0.0) + np.where(owns(lo, b2), a2 / l2, 0.0)) * lo
+    res_hi = (np.where(owns(hi, b1), a1 / l1, 0.0) + np.where(owns(hi, b2), a2 / l2, 0.0)) * hi
+    first = lo == 0
+    width = hi - lo
+    h_lo = np.where(first, (a1 / l1 + a2 / l2 + c_fin) * hi, res_lo * width)
+    h_hi = -res_hi * np.where(first, 1.0, width)
+
+    # Illinois (modified regula falsi) on H in every gap at once; converged ones drop out.
+    x = 0.5 * (lo + hi)
+    idx = np.flatnonzero(~np.broadcast_to(done, shape))
+    lo_f, hi_f, flo_f, fhi_f = (np.broadcast_to(v, shape).ravel()[idx]
+                                for v in (lo, hi, h_lo, h_hi))
+    side_f = np.zeros(idx.size, dtype=np.int8)
+    lo0_f = lo_f.copy()
+    hi0_f = hi_f.copy()
+    xs = x.ravel().copy()
+    pars = [np.broadcast_to(v, shape).ravel()[idx] for v in (b1, b2, al1, al2, c_fin, m)]
+    for _ in range(iterations):
+        if idx.size == 0:
+            break
+        pb1, pb2, pal1, pal2, pc, pm = pars
+        xn = (lo_f * fhi_f - hi_f * flo_f) / (fhi_f - flo_f)
+        bad = ~((xn > lo_f) & (xn < hi_f))
+        xn = np.where(bad, 0.5 * (lo_f + hi_f), xn)
+        t1, t2 = xn * pb1, xn * pb2
+        g = (pal1 * xn * np.cos(t1) / np.sin(t1) + pal2 * xn * np.cos(t2) / np.sin(t2)
+             + pc - pm * xn * xn)
+        fx = g * (hi0_f - xn) * np.where(lo0_f > 0, xn - lo0_f, 1.0)
+        same_lo = fx > 0  # H > 0 left of the root
+        # replace the end with the same sign; halve the kept end's value if kept twice
+        flo_f, fhi_f = (np.where(same_lo, fx, np.where(side_f == -1, 0.5 * flo_f, flo_f)),
+                        np.where(same_lo, np.where(side_f == 1, 0.5 * fhi_f, fhi_f), fx))
+        lo_f = np.where(same_lo, xn, lo_f)
+        hi_f = np.where(same_lo, hi_f, xn)
+        side_f = np.where(same_lo, 1, -1).astype(np.int8)
+        xs[idx] = xn
+        keep = ~((hi_f - lo_f <= rtol * hi_f) | (fx == 0))
+        if not keep.all():
+            idx = idx[keep]
+            lo_f, hi_f, flo_f, fhi_f, side_f, lo0_f, hi0_f = (
+                v[keep] for v in (lo_f, hi_f, flo_f, fhi_f, side_f, lo0_f, hi0_f))
+            pars = [v[keep] for v in pars]
+    else:  # pragma: no cover - Illinois converges well within the limit
+        if idx.size:
+            from ..errors import ConvergenceError
+
+            raise ConvergenceError(f"tensioner frequency iteration did not converge in {iterations} steps")
+    x = xs.reshape(lo.shape)
+    return np.where(shared | inf_c, poles, x)
+
+
+def tensioner_frequencies(tension, mass_per_length, length_1, length_2, angle_1, angle_2,
+                          mass, stiffness, *, modes=3, model="projected", chain_speed=0.0):
+    r"""First natural frequencies of the slack span with a tensioner [rad/s].
+
+    Parameters
+    ----------
+    tension : float or array_like
+        S2, slack-span tension perpendicular to the tensioner axis [N], > 0.
+    mass_per_length : float or array_like
+        Chain mass per length q [kg/m], > 0.
+    length_1, length_2 : float or array_like
+        Lengths ℓ1, ℓ2 of the parts left and right of the tensioner [m], > 0.
+    angle_1, angle_2 : float or array_like
+        Inclinations β1, β2 of the parts [rad], 0 <= β < π/2.
+    mass : float or array_like
+        Tensioner mass reduced to its axis m [kg], >= 0.
+    stiffness : float or array_like
+        Tensioner stiffness reduced to its axis C [N/m], >= 0; ``np.inf`` fixes the
+        tensioner (two fixed-fixed strings).
+    modes : int
+        Number of frequencies wanted (>= 1).
+    model : {"projected", "seed"}
+        Coupling of the parts to the tensioner motion (see :func:`span_parameters`).
+    chain_speed : float
+        Axial chain speed [m/s] (moving-string correction of the wave speeds).
+
+    Returns
+    -------
+    numpy.ndarray
+        Shape ``broadcast(inputs) + (modes,)``, ascending, > 0 [rad/s].
+
+    .. math:: \sum_i a_i \frac{p}{c_i}\cot\frac{p\ell_i}{c_i} + C - m p^2 = 0
+
+    Notes
+    -----
+    Exact roots (to ~1e-13 relative) of the corrected frequency equation for every
+    m >= 0, C in [0, inf]. The roots interlace the fixed-fixed frequencies jπc_i/ℓ_i
+    of the two parts; where both parts share one, it is itself a root (node at the
+    tensioner). Fully vectorised: Illinois (modified regula falsi) on G with its
+    end poles removed, in every gap at once.
+
+    Examples
+    --------
+    >>> p = tensioner_frequencies(2000.0, 2.6, 0.8, 0.8, np.radians(20), np.radians(20), 3.0, 5e4)
+    >>> np.round(p, 2)
+    array([ 94.69, 112.36, 146.02])
+
+    References
+    ----------
+    seed 003, eqs (1)-(12) (the printed (11)-(12) corrected); docs/vibration.md.
+    """
+    s, q, l1, l2, b1, b2, m, c = _check_common(tension, mass_per_length, length_1, length_2,
+                                              angle_1, angle_2, mass, stiffness)
+    if not isinstance(modes, (int, np.integer)) or modes < 1:
+        raise InputError(f"modes must be a whole number >= 1, got {modes!r}")
+    v = check_nonnegative("chain_speed", chain_speed, "m/s")
+    c1, a1 = span_parameters(s, q, b1, model=model, chain_speed=v)
+    c2, a2 = span_parameters(s, q, b2, model=model, chain_speed=v)
+    return _solve_interlaced(c1, l1, a1, c2, l2, a2, m, c, int(modes))
+
+
+def fe_tensioner_frequencies(tension, mass_per_length, length_1, length_2, angle_1, angle_2,
+                             mass, stiffness, *, modes=3, elements=200, model="projected"):
+    r"""Independent check: linear finite elements of both parts plus the mass-spring.
+
+    Parameters
+    ----------
+    tension, mass_per_length, length_1, length_2, angle_1, angle_2, mass, stiffness
+        Scalars, as in :func:`tensioner_frequencies` (stiffness finite).
+    modes : int
+        Number of frequencies returned.
+    elements : int
+        Elements per part (>= 2).
+    model : {"projected", "seed"}
+        Coupling model.
+
+    Returns
+    -------
+    numpy.ndarray
+        First ``modes`` frequencies [rad/s] of the generalized eigenproblem
+        K x = p² M x (scipy.linalg.eigh); converge as O(h²) to the exact roots.
+
+    .. math:: V = \tfrac12\sum_i T_i\int_0^{\ell_i} w_i'^2\,ds + \tfrac12 C u^2, \quad
+              T = \tfrac12\sum_i q\int_0^{\ell_i} \dot w_i^2\,ds + \tfrac12 m\dot u^2
+
+    Notes
+    -----
+    Part i: nodes 0..N, node 0 fixed, node N tied to the tensioner, w = g_i u.
+    Consistent mass matrices. Stationary string (no axial speed).
+
+    Examples
+    --------
+    >>> b = np.radians(20)
+    >>> p = fe_tensioner_frequencies(2000.0, 2.6, 0.8, 0.8, b, b, 3.0, 5e4, elements=100)
+    >>> np.round(p, 1)
+    array([ 94.7, 112.4, 146. ])
+
+    References
+    ----------
+    seed 003, eqs (1)-(7); docs/vibration.md.
+    """
+    from scipy.linalg import eigh
+
+    s, q, l1, l2, b1, b2, m, c = (float(x) for x in _check_common(
+        tension, mass_per_length, length_1, length_2, angle_1, angle_2, mass, stiffness))
+    if not np.isfinite(c):
+        raise InputError("stiffness must be finite for the finite-element check (0 <= C < inf N/m)")
+    if int(elements) < 2:
+        raise InputError(f"elements must be >= 2, got {elements!r}")
+    n = int(elements)
+    g = COUPLING_MODELS.get(model)
+    ndof = 2 * (n - 1) + 1  # interior nodes of both parts + tensioner u (last)
+    K = np.zeros((ndof, ndof))
+    M = np.zeros((ndof, ndof))
+    ke0 = np.array([[1.0, -1.0], [-1.0, 1.0]])
+    me0 = np.array([[2.0, 1.0], [1.0, 2.0]]) / 6.0
+    u = ndof - 1
+    for part, (ell, beta) in enumerate(((l1, b1), (l2, b2))):
+        t = s / np.cos(beta)
+        gi = float(g(np.asarray(beta)))
+        h = ell / n
+        off = part * (n - 1)
+        # node j (0..n): 0 fixed, n at the tensioner; part 2 mirrored (same energy)
+        for e in range(n):
+            dofs, fac = [], []
+            for j in (e, e + 1):
+                if j == 0:
+                    dofs.append(None)
+                    fac.append(0.0)
+                elif j == n:
+                    dofs.append(u)
+                    fac.append(gi)
+                else:
+                    dofs.append(off + j - 1)
+                    fac.append(1.0)
+            ke = t / h * ke0
+            me = q * h * me0
+            for a in range(2):
+                for b in range(2):
+                    if dofs[a] is None or dofs[b] is None:
+                        continue
+                    K[dofs[a], dofs[b]] += ke[a, b] * fac[a] * fac[b]
+                    M[dofs[a], dofs[b]] += me[a, b] * fac[a] * fac[b]
+    K[u, u] += c
+    M[u, u] += m
+    lam = eigh(K, M, eigvals_only=True, subset_by_index=[0, modes - 1])
+    return np.sqrt(lam)
+
+
+def static_rod_force(tension, angle_1, angle_2):
+    r"""Static force on the tensioner rod F_n = S2 (tan β1 + tan β2) [N] (seed 003 eq. (8)).
+
+    Parameters
+    ----------
+    tension : float or array_like
+        S2, the tension component perpendicular to the tensioner axis [N].
+    angle_1, angle_2 : float or array_like
+        β1, β2 [rad], 0 <= β < π/2.
+
+    Returns
+    -------
+    numpy.ndarray or float
+        F_n [N].
+
+    .. math:: F_n = S_2(\tan\beta_1 + \tan\beta_2)
+
+    Notes
+    -----
+    Force balance along the axis: part i pulls with T_i = S2/cos β_i along itself,
+    its axial component is T_i sin β_i = S2 tan β_i (checked against (7) at rest).
+
+    Examples
+    --------
+    >>> round(float(static_rod_force(2000.0, np.radians(20), np.radians(20))), 3)
+    1455.881
+
+    References
+    ----------
+    seed 003, eq. (8).
+    """
+    s = check_positive("tension", tension, "N")
+    b1 = check_range("angle_1", angle_1, 0.0, _HALF_PI, high_inclusive=False, unit="rad")
+    b2 = check_range("angle_2", angle_2, 0.0, _HALF_PI, high_inclusive=False, unit="rad")
+    out = s * (np.tan(b1) + np.tan(b2))
+    return out if out.ndim else float(out)
+
+
+def heavy_tensioner_frequency(tension, mass_per_length, length_1, length_2, angle_1, angle_2,
+                              mass, stiffness, *, model="projected", chain_mass=False):
+    r"""First frequency of a heavy tensioner on massless spans [rad/s] (seed 003 eq. (13), fixed).
+
+    Parameters
+    ----------
+    tension, mass_per_length, length_1, length_2, angle_1, angle_2
+        S2 [N], q [kg/m], ℓ1, ℓ2 [m], β1, β2 [rad].
+    mass : float or array_like
+        m [kg], > 0.
+    stiffness : float or array_like
+        C [N/m], >= 0, finite.
+    model : {"projected", "seed"}
+        Coupling model.
+    chain_mass : bool
+        Add a third of each part's mass (times g_i²) to m (Rayleigh), the next term
+        of the expansion of k cot(kℓ).
+
+    Returns
+    -------
+    numpy.ndarray or float
+        P1 [rad/s].
+
+    .. math:: P_1 = \sqrt{\Big(\sum_i \frac{a_i}{\ell_i} + C\Big) \Big/ m}
+
+    Notes
+    -----
+    As printed, (13) reads P1 = 2S2/(m ℓ1 cos β1) + C/m: that is P1² (dimension
+    s⁻²), for ℓ1 = ℓ2, β1 = β2 and the seed coupling. Valid while the parts are
+    quasi-static, θ = max_i P1 ℓ_i / c_i small: see :func:`heavy_tensioner_validity`
+    (the printed validity condition is garbled and replaced by θ <= 0.5).
+
+    Examples
+    --------
+    >>> b = np.radians(20)
+    >>> round(float(heavy_tensioner_frequency(2000.0, 2.6, 0.8, 0.8, b, b, 30.0, 5e3)), 3)
+    17.98
+
+    References
+    ----------
+    seed 003, eq. (13) (corrected: square root).
+    """
+    s, q, l1, l2, b1, b2, m, c = _check_common(tension, mass_per_length, length_1, length_2,
+                                              angle_1, angle_2, mass, stiffness)
+    m = check_positive("mass", m, "kg")
+    c = check_nonnegative("stiffness", c, "N/m")
+    g = COUPLING_MODELS.get(model)
+    a1 = s / np.cos(b1) * g(b1) ** 2
+    a2 = s / np.cos(b2) * g(b2) ** 2
+    meff = m + ((q * (l1 * g(b1) ** 2 + l2 * g(b2) ** 2) / 3.0) if chain_mass else 0.0)
+    out = np.sqrt((a1 / l1 + a2 / l2 + c) / meff)
+    return out if out.ndim else float(out)
+
+
+def heavy_tensioner_validity(tension, mass_per_length, length_1, length_2, angle_1, angle_2,
+                             mass, stiffness, *, model="projected"):
+    r"""Validity parameter θ = max_i P1 ℓ_i / c_i of the heavy-tensioner formula.
+
+    Parameters
+    ----------
+    tension, mass_per_length, length_1, length_2, angle_1, angle_2, mass, stiffness
+        As in :func:`heavy_tensioner_frequency`.
+    model : {"projected", "seed"}
+        Coupling model.
+
+    Returns
+    -------
+    numpy.ndarray or float
+        θ (dimensionless); the approximation is within ~3 % for θ <= 0.5.
+
+    .. math:: \theta = \max_i P_1 \ell_i / c_i
+
+    Notes
+    -----
+    The error of (13) is of order θ²·(chain mass)/(3 m_eff): the spans must be short
+    against the wave length at P1. Test values in tests/test_vibration.py.
+
+    Examples
+    --------
+    >>> b = np.radians(20)
+    >>> round(float(heavy_tensioner_validity(2000.0, 2.6, 0.8, 0.8, b, b, 30.0, 5e3)), 3)
+    0.503
+
+    References
+    ----------
+    seed 003, condition under eq. (13) (garbled in print; replaced).
+    """
+    p1 = np.asarray(heavy_tensioner_frequency(tension, mass_per_length, length_1, length_2,
+                                              angle_1, angle_2, mass, stiffness, model=model))
+    c1 = np.sqrt(np.asarray(tension) / (np.asarray(mass_per_length) * np.cos(angle_1)))
+    c2 = np.sqrt(np.asarray(tension) / (np.asarray(mass_per_length) * np.cos(angle_2)))
+    out = np.maximum(p1 * np.asarray(length_1) / c1, p1 * np.asarray(length_2) / c2)
+    return out if out.ndim else float(out)
