@@ -63,6 +63,7 @@ def _path(centres, radii, teeth, pitch):
     tans = [_tangent(centres[i], radii[i], centres[(i + 1) % nw], radii[(i + 1) % nw])
             for i in range(nw)]
     pieces = []
+    wraps = []
     for i in range(nw):
         p1, p2, u, n = tans[i]
         length = float(np.hypot(*(p2 - p1)))
@@ -73,6 +74,11 @@ def _path(centres, radii, teeth, pitch):
         a_out = math.atan2(-n_out[1], -n_out[0])
         wrap = (a_out - a_in) % (2 * math.pi)
         pieces.append(("arc", (j, a_in), wrap * teeth[j] / (2 * math.pi) * pitch))
+        wraps.append(wrap)
+    if sum(wraps) > 2 * math.pi + 1e-6:
+        # a wheel lies inside the hull of the others: the chain would not touch it
+        raise InfeasibleError("a wheel lies inside the loop formed by the others (wraps add "
+                              f"up to {sum(wraps):.4g} rad > 2π); move it outwards")
     return pieces
 
 
@@ -107,7 +113,7 @@ def _place(model: SimulationModel):
     lo, hi = -0.2 * n * p, 0.2 * n * p
     try:
         s0 = brentq(excess, lo, hi, xtol=1e-12) if excess(lo) * excess(hi) < 0 else None
-    except ValueError:
+    except (ValueError, InfeasibleError):
         s0 = None
     if s0 is None:
         # search a bracket near 0
@@ -258,8 +264,11 @@ def assemble(model: SimulationModel, *, dt: float | None = None, tolerance: floa
         wp[adj, K.W_SF] = 2.0 * model.pretension
         wp[adj, K.W_SC] = 2.0 * math.sqrt(2 * kspan * 1.0)
     else:
+        # critical damping of the slide on its own spring plus the pins' relaxation
+        # damping rate (a slack chain must not make the slide creep)
         wp[adj, K.W_SC] = model.tensioner.damping + 2.0 * math.sqrt(
-            (2 * kspan + model.tensioner.stiffness) * model.tensioner.mass)
+            model.tensioner.stiffness * model.tensioner.mass) \
+            + 2.0 * par[K.P_CGLOB] * model.tensioner.mass
     vel = np.zeros_like(pos)
     force = np.zeros_like(pos)
     tension = np.zeros(model.links)
@@ -301,7 +310,9 @@ def assemble(model: SimulationModel, *, dt: float | None = None, tolerance: floa
         if not converged:
             raise ConvergenceError(
                 f"static assembly (phase {phase}) did not settle within max_time = {max_time:g} s"
-                f" (kinetic energy per pin {ek:.3g} J > tolerance {tolerance:g} J)")
+                f" (kinetic energy per pin {ek:.3g} J, tolerance {tolerance:g} J; wheel rim "
+                f"speeds {np.abs(ws[:, K.S_OMEGA]) * wp[:, K.W_R]} m/s, slide speeds "
+                f"{np.abs(ws[:, K.S_SDOT])} m/s, limit {vtol:.3g} m/s)")
     # freeze: adjusting wheel fixed at its found centre unless it is the tensioner
     if model.tensioner is not None:
         # re-centre the slide coordinate: s measured from the assembled position,
