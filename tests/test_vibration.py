@@ -26,6 +26,7 @@ from chaindrive.vibration import (
     resonance_check,
     resonance_map,
     resonance_margin,
+    span_vibration,
     static_rod_force,
     tensioner_frequencies,
     wave_speed,
@@ -429,3 +430,19 @@ def test_span_object_campbell_map_proposal(tmp_path):
         resonance_map(ok, [1.0], [1.0], (40.0, 30.0))
     with pytest.raises(InputError, match="tension must be positive"):
         TensionerSpan(0.0, 2.6, 0.8, 0.8, 0.3, 0.3, 3.0, 5e4)
+
+
+def test_span_vibration_bundle(tmp_path):
+    span = TensionerSpan(*BASE.values(), 3.0, 5e4)
+    r = span_vibration(span, 31.4159, ratio=2.5, teeth=17)
+    assert r.passed is True
+    d = r.to_dict()
+    assert d["static_rod_force"] == pytest.approx(1455.880937)
+    assert len(d["check"]["ratio"]) == 9 and d["campbell"]["speed"][0] == pytest.approx(0.8 * 31.4159)
+    assert r.heavy_tensioner_frequency == pytest.approx(heavy_tensioner_frequency(*BASE.values(), 3.0, 5e4))
+    fig = r.plot()
+    fig.savefig(tmp_path / "c.png")
+    bare = span_vibration(TensionerSpan(*BASE.values(), 0.0, 5e4))
+    assert bare.passed is None and bare.heavy_tensioner_frequency is None
+    with pytest.raises(InputError, match="no Campbell data"):
+        bare.plot()

@@ -7,7 +7,8 @@
 * :func:`static_rod_force` (eq. 8), :func:`heavy_tensioner_frequency` (eq. 13 fixed).
 * :func:`reduced_tensioner`: mass and stiffness reduced to the tensioner axis.
 * :func:`resonance_check`, :func:`campbell`, :func:`resonance_map`,
-  :func:`propose_safe_tensioner`: the 0.7 <= P/ω <= 1.4 check and design help.
+  :func:`propose_safe_tensioner`: the 0.7 <= P/ω <= 1.4 check and design help;
+  :func:`span_vibration` bundles one design's results (``.to_dict()``, ``.plot()``).
 
 Derivations and figures: docs/vibration.md.
 """
@@ -20,6 +21,7 @@ from .resonance import (
     ResonanceCheck,
     ResonanceMapResult,
     SafeTensioner,
+    SpanVibration,
     TensionerSpan,
     campbell,
     excitation_frequencies,
@@ -29,6 +31,7 @@ from .resonance import (
     resonance_check,
     resonance_map,
     resonance_margin,
+    span_vibration,
 )
 from .string import moving_string_frequencies, wave_speed
 from .tensioner import (
@@ -52,6 +55,7 @@ __all__ = [
     "ResonanceCheck",
     "ResonanceMapResult",
     "SafeTensioner",
+    "SpanVibration",
     "TensionerSpan",
     "campbell",
     "excitation_frequencies",
@@ -68,6 +72,7 @@ __all__ = [
     "resonance_map",
     "resonance_margin",
     "span_parameters",
+    "span_vibration",
     "static_rod_force",
     "tensioner_frequencies",
     "wave_speed",

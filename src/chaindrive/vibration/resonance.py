@@ -27,6 +27,8 @@ __all__ = [
     "CampbellResult",
     "ResonanceMapResult",
     "SafeTensioner",
+    "SpanVibration",
+    "span_vibration",
     "reduced_tensioner",
     "excitation_multipliers",
     "excitation_frequencies",
@@ -376,6 +378,29 @@ class SafeTensioner(Result):
     changed: bool
 
 
+@dataclasses.dataclass
+class SpanVibration(Result):
+    """Everything the seed 003 check gives for one design (SI units); ``.plot()`` = Campbell."""
+
+    frequencies_rad_s: np.ndarray
+    frequencies_hz: np.ndarray
+    static_rod_force: float
+    heavy_tensioner_frequency: float | None
+    check: ResonanceCheck | None
+    campbell: CampbellResult | None
+
+    @property
+    def passed(self) -> bool | None:
+        """Verdict of the check (None without a speed)."""
+        return None if self.check is None else self.check.passed
+
+    def plot(self, *, ax=None):
+        """Campbell diagram (needs a speed range)."""
+        if self.campbell is None:
+            raise InputError("no Campbell data: give speed (rad/s) or speed_range to span_vibration")
+        return self.campbell.plot(ax=ax)
+
+
 # --------------------------------------------------------------------------- thin object
 @dataclasses.dataclass(frozen=True)
 class TensionerSpan(Result):
@@ -427,6 +452,61 @@ class TensionerSpan(Result):
         """Resonance check at driving speed ``speed`` [rad/s]."""
         exc = excitation_frequencies(speed, ratio, teeth, link_chain=link_chain)
         return resonance_check(self.frequencies(modes), exc)
+
+
+def span_vibration(span, speed=None, *, ratio=1.0, teeth=None, link_chain=False, modes=3,
+                   speed_range=None):
+    r"""Natural frequencies, rod force and the resonance check of one design.
+
+    Parameters
+    ----------
+    span : TensionerSpan
+        The slack span with its tensioner.
+    speed : float, optional
+        Driving sprocket speed ω1 [rad/s]; without it no check is made.
+    ratio, teeth, link_chain
+        Excitations, see :func:`excitation_multipliers`.
+    modes : int
+        Natural frequencies (seed 003: three).
+    speed_range : (float, float), optional
+        Range of the Campbell diagram [rad/s]; default 0.8…1.2 × speed.
+
+    Returns
+    -------
+    SpanVibration
+        ``frequencies_rad_s``, ``frequencies_hz``, ``static_rod_force`` [N],
+        ``heavy_tensioner_frequency`` [rad/s] (None for m = 0), ``check``, ``campbell``.
+
+    .. math:: 0.7 \le P_i/\omega_j \le 1.4 \ \text{forbidden}
+
+    Notes
+    -----
+    Stationary span (seed 003).
+
+    Examples
+    --------
+    >>> s = TensionerSpan(2000.0, 2.6, 0.8, 0.8, np.radians(20), np.radians(20), 3.0, 5e4)
+    >>> r = span_vibration(s, 31.4159, ratio=2.5, teeth=17)
+    >>> r.passed, round(r.static_rod_force, 1)
+    (True, 1455.9)
+
+    References
+    ----------
+    seed 003, eqs (1)-(13) and the resonance condition.
+    """
+    p = span.frequencies(modes)
+    heavy = span.heavy_tensioner_frequency() if span.mass > 0 and math.isfinite(span.stiffness) else None
+    chk = cb = None
+    if speed is not None:
+        chk = span.check(speed, ratio=ratio, teeth=teeth, link_chain=link_chain, modes=modes)
+        if speed_range is None:
+            speed_range = (0.8 * float(speed), 1.2 * float(speed))
+    if speed_range is not None:
+        cb = campbell(span, speed_range, ratio=ratio, teeth=teeth, link_chain=link_chain,
+                      modes=modes, design_speed=speed)
+    return SpanVibration(frequencies_rad_s=p, frequencies_hz=p / (2 * np.pi),
+                         static_rod_force=float(span.static_rod_force()),
+                         heavy_tensioner_frequency=heavy, check=chk, campbell=cb)
 
 
 # --------------------------------------------------------------------------- design help
