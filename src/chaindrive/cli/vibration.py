@@ -60,9 +60,7 @@ def vibration_command(
 ) -> None:
     """Natural frequencies of the slack span with a tensioner and the resonance check.
 
-    Frequency equation re-derived from seed 003 eqs (1)-(7) (docs/vibration.md); static
-    rod force F_n = S2 (tan β1 + tan β2) (eq. 8); check 0.7 <= P_i/ω_j <= 1.4 against
-    ω1, ω1/u and the meshing frequencies.
+    Frequency equation re-derived from seed 003 eqs (1)-(7) (docs/vibration.md); static rod force F_n = S2 (tan β1 + tan β2) (eq. 8); check 0.7 <= P_i/ω_j <= 1.4 against ω1, ω1/u and the meshing frequencies. Exit code 0 resonance-free (or no --speed), 1 a pair in the band, 2 bad input.
     """
     from ..vibration import (
         TensionerSpan,
