@@ -97,3 +97,25 @@ def test_report_pdf(tmp_path):
     ex = next(e for e in EXAMPLES if e.stem == "roller_industrial")
     assert main(["report", str(ex), "-o", str(tmp_path)]) == 0
     assert (tmp_path / "report.pdf").read_bytes()[:4] == b"%PDF"
+
+
+def test_vibration_section(outcomes):
+    # mining conveyor: seed 003 check of the slack span with its tensioner, a verdict
+    outcome, folder = outcomes["mining_conveyor"]
+    data = json.loads((folder / "results.json").read_text())
+    sec = data["sections"]["Span vibration and resonance check"]
+    assert sec["checks"][0]["name"].startswith("resonance margin of the slack span with tensioner")
+    rows = sec["results"]["check"]
+    # excitations of a round link chain on an 8-pocket wheel at 5 rad/s: ω1, ω2, 2zω1, zω1
+    assert sorted({round(r["exciting_frequency"], 9) for r in rows}) == [5.0, 40.0, 80.0]
+    for r in rows:
+        assert r["ok"] == (not 0.7 <= r["ratio"] <= 1.4)
+    # the verdict is the check's, and the drive's overall verdict follows it
+    assert sec["passed"] == all(r["ok"] for r in rows)
+    assert (folder / "campbell.png").exists()
+    # roller drive without tensioner: free spans for information only
+    outcome, folder = outcomes["roller_industrial"]
+    data = json.loads((folder / "results.json").read_text())
+    sec = data["sections"]["Span vibration and resonance check"]
+    assert sec["checks"][0]["passed"] is None
+    assert len(sec["results"]["free_spans"]["frequencies"]) == 6

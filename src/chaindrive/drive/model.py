@@ -784,10 +784,15 @@ class Drive:
     def tensioner_span(self) -> dict | None:
         """Inputs of the slack-span/tensioner vibration check (seed 003), SI units.
 
-        ``length_1, length_2`` the span parts before/after the tensioner wheel,
-        ``angle_1, angle_2`` their inclinations β to the line joining their far ends,
-        ``tension`` S2, ``mass_per_length`` q, ``mass`` m and ``stiffness`` C of the
-        tensioner, exciting ``frequencies`` ω (driving) and ω/u (each other wheel).
+        In the convention of :class:`chaindrive.vibration.TensionerSpan`:
+        ``length_1, length_2`` the span parts before/after the tensioner wheel;
+        ``angle_1, angle_2`` their inclinations β to the line across the tensioner
+        axis (normal to the tensioner's ``direction`` of travel); ``tension`` S2 the
+        component of the chain tension across that axis, ``S2 = T cos β``, taken with the
+        mean ``cos β`` of the two parts when they differ (seed 003 carries one S2 and
+        tension ``S2 / cos β_i`` in part i; the real chain has the same T in both);
+        ``mass_per_length`` q; ``mass`` m and ``stiffness`` C of the tensioner;
+        ``chain_tension`` T; exciting ``frequencies`` ω of every toothed, non-idler wheel.
         """
         if self.tensioner is None:
             return None
@@ -795,17 +800,27 @@ class Drive:
         n = len(self.wheels)
         idx = lay.wheel_names.index(self.tensioner.wheel)
         s_in, s_out = (idx - 1) % n, idx
-        a_in, a_out = lay.wrap.span_angle[s_in], lay.wrap.span_angle[s_out]
-        chord = lay.wrap.span_end[s_out] - lay.wrap.span_start[s_in]
-        base = math.atan2(chord[1], chord[0])
+        d = np.asarray(self.tensioner.direction, dtype=float)
+        norm = float(np.hypot(*d))
+        if not norm > 0:
+            raise InputError("tensioner.direction must be a non-zero vector")
+        d = d / norm
+        betas = []
+        for j in (s_in, s_out):
+            a = lay.wrap.span_angle[j]
+            # angle between the span and the line normal to the tensioner axis
+            betas.append(float(math.asin(min(1.0, abs(math.cos(a) * d[0] + math.sin(a) * d[1])))))
         t = self.tensions()
         om = self.angular_velocities()
+        T = float(t.slack)
+        S2 = T * 0.5 * (math.cos(betas[0]) + math.cos(betas[1]))
         return {
             "length_1": float(lay.wrap.span_length[s_in]),
             "length_2": float(lay.wrap.span_length[s_out]),
-            "angle_1": float(abs(math.remainder(a_in - base, 2 * math.pi))),
-            "angle_2": float(abs(math.remainder(a_out - base, 2 * math.pi))),
-            "tension": float(t.slack),
+            "angle_1": betas[0],
+            "angle_2": betas[1],
+            "tension": S2,
+            "chain_tension": T,
             "mass_per_length": self._mass_per_length(),
             "mass": float(self.tensioner.mass),
             "stiffness": float(self.tensioner.stiffness),

@@ -261,6 +261,135 @@ def kinematics(ctx: AnalysisContext) -> Section | None:
     return sec
 
 
+# --------------------------------------------------------------------------- vibration
+@step("vibration", "Span vibration and resonance check")
+def vibration(ctx: AnalysisContext) -> Section | None:
+    """Seed 003's check on the slack span with its tensioner; free spans for information.
+
+    The 0.7 ≤ P/ω ≤ 1.4 verdict of seed 003 is given for the slack span split by a
+    tensioner, whose mass and stiffness can be tuned (a nearest safe pair is proposed when
+    it fails). Spans without a tensioner, and tensioners that move almost along the chain
+    (spans inclined more than 60° to the normal of the tensioner axis, where seed 003's
+    coupling vanishes), are analysed as axially moving strings and their pairs inside the
+    band are reported as warnings: the harmonics of a sag-controlled span cover most of a
+    factor-2 band, so a pass/fail verdict there would fail nearly every drive.
+    """
+    from ..vibration import (
+        TensionerSpan,
+        excitation_frequencies,
+        moving_string_frequencies,
+        propose_safe_tensioner,
+        resonance_check,
+        span_vibration,
+    )
+
+    d = ctx.drive
+    sec = Section("Span vibration and resonance check")
+    drv = d.driving_wheel
+    toothed = [w for w in d.wheels if w.teeth is not None and w.kind != "idler"]
+    om = d.angular_velocities()
+    omega = float(d.speed)
+    others = [float(o) for w, o in zip(d.wheels, om, strict=True) if w in toothed and not w.driving]
+    ratio = omega / min(others) if others else 1.0
+    link_chain = bool(d.chain.is_link_chain)
+    teeth = drv.teeth
+    sp = d.tensioner_span() if d.tensioner is not None else None
+    if sp is not None and max(sp["angle_1"], sp["angle_2"]) > math.radians(60):
+        sec.warnings.append(
+            "the tensioner moves almost along the chain (span inclination to the normal of its axis "
+            f"{math.degrees(max(sp['angle_1'], sp['angle_2'])):.0f}° > 60°): seed 003's coupling does not apply; "
+            "the spans are analysed as free strings")
+        sp = None
+    if sp is not None:
+        from ..plotting.vibration import campbell_plot
+
+        span = TensionerSpan(sp["tension"], sp["mass_per_length"], sp["length_1"], sp["length_2"],
+                             sp["angle_1"], sp["angle_2"], sp["mass"], sp["stiffness"])
+        res = span_vibration(span, omega, ratio=ratio, teeth=teeth, link_chain=link_chain, modes=3,
+                             speed_range=(0.5 * omega, 1.5 * omega))
+        sec.tables.append(Table(
+            "Slack span with the tensioner (seed 003, frequency equation re-derived; docs/vibration.md)",
+            ["quantity", "value", "unit"],
+            [["part 1 length ℓ1", sp["length_1"], "m"], ["part 2 length ℓ2", sp["length_2"], "m"],
+             ["inclination β1 to the normal of the tensioner axis", math.degrees(sp["angle_1"]), "°"],
+             ["inclination β2", math.degrees(sp["angle_2"]), "°"],
+             ["S2 (tension across the tensioner axis)", sp["tension"] / 1e3, "kN"],
+             ["tensioner mass m / stiffness C", f"{sp['mass']:.4g} kg / {sp['stiffness'] / 1e3:.4g} kN/m", ""],
+             ["static rod force F_n = S2 (tan β1 + tan β2), eq. (8)", res.static_rod_force / 1e3, "kN"]]
+            + [[f"natural frequency P{i + 1}", float(f), "rad/s"] for i, f in enumerate(res.frequencies_rad_s)]
+            + ([["heavy-tensioner estimate of P1, eq. (13) corrected", res.heavy_tensioner_frequency, "rad/s"]]
+               if res.heavy_tensioner_frequency is not None else []),
+        ))
+        check = res.check
+        _check_table(sec, check)
+        worst = min(check.rows(), key=lambda r: r["margin"])
+        sec.checks.append(Check("resonance margin of the slack span with tensioner, worst pair", worst["margin"],
+                                ">= 0 (P/ω outside 0.7…1.4)", "-", bool(check.passed), "seed 003",
+                                f"mode {worst['mode']} vs {worst['excitation']}: P/ω = {worst['ratio']:.3f}"))
+        if not check.passed and sp["mass"] > 0 and sp["stiffness"] > 0:
+            try:
+                prop = propose_safe_tensioner(span, (0.9 * omega, 1.1 * omega), ratio=ratio, teeth=teeth,
+                                              link_chain=link_chain, modes=3)
+                pd = prop.to_dict()
+                sec.paragraphs.append(
+                    f"Nearest tensioner that is free of resonance over ±10 % of the speed (seed 003 check, "
+                    f"margin ≥ 0.05): m = {pd['mass']:.4g} kg, C = {pd['stiffness'] / 1e3:.4g} kN/m "
+                    f"({pd['distance']:.2f} decades from the design).")
+                sec.results["proposal"] = pd
+            except Exception as exc:  # noqa: BLE001 - nothing safe in the searched range
+                sec.warnings.append(f"no resonance-free tensioner found near the design: {exc}")
+        if ctx.options.get("figures", True) and res.campbell is not None:
+            sec.figures += _fig(ctx, lambda: campbell_plot(res.campbell),
+                                "Campbell diagram of the slack span with the tensioner: natural frequencies, "
+                                "excitations and the forbidden bands 0.7 ≤ P/ω ≤ 1.4", "campbell.png")
+        sec.results["tensioner"] = res.to_dict()
+        sec.results["check"] = check.rows()
+        return sec
+    # free spans as axially moving strings (Wickert & Mote 1990), for information
+    lay = ctx.results.get("layout") or d.layout()
+    t = ctx.results.get("tensions") or d.tensions(kinematics=True)
+    q = d._mass_per_length()
+    v = d.chain_speed()
+    rows, freqs, names = [], [], []
+    # running tension = static + centrifugal q v² (the tight tension already holds q v²)
+    for j, role, T in ((lay.tight_span, "tight", t.tight), (lay.slack_span, "slack", t.slack + t.centrifugal)):
+        L = float(lay.wrap.span_length[j])
+        beta = float(abs(math.atan(math.tan(lay.wrap.span_angle[j]))))
+        try:
+            f = np.asarray(moving_string_frequencies(T * math.cos(beta), q, L, chain_speed=v, inclination=beta, modes=3))
+        except Exception as exc:  # noqa: BLE001 - e.g. speed at or above the wave speed
+            sec.warnings.append(f"{role} span: {exc}")
+            continue
+        freqs.append(f)
+        names += [f"{role} span mode {i + 1}" for i in range(len(f))]
+        rows += [[f"{role} span P{i + 1} (L = {L:.3f} m, running tension {T / 1e3:.3g} kN)", float(fi), "rad/s"]
+                 for i, fi in enumerate(f)]
+    sec.tables.append(Table("Free spans as axially moving strings: ω_n = nπc/L (1 − v²/c²), c² = S/(q cos β) "
+                            "(Wickert & Mote 1990; seed 003 eq. 1)", ["quantity", "value", "unit"], rows))
+    if not freqs:
+        return sec
+    exc = excitation_frequencies(omega, ratio=ratio, teeth=teeth, link_chain=link_chain)
+    check = resonance_check(np.concatenate(freqs), exc)
+    _check_table(sec, check, names)
+    bad = [r for r in check.rows() if not r["ok"]]
+    for r in bad:
+        sec.warnings.append(f"{names[r['mode'] - 1]} ({r['natural_frequency']:.4g} rad/s) lies in the band "
+                            f"0.7…1.4 of the {r['excitation']} excitation ({r['exciting_frequency']:.4g} rad/s)")
+    sec.checks.append(Check("free-span pairs inside the band 0.7 ≤ P/ω ≤ 1.4", len(bad), "info", "pairs", None,
+                            "seed 003 criterion applied to free spans (information)"))
+    sec.results["free_spans"] = {"frequencies": np.concatenate(freqs), "modes": names, "check": check.rows()}
+    return sec
+
+
+def _check_table(sec: Section, check, names=None) -> None:
+    sec.tables.append(Table(
+        "Resonance check 0.7 ≤ P_i/ω_j ≤ 1.4 forbidden (seed 003); margin = max(r/1.4 − 1, 1 − r/0.7)",
+        ["mode", "excitation", "P [rad/s]", "ω [rad/s]", "ratio P/ω", "margin", "ok"],
+        [[names[r["mode"] - 1] if names else r["mode"], r["excitation"], r["natural_frequency"],
+          r["exciting_frequency"], r["ratio"], r["margin"], r["ok"]] for r in check.rows()],
+    ))
+
+
 # --------------------------------------------------------------------------- geometry
 @step("geometry", "Wheel geometry")
 def geometry(ctx: AnalysisContext) -> Section | None:
