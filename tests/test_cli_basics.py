@@ -19,3 +19,11 @@ def test_demo_writes_output(tmp_path, capsys):
 
 def test_unknown_command_is_exit_2(capsys):
     assert main(["no-such-command"]) == 2
+
+
+def test_warnings_are_one_line_on_stderr(capsys):
+    # a skew beyond the measured range of seed 004 warns; the CLI prints it as one line
+    assert main(["contact", "--chain", "16B", "--load", "5 kN", "--skew", "5 deg"]) == 0
+    err = capsys.readouterr().err
+    assert "warning: max_skew" in err
+    assert "Traceback" not in err and ".py:" not in err

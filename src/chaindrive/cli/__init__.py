@@ -37,8 +37,16 @@ for _topic in TOPICS:
             raise
 
 
+def _show_warning(message, category, filename, lineno, file=None, line=None):  # noqa: ARG001
+    """Print a warning as one line ``warning: ...`` on stderr (no source line)."""
+    print(f"warning: {message}", file=sys.stderr if file is None else file)
+
+
 def main(argv: list[str] | None = None) -> int:
     """Entry point of the ``chaindrive`` command; returns the exit code."""
+    import warnings
+
+    warnings.showwarning = _show_warning
     try:
         rv = app(args=argv, prog_name="chaindrive", standalone_mode=False)
     except ChainDriveError as exc:
