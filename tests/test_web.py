@@ -51,3 +51,19 @@ def test_bad_input_is_422_with_message(client, params, match):
     r = client.get("/api/kinematics", params=params)
     assert r.status_code == 422
     assert match in r.json()["error"]
+
+
+def test_analyze_page_returns_report(client):
+    from pathlib import Path
+
+    text = (Path(__file__).parents[1] / "examples" / "roller_industrial.toml").read_text()
+    r = client.post("/analyze", data={"project": text})
+    assert r.status_code == 200 and "Overall verdict" in r.text
+    r = client.post("/api/analyze", data={"project": text})
+    assert r.status_code == 200 and r.json()["passed"] is True
+
+
+def test_analyze_bad_project_names_field_and_line(client):
+    r = client.post("/api/analyze", data={"project": '[drive]\nspeed = "5 kg"\n'})
+    assert r.status_code == 422
+    assert "drive.toml:2" in r.json()["error"] and "speed" in r.json()["error"]
