@@ -135,18 +135,22 @@ def create_app():
                    for e in ("free", "chordal", "tangential")}
         fig = kinematics_plot(results)
         png = _png(fig)
-        keys = list(next(iter(results.values())).summary)
+        keys = [k for k in ("v_mean", "v_min", "v_max", "nonuniformity", "a_min", "a_max",
+                             "sign_change_at_period_end", "transverse_throw")
+                if k in next(iter(results.values())).summary]
         rows = "".join(
             "<tr><td>{}</td>{}</tr>".format(
                 e, "".join(f"<td>{_fmt(r.summary[k])}</td>" for k in keys)
             )
             for e, r in results.items()
         )
-        table = "<table><tr><th>entry</th>" + "".join(f"<th>{k}</th>" for k in keys) + "</tr>" + rows + "</table>"
+        units = {"v_mean": "m/s", "v_min": "m/s", "v_max": "m/s", "nonuniformity": "-", "a_min": "m/s²",
+                 "a_max": "m/s²", "sign_change_at_period_end": "", "transverse_throw": "m"}
+        table = ("<table><tr><th>entry</th>" + "".join(f"<th>{k} [{units[k]}]</th>" if units[k] else f"<th>{k}</th>" for k in keys)
+                 + "</tr>" + rows + "</table>")
         body = (
             _kin_form(_form_defaults(chain=chain, teeth=str(teeth), speed=speed, guide_end=guide_end, model=model))
             + f'<h2>Result: {html.escape(chain)}, z = {teeth}, {html.escape(speed)}, l = {html.escape(guide_end)}</h2>'
-            + '<p class="hint">SI units: m/s, m/s², m.</p>'
             + table
             + f'<p><img style="max-width:100%" alt="velocity and acceleration" src="data:image/png;base64,{png}"></p>'
             + '<p><a href="/">back</a></p>'
