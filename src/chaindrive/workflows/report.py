@@ -53,7 +53,7 @@ class Figure:
     filename: str
 
     @classmethod
-    def from_matplotlib(cls, fig, caption: str, filename: str, dpi: int = 110) -> Figure:
+    def from_matplotlib(cls, fig, caption: str, filename: str, dpi: int = 100) -> Figure:
         buf = io.BytesIO()
         fig.savefig(buf, format="png", dpi=dpi, bbox_inches="tight")
         import matplotlib.pyplot as plt
