@@ -329,7 +329,7 @@ def vibration(ctx: AnalysisContext) -> Section | None:
         if not check.passed and sp["mass"] > 0 and sp["stiffness"] > 0:
             try:
                 prop = propose_safe_tensioner(span, (0.9 * omega, 1.1 * omega), ratio=ratio, teeth=teeth,
-                                              link_chain=link_chain, modes=3)
+                                              link_chain=link_chain, modes=3, points=121)
                 pd = prop.to_dict()
                 sec.paragraphs.append(
                     f"Nearest tensioner that is free of resonance over ±10 % of the speed (seed 003 check, "
