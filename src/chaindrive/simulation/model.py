@@ -188,6 +188,10 @@ class SimulationModel:
     pretension : float
         Slack-side tension the assembly aims at when it adjusts the last wheel's centre
         (drives without tensioner) [N].
+    prestrain : float
+        Strain of the links as placed on the path (their rest length is
+        ``pitch / (1 + prestrain)``): pretensions a chain between locked wheels by
+        ``EA · prestrain`` without moving any wheel (used for anchored spans), 0 <= ε < 0.01.
     """
 
     pitch: float
@@ -208,6 +212,7 @@ class SimulationModel:
     guide_stiffness: float = 2.0e8
     gravity: tuple[float, float] = (0.0, -9.81)
     pretension: float = 200.0
+    prestrain: float = 0.0
 
     def __post_init__(self):
         for name in ("pitch", "link_mass", "axial_stiffness", "roller_radius",
@@ -220,6 +225,8 @@ class SimulationModel:
         if self.roller_radius >= 0.5 * self.pitch:
             raise InputError(f"roller_radius must be < pitch/2 = {0.5 * self.pitch:g} m, "
                              f"got {self.roller_radius:g}")
+        if not 0.0 <= self.prestrain < 0.01:
+            raise InputError(f"prestrain must be in [0, 0.01), got {self.prestrain!r}")
         if self.tensioner is not None and not 0 <= self.tensioner.wheel < len(self.wheels):
             raise InputError(f"tensioner.wheel must be in 0..{len(self.wheels) - 1}")
 
