@@ -288,7 +288,10 @@ def integrate(pos, vel, force, work, tension, contact, ws, wp, gd, tab, par, t0,
                 fwy -= fy
             ws[w, S_TORQUE] = tq
             ws[w, S_SFORCE] = fwx * wp[w, W_DX] + fwy * wp[w, W_DY]
-        # guides: one-sided penalty contact of the roller with a line segment
+        # guides: one-sided penalty contact of the roller with a line segment whose end
+        # points act as corners (distance to the segment, clamped to its ends): a roller
+        # rolls round a guide's end instead of dropping off it, and a polyline of
+        # segments bent away from the chain is a continuous surface
         for g in range(ng):
             ax = gd[g, 0]
             ay = gd[g, 1]
@@ -300,25 +303,36 @@ def integrate(pos, vel, force, work, tension, contact, ws, wp, gd, tab, par, t0,
             for i in range(n):
                 rx = pos[i, 0] - ax
                 ry = pos[i, 1] - ay
+                h = rx * nx + ry * ny
+                if h < -rr or h >= rr:
+                    continue
                 s = rx * ux + ry * uy
                 if s < 0.0 or s > length:
-                    continue
-                h = rx * nx + ry * ny
-                pen = rr - h
-                if pen <= 0.0 or h < -rr:
-                    continue
-                vn = vel[i, 0] * nx + vel[i, 1] * ny
+                    es = s if s < 0.0 else s - length
+                    d2 = es * es + h * h
+                    if d2 >= rr * rr or d2 < 1e-24:
+                        continue
+                    d = math.sqrt(d2)
+                    pen = rr - d
+                    mx = (es * ux + h * nx) / d
+                    my = (es * uy + h * ny) / d
+                else:
+                    pen = rr - h
+                    mx = nx
+                    my = ny
+                vn = vel[i, 0] * mx + vel[i, 1] * my
                 fn = kg * pen - cg * vn
                 if fn < 0.0:
                     fn = 0.0
                 epot += 0.5 * kg * pen * pen
-                vt = vel[i, 0] * ux + vel[i, 1] * uy
+                # tangent (my, -mx): the segment direction on its face
+                vt = vel[i, 0] * my - vel[i, 1] * mx
                 ve = mu * fn * dtref * inv_m
                 if ve < veps:
                     ve = veps
                 ft = -mu * fn * _sat(vt / ve)
-                force[i, 0] += fn * nx + ft * ux
-                force[i, 1] += fn * ny + ft * uy
+                force[i, 0] += fn * mx + ft * my
+                force[i, 1] += fn * my - ft * mx
                 contact[i] += fn
         # record (state at time t, forces of this step)
         assembled = False
