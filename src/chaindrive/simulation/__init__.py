@@ -1,6 +1,9 @@
 """Planar dynamic simulation of a chain drive (point-mass pins, elastic links,
 penalty roller-tooth contact, guides, tensioner, gravity), compiled with numba.
 
+Roller chains on sprockets and round link chains on pocket wheels (links ``t + d`` and
+``t − d`` alternating, seats on the bi-regular polygon of seed 002 eq. (6)).
+
 See ``docs/simulation.md`` for the model, the integrator and the validation.
 """
 
@@ -11,9 +14,10 @@ from .model import (
     SimTensioner,
     SimulationModel,
     SimWheel,
+    link_example,
     roller_example,
 )
 from .run import SimulationResult, State, assemble, simulate
 
 __all__ = ["AXIAL_STIFFNESS_16B", "SimGuide", "SimTensioner", "SimulationModel", "SimWheel",
-           "roller_example", "model_from_drive", "SimulationResult", "State", "assemble", "simulate"]
+           "roller_example", "link_example", "model_from_drive", "SimulationResult", "State", "assemble", "simulate"]

@@ -13,7 +13,8 @@ contact : (N,) total normal contact force on each pin of the last step [N].
 ws : (W, 6) wheel state: theta, omega, slide s, slide sdot, contact torque, slide force.
 wp : (W, NWP) wheel parameters (column indices ``W_*`` below).
 gd : (G, 7) guides: ax, ay, ux, uy, nx, ny, length.
-tab : (W, zmax, 2) gap directions in the wheel frame (:func:`seat_table`).
+tab : (W, smax, 6) seat (gap) directions in the wheel frame and the cos/sin of the half
+    angles to the next and to the previous seat (:func:`seat_table`).
 par : parameter vector (indices ``P_*`` below).
 """
 
@@ -26,14 +27,19 @@ from numba import njit
 
 # wheel parameter columns
 W_CX, W_CY, W_R, W_Z, W_RS, W_CPSI, W_SPSI, W_HTIP, W_INERTIA, W_MODE, W_OMEGA0, W_RAMP, \
-    W_TORQUE, W_DAMP, W_SLIDE, W_DX, W_DY, W_SMASS, W_SK, W_SC, W_SF = range(21)
-NWP = 21
+    W_TORQUE, W_DAMP, W_SLIDE, W_DX, W_DY, W_SMASS, W_SK, W_SC, W_SF, W_NSEAT, W_DA, W_DB \
+    = range(24)
+NWP = 24
+# W_NSEAT: number of seats per turn (z for a sprocket, 2z for a pocket wheel); W_DA, W_DB:
+# central angles [rad] spanned by an even link (pins 2k, 2k+1) and an odd link when seated
 # wheel state columns
 S_THETA, S_OMEGA, S_S, S_SDOT, S_TORQUE, S_SFORCE = range(6)
 # parameter vector
 P_MASS, P_K, P_C, P_PITCH, P_RROLLER, P_KC, P_CC, P_MU, P_VEPS, P_GX, P_GY, P_DT, P_CGLOB, \
-    P_KG, P_CG, P_DTREF = range(16)
-NPAR = 16
+    P_KG, P_CG, P_DTREF, P_PITCH2 = range(17)
+NPAR = 17
+# P_PITCH: rest length of the even links (i = 0, 2, ...); P_PITCH2: of the odd links
+# (equal for a roller chain; t + d and t - d for a round link chain)
 # wheel modes
 MODE_SPEED, MODE_FREE, MODE_LOCKED = 0, 1, 2
 
@@ -82,6 +88,7 @@ def integrate(pos, vel, force, work, tension, contact, ws, wp, gd, tab, par, t0,
     k = par[P_K]
     c = par[P_C]
     p = par[P_PITCH]
+    p2 = par[P_PITCH2]
     rr = par[P_RROLLER]
     kc = par[P_KC]
     cc = par[P_CC]
@@ -127,7 +134,7 @@ def integrate(pos, vel, force, work, tension, contact, ws, wp, gd, tab, par, t0,
             il = 1.0 / ll
             ux = dx * il
             uy = dy * il
-            dl = ll - p
+            dl = ll - (p if (i & 1) == 0 else p2)
             ldot = (vel[j, 0] - vel[i, 0]) * ux + (vel[j, 1] - vel[i, 1]) * uy
             tt = k * dl + c * ldot
             tension[i] = tt
@@ -158,7 +165,7 @@ def integrate(pos, vel, force, work, tension, contact, ws, wp, gd, tab, par, t0,
             om = ws[w, S_OMEGA]
             sd = ws[w, S_SDOT]
             rad = wp[w, W_R]
-            z = wp[w, W_Z]
+            nseat = wp[w, W_NSEAT]
             delta = wp[w, W_RS] - rr
             cps = wp[w, W_CPSI]
             sps = wp[w, W_SPSI]
@@ -169,10 +176,8 @@ def integrate(pos, vel, force, work, tension, contact, ws, wp, gd, tab, par, t0,
                 rin = 0.0
             rout2 = rout * rout
             rin2 = rin * rin
-            pitch_angle = twopi / z
-            iz = int(z)
-            cpz = math.cos(math.pi / z)
-            spz = math.sin(math.pi / z)
+            pitch_angle = twopi / nseat
+            iz = int(nseat)
             cth = math.cos(theta)
             sth = math.sin(theta)
             # tooth corner (in roller-centre coordinates a, |b|): end of the flank at the
@@ -209,8 +214,9 @@ def integrate(pos, vel, force, work, tension, contact, ws, wp, gd, tab, par, t0,
                 qxw = qx * cth + qy * sth
                 qyw = -qx * sth + qy * cth
                 # gap of the last step, moved by whole gaps while the pin lies beyond
-                # the half-pitch boundary (b cos(π/z) > a sin(π/z)); a fresh pin
-                # gets its gap from the cheap atan2
+                # the boundary half-way to the next (previous) seat, at the half central
+                # angle h: b cos h > a sin h; a fresh pin gets its gap from the cheap
+                # atan2 (mean spacing; the walk corrects it on a bi-regular wheel)
                 g = gcache[w, i]
                 if g < 0:
                     g = int(math.floor(_fast_atan2(qyw, qxw) / pitch_angle + 0.5))
@@ -223,9 +229,9 @@ def integrate(pos, vel, force, work, tension, contact, ws, wp, gd, tab, par, t0,
                     ey = tab[w, g, 1]
                     ar = qxw * ex + qyw * ey
                     bt = -qxw * ey + qyw * ex
-                    if bt * cpz > ar * spz:
+                    if bt * tab[w, g, 2] > ar * tab[w, g, 3]:
                         g = g + 1 if g + 1 < iz else 0
-                    elif -bt * cpz > ar * spz:
+                    elif -bt * tab[w, g, 4] > ar * tab[w, g, 5]:
                         g = g - 1 if g > 0 else iz - 1
                     else:
                         break
@@ -351,7 +357,7 @@ def integrate(pos, vel, force, work, tension, contact, ws, wp, gd, tab, par, t0,
                 j = i + 1 if i + 1 < n else 0
                 ddx = pos[j, 0] - pos[i, 0]
                 ddy = pos[j, 1] - pos[i, 1]
-                dl = math.sqrt(ddx * ddx + ddy * ddy) - p
+                dl = math.sqrt(ddx * ddx + ddy * ddy) - (p if (i & 1) == 0 else p2)
                 epot += 0.5 * k * dl * dl
                 vx = vel[i, 0] + hm * force[i, 0]
                 vy = vel[i, 1] + hm * force[i, 1]
@@ -447,13 +453,34 @@ def integrate(pos, vel, force, work, tension, contact, ws, wp, gd, tab, par, t0,
 
 
 def seat_table(wp):
-    """(W, zmax, 2) unit vectors of the tooth-gap centres in each wheel's frame."""
-    zs = wp[:, W_Z].astype(np.int64)
-    tab = np.zeros((len(zs), int(zs.max()), 2))
-    for w, z in enumerate(zs):
-        a = 2 * np.pi * np.arange(z) / z
-        tab[w, :z, 0] = np.cos(a)
-        tab[w, :z, 1] = np.sin(a)
+    """(W, smax, 6) seat table of each wheel, in the wheel frame.
+
+    Columns: unit vector of seat ``g`` (tooth-gap or pocket-hinge centre direction),
+    then ``cos h``, ``sin h`` of the half central angle to seat ``g + 1`` and to seat
+    ``g - 1``. Seat 0 lies at angle 0; seat ``g`` is followed by the central angle
+    ``W_DA`` (``g`` even) or ``W_DB`` (``g`` odd). A sprocket (``W_DA = W_DB = 2π/z``)
+    has the regular spacing ``2πg/z`` and half angles ``π/z``; a pocket wheel the
+    bi-regular vertices of seed 002 eq. (6) (``δ1``, ``δ2`` alternating).
+    """
+    ns = wp[:, W_NSEAT].astype(np.int64)
+    tab = np.zeros((len(ns), int(ns.max()), 6))
+    for w, n in enumerate(ns):
+        da, db = float(wp[w, W_DA]), float(wp[w, W_DB])
+        if da == db:
+            a = 2 * np.pi * np.arange(n) / n
+            hn = hp = np.full(n, math.pi / n)
+        else:
+            steps = np.where(np.arange(n) % 2 == 0, da, db)
+            a = np.concatenate([[0.0], np.cumsum(steps[:-1])])
+            hn = 0.5 * steps
+            hp = 0.5 * np.roll(steps, 1)
+        tab[w, :n, 0] = np.cos(a)
+        tab[w, :n, 1] = np.sin(a)
+        # scalar math.cos/sin: the same values the kernel computed inline before
+        tab[w, :n, 2] = [math.cos(h) for h in hn]
+        tab[w, :n, 3] = [math.sin(h) for h in hn]
+        tab[w, :n, 4] = [math.cos(h) for h in hp]
+        tab[w, :n, 5] = [math.sin(h) for h in hp]
     return tab
 
 

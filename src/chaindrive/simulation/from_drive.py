@@ -5,7 +5,13 @@ from __future__ import annotations
 import math
 
 from ..errors import InputError
-from .model import AXIAL_STIFFNESS_16B, SimTensioner, SimulationModel, SimWheel
+from .model import (
+    AXIAL_STIFFNESS_16B,
+    SimTensioner,
+    SimulationModel,
+    SimWheel,
+    link_chain_axial_stiffness,
+)
 
 __all__ = ["model_from_drive"]
 
@@ -17,8 +23,13 @@ def _disc_inertia(radius: float, thickness: float = 0.02, density: float = 7800.
 
 def model_from_drive(drive, *, ramp_time: float = 0.2, axial_stiffness: float | None = None,
                      **kwargs) -> SimulationModel:
-    """Simulation model of a project drive (roller chains, toothed wheels).
+    """Simulation model of a project drive (roller or round link chain, toothed wheels).
 
+    Roller chains run on sprockets; a round link chain (DIN 22252, ``bar_diameter`` in
+    the catalogue) on pocket wheels (every toothed wheel of the drive is then a pocket
+    wheel with ``teeth`` pockets; pitch radius seed 002 eq. (6); ``EA`` from
+    :func:`~chaindrive.simulation.model.link_chain_axial_stiffness`). The drive's guides
+    are not simulated (guided entry is not validated yet, see docs/simulation.md).
     The driving wheel becomes wheel 0 at the drive's speed (ramped over ``ramp_time``
     [s]); the load torque ``T z_j / z_0`` acts on the first other non-tensioner wheel;
     wheel inertias are 20 mm steel discs at the pitch radius; the slack tension of
@@ -41,14 +52,35 @@ def model_from_drive(drive, *, ramp_time: float = 0.2, axial_stiffness: float | 
     >>> m = model_from_drive(parse_project(template("roller")))
     >>> m.wheels[0].mode
     'speed'
+
+    Raises
+    ------
+    InputError
+        Chain family not simulated, a link chain without ``bar_diameter``, a sprocket on a
+        link chain, an odd number of round links, toothless or outside idlers.
     """
     chain = drive.chain
-    if not getattr(chain, "is_roller_chain", False):
-        raise InputError("simulation: only roller chains are supported so far "
-                         f"(chain {chain.name!r} is a {chain.family} chain)")
+    link = bool(getattr(chain, "is_link_chain", False))
+    if not link and not getattr(chain, "is_roller_chain", False):
+        raise InputError("simulation: roller chains (ISO 606, ANSI) and round link chains "
+                         f"(DIN 22252) are supported; chain {chain.name!r} is a "
+                         f"{chain.family} chain")
     p = float(chain.pitch)
+    bar = None
+    if link:
+        bar = getattr(chain, "bar_diameter", None)
+        if bar is None:
+            raise InputError(f"simulation: round link chain {chain.name!r} has no bar_diameter "
+                             "in the catalogue; it is needed for the pocket-wheel polygon")
+        bar = float(bar)
+    elif getattr(chain, "roller_diameter", None) is None:
+        raise InputError(f"simulation: roller chain {chain.name!r} has no roller_diameter")
     wheels = list(drive.wheels)
     for w in wheels:
+        if link and w.teeth is not None and w.kind == "sprocket":
+            raise InputError(f"simulation: wheel {w.name!r} is a sprocket but the chain "
+                             f"{chain.name!r} is a round link chain (use kind = "
+                             "\"pocket_wheel\" or a pocket idler)")
         if w.teeth is None:
             raise InputError(f"simulation: wheel {w.name!r} has no teeth; toothless idlers are "
                              "not supported yet")
@@ -66,7 +98,7 @@ def model_from_drive(drive, *, ramp_time: float = 0.2, axial_stiffness: float | 
     load_idx = next(i for i, w in enumerate(wheels) if i > 0 and w.name != tens_name)
     sim_wheels = []
     for i, w in enumerate(wheels):
-        r = p / (2 * math.sin(math.pi / w.teeth))
+        r = w.pitch_radius(chain) if link else p / (2 * math.sin(math.pi / w.teeth))
         centre = (w.position[0], sign * w.position[1])
         if i == 0:
             sw = SimWheel(centre, w.teeth, _disc_inertia(r), "speed", float(drive.speed),
@@ -84,13 +116,22 @@ def model_from_drive(drive, *, ramp_time: float = 0.2, axial_stiffness: float | 
                             damping=0.2 * 2 * math.sqrt(float(t.stiffness) * float(t.mass)),
                             preload=float(t.force or 0.0))
     links = drive.links if drive.links is not None else drive.layout().links
+    if link and int(links) % 2:
+        raise InputError(f"simulation: a round link chain needs an even number of links, the "
+                         f"drive has {int(links)} (set links = {int(links) + 1} in the project)")
     try:
         slack = float(drive.tensions().slack)
     except Exception:  # noqa: BLE001 - a pretension guess is enough for the assembly
         slack = 200.0
-    ea = axial_stiffness if axial_stiffness is not None else AXIAL_STIFFNESS_16B * (p / 0.0254) ** 2
+    if axial_stiffness is not None:
+        ea = axial_stiffness
+    elif link:
+        ea = link_chain_axial_stiffness(bar)
+    else:
+        ea = AXIAL_STIFFNESS_16B * (p / 0.0254) ** 2
+    radius = 0.5 * bar if link else 0.5 * float(chain.roller_diameter)
     opts = dict(pitch=p, links=int(links), link_mass=float(chain.mass_per_length) * p,
-                axial_stiffness=ea, roller_radius=0.5 * float(chain.roller_diameter),
+                axial_stiffness=ea, roller_radius=radius, bar_diameter=bar,
                 wheels=sim_wheels, tensioner=tens, pretension=max(slack, 1.0))
     opts.update(kwargs)
     return SimulationModel(**opts)

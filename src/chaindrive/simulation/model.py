@@ -21,10 +21,23 @@ continuous with a continuous normal across the arc/flank boundary; contact acts 
 ``a < h_a``. Force: ``F_n = max(0, k_c g + c_c \dot g)``, friction
 ``F_t = −μ F_n \tanh(v_t / v_ε)`` (regularised Coulomb).
 
+Round link chains (``bar_diameter`` given) on pocket wheels: the pins are the hinge
+points (centre of the horizontal link's end bar, where it interlocks with the vertical
+link); the links alternate the rest lengths ``t + d`` (even links, horizontal, lying in
+a pocket) and ``t − d`` (odd links, vertical); seated, the hinges are the vertices of
+the bi-regular polygon of seed 002 eq. (6) (pitch radius ``R``, central angles ``δ1``,
+``δ2``, ``δ1 + δ2 = 2π/z`` for ``z`` pockets). Each hinge has a seat of the same
+arc-and-flank form: arc ``r_s = 0.505 d`` round the hinge (the pocket's end arc of
+radius ``d/2 + c`` in :mod:`chaindrive.geometry.pocket_wheel`, ``c = 0.005 d``), flanks
+at ``ψ_s = 90° − max(δ1/2 + h_a/(2(t+d)), δ2/2 + h_a/(2(t−d)))`` up to
+``h_a = d/2`` (the tip circle ``R + d/2`` of :class:`~chaindrive.geometry.PocketWheel`).
+See :func:`link_seat_profile` for the reasoning and the simplifications.
+
 References
 ----------
 ISO 606:2015, clause 8.3 (tooth form: seating radius ``r_i = 0.505 d_1``, roller
 seating angle ``α = 140° − 90°/z`` max, tip diameter range).
+Seed 002, eqs (6)-(9) (bi-regular polygon of a round link chain on a pocket wheel).
 """
 
 from __future__ import annotations
@@ -38,6 +51,7 @@ from .._validation import check_positive
 from ..errors import InputError
 
 __all__ = ["SimWheel", "SimTensioner", "SimGuide", "SimulationModel", "roller_example",
+           "link_example", "link_seat_profile", "link_chain_axial_stiffness",
            "AXIAL_STIFFNESS_16B"]
 
 #: Axial stiffness ``EA`` [N] of an ISO 606 16B roller-chain link, order-of-magnitude
@@ -48,6 +62,113 @@ __all__ = ["SimWheel", "SimTensioner", "SimGuide", "SimulationModel", "roller_ex
 #: rollers as mass particles, links as spring-dampers). Pass ``axial_stiffness=`` to
 #: use a measured value.
 AXIAL_STIFFNESS_16B = 1.0e8
+
+#: Axial stiffness of a studless round link chain per bar diameter squared [N/m²]:
+#: ``EA = 0.854e11 d²`` (OrcaFlex manual, "Chain" line type, after Puech 1984: 0.854e8 d²
+#: kN with d in m); DNV-OS-E301's effective modulus of R3 studless chain,
+#: ``E ≈ 5.4e10 Pa`` on the two legs' section ``2 π d²/4``, gives the same within 1 %.
+#: Those are *mooring* chains (link length ≈ 6 d); mining chains (DIN 22252, t ≈ 3.5 d)
+#: are shorter links and probably somewhat stiffer: not checked against a measurement.
+AXIAL_STIFFNESS_LINK_PER_D2 = 0.854e11
+
+
+def link_chain_axial_stiffness(bar_diameter: float) -> float:
+    """Axial stiffness ``EA = 0.854e11 d²`` [N] of a round link chain (order of magnitude).
+
+    Parameters
+    ----------
+    bar_diameter : float
+        Bar diameter ``d`` [m].
+
+    Returns
+    -------
+    float
+        ``EA`` [N].
+
+    Notes
+    -----
+    Studless mooring-chain value (OrcaFlex manual, "Chain"; Puech 1984; DNV-OS-E301
+    effective modulus); for short-link mining chains only an order of magnitude.
+
+    Examples
+    --------
+    >>> round(link_chain_axial_stiffness(0.018) / 1e7, 3)
+    2.767
+    """
+    check_positive("bar_diameter", bar_diameter)
+    return AXIAL_STIFFNESS_LINK_PER_D2 * bar_diameter**2
+
+
+def link_seat_profile(pitch: float, bar_diameter: float, teeth: int,
+                      tip_height: float | None = None):
+    r"""Flank angle ``ψ_s`` [rad] and tip height ``h_a`` [m] of the pocket-wheel seats.
+
+    Every hinge of a round link chain on a pocket wheel gets the symmetric arc-and-flank
+    seat of the sprocket model, with
+
+    .. math::
+        h_a = rac d2,\qquad
+        ψ_s = rac\pi2 - \max\left(rac{δ_1}2 + rac{h_a}{2(t+d)},                                    rac{δ_2}2 + rac{h_a}{2(t-d)}
+ight)
+
+    Parameters
+    ----------
+    pitch : float
+        Inner link length ``t`` [m].
+    bar_diameter : float
+        Bar diameter ``d`` [m], ``0 < d < t/2``.
+    teeth : int
+        Number of pockets ``z >= 3``.
+    tip_height : float, optional
+        ``h_a`` [m]; default ``d/2``.
+
+    Returns
+    -------
+    psi, tip_height : float
+        Half seating angle ``ψ_s`` [rad] and ``h_a`` [m].
+
+    Notes
+    -----
+    Geometry of :class:`chaindrive.geometry.PocketWheel`: each horizontal link lies in a
+    pocket whose floor ends in arcs of radius ``d/2 + c`` round the two hinges, and the
+    pocket walls run parallel to the pocket axis up to the tip circle ``R + d/2``. So
+    ``h_a = d/2`` (the tip flush with the top of the bar at the hinge) and the seat arc
+    is ``r_s = d/2 + c`` (``c = 0.005 d`` by default, as ISO 606's ``0.505 d_1``).
+
+    The real seat of a hinge is *asymmetric*: the pocket floor on the side of the pocket
+    centre, the wall (parallel to the pocket axis, i.e. inclined by ``δ1/2`` to the
+    hinge's radius) on the other; the horizontal link is held tangentially by the two
+    walls of its pocket. The planar point-hinge model uses the symmetric sprocket profile
+    instead (one formula for both chain types); its flanks must let a hinge in and out
+    along the paths of the rigid kinematics, i.e. turning about either neighbouring
+    hinge: such a path starts inclined by ``δ/2`` to the hinge's radius (``δ`` of the
+    link it turns with) and, being a circle of radius ``t ± d`` about the neighbour, its
+    secant up to the height ``h_a`` is inclined by about ``h_a/(2(t ± d))`` more. The
+    flank angle above is the steepest that clears both paths up to the tip; for 18x64 on
+    8 pockets ``ψ_s ≈ 72.4°`` (flanks 17.6° from the radius, the real wall 14.5°).
+    Simplifications, stated plainly: symmetric seats at every hinge (the real pocket
+    has a wall on one side of each hinge only, the floor on the other), the links as
+    point-to-point springs (no link shape, no contact of the vertical links with the
+    slot or the tooth tops, no out-of-plane motion).
+
+    References
+    ----------
+    Seed 002, eqs (6)-(9) (``R``, ``δ1``, ``δ2``); pocket geometry as in
+    :mod:`chaindrive.geometry.pocket_wheel`.
+
+    Examples
+    --------
+    >>> psi, h = link_seat_profile(0.064, 0.018, 8)
+    >>> round(math.degrees(psi), 2), h
+    (72.4, 0.009)
+    """
+    from ..geometry.polygon import link_chain_central_angles
+
+    t, d = float(pitch), float(bar_diameter)
+    d1, d2 = (float(v) for v in link_chain_central_angles(t, d, teeth))
+    h = 0.5 * d if tip_height is None else float(tip_height)
+    tilt = max(0.5 * d1 + h / (2 * (t + d)), 0.5 * d2 + h / (2 * (t - d)))
+    return 0.5 * math.pi - tilt, h
 
 _MODES = ("speed", "torque", "free")
 
@@ -150,22 +271,27 @@ class SimulationModel:
 
     The chain is a closed loop of ``links`` point-mass pins (hinge centres, each
     carrying one link's mass ``link_mass``) joined by axial spring-dampers; wheels in
-    the order the chain passes them, counter-clockwise around the loop.
+    the order the chain passes them, counter-clockwise around the loop. A roller chain
+    by default; a round link chain on pocket wheels when ``bar_diameter`` is given
+    (links alternate the rest lengths ``t + d``, ``t − d``; seats at the vertices of the
+    bi-regular polygon of seed 002 eq. (6)).
 
     Parameters
     ----------
     pitch : float
-        Chain pitch [m].
+        Chain pitch [m]; for a round link chain the inner link length ``t``.
     links : int
-        Number of links (pins) in the closed loop.
+        Number of links (pins) in the closed loop; even for a round link chain.
     link_mass : float
-        Mass of one link (``q p``) [kg].
+        Mass of one link (``q p``, round link chain ``q t``) [kg].
     axial_stiffness : float
-        ``EA`` of the chain [N]; a link's spring is ``k = EA / p``.
+        ``EA`` of the chain [N]; a link's spring is ``k = EA / p`` (round link chain:
+        ``EA / t`` for both kinds of link — each segment is one physical link).
     link_damping_ratio : float
         Damping ratio of one link's axial oscillator (``c = 2ζ sqrt(k m)``).
     roller_radius : float
-        Roller (or bearing pin) radius [m].
+        Roller (or bearing pin) radius [m]; for a round link chain the bar radius
+        ``d/2`` (the horizontal link's end bar seated round the hinge).
     wheels : list of SimWheel
     contact_stiffness : float
         Roller-tooth penalty stiffness [N/m].
@@ -176,9 +302,11 @@ class SimulationModel:
     friction_velocity : float
         Regularisation velocity ``v_ε`` of the friction law [m/s].
     seat_radius : float or None
-        Tooth seating radius [m]; default ISO 606 ``0.505 d_1``.
+        Tooth seating radius [m]; default ISO 606 ``0.505 d_1`` (round link chain:
+        ``0.505 d``, the pocket's end arc with a clearance of ``0.005 d``).
     tip_height : float or None
-        Tooth tip above the pitch circle [m]; default the middle of the ISO 606 range.
+        Tooth tip above the pitch circle [m]; default the middle of the ISO 606 range
+        (round link chain: ``d/2``, see :func:`link_seat_profile`).
     tensioner : SimTensioner or None
     guides : list of SimGuide
     guide_stiffness : float
@@ -192,6 +320,9 @@ class SimulationModel:
         Strain of the links as placed on the path (their rest length is
         ``pitch / (1 + prestrain)``): pretensions a chain between locked wheels by
         ``EA · prestrain`` without moving any wheel (used for anchored spans), 0 <= ε < 0.01.
+    bar_diameter : float or None
+        Round link chain: bar diameter ``d`` [m], ``0 < d < t/2`` (``None``: roller
+        chain). The wheels are then pocket wheels with ``teeth`` pockets.
     """
 
     pitch: float
@@ -213,6 +344,7 @@ class SimulationModel:
     gravity: tuple[float, float] = (0.0, -9.81)
     pretension: float = 200.0
     prestrain: float = 0.0
+    bar_diameter: float | None = None
 
     def __post_init__(self):
         for name in ("pitch", "link_mass", "axial_stiffness", "roller_radius",
@@ -225,12 +357,63 @@ class SimulationModel:
         if self.roller_radius >= 0.5 * self.pitch:
             raise InputError(f"roller_radius must be < pitch/2 = {0.5 * self.pitch:g} m, "
                              f"got {self.roller_radius:g}")
+        if self.bar_diameter is not None:
+            check_positive("bar_diameter", self.bar_diameter)
+            if self.bar_diameter >= 0.5 * self.pitch:
+                raise InputError("bar_diameter must lie in (0, pitch/2) = "
+                                 f"(0, {0.5 * self.pitch:g}) m for a round link chain, got "
+                                 f"{self.bar_diameter:g}")
+            if self.links % 2:
+                raise InputError("a round link chain needs an even number of links "
+                                 f"(horizontal and vertical alternate), got links = {self.links}")
+            if self.roller_radius >= 0.5 * (self.pitch - self.bar_diameter):
+                raise InputError("roller_radius (contact radius of a hinge) must be < (t - d)/2 "
+                                 f"= {0.5 * (self.pitch - self.bar_diameter):g} m, got "
+                                 f"{self.roller_radius:g}")
         if not 0.0 <= self.prestrain < 0.01:
             raise InputError(f"prestrain must be in [0, 0.01), got {self.prestrain!r}")
         if self.tensioner is not None and not 0 <= self.tensioner.wheel < len(self.wheels):
             raise InputError(f"tensioner.wheel must be in 0..{len(self.wheels) - 1}")
 
     # derived quantities -------------------------------------------------------------
+    @property
+    def is_link_chain(self) -> bool:
+        """True for a round link chain on pocket wheels (``bar_diameter`` given)."""
+        return self.bar_diameter is not None
+
+    @property
+    def link_lengths(self) -> tuple[float, float]:
+        """Rest lengths [m] of the even and the odd links as placed: ``(p, p)`` or ``(t + d, t − d)``."""
+        if self.bar_diameter is None:
+            return self.pitch, self.pitch
+        return self.pitch + self.bar_diameter, self.pitch - self.bar_diameter
+
+    def seats_per_turn(self, teeth: int) -> int:
+        """Seated links per turn of a wheel: ``z`` (sprocket) or ``2z`` (pocket wheel)."""
+        return 2 * int(teeth) if self.is_link_chain else int(teeth)
+
+    def central_angles(self, teeth: int) -> tuple[float, float]:
+        """Central angles [rad] of a seated even and odd link: ``2π/z`` each, or ``δ1``, ``δ2``.
+
+        Round link chain: seed 002 eqs (7)-(9), ``δ1 + δ2 = 2π/z``.
+        """
+        if self.bar_diameter is None:
+            a = 2.0 * math.pi / teeth
+            return a, a
+        from ..geometry.polygon import link_chain_central_angles
+
+        d1, d2 = link_chain_central_angles(self.pitch, self.bar_diameter, teeth)
+        return float(d1), float(d2)
+
+    def seat_angle(self, teeth: int) -> float:
+        """Half seating angle ``ψ_s`` [rad] of the seat/flank profile.
+
+        Sprocket: ``70° − 45°/z`` (ISO 606); pocket wheel: :func:`link_seat_profile`.
+        """
+        if self.bar_diameter is None:
+            return math.radians(70.0 - 45.0 / teeth)
+        return link_seat_profile(self.pitch, self.bar_diameter, teeth, self.tip(teeth))[0]
+
     @property
     def link_stiffness(self) -> float:
         """``k = EA / p`` [N/m]."""
@@ -255,11 +438,18 @@ class SimulationModel:
         """Tip height above the pitch circle [m] (mid ISO 606 range: ``(p(1.125 − 0.8/z) − d_1)/2``)."""
         if self.tip_height is not None:
             return self.tip_height
+        if self.bar_diameter is not None:
+            return 0.5 * self.bar_diameter
         return 0.5 * (self.pitch * (1.125 - 0.8 / teeth) - 2.0 * self.roller_radius)
 
     def pitch_radii(self) -> np.ndarray:
-        """Pitch radii of the wheels [m]."""
-        return np.array([w.pitch_radius(self.pitch) for w in self.wheels])
+        """Pitch radii of the wheels [m] (pocket wheels: seed 002 eq. (6))."""
+        if self.bar_diameter is None:
+            return np.array([w.pitch_radius(self.pitch) for w in self.wheels])
+        from ..geometry.polygon import link_chain_pitch_radius
+
+        return np.array([float(link_chain_pitch_radius(self.pitch, self.bar_diameter, w.teeth))
+                         for w in self.wheels])
 
     def omega_max(self) -> float:
         """Highest natural frequency of a pin [rad/s]: ``sqrt((4k + k_c)/m)``."""
@@ -307,6 +497,68 @@ def roller_example(*, chain: str = "16B", teeth: int = 17, links: int = 100,
     opts = dict(pitch=p, links=links, link_mass=ch.mass_per_length * p,
                 axial_stiffness=AXIAL_STIFFNESS_16B * (p / 0.0254) ** 2,
                 roller_radius=0.5 * ch.roller_diameter, wheels=wheels,
+                gravity=(0.0, -9.81) if gravity else (0.0, 0.0))
+    opts.update(kwargs)
+    return SimulationModel(**opts)
+
+
+def link_example(*, chain: str = "18x64", teeth: int = 8, links: int = 60,
+                 angular_velocity: float = 5.0, load_torque: float = 2000.0,
+                 ramp_time: float = 0.2, gravity: bool = True,
+                 **kwargs) -> SimulationModel:
+    """Round link chain on two equal pocket wheels, the driver (wheel 0) on the left.
+
+    The chain is a DIN 22252 round link chain from :func:`chaindrive.chains.get`
+    (inner link length ``t`` as ``pitch``, bar diameter ``d``); each wheel has ``teeth``
+    pockets (pitch radius of seed 002 eq. (6)). The wheels' centre distance starts at
+    ``(N − 2z)/2 · t`` (a half wrap holds ``z`` links) and is adjusted by the assembly
+    so that the loop of ``links`` links closes; the tight span is the upper one.
+    Wheel inertia: steel discs at the pitch radius, ``5 d`` thick. ``EA`` from
+    :func:`link_chain_axial_stiffness`; pretension 1 kN unless given.
+
+    Parameters
+    ----------
+    chain : str
+        Catalogue name of a round link chain (``family == "din22252"``).
+    teeth : int
+        Pockets per wheel ``z >= 3``.
+    links : int
+        Number of links (even).
+    angular_velocity : float
+        Driver speed [rad/s] (reached after ``ramp_time`` [s]).
+    load_torque : float
+        Load on the driven wheel [N m].
+    gravity : bool
+    **kwargs
+        Other :class:`SimulationModel` fields.
+
+    Examples
+    --------
+    >>> m = link_example()
+    >>> m.links, m.link_lengths, m.wheels[1].teeth
+    (60, (0.082, 0.046), 8)
+    >>> round(float(m.pitch_radii()[0]), 6)   # seed 002 eq. (6): 18x64, z = 8
+    0.164283
+    """
+    from .. import chains
+
+    ch = chains.get(chain)
+    if not getattr(ch, "is_link_chain", False) or ch.bar_diameter is None:
+        raise InputError(f"link_example needs a round link chain (DIN 22252, e.g. '18x64'), "
+                         f"got {chain!r} ({ch.family})")
+    t, d = float(ch.pitch), float(ch.bar_diameter)
+    from ..geometry.polygon import link_chain_pitch_radius
+
+    r_w = float(link_chain_pitch_radius(t, d, teeth))
+    a = 0.5 * (links - 2 * teeth) * t
+    inertia = 0.5 * 7800 * math.pi * r_w**4 * 5 * d
+    wheels = [
+        SimWheel((0.0, 0.0), teeth, inertia, "speed", angular_velocity, ramp_time, name="driver"),
+        SimWheel((a, 0.0), teeth, inertia, "free", torque=-load_torque, name="driven"),
+    ]
+    opts = dict(pitch=t, links=links, link_mass=ch.mass_per_length * t,
+                axial_stiffness=link_chain_axial_stiffness(d), roller_radius=0.5 * d,
+                bar_diameter=d, wheels=wheels, pretension=1000.0,
                 gravity=(0.0, -9.81) if gravity else (0.0, 0.0))
     opts.update(kwargs)
     return SimulationModel(**opts)

@@ -99,8 +99,8 @@ def _adjust(model: SimulationModel):
 
 def _place(model: SimulationModel):
     """Pin positions on the exact-length path, wheel angles, adjusting offset."""
-    from scipy.optimize import brentq
-
+    if model.is_link_chain:
+        return _place_link(model)
     p, n = model.pitch, model.links
     radii = model.pitch_radii()
     teeth = [w.teeth for w in model.wheels]
@@ -109,6 +109,14 @@ def _place(model: SimulationModel):
     def excess(s):
         pieces = _path(_centres(model, adj, d, s), radii, teeth, p)
         return sum(x[2] for x in pieces) - n * p
+
+    s0 = _solve_offset(excess, n, p, adj)
+    return _place_roller(model, p, n, radii, teeth, adj, d, s0)
+
+
+def _solve_offset(excess, n, p, adj):
+    """Offset of the adjusting wheel along its line that makes ``excess`` zero [m]."""
+    from scipy.optimize import brentq
 
     lo, hi = -0.2 * n * p, 0.2 * n * p
     try:
@@ -130,6 +138,10 @@ def _place(model: SimulationModel):
             raise InfeasibleError(f"no position of wheel {adj} fits a loop of {n} links")
         k0 = idx[np.argmin(np.abs(grid[idx]))]
         s0 = brentq(excess, grid[k0], grid[k0 + 1], xtol=1e-12)
+    return s0
+
+
+def _place_roller(model, p, n, radii, teeth, adj, d, s0):
     centres = _centres(model, adj, d, s0)
     pieces = _path(centres, radii, teeth, p)
     pos = np.zeros((n, 2))
@@ -155,6 +167,146 @@ def _place(model: SimulationModel):
     return pos, theta, centres, adj, d, s0, pieces
 
 
+def _hit(piece, centres, radii, wrap, point, length, after):
+    """Parameter of the first point of ``piece`` at distance ``length`` from ``point``.
+
+    Span: arc length ``s`` from its start; arc: angle from its entry (CCW). Only
+    parameters ``> after`` (and inside the piece) count; ``None`` if there is none.
+    """
+    kind, data, metric = piece
+    tol = 1e-12
+    if kind == "span":
+        q, u = data
+        w = point - q
+        b = float(w @ u)
+        disc = b * b - (float(w @ w) - length * length)
+        if disc < 0.0:
+            return None
+        s = b + math.sqrt(disc)
+        return s if after < s <= metric + tol else None
+    j, a_in = data
+    c, r = centres[j], radii[j]
+    dv = point - c
+    dist = math.hypot(*dv)
+    cosv = (dist * dist + r * r - length * length) / (2.0 * r * dist)
+    if abs(cosv) > 1.0:
+        return None
+    phi = math.atan2(dv[1], dv[0])
+    best = None
+    for sign in (1.0, -1.0):
+        rel = (phi + sign * math.acos(cosv) - a_in) % (2.0 * math.pi)
+        if rel > 2.0 * math.pi - 1e-9:
+            rel -= 2.0 * math.pi
+        if after < rel <= wrap[j] + tol and (best is None or rel < best):
+            best = rel
+    return best
+
+
+def _walk(centres, radii, pieces, wrap, lengths, n):
+    """Pins 0..n placed link by link (exact link lengths) along the path from wheel 0's exit.
+
+    Returns the positions (n + 1, 2), the piece index and parameter of each pin and the
+    closure: path coordinate of pin ``n`` minus the loop length (0 when it meets pin 0).
+    """
+    npc = len(pieces)
+    starts = np.cumsum([0.0] + [x[2] for x in pieces])
+    pos = np.zeros((n + 1, 2))
+    where = [(0, 0.0)]
+    pos[0] = pieces[0][1][0]
+    ip, par = 0, 0.0
+    for k in range(n):
+        length = lengths[k % 2]
+        after = par + 1e-12
+        for step in range(npc + 1):
+            piece = pieces[(ip + step) % npc]
+            hit = _hit(piece, centres, radii, wrap, pos[k], length, after if step == 0 else -1e-12)
+            if hit is not None:
+                ip, par = ip + step, hit
+                break
+        else:
+            raise InfeasibleError("a round link chain does not fit the path (a link longer "
+                                  "than a span and its neighbouring wrap?)")
+        kind, data, _ = pieces[ip % npc]
+        if kind == "span":
+            pos[k + 1] = data[0] + par * data[1]
+        else:
+            j, a_in = data
+            a = a_in + par
+            pos[k + 1] = centres[j] + radii[j] * np.array([math.cos(a), math.sin(a)])
+        where.append((ip, par))
+    ip, par = where[-1]
+    kind, data, metric = pieces[ip % npc]
+    frac = par / wrap[data[0]] if kind == "arc" else par / metric
+    coord = (ip // npc) * starts[-1] + starts[ip % npc] + frac * metric
+    return pos, where, coord - starts[-1]
+
+
+def _place_link(model: SimulationModel):
+    """Round link chain: pins on the bi-regular polygons and the spans, exact link lengths.
+
+    The adjusting offset is first found on the metric path (a wrap of angle ``γ`` holds
+    ``γ z/π`` links of mean length ``t``), then refined so that the chain placed link by
+    link (``t + d``, ``t − d`` alternating; seated pins on the polygon vertices, free pins
+    on the tangent lines) closes exactly (Brent's method).
+    """
+    from scipy.optimize import brentq
+
+    t, n = model.pitch, model.links
+    radii = model.pitch_radii()
+    nseat = [model.seats_per_turn(w.teeth) for w in model.wheels]
+    lengths = model.link_lengths
+    adj, d = _adjust(model)
+
+    def excess(s):
+        pieces = _path(_centres(model, adj, d, s), radii, nseat, t)
+        return sum(x[2] for x in pieces) - n * t
+
+    def layout(s):
+        centres = _centres(model, adj, d, s)
+        pieces = _path(centres, radii, nseat, t)
+        wrap = {x[1][0]: x[2] / t * 2 * math.pi / nseat[x[1][0]] for x in pieces if x[0] == "arc"}
+        return centres, pieces, wrap
+
+    def closure(s):
+        centres, pieces, wrap = layout(s)
+        return _walk(centres, radii, pieces, wrap, lengths, n)[2]
+
+    s0 = _solve_offset(excess, n, t, adj)
+    step = 0.25 * t
+    f0 = closure(s0)
+    s1 = s0
+    for _ in range(40):
+        # a longer path (larger offset) leaves pin n short of pin 0: closure falls with s
+        s1 = s1 - step if f0 < 0 else s1 + step
+        try:
+            f1 = closure(s1)
+        except InfeasibleError:
+            break
+        if f1 * f0 <= 0:
+            break
+    else:
+        f1 = f0
+    if f1 * f0 > 0:
+        raise InfeasibleError(f"no position of wheel {adj} closes a loop of {n} round links")
+    sc = brentq(closure, min(s0, s1), max(s0, s1), xtol=1e-13) if f0 != 0 else s0
+    centres, pieces, wrap = layout(sc)
+    pos, where, _ = _walk(centres, radii, pieces, wrap, lengths, n)
+    npc = len(pieces)
+    theta = np.full(len(model.wheels), np.nan)
+    # wheel 0: pin 0 (even seat 0) at its exit point
+    _, a0 = pieces[-1][1]
+    theta[0] = a0 + wrap[0]
+    for k, (ip, par) in enumerate(where[:n]):
+        kind, data, _ = pieces[ip % npc]
+        if kind == "arc" and np.isnan(theta[data[0]]):
+            j, a_in = data
+            # pin k sits on seat k mod 2 (seat 0 at angle 0, seat 1 at the even link's angle)
+            da = model.central_angles(model.wheels[j].teeth)[0]
+            theta[j] = a_in + par - (da if k % 2 else 0.0)
+    theta = np.where(np.isnan(theta), 0.0, theta)
+    return pos[:n].copy(), theta, centres, adj, d, sc, pieces
+
+
 # ---------------------------------------------------------------------------- kernel data
 def kernel_arrays(model: SimulationModel, dt: float | None = None):
     """Parameter vector and wheel/guide tables for the kernel (fresh arrays)."""
@@ -163,7 +315,9 @@ def kernel_arrays(model: SimulationModel, dt: float | None = None):
     par[K.P_MASS] = model.link_mass
     par[K.P_K] = model.link_stiffness
     par[K.P_C] = model.link_damping
-    par[K.P_PITCH] = model.pitch / (1.0 + model.prestrain)
+    lengths = model.link_lengths
+    par[K.P_PITCH] = lengths[0] / (1.0 + model.prestrain)
+    par[K.P_PITCH2] = lengths[1] / (1.0 + model.prestrain)
     par[K.P_RROLLER] = model.roller_radius
     par[K.P_KC] = model.contact_stiffness
     par[K.P_CC] = model.contact_damping
@@ -171,17 +325,25 @@ def kernel_arrays(model: SimulationModel, dt: float | None = None):
     par[K.P_VEPS] = model.friction_velocity
     par[K.P_GX], par[K.P_GY] = model.gravity
     par[K.P_DT] = dt
-    par[K.P_DTREF] = model.stable_time_step()
+    # friction slope cap m / dt_ref (see the kernel); round link chains: m / (2 dt_step).
+    # The cap m / dt_step makes the friction dead-beat on its own; with the link springs
+    # and link damping at the stable step the alternating mode of the seated pins then
+    # has an amplification < -1 (period-2 growth, seen when the seat forces are large,
+    # e.g. 12 kN pretension of the mining conveyor). Half the slope keeps it stable.
+    # Roller chains keep the original cap (results unchanged).
+    par[K.P_DTREF] = model.stable_time_step() * (2.0 if model.is_link_chain else 1.0)
     par[K.P_KG] = model.guide_stiffness
     par[K.P_CG] = 2.0 * model.contact_damping_ratio * math.sqrt(model.guide_stiffness * model.link_mass)
     nw = len(model.wheels)
     wp = np.zeros((nw, K.NWP))
-    psi = math.radians(70.0)
+    radii = model.pitch_radii()
     for i, w in enumerate(model.wheels):
-        psi = math.radians(70.0 - 45.0 / w.teeth)
+        psi = model.seat_angle(w.teeth)
         wp[i, K.W_CX], wp[i, K.W_CY] = w.centre
-        wp[i, K.W_R] = w.pitch_radius(model.pitch)
+        wp[i, K.W_R] = radii[i]
         wp[i, K.W_Z] = w.teeth
+        wp[i, K.W_NSEAT] = model.seats_per_turn(w.teeth)
+        wp[i, K.W_DA], wp[i, K.W_DB] = model.central_angles(w.teeth)
         wp[i, K.W_RS] = model.seat
         wp[i, K.W_CPSI] = math.cos(psi)
         wp[i, K.W_SPSI] = math.sin(psi)
@@ -259,10 +421,15 @@ def assemble(model: SimulationModel, *, dt: float | None = None, tolerance: floa
     if model.tensioner is None:
         wp[adj, K.W_SLIDE] = 1.0
         wp[adj, K.W_DX], wp[adj, K.W_DY] = d
-        wp[adj, K.W_SMASS] = 1.0
+        # temporary slide mass 1 kg; round link chains: the mass of the links seated on
+        # a full turn (heavy pins with stiff, damped contacts would make 1 kg unstable)
+        smass = 1.0
+        if model.is_link_chain:
+            smass = max(1.0, model.seats_per_turn(model.wheels[adj].teeth) * model.link_mass)
+        wp[adj, K.W_SMASS] = smass
         wp[adj, K.W_SK] = 0.0
         wp[adj, K.W_SF] = 2.0 * model.pretension
-        wp[adj, K.W_SC] = 2.0 * math.sqrt(2 * kspan * 1.0)
+        wp[adj, K.W_SC] = 2.0 * math.sqrt(2 * kspan * smass)
     else:
         # critical damping of the slide on its own spring plus the pins' relaxation
         # damping rate (a slack chain must not make the slide creep)
