@@ -8,18 +8,63 @@ assembled state (chaindrive's static solve).
 chaindrive: point-mass pins, axial spring-dampers (EA = 1e8 N), penalty contact of each
 roller with the ISO 606 seat/flank profile, symplectic Euler at its largest stable step.
 
-MuJoCo (the peer): the same 100 rollers as point bodies on two slide joints (x-z plane)
-with sphere geoms, links as spatial tendons with the same stiffness and damping,
-teeth as cylinder collision geoms placed so that a roller between two of them
-sits on the pitch circle (resting on a root cylinder R - r_s, held tangentially by the
-teeth with chaindrive's seat clearance); driver hinge with a stiff velocity servo, driven hinge with
-the same inertia and load torque. Its time step is the largest of a ladder of steps
-at which the run stays finite and the chain stays on the wheels.
+MuJoCo (the peer), the same model:
 
-Prints link-steps/s and wall seconds per simulated second of both, their ratio, and
-the differences in mean/peak chain speed and mean tight-side tension.
+* the same 100 rollers as point bodies (two slide joints each, x-z plane) with sphere
+  geoms of the roller radius and the link mass;
+* links as spatial tendons between consecutive rollers with the same ``k = EA/p``,
+  damping ``c`` and rest length ``p``;
+* teeth with chaindrive's working profile, built from boxes: in every gap the seating
+  arc (radius ``r_s = 0.505 d1``, ``±ψ_s``, ``ψ_s = 70° − 45°/z``) is replaced by
+  ``FACES − 1`` flat faces tangent to it, and each straight flank (tangent to the arc at
+  ``±ψ_s``) is one box face running up to the tooth corner where chaindrive's flank ends
+  (the roller centre at ``h_a`` above the pitch circle). Because ``r_s − r`` is only
+  80 µm, the roller centre's free region in this polygonal seat differs from the
+  circular one by ``(r_s − r)(1/cos(Δ/2) − 1)`` < 4 µm; a roller beyond the flank
+  meets the box edge at the tooth corner, as in chaindrive. (A whole tooth is not
+  convex, the seating arcs are concave, so one convex mesh per tooth would fill the
+  seats; boxes also get MuJoCo's analytic sphere-box collider instead of the general
+  convex one);
+* contacts: friction 0.1 on both geoms (MuJoCo takes the larger of the two), elliptic
+  cone so that the in-plane Coulomb limit is exactly μ F_n whatever the orientation of
+  the contact frame's tangent axes, ``condim = 3``; normal law in MuJoCo's direct form
+  ``solref = (−k_c/m, −c_c/m)`` = chaindrive's contact stiffness and damping per unit
+  roller mass, ``solimp`` with ``d_min = d_max = 0.95``: the free contact oscillation
+  then has chaindrive's frequency ``sqrt(k_c/m)`` and damping ratio 0.2, while the
+  static penetration is ``(1 − d)`` of the penalty one (≤ 1 µm instead of ~15 µm;
+  both negligible against the profile);
+* wheels: hinges with the same inertias; the driver by a velocity servo (``kv = 1e5``
+  N m s, steady speed error 200/1e5 = 0.002 rad/s = 0.01 %) following the same ramp, the
+  driven wheel loaded by the same torque through ``qfrc_applied``; gravity;
+* integrator ``implicitfast`` (tendon damping and the servo's velocity gain implicit;
+  tendon stiffness explicit, which sets MuJoCo's stable step to ~2/sqrt(4k/m), as the
+  link stiffness does for chaindrive).
 
-Run:  .venv/bin/python benchmarks/simulate.py [--duration 0.3] [--no-mujoco]
+MuJoCo first settles from chaindrive's assembled state with the driver held and the load
+on (velocities quenched, 0.02 s, not timed), then runs the same duration. Its step is the
+largest of a ladder at which the run stays finite, raises no divergence warning and the
+driven wheel follows the driver; then half and quarter of it for a convergence check
+(from the same settled state). chaindrive runs at its default step, half and quarter.
+
+"Equal accuracy": each engine is timed at the largest step whose results are converged
+against its own halved step (mean tight-side tension within 1 %, mean chain speed within
+0.5 %); the table prints both, the ratio of wall time per simulated second and the
+differences of mean/peak chain speed and mean tight-side tension.
+
+MuJoCo settings used (mujoco.readthedocs.io):
+  direct solref (-stiffness, -damping), scaled by the impedance:
+    https://mujoco.readthedocs.io/en/stable/modeling.html#solver-parameters
+    https://mujoco.readthedocs.io/en/stable/modeling.html#restitution
+  soft-constraint dynamics a1 + d (b v + k r) = (1 - d) a0, solimp d(r):
+    https://mujoco.readthedocs.io/en/stable/computation/index.html#soft-constraints
+  friction combination (max of the two geoms) and condim:
+    https://mujoco.readthedocs.io/en/stable/modeling.html#contact-parameters
+  cone="elliptic", integrator="implicitfast":
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#option
+  spatial tendon stiffness/damping/springlength:
+    https://mujoco.readthedocs.io/en/stable/XMLreference.html#tendon-spatial
+
+Run:  .venv/bin/python benchmarks/simulate.py [--duration 0.3] [--no-mujoco] [--quick]
 """
 
 from __future__ import annotations
@@ -33,205 +78,371 @@ import numpy as np
 from chaindrive.simulation import _kernel as K
 from chaindrive.simulation import assemble, roller_example, simulate
 
+#: convergence tolerances against the halved step (relative)
+TOL_TENSION = 0.01
+TOL_SPEED = 0.005
+#: flat faces replacing each seating arc (FACES - 1 inner faces plus the two flanks)
+FACES = 4
+#: sampling interval of chain speed and tension, the same for both engines [s]
+SAMPLE = 1.5e-4
+#: start of the steady window [s] (ramp ends at 0.1 s)
+STEADY = 0.15
 
-def build(duration):
+
+def build():
     model = roller_example(links=100, teeth=17, angular_velocity=20.0, load_torque=200.0,
                            ramp_time=0.1)
     state = assemble(model)
     return model, state
 
 
-def run_chaindrive(model, state, duration):
-    simulate(model, 0.002, state=state)  # compile / warm the cache
-    t0 = time.perf_counter()
-    r = simulate(model, duration, state=state, settle=0.15)
-    wall = time.perf_counter() - t0
+def run_chaindrive(model, state, duration, dt=None):
+    simulate(model, 0.002, state=state, dt=dt)  # compile / warm the cache
+    dt0 = model.stable_time_step() if dt is None else dt
+    nsteps = int(round(duration / dt0))
+    r = simulate(model, duration, state=state, settle=STEADY, dt=dt,
+                 record_every=max(int(round(SAMPLE / dt0)), 1))
     s = r.summary
     return {
         "name": "chaindrive",
         "dt": r.dt,
         "steps": r.steps,
-        "wall": wall,
-        "kernel_wall": r.wall_time,
+        "wall": r.wall_time,
         "link_steps_per_s": r.steps * model.links / r.wall_time,
         "wall_per_sim_s": r.wall_time / (r.steps * r.dt),
         "v_mean": s["chain_velocity_mean"][0],
         "v_peak": s["chain_velocity_max"][0],
         "tight_mean": s["tight_side_tension_mean"],
         "tight_max": s["tight_side_tension_max"],
+        "wheel1": s["wheel_speed_mean"][1],
+        "nsteps": nsteps,
     }, r
 
 
-def mujoco_xml(model, state, dt, solref=None):
+# --- MuJoCo model ---------------------------------------------------------------------
+
+def _box(origin, p_ab, t_ab, n_ab, e_a, e_b, half_len, half_thick):
+    """MJCF box whose face (centre p, direction t; gap frame at ``origin``) bounds material on
+    the side n."""
+    c = p_ab + half_thick * n_ab
+    cx, cz = origin + c[0] * e_a + c[1] * e_b
+    tx, tz = t_ab[0] * e_a + t_ab[1] * e_b
+    al = math.atan2(tz, tx)
+    # rotation by al about -y turns local x into (cos al, 0, sin al): counter-clockwise in
+    # the x-z plane, like the wheel hinges (axis -y)
+    return (f'<geom type="box" size="{half_len:.9g} 0.01 {half_thick:.9g}" '
+            f'pos="{cx:.10g} 0 {cz:.10g}" quat="{math.cos(al / 2):.12g} 0 {-math.sin(al / 2):.12g} 0"/>')
+
+
+def tooth_geoms(model, teeth, faces=FACES):
+    """Box geoms (wheel frame) of chaindrive's tooth-gap profile, see the module docstring."""
+    rad = model.pitch / (2 * math.sin(math.pi / teeth))
+    rs = model.seat
+    rr = model.roller_radius
+    psi = math.radians(70.0 - 45.0 / teeth)
+    cps, sps = math.cos(psi), math.sin(psi)
+    delta = rs - rr
+    # length of the flank from the end of the seating arc to the tooth corner: as in the
+    # kernel, the flank ends where the roller centre reaches h_a above the pitch circle
+    stip = (model.tip(teeth) + delta * cps) / sps
+    dphi = 2 * psi / faces
+    hl = rs * math.tan(0.5 * dphi)  # half length of an arc face (tangent polygon)
+    out = []
+    for g in range(teeth):
+        be = 2 * math.pi * g / teeth
+        e_a = np.array([math.cos(be), math.sin(be)])
+        e_b = np.array([-math.sin(be), math.cos(be)])
+        seat_c = rad * e_a
+        for k in range(1, faces):
+            phi = -psi + k * dphi
+            n = np.array([-math.cos(phi), math.sin(phi)])  # into the material
+            t = np.array([math.sin(phi), math.cos(phi)])
+            out.append(_box(seat_c, rs * n, t, n, e_a, e_b, hl, 1.0e-3))
+        for s in (-1.0, 1.0):
+            n = np.array([-cps, s * sps])
+            t = np.array([sps, s * cps])  # outwards along the flank
+            p0 = rs * n
+            mid = p0 + 0.5 * (stip - hl) * t
+            out.append(_box(seat_c, mid, t, n, e_a, e_b, 0.5 * (stip + hl), 0.75e-3))
+    return out
+
+
+def mujoco_xml(model, state, dt, dmax=0.95, kv=1.0e5, faces=FACES):
     """MJCF of the drive (x-z plane, gravity -z)."""
     p = model.pitch
     rr = model.roller_radius
-    if solref is None:
-        # contact time constant 1/ω_c of chaindrive's roller contact, at least 2 dt
-        solref = f"{max(math.sqrt(model.link_mass / model.contact_stiffness), 2 * dt):.6g} 1"
-    k = model.link_stiffness
-    c = model.link_damping
+    m = model.link_mass
+    mu = model.friction
+    # direct form: (-stiffness, -damping) per unit mass of the roller
+    solref = f"{-model.contact_stiffness / m:.9g} {-model.contact_damping / m:.9g}"
+    solimp = f"{dmax} {dmax} 0.001 0.5 2"
     wl = []
     for j, w in enumerate(model.wheels):
         cx, cy = state.wp[j, K.W_CX], state.wp[j, K.W_CY]
-        rad = w.pitch_radius(p)
-        # teeth: cylinders whose centres lie on the line through two neighbouring seat
-        # points' tangents (radius R / cos(π/z)), sized so that a roller on the pitch
-        # circle has the same clearance r_s - r as chaindrive's seat on either side; the
-        # roller rests radially on the root cylinder (radius R - r_s, the bottom of chaindrive's seat): it can leave the gap
-        # radially, as on a real sprocket
-        clear = model.seat - rr
-        rho = rad / math.cos(math.pi / w.teeth)
-        rt = rho * math.sin(math.pi / w.teeth) - rr - clear
-        teeth = [f'<geom type="cylinder" size="{rad - rr - clear:.9g} 0.01" zaxis="0 1 0" '
-                 f'contype="2" conaffinity="1" mass="0"/>']
-        for g in range(w.teeth):
-            a = (g + 0.5) * 2 * math.pi / w.teeth
-            x, z = rho * math.cos(a), rho * math.sin(a)
-            teeth.append(f'<geom type="cylinder" size="{rt:.6g} 0.01" pos="{x:.9g} 0 {z:.9g}" '
-                         f'zaxis="0 1 0" contype="2" conaffinity="1" mass="0"/>')
-        joint = (f'<joint name="w{j}" type="hinge" axis="0 -1 0"/>')
-        wl.append(f'<body name="wheel{j}" pos="{cx:.9g} 0 {cy:.9g}">{joint}'
-                  f'<inertial pos="0 0 0" mass="1" diaginertia="{w.inertia:.6g} {w.inertia:.6g} '
-                  f'{w.inertia:.6g}"/>' + "".join(teeth) + "</body>")
+        teeth = "".join(tooth_geoms(model, w.teeth, faces))
+        wl.append(f'<body name="wheel{j}" pos="{cx:.12g} 0 {cy:.12g}" childclass="tooth">'
+                  f'<joint name="w{j}" type="hinge" axis="0 -1 0"/>'
+                  f'<inertial pos="0 0 0" mass="1" diaginertia="{w.inertia:.9g} {w.inertia:.9g} '
+                  f'{w.inertia:.9g}"/>'
+                  f'{teeth}</body>')
     pins = []
     for i, (x, z) in enumerate(state.pos):
         pins.append(f'<body name="p{i}" pos="{x:.12g} 0 {z:.12g}">'
                     f'<joint name="px{i}" type="slide" axis="1 0 0"/>'
                     f'<joint name="pz{i}" type="slide" axis="0 0 1"/>'
-                    f'<geom type="sphere" size="{rr:.6g}" mass="{model.link_mass:.6g}" '
-                    f'contype="1" conaffinity="2" friction="{model.friction} 0 0"/>'
+                    f'<geom class="roller" size="{rr:.9g}" mass="{m:.9g}"/>'
                     f'<site name="s{i}"/></body>')
     tendons = []
     n = len(state.pos)
     for i in range(n):
         j = (i + 1) % n
-        tendons.append(f'<spatial stiffness="{k:.9g}" damping="{c:.6g}" springlength="{p:.12g}">'
+        tendons.append(f'<spatial stiffness="{model.link_stiffness:.12g}" '
+                       f'damping="{model.link_damping:.9g}" springlength="{p:.12g}">'
                        f'<site site="s{i}"/><site site="s{j}"/></spatial>')
     return f"""<mujoco model="chain drive">
-  <option timestep="{dt:.6g}" gravity="0 0 -9.81" integrator="implicitfast" cone="pyramidal"/>
-  <default><geom solref="{solref}" solimp="0.9 0.95 0.001"/></default>
+  <option timestep="{dt:.6g}" gravity="0 0 -9.81" integrator="implicitfast" cone="elliptic"/>
+  <default>
+    <geom solref="{solref}" solimp="{solimp}" condim="{3 if mu > 0 else 1}" friction="{max(mu, 1e-5)} 0 0"/>
+    <default class="roller"><geom type="sphere" contype="1" conaffinity="2"/></default>
+    <default class="tooth"><geom type="box" contype="2" conaffinity="1" mass="0"/></default>
+  </default>
   <worldbody>{''.join(wl)}{''.join(pins)}</worldbody>
   <tendon>{''.join(tendons)}</tendon>
-  <actuator><velocity joint="w0" kv="2000"/></actuator>
+  <actuator><velocity joint="w0" kv="{kv:.6g}"/></actuator>
 </mujoco>"""
 
 
-def run_mujoco(model, state, duration, dt, probe, tight_mid, record_every=20):
+def settle_mujoco(model, state, dt, settle=0.02, **opts):
+    """MuJoCo model and data settled from chaindrive's assembled state (driver held)."""
     import mujoco
 
-    m = mujoco.MjModel.from_xml_string(mujoco_xml(model, state, dt))
+    m = mujoco.MjModel.from_xml_string(mujoco_xml(model, state, dt, **opts))
     d = mujoco.MjData(m)
-    # wheel angles: teeth were placed relative to angle 0; MuJoCo's hinge axis is -y so
-    # that positive angles turn counter-clockwise in the x-z plane
     d.qpos[0] = state.ws[0, K.S_THETA]
     d.qpos[1] = state.ws[1, K.S_THETA]
+    load = model.wheels[1].torque
+    d.ctrl[0] = 0.0
+    nq = int(settle / dt)
+    for s in range(nq):
+        d.qfrc_applied[1] = load
+        mujoco.mj_step(m, d)
+        if s % 500 == 0 and s < nq - 1000:
+            d.qvel[:] = 0.0
+        if not np.all(np.isfinite(d.qpos)):
+            return m, None
+    if d.warning[mujoco.mjtWarning.mjWARN_BADQACC].number > 0:
+        return m, None
+    d.qvel[:] = 0.0
+    d.time = 0.0
+    return m, d
+
+
+def run_mujoco(model, state, duration, dt, probe, tight_mid, start=None, **opts):
+    """One timed MuJoCo run; ``start``: qpos of a settled state to start from; ``opts`` go to
+    :func:`mujoco_xml`."""
+    import mujoco
+
+    m, d = settle_mujoco(model, state, dt, settle=0.0 if start is not None else 0.02, **opts)
+    if d is None:
+        print(f"    mujoco dt = {dt:g}: diverged while settling")
+        return None
+    if start is not None:
+        d.qpos[:] = start
+        d.qvel[:] = 0.0
+    settled = d.qpos.copy()
     w0 = model.wheels[0]
     load = model.wheels[1].torque
     nsteps = int(round(duration / dt))
+    every = max(int(round(SAMPLE / dt)), 1)
     n = model.links
     pin_adr = np.array([m.jnt_qposadr[m.joint(f"px{i}").id] for i in range(n)])
     vel_adr = np.array([m.jnt_dofadr[m.joint(f"px{i}").id] for i in range(n)])
-    # MuJoCo's own static equilibrium first (its cylinder teeth differ from chaindrive's
-    # flank profile near the tangent points): driver held, load on, velocities quenched
-    # every 200 steps (kinetic-energy damping) for 0.03 s simulated; not timed
-    d.ctrl[0] = 0.0
-    for s in range(int(0.03 / dt)):
-        d.qfrc_applied[1] = load
-        mujoco.mj_step(m, d)
-        if s % 200 == 0:
-            d.qvel[:] = 0.0
-    d.qvel[:] = 0.0
-    d.time = 0.0
-    if d.warning[mujoco.mjtWarning.mjWARN_BADQACC].number > 0:
-        print("    (diverged while settling)")
-        return None
-    times, v, ten = [], [], []
+    k, c, p = model.link_stiffness, model.link_damping, model.pitch
+    times, v, ten, w1 = [], [], [], []
+    ramp_t = w0.ramp_time
+    om0 = w0.angular_velocity
+    step = mujoco.mj_step
+    qfrc = d.qfrc_applied
+    ctrl = d.ctrl
     t0 = time.perf_counter()
-    mujoco.set_mjcb_control(None)
     for s in range(nsteps):
         t = s * dt
-        ramp = min(1.0, (t + dt) / w0.ramp_time) if w0.ramp_time > 0 else 1.0
-        d.ctrl[0] = w0.angular_velocity * ramp
-        d.qfrc_applied[1] = load
-        mujoco.mj_step(m, d)
-        if d.warning[mujoco.mjtWarning.mjWARN_BADQACC].number > 0:
-            print(f"    (diverged at t = {t:.4f} s)")
-            return None  # MuJoCo detected divergence (and reset itself)
-        if s % record_every == 0:
+        # chaindrive sets the driver speed at the end of the step, t + dt
+        ctrl[0] = om0 * min(1.0, (t + dt) / ramp_t) if ramp_t > 0 else om0
+        qfrc[1] = load
+        step(m, d)
+        if s % every == 0:
             xz = state.pos + np.column_stack([d.qpos[pin_adr], d.qpos[pin_adr + 1]])
             if not np.all(np.isfinite(xz)):
+                print(f"    mujoco dt = {dt:g}: non-finite state at t = {t:.4f} s")
                 return None
             ib = np.argmin(np.sum((xz - probe[:2]) ** 2, axis=1))
             v.append(d.qvel[vel_adr[ib]] * probe[2] + d.qvel[vel_adr[ib] + 1] * probe[3])
             mid = 0.5 * (xz + np.roll(xz, -1, axis=0))
             il = np.argmin(np.sum((mid - tight_mid) ** 2, axis=1))
-            ten.append(model.link_stiffness * (d.ten_length[il] - model.pitch))
+            # link force as chaindrive records it: spring + damper
+            ten.append(k * (d.ten_length[il] - p) + c * d.ten_velocity[il])
+            w1.append(d.qvel[1])
             times.append(t)
     wall = time.perf_counter() - t0
-    times, v, ten = map(np.asarray, (times, v, ten))
-    # the chain must still run on the wheels: wheel 1 turning with it
-    sel = times >= min(0.15, 0.5 * duration)
-    if not (np.all(np.isfinite(v)) and np.all(np.isfinite(ten))):
+    if d.warning[mujoco.mjtWarning.mjWARN_BADQACC].number > 0:
+        print(f"    mujoco dt = {dt:g}: divergence warning (bad qacc)")
         return None
-    return {
+    times, v, ten, w1 = map(np.asarray, (times, v, ten, w1))
+    sel = times >= STEADY
+    res = {
         "name": f"mujoco {mujoco.__version__}",
         "dt": dt,
         "steps": nsteps,
         "wall": wall,
-        "kernel_wall": wall,
         "link_steps_per_s": nsteps * n / wall,
         "wall_per_sim_s": wall / (nsteps * dt),
         "v_mean": float(np.mean(v[sel])),
         "v_peak": float(np.max(v[sel])),
         "tight_mean": float(np.mean(ten[sel])),
         "tight_max": float(np.max(ten[sel])),
-        "wheel1_speed": float(d.qvel[1]),
+        "wheel1": float(np.mean(w1[sel])),
+        "settled": settled,
     }
+    # the chain must still run on the wheels: the driven wheel follows the driver
+    if not abs(res["wheel1"] / om0 - 1.0) < 0.05:
+        print(f"    mujoco dt = {dt:g}: driven wheel at {res['wheel1']:.3f} rad/s, chain off")
+        return None
+    return res
+
+
+# --- report ---------------------------------------------------------------------------
+
+def _rel(a, b, key):
+    return a[key] / b[key] - 1.0
+
+
+def converged(rows):
+    """Mark each row's change against the next (halved-step) row; return the first converged."""
+    pick = None
+    for a, b in zip(rows, rows[1:], strict=False):
+        a["d_v"] = _rel(a, b, "v_mean")
+        a["d_vp"] = _rel(a, b, "v_peak")
+        a["d_s"] = _rel(a, b, "tight_mean")
+        a["conv"] = abs(a["d_v"]) <= TOL_SPEED and abs(a["d_s"]) <= TOL_TENSION
+        if pick is None and a["conv"]:
+            pick = a
+    return pick
+
+
+def print_table(rows):
+    hdr = (f"{'engine':<14}{'dt [us]':>8}{'link-steps/s':>13}{'wall s/sim s':>13}"
+           f"{'v mean':>8}{'v peak':>8}{'S tight':>9}{'S max':>9}"
+           f"{'dv/v':>8}{'dvpk':>8}{'dS/S':>8}  conv")
+    print(hdr)
+    for x in rows:
+        ch = "" if "d_v" not in x else (f"{100 * x['d_v']:>+7.2f}%{100 * x['d_vp']:>+7.2f}%"
+                                        f"{100 * x['d_s']:>+7.2f}%  {'yes' if x['conv'] else 'no'}")
+        print(f"{x['name']:<14}{1e6 * x['dt']:>8.3g}{x['link_steps_per_s']:>13.3g}"
+              f"{x['wall_per_sim_s']:>13.4g}{x['v_mean']:>8.4f}{x['v_peak']:>8.4f}"
+              f"{x['tight_mean']:>9.1f}{x['tight_max']:>9.1f}{ch}")
 
 
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--duration", type=float, default=0.3)
     ap.add_argument("--no-mujoco", action="store_true")
+    ap.add_argument("--quick", action="store_true",
+                    help="MuJoCo at its largest stable step and half only (no quarter)")
+    ap.add_argument("--diagnose", action="store_true",
+                    help="also run the variants behind the stated diagnosis (MuJoCo at 4 us: "
+                         "impedance d, seat faces, servo gain; both engines without friction)")
     args = ap.parse_args()
-    model, state = build(args.duration)
+    model, state = build()
+    dt0 = model.stable_time_step()
     own, r = run_chaindrive(model, state, args.duration)
-    rows = [own]
+    own_rows = [own] + [run_chaindrive(model, state, args.duration, dt=dt0 / f)[0] for f in (2, 4)]
+    mj_rows = []
     if not args.no_mujoco:
         try:
-            import mujoco  # noqa: F401
+            import mujoco
         except ImportError:
-            print("mujoco not installed (.venv/bin/pip install mujoco); peer skipped")
+            print("mujoco not installed (.venv/bin/pip install mujoco, or the bench extra); "
+                  "peer skipped")
         else:
+            # divergence is read from MjData.warning; silence MuJoCo's own message (stdout and
+            # MUJOCO_LOG.TXT in the working directory) for the unstable steps of the ladder
+            previous = mujoco.get_mju_user_warning()
+            mujoco.set_mju_user_warning(lambda msg: None)
             probe = r.probe_points[0]
             tight_mid = 0.5 * (r.tight_span[0] + r.tight_span[1])
-            # largest stable step: the full run stays finite without MuJoCo's divergence
-            # warning (link forces are reported, not limited)
-            for dt in (1e-4, 3e-5, 1e-5, 6e-6, 5e-6, 4e-6, 3e-6, 2e-6, 1e-6):
+            base = None
+            for dt in (1e-5, 8e-6, 6e-6, 5e-6, 4e-6, 3e-6, 2e-6):
                 res = run_mujoco(model, state, args.duration, dt, probe, tight_mid)
-                print(f"  mujoco dt = {dt:g} s: {'stable' if res is not None else 'unstable'}")
+                print(f"  mujoco dt = {dt:g} s: {'stable' if res is not None else 'unstable'}",
+                      flush=True)
                 if res is not None:
-                    rows.append(res)
+                    base = res
                     break
+            if base is not None:
+                mj_rows.append(base)
+                for f in ((2,) if args.quick else (2, 4)):
+                    res = run_mujoco(model, state, args.duration, base["dt"] / f, probe, tight_mid,
+                                     start=base["settled"])
+                    if res is None:
+                        break
+                    mj_rows.append(res)
+            mujoco.set_mju_user_warning(previous)
     print(f"\n16B chain, {model.links} links, 2 x z = 17, centre distance "
-          f"{state.wp[1, K.W_CX]:.4f} m, {args.duration:g} s simulated")
-    hdr = f"{'engine':<16}{'dt [s]':>10}{'link-steps/s':>14}{'wall s / sim s':>16}" \
-          f"{'v mean':>9}{'v peak':>9}{'S tight':>10}{'S max':>10}"
-    print(hdr)
-    for x in rows:
-        print(f"{x['name']:<16}{x['dt']:>10.3g}{x['link_steps_per_s']:>14.3g}"
-              f"{x['wall_per_sim_s']:>16.4g}{x['v_mean']:>9.4f}{x['v_peak']:>9.4f}"
-              f"{x['tight_mean']:>10.1f}{x['tight_max']:>10.1f}")
-    if len(rows) == 2:
-        a, b = rows
-        print(f"\nwall time per simulated second, mujoco / chaindrive: "
-              f"{b['wall_per_sim_s'] / a['wall_per_sim_s']:.3g}")
+          f"{state.wp[1, K.W_CX]:.4f} m, {args.duration:g} s simulated, steady window "
+          f"t >= {STEADY:g} s, samples every {1e6 * SAMPLE:g} us")
+    print("dv/v, dvpk, dS/S: change of mean speed, peak speed, mean tight-side tension against "
+          "the next (halved) step; conv: |dv/v| <= "
+          f"{100 * TOL_SPEED:g} % and |dS/S| <= {100 * TOL_TENSION:g} %")
+    pick_own = converged(own_rows)
+    pick_mj = converged(mj_rows) if len(mj_rows) > 1 else None
+    print_table(own_rows + mj_rows)
+    print(f"static reference: T/R = {200 / model.pitch_radii()[1]:.1f} N (+ slack-side tension)")
+    if mj_rows:
+        a = pick_own or own_rows[-1]
+        b = pick_mj or mj_rows[-1]
+        tag = "at equal accuracy" if (pick_own and pick_mj) else \
+            "NOT at equal accuracy (a run is not converged; finest steps compared)"
+        print(f"\n{tag}: chaindrive at {1e6 * a['dt']:.3g} us, MuJoCo at {1e6 * b['dt']:.3g} us")
+        print(f"wall time per simulated second, mujoco / chaindrive: "
+              f"{b['wall_per_sim_s'] / a['wall_per_sim_s']:.3g} "
+              f"({b['wall_per_sim_s']:.3g} s / {a['wall_per_sim_s']:.3g} s)")
+        print(f"per step at the largest stable steps, mujoco / chaindrive: "
+              f"{own_rows[0]['link_steps_per_s'] / mj_rows[0]['link_steps_per_s']:.3g}")
         print(f"difference (mujoco - chaindrive): mean speed "
-              f"{100 * (b['v_mean'] / a['v_mean'] - 1):+.2f} %, peak speed "
-              f"{100 * (b['v_peak'] / a['v_peak'] - 1):+.2f} %, mean tight-side tension "
-              f"{100 * (b['tight_mean'] / a['tight_mean'] - 1):+.2f} %")
-    print(f"static reference: T/R + slack = {200 / model.pitch_radii()[1]:.1f} N + slack")
+              f"{100 * _rel(b, a, 'v_mean'):+.2f} %, peak speed {100 * _rel(b, a, 'v_peak'):+.2f} %, "
+              f"mean tight-side tension {100 * _rel(b, a, 'tight_mean'):+.2f} %")
+
+    if args.diagnose and mj_rows:
+        diagnose(model, state, args.duration, mj_rows[0]["dt"], own_rows[0])
+
+
+def diagnose(model, state, duration, dt, own):
+    """Where the MuJoCo/chaindrive differences come from (results only, not timed)."""
+    print(f"\ndiagnosis, MuJoCo at {1e6 * dt:g} us (differences against chaindrive at its default step)")
+
+    def line(label, a, b):
+        print(f"  {label:<34} chaindrive S {a['tight_mean']:7.1f} v peak {a['v_peak']:.4f} | "
+              f"mujoco S {b['tight_mean']:7.1f} v peak {b['v_peak']:.4f} | "
+              f"dS {100 * _rel(b, a, 'tight_mean'):+.2f} %, dv peak {100 * _rel(b, a, 'v_peak'):+.2f} %, "
+              f"dv mean {100 * _rel(b, a, 'v_mean'):+.2f} %", flush=True)
+
+    _, r = run_chaindrive(model, state, duration)
+    probe = r.probe_points[0]
+    tight_mid = 0.5 * (r.tight_span[0] + r.tight_span[1])
+    for label, opts in (("impedance d = 0.5", dict(dmax=0.5)), ("impedance d = 0.99", dict(dmax=0.99)),
+                        ("8 faces per seat", dict(faces=8)), ("servo kv = 1e4", dict(kv=1.0e4))):
+        res = run_mujoco(model, state, duration, dt, probe, tight_mid, **opts)
+        if res is not None:
+            line(label, own, res)
+    m0 = roller_example(links=100, teeth=17, angular_velocity=20.0, load_torque=200.0,
+                        ramp_time=0.1, friction=0.0)
+    s0 = assemble(m0)
+    own0, r0 = run_chaindrive(m0, s0, duration)
+    res = run_mujoco(m0, s0, duration, dt, r0.probe_points[0],
+                     0.5 * (r0.tight_span[0] + r0.tight_span[1]))
+    if res is not None:
+        line("no friction (both engines)", own0, res)
 
 
 if __name__ == "__main__":
