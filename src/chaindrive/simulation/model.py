@@ -9,8 +9,11 @@ the contact law and gravity.
 The tooth gap is the ISO 606 profile reduced to its two working features: a seating
 arc of radius ``r_s`` centred on the pitch circle, spanning ``±ψ_s`` about the radial
 direction with ``ψ_s = 70° − 45°/z`` (half the maximum ISO 606 roller seating angle
-``α_max = 140° − 90°/z``), continued by straight flanks tangent to the arc up to the
-tip height ``h_a`` above the pitch circle. In the gap's frame (``a`` radial offset from
+``α_max = 140° − 90°/z``), continued by straight flanks tangent to the arc, ending
+where the roller *centre* riding on the flank reaches ``h_a`` above the pitch circle
+(the tooth surface's corner at ``h_a − r cos ψ_s``): a straight flank is fatter than
+ISO's arc flank (radius ``r_e``), so it is truncated where it would stand in the path
+of the rollers entering and leaving along the spans (docs/simulation.md). In the gap's frame (``a`` radial offset from
 the seat centre, ``b`` tangential) the penetration of a roller of radius ``r`` is
 
 .. math::
