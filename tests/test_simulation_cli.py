@@ -23,6 +23,16 @@ def test_cli_example(tmp_path, capsys):
     assert data["tension"].shape[1] == 100
 
 
+def test_cli_link_example(tmp_path, capsys):
+    out = tmp_path / "out"
+    assert main(["simulate", "--example", "link", "--duration", "20 ms", "--ramp", "5 ms",
+                 "-o", str(out), "--frames", "3", "--json"]) == 0
+    summary = json.loads(capsys.readouterr().out)
+    assert summary["tight_side_tension_mean"] > 0
+    assert (out / "frame.png").exists() and (out / "simulation.gif").exists()
+    assert np.load(out / "simulation.npz")["tension"].shape[1] == 60
+
+
 def test_cli_project_file(tmp_path, capsys):
     pytest.importorskip("chaindrive.drive.project")
     from chaindrive.drive.project import template
@@ -38,7 +48,7 @@ def test_cli_errors(tmp_path, capsys):
     assert main(["simulate", "-o", str(tmp_path)]) == 2
     assert "exactly one" in capsys.readouterr().err
     assert main(["simulate", "--example", "bike", "-o", str(tmp_path)]) == 2
-    assert "--example must be" in capsys.readouterr().err
+    assert "--example must be one of roller, link, got 'bike'" in capsys.readouterr().err
 
 
 def test_model_from_drive_load_and_speed():

@@ -19,11 +19,11 @@ from .app import app, echo_json, quantity
 @app.command("simulate")
 def simulate_command(
     project: Path | None = typer.Argument(None, help="Project file (TOML, same as `analyze`); or use --example."),
-    example: str | None = typer.Option(None, "--example", help="Built-in model instead of a project file: 'roller' (16B, two 17-tooth sprockets, 100 links, centre distance 1.054 m)."),
+    example: str | None = typer.Option(None, "--example", help="Built-in model instead of a project file: 'roller' (16B, two 17-tooth sprockets, 100 links, centre distance 1.054 m) or 'link' (18x64 round link chain, DIN 22252, two 8-pocket wheels, 60 links)."),
     duration: str = typer.Option("0.5 s", "--duration", "-t", help="Simulated time, unit s (e.g. '2 s', '500 ms')."),
     output: Path = typer.Option(Path("simulation_out"), "--output", "-o", help="Output directory."),
-    speed: str | None = typer.Option(None, "--speed", help="Driver speed for --example, unit rad/s or rpm (default 20 rad/s)."),
-    load: str | None = typer.Option(None, "--load", help="Load torque on the driven wheel for --example, unit N*m (default 200 N*m); T/R gives the tight-side static tension."),
+    speed: str | None = typer.Option(None, "--speed", help="Driver speed for --example, unit rad/s or rpm (default 20 rad/s roller, 5 rad/s link)."),
+    load: str | None = typer.Option(None, "--load", help="Load torque on the driven wheel for --example, unit N*m (default 200 N*m roller, 2000 N*m link); T/R gives the tight-side static tension."),
     ramp: str = typer.Option("0.1 s", "--ramp", help="Speed ramp of the driver, unit s."),
     frames: int = typer.Option(60, "--frames", help="Frames of the GIF animation (0: none)."),
     no_plots: bool = typer.Option(False, "--no-plots", help="Skip PNGs and GIF."),
@@ -32,18 +32,20 @@ def simulate_command(
     """Simulate the drive: point-mass pins, elastic links (EA), penalty roller-tooth contact
     (ISO 606 seat and flank), prescribed driver speed, driven inertia and load, gravity;
     assembled in static equilibrium first (see docs/simulation.md)."""
-    from ..simulation import model_from_drive, roller_example, simulate
+    from ..simulation import link_example, model_from_drive, roller_example, simulate
 
     dur = quantity(duration, "s", "duration")
     ramp_time = quantity(ramp, "s", "ramp")
     if (project is None) == (example is None):
-        raise InputError("give a project file or --example roller (exactly one)")
+        raise InputError("give a project file or --example roller|link (exactly one)")
     if example is not None:
-        if example != "roller":
-            raise InputError(f"--example must be 'roller', got {example!r}")
-        w = quantity(speed, "rad/s", "speed") if speed else 20.0
-        t = quantity(load, "N*m", "load") if load else 200.0
-        model = roller_example(angular_velocity=w, load_torque=t, ramp_time=ramp_time)
+        builders = {"roller": (roller_example, 20.0, 200.0), "link": (link_example, 5.0, 2000.0)}
+        if example not in builders:
+            raise InputError(f"--example must be one of {', '.join(builders)}, got {example!r}")
+        build, w, t = builders[example]
+        w = quantity(speed, "rad/s", "speed") if speed else w
+        t = quantity(load, "N*m", "load") if load else t
+        model = build(angular_velocity=w, load_torque=t, ramp_time=ramp_time)
     else:
         from ..drive.project import load_project
 
