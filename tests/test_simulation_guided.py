@@ -99,3 +99,51 @@ def test_flared_guide_mouth_also_follows_the_law():
 
     # measured 0.11 %: the lead-in arc spreads the roller's release from the channel
     assert np.max(np.abs(err[away])) == pytest.approx(0.00114, abs=5e-4)
+
+
+def test_guide_channel_geometry_and_errors():
+    from chaindrive.errors import InputError
+    from chaindrive.simulation import guide_channel
+
+    m = roller_example(links=40, teeth=TEETH, gravity=False)
+    radius, r = m.pitch_radii()[0], m.roller_radius
+    a = m.wheels[1].centre[0]
+    # tangential entry of the driver: the channel of the tests above (far end 2 pitches
+    # before the driven wheel's tangent point instead of 5 cm)
+    got = guide_channel(m, 0, radius, GUIDE_END)
+    ref = _channel(GUIDE_END, radius, r, a - 2 * PITCH)
+    for g, h in zip(got, ref, strict=True):
+        assert np.allclose(g.start, h.start, atol=1e-12) and np.allclose(g.end, h.end, atol=1e-12)
+    # the span entering wheel 1 (from wheel 0, the lower span, travelling towards +x):
+    # the channel lies below wheel 1's axis, its end l from the axis against the travel
+    low = guide_channel(m, 1, radius, GUIDE_END)
+    assert low[0].start == pytest.approx((a - GUIDE_END, -(radius - r)))
+    with pytest.raises(InputError, match=r"end_distance must exceed the pitch radius 0.0490"):
+        guide_channel(m, 0, radius, 0.04)
+    with pytest.raises(InputError, match=r"leaves no room for a guide.*at most 0.27"):
+        guide_channel(m, 0, radius, 0.3)
+    with pytest.raises(InputError, match=r"guide height must be positive \(0 < H\), got -1"):
+        guide_channel(m, 0, -1.0, GUIDE_END)
+
+
+def test_project_guides_become_channels():
+    from pathlib import Path
+
+    from chaindrive.drive.project import load_project
+    from chaindrive.simulation import model_from_drive
+
+    path = Path(__file__).resolve().parents[1] / "examples" / "mining_conveyor.toml"
+    d = load_project(path)
+    m = model_from_drive(d)
+    # seed 002's tangential guide at the drive wheel: pin line at H = R, end at l = 0.256 m
+    (low, up) = m.guides
+    radius, bar = m.pitch_radii()[0], m.roller_radius
+    cx, cy = m.wheels[0].centre
+    assert low.start == pytest.approx((cx + 0.256, cy + radius - bar))
+    assert up.end == pytest.approx((cx + 0.256, cy + radius + bar))
+    assert len(model_from_drive(d, guides=[]).guides) == 0
+    # chordal: H = R cos(δ1/2) of the bi-regular polygon
+    d.guides[0].kind = "chordal"
+    low = model_from_drive(d).guides[0]
+    d1 = m.central_angles(m.wheels[0].teeth)[0]
+    assert low.start[1] == pytest.approx(cy + radius * np.cos(d1 / 2) - bar)

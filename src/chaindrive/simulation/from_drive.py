@@ -7,13 +7,14 @@ import math
 from ..errors import InputError
 from .model import (
     AXIAL_STIFFNESS_16B,
+    SimGuide,
     SimTensioner,
     SimulationModel,
     SimWheel,
     link_chain_axial_stiffness,
 )
 
-__all__ = ["model_from_drive"]
+__all__ = ["model_from_drive", "guide_channel"]
 
 
 def _disc_inertia(radius: float, thickness: float = 0.02, density: float = 7800.0) -> float:
@@ -28,8 +29,10 @@ def model_from_drive(drive, *, ramp_time: float = 0.2, axial_stiffness: float | 
     Roller chains run on sprockets; a round link chain (DIN 22252, ``bar_diameter`` in
     the catalogue) on pocket wheels (every toothed wheel of the drive is then a pocket
     wheel with ``teeth`` pockets; pitch radius seed 002 eq. (6); ``EA`` from
-    :func:`~chaindrive.simulation.model.link_chain_axial_stiffness`). The drive's guides
-    are not simulated (guided entry is not validated yet, see docs/simulation.md).
+    :func:`~chaindrive.simulation.model.link_chain_axial_stiffness`). Each guide of the
+    drive becomes a channel (:func:`guide_channel`) on the span entering its wheel:
+    roller chains' guided entry is validated against the kinematics module (docs/
+    simulation.md); for round link chains only free entry is.
     The driving wheel becomes wheel 0 at the drive's speed (ramped over ``ramp_time``
     [s]); the load torque ``T z_j / z_0`` acts on the first other non-tensioner wheel;
     wheel inertias are 20 mm steel discs at the pitch radius; the slack tension of
@@ -57,7 +60,8 @@ def model_from_drive(drive, *, ramp_time: float = 0.2, axial_stiffness: float | 
     ------
     InputError
         Chain family not simulated, a link chain without ``bar_diameter``, a sprocket on a
-        link chain, an odd number of round links, toothless or outside idlers.
+        link chain, an odd number of round links, toothless or outside idlers, a guide
+        whose end lies inside the pitch circle or beyond the span.
     """
     chain = drive.chain
     link = bool(getattr(chain, "is_link_chain", False))
@@ -134,4 +138,86 @@ def model_from_drive(drive, *, ramp_time: float = 0.2, axial_stiffness: float | 
                 axial_stiffness=ea, roller_radius=radius, bar_diameter=bar,
                 wheels=sim_wheels, tensioner=tens, pretension=max(slack, 1.0))
     opts.update(kwargs)
-    return SimulationModel(**opts)
+    model = SimulationModel(**opts)
+    if "guides" not in kwargs:
+        names = [w.name for w in wheels]
+        for g in drive.guides:
+            j = names.index(g.wheel)
+            radius_j = model.pitch_radii()[j]
+            if g.kind == "tangential" or (g.kind != "chordal" and g.height is None):
+                height = radius_j
+            elif g.kind == "chordal":
+                height = radius_j * math.cos(0.5 * model.central_angles(model.wheels[j].teeth)[0])
+            else:
+                height = float(g.height)
+            model.guides.extend(guide_channel(model, j, height, float(g.end_distance)))
+    return model
+
+
+def guide_channel(model: SimulationModel, wheel: int, height: float, end_distance: float,
+                  *, margin_links: float = 2.0) -> list[SimGuide]:
+    """Two guides forming a channel for the chain entering ``wheel`` (seed 002's guide).
+
+    In the frame of docs/kinematics.md for that wheel (origin at its axis, ``x`` against
+    the chain's travel along the incoming span, ``y`` from the axis towards the span) the
+    pin line is ``y = H`` (``height``) from its end ``G = (l, H)`` (``end_distance``) back
+    along the span to ``margin_links`` pitches before the previous wheel's tangent point;
+    the roller (bar) *surfaces* slide on the guides, at ``H − r`` and ``H + r``. The ends
+    act as corners (the roller rolls round them).
+
+    Parameters
+    ----------
+    model : SimulationModel
+    wheel : int
+        Index of the wheel the guide feeds (the span from wheel ``wheel − 1``).
+    height : float
+        ``H`` [m], ``0 < H``.
+    end_distance : float
+        ``l`` [m], greater than the pitch radius.
+    margin_links : float
+        Clearance of the channel's far end from the previous wheel [pitches].
+
+    Returns
+    -------
+    list of SimGuide
+
+    Raises
+    ------
+    InputError
+        ``l`` not beyond the pitch circle, or the channel would be shorter than one pitch.
+
+    Examples
+    --------
+    >>> from chaindrive.simulation import roller_example
+    >>> m = roller_example(links=40, teeth=12)
+    >>> g = guide_channel(m, 0, m.pitch_radii()[0], 0.1)
+    >>> [round(float(v), 4) for v in g[0].start], [round(float(v), 4) for v in g[0].end]
+    ([0.1, 0.0411], [0.3048, 0.0411])
+    """
+    from .run import _tangent
+
+    nw = len(model.wheels)
+    radii = model.pitch_radii()
+    j, i = wheel, (wheel - 1) % nw
+    if not height > 0:
+        raise InputError(f"guide height must be positive (0 < H), got {height:g} m")
+    if not end_distance > radii[j]:
+        raise InputError(f"guide end_distance must exceed the pitch radius {radii[j]:.6g} m of "
+                         f"wheel {model.wheels[j].name or j!r}, got {end_distance:g} m")
+    c_i = model.wheels[i].centre
+    c_j = model.wheels[j].centre
+    p1, _p2, u, n = _tangent(c_i, radii[i], c_j, radii[j])
+    ex = (-u[0], -u[1])          # x: against the travel
+    ey = (-n[0], -n[1])          # y: from the axis towards the span
+    far = (p1[0] - c_j[0]) * ex[0] + (p1[1] - c_j[1]) * ex[1] - margin_links * model.pitch
+    if far - end_distance < model.pitch:
+        raise InputError(f"guide end_distance {end_distance:g} m leaves no room for a guide on "
+                         f"the span entering wheel {model.wheels[j].name or j!r} (at most "
+                         f"{far - model.pitch:.4g} m)")
+    r = model.roller_radius
+
+    def point(s, y):
+        return (c_j[0] + s * ex[0] + y * ey[0], c_j[1] + s * ex[1] + y * ey[1])
+
+    return [SimGuide(point(end_distance, height - r), point(far, height - r)),
+            SimGuide(point(far, height + r), point(end_distance, height + r))]
