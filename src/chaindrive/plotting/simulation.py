@@ -51,7 +51,7 @@ def simulation_plot(result, *, ax=None):
     a.legend(fontsize=8)
     a = axes[2]
     for j in range(result.wheel_speed.shape[1]):
-        a.plot(t, result.wheel_speed[:, j], lw=0.8, label=f"wheel {j} (z = {result.teeth[j]})")
+        a.plot(t, result.wheel_speed[:, j], lw=0.8, label=f"wheel {j} (z = {result.teeth[j]})" if result.teeth[j] else f"wheel {j} (toothless)")
     a.set_ylabel("wheel speed [rad/s]")
     a.set_xlabel("time [s]")
     a.set_title("Wheel speeds")
@@ -80,8 +80,10 @@ def _draw_drive(ax, result, k):
         cx = c[0]
         cy = c[1]
         ax.add_patch(mp.Circle((cx, cy), rad, fill=False, color="0.6", lw=0.8))
-        th = result.wheel_angle[k, j] + 2 * np.pi * np.arange(z) / z
-        ax.plot(cx + rad * np.cos(th), cy + rad * np.sin(th), "+", color="0.4", ms=4)
+        # seats (a toothless idler, z = 0: none) and a radius turning with the wheel
+        th = result.wheel_angle[k, j] + 2 * np.pi * np.arange(max(z, 1)) / max(z, 1)
+        if z > 0:
+            ax.plot(cx + rad * np.cos(th), cy + rad * np.sin(th), "+", color="0.4", ms=4)
         ax.plot([cx, cx + rad * np.cos(th[0])], [cy, cy + rad * np.sin(th[0])], "-", color="0.4")
     closed = np.vstack([pos, pos[:1]])
     ten = result.tension[k]

@@ -27,9 +27,10 @@ from numba import njit
 
 # wheel parameter columns
 W_CX, W_CY, W_R, W_Z, W_RS, W_CPSI, W_SPSI, W_HTIP, W_INERTIA, W_MODE, W_OMEGA0, W_RAMP, \
-    W_TORQUE, W_DAMP, W_SLIDE, W_DX, W_DY, W_SMASS, W_SK, W_SC, W_SF, W_NSEAT, W_DA, W_DB \
-    = range(24)
-NWP = 24
+    W_TORQUE, W_DAMP, W_SLIDE, W_DX, W_DY, W_SMASS, W_SK, W_SC, W_SF, W_NSEAT, W_DA, W_DB, \
+    W_PLAIN = range(25)
+NWP = 25
+# W_PLAIN: 1 for a toothless idler (roller centres on the circle of radius W_R)
 # W_NSEAT: number of seats per turn (z for a sprocket, 2z for a pocket wheel); W_DA, W_DB:
 # central angles [rad] spanned by an even link (pins 2k, 2k+1) and an odd link when seated
 # wheel state columns
@@ -165,6 +166,7 @@ def integrate(pos, vel, force, work, tension, contact, ws, wp, gd, tab, par, t0,
             om = ws[w, S_OMEGA]
             sd = ws[w, S_SDOT]
             rad = wp[w, W_R]
+            plain = wp[w, W_PLAIN] > 0.5
             nseat = wp[w, W_NSEAT]
             delta = wp[w, W_RS] - rr
             cps = wp[w, W_CPSI]
@@ -209,66 +211,76 @@ def integrate(pos, vel, force, work, tension, contact, ws, wp, gd, tab, par, t0,
                 r2 = qx * qx + qy * qy
                 if r2 > rout2 or r2 < rin2:
                     continue
-                # wheel frame: rotate by -theta; nearest gap from a cheap atan2 (only
-                # the gap index depends on it), seat direction from the table
-                qxw = qx * cth + qy * sth
-                qyw = -qx * sth + qy * cth
-                # gap of the last step, moved by whole gaps while the pin lies beyond
-                # the boundary half-way to the next (previous) seat, at the half central
-                # angle h: b cos h > a sin h; a fresh pin gets its gap from the cheap
-                # atan2 (mean spacing; the walk corrects it on a bi-regular wheel)
-                g = gcache[w, i]
-                if g < 0:
-                    g = int(math.floor(_fast_atan2(qyw, qxw) / pitch_angle + 0.5))
-                    if g < 0:
-                        g += iz
-                    if g >= iz:
-                        g -= iz
-                for _it in range(iz):
-                    ex = tab[w, g, 0]
-                    ey = tab[w, g, 1]
-                    ar = qxw * ex + qyw * ey
-                    bt = -qxw * ey + qyw * ex
-                    if bt * tab[w, g, 2] > ar * tab[w, g, 3]:
-                        g = g + 1 if g + 1 < iz else 0
-                    elif -bt * tab[w, g, 4] > ar * tab[w, g, 5]:
-                        g = g - 1 if g > 0 else iz - 1
-                    else:
-                        break
-                gcache[w, i] = g
-                erx = ex * cth - ey * sth
-                ery = ex * sth + ey * cth
-                a = qx * erx + qy * ery - rad
-                b = -qx * ery + qy * erx
-                ab = abs(b)
-                sb = 1.0 if b >= 0.0 else -1.0
-                # position along the flank from the end of the seating arc
-                sf = (a + delta * cps) * sps + (ab - delta * sps) * cps
-                if sf > stip:
-                    # beyond the tooth tip: roller against the rounded tooth corner
-                    ta = a - tca
-                    tb = ab - tcb
-                    d = math.sqrt(ta * ta + tb * tb)
-                    pen = rr - d
+                if plain:
+                    # toothless idler: the roller centre must stay outside the running
+                    # circle of radius R (the rim plus the roller radius)
+                    dq = math.sqrt(r2)
+                    pen = rad - dq
                     if pen <= 0.0:
                         continue
-                    na = -ta / d
-                    nb = -sb * tb / d
-                elif ab * cps + a * sps <= 0.0:
-                    d = math.sqrt(a * a + b * b)
-                    pen = d - delta
-                    if pen <= 0.0:
-                        continue
-                    na = a / d
-                    nb = b / d
+                    nx = -qx / dq
+                    ny = -qy / dq
                 else:
-                    pen = -a * cps + ab * sps - delta
-                    if pen <= 0.0:
-                        continue
-                    na = -cps
-                    nb = sb * sps
-                nx = na * erx - nb * ery
-                ny = na * ery + nb * erx
+                    # wheel frame: rotate by -theta; nearest gap from a cheap atan2 (only
+                    # the gap index depends on it), seat direction from the table
+                    qxw = qx * cth + qy * sth
+                    qyw = -qx * sth + qy * cth
+                    # gap of the last step, moved by whole gaps while the pin lies beyond
+                    # the boundary half-way to the next (previous) seat, at the half central
+                    # angle h: b cos h > a sin h; a fresh pin gets its gap from the cheap
+                    # atan2 (mean spacing; the walk corrects it on a bi-regular wheel)
+                    g = gcache[w, i]
+                    if g < 0:
+                        g = int(math.floor(_fast_atan2(qyw, qxw) / pitch_angle + 0.5))
+                        if g < 0:
+                            g += iz
+                        if g >= iz:
+                            g -= iz
+                    for _it in range(iz):
+                        ex = tab[w, g, 0]
+                        ey = tab[w, g, 1]
+                        ar = qxw * ex + qyw * ey
+                        bt = -qxw * ey + qyw * ex
+                        if bt * tab[w, g, 2] > ar * tab[w, g, 3]:
+                            g = g + 1 if g + 1 < iz else 0
+                        elif -bt * tab[w, g, 4] > ar * tab[w, g, 5]:
+                            g = g - 1 if g > 0 else iz - 1
+                        else:
+                            break
+                    gcache[w, i] = g
+                    erx = ex * cth - ey * sth
+                    ery = ex * sth + ey * cth
+                    a = qx * erx + qy * ery - rad
+                    b = -qx * ery + qy * erx
+                    ab = abs(b)
+                    sb = 1.0 if b >= 0.0 else -1.0
+                    # position along the flank from the end of the seating arc
+                    sf = (a + delta * cps) * sps + (ab - delta * sps) * cps
+                    if sf > stip:
+                        # beyond the tooth tip: roller against the rounded tooth corner
+                        ta = a - tca
+                        tb = ab - tcb
+                        d = math.sqrt(ta * ta + tb * tb)
+                        pen = rr - d
+                        if pen <= 0.0:
+                            continue
+                        na = -ta / d
+                        nb = -sb * tb / d
+                    elif ab * cps + a * sps <= 0.0:
+                        d = math.sqrt(a * a + b * b)
+                        pen = d - delta
+                        if pen <= 0.0:
+                            continue
+                        na = a / d
+                        nb = b / d
+                    else:
+                        pen = -a * cps + ab * sps - delta
+                        if pen <= 0.0:
+                            continue
+                        na = -cps
+                        nb = sb * sps
+                    nx = na * erx - nb * ery
+                    ny = na * ery + nb * erx
                 rvx = vel[i, 0] - (-om * qy + sd * wp[w, W_DX])
                 rvy = vel[i, 1] - (om * qx + sd * wp[w, W_DY])
                 vn = rvx * nx + rvy * ny

@@ -60,7 +60,8 @@ def model_from_drive(drive, *, ramp_time: float = 0.2, axial_stiffness: float | 
     ------
     InputError
         Chain family not simulated, a link chain without ``bar_diameter``, a sprocket on a
-        link chain, an odd number of round links, toothless or outside idlers, a guide
+        link chain, an odd number of round links, toothless idlers with a link chain,
+        outside idlers, a guide
         whose end lies inside the pitch circle or beyond the span.
     """
     chain = drive.chain
@@ -85,9 +86,9 @@ def model_from_drive(drive, *, ramp_time: float = 0.2, axial_stiffness: float | 
             raise InputError(f"simulation: wheel {w.name!r} is a sprocket but the chain "
                              f"{chain.name!r} is a round link chain (use kind = "
                              "\"pocket_wheel\" or a pocket idler)")
-        if w.teeth is None:
+        if w.teeth is None and link:
             raise InputError(f"simulation: wheel {w.name!r} has no teeth; toothless idlers are "
-                             "not supported yet")
+                             "supported with roller chains only")
         if w.side != 1:
             raise InputError(f"simulation: wheel {w.name!r} has side = -1 (outside idler); "
                              "not supported yet")
@@ -99,12 +100,19 @@ def model_from_drive(drive, *, ramp_time: float = 0.2, axial_stiffness: float | 
     wheels = wheels[i0:] + wheels[:i0]
     torque = float(drive.torque())
     tens_name = drive.tensioner.wheel if drive.tensioner is not None else None
-    load_idx = next(i for i, w in enumerate(wheels) if i > 0 and w.name != tens_name)
+    load_idx = next(i for i, w in enumerate(wheels)
+                    if i > 0 and w.name != tens_name and w.kind != "idler")
     sim_wheels = []
     for i, w in enumerate(wheels):
-        r = w.pitch_radius(chain) if link else p / (2 * math.sin(math.pi / w.teeth))
+        plain = None if w.teeth is not None else float(w.pitch_radius(chain))
+        if plain is not None:
+            r = plain
+        else:
+            r = w.pitch_radius(chain) if link else p / (2 * math.sin(math.pi / w.teeth))
         centre = (w.position[0], sign * w.position[1])
-        if i == 0:
+        if plain is not None:
+            sw = SimWheel(centre, 3, _disc_inertia(r), "free", name=w.name, plain_radius=plain)
+        elif i == 0:
             sw = SimWheel(centre, w.teeth, _disc_inertia(r), "speed", float(drive.speed),
                           ramp_time, name=w.name)
         else:

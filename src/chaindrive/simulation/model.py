@@ -201,6 +201,10 @@ class SimWheel:
     damping : float
         Viscous bearing damping [N m s/rad].
     name : str
+    plain_radius : float or None
+        Toothless idler (roller chains): radius [m] of the circle on which the roller
+        centres run (the rim radius plus the roller radius); ``teeth`` is then ignored.
+        The roller rests on the rim by penalty contact with friction (no seats).
     """
 
     centre: tuple[float, float]
@@ -212,8 +216,11 @@ class SimWheel:
     torque: float = 0.0
     damping: float = 0.0
     name: str = ""
+    plain_radius: float | None = None
 
     def __post_init__(self):
+        if self.plain_radius is not None:
+            check_positive("plain_radius", self.plain_radius)
         if self.mode not in _MODES:
             raise InputError(f"wheel mode must be one of {', '.join(_MODES)}, got {self.mode!r}")
         if int(self.teeth) != self.teeth or self.teeth < 3:
@@ -222,8 +229,21 @@ class SimWheel:
         self.centre = (float(self.centre[0]), float(self.centre[1]))
 
     def pitch_radius(self, pitch: float) -> float:
-        """``R = p / (2 sin(π/z))`` [m]."""
+        """``R = p / (2 sin(π/z))`` [m]; a toothless idler: ``plain_radius``."""
+        if self.plain_radius is not None:
+            return float(self.plain_radius)
         return pitch / (2.0 * math.sin(math.pi / self.teeth))
+
+    def path_teeth(self, pitch: float) -> float:
+        """Links per turn on the pitch circle: ``z``, or ``π / asin(p / 2R)`` (toothless).
+
+        A toothless idler holds the rollers at chord ``p`` on its running circle, so each
+        link spans ``2 asin(p / 2R)``; the assembly treats it as a wheel of that many
+        (non-integer) teeth.
+        """
+        if self.plain_radius is None:
+            return float(self.teeth)
+        return math.pi / math.asin(pitch / (2.0 * self.plain_radius))
 
 
 @dataclass
@@ -373,6 +393,16 @@ class SimulationModel:
                 raise InputError("roller_radius (contact radius of a hinge) must be < (t - d)/2 "
                                  f"= {0.5 * (self.pitch - self.bar_diameter):g} m, got "
                                  f"{self.roller_radius:g}")
+        for i, w in enumerate(self.wheels):
+            if w.plain_radius is None:
+                continue
+            if self.bar_diameter is not None:
+                raise InputError(f"wheel {w.name or i!r}: toothless idlers (plain_radius) are "
+                                 "supported for roller chains only")
+            if w.plain_radius <= 0.5 * self.pitch + self.roller_radius:
+                raise InputError(f"wheel {w.name or i!r}: plain_radius must exceed pitch/2 + "
+                                 f"roller radius = {0.5 * self.pitch + self.roller_radius:g} m, "
+                                 f"got {w.plain_radius:g}")
         if not 0.0 <= self.prestrain < 0.01:
             raise InputError(f"prestrain must be in [0, 0.01), got {self.prestrain!r}")
         if self.tensioner is not None and not 0 <= self.tensioner.wheel < len(self.wheels):

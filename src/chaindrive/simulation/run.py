@@ -103,7 +103,7 @@ def _place(model: SimulationModel):
         return _place_link(model)
     p, n = model.pitch, model.links
     radii = model.pitch_radii()
-    teeth = [w.teeth for w in model.wheels]
+    teeth = [w.path_teeth(p) for w in model.wheels]
     adj, d = _adjust(model)
 
     def excess(s):
@@ -349,6 +349,12 @@ def kernel_arrays(model: SimulationModel, dt: float | None = None):
         wp[i, K.W_SPSI] = math.sin(psi)
         wp[i, K.W_HTIP] = model.tip(w.teeth)
         wp[i, K.W_INERTIA] = w.inertia
+        if w.plain_radius is not None:
+            # toothless idler: penalty contact with its running circle, no seats
+            wp[i, K.W_PLAIN] = 1.0
+            wp[i, K.W_HTIP] = 0.0
+            wp[i, K.W_NSEAT] = 3
+            wp[i, K.W_Z] = 0  # reported as teeth = 0 (toothless)
         wp[i, K.W_MODE] = K.MODE_SPEED if w.mode == "speed" else K.MODE_FREE
         wp[i, K.W_OMEGA0] = w.angular_velocity
         wp[i, K.W_RAMP] = w.ramp_time

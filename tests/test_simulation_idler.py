@@ -1,0 +1,78 @@
+"""Toothless idlers in the simulation (roller chains).
+
+A toothless idler holds the rollers on its rim: the roller centres run on a circle of
+radius R (rim + roller radius) at chord p, so a link spans 2x with sin x = p / 2R and,
+without slip, the idler turns at ω = v · 2x / p = (v / R) · x / sin x (the polygon of
+the chain on a plain wheel, derived here; the same relation as a sprocket's pitch radius
+with z = π / x teeth).
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+from chaindrive.errors import InputError
+from chaindrive.simulation import SimWheel, assemble, link_example, roller_example, simulate
+
+RADIUS = 0.06
+
+
+def _idler_drive(**kw):
+    m = roller_example(links=100, teeth=17, angular_velocity=10.0, load_torque=100.0,
+                       ramp_time=0.1, **kw)
+    a = m.wheels[1].centre[0]
+    # below the lower (slack) span, deep enough for a wrap of about 3 links
+    m.wheels.insert(1, SimWheel((a / 2, -0.25), 3, 2e-3, "free", name="idler",
+                                plain_radius=RADIUS))
+    return m
+
+
+def test_toothless_idler_turns_with_the_chain():
+    m = _idler_drive()
+    st = assemble(m)
+    c = m.wheels[1].centre
+    dist = np.hypot(st.pos[:, 0] - c[0], st.pos[:, 1] - c[1])
+    # assembled on the rim: the wrapped pins at R (penetration of the penalty < 1 µm)
+    on = np.abs(dist - RADIUS) < 1e-6
+    assert on.sum() >= 2 and dist.min() > RADIUS - 1e-6
+    r = simulate(m, 1.0, state=st, samples=4000, settle=0.5)
+    v = r.summary["chain_velocity_mean"][0]
+    x = math.asin(m.pitch / (2 * RADIUS))
+    omega = r.summary["wheel_speed_mean"][1]
+    assert omega == pytest.approx(v / RADIUS * x / math.sin(x), rel=5e-3)
+    # measured +0.014 % (the polygon factor x / sin x = 1.0077 is resolved)
+    assert omega == pytest.approx(v / RADIUS * x / math.sin(x), rel=1e-3)
+    assert r.teeth[1] == 0
+
+
+def test_toothless_idler_errors():
+    with pytest.raises(InputError, match=r"plain_radius must exceed pitch/2 \+ roller radius"):
+        m = roller_example(links=40, teeth=12)
+        m.wheels.insert(1, SimWheel((0.2, -0.2), 3, plain_radius=0.015))
+        m.__post_init__()
+    with pytest.raises(InputError, match="plain_radius must be positive"):
+        SimWheel((0.0, 0.0), 3, plain_radius=-1.0)
+    with pytest.raises(InputError, match="supported for roller chains only"):
+        m = link_example(links=40)
+        m.wheels.insert(1, SimWheel((0.7, -0.6), 3, plain_radius=0.2))
+        m.__post_init__()
+
+
+def test_project_toothless_idler():
+    from chaindrive.chains import get
+    from chaindrive.drive import Drive, Load, Wheel
+    from chaindrive.simulation import model_from_drive
+
+    d = Drive(chain=get("16B"), speed=10.0, load=Load(torque=100.0), wheels=[
+        Wheel("motor", "sprocket", 17, (0.0, 0.0), driving=True),
+        Wheel("idler", "idler", None, (0.5, -0.25), diameter=0.12),
+        Wheel("conveyor", "sprocket", 17, (1.0, 0.0))])
+    m = model_from_drive(d)
+    assert m.wheels[1].plain_radius == pytest.approx(0.06)
+    # the load acts on the conveyor sprocket, not on the idler
+    assert m.wheels[1].torque == 0 and m.wheels[2].torque == pytest.approx(-100.0)
+    r = simulate(m, 0.2, samples=200)
+    assert np.all(np.isfinite(r.tension)) and r.summary["wheel_speed_mean"][1] > 0
