@@ -76,3 +76,66 @@ def test_project_toothless_idler():
     assert m.wheels[1].torque == 0 and m.wheels[2].torque == pytest.approx(-100.0)
     r = simulate(m, 0.2, samples=200)
     assert np.all(np.isfinite(r.tension)) and r.summary["wheel_speed_mean"][1] > 0
+
+
+def _outside_idler_drive(y_top=0.031):
+    m = roller_example(links=60, teeth=17, angular_velocity=10.0, load_torque=100.0,
+                       ramp_time=0.1)
+    a = m.wheels[1].centre[0]
+    radius = m.pitch_radii()[0]
+    # a 17-tooth idler on the back of the lower (slack) span, its top at y_top: the chain
+    # leaves the driver's bottom, runs up over the idler (clockwise) and down to the
+    # driven wheel
+    m.wheels.insert(1, SimWheel((a / 2, y_top - radius), 17, 2e-3, "free", name="idler",
+                                side=-1))
+    return m
+
+
+def test_outside_idler_turns_backwards_with_the_chain():
+    m = _outside_idler_drive()
+    st = assemble(m)
+    c = m.wheels[1].centre
+    radius = m.pitch_radii()[1]
+    dist = np.hypot(st.pos[:, 0] - c[0], st.pos[:, 1] - c[1])
+    # the wrapped pins sit in the idler's seats above its centre (the seat bottoms lie
+    # r_s - r = 80 µm inside the pitch circle)
+    on = np.abs(dist - radius) < 1e-4
+    assert on.sum() >= 3 and np.all(st.pos[on, 1] > c[1])
+    r = simulate(m, 1.0, state=st, samples=4000, settle=0.5)
+    w = r.summary["wheel_speed_mean"]
+    # clockwise at the driver's speed (equal teeth): measured -0.026 %
+    assert w[1] == pytest.approx(-w[0], rel=5e-3)
+    assert w[2] == pytest.approx(w[0], rel=5e-3)
+
+
+def test_outside_idler_errors():
+    from chaindrive.errors import InfeasibleError
+
+    with pytest.raises(InputError, match=r"wheel side must be 1 \(inside the loop\) or -1"):
+        SimWheel((0.0, 0.0), 17, side=0)
+    m = _outside_idler_drive()
+    m.wheels[0].side = -1
+    with pytest.raises(InputError, match=r"wheel 0 \(the driver\) must lie inside the chain loop"):
+        m.__post_init__()
+    m = link_example(links=40)
+    m.wheels.insert(1, SimWheel((0.7, -0.1), 8, side=-1))
+    with pytest.raises(InputError, match=r"outside idlers \(side = -1\) are supported for roller"):
+        m.__post_init__()
+    # an outside idler that does not reach the chain: no loop
+    with pytest.raises(InfeasibleError, match=r"signed wraps add up to .* instead of 2π"):
+        assemble(_outside_idler_drive(y_top=-0.3))
+
+
+def test_project_outside_idler():
+    from chaindrive.chains import get
+    from chaindrive.drive import Drive, Load, Wheel
+    from chaindrive.simulation import model_from_drive
+
+    d = Drive(chain=get("16B"), speed=10.0, load=Load(torque=100.0), wheels=[
+        Wheel("motor", "sprocket", 17, (0.0, 0.0), driving=True),
+        Wheel("idler", "idler", 17, (0.273, -0.038), side=-1),
+        Wheel("conveyor", "sprocket", 17, (0.546, 0.0))])
+    m = model_from_drive(d)
+    assert m.wheels[1].side == -1 and m.wheels[2].torque == pytest.approx(-100.0)
+    r = simulate(m, 0.1, samples=100)
+    assert np.all(np.isfinite(r.tension))

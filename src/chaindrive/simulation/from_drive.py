@@ -60,8 +60,8 @@ def model_from_drive(drive, *, ramp_time: float = 0.2, axial_stiffness: float | 
     ------
     InputError
         Chain family not simulated, a link chain without ``bar_diameter``, a sprocket on a
-        link chain, an odd number of round links, toothless idlers with a link chain,
-        outside idlers, a guide
+        link chain, an odd number of round links, toothless or outside idlers with a
+        link chain, a guide
         whose end lies inside the pitch circle or beyond the span.
     """
     chain = drive.chain
@@ -89,9 +89,9 @@ def model_from_drive(drive, *, ramp_time: float = 0.2, axial_stiffness: float | 
         if w.teeth is None and link:
             raise InputError(f"simulation: wheel {w.name!r} has no teeth; toothless idlers are "
                              "supported with roller chains only")
-        if w.side != 1:
+        if w.side != 1 and link:
             raise InputError(f"simulation: wheel {w.name!r} has side = -1 (outside idler); "
-                             "not supported yet")
+                             "supported with roller chains only")
     sign = 1.0
     if drive.travel == "cw":
         wheels = wheels[::-1]
@@ -111,13 +111,15 @@ def model_from_drive(drive, *, ramp_time: float = 0.2, axial_stiffness: float | 
             r = w.pitch_radius(chain) if link else p / (2 * math.sin(math.pi / w.teeth))
         centre = (w.position[0], sign * w.position[1])
         if plain is not None:
-            sw = SimWheel(centre, 3, _disc_inertia(r), "free", name=w.name, plain_radius=plain)
+            sw = SimWheel(centre, 3, _disc_inertia(r), "free", name=w.name, plain_radius=plain,
+                          side=w.side)
         elif i == 0:
             sw = SimWheel(centre, w.teeth, _disc_inertia(r), "speed", float(drive.speed),
                           ramp_time, name=w.name)
         else:
             load = -torque * w.teeth / wheels[0].teeth if i == load_idx else 0.0
-            sw = SimWheel(centre, w.teeth, _disc_inertia(r), "free", torque=load, name=w.name)
+            sw = SimWheel(centre, w.teeth, _disc_inertia(r), "free", torque=load, name=w.name,
+                          side=w.side)
         sim_wheels.append(sw)
     tens = None
     if drive.tensioner is not None:
@@ -205,12 +207,12 @@ def guide_channel(model: SimulationModel, wheel: int, height: float, end_distanc
     from .run import _tangent
 
     nw = len(model.wheels)
-    radii = model.pitch_radii()
+    radii = model.signed_radii()
     j, i = wheel, (wheel - 1) % nw
     if not height > 0:
         raise InputError(f"guide height must be positive (0 < H), got {height:g} m")
-    if not end_distance > radii[j]:
-        raise InputError(f"guide end_distance must exceed the pitch radius {radii[j]:.6g} m of "
+    if not end_distance > abs(radii[j]):
+        raise InputError(f"guide end_distance must exceed the pitch radius {abs(radii[j]):.6g} m of "
                          f"wheel {model.wheels[j].name or j!r}, got {end_distance:g} m")
     c_i = model.wheels[i].centre
     c_j = model.wheels[j].centre

@@ -205,6 +205,10 @@ class SimWheel:
         Toothless idler (roller chains): radius [m] of the circle on which the roller
         centres run (the rim radius plus the roller radius); ``teeth`` is then ignored.
         The roller rests on the rim by penalty contact with friction (no seats).
+    side : {1, -1}
+        ``1``: inside the chain loop (the chain wraps it counter-clockwise, like every
+        sprocket); ``-1``: an outside idler on the back of the chain (wrapped clockwise;
+        roller chains).
     """
 
     centre: tuple[float, float]
@@ -217,8 +221,12 @@ class SimWheel:
     damping: float = 0.0
     name: str = ""
     plain_radius: float | None = None
+    side: int = 1
 
     def __post_init__(self):
+        if self.side not in (1, -1):
+            raise InputError(f"wheel side must be 1 (inside the loop) or -1 (outside idler), "
+                             f"got {self.side!r}")
         if self.plain_radius is not None:
             check_positive("plain_radius", self.plain_radius)
         if self.mode not in _MODES:
@@ -393,7 +401,12 @@ class SimulationModel:
                 raise InputError("roller_radius (contact radius of a hinge) must be < (t - d)/2 "
                                  f"= {0.5 * (self.pitch - self.bar_diameter):g} m, got "
                                  f"{self.roller_radius:g}")
+        if self.wheels[0].side != 1:
+            raise InputError("wheel 0 (the driver) must lie inside the chain loop (side = 1)")
         for i, w in enumerate(self.wheels):
+            if w.side != 1 and self.bar_diameter is not None:
+                raise InputError(f"wheel {w.name or i!r}: outside idlers (side = -1) are "
+                                 "supported for roller chains only")
             if w.plain_radius is None:
                 continue
             if self.bar_diameter is not None:
@@ -483,6 +496,10 @@ class SimulationModel:
 
         return np.array([float(link_chain_pitch_radius(self.pitch, self.bar_diameter, w.teeth))
                          for w in self.wheels])
+
+    def signed_radii(self) -> np.ndarray:
+        """Pitch radii [m] with the sign of the wrap: negative for outside idlers."""
+        return self.pitch_radii() * np.array([float(w.side) for w in self.wheels])
 
     def omega_max(self) -> float:
         """Highest natural frequency of a pin [rad/s]: ``sqrt((4k + k_c)/m)``."""

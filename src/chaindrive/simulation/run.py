@@ -43,7 +43,13 @@ __all__ = ["SimulationResult", "assemble", "simulate", "kernel_arrays"]
 
 # ---------------------------------------------------------------------------- geometry
 def _tangent(c1, r1, c2, r2):
-    """Outer tangent for CCW travel from circle 1 to circle 2: (P1, P2, u, n)."""
+    """Tangent for travel from circle 1 to circle 2: (P1, P2, u, n).
+
+    Radii are signed: positive for a wheel the chain wraps counter-clockwise (inside
+    the loop), negative for one it wraps clockwise (an outside idler on the back of the
+    chain); the chain touches circle i at ``c_i − r_i n`` (outer tangent for equal
+    signs, crossed tangent otherwise).
+    """
     d = np.subtract(c2, c1)
     dist = math.hypot(*d)
     s = (r2 - r1) / dist
@@ -58,7 +64,11 @@ def _tangent(c1, r1, c2, r2):
 
 
 def _path(centres, radii, teeth, pitch):
-    """Path pieces [(kind, data, metric length in m)] starting at wheel 0's exit."""
+    """Path pieces [(kind, data, metric length in m)] starting at wheel 0's exit.
+
+    ``radii`` signed (see :func:`_tangent`); an arc's data is ``(wheel, entry angle,
+    sense)``, sense +1 counter-clockwise, −1 clockwise.
+    """
     nw = len(centres)
     tans = [_tangent(centres[i], radii[i], centres[(i + 1) % nw], radii[(i + 1) % nw])
             for i in range(nw)]
@@ -70,15 +80,20 @@ def _path(centres, radii, teeth, pitch):
         pieces.append(("span", (p1, u), length))
         j = (i + 1) % nw
         n_out = tans[j][3]
-        a_in = math.atan2(-n[1], -n[0])
-        a_out = math.atan2(-n_out[1], -n_out[0])
-        wrap = (a_out - a_in) % (2 * math.pi)
-        pieces.append(("arc", (j, a_in), wrap * teeth[j] / (2 * math.pi) * pitch))
-        wraps.append(wrap)
-    if sum(wraps) > 2 * math.pi + 1e-6:
-        # a wheel lies inside the hull of the others: the chain would not touch it
-        raise InfeasibleError("a wheel lies inside the loop formed by the others (wraps add "
-                              f"up to {sum(wraps):.4g} rad > 2π); move it outwards")
+        sj = 1.0 if radii[j] > 0 else -1.0
+        # direction from the centre to the chain: -n (counter-clockwise wrap), +n (clockwise)
+        a_in = math.atan2(-sj * n[1], -sj * n[0])
+        a_out = math.atan2(-sj * n_out[1], -sj * n_out[0])
+        wrap = (sj * (a_out - a_in)) % (2 * math.pi)
+        pieces.append(("arc", (j, a_in, sj), wrap * teeth[j] / (2 * math.pi) * pitch))
+        wraps.append(sj * wrap)
+    if abs(sum(wraps) - 2 * math.pi) > 1e-6:
+        # a wheel lies inside the hull of the others (the chain would not touch it), or an
+        # outside idler does not press on the chain
+        raise InfeasibleError("the wheels do not form a chain loop: the signed wraps add up to "
+                              f"{sum(wraps):.4g} rad instead of 2π (a wheel inside the loop "
+                              "formed by the others, or an outside idler not pressing on the "
+                              "chain); move it")
     return pieces
 
 
@@ -102,7 +117,7 @@ def _place(model: SimulationModel):
     if model.is_link_chain:
         return _place_link(model)
     p, n = model.pitch, model.links
-    radii = model.pitch_radii()
+    radii = model.signed_radii()
     teeth = [w.path_teeth(p) for w in model.wheels]
     adj, d = _adjust(model)
 
@@ -127,15 +142,18 @@ def _solve_offset(excess, n, p, adj):
         # search a bracket near 0
         grid = np.linspace(lo, hi, 401)
         vals = []
+        reason = ""
         for g in grid:
             try:
                 vals.append(excess(g))
-            except InfeasibleError:
+            except InfeasibleError as exc:
                 vals.append(np.nan)
+                reason = str(exc)
         vals = np.array(vals)
         idx = np.where(np.isfinite(vals[:-1]) & np.isfinite(vals[1:]) & (vals[:-1] * vals[1:] <= 0))[0]
         if len(idx) == 0:
-            raise InfeasibleError(f"no position of wheel {adj} fits a loop of {n} links")
+            why = f" ({reason})" if not np.any(np.isfinite(vals)) and reason else ""
+            raise InfeasibleError(f"no position of wheel {adj} fits a loop of {n} links{why}")
         k0 = idx[np.argmin(np.abs(grid[idx]))]
         s0 = brentq(excess, grid[k0], grid[k0 + 1], xtol=1e-12)
     return s0
@@ -158,11 +176,11 @@ def _place_roller(model, p, n, radii, teeth, adj, d, s0):
         if kind == "span":
             pos[k] = data[0] + local * data[1]
         else:
-            j, a_in = data
-            ang = a_in + local / p * 2 * math.pi / teeth[j]
+            j, a_in, sj = data
+            ang = a_in + sj * local / p * 2 * math.pi / teeth[j]
             if np.isnan(theta[j]):
                 theta[j] = ang
-            pos[k] = centres[j] + radii[j] * np.array([math.cos(ang), math.sin(ang)])
+            pos[k] = centres[j] + abs(radii[j]) * np.array([math.cos(ang), math.sin(ang)])
     theta = np.where(np.isnan(theta), 0.0, theta)
     return pos, theta, centres, adj, d, s0, pieces
 
@@ -184,7 +202,7 @@ def _hit(piece, centres, radii, wrap, point, length, after):
             return None
         s = b + math.sqrt(disc)
         return s if after < s <= metric + tol else None
-    j, a_in = data
+    j, a_in = data[:2]
     c, r = centres[j], radii[j]
     dv = point - c
     dist = math.hypot(*dv)
@@ -230,7 +248,7 @@ def _walk(centres, radii, pieces, wrap, lengths, n):
         if kind == "span":
             pos[k + 1] = data[0] + par * data[1]
         else:
-            j, a_in = data
+            j, a_in = data[:2]
             a = a_in + par
             pos[k + 1] = centres[j] + radii[j] * np.array([math.cos(a), math.sin(a)])
         where.append((ip, par))
@@ -294,12 +312,12 @@ def _place_link(model: SimulationModel):
     npc = len(pieces)
     theta = np.full(len(model.wheels), np.nan)
     # wheel 0: pin 0 (even seat 0) at its exit point
-    _, a0 = pieces[-1][1]
+    _, a0 = pieces[-1][1][:2]
     theta[0] = a0 + wrap[0]
     for k, (ip, par) in enumerate(where[:n]):
         kind, data, _ = pieces[ip % npc]
         if kind == "arc" and np.isnan(theta[data[0]]):
-            j, a_in = data
+            j, a_in = data[:2]
             # pin k sits on seat k mod 2 (seat 0 at angle 0, seat 1 at the even link's angle)
             da = model.central_angles(model.wheels[j].teeth)[0]
             theta[j] = a_in + par - (da if k % 2 else 0.0)
@@ -635,7 +653,7 @@ def tight_span(model: SimulationModel, state: State):
     """(start, end) of the span entering wheel 0 (from the last wheel) [m]."""
     nw = len(model.wheels)
     c = np.column_stack([state.wp[:, K.W_CX], state.wp[:, K.W_CY]])
-    radii = model.pitch_radii()
+    radii = model.signed_radii()
     p1, p2, _, _ = _tangent(c[nw - 1], radii[nw - 1], c[0], radii[0])
     return p1, p2
 
@@ -643,7 +661,7 @@ def tight_span(model: SimulationModel, state: State):
 def slack_span(model: SimulationModel, state: State):
     """(start, end) of the span leaving wheel 0 (to wheel 1) [m]."""
     c = np.column_stack([state.wp[:, K.W_CX], state.wp[:, K.W_CY]])
-    radii = model.pitch_radii()
+    radii = model.signed_radii()
     p1, p2, _, _ = _tangent(c[0], radii[0], c[1], radii[1])
     return p1, p2
 
