@@ -29,9 +29,11 @@ def simulate_command(
     no_plots: bool = typer.Option(False, "--no-plots", help="Skip PNGs and GIF."),
     as_json: bool = typer.Option(False, "--json", help="Print the summary as JSON (SI units)."),
 ) -> None:
-    """Simulate the drive: point-mass pins, elastic links (EA), penalty roller-tooth contact
-    (ISO 606 seat and flank), prescribed driver speed, driven inertia and load, gravity;
-    assembled in static equilibrium first (see docs/simulation.md)."""
+    """Simulate the drive: point-mass pins, elastic links (EA), penalty contact of rollers
+    with ISO 606 tooth gaps or of round-link hinges with pocket seats, the project's
+    guides (channels) and idlers (toothed, toothless, outside), tensioner, prescribed
+    driver speed, driven inertia and load, gravity; assembled in static equilibrium
+    first (see docs/simulation.md)."""
     from ..simulation import link_example, model_from_drive, roller_example, simulate
 
     dur = quantity(duration, "s", "duration")
