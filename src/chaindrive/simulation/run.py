@@ -560,6 +560,8 @@ class SimulationResult(Result):
         Wall-clock time of the integration [s] (excluding assembly).
     assembly_time : float
         Simulated relaxation time of the assembly [s].
+    guide_segments : ndarray (G, 2, 2)
+        Start and end points of the guides' roller surfaces [m].
     """
 
     time: np.ndarray
@@ -584,6 +586,7 @@ class SimulationResult(Result):
     steps: int
     wall_time: float
     assembly_time: float
+    guide_segments: np.ndarray = field(default_factory=lambda: np.zeros((0, 2, 2)))
     summary: dict = field(default_factory=dict)
 
     def tight_side_tension(self) -> np.ndarray:
@@ -753,7 +756,8 @@ def simulate(model: SimulationModel, duration: float, *, dt: float | None = None
         wheel_centres=np.column_stack([wp[:, K.W_CX], wp[:, K.W_CY]]),
         pitch_radii=wp[:, K.W_R].copy(), teeth=wp[:, K.W_Z].astype(int),
         tight_span=np.array([p1, p2]), slack_span=np.array(slack_span(model, state)), pitch=model.pitch, roller_radius=model.roller_radius,
-        dt=dt, steps=nsteps, wall_time=wall, assembly_time=state.relax_time)
+        dt=dt, steps=nsteps, wall_time=wall, assembly_time=state.relax_time,
+        guide_segments=np.array([[g.start, g.end] for g in model.guides], float).reshape(-1, 2, 2))
     res.summary = _summary(res, 0.5 * duration if settle is None else settle)
     #: state at the end of the run (not a dataclass field: not saved)
     res.final_state = State(pos, vel, ws, wp, state.gd, par, state.relax_time, state.relax_steps)
