@@ -221,3 +221,16 @@ def test_tensioner_drive_runs():
     # the tensioner idler turns at the chain speed: ω z_driver / z_idler
     assert r.summary["wheel_speed_mean"][1] == pytest.approx(10.0 * 17 / 11, rel=0.02)
     assert np.all(np.isfinite(r.tensioner_position))
+
+
+def test_continued_run_keeps_time_and_driver_speed():
+    # a run continued from a final_state goes on at its end time: the driver's speed
+    # ramp does not restart
+    m = roller_example(links=30, teeth=11, angular_velocity=5.0, ramp_time=0.01,
+                       gravity=False)
+    r0 = simulate(m, 0.02, samples=20)
+    assert r0.final_state.time == pytest.approx(r0.steps * r0.dt)
+    r1 = simulate(m, 0.01, state=r0.final_state, samples=20)
+    assert r1.time[0] == pytest.approx(r0.final_state.time)
+    assert np.all(r1.wheel_speed[:, 0] == pytest.approx(5.0))
+    assert r1.summary["duration"] == pytest.approx(0.01, rel=1e-3)

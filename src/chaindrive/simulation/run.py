@@ -410,6 +410,9 @@ class State:
     par: np.ndarray
     relax_time: float = 0.0
     relax_steps: int = 0
+    #: time [s] of this state: 0 after assembly, the end time of the run for a
+    #: ``final_state`` (so that a continued run does not restart the driver's ramp)
+    time: float = 0.0
 
 
 def assemble(model: SimulationModel, *, dt: float | None = None, tolerance: float = 1e-7,
@@ -623,7 +626,7 @@ def _summary(res: SimulationResult, settle: float) -> dict:
     v = res.chain_velocity[sel]
     tt = res.tight_side_tension()[sel]
     out = {
-        "duration": float(res.time[-1] + res.dt) if len(res.time) else 0.0,
+        "duration": float(res.steps * res.dt),
         "dt": res.dt,
         "steps": res.steps,
         "wall_time": res.wall_time,
@@ -687,9 +690,12 @@ def simulate(model: SimulationModel, duration: float, *, dt: float | None = None
     probes : array (P, 4), optional
         Probe points ``(x, y, ux, uy)``; default the middle of the tight span.
     state : State, optional
-        Start state (from :func:`assemble`); default a fresh assembly.
+        Start state (from :func:`assemble`, or a previous result's ``final_state``:
+        the run continues from its time, the driver's speed ramp included); default a
+        fresh assembly.
     settle : float, optional
-        Start of the steady window of the summary [s]; default half the duration.
+        Start of the steady window of the summary [s] (absolute time); default half way
+        through this run.
     progress : callable, optional
         Called as ``progress(done_steps, total_steps)`` between chunks.
 
@@ -741,7 +747,7 @@ def simulate(model: SimulationModel, duration: float, *, dt: float | None = None
         m = min(per, nsteps - done)
         t0 = time.perf_counter()
         written = K.integrate(pos, vel, force, np.zeros_like(pos), tension, contact, ws, wp, state.gd, tab, par,
-                              done * dt, m, record_every, probes, *recs, written)
+                              state.time + done * dt, m, record_every, probes, *recs, written)
         wall += time.perf_counter() - t0
         done += m
         if progress is not None:
@@ -758,9 +764,10 @@ def simulate(model: SimulationModel, duration: float, *, dt: float | None = None
         tight_span=np.array([p1, p2]), slack_span=np.array(slack_span(model, state)), pitch=model.pitch, roller_radius=model.roller_radius,
         dt=dt, steps=nsteps, wall_time=wall, assembly_time=state.relax_time,
         guide_segments=np.array([[g.start, g.end] for g in model.guides], float).reshape(-1, 2, 2))
-    res.summary = _summary(res, 0.5 * duration if settle is None else settle)
+    res.summary = _summary(res, state.time + 0.5 * duration if settle is None else settle)
     #: state at the end of the run (not a dataclass field: not saved)
-    res.final_state = State(pos, vel, ws, wp, state.gd, par, state.relax_time, state.relax_steps)
+    res.final_state = State(pos, vel, ws, wp, state.gd, par, state.relax_time, state.relax_steps,
+                            state.time + nsteps * dt)
     return res
 
 
@@ -784,5 +791,5 @@ def conservative(state: State) -> State:
     wp[:, K.W_DAMP] = 0.0
     wp[:, K.W_SC] = 0.0
     return State(state.pos.copy(), state.vel.copy(), state.ws.copy(), wp, state.gd.copy(), par,
-                 state.relax_time, state.relax_steps)
+                 state.relax_time, state.relax_steps, state.time)
 
