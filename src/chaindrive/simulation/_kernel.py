@@ -76,6 +76,12 @@ def _sat(x):
     return x
 
 
+@njit(cache=True, fastmath=False, inline="always")
+def _segment_frame(rx, ry, ux, uy, nx, ny):
+    """Offset ``h`` along the normal and position ``s`` along a segment of ``(rx, ry)``."""
+    return rx * nx + ry * ny, rx * ux + ry * uy
+
+
 @njit(cache=True, fastmath=False)
 def integrate(pos, vel, force, work, tension, contact, ws, wp, gd, tab, par, t0, nsteps, record_every,
               probes, rec_t, rec_probe, rec_tension, rec_contact, rec_ws, rec_pos, rec_energy,
@@ -109,6 +115,9 @@ def integrate(pos, vel, force, work, tension, contact, ws, wp, gd, tab, par, t0,
     cand = np.empty((nw, n), np.int64)
     gcache = np.full((nw, n), -1, np.int64)
     ncand = np.zeros(nw, np.int64)
+    # pins near each guide, listed at the same rebuilds as the wheels' candidates
+    gcand = np.empty((ng, n), np.int64)
+    ngcand = np.zeros(ng, np.int64)
     countdown = 0
     vmax_s = 0.0
     fgx = m * gx
@@ -318,13 +327,22 @@ def integrate(pos, vel, force, work, tension, contact, ws, wp, gd, tab, par, t0,
             nx = gd[g, 4]
             ny = gd[g, 5]
             length = gd[g, 6]
-            for i in range(n):
-                rx = pos[i, 0] - ax
-                ry = pos[i, 1] - ay
-                h = rx * nx + ry * ny
+            if rebuild:
+                # candidates: pins within reach of the segment (distance < r + margin)
+                reach = rr + margin
+                nc = 0
+                for i in range(n):
+                    h, s = _segment_frame(pos[i, 0] - ax, pos[i, 1] - ay, ux, uy, nx, ny)
+                    if h < -reach or h >= reach or s < -reach or s > length + reach:
+                        continue
+                    gcand[g, nc] = i
+                    nc += 1
+                ngcand[g] = nc
+            for ic in range(ngcand[g]):
+                i = gcand[g, ic]
+                h, s = _segment_frame(pos[i, 0] - ax, pos[i, 1] - ay, ux, uy, nx, ny)
                 if h < -rr or h >= rr:
                     continue
-                s = rx * ux + ry * uy
                 if s < 0.0 or s > length:
                     es = s if s < 0.0 else s - length
                     d2 = es * es + h * h

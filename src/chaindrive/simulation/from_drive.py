@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import itertools
 import math
 
 from ..errors import InputError
@@ -14,7 +15,7 @@ from .model import (
     link_chain_axial_stiffness,
 )
 
-__all__ = ["model_from_drive", "guide_channel"]
+__all__ = ["model_from_drive", "guide_channel", "channel_guides"]
 
 
 def _disc_inertia(radius: float, thickness: float = 0.02, density: float = 7800.0) -> float:
@@ -30,9 +31,9 @@ def model_from_drive(drive, *, ramp_time: float = 0.2, axial_stiffness: float | 
     the catalogue) on pocket wheels (every toothed wheel of the drive is then a pocket
     wheel with ``teeth`` pockets; pitch radius seed 002 eq. (6); ``EA`` from
     :func:`~chaindrive.simulation.model.link_chain_axial_stiffness`). Each guide of the
-    drive becomes a channel (:func:`guide_channel`) on the span entering its wheel:
-    roller chains' guided entry is validated against the kinematics module (docs/
-    simulation.md); for round link chains only free entry is.
+    drive becomes a channel (:func:`guide_channel`, with lead-ins) on the span entering
+    its wheel; guided entry is validated against the kinematics module for roller and
+    round link chains (docs/simulation.md).
     The driving wheel becomes wheel 0 at the drive's speed (ramped over ``ramp_time``
     [s]); the load torque ``T z_j / z_0`` acts on the first other non-tensioner wheel;
     wheel inertias are 20 mm steel discs at the pitch radius; the slack tension of
@@ -164,16 +165,77 @@ def model_from_drive(drive, *, ramp_time: float = 0.2, axial_stiffness: float | 
     return model
 
 
+def channel_guides(end: float, far: float, height: float, roller_radius: float, *,
+                   lead_in: float = 0.0, segments: int = 10, lead_in_angle: float = 0.15,
+                   both_ends: bool = True) -> list[SimGuide]:
+    """Guides of a straight channel in its own frame (``x`` along it, ``y`` across).
+
+    The pin line is ``y = height`` from ``x = end`` (the guide end ``G`` of seed 002,
+    where the chain leaves the channel towards the wheel) to ``x = far``; the roller
+    (bar) *surfaces* slide on two guides at ``height ∓ roller_radius``. With
+    ``lead_in > 0`` each guide's end opens on an arc of that radius over
+    ``lead_in_angle`` [rad], as real guides have a lead-in (a polyline of ``segments``
+    pieces: the kernel treats segment ends as corners, so the surface has no gaps or
+    steps); ``both_ends`` puts one at the far end too.
+
+    Parameters
+    ----------
+    end, far : float
+        ``x`` of the channel's ends [m], ``far > end``.
+    height : float
+        ``y`` of the pin line [m].
+    roller_radius : float
+        [m].
+    lead_in : float
+        Radius of the lead-in arcs [m]; 0 for plain ends.
+    segments : int
+    lead_in_angle : float
+    both_ends : bool
+
+    Returns
+    -------
+    list of SimGuide
+        The two straight guides first, then the lead-in pieces.
+
+    Examples
+    --------
+    >>> g = channel_guides(0.1, 0.5, 0.05, 0.008, lead_in=0.1, segments=4)
+    >>> len(g), g[0].start, g[1].end
+    (18, (0.1, 0.042), (0.1, 0.058))
+    """
+    import numpy as np
+
+    if not far > end:
+        raise InputError(f"channel far end must lie beyond its end (far > {end:g} m), got {far:g}")
+    guides = [SimGuide((end, height - roller_radius), (far, height - roller_radius)),
+              SimGuide((far, height + roller_radius), (end, height + roller_radius))]
+    if lead_in > 0:
+        angles = np.linspace(0.0, lead_in_angle, int(segments) + 1)
+        for side in (-1, 1):  # the guide below (-1) and above (+1) the pin line
+            yc = height + side * (roller_radius + lead_in)
+            pts = [(end - lead_in * math.sin(a), yc - side * lead_in * math.cos(a)) for a in angles]
+            for q0, q1 in itertools.pairwise(pts):
+                # the chain on the left of start -> end
+                guides.append(SimGuide(q1, q0) if side < 0 else SimGuide(q0, q1))
+        if both_ends:
+            # mirror image x -> end + far - x (which reverses each segment's direction)
+            guides += [SimGuide((end + far - g.end[0], g.end[1]), (end + far - g.start[0], g.start[1]))
+                       for g in guides[2:]]
+    return [SimGuide(tuple(float(v) for v in g.start), tuple(float(v) for v in g.end))
+            for g in guides]
+
+
 def guide_channel(model: SimulationModel, wheel: int, height: float, end_distance: float,
-                  *, margin_links: float = 2.0) -> list[SimGuide]:
-    """Two guides forming a channel for the chain entering ``wheel`` (seed 002's guide).
+                  *, length: float | None = None, lead_in: float | None = None,
+                  margin_links: float = 2.0) -> list[SimGuide]:
+    """Channel guides for the chain entering ``wheel`` (seed 002's guide).
 
     In the frame of docs/kinematics.md for that wheel (origin at its axis, ``x`` against
     the chain's travel along the incoming span, ``y`` from the axis towards the span) the
     pin line is ``y = H`` (``height``) from its end ``G = (l, H)`` (``end_distance``) back
-    along the span to ``margin_links`` pitches before the previous wheel's tangent point;
-    the roller (bar) *surfaces* slide on the guides, at ``H − r`` and ``H + r``. The ends
-    act as corners (the roller rolls round them).
+    along the span for ``length`` (default: to ``margin_links`` pitches before the
+    previous wheel's tangent point); the roller (bar) *surfaces* slide on the guides, at
+    ``H − r`` and ``H + r``, with lead-in arcs at both ends (:func:`channel_guides`).
 
     Parameters
     ----------
@@ -184,6 +246,11 @@ def guide_channel(model: SimulationModel, wheel: int, height: float, end_distanc
         ``H`` [m], ``0 < H``.
     end_distance : float
         ``l`` [m], greater than the pitch radius.
+    length : float, optional
+        Length of the channel [m].
+    lead_in : float, optional
+        Radius of the lead-in arcs [m]; default 5 pitches; 0 for plain ends (a round
+        link chain's bar then drops off the corner: docs/simulation.md).
     margin_links : float
         Clearance of the channel's far end from the previous wheel [pitches].
 
@@ -200,7 +267,7 @@ def guide_channel(model: SimulationModel, wheel: int, height: float, end_distanc
     --------
     >>> from chaindrive.simulation import roller_example
     >>> m = roller_example(links=40, teeth=12)
-    >>> g = guide_channel(m, 0, m.pitch_radii()[0], 0.1)
+    >>> g = guide_channel(m, 0, m.pitch_radii()[0], 0.1, lead_in=0)
     >>> [round(float(v), 4) for v in g[0].start], [round(float(v), 4) for v in g[0].end]
     ([0.1, 0.0411], [0.3048, 0.0411])
     """
@@ -224,10 +291,15 @@ def guide_channel(model: SimulationModel, wheel: int, height: float, end_distanc
         raise InputError(f"guide end_distance {end_distance:g} m leaves no room for a guide on "
                          f"the span entering wheel {model.wheels[j].name or j!r} (at most "
                          f"{far - model.pitch:.4g} m)")
-    r = model.roller_radius
+    if length is not None:
+        if not model.pitch <= length <= far - end_distance:
+            raise InputError(f"guide length must lie in [{model.pitch:.4g}, "
+                             f"{far - end_distance:.4g}] m, got {length:g}")
+        far = end_distance + length
+    lead = 5.0 * model.pitch if lead_in is None else float(lead_in)
+    local = channel_guides(end_distance, far, height, model.roller_radius, lead_in=lead)
 
-    def point(s, y):
-        return (c_j[0] + s * ex[0] + y * ey[0], c_j[1] + s * ex[1] + y * ey[1])
+    def point(q):
+        return (c_j[0] + q[0] * ex[0] + q[1] * ey[0], c_j[1] + q[0] * ex[1] + q[1] * ey[1])
 
-    return [SimGuide(point(end_distance, height - r), point(far, height - r)),
-            SimGuide(point(far, height + r), point(end_distance, height + r))]
+    return [SimGuide(point(g.start), point(g.end)) for g in local]
