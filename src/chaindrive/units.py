@@ -43,7 +43,12 @@ def _registry():
         raise InputError(
             "parsing quantities with units needs pint: pip install 'chaindrive[units]'"
         ) from exc
-    ureg = pint.UnitRegistry()
+    try:
+        # pint's parsed-definitions cache in the user's cache folder (pint docs,
+        # "Speeding up pint": cuts building the registry from ~0.3 s to ~0.04 s)
+        ureg = pint.UnitRegistry(cache_folder=":auto:")
+    except Exception:  # noqa: BLE001 - an unwritable cache folder must not stop parsing
+        ureg = pint.UnitRegistry()
     ureg.define("rpm = revolution / minute")
     return ureg
 

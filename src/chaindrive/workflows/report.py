@@ -55,7 +55,18 @@ class Figure:
     @classmethod
     def from_matplotlib(cls, fig, caption: str, filename: str, dpi: int = 100) -> Figure:
         buf = io.BytesIO()
-        fig.savefig(buf, format="png", dpi=dpi, bbox_inches="tight")
+        if any(ax.get_aspect() == 1.0 for ax in fig.axes):
+            # equal-aspect drawings (layouts, outlines): crop the white space the fixed
+            # aspect leaves, at the price of a second draw
+            fig.savefig(buf, format="png", dpi=dpi, bbox_inches="tight")
+        else:
+            # plots: constrained layout, solved inside the one draw of savefig
+            # (bbox_inches="tight" needs an extra draw per figure)
+            try:
+                fig.set_layout_engine("constrained")
+            except RuntimeError:  # an engine the figure's colorbars cannot switch from
+                pass
+            fig.savefig(buf, format="png", dpi=dpi)
         import matplotlib.pyplot as plt
 
         plt.close(fig)
