@@ -457,9 +457,7 @@ class SimulationModel:
         Sprocket: ``70° − 45°/z`` (ISO 606); pocket wheel: :func:`link_seat_profile`.
         """
         if self.bar_diameter is None:
-            from ..geometry.sprocket import seating_angle_limits
-
-            return 0.5 * float(seating_angle_limits(teeth)[1])
+            return math.radians(70.0 - 45.0 / teeth)
         return link_seat_profile(self.pitch, self.bar_diameter, teeth, self.tip(teeth))[0]
 
     @property
@@ -479,26 +477,16 @@ class SimulationModel:
 
     @property
     def seat(self) -> float:
-        """Seating radius ``r_s`` [m] (ISO 606: ``r_i,min = 0.505 d_1``, from
-        :func:`chaindrive.geometry.sprocket.seating_radius_limits`)."""
-        if self.seat_radius is not None:
-            return self.seat_radius
-        from ..geometry.sprocket import seating_radius_limits
-
-        return float(seating_radius_limits(2.0 * self.roller_radius)[0])
+        """Seating radius ``r_s`` [m] (ISO 606: ``0.505 d_1``)."""
+        return self.seat_radius if self.seat_radius is not None else 1.01 * self.roller_radius
 
     def tip(self, teeth: int) -> float:
-        """Tip height above the pitch circle [m]: the middle of the ISO 606 tip-diameter
-        range (:func:`chaindrive.geometry.sprocket.tip_diameter_limits`),
-        ``(p(1.125 − 0.8/z) − d_1)/2``; a pocket wheel ``d/2``."""
+        """Tip height above the pitch circle [m] (mid ISO 606 range: ``(p(1.125 − 0.8/z) − d_1)/2``)."""
         if self.tip_height is not None:
             return self.tip_height
         if self.bar_diameter is not None:
             return 0.5 * self.bar_diameter
-        from ..geometry.sprocket import pitch_diameter, tip_diameter_limits
-
-        d_min, d_max = tip_diameter_limits(self.pitch, teeth, 2.0 * self.roller_radius)
-        return 0.25 * float(d_min + d_max) - 0.5 * float(pitch_diameter(self.pitch, teeth))
+        return 0.5 * (self.pitch * (1.125 - 0.8 / teeth) - 2.0 * self.roller_radius)
 
     def pitch_radii(self) -> np.ndarray:
         """Pitch radii of the wheels [m] (pocket wheels: seed 002 eq. (6))."""
