@@ -234,3 +234,18 @@ def test_continued_run_keeps_time_and_driver_speed():
     assert r1.time[0] == pytest.approx(r0.final_state.time)
     assert np.all(r1.wheel_speed[:, 0] == pytest.approx(5.0))
     assert r1.summary["duration"] == pytest.approx(0.01, rel=1e-3)
+
+
+def test_tooth_form_equals_geometry_module():
+    # the simulation's ISO 606 seat radius, half seating angle and mid tip height are the
+    # geometry module's (ISO 606:2015 clause 8.3), for every tooth count it covers
+    from chaindrive.geometry import sprocket as g
+
+    m = roller_example()
+    d1 = 2 * m.roller_radius
+    for z in range(9, 151):
+        assert m.seat == pytest.approx(float(g.seating_radius_limits(d1)[0]), rel=1e-12)
+        assert m.seat_angle(z) == pytest.approx(0.5 * float(g.seating_angle_limits(z)[1]), rel=1e-12)
+        lo, hi = g.tip_diameter_limits(m.pitch, z, d1)
+        tip = 0.25 * float(lo + hi) - 0.5 * float(g.pitch_diameter(m.pitch, z))
+        assert m.tip(z) == pytest.approx(tip, rel=1e-9)

@@ -477,7 +477,13 @@ class SimulationModel:
 
     @property
     def seat(self) -> float:
-        """Seating radius ``r_s`` [m] (ISO 606: ``0.505 d_1``)."""
+        """Seating radius ``r_s`` [m] (ISO 606: ``0.505 d_1``).
+
+        The same ISO 606 formulas as :mod:`chaindrive.geometry.sprocket` (seating radius,
+        seating angle, tip-diameter range), written out here because the simulation also
+        runs wheels below ISO 606 Annex A's ``z >= 9`` (tested equal for z = 9...150 in
+        tests/test_simulation.py).
+        """
         return self.seat_radius if self.seat_radius is not None else 1.01 * self.roller_radius
 
     def tip(self, teeth: int) -> float:
