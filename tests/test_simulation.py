@@ -249,3 +249,10 @@ def test_tooth_form_equals_geometry_module():
         lo, hi = g.tip_diameter_limits(m.pitch, z, d1)
         tip = 0.25 * float(lo + hi) - 0.5 * float(g.pitch_diameter(m.pitch, z))
         assert m.tip(z) == pytest.approx(tip, rel=1e-9)
+
+
+def test_example_builders_reject_negative_speed_and_load():
+    with pytest.raises(InputError, match=r"angular_velocity must be non-negative .*rad/s\), got -1"):
+        roller_example(angular_velocity=-1.0)
+    with pytest.raises(InputError, match=r"load_torque must be non-negative .*N m\), got -5"):
+        roller_example(load_torque=-5.0)

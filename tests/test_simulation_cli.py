@@ -49,6 +49,10 @@ def test_cli_errors(tmp_path, capsys):
     assert "exactly one" in capsys.readouterr().err
     assert main(["simulate", "--example", "bike", "-o", str(tmp_path)]) == 2
     assert "--example must be one of roller, link, got 'bike'" in capsys.readouterr().err
+    assert main(["simulate", "--example", "roller", "--speed", "-5 rad/s", "-o", str(tmp_path)]) == 2
+    assert "--speed must be non-negative (0 <= speed < inf rad/s" in capsys.readouterr().err
+    assert main(["simulate", "--example", "link", "--load", "-1 kN*m", "-o", str(tmp_path)]) == 2
+    assert "--load must be non-negative (0 <= load < inf N*m" in capsys.readouterr().err
 
 
 def test_model_from_drive_load_and_speed():

@@ -47,6 +47,13 @@ def simulate_command(
         build, w, t = builders[example]
         w = quantity(speed, "rad/s", "speed") if speed else w
         t = quantity(load, "N*m", "load") if load else t
+        if not w >= 0:
+            raise InputError(f"--speed must be non-negative (0 <= speed < inf rad/s; the example "
+                             f"runs counter-clockwise, reverse a drive with travel = \"cw\" in a "
+                             f"project file), got {w:g} rad/s")
+        if not t >= 0:
+            raise InputError(f"--load must be non-negative (0 <= load < inf N*m, the torque the "
+                             f"driven wheel resists with), got {t:g} N*m")
         model = build(angular_velocity=w, load_torque=t, ramp_time=ramp_time)
     else:
         from ..drive.project import load_project

@@ -50,7 +50,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from .._validation import check_positive
+from .._validation import check_nonnegative, check_positive
 from ..errors import InputError
 
 __all__ = ["SimWheel", "SimTensioner", "SimGuide", "SimulationModel", "roller_example",
@@ -541,6 +541,10 @@ def roller_example(*, chain: str = "16B", teeth: int = 17, links: int = 100,
     """
     from .. import chains
 
+    # the examples run counter-clockwise with the tight span on top; a reversed drive
+    # is a project with travel = "cw"
+    check_nonnegative("angular_velocity", angular_velocity, "rad/s")
+    check_nonnegative("load_torque", load_torque, "N m")
     ch = chains.get(chain)
     p = ch.pitch
     a = 0.5 * (links - teeth) * p
@@ -598,6 +602,10 @@ def link_example(*, chain: str = "18x64", teeth: int = 8, links: int = 60,
     """
     from .. import chains
 
+    # the examples run counter-clockwise with the tight span on top; a reversed drive
+    # is a project with travel = "cw"
+    check_nonnegative("angular_velocity", angular_velocity, "rad/s")
+    check_nonnegative("load_torque", load_torque, "N m")
     ch = chains.get(chain)
     if not getattr(ch, "is_link_chain", False) or ch.bar_diameter is None:
         raise InputError(f"link_example needs a round link chain (DIN 22252, e.g. '18x64'), "
