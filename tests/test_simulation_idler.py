@@ -139,3 +139,15 @@ def test_project_outside_idler():
     assert m.wheels[1].side == -1 and m.wheels[2].torque == pytest.approx(-100.0)
     r = simulate(m, 0.1, samples=100)
     assert np.all(np.isfinite(r.tension))
+
+
+def test_project_without_driven_wheel_is_refused():
+    from pathlib import Path
+
+    from chaindrive.drive.project import load_project
+    from chaindrive.simulation import model_from_drive
+
+    # the tracked tractor: a drive sprocket, road wheels and a tensioned front idler
+    path = Path(__file__).resolve().parents[1] / "examples" / "tractor_track.toml"
+    with pytest.raises(InputError, match="no driven wheel .* track drive's load"):
+        model_from_drive(load_project(path))

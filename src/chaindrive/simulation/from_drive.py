@@ -101,8 +101,13 @@ def model_from_drive(drive, *, ramp_time: float = 0.2, axial_stiffness: float | 
     wheels = wheels[i0:] + wheels[:i0]
     torque = float(drive.torque())
     tens_name = drive.tensioner.wheel if drive.tensioner is not None else None
-    load_idx = next(i for i, w in enumerate(wheels)
-                    if i > 0 and w.name != tens_name and w.kind != "idler")
+    # the load goes to the first driven wheel that is neither an idler nor the tensioner
+    load_idx = next((i for i, w in enumerate(wheels)
+                     if i > 0 and w.name != tens_name and w.kind != "idler"), None)
+    if load_idx is None:
+        raise InputError("simulation: the drive has no driven wheel (besides the driver, only "
+                         "idlers and the tensioner) to carry the load; a track drive's load, "
+                         "the ground traction on its road wheels, is not simulated")
     sim_wheels = []
     for i, w in enumerate(wheels):
         plain = None if w.teeth is not None else float(w.pitch_radius(chain))
@@ -111,16 +116,16 @@ def model_from_drive(drive, *, ramp_time: float = 0.2, axial_stiffness: float | 
         else:
             r = w.pitch_radius(chain) if link else p / (2 * math.sin(math.pi / w.teeth))
         centre = (w.position[0], sign * w.position[1])
-        if plain is not None:
-            sw = SimWheel(centre, 3, _disc_inertia(r), "free", name=w.name, plain_radius=plain,
-                          side=w.side)
-        elif i == 0:
+        if i == 0:
             sw = SimWheel(centre, w.teeth, _disc_inertia(r), "speed", float(drive.speed),
                           ramp_time, name=w.name)
         else:
-            load = -torque * w.teeth / wheels[0].teeth if i == load_idx else 0.0
-            sw = SimWheel(centre, w.teeth, _disc_inertia(r), "free", torque=load, name=w.name,
-                          side=w.side)
+            sw = SimWheel(centre, w.teeth if plain is None else 3, _disc_inertia(r), "free",
+                          name=w.name, side=w.side, plain_radius=plain)
+            if i == load_idx:
+                # power balance at the mean speeds: T_j = T_0 ω_0/ω_j = T_0 z_j/z_0, with
+                # z_j the links per turn of wheel j (π / asin(p/2R) for a plain rim)
+                sw.torque = -torque * sw.path_teeth(p) / wheels[0].teeth
         sim_wheels.append(sw)
     tens = None
     if drive.tensioner is not None:
