@@ -16,9 +16,11 @@ MuJoCo (the peer), the same model:
   damping ``c`` and rest length ``p``;
 * teeth with chaindrive's working profile, built from boxes: in every gap the seating
   arc (radius ``r_s = 0.505 d1``, ``±ψ_s``, ``ψ_s = 70° − 45°/z``) is replaced by
-  ``FACES − 1`` flat faces tangent to it, and each straight flank (tangent to the arc at
-  ``±ψ_s``) is one box face running up to the tooth corner where chaindrive's flank ends
-  (the roller centre at ``h_a`` above the pitch circle). Because ``r_s − r`` is only
+  ``FACES − 1`` flat faces tangent to it, and each ISO 606 convex flank arc (``r_e``,
+  tangent to the seat at ``±ψ_s``, up to the tooth corner on the tip circle; see
+  ``chaindrive.simulation.model.iso_flank``) by ``FLANK_FACES`` flat faces tangent to
+  it (a roller touching the kernel's flank lies within 5 µm of them; with
+  ``tooth_flank="straight"`` one box face per straight flank). Because ``r_s − r`` is only
   80 µm, the roller centre's free region in this polygonal seat differs from the
   circular one by ``(r_s − r)(1/cos(Δ/2) − 1)`` < 4 µm; a roller beyond the flank
   meets the box edge at the tooth corner, as in chaindrive. (A whole tooth is not
@@ -77,11 +79,13 @@ import numpy as np
 
 from chaindrive.simulation import _kernel as K
 from chaindrive.simulation import assemble, roller_example, simulate
+from chaindrive.simulation.model import iso_flank
 
 #: convergence tolerances against the halved step (relative)
 TOL_TENSION = 0.01
 TOL_SPEED = 0.005
 #: flat faces replacing each seating arc (FACES - 1 inner faces plus the two flanks)
+FLANK_FACES = 6  # flat faces per ISO flank arc (tangent polygon, < 5 µm from the arc)
 FACES = 4
 #: sampling interval of chain speed and tension, the same for both engines [s]
 SAMPLE = 1.5e-4
@@ -139,11 +143,19 @@ def tooth_geoms(model, teeth, faces=FACES):
     rad = model.pitch / (2 * math.sin(math.pi / teeth))
     rs = model.seat
     rr = model.roller_radius
-    psi = math.radians(70.0 - 45.0 / teeth)
+    psi = model.seat_angle(teeth)
     cps, sps = math.cos(psi), math.sin(psi)
     delta = rs - rr
-    # length of the flank from the end of the seating arc to the tooth corner: as in the
-    # kernel, the flank ends where the roller centre reaches h_a above the pitch circle
+    # the flank as in the kernel: the ISO 606 convex arc r_e (model.tooth_flank == "arc")
+    # up to the tooth corner, or the straight flank truncated where the roller centre
+    # reaches h_a
+    arc = model.tooth_flank == "arc"
+    if arc:
+        re, cea, ceb, _, _, dta, dtb = iso_flank(model.pitch, teeth, rr, rs, psi, model.tip(teeth))
+        th_e = math.atan2(-sps, cps)
+        sweep = math.atan2(cps * dtb + sps * dta, cps * dta - sps * dtb)
+        dth = sweep / FLANK_FACES
+        hf = re * math.tan(0.5 * dth)
     stip = (model.tip(teeth) + delta * cps) / sps
     dphi = 2 * psi / faces
     hl = rs * math.tan(0.5 * dphi)  # half length of an arc face (tangent polygon)
@@ -162,8 +174,18 @@ def tooth_geoms(model, teeth, faces=FACES):
             n = np.array([-cps, s * sps])
             t = np.array([sps, s * cps])  # outwards along the flank
             p0 = rs * n
-            mid = p0 + 0.5 * (stip - hl) * t
-            out.append(_box(seat_c, mid, t, n, e_a, e_b, 0.5 * (stip + hl), 0.75e-3))
+            if not arc:
+                mid = p0 + 0.5 * (stip - hl) * t
+                out.append(_box(seat_c, mid, t, n, e_a, e_b, 0.5 * (stip + hl), 0.75e-3))
+                continue
+            # convex flank arc: FLANK_FACES faces tangent to it (tangent polygon), the first
+            # one extended back over the seat's last half face
+            for k in range(FLANK_FACES):
+                th = th_e + (k + 0.5) * dth
+                u = np.array([math.cos(th), s * math.sin(th)])
+                centre = np.array([cea, s * ceb]) + re * u
+                tf = np.array([-math.sin(th), s * math.cos(th)])
+                out.append(_box(seat_c, centre, tf, -u, e_a, e_b, hf, 0.75e-3))
     return out
 
 

@@ -256,3 +256,34 @@ def test_example_builders_reject_negative_speed_and_load():
         roller_example(angular_velocity=-1.0)
     with pytest.raises(InputError, match=r"load_torque must be non-negative .*N m\), got -5"):
         roller_example(load_torque=-5.0)
+
+
+def test_iso_flank_is_the_geometry_modules_flank():
+    # the simulation's sprocket flank is the ISO 606 minimum tooth form's convex arc of
+    # chaindrive.geometry.sprocket.sprocket_outline (r_i,min, α_max, r_e,max), up to the
+    # tip circle in the middle of the d_a range: same centre and radius, tangent to the
+    # seat, corner on the tip circle
+    from chaindrive.geometry.sprocket import sprocket_outline, tip_diameter_limits
+    from chaindrive.simulation.model import iso_flank
+
+    m = roller_example()
+    d1 = 2 * m.roller_radius
+    for z in (9, 12, 17, 25, 40):
+        radius = m.pitch / (2 * math.sin(math.pi / z))
+        psi = m.seat_angle(z)
+        re, ca, cb, ta, tb, da, db = iso_flank(m.pitch, z, m.roller_radius, m.seat, psi, m.tip(z))
+        lo, hi = tip_diameter_limits(m.pitch, z, d1)
+        outline = sprocket_outline(m.pitch, z, d1, form="min", tip_diameter=0.5 * (lo + hi))
+        flank = min((a for a in outline.primitives if abs(a.radius - re) < 1e-12 and a.center[0] > 0),
+                    key=lambda a: abs(a.center[0] - cb))
+        # gap 0 of the outline is centred on +y: a = y − R, b = x
+        assert (flank.center[1] - radius, flank.center[0]) == pytest.approx((ca, cb), abs=1e-12)
+        # tangent to the seat: the ray point at r_i − r lies r_e + r from the flank centre
+        q = (m.seat - m.roller_radius) * np.array([-math.cos(psi), math.sin(psi)])
+        assert math.hypot(q[0] - ca, q[1] - cb) == pytest.approx(re + m.roller_radius, rel=1e-12)
+        # the corner on the flank circle and on the tip circle (about the axis at a = −R)
+        assert math.hypot(ta - ca, tb - cb) == pytest.approx(re, rel=1e-12)
+        assert math.hypot(ta + radius, tb) == pytest.approx(radius + m.tip(z), rel=1e-12)
+        assert (da, db) == pytest.approx(((ta - ca) / re, (tb - cb) / re), abs=1e-12)
+    with pytest.raises(InputError, match="tooth_flank must be one of arc, straight, got 'iso'"):
+        roller_example(tooth_flank="iso")

@@ -28,8 +28,11 @@ from numba import njit
 # wheel parameter columns
 W_CX, W_CY, W_R, W_Z, W_RS, W_CPSI, W_SPSI, W_HTIP, W_INERTIA, W_MODE, W_OMEGA0, W_RAMP, \
     W_TORQUE, W_DAMP, W_SLIDE, W_DX, W_DY, W_SMASS, W_SK, W_SC, W_SF, W_NSEAT, W_DA, W_DB, \
-    W_PLAIN = range(25)
-NWP = 25
+    W_PLAIN, W_RE, W_CEA, W_CEB, W_TCA, W_TCB, W_DTA, W_DTB = range(32)
+NWP = 32
+# W_RE > 0: ISO 606 convex flank arc of radius r_e (sprockets): its centre (W_CEA, W_CEB)
+# and the tooth corner (W_TCA, W_TCB) in gap coordinates (a, |b|), the unit direction
+# (W_DTA, W_DTB) from the flank centre to the corner; W_RE = 0: straight flank (pockets)
 # W_PLAIN: 1 for a toothless idler (roller centres on the circle of radius W_R)
 # W_NSEAT: number of seats per turn (z for a sprocket, 2z for a pocket wheel); W_DA, W_DB:
 # central angles [rad] spanned by an even link (pins 2k, 2k+1) and an odd link when seated
@@ -191,11 +194,22 @@ def integrate(pos, vel, force, work, tension, contact, ws, wp, gd, tab, par, t0,
             iz = int(nseat)
             cth = math.cos(theta)
             sth = math.sin(theta)
-            # tooth corner (in roller-centre coordinates a, |b|): end of the flank at the
-            # tip height plus one roller radius along the flank normal
-            stip = (htip + delta * cps) / sps
-            tca = -delta * cps + stip * sps - rr * cps
-            tcb = delta * sps + stip * cps + rr * sps
+            re = wp[w, W_RE]
+            arcflank = re > 0.0
+            cea = wp[w, W_CEA]
+            ceb = wp[w, W_CEB]
+            dta = wp[w, W_DTA]
+            dtb = wp[w, W_DTB]
+            if arcflank:
+                tca = wp[w, W_TCA]
+                tcb = wp[w, W_TCB]
+                stip = 0.0
+            else:
+                # straight flank: the tooth corner (a, |b|) where the roller centre riding
+                # on the flank reaches the tip height
+                stip = (htip + delta * cps) / sps
+                tca = -delta * cps + stip * sps - rr * cps
+                tcb = delta * sps + stip * cps + rr * sps
             tq = 0.0
             fwx = 0.0
             fwy = 0.0
@@ -263,9 +277,15 @@ def integrate(pos, vel, force, work, tension, contact, ws, wp, gd, tab, par, t0,
                     b = -qx * ery + qy * erx
                     ab = abs(b)
                     sb = 1.0 if b >= 0.0 else -1.0
-                    # position along the flank from the end of the seating arc
-                    sf = (a + delta * cps) * sps + (ab - delta * sps) * cps
-                    if sf > stip:
+                    # past the flank: the roller against the tooth corner
+                    va = a - cea
+                    vb = ab - ceb
+                    if arcflank:
+                        past = ab * cps + a * sps > 0.0 and va * dtb - vb * dta < 0.0
+                    else:
+                        # position along the flank from the end of the seating arc
+                        past = (a + delta * cps) * sps + (ab - delta * sps) * cps > stip
+                    if past:
                         # beyond the tooth tip: roller against the rounded tooth corner
                         ta = a - tca
                         tb = ab - tcb
@@ -282,6 +302,14 @@ def integrate(pos, vel, force, work, tension, contact, ws, wp, gd, tab, par, t0,
                             continue
                         na = a / d
                         nb = b / d
+                    elif arcflank:
+                        # outside the convex ISO flank arc (radius r_e about C_e)
+                        dv = math.sqrt(va * va + vb * vb)
+                        pen = re + rr - dv
+                        if pen <= 0.0:
+                            continue
+                        na = -va / dv
+                        nb = -sb * vb / dv
                     else:
                         pen = -a * cps + ab * sps - delta
                         if pen <= 0.0:

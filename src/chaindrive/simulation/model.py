@@ -6,23 +6,23 @@ wheels (centre, teeth, inertia, how each is driven or loaded, tooth profile), an
 optional tensioner (a wheel on a slide with mass, spring and damper), straight guides,
 the contact law and gravity.
 
-The tooth gap is the ISO 606 profile reduced to its two working features: a seating
-arc of radius ``r_s`` centred on the pitch circle, spanning ``±ψ_s`` about the radial
-direction with ``ψ_s = 70° − 45°/z`` (half the maximum ISO 606 roller seating angle
-``α_max = 140° − 90°/z``), continued by straight flanks tangent to the arc, ending
-where the roller *centre* riding on the flank reaches ``h_a`` above the pitch circle
-(the tooth surface's corner at ``h_a − r cos ψ_s``): a straight flank is fatter than
-ISO's arc flank (radius ``r_e``), so it is truncated where it would stand in the path
-of the rollers entering and leaving along the spans (docs/simulation.md). In the gap's frame (``a`` radial offset from
-the seat centre, ``b`` tangential) the penetration of a roller of radius ``r`` is
+The tooth gap of a sprocket is ISO 606's minimum tooth form: a seating arc of radius
+``r_s`` centred on the pitch circle, spanning ``±ψ_s`` about the radial direction with
+``ψ_s = 70° − 45°/z`` (half the maximum roller seating angle ``α_max = 140° − 90°/z``),
+continued tangentially by the convex flank arc ``r_e,max = 0.008 d_1 (z² + 180)``
+(:func:`iso_flank`) up to the tip circle ``R + h_a`` (middle of the tip-diameter range),
+ending in the tooth corner ``T``. In the gap's frame (``a`` radial offset from the seat
+centre, ``b`` tangential) the penetration of a roller of radius ``r`` is
 
 .. math::
     g = \begin{cases} \sqrt{a^2+b^2} - (r_s - r), & |b|\cos ψ_s + a \sin ψ_s \le 0\\
-        -a\cos ψ_s + |b|\sin ψ_s - (r_s - r), & \text{otherwise}\end{cases}
+        (r_e + r) - |q - C_e|, & \text{on the flank}\\
+        r - |q - T|, & \text{past the flank}\end{cases}
 
-continuous with a continuous normal across the arc/flank boundary; contact acts only for
-``a < h_a``. Force: ``F_n = max(0, k_c g + c_c \dot g)``, friction
-``F_t = −μ F_n \tanh(v_t / v_ε)`` (regularised Coulomb).
+continuous with a continuous normal across the seat/flank boundary
+(``tooth_flank="straight"``: the earlier straight flank, truncated where the roller
+centre reaches ``h_a``; pocket wheels use it). Force: ``F_n = max(0, k_c g + c_c \dot g)``,
+friction ``F_t = −μ F_n sat(v_t / v_ε)`` (regularised Coulomb).
 
 Round link chains (``bar_diameter`` given) on pocket wheels: the pins are the hinge
 points (centre of the horizontal link's end bar, where it interlocks with the vertical
@@ -54,6 +54,7 @@ from .._validation import check_nonnegative, check_positive
 from ..errors import InputError
 
 __all__ = ["SimWheel", "SimTensioner", "SimGuide", "SimulationModel", "roller_example",
+           "iso_flank",
            "link_example", "link_seat_profile", "link_chain_axial_stiffness",
            "AXIAL_STIFFNESS_16B"]
 
@@ -351,6 +352,10 @@ class SimulationModel:
         Strain of the links as placed on the path (their rest length is
         ``pitch / (1 + prestrain)``): pretensions a chain between locked wheels by
         ``EA · prestrain`` without moving any wheel (used for anchored spans), 0 <= ε < 0.01.
+    tooth_flank : {"arc", "straight"}
+        Sprocket tooth flank: ``"arc"`` the ISO 606 convex flank arc ``r_e,max`` up to the
+        tip circle (:func:`iso_flank`); ``"straight"`` a straight flank tangent to the seat,
+        truncated where the roller centre reaches the tip height (the earlier model).
     bar_diameter : float or None
         Round link chain: bar diameter ``d`` [m], ``0 < d < t/2`` (``None``: roller
         chain). The wheels are then pocket wheels with ``teeth`` pockets.
@@ -375,6 +380,7 @@ class SimulationModel:
     gravity: tuple[float, float] = (0.0, -9.81)
     pretension: float = 200.0
     prestrain: float = 0.0
+    tooth_flank: str = "arc"
     bar_diameter: float | None = None
 
     def __post_init__(self):
@@ -416,6 +422,8 @@ class SimulationModel:
                 raise InputError(f"wheel {w.name or i!r}: plain_radius must exceed pitch/2 + "
                                  f"roller radius = {0.5 * self.pitch + self.roller_radius:g} m, "
                                  f"got {w.plain_radius:g}")
+        if self.tooth_flank not in ("arc", "straight"):
+            raise InputError(f"tooth_flank must be one of arc, straight, got {self.tooth_flank!r}")
         if not 0.0 <= self.prestrain < 0.01:
             raise InputError(f"prestrain must be in [0, 0.01), got {self.prestrain!r}")
         if self.tensioner is not None and not 0 <= self.tensioner.wheel < len(self.wheels):
@@ -522,6 +530,93 @@ class SimulationModel:
         om = self.omega_max()
         zeta = max(self.link_damping_ratio, self.contact_damping_ratio)
         return safety * 2.0 / om * (math.sqrt(1.0 + zeta * zeta) - zeta)
+
+
+def iso_flank(pitch: float, teeth: int, roller_radius: float, seat_radius: float,
+              seat_half_angle: float, tip_height: float) -> tuple[float, ...]:
+    r"""ISO 606 convex tooth flank of a sprocket gap in the simulation's gap frame.
+
+    Gap frame: ``a`` radial from the seat centre (on the pitch circle), ``b`` tangential
+    (``|b|``, the gap is symmetric). The seating arc (radius ``r_i``) ends at
+    ``±ψ`` from the gap's inward radius; the flank arc of radius ``r_e`` continues it
+    tangentially, its centre on the same ray, ``C_e = (r_i + r_e)(−cos ψ, sin ψ)``, and
+    runs up to the tip circle (radius ``R + h_a`` about the wheel axis at ``a = −R``) or
+    to the tooth centreline if it gets there first (a pointed tooth). ``r_e`` is ISO 606's
+    largest, ``r_e,max = 0.008 d_1 (z² + 180)``, which goes with ``r_i,min`` and ``α_max``
+    (the minimum tooth form of :func:`chaindrive.geometry.sprocket.sprocket_outline`).
+
+    .. math:: r_e = 0.008\,d_1 (z^2 + 180)
+
+    Parameters
+    ----------
+    pitch : float
+        [m].
+    teeth : int
+    roller_radius : float
+        [m].
+    seat_radius : float
+        ``r_i`` [m].
+    seat_half_angle : float
+        ``ψ = α/2`` [rad].
+    tip_height : float
+        ``h_a`` above the pitch circle [m].
+
+    Returns
+    -------
+    tuple
+        ``(r_e, C_e,a, C_e,b, T_a, T_b, d_a, d_b)``: flank radius, flank centre, tooth
+        corner ``T`` and the unit direction from ``C_e`` to ``T`` [m, -].
+
+    References
+    ----------
+    ISO 606:2015, clause 8.3 (tooth form: ``r_e``, ``r_i``, ``α``, ``d_a``).
+
+    Examples
+    --------
+    >>> re, *_ = iso_flank(0.0254, 17, 0.00794, 0.0080194, 1.1755, 0.00575)
+    >>> round(re, 5)
+    0.05958
+    """
+    z = int(teeth)
+    radius = pitch / (2.0 * math.sin(math.pi / z))
+    re = 0.008 * (2.0 * roller_radius) * (z * z + 180.0)
+    c, s = math.cos(seat_half_angle), math.sin(seat_half_angle)
+    ce = np.array([-(seat_radius + re) * c, (seat_radius + re) * s])
+    d_e = np.array([c, -s])          # from C_e to the end of the seat
+    cands = []
+    # tip circle about the wheel axis (−R, 0), radius R + h_a
+    axis = np.array([-radius, 0.0])
+    rt = radius + tip_height
+    dist = float(np.hypot(*(axis - ce)))
+    if abs(re - rt) < dist < re + rt:
+        u = (axis - ce) / dist
+        x = (re * re - rt * rt + dist * dist) / (2.0 * dist)
+        h = math.sqrt(max(re * re - x * x, 0.0))
+        for sgn in (1.0, -1.0):
+            cands.append(ce + x * u + sgn * h * np.array([-u[1], u[0]]))
+    # tooth centreline: from the axis at the half pitch angle π/z
+    v = np.array([math.cos(math.pi / z), math.sin(math.pi / z)])
+    w0 = axis - ce
+    bq = 2.0 * float(w0 @ v)
+    cq = float(w0 @ w0) - re * re
+    disc = bq * bq - 4.0 * cq
+    if disc >= 0.0:
+        for t in ((-bq - math.sqrt(disc)) / 2.0, (-bq + math.sqrt(disc)) / 2.0):
+            if t > 0.0:
+                cands.append(axis + t * v)
+    best, best_angle = None, None
+    for q in cands:
+        d = (q - ce) / re
+        # counter-clockwise angle from d_E (the flank rises that way)
+        ang = math.atan2(d_e[0] * d[1] - d_e[1] * d[0], d_e @ d)
+        if 1e-12 < ang < math.pi and (best_angle is None or ang < best_angle):
+            best, best_angle = q, ang
+    if best is None:
+        raise InputError(f"ISO 606 tooth flank of z = {z} reaches neither the tip circle nor "
+                         "the tooth centreline")
+    d = (best - ce) / re
+    return (float(re), float(ce[0]), float(ce[1]), float(best[0]), float(best[1]),
+            float(d[0]), float(d[1]))
 
 
 def roller_example(*, chain: str = "16B", teeth: int = 17, links: int = 100,

@@ -36,7 +36,7 @@ import numpy as np
 from .._results import Result
 from ..errors import ConvergenceError, InfeasibleError
 from . import _kernel as K
-from .model import SimulationModel
+from .model import SimulationModel, iso_flank
 
 __all__ = ["SimulationResult", "assemble", "simulate", "kernel_arrays"]
 
@@ -367,6 +367,11 @@ def kernel_arrays(model: SimulationModel, dt: float | None = None):
         wp[i, K.W_SPSI] = math.sin(psi)
         wp[i, K.W_HTIP] = model.tip(w.teeth)
         wp[i, K.W_INERTIA] = w.inertia
+        if w.plain_radius is None and not model.is_link_chain and model.tooth_flank == "arc":
+            # ISO 606 convex flank arc (sprockets of roller chains)
+            (wp[i, K.W_RE], wp[i, K.W_CEA], wp[i, K.W_CEB], wp[i, K.W_TCA], wp[i, K.W_TCB],
+             wp[i, K.W_DTA], wp[i, K.W_DTB]) = iso_flank(model.pitch, w.teeth, model.roller_radius,
+                                                         model.seat, psi, model.tip(w.teeth))
         if w.plain_radius is not None:
             # toothless idler: penalty contact with its running circle, no seats
             wp[i, K.W_PLAIN] = 1.0
