@@ -111,9 +111,9 @@ def link_seat_profile(pitch: float, bar_diameter: float, teeth: int,
     seat of the sprocket model, with
 
     .. math::
-        h_a = rac d2,\qquad
-        ψ_s = rac\pi2 - \max\left(rac{δ_1}2 + rac{h_a}{2(t+d)},                                    rac{δ_2}2 + rac{h_a}{2(t-d)}
-ight)
+        h_a = \frac d2,\qquad
+        ψ_s = \frac\pi2 - \max\left(\frac{δ_1}2 + \frac{h_a}{2(t+d)},\;
+                                     \frac{δ_2}2 + \frac{h_a}{2(t-d)}\right)
 
     Parameters
     ----------
