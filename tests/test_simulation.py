@@ -261,8 +261,10 @@ def test_example_builders_reject_negative_speed_and_load():
 def test_iso_flank_is_the_geometry_modules_flank():
     # the simulation's sprocket flank is the ISO 606 minimum tooth form's convex arc of
     # chaindrive.geometry.sprocket.sprocket_outline (r_i,min, α_max, r_e,max), up to the
-    # tip circle in the middle of the d_a range: same centre and radius, tangent to the
-    # seat, corner on the tip circle
+    # tip circle in the middle of the d_a range. iso_flank builds it with the geometry
+    # module's half gap, so the centre match checks the frame change and r_e (the
+    # outline takes r_e from flank_radius_limits); tangency to the seat and the corner on
+    # the tip circle are checked from first principles
     from chaindrive.geometry.sprocket import sprocket_outline, tip_diameter_limits
     from chaindrive.simulation.model import iso_flank
 

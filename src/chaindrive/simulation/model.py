@@ -541,7 +541,9 @@ def iso_flank(pitch: float, teeth: int, roller_radius: float, seat_radius: float
     ``±ψ`` from the gap's inward radius; the flank arc of radius ``r_e`` continues it
     tangentially, its centre on the same ray, ``C_e = (r_i + r_e)(−cos ψ, sin ψ)``, and
     runs up to the tip circle (radius ``R + h_a`` about the wheel axis at ``a = −R``) or
-    to the tooth centreline if it gets there first (a pointed tooth). ``r_e`` is ISO 606's
+    to the tooth centreline if it gets there first (a pointed tooth): the half gap of
+    :mod:`chaindrive.geometry.sprocket` (its ``_iso_half_gap``, which has no ``z >= 9``
+    limit), expressed in the gap frame. ``r_e`` is ISO 606's
     largest, ``r_e,max = 0.008 d_1 (z² + 180)``, which goes with ``r_i,min`` and ``α_max``
     (the minimum tooth form of :func:`chaindrive.geometry.sprocket.sprocket_outline`).
 
@@ -577,46 +579,20 @@ def iso_flank(pitch: float, teeth: int, roller_radius: float, seat_radius: float
     >>> round(re, 5)
     0.05958
     """
+    from ..geometry.sprocket import _iso_half_gap
+
     z = int(teeth)
     radius = pitch / (2.0 * math.sin(math.pi / z))
     re = 0.008 * (2.0 * roller_radius) * (z * z + 180.0)
-    c, s = math.cos(seat_half_angle), math.sin(seat_half_angle)
-    ce = np.array([-(seat_radius + re) * c, (seat_radius + re) * s])
-    d_e = np.array([c, -s])          # from C_e to the end of the seat
-    cands = []
-    # tip circle about the wheel axis (−R, 0), radius R + h_a
-    axis = np.array([-radius, 0.0])
-    rt = radius + tip_height
-    dist = float(np.hypot(*(axis - ce)))
-    if abs(re - rt) < dist < re + rt:
-        u = (axis - ce) / dist
-        x = (re * re - rt * rt + dist * dist) / (2.0 * dist)
-        h = math.sqrt(max(re * re - x * x, 0.0))
-        for sgn in (1.0, -1.0):
-            cands.append(ce + x * u + sgn * h * np.array([-u[1], u[0]]))
-    # tooth centreline: from the axis at the half pitch angle π/z
-    v = np.array([math.cos(math.pi / z), math.sin(math.pi / z)])
-    w0 = axis - ce
-    bq = 2.0 * float(w0 @ v)
-    cq = float(w0 @ w0) - re * re
-    disc = bq * bq - 4.0 * cq
-    if disc >= 0.0:
-        for t in ((-bq - math.sqrt(disc)) / 2.0, (-bq + math.sqrt(disc)) / 2.0):
-            if t > 0.0:
-                cands.append(axis + t * v)
-    best, best_angle = None, None
-    for q in cands:
-        d = (q - ce) / re
-        # counter-clockwise angle from d_E (the flank rises that way)
-        ang = math.atan2(d_e[0] * d[1] - d_e[1] * d[0], d_e @ d)
-        if 1e-12 < ang < math.pi and (best_angle is None or ang < best_angle):
-            best, best_angle = q, ang
-    if best is None:
-        raise InputError(f"ISO 606 tooth flank of z = {z} reaches neither the tip circle nor "
-                         "the tooth centreline")
-    d = (best - ce) / re
-    return (float(re), float(ce[0]), float(ce[1]), float(best[0]), float(best[1]),
-            float(d[0]), float(d[1]))
+    # the geometry module's half gap (centred on +y: a = y − R, b = x); its flank arc is
+    # the last but one primitive, from the corner (start angle) down to the seat
+    prims, _ = _iso_half_gap(radius, z, seat_radius, 2.0 * seat_half_angle, re,
+                             radius + tip_height)
+    flank = prims[-2]
+    d = (math.cos(flank.start_angle), math.sin(flank.start_angle))
+    ce = (float(flank.center[1]) - radius, float(flank.center[0]))
+    corner = (ce[0] + re * d[1], ce[1] + re * d[0])
+    return (float(re), ce[0], ce[1], corner[0], corner[1], float(d[1]), float(d[0]))
 
 
 def roller_example(*, chain: str = "16B", teeth: int = 17, links: int = 100,
