@@ -156,18 +156,36 @@ def test_errors():
     w = [SimWheel((0, 0), 8), SimWheel((1.0, 0), 8)]
     base = dict(pitch=T_LINK, link_mass=0.4, axial_stiffness=2.8e7, roller_radius=D_BAR / 2,
                 wheels=w, bar_diameter=D_BAR)
-    with pytest.raises(InputError, match="even number of links"):
+    with pytest.raises(InputError, match=r"even number of links \(horizontal and vertical "
+                                         r"alternate\), got links = 41"):
         SimulationModel(links=41, **base)
-    with pytest.raises(InputError, match="bar_diameter"):
+    with pytest.raises(InputError, match=r"bar_diameter must lie in \(0, pitch/2\) = "
+                                         r"\(0, 0.032\) m for a round link chain, got 0.04"):
         SimulationModel(links=40, **{**base, "bar_diameter": 0.04})
-    with pytest.raises(InputError, match="bar_diameter"):
+    with pytest.raises(InputError, match="bar_diameter must be positive"):
         SimulationModel(links=40, **{**base, "bar_diameter": -0.01})
-    with pytest.raises(InputError, match="roller_radius"):
+    with pytest.raises(InputError, match=r"roller_radius \(contact radius of a hinge\) must be "
+                                         r"< \(t - d\)/2 = 0.023 m, got 0.03"):
         SimulationModel(links=40, **{**base, "roller_radius": 0.03})
     with pytest.raises(InputError, match="even number of links"):
         link_example(links=41)
-    with pytest.raises(InputError, match="round link chain"):
+    with pytest.raises(InputError, match=r"link_example needs a round link chain \(DIN 22252, "
+                                         r"e.g. '18x64'\), got '16B' \(iso606\)"):
         link_example(chain="16B")
+
+
+def test_short_loop_assembles_without_coincident_centres():
+    # 18 links on two 8-pocket wheels: the assembly's search for the centre distance
+    # passes through coincident centres, which must be an infeasible position (the
+    # tangent of two circles with one centre was 0/0, a RuntimeWarning, an error here)
+    from chaindrive.errors import InfeasibleError
+    from chaindrive.simulation.run import _tangent
+
+    st = assemble(link_example(links=18, gravity=False))
+    assert np.all(np.isfinite(st.pos))
+    with pytest.raises(InfeasibleError, match=r"wheels overlap: centre distance must exceed "
+                                              r"the radius difference \(0 m <= 0 m\)"):
+        _tangent((0.0, 0.0), 0.1, (0.0, 0.0), 0.1)
 
 
 def test_model_from_drive_errors():

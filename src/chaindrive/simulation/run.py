@@ -52,10 +52,11 @@ def _tangent(c1, r1, c2, r2):
     """
     d = np.subtract(c2, c1)
     dist = math.hypot(*d)
-    s = (r2 - r1) / dist
-    if abs(s) >= 1:
-        raise InfeasibleError("wheels overlap: centre distance must exceed the radius difference")
-    al = math.asin(s)
+    if not dist > abs(r2 - r1):
+        # also coincident centres (dist = 0), which the assembly's search can pass through
+        raise InfeasibleError("wheels overlap: centre distance must exceed the radius "
+                              f"difference ({dist:.6g} m <= {abs(r2 - r1):.6g} m)")
+    al = math.asin((r2 - r1) / dist)
     dh = d / dist
     ca, sa = math.cos(-al), math.sin(-al)
     u = np.array([ca * dh[0] - sa * dh[1], sa * dh[0] + ca * dh[1]])
