@@ -70,10 +70,11 @@ def test_guided_entry_speed_matches_kinematics(entry):
     assert np.max(np.abs(err[away])) < 0.01
     # the mean speed is the rigid one: p z ω / 2π (chain_entry's mean)
     assert abs(np.mean(err)) < 1e-3
-    # regression of the measured worst error outside the windows (0.481 % chordal,
-    # 0.336 % tangential, 16B z = 12 at 0.5 rad/s, ISO arc flanks)
+    # regression of the measured worst error outside the windows (0.182 % chordal,
+    # 0.268 % tangential, 16B z = 12 at 0.5 rad/s, ISO arc flanks, friction slope cap
+    # m / 2Δt)
     assert np.max(np.abs(err[away])) == pytest.approx(
-        {"chordal": 0.00481, "tangential": 0.00336}[entry], abs=5e-4)
+        {"chordal": 0.00182, "tangential": 0.00268}[entry], abs=5e-4)
 
 
 def test_flared_guide_mouth_also_follows_the_law():
@@ -83,8 +84,9 @@ def test_flared_guide_mouth_also_follows_the_law():
     away = dist > 0.05 * 2 * math.pi / TEETH
     assert np.max(np.abs(err[away])) < 0.01
 
-    # measured 0.11 %: the lead-in arc spreads the roller's release from the channel
-    assert np.max(np.abs(err[away])) == pytest.approx(0.00114, abs=5e-4)
+    # measured 0.78 % (0.11 % with the friction slope cap m / Δt, which let the assembly
+    # of highly tensioned drives diverge: test_simulation.py)
+    assert np.max(np.abs(err[away])) == pytest.approx(0.00778, abs=5e-4)
 
 
 def test_guide_channel_geometry_and_errors():

@@ -344,13 +344,12 @@ def kernel_arrays(model: SimulationModel, dt: float | None = None):
     par[K.P_VEPS] = model.friction_velocity
     par[K.P_GX], par[K.P_GY] = model.gravity
     par[K.P_DT] = dt
-    # friction slope cap m / dt_ref (see the kernel); round link chains: m / (2 dt_step).
-    # The cap m / dt_step makes the friction dead-beat on its own; with the link springs
-    # and link damping at the stable step the alternating mode of the seated pins then
-    # has an amplification < -1 (period-2 growth, seen when the seat forces are large,
-    # e.g. 12 kN pretension of the mining conveyor). Half the slope keeps it stable.
-    # Roller chains keep the original cap (results unchanged).
-    par[K.P_DTREF] = model.stable_time_step() * (2.0 if model.is_link_chain else 1.0)
+    # friction slope cap m / dt_ref (see the kernel), dt_ref = 2 dt_stable: the cap
+    # m / dt makes the friction dead-beat on its own, and with the link springs and
+    # large seat forces the alternating mode of the seated pins then grows (period 2:
+    # the mining conveyor at 12 kN and a 16B roller drive at 12 kN pretension did not
+    # assemble with dt_ref = dt_stable). Half that slope keeps it stable, for every chain.
+    par[K.P_DTREF] = 2.0 * model.stable_time_step()
     par[K.P_KG] = model.guide_stiffness
     par[K.P_CG] = 2.0 * model.contact_damping_ratio * math.sqrt(model.guide_stiffness * model.link_mass)
     nw = len(model.wheels)
@@ -454,11 +453,9 @@ def assemble(model: SimulationModel, *, dt: float | None = None, tolerance: floa
     if model.tensioner is None:
         wp[adj, K.W_SLIDE] = 1.0
         wp[adj, K.W_DX], wp[adj, K.W_DY] = d
-        # temporary slide mass 1 kg; round link chains: the mass of the links seated on
-        # a full turn (heavy pins with stiff, damped contacts would make 1 kg unstable)
-        smass = 1.0
-        if model.is_link_chain:
-            smass = max(1.0, model.seats_per_turn(model.wheels[adj].teeth) * model.link_mass)
+        # temporary slide mass: the links seated on a full turn of the wheel, at least
+        # 1 kg (heavy pins with stiff, damped contacts would make a light slide unstable)
+        smass = max(1.0, model.seats_per_turn(model.wheels[adj].teeth) * model.link_mass)
         wp[adj, K.W_SMASS] = smass
         wp[adj, K.W_SK] = 0.0
         wp[adj, K.W_SF] = 2.0 * model.pretension
