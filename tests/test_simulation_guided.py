@@ -118,6 +118,9 @@ def test_guide_channel_geometry_and_errors():
         guide_channel(m, 0, radius, 0.3)
     with pytest.raises(InputError, match=r"guide height must be positive \(0 < H\), got -1"):
         guide_channel(m, 0, -1.0, GUIDE_END)
+    with pytest.raises(InputError, match=r"channel far end must lie beyond its end "
+                                         r"\(far > 0.5 m\), got 0.1"):
+        channel_guides(0.5, 0.1, 0.05, 0.008)
 
 
 def test_project_guides_become_channels():

@@ -197,8 +197,55 @@ def test_model_from_drive_errors():
     path = Path(__file__).resolve().parents[1] / "examples" / "mining_conveyor.toml"
     drive = load_project(path)
     odd = replace(drive, links=143)
-    with pytest.raises(InputError, match="even number of links"):
+    with pytest.raises(InputError, match=r"a round link chain needs an even number of links, "
+                                         r"the drive has 143 \(set links = 144 in the project\)"):
         model_from_drive(odd)
     wheels = [replace(w, kind="sprocket") if w.kind == "pocket_wheel" else w for w in drive.wheels]
-    with pytest.raises(InputError, match="sprocket"):
+    with pytest.raises(InputError, match=r"wheel 'drive' is a sprocket but the chain '18x64' "
+                                         r"is a round link chain"):
         model_from_drive(replace(drive, wheels=wheels))
+    # the tensioner idler made toothless, or put on the back of the chain
+    plain = [replace(w, teeth=None, diameter=0.3) if w.name == "tensioner" else w
+             for w in drive.wheels]
+    with pytest.raises(InputError, match=r"wheel 'tensioner' has no teeth; toothless idlers "
+                                         r"are supported with roller chains only"):
+        model_from_drive(replace(drive, wheels=plain))
+    outside = [replace(w, side=-1) if w.name == "tensioner" else w for w in drive.wheels]
+    with pytest.raises(InputError, match=r"wheel 'tensioner' has side = -1 \(outside idler\); "
+                                         r"supported with roller chains only"):
+        model_from_drive(replace(drive, wheels=outside))
+
+
+def test_seat_flank_clears_the_rigid_hinge_paths():
+    # independent check of link_seat_profile's flank angle: a hinge seats or unseats by
+    # turning about either neighbouring hinge (circle of radius t + d or t − d through
+    # its vertex, seed 002's rigid mechanism); following those circles exactly, the hinge
+    # centre stays inside the seat's free region up to the tip height, and a flank only
+    # 0.5° steeper would be cut into (so the formula is the steepest, not arbitrary)
+    psi, h = link_seat_profile(T_LINK, D_BAR, Z)
+    radius = float(link_chain_pitch_radius(T_LINK, D_BAR, Z))
+    d1, d2 = (float(v) for v in link_chain_central_angles(T_LINK, D_BAR, Z))
+    clearance = 0.505 * D_BAR - 0.5 * D_BAR
+
+    def penetration(a, b, flank):
+        c, s = math.cos(flank), math.sin(flank)
+        if abs(b) * c + a * s <= 0:
+            return math.hypot(a, b) - clearance
+        return -a * c + abs(b) * s - clearance
+
+    def worst(flank):
+        out = -1.0
+        for delta, length in ((d1, T_LINK + D_BAR), (d2, T_LINK - D_BAR)):
+            # gap frame of the hinge: a radial, b tangential; the neighbour at angle δ
+            nb = np.array([radius * (math.cos(delta) - 1.0), radius * math.sin(delta)])
+            th0 = math.atan2(-nb[1], -nb[0])
+            for dth in np.linspace(0.0, 0.6, 3000):
+                for sg in (1.0, -1.0):
+                    q = nb + length * np.array([math.cos(th0 + sg * dth), math.sin(th0 + sg * dth)])
+                    if 0.0 < q[0] <= h:
+                        out = max(out, penetration(q[0], q[1], flank))
+        return out
+
+    # measured: clears by 64 µm; 0.5° steeper cuts in by 18 µm
+    assert worst(psi) < 0.0
+    assert worst(psi + math.radians(0.5)) > 0.0

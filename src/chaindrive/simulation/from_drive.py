@@ -35,7 +35,8 @@ def model_from_drive(drive, *, ramp_time: float = 0.2, axial_stiffness: float | 
     its wheel; guided entry is validated against the kinematics module for roller and
     round link chains (docs/simulation.md).
     The driving wheel becomes wheel 0 at the drive's speed (ramped over ``ramp_time``
-    [s]); the load torque ``T z_j / z_0`` acts on the first other non-tensioner wheel;
+    [s]); the load torque ``T z_j / z_0`` acts on the first other wheel that is neither an
+    idler nor the tensioner;
     wheel inertias are 20 mm steel discs at the pitch radius; the slack tension of
     :meth:`Drive.tensions` is the assembly pretension. A drive with ``travel = "cw"``
     is simulated as its mirror image (``y → −y``, wheel order reversed).
@@ -60,27 +61,16 @@ def model_from_drive(drive, *, ramp_time: float = 0.2, axial_stiffness: float | 
     Raises
     ------
     InputError
-        Chain family not simulated, a link chain without ``bar_diameter``, a sprocket on a
-        link chain, an odd number of round links, toothless or outside idlers with a
-        link chain, a guide
-        whose end lies inside the pitch circle or beyond the span.
+        A sprocket on a link chain, an odd number of round links, toothless or outside
+        idlers with a link chain, no driven wheel to carry the load (a track drive), a
+        guide whose end lies inside the pitch circle or beyond the span.
     """
     chain = drive.chain
-    link = bool(getattr(chain, "is_link_chain", False))
-    if not link and not getattr(chain, "is_roller_chain", False):
-        raise InputError("simulation: roller chains (ISO 606, ANSI) and round link chains "
-                         f"(DIN 22252) are supported; chain {chain.name!r} is a "
-                         f"{chain.family} chain")
+    # every chain has exactly one of bar_diameter (round link chain) and roller_diameter
+    # (roller chain): chains.Chain refuses anything else
+    link = bool(chain.is_link_chain)
     p = float(chain.pitch)
-    bar = None
-    if link:
-        bar = getattr(chain, "bar_diameter", None)
-        if bar is None:
-            raise InputError(f"simulation: round link chain {chain.name!r} has no bar_diameter "
-                             "in the catalogue; it is needed for the pocket-wheel polygon")
-        bar = float(bar)
-    elif getattr(chain, "roller_diameter", None) is None:
-        raise InputError(f"simulation: roller chain {chain.name!r} has no roller_diameter")
+    bar = float(chain.bar_diameter) if link else None
     wheels = list(drive.wheels)
     for w in wheels:
         if link and w.teeth is not None and w.kind == "sprocket":
@@ -110,11 +100,10 @@ def model_from_drive(drive, *, ramp_time: float = 0.2, axial_stiffness: float | 
                          "the ground traction on its road wheels, is not simulated")
     sim_wheels = []
     for i, w in enumerate(wheels):
-        plain = None if w.teeth is not None else float(w.pitch_radius(chain))
-        if plain is not None:
-            r = plain
-        else:
-            r = w.pitch_radius(chain) if link else p / (2 * math.sin(math.pi / w.teeth))
+        # the drive's own pitch radius: sprocket, pocket wheel (seed 002 eq. 6) or the
+        # running radius of a toothless idler
+        r = float(w.pitch_radius(chain))
+        plain = r if w.teeth is None else None
         centre = (w.position[0], sign * w.position[1])
         if i == 0:
             sw = SimWheel(centre, w.teeth, _disc_inertia(r), "speed", float(drive.speed),
@@ -123,9 +112,8 @@ def model_from_drive(drive, *, ramp_time: float = 0.2, axial_stiffness: float | 
             sw = SimWheel(centre, w.teeth if plain is None else 3, _disc_inertia(r), "free",
                           name=w.name, side=w.side, plain_radius=plain)
             if i == load_idx:
-                # power balance at the mean speeds: T_j = T_0 ω_0/ω_j = T_0 z_j/z_0, with
-                # z_j the links per turn of wheel j (π / asin(p/2R) for a plain rim)
-                sw.torque = -torque * sw.path_teeth(p) / wheels[0].teeth
+                # power balance at the mean speeds: T_j = T_0 ω_0/ω_j = T_0 z_j/z_0
+                sw.torque = -torque * w.teeth / wheels[0].teeth
         sim_wheels.append(sw)
     tens = None
     if drive.tensioner is not None:
