@@ -61,7 +61,9 @@ def test_guide_channel_pin_line_and_end(z, links, frac, tangential):
     radius = m.pitch_radii()[0]
     height = radius if tangential else radius * math.cos(math.pi / z)
     a = m.wheels[1].centre[0]
-    l_max = a - 3 * P
+    # the channel must be at least one pitch long and end 2 pitches before the driven
+    # wheel: l < a − 3p (kept 1 µm inside, the bound itself is rejected)
+    l_max = a - 3 * P - 1e-6
     if l_max <= radius + 1e-3:
         return
     l = radius + 1e-3 + frac * (l_max - radius - 1e-3)

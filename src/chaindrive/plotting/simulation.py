@@ -85,7 +85,7 @@ def _draw_drive(ax, result, k):
         if z > 0:
             ax.plot(cx + rad * np.cos(th), cy + rad * np.sin(th), "+", color="0.4", ms=4)
         ax.plot([cx, cx + rad * np.cos(th[0])], [cy, cy + rad * np.sin(th[0])], "-", color="0.4")
-    for seg in getattr(result, "guide_segments", ()):
+    for seg in result.guide_segments:
         ax.plot(seg[:, 0], seg[:, 1], "-", color="tab:brown", lw=1.5)
     closed = np.vstack([pos, pos[:1]])
     ten = result.tension[k]
