@@ -57,15 +57,23 @@ def simulation_plot(result, *, ax=None):
     a.set_title("Wheel speeds")
     a.legend(fontsize=8)
     a = axes[3]
-    a.plot(t, np.max(result.contact_force, axis=1) / 1e3, lw=0.8, label="largest roller force")
-    if np.any(result.tensioner_position):
+    lines = a.plot(t, np.max(result.contact_force, axis=1) / 1e3, lw=0.8,
+                   label="largest contact force on a roller (hinge)")
+    moving = [j for j in range(result.tensioner_position.shape[1])
+              if np.any(result.tensioner_position[:, j])]
+    if moving:
+        # only the wheels on a slide (the others' column is zero throughout)
         b = a.twinx()
-        b.plot(t, result.tensioner_position * 1e3, "k--", lw=0.8)
-        b.set_ylabel("tensioner / slide position [mm]")
+        for j in moving:
+            lines += b.plot(t, result.tensioner_position[:, j] * 1e3, "k--", lw=0.8,
+                            label=f"slide of wheel {j} (right axis)")
+        b.set_ylabel("tensioner slide position [mm]")
     a.set_ylabel("contact force [kN]")
     a.set_xlabel("time [s]")
-    a.set_title("Roller-tooth contact force")
-    a.legend(fontsize=8)
+    a.set_title("Contact forces (roller–tooth or hinge–pocket)")
+    # the legend on the top axes, so that no curve is drawn over it
+    (b if moving else a).legend(lines, [ln.get_label() for ln in lines], fontsize=8,
+                                loc="lower left", framealpha=0.9)
     fig.tight_layout()
     return fig
 
