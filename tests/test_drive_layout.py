@@ -1,4 +1,4 @@
-"""Tests of chaindrive.drive.layout: chain length, centre distance, wraps, sag, take-up."""
+"""Tests of chaindrive.layout: chain length, centre distance, wraps, sag, take-up."""
 
 from __future__ import annotations
 
@@ -9,7 +9,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from chaindrive.drive import layout as L
+from chaindrive import layout as L
 from chaindrive.errors import InfeasibleError, InputError
 
 P = 0.0254

@@ -1,4 +1,4 @@
-"""Tests of chaindrive.drive.loads and chaindrive.drive.wear."""
+"""Tests of chaindrive.loads and chaindrive.wear."""
 
 from __future__ import annotations
 
@@ -9,8 +9,8 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from chaindrive.drive import loads as F
-from chaindrive.drive import wear as W
+from chaindrive import loads as F
+from chaindrive import wear as W
 from chaindrive.errors import InputError, UnknownNameError
 
 RPM = 2 * math.pi / 60

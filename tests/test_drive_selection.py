@@ -1,4 +1,4 @@
-"""Tests of chaindrive.drive.selection against published ANSI rating tables."""
+"""Tests of chaindrive.selection against published ANSI rating tables."""
 
 from __future__ import annotations
 
@@ -11,7 +11,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from chaindrive.drive import selection as S
+from chaindrive import selection as S
 from chaindrive.errors import InfeasibleError, InputError, UnknownNameError, ValidityRangeWarning
 
 RPM = 2 * math.pi / 60
@@ -144,7 +144,7 @@ def test_select_front_door_example():
     assert [round(c.power_margin, 2) for c in rows] == [1.47, 1.47, 1.29, 1.29, 1.9, 1.9]
     # links for the default 40 pitches: X = 80 + 34 + (34 / 2 pi)^2 / 40 = 114.7 -> 116;
     # the centre distance is the inverse of the same formula (layout.centre_distance_approx)
-    from chaindrive.drive.layout import centre_distance_approx
+    from chaindrive.layout import centre_distance_approx
 
     assert {c.links for c in rows} == {116}
     assert rows[0].centre_distance == pytest.approx(float(centre_distance_approx(0.015875, 17, 51, 116)))

@@ -128,7 +128,7 @@ def test_contact_stress_overflow_and_thin_roller():
 
 
 def test_layout_formulas():
-    from chaindrive.drive import catenary_sag, centre_distance_polygon, chain_length_polygon
+    from chaindrive.layout import catenary_sag, centre_distance_polygon, chain_length_polygon
 
     with pytest.raises((InputError, InfeasibleError)):
         catenary_sag(0.001722578859797774, 0.01, 82875.31416437284, 5e-324)
@@ -196,10 +196,11 @@ def test_api_surface_is_discovered():
 def test_second_fuzz_round_reproducers():
     # reproducers of the first full `make fuzz` run (finite inputs; foreign exception or inf out)
     from chaindrive import chains
-    from chaindrive.drive import centre_distance_polygon, select
     from chaindrive.geometry import TrackDriveWheel, tooth_width
     from chaindrive.kinematics import chain_entry_for
     from chaindrive.kinematics.crawler import crawler_drive
+    from chaindrive.layout import centre_distance_polygon
+    from chaindrive.selection import select
     from chaindrive.vibration import TensionerSpan, propose_safe_tensioner
 
     with pytest.raises(InfeasibleError, match="chain_entry: the result acceleration"):
@@ -232,7 +233,7 @@ def test_third_fuzz_round_reproducers():
 
 def test_fourth_fuzz_round_reproducer():
     # `make fuzz` with --seed 7: a NaN plate constant came out as a NaN rating
-    from chaindrive.drive import ansi_rated_power
+    from chaindrive.selection import ansi_rated_power
 
     with pytest.raises(InputError, match="plate_constant must not be NaN"):
         ansi_rated_power(0.830273602335735, 19, 1e-300, plate_constant=float("nan"))
@@ -241,8 +242,8 @@ def test_fourth_fuzz_round_reproducer():
 def test_fifth_fuzz_round_reproducers():
     # `scripts/fuzz.py --surface api --seed 8/9`: a 15 GiB phase grid (MemoryError) and an
     # infinite tip radius carried into a pocket wheel
-    from chaindrive.drive import chain_length_polygon
     from chaindrive.geometry import PocketWheel
+    from chaindrive.layout import chain_length_polygon
 
     with pytest.raises(InputError, match=r"phases must be a whole number in \[1, 131\] for 1000 \+ 150 teeth"):
         chain_length_polygon(0.0068, 1000, 150, 3.0, phases=1000)

@@ -32,8 +32,8 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
+from chaindrive import selection as S
 from chaindrive.chains import Chain, get
-from chaindrive.drive import selection as S
 from chaindrive.errors import InputError, UnknownNameError, ValidityRangeWarning
 
 RPM = math.pi / 30

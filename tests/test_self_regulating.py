@@ -13,9 +13,9 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
+from chaindrive import layout as L
 from chaindrive.chains import Chain, get
 from chaindrive.drive import Drive, Load, Wheel
-from chaindrive.drive import layout as L
 from chaindrive.drive import self_regulating as SR
 from chaindrive.errors import (
     ConvergenceError,
@@ -117,7 +117,7 @@ def test_pivot_offset_inverts_psi():
 @pytest.mark.parametrize("reaction", ["carrier", "frame"])
 def test_arms_against_wrap_layout_moments(tight, reaction):
     # Independent: moments of the span forces about the pivot from the tangent points of
-    # chaindrive.drive.layout.wrap_layout (belt geometry), κ = +1 when swinging ccw
+    # chaindrive.layout.wrap_layout (belt geometry), κ = +1 when swinging ccw
     # increases a.
     F, C, O = np.array([0.1, 0.2]), np.array([0.7, 0.45]), np.array([0.76, 0.38])
     rf, rc = 0.15, 0.07
@@ -164,7 +164,7 @@ def test_carrier_position_reaches_the_distance():
 
 
 def test_worn_centre_distance_references():
-    # e = 0, roller chain: identical to ISO 10823's inverse (chaindrive.drive.layout)
+    # e = 0, roller chain: identical to ISO 10823's inverse (chaindrive.layout)
     for N, z1, z2 in ((122, 19, 57), (76, 19, 38), (100, 17, 17)):
         assert float(SR.worn_centre_distance(N, P, z1, z2)) == pytest.approx(
             float(L.centre_distance_approx(P, z1, z2, N)), rel=1e-12)
@@ -186,7 +186,7 @@ def test_worn_centre_distance_references():
 
 def test_sag_length_excess_against_catenary_arc_integral():
     # Independent: the arc length of the inclined catenary through the chord ends,
-    # integrated numerically (scipy quad) from chaindrive.drive.layout's catenary shape.
+    # integrated numerically (scipy quad) from chaindrive.layout's catenary shape.
     from scipy.integrate import quad
 
     q, g = 2.7, L.GRAVITY

@@ -2,7 +2,7 @@
 the longitudinal wave speed and the string frequency of a span of 1,000+ links.
 
 References used (provenance of every expected value):
-* catenary: ``chaindrive.drive.layout.catenary_sag`` / ``tension_for_sag`` (Irvine, Cable
+* catenary: ``chaindrive.layout.catenary_sag`` / ``tension_for_sag`` (Irvine, Cable
   Structures, 1981, ch. 1), an independent closed form of the continuous inextensible chain;
 * longitudinal waves of a lumped chain: ``ω = 2 sqrt(k/m) sin(κ a/2)`` (Brillouin, Wave
   Propagation in Periodic Structures, 1946, ch. 1), long-wave speed ``c = sqrt(EA/q)``,
@@ -20,7 +20,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from chaindrive.drive.layout import catenary_sag, tension_for_sag
+from chaindrive.layout import catenary_sag, tension_for_sag
 from chaindrive.simulation import (
     SimulationModel,
     SimWheel,

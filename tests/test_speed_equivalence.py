@@ -4,8 +4,8 @@ Each fast path is compared with an independent or the previous implementation, k
 here (or in the module, private) as the reference:
 
 * hull perimeters of two pitch polygons (Cauchy's formula, vectorised) against Qhull;
-* the loop length of :func:`~chaindrive.drive.layout.tensioner_travel` against
-  :func:`~chaindrive.drive.layout.wrap_layout`, and the travel against the previous
+* the loop length of :func:`~chaindrive.layout.tensioner_travel` against
+  :func:`~chaindrive.layout.wrap_layout`, and the travel against the previous
   implementation (a root of ``wrap_layout(...).length`` by SciPy);
 * :func:`chaindrive._roots.brentq` against ``scipy.optimize.brentq`` (bit for bit);
 * :func:`~chaindrive.vibration.resonance.propose_safe_tensioner` (branch and bound)
@@ -22,8 +22,8 @@ from hypothesis import assume, given, settings
 from hypothesis import strategies as st
 from scipy.optimize import brentq as scipy_brentq
 
+from chaindrive import layout as L
 from chaindrive._roots import brentq
-from chaindrive.drive import layout as L
 from chaindrive.errors import InfeasibleError, InputError
 from chaindrive.vibration.resonance import (
     SafeTensioner,

@@ -95,7 +95,7 @@ def test_service_factor_table_is_the_published_one():
     assert [f[c]["ic_hydraulic"] for c in ("smooth", "moderate", "heavy")] == [1.0, 1.2, 1.4]
     assert [f[c]["ic_mechanical"] for c in ("smooth", "moderate", "heavy")] == [1.2, 1.4, 1.7]
     assert "Tsubaki" in t["source"] and "Table 4.2" in t["source"]
-    from chaindrive.drive.loads import service_factor
+    from chaindrive.loads import service_factor
 
     # the same numbers as the library's ACA table
     for character in ("smooth", "moderate", "heavy"):

@@ -34,8 +34,8 @@ from typing import Any
 
 from .._results import Result, jsonable
 from ..drive.model import Drive
-from ..drive.wear import WearLife
 from ..errors import ChainDriveError, InputError
+from ..wear import WearLife
 from .checks import Check
 from .entry import DriveEntry, drive_entry, entry_cases, entry_checks
 from .geometry import WheelGeometry, drive_geometry

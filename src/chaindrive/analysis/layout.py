@@ -8,8 +8,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from .. import layout as L
 from .._results import Result
-from ..drive import layout as L
 from ..drive.model import Drive
 from ..errors import InfeasibleError, ValidityRangeWarning
 from ._wheels import wheel_teeth
@@ -86,9 +86,9 @@ class DriveLayout(Result):
 def drive_layout(drive: Drive, *, phases: int = 8) -> DriveLayout:
     """Chain length, centre distance for whole links, wraps, spans and take-up of ``drive``.
 
-    Two toothed wheels: the exact polygon length (:func:`chaindrive.drive.layout.chain_length_polygon`)
+    Two toothed wheels: the exact polygon length (:func:`chaindrive.layout.chain_length_polygon`)
     and the centre distance for the even link count. More wheels: tangent spans and wraps
-    on the pitch circles (:func:`~chaindrive.drive.layout.wrap_layout`), wraps counted in
+    on the pitch circles (:func:`~chaindrive.layout.wrap_layout`), wraps counted in
     seated links. The take-up for 1, 2 and 3 % wear is the tensioner travel (with a
     tensioner) or the centre-distance increase (two wheels).
 
@@ -195,7 +195,7 @@ def span_inclination(direction: float) -> float:
 
 
 def slack_span_sag(drive: Drive, layout: DriveLayout, tension: float) -> float:
-    """Catenary sag of the slack span at ``tension`` [m] (:func:`chaindrive.drive.layout.catenary_sag`)."""
+    """Catenary sag of the slack span at ``tension`` [m] (:func:`chaindrive.layout.catenary_sag`)."""
     j = layout.slack_span
     return float(L.catenary_sag(layout.wrap.span_length[j], span_inclination(layout.wrap.span_angle[j]),
                                 tension, drive.mass_per_length))

@@ -7,9 +7,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from .. import layout as L
+from .. import loads as F
 from .._results import Result
-from ..drive import layout as L
-from ..drive import loads as F
 from ..drive.model import Drive
 from ..errors import InputError
 from ._wheels import wheel_teeth

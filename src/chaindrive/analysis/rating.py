@@ -6,7 +6,7 @@ from dataclasses import dataclass
 
 from .._results import Result
 from ..drive.model import Drive
-from ..drive.selection import ChainRating, chain_rating
+from ..selection import ChainRating, chain_rating
 from .checks import Check
 
 __all__ = ["DriveRating", "drive_rating", "rating_checks"]
@@ -22,7 +22,7 @@ class DriveRating(Result):
         The wheel the rating is taken on.
     rating : ChainRating
         Link-plate and roller–bushing limits, galling and lubrication region
-        (:func:`chaindrive.drive.selection.chain_rating`) at the design power.
+        (:func:`chaindrive.selection.chain_rating`) at the design power.
     """
 
     wheel: str

@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from ..drive import wear as W
+from .. import wear as W
 from ..drive.model import Drive
 from ..errors import InputError
 from .layout import DriveLayout
@@ -22,7 +22,7 @@ def drive_wear(drive: Drive, layout: DriveLayout, loads: DriveLoads, rating: Dri
 
     References
     ----------
-    docs/drive.md (wear life); :func:`chaindrive.drive.wear.wear_life`.
+    docs/drive.md (wear life); :func:`chaindrive.wear.wear_life`.
     """
     nw = len(drive.wheels)
     if model is None:

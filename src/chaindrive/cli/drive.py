@@ -153,8 +153,8 @@ def select_command(
     C oil stream, C' galling region). One row per chain (ANSI number and ISO twin
     together), simplex before multi-strand, smallest adequate pitch first; margin =
     rated / design power; links and centre distance for the wanted centre distance."""
-    from ..drive.selection import candidate_project, select
     from ..errors import InputError
+    from ..selection import candidate_project, select
 
     out_file = None
     if write is not None:

@@ -1,7 +1,7 @@
-"""The drive as a whole: layout, loads, chain selection, wear life, project files.
+"""The drive description: the immutable :class:`Drive` and its parts, and project files.
 
-Pure functions live in :mod:`~chaindrive.drive.layout`, :mod:`~chaindrive.drive.loads`,
-:mod:`~chaindrive.drive.selection` and :mod:`~chaindrive.drive.wear`; the thin objects
+The formulas live in their topic modules (:mod:`chaindrive.layout`, :mod:`chaindrive.loads`,
+:mod:`chaindrive.selection`, :mod:`chaindrive.wear`); the thin objects
 (:class:`Drive`, :class:`Wheel`, :class:`Tensioner`, :class:`Guide`, :class:`Load`), immutable, in
 :mod:`~chaindrive.drive.model`; their analysis in :mod:`chaindrive.analysis`; TOML project files in :mod:`~chaindrive.drive.project`.
 Models and sources: ``docs/drive.md``.
@@ -18,39 +18,39 @@ Examples
 122
 """
 
-from . import layout, loads, selection, wear
-from .layout import (
-    catenary_sag,
-    centre_distance_approx,
-    centre_distance_polygon,
-    chain_length_approx,
-    chain_length_circles,
-    chain_length_polygon,
-    even_links,
-    parabolic_sag,
-    tension_for_sag,
-    tensioner_travel,
-    wrap_layout,
-)
+from typing import Any
+
 from .model import ContactSpec, Drive, Guide, Load, Tensioner, TrackSpec, Wheel
-from .selection import ansi_rated_power, lubrication_type, select
-from .wear import wear_life
 
 __all__ = [
-    "layout", "loads", "selection", "wear",
     "Drive", "Wheel", "Tensioner", "Guide", "Load", "ContactSpec", "TrackSpec",
-    "chain_length_approx", "centre_distance_approx", "chain_length_circles",
-    "chain_length_polygon", "centre_distance_polygon", "even_links", "wrap_layout",
-    "catenary_sag", "parabolic_sag", "tension_for_sag", "tensioner_travel",
-    "ansi_rated_power", "lubrication_type", "select", "wear_life",
     "load_project", "Project",
 ]
 
+#: Formula names that lived here before they moved to their topic modules (deprecated aliases).
+_MOVED = {
+    "chain_length_approx": "layout", "centre_distance_approx": "layout", "chain_length_circles": "layout",
+    "chain_length_polygon": "layout", "centre_distance_polygon": "layout", "even_links": "layout",
+    "wrap_layout": "layout", "catenary_sag": "layout", "parabolic_sag": "layout", "tension_for_sag": "layout",
+    "tensioner_travel": "layout", "ansi_rated_power": "selection", "lubrication_type": "selection",
+    "select": "selection", "wear_life": "wear",
+    "layout": None, "loads": None, "selection": None, "wear": None,
+}
 
-def __getattr__(name):  # project files need pydantic (optional extra): import lazily
+
+def __getattr__(name: str) -> Any:  # project files need pydantic (optional extra): import lazily
+    import importlib
+
     if name in ("load_project", "Project", "project"):
-        import importlib
-
         project = importlib.import_module(f"{__name__}.project")
         return project if name == "project" else getattr(project, name)
+    if name in _MOVED:
+        from .._deprecation import warn_renamed
+
+        home = _MOVED[name]
+        if home is None:
+            warn_renamed(f"chaindrive.drive.{name}", f"chaindrive.{name}")
+            return importlib.import_module(f"chaindrive.{name}")
+        warn_renamed(f"chaindrive.drive.{name}", f"chaindrive.{home}.{name}")
+        return getattr(importlib.import_module(f"chaindrive.{home}"), name)
     raise AttributeError(name)

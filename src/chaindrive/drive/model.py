@@ -27,9 +27,9 @@ from typing import TYPE_CHECKING, Any, Literal
 
 import numpy as np
 
+from .. import layout as L
+from .. import loads as F
 from ..errors import InputError
-from . import layout as L
-from . import loads as F
 
 if TYPE_CHECKING:
     from ..chains import Chain

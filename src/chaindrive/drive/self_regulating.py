@@ -64,10 +64,10 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 from numpy.typing import ArrayLike
 
+from .. import layout as L
 from .._results import Result
 from .._validation import as_float_array, check_nonnegative, check_positive, check_range
 from ..errors import ConvergenceError, InfeasibleError, InputError, ValidityRangeWarning
-from . import layout as L
 
 if TYPE_CHECKING:
     from .model import Drive
@@ -204,7 +204,7 @@ def worn_centre_distance(links: ArrayLike, pitch: ArrayLike, teeth_1: int, teeth
     The taut length is ISO 10823's approximation ``L = 2a + π(r1+r2) + (r2-r1)²/a``
     written with the perimeter radii ``r = n p'/2π`` (a wrap of a full turn is ``n``
     links); the larger root of ``2a² - b a + (r2-r1)² = 0`` inverts it. Against the
-    exact polygon length (:func:`chaindrive.drive.layout.chain_length_polygon`, phase
+    exact polygon length (:func:`chaindrive.layout.chain_length_polygon`, phase
     mean) the error in ``a`` is below 0.02 p for roller chains at ``a >= 20 p``
     (tested). Valid for ``e < 0.1``; ISO 10823 limits ``e`` to about 3 %.
 
@@ -399,7 +399,7 @@ def span_arms(carrier_centre: ArrayLike, fixed_centre: ArrayLike, carrier_radius
     ``v_C = κ ẑ × (C - O)``, ``ω = κ``; slide: ``v_C = κ û``, ``ω = 0``; ``κ = ±1``
     makes the coordinate grow with ``a``. In every case ``g_1 + g_2 = -2 cos β ∂a/∂q < 0``:
     equal tensions pull the carrier in. Derived here; tested against the moments of the
-    span forces about the pivot taken from :func:`chaindrive.drive.layout.wrap_layout`.
+    span forces about the pivot taken from :func:`chaindrive.layout.wrap_layout`.
 
     References
     ----------
@@ -1235,10 +1235,10 @@ def solve_equilibrium(geometry: CarrierGeometry, effective_pull: float, elongati
     Notes
     -----
     Independent of the closed forms in every part: the tangent points and span
-    directions come from :func:`chaindrive.drive.layout.wrap_layout`; the moments are
+    directions come from :func:`chaindrive.layout.wrap_layout`; the moments are
     the cross products of the span forces about the pivot (or their components along
     the slide); the chain length is the phase mean of the exact polygon length
-    (:func:`chaindrive.drive.layout.chain_length_polygon`) of the worn pitch
+    (:func:`chaindrive.layout.chain_length_polygon`) of the worn pitch
     ``p(1+e)``; the spans hang as exact catenaries. The balance is linear in ``S2`` at
     a given carrier position; the length compatibility is solved for the coordinate by
     Brent's method.

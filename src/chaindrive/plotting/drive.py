@@ -16,8 +16,8 @@ if TYPE_CHECKING:
     from ..analysis.layout import DriveLayout
     from ..analysis.loads import DriveLoads
     from ..drive.model import Drive
-    from ..drive.selection import ChainRating
-    from ..drive.wear import WearLife
+    from ..selection import ChainRating
+    from ..wear import WearLife
 
 __all__ = ["layout_plot", "wear_plot", "rating_plot"]
 
@@ -132,7 +132,7 @@ def wear_plot(result: WearLife, *, ax: Axes | None = None) -> Figure:
 
     Parameters
     ----------
-    result : chaindrive.drive.wear.WearLife
+    result : chaindrive.wear.WearLife
     ax : matplotlib.axes.Axes, optional
 
     Returns
@@ -166,8 +166,8 @@ def rating_plot(result: ChainRating | float, teeth: int | None = None, *, strand
 
     Parameters
     ----------
-    result : chaindrive.drive.selection.ChainRating or float
-        A rating (:func:`~chaindrive.drive.selection.chain_rating`: chain, teeth,
+    result : chaindrive.selection.ChainRating or float
+        A rating (:func:`~chaindrive.selection.chain_rating`: chain, teeth,
         strands and the operating point are taken from it), or the chain pitch [m]
         (then ``teeth`` is required).
     teeth : int, optional
@@ -175,7 +175,7 @@ def rating_plot(result: ChainRating | float, teeth: int | None = None, *, strand
     strands : int
         Number of strands (with a pitch).
     plate_constant, roller_constant : float
-        See :func:`chaindrive.drive.selection.ansi_constants` (with a pitch).
+        See :func:`chaindrive.selection.ansi_constants` (with a pitch).
     speed_range : (float, float), optional
         Small-sprocket speeds plotted [rpm]; default 10 rpm to the galling speed at
         zero tension (at most 20 000 rpm).
@@ -197,13 +197,13 @@ def rating_plot(result: ChainRating | float, teeth: int | None = None, *, strand
     galling region, type C' lubrication. Only its falling branch is drawn: below the
     speed of its maximum the galling tension is of the order of the breaking force. The lubrication bands A (manual/drip),
     B (bath/disc), C (oil stream) are the chain-speed limits of
-    :func:`~chaindrive.drive.selection.lubrication_limits` converted to sprocket speed.
+    :func:`~chaindrive.selection.lubrication_limits` converted to sprocket speed.
     """
     import warnings
 
     import matplotlib.pyplot as plt
 
-    from ..drive import selection as S
+    from .. import selection as S
     from ..errors import ValidityRangeWarning
 
     if isinstance(result, S.ChainRating):

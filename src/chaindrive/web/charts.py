@@ -50,7 +50,7 @@ def rating_chart(design: Design, *, units: str = "metric") -> dict[str, Any]:
     'operating point'
     """
     from ..chains import get
-    from ..drive.selection import ansi_constants, ansi_rated_power
+    from ..selection import ansi_constants, ansi_rated_power
 
     label, factor = _power_unit(units)
     speeds = np.geomspace(10, 6000, 120) * RPM

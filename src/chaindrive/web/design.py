@@ -238,7 +238,7 @@ def _teeth(state: dict[str, str], errors: dict[str, str], ratio: float | None,
 
 @lru_cache(maxsize=128)
 def _roller_candidates(power: float, speed: float, ratio: float, ks: float, z1: int) -> tuple:
-    from ..drive.selection import select
+    from ..selection import select
 
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", ValidityRangeWarning)
@@ -476,7 +476,7 @@ def _get(spec: Any, key: str) -> Any:
 
 
 def _pitch_radius(chain: Any, teeth: int) -> float:
-    from ..drive.layout import pitch_radius
+    from ..layout import pitch_radius
 
     bar = chain.bar_diameter if chain.is_link_chain else None
     return float(pitch_radius(chain.pitch, teeth, bar))

@@ -1,0 +1,1346 @@
+r"""Drive layout: chain length, centre distance, wrap, spans, sag, tensioner travel.
+
+Three models of the chain path are provided:
+
+* **continuous approximation** (:func:`chain_length_approx`,
+  :func:`centre_distance_approx`): the textbook/ISO 10823 formula in pitches;
+* **pitch circles, exact tangents** (:func:`chain_length_circles`,
+  :func:`wrap_layout`): the chain as a belt on the pitch circles (the "belt problem"),
+  exact for the circles, for two or more wheels and idlers;
+* **pitch polygons** (:func:`chain_length_polygon`, :func:`centre_distance_polygon`):
+  the taut chain is the boundary of the convex hull of the pitch polygons of the two
+  wheels; its length depends on the phases of the wheels. See the function notes.
+
+All lengths in metres, angles in radians, chain lengths in pitches (links).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+from numpy.typing import ArrayLike
+
+from ._finite import finite_guard
+from ._results import Result
+from ._typing import FloatOrArray
+from ._validation import as_float_array, check_nonnegative, check_positive, check_teeth
+from .errors import ConvergenceError, InfeasibleError, InputError
+
+__all__ = [
+    "GRAVITY",
+    "pitch_radius",
+    "pitch_polygon_vertices",
+    "chain_length_approx",
+    "centre_distance_approx",
+    "chain_length_circles",
+    "chain_length_polygon",
+    "centre_distance_polygon",
+    "even_links",
+    "PolygonLength",
+    "PolygonCentreDistance",
+    "wrap_layout",
+    "WrapLayout",
+    "teeth_in_mesh",
+    "catenary_sag",
+    "parabolic_sag",
+    "tension_for_sag",
+    "tensioner_travel",
+    "centre_distance_travel",
+]
+
+#: Standard gravity [m/s²] (CGPM 1901).
+GRAVITY = 9.80665
+
+
+# --------------------------------------------------------------------------- wheels
+
+
+@finite_guard
+def pitch_radius(pitch: ArrayLike, teeth: ArrayLike, bar_diameter: float | None = None) -> FloatOrArray:
+    r"""Pitch radius of a sprocket (regular polygon) or pocket wheel (bi-regular polygon).
+
+    .. math::
+        R = \frac{p}{2\sin(\pi/z)}\quad\text{(roller)},\qquad
+        R = \tfrac12\sqrt{\left(\frac{t}{\sin\frac{\pi}{2z}}\right)^2
+            + \left(\frac{d}{\cos\frac{\pi}{2z}}\right)^2}\quad\text{(link chain)}
+
+    Parameters
+    ----------
+    pitch : float or array_like
+        Chain pitch ``p`` (roller) or inner link length ``t`` (link chain) [m].
+    teeth : int or array_like
+        Teeth, or pockets ``z`` of a pocket wheel (the polygon has ``2z`` sides) [-].
+    bar_diameter : float, optional
+        Bar diameter ``d`` of a round link chain [m]; ``None`` or 0 for a roller chain.
+
+    Returns
+    -------
+    ndarray
+        Pitch radius [m].
+
+    Notes
+    -----
+    Delegates to :mod:`chaindrive.geometry.polygon` (ISO 606:2015 clause 8.2; Dolipiński et al.
+    eq. (6)). A pocket wheel needs ``z >= 2`` pockets.
+
+    References
+    ----------
+    Dolipiński et al., eq. (6); ISO 606:2015, 8.2.
+
+    Examples
+    --------
+    >>> round(float(pitch_radius(0.0254, 19)), 6)
+    0.077159
+    >>> round(float(pitch_radius(0.064, 8, 0.018)), 5)
+    0.16428
+    """
+    from .geometry.polygon import link_chain_pitch_radius, roller_chain_pitch_radius
+
+    if bar_diameter is None or np.all(np.asarray(bar_diameter, dtype=float) == 0):
+        return roller_chain_pitch_radius(pitch, teeth)
+    check_teeth("teeth", teeth, minimum=2)
+    return link_chain_pitch_radius(pitch, bar_diameter, teeth)
+
+
+@finite_guard
+def pitch_polygon_vertices(
+    pitch: float,
+    teeth: int,
+    phase: float = 0.0,
+    bar_diameter: float | None = None,
+    centre: tuple[float, float] = (0.0, 0.0),
+) -> np.ndarray:
+    r"""Hinge centres of the chain seated on a wheel: vertices of its pitch polygon.
+
+    .. math:: P_k = C + R\,(\cos\theta_k, \sin\theta_k),\quad
+              \theta_{k+1} - \theta_k = \delta_1, \delta_2, \delta_1, \dots
+
+    Parameters
+    ----------
+    pitch : float
+        Chain pitch / inner link length [m].
+    teeth : int
+        Teeth or pockets ``z`` [-].
+    phase : float
+        Angle of the first vertex [rad].
+    bar_diameter : float, optional
+        Bar diameter of a round link chain [m] (bi-regular ``2z``-gon); ``None`` for a
+        regular ``z``-gon.
+    centre : (float, float)
+        Wheel centre [m].
+
+    Returns
+    -------
+    ndarray, shape (n, 2)
+        Vertices [m], counter-clockwise.
+
+    Notes
+    -----
+    Side lengths are ``p`` (regular) or alternately ``t + d`` and ``t - d``
+    (bi-regular, Dolipiński et al.); the perimeter is ``z p`` or ``2 z t``.
+
+    References
+    ----------
+    Dolipiński et al., eq. (6) and the central angles δ1, δ2.
+
+    Examples
+    --------
+    >>> v = pitch_polygon_vertices(0.0254, 6)
+    >>> round(float(np.hypot(*(v[1] - v[0]))), 6)
+    0.0254
+    """
+    cx, cy = (float(c) for c in centre)
+    R, offsets = _radius_and_offsets(pitch, teeth, bar_diameter)
+    theta = float(phase) + offsets
+    return np.column_stack([cx + R * np.cos(theta), cy + R * np.sin(theta)])
+
+
+def _radius_and_offsets(pitch, teeth, bar_diameter):
+    """Pitch radius [m] and vertex angles from the first vertex [rad] (checked inputs)."""
+    z = int(check_teeth("teeth", teeth, minimum=2))
+    t = float(check_positive("pitch", pitch, "m"))
+    if bar_diameter is None or float(bar_diameter) == 0.0:
+        if z < 3:
+            raise InputError(f"teeth must be a whole number >= 3 for a roller chain, got {z}")
+        R = t / (2.0 * np.sin(np.pi / z))
+        steps = np.full(z, 2.0 * np.pi / z)
+    else:
+        from .geometry.polygon import link_chain_central_angles
+
+        d = float(bar_diameter)
+        R = float(pitch_radius(t, z, d))
+        d1, d2 = (float(x) for x in link_chain_central_angles(t, d, z))
+        steps = np.tile([d1, d2], z)
+    return R, np.concatenate([[0.0], np.cumsum(steps)[:-1]])
+
+
+# --------------------------------------------------------------------------- two wheels
+
+
+@finite_guard
+def chain_length_approx(
+    pitch: ArrayLike, teeth_1: ArrayLike, teeth_2: ArrayLike, centre_distance: ArrayLike
+) -> FloatOrArray:
+    r"""Chain length in pitches, continuous approximation (ISO 10823 / textbook).
+
+    .. math::
+        X = \frac{2a}{p} + \frac{z_1 + z_2}{2}
+            + \left(\frac{z_2 - z_1}{2\pi}\right)^2 \frac{p}{a}
+
+    Parameters
+    ----------
+    pitch : float or array_like
+        Chain pitch ``p`` [m].
+    teeth_1, teeth_2 : int or array_like
+        Tooth counts of the two wheels [-] (order does not matter).
+    centre_distance : float or array_like
+        Centre distance ``a`` [m].
+
+    Returns
+    -------
+    ndarray
+        Chain length ``X`` [pitches] (not rounded).
+
+    Notes
+    -----
+    Derivation: belt on the pitch circles approximated by ``R ≈ z p / (2π)`` and
+    ``asin β ≈ β``, ``cos β ≈ 1 - β²/2`` for the span angle ``β = (R2 - R1)/a``;
+    the error against :func:`chain_length_circles` is below 0.1 pitch for
+    ``a >= 30 p`` and ratios up to 7 (tested). The centre distance should exceed
+    ``R1 + R2``; ISO 10823 recommends 30…50 pitches.
+
+    References
+    ----------
+    ISO 10823:2004, Guidance on the selection of roller chain drives (chain length
+    formula); Shigley's Mechanical Engineering Design, 9th ed., eq. (17-34); Ramsey
+    Chain, "Chain length calculations" (same formula with a tabulated ``T`` term).
+
+    Examples
+    --------
+    >>> round(float(chain_length_approx(0.0254, 19, 57, 1.05)), 3)
+    121.562
+    """
+    p = check_positive("pitch", pitch, "m")
+    z1 = check_teeth("teeth_1", teeth_1)
+    z2 = check_teeth("teeth_2", teeth_2)
+    a = check_positive("centre_distance", centre_distance, "m")
+    return 2.0 * a / p + (z1 + z2) / 2.0 + ((z2 - z1) / (2.0 * np.pi)) ** 2 * p / a
+
+
+@finite_guard
+def centre_distance_approx(pitch: ArrayLike, teeth_1: ArrayLike, teeth_2: ArrayLike, links: ArrayLike) -> FloatOrArray:
+    r"""Centre distance for a chain of ``links`` pitches, inverse of the approximation.
+
+    .. math::
+        a = \frac{p}{8}\left[2X - z_1 - z_2
+            + \sqrt{(2X - z_1 - z_2)^2 - \frac{8}{\pi^2}(z_2 - z_1)^2}\right]
+
+    Parameters
+    ----------
+    pitch : float or array_like
+        Chain pitch [m].
+    teeth_1, teeth_2 : int or array_like
+        Tooth counts [-].
+    links : float or array_like
+        Chain length ``X`` [pitches].
+
+    Returns
+    -------
+    ndarray
+        Centre distance [m].
+
+    Raises
+    ------
+    InfeasibleError
+        If the chain is too short for the two wheels (negative discriminant).
+
+    Notes
+    -----
+    The larger root of ``2c² - (X - S)c + D²/(4π²) = 0`` with ``c = a/p``,
+    ``S = (z1+z2)/2``, ``D = z2 - z1`` (derived here; the handbook form writes
+    ``8/π² ≈ 0.810``). Exact inverse of :func:`chain_length_approx` (tested). Written
+    as ``a = p (2X - z1 - z2) F`` it has the form of ISO 10823 (factor ``F`` tabulated
+    there) with ``F = [1 + √(1 - (8/π²)(D/(2X - z1 - z2))²)] / 8``.
+
+    References
+    ----------
+    ISO 10823:2004 (centre distance formula); Shigley, 9th ed., eq. (17-35); Autodesk
+    Inventor help, "Calculating roller chain length" (``C = F p [2X - (z1 + z2)]``);
+    U. C. Jindal, Machine Design, Example 30-1 (round trip, tested).
+
+    Examples
+    --------
+    >>> round(float(centre_distance_approx(0.0254, 19, 57, 122)), 4)
+    1.0556
+    """
+    p = check_positive("pitch", pitch, "m")
+    z1 = check_teeth("teeth_1", teeth_1)
+    z2 = check_teeth("teeth_2", teeth_2)
+    X = check_positive("links", links)
+    b = 2.0 * X - z1 - z2
+    disc = b**2 - 8.0 / np.pi**2 * (z2 - z1) ** 2
+    if np.any(b <= 0) or np.any(disc < 0):
+        raise InfeasibleError(
+            f"links = {X} is too short for wheels of {z1} and {z2} teeth: need "
+            "2X - z1 - z2 > sqrt(8/pi^2) |z2 - z1| (links must exceed about (z1+z2)/2 + 0.45|z2-z1|)"
+        )
+    return p / 8.0 * (b + np.sqrt(disc))
+
+
+def _belt_length(a: FloatOrArray, r1: FloatOrArray, r2: FloatOrArray) -> FloatOrArray:
+    """Open-belt length on two circles (exact tangents)."""
+    beta = np.arcsin((r2 - r1) / a)
+    return 2.0 * np.sqrt(a**2 - (r2 - r1) ** 2) + r1 * (np.pi - 2 * beta) + r2 * (np.pi + 2 * beta)
+
+
+@finite_guard
+def chain_length_circles(
+    pitch: ArrayLike,
+    teeth_1: ArrayLike,
+    teeth_2: ArrayLike,
+    centre_distance: ArrayLike,
+    bar_diameter: float | None = None,
+) -> FloatOrArray:
+    r"""Chain length in pitches on the pitch *circles*, exact tangents (belt formula).
+
+    .. math::
+        L = 2\sqrt{a^2 - (R_2 - R_1)^2} + R_1(\pi - 2\beta) + R_2(\pi + 2\beta),
+        \quad \beta = \arcsin\frac{R_2 - R_1}{a},\qquad X = L/p
+
+    Parameters
+    ----------
+    pitch : float or array_like
+        Chain pitch (inner link length) [m].
+    teeth_1, teeth_2 : int or array_like
+        Teeth / pockets [-].
+    centre_distance : float or array_like
+        Centre distance ``a > |R2 - R1|`` [m].
+    bar_diameter : float, optional
+        Bar diameter of a round link chain [m].
+
+    Returns
+    -------
+    ndarray
+        Chain length [pitches].
+
+    Notes
+    -----
+    The chain is replaced by a belt on the pitch circles: the wrapped parts are arcs,
+    not polygon sides, so this over-estimates the polygonal length (a side is shorter
+    than its arc) and is the limit of :func:`chain_length_polygon` for many teeth.
+
+    References
+    ----------
+    Open-belt length, e.g. Shigley, 9th ed., eq. (17-1) for flat belts.
+
+    Examples
+    --------
+    >>> round(float(chain_length_circles(0.0254, 19, 19, 1.0)), 3)
+    97.827
+    """
+    p = check_positive("pitch", pitch, "m")
+    a = check_positive("centre_distance", centre_distance, "m")
+    r1 = pitch_radius(p, teeth_1, bar_diameter)
+    r2 = pitch_radius(p, teeth_2, bar_diameter)
+    if np.any(a <= np.abs(r2 - r1)):
+        raise InfeasibleError(
+            "centre_distance must exceed |R2 - R1| (one wheel inside the other), "
+            f"got a = {a} m, |R2 - R1| = {np.abs(r2 - r1)} m"
+        )
+    return _belt_length(a, r1, r2) / p
+
+
+def _hull_perimeter(points: np.ndarray) -> float:
+    """Perimeter of the convex hull of ``points`` by Qhull (reference for the fast path)."""
+    from scipy.spatial import ConvexHull
+
+    hull = ConvexHull(points)
+    v = points[hull.vertices]
+    return float(np.sum(np.hypot(*(np.roll(v, -1, axis=0) - v).T)))
+
+
+def _edge_normal_angles(vertices: np.ndarray) -> np.ndarray:
+    """Outward normal angles of the edges ``k -> k+1`` of counter-clockwise convex polygons.
+
+    ``vertices`` (rows, n, 2) -> (rows, n), unwrapped so that they increase along a row.
+    """
+    d = np.roll(vertices, -1, axis=-2) - vertices
+    return np.unwrap(np.arctan2(-d[..., 0], d[..., 1]), axis=-1)
+
+
+def _cone_index(normals: np.ndarray, directions: np.ndarray) -> np.ndarray:
+    """Vertex whose normal cone holds each direction: ``normals`` (rows, n), ``directions`` (rows, ...)."""
+    rows, n = normals.shape
+    starts = np.concatenate([normals[:, -1:] - 2 * np.pi, normals[:, :-1]], axis=1)  # vertex k: from ν_{k-1}
+    offsets = 2 * np.pi * np.arange(rows)
+    flat = (starts - starts[:, :1] + offsets[:, None]).ravel()
+    q = np.mod(directions.reshape(rows, -1) - starts[:, :1], 2 * np.pi) + offsets[:, None]
+    k = np.searchsorted(flat, q.ravel(), side="right") - 1
+    return ((k.reshape(rows, -1) - n * np.arange(rows)[:, None]) % n).reshape(directions.shape)
+
+
+def _abs_cos_primitive(x: np.ndarray) -> np.ndarray:
+    """A primitive of ``|cos x|``: ``2m + (-1)^m sin x``, ``m = floor((x + π/2)/π)`` (continuous)."""
+    m = np.floor((x + np.pi / 2) / np.pi)
+    return 2.0 * m + np.where(m % 2 == 0, 1.0, -1.0) * np.sin(x)
+
+
+def _hull_perimeters(vertices_1: np.ndarray, vertices_2: np.ndarray) -> np.ndarray:
+    r"""Perimeter of hull(P1[a] ∪ P2[b]) for every pair: (A, n1, 2), (B, n2, 2) -> (A, B) [m].
+
+    Cauchy's formula: the perimeter of a convex set is the integral of its support
+    function over the directions, :math:`\int_0^{2\pi} h\,d\varphi`, and the support
+    function of the hull of a union is :math:`\max(h_1, h_2)`. Hence
+
+    .. math:: L = L_1 + \int_0^{2\pi} \max(0,\ h_2 - h_1)\,d\varphi
+
+    with ``L1`` the perimeter of P1. Between consecutive edge normals of both polygons
+    (merged and sorted) each support function is ``v·u(φ)`` for one vertex ``v``, so
+    ``h2 - h1 = |w| cos(φ - ψ)`` with ``w = v2 - v1`` and the integral is closed-form
+    (a primitive of ``|cos|``). Exact for any two convex counter-clockwise polygons,
+    overlapping or not; equal to Qhull (:func:`_hull_perimeter`) within 1e-12 (tests).
+
+    References
+    ----------
+    Santaló, L. A., Integral Geometry and Geometric Probability (1976), ch. 1, Cauchy's
+    formula for the perimeter of a convex set.
+    """
+    rows_1, rows_2 = vertices_1.shape[0], vertices_2.shape[0]
+    n1, n2 = vertices_1.shape[1], vertices_2.shape[1]
+    normals_1 = _edge_normal_angles(vertices_1)
+    normals_2 = _edge_normal_angles(vertices_2)
+    s = np.concatenate([np.broadcast_to(np.mod(normals_1, 2 * np.pi)[:, None, :], (rows_1, rows_2, n1)),
+                        np.broadcast_to(np.mod(normals_2, 2 * np.pi)[None, :, :], (rows_1, rows_2, n2))],
+                       axis=-1)
+    s.sort(axis=-1)
+    e = np.concatenate([s[..., 1:], s[..., :1] + 2 * np.pi], axis=-1)
+    mid = 0.5 * (s + e)
+    k1 = _cone_index(normals_1, mid)
+    k2 = np.swapaxes(_cone_index(normals_2, np.swapaxes(mid, 0, 1)), 0, 1)
+    w = vertices_2[np.arange(rows_2)[None, :, None], k2] - vertices_1[np.arange(rows_1)[:, None, None], k1]
+    psi = np.arctan2(w[..., 1], w[..., 0])
+    xs, xe = s - psi, e - psi
+    extra = 0.5 * np.hypot(w[..., 0], w[..., 1]) * (
+        (np.sin(xe) - np.sin(xs)) + _abs_cos_primitive(xe) - _abs_cos_primitive(xs))
+    own = np.sum(np.hypot(*np.moveaxis(np.roll(vertices_1, -1, axis=-2) - vertices_1, -1, 0)), axis=-1)
+    return own[:, None] + np.sum(extra, axis=-1)
+
+
+@dataclass
+class PolygonLength(Result):
+    """Chain length on the pitch polygons over the phases of the two wheels.
+
+    Attributes
+    ----------
+    links_min, links_max, links_mean : float
+        Taut chain length over the sampled phase pairs [pitches].
+    links_circles : float
+        Length on the pitch circles, for comparison [pitches].
+    links_approx : float or None
+        The continuous approximation (roller chains only) [pitches].
+    phase_1, phase_2 : ndarray
+        Sampled phases of wheel 1 and 2 [rad].
+    links : ndarray, shape (n1, n2)
+        Length for each phase pair [pitches].
+    """
+
+    links_min: float
+    links_max: float
+    links_mean: float
+    links_circles: float
+    links_approx: float | None
+    phase_1: np.ndarray
+    phase_2: np.ndarray
+    links: np.ndarray
+
+
+def _polygon_links(p, z1, z2, a, d, n):
+    # period of each polygon: 2π/z (a bi-regular 2z-gon repeats every 2π/z too)
+    ph1 = np.arange(n) * (2 * np.pi / z1) / n
+    ph2 = np.arange(n) * (2 * np.pi / z2) / n
+    v1, v2 = _phase_vertices(p, z1, ph1, d), _phase_vertices(p, z2, ph2, d)
+    return ph1, ph2, _hull_perimeters(v1, _shifted(v2, a)) / p
+
+
+def _phase_vertices(p, z, phases, d):
+    # the pitch polygons of a wheel at the origin for each phase, (phases, n, 2); cached
+    # because the root searches ask for the same wheels at many centre distances
+    phases = np.asarray(phases, dtype=float).ravel()
+    key = (float(p), int(z), phases.tobytes(), None if not d else float(d))
+    found = _VERTEX_CACHE.get(key)
+    if found is None:
+        # pitch_polygon_vertices for every phase at once (the same operations)
+        R, offsets = _radius_and_offsets(p, z, d)
+        theta = phases[:, None] + offsets[None, :]
+        found = np.stack([0.0 + R * np.cos(theta), 0.0 + R * np.sin(theta)], axis=-1)
+        found.flags.writeable = False
+        if len(_VERTEX_CACHE) > 64:
+            _VERTEX_CACHE.clear()
+        _VERTEX_CACHE[key] = found
+    return found
+
+
+def _shifted(vertices, a):
+    # vertices of a wheel at (a, 0): the same additions as pitch_polygon_vertices(centre=(a, 0))
+    out = vertices.copy()
+    out[..., 0] = a + vertices[..., 0]
+    return out
+
+
+_VERTEX_CACHE: dict = {}
+
+
+#: Largest phase grid x vertices handled at once (phases² (z1 + z2) values, 8 bytes each:
+#: 2e7 is 160 MB per array).
+MAX_PHASE_GRID = 20_000_000
+
+
+def _check_phases(phases, teeth_1: int, teeth_2: int) -> None:
+    """Refuse a phase count below 1, or one whose grid would not fit in memory."""
+    if int(phases) < 1:
+        raise InputError(f"phases must be a whole number >= 1, got {phases}")
+    largest = int(math.isqrt(MAX_PHASE_GRID // (teeth_1 + teeth_2)))
+    if int(phases) > largest:
+        raise InputError(f"phases must be a whole number in [1, {largest}] for {teeth_1} + {teeth_2} teeth "
+                         f"(the phase grid holds phases² (z1 + z2) values), got {phases}")
+
+
+@finite_guard
+def chain_length_polygon(
+    pitch: float,
+    teeth_1: int,
+    teeth_2: int,
+    centre_distance: float,
+    *,
+    bar_diameter: float | None = None,
+    phases: int = 12,
+) -> PolygonLength:
+    r"""Exact taut chain length on the pitch *polygons* of two wheels, over their phases.
+
+    .. math::
+        X(a, \varphi_1, \varphi_2) = \frac{1}{p}\,
+            \operatorname{perimeter}\bigl(\operatorname{hull}(P_1(\varphi_1)
+            \cup P_2(a, \varphi_2))\bigr)
+
+    Parameters
+    ----------
+    pitch : float
+        Chain pitch ``p`` (inner link length ``t``) [m].
+    teeth_1, teeth_2 : int
+        Teeth / pockets [-].
+    centre_distance : float
+        Centre distance ``a`` [m].
+    bar_diameter : float, optional
+        Bar diameter of a round link chain [m] (bi-regular polygons).
+    phases : int
+        Number of phases sampled per wheel over one tooth period ``2π/z`` (the grid
+        has ``phases²`` points).
+
+    Returns
+    -------
+    PolygonLength
+
+    Notes
+    -----
+    Model (chosen and documented here): the hinges seated on a wheel are the
+    vertices of its pitch polygon; a taut chain leaves the last seated hinge along the
+    common supporting line of the two polygons, so the taut chain is the boundary of
+    the convex hull of both vertex sets: polygon sides (one link each) on the wraps,
+    and two straight spans tangent to the *polygons* (not circles). Its length depends
+    on the phases ``φ1, φ2`` of the wheels (polygonal effect); the function samples
+    a grid of phases over one tooth period each and reports min, max and mean. The
+    span length is not forced to a whole number of pitches: a span that is not a
+    whole number of links is slightly slack. Exact special case: two equal wheels in
+    equal phase give ``X = z + 2a/p`` (the hull is the polygon swept along the centre
+    line); for many teeth ``X`` tends to :func:`chain_length_circles` (both tested).
+
+    References
+    ----------
+    Model of this package (docs/drive.md, "Layout"); polygon from Dolipiński et al., eq. (6).
+
+    Examples
+    --------
+    >>> r = chain_length_polygon(0.0254, 19, 19, 1.0, phases=4)
+    >>> round(r.links_min, 4), round(r.links_max, 4)
+    (97.7367, 97.7436)
+    """
+    p = float(check_positive("pitch", pitch, "m"))
+    z1 = int(check_teeth("teeth_1", teeth_1, minimum=2))
+    z2 = int(check_teeth("teeth_2", teeth_2, minimum=2))
+    a = float(check_positive("centre_distance", centre_distance, "m"))
+    _check_phases(phases, z1, z2)
+    ph1, ph2, X = _polygon_links(p, z1, z2, a, bar_diameter, int(phases))
+    circles = float(chain_length_circles(p, z1, z2, a, bar_diameter)) if a > abs(
+        float(pitch_radius(p, z2, bar_diameter)) - float(pitch_radius(p, z1, bar_diameter))
+    ) else float("nan")
+    approx = None if bar_diameter else float(chain_length_approx(p, z1, z2, a))
+    return PolygonLength(
+        links_min=float(X.min()), links_max=float(X.max()), links_mean=float(X.mean()),
+        links_circles=circles, links_approx=approx, phase_1=ph1, phase_2=ph2, links=X,
+    )
+
+
+@dataclass
+class PolygonCentreDistance(Result):
+    """Centre distance for a whole number of links on the pitch polygons.
+
+    Attributes
+    ----------
+    links : int
+        Chain length [pitches].
+    taut : float
+        Largest centre distance at which the chain fits at *every* sampled phase pair
+        (taut at its tightest phase) [m]: the recommended nominal centre distance.
+    loose : float
+        Centre distance at which the chain is taut only at its loosest phase [m];
+        beyond it the chain cannot be fitted. ``loose - taut`` is the polygonal play.
+    circles : float
+        Centre distance from the pitch-circle (belt) model [m].
+    approx : float or None
+        From :func:`centre_distance_approx` (roller chains) [m].
+    """
+
+    links: int
+    taut: float
+    loose: float
+    circles: float
+    approx: float | None
+
+
+def _solve_increasing(fun, target, lo, hi, what):
+    from ._roots import brentq
+
+    flo, fhi = fun(lo) - target, fun(hi) - target
+    k = 0
+    while fhi < 0:
+        hi *= 2.0
+        fhi = fun(hi) - target
+        k += 1
+        if k > 60:
+            raise ConvergenceError(f"could not bracket the {what}")
+    if flo > 0:
+        raise InfeasibleError(f"the chain is too short: {what} would be below {lo:g} m")
+    return brentq(lambda x: fun(x) - target, lo, hi, xtol=1e-12, rtol=1e-12)
+
+
+def _newton_fixed_slope(fun, target, a0, r1, r2, p, lo, hi):
+    # X(a) grows with slope 2 cos(beta)/p (the two spans); iterate with that slope and
+    # fall back to Brent's method if it does not settle
+    a = a0
+    for _ in range(30):
+        slope = 2.0 * np.sqrt(max(1.0 - ((r2 - r1) / a) ** 2, 1e-12)) / p
+        step = (fun(a) - target) / slope
+        a = a - step
+        if abs(step) < 1e-11 * max(a, 1.0):
+            return a
+    return _solve_increasing(fun, target, lo, hi, "centre distance")
+
+
+def _pair_links(p, z1, z2, a, d, f1, f2):
+    v1 = _phase_vertices(p, z1, (f1,), d)
+    v2 = _shifted(_phase_vertices(p, z2, (f2,), d), a)
+    return float(_hull_perimeters(v1, v2)[0, 0]) / p
+
+
+def _extreme_phase_root(pick, p, z1, z2, d, n, target, a0, r1, r2, lo, hi):
+    """Root of max (``pick=np.argmax``) or min over the phase grid of X(a) = target.
+
+    Newton steps run on the phase pair that governs at the current estimate (one hull
+    per step instead of n² of them); the whole grid is then evaluated at the root, and if
+    another pair governs there the search goes on from it. The result is the root of the
+    grid's max (min) itself, as when every step evaluated the whole grid.
+    """
+    a = a0
+    for _ in range(20):
+        ph1, ph2, grid = _polygon_links(p, z1, z2, a, d, n)
+        i, j = np.unravel_index(pick(grid), grid.shape)
+        if abs(grid[i, j] - target) <= 1e-9 and a != a0:
+            return a
+        f1, f2 = ph1[i], ph2[j]
+        a_new = _newton_fixed_slope(lambda x, f1=f1, f2=f2: _pair_links(p, z1, z2, x, d, f1, f2),
+                                    target, a, r1, r2, p, lo, hi)
+        if a_new == a:
+            return a
+        a = a_new
+    fun = (lambda x: _polygon_links(p, z1, z2, x, d, n)[2].max()) if pick is np.argmax else \
+          (lambda x: _polygon_links(p, z1, z2, x, d, n)[2].min())
+    return _newton_fixed_slope(fun, target, a, r1, r2, p, lo, hi)
+
+
+@finite_guard
+def centre_distance_polygon(
+    pitch: float,
+    teeth_1: int,
+    teeth_2: int,
+    links: int,
+    *,
+    bar_diameter: float | None = None,
+    phases: int = 12,
+) -> PolygonCentreDistance:
+    r"""Centre distance for a whole number of links, solving the polygon model.
+
+    .. math:: \max_{\varphi_1,\varphi_2} X(a_{taut}, \varphi_1, \varphi_2) = N,
+              \qquad \min_{\varphi_1,\varphi_2} X(a_{loose}, \varphi_1, \varphi_2) = N
+
+    Parameters
+    ----------
+    pitch : float
+        Chain pitch [m].
+    teeth_1, teeth_2 : int
+        Teeth / pockets [-].
+    links : int
+        Whole number of links ``N``; an odd number warns nothing but needs an offset
+        link (roller chains), see :func:`even_links`.
+    bar_diameter : float, optional
+        Bar diameter of a round link chain [m].
+    phases : int
+        Phases sampled per wheel (see :func:`chain_length_polygon`).
+
+    Returns
+    -------
+    PolygonCentreDistance
+
+    Raises
+    ------
+    InputError
+        ``links`` not a whole number > 0.
+    InfeasibleError
+        The chain is too short to wrap the two wheels.
+
+    Notes
+    -----
+    Solved by Newton steps with the span slope ``dX/da = 2 cos β / p`` started from
+    the pitch-circle solution (Brent's method as fallback); the taut length grows
+    monotonically with ``a``. See :func:`chain_length_polygon` for the model.
+
+    References
+    ----------
+    Model of this package (docs/drive.md, "Layout").
+
+    Examples
+    --------
+    >>> r = centre_distance_polygon(0.0254, 19, 19, 98, phases=2)
+    >>> round(r.taut, 4)
+    1.0033
+    """
+    p = float(check_positive("pitch", pitch, "m"))
+    z1 = int(check_teeth("teeth_1", teeth_1, minimum=2))
+    z2 = int(check_teeth("teeth_2", teeth_2, minimum=2))
+    links_array = as_float_array("links", links)
+    if links_array.ndim or links_array != np.round(links_array) or links_array <= 0:
+        raise InputError(f"links must be a whole number > 0, got {links!r}")
+    N = int(links_array)
+    _check_phases(phases, z1, z2)
+    n = int(phases)
+    r1 = float(pitch_radius(p, z1, bar_diameter))
+    r2 = float(pitch_radius(p, z2, bar_diameter))
+    lo = abs(r2 - r1) + 1e-6 * p
+    hi = max(N * p / 2.0, 2 * lo)
+
+    def xcirc(a):  # chain_length_circles(p, z1, z2, a, bar_diameter) on the checked inputs
+        return float(_belt_length(a, r1, r2) / p)
+
+    circ = _solve_increasing(xcirc, N, lo, hi, "centre distance")
+    taut = _extreme_phase_root(np.argmax, p, z1, z2, bar_diameter, n, N, circ, r1, r2, lo, hi)
+    loose = _extreme_phase_root(np.argmin, p, z1, z2, bar_diameter, n, N, taut, r1, r2, lo, hi)
+    approx = None
+    if not bar_diameter:
+        try:
+            approx = float(centre_distance_approx(p, z1, z2, N))
+        except InfeasibleError:
+            approx = None
+    return PolygonCentreDistance(links=N, taut=float(taut), loose=float(loose),
+                                 circles=float(circ), approx=approx)
+
+
+def even_links(links: ArrayLike) -> np.ndarray:
+    r"""Round a chain length up to the next even whole number of links.
+
+    .. math:: N = 2\lceil X/2 \rceil
+
+    An even number avoids the offset (cranked) link of a roller chain, which weakens
+    the chain (Ramsey Chain, "Chain length calculations").
+
+    Parameters
+    ----------
+    links : float or array_like
+        Chain length [pitches].
+
+    Returns
+    -------
+    ndarray of int
+
+    Examples
+    --------
+    >>> int(even_links(121.5)), int(even_links(122.0))
+    (122, 122)
+    """
+    X = check_positive("links", links)
+    return (2 * np.ceil(X / 2.0 - 1e-9)).astype(int)
+
+
+# --------------------------------------------------------------------------- many wheels
+
+
+@dataclass
+class WrapLayout(Result):
+    """Chain path around two or more wheels (pitch circles, exact tangents).
+
+    Attributes
+    ----------
+    centres : ndarray, shape (n, 2)
+        Wheel centres, in the order the chain passes them [m].
+    radii : ndarray, shape (n,)
+        Pitch radii [m].
+    sides : ndarray, shape (n,)
+        +1: the chain turns counter-clockwise around the wheel (wheel inside the
+        loop); -1: clockwise (idler on the back of the chain).
+    span_start, span_end : ndarray, shape (n, 2)
+        Tangent points of span ``i`` from wheel ``i`` to wheel ``i+1`` [m].
+    span_length : ndarray, shape (n,)
+        [m].
+    span_angle : ndarray, shape (n,)
+        Direction of travel of span ``i`` from the x axis [rad].
+    wrap_angle : ndarray, shape (n,)
+        Angle of wrap on each wheel [rad].
+    wrap_length : ndarray, shape (n,)
+        Arc length on each pitch circle [m].
+    length : float
+        Total chain length on the pitch circles [m].
+    """
+
+    centres: np.ndarray
+    radii: np.ndarray
+    sides: np.ndarray
+    span_start: np.ndarray
+    span_end: np.ndarray
+    span_length: np.ndarray
+    span_angle: np.ndarray
+    wrap_angle: np.ndarray
+    wrap_length: np.ndarray
+    length: float
+
+
+@finite_guard
+def wrap_layout(centres: ArrayLike, radii: ArrayLike, sides: ArrayLike | None = None) -> WrapLayout:
+    r"""Spans, wrap angles and length of a chain around wheels at given positions.
+
+    .. math::
+        \alpha_i = \delta_i - \arcsin\frac{\rho_{i+1} - \rho_i}{D_i},\qquad
+        \ell_i = \sqrt{D_i^2 - (\rho_{i+1} - \rho_i)^2},\qquad
+        L = \sum \ell_i + \sum R_i \theta_i
+
+    with ``ρ = s R`` the signed radius, ``D_i, δ_i`` length and angle of the line of
+    centres from wheel ``i`` to ``i+1``.
+
+    Parameters
+    ----------
+    centres : array_like, shape (n, 2)
+        Wheel centres in the order of chain travel, counter-clockwise around the
+        loop [m], ``n >= 2``.
+    radii : array_like, shape (n,)
+        Pitch radii [m] (> 0).
+    sides : array_like of {+1, -1}, optional
+        +1 for a wheel inside the loop (default), -1 for an idler pressing on the
+        outside of the chain.
+
+    Returns
+    -------
+    WrapLayout
+
+    Raises
+    ------
+    InputError
+        Shapes, radii <= 0, sides not ±1.
+    InfeasibleError
+        Two consecutive wheels overlap so that no common tangent exists.
+
+    Notes
+    -----
+    Derivation: a chain moving along the unit vector ``t`` that turns left around a
+    wheel has the centre at ``P + R n`` with ``n = (-t_y, t_x)``; the span from wheel
+    ``i`` to ``i+1`` satisfies ``c_{i+1} - c_i - (ρ_{i+1} - ρ_i) n = ℓ t``. Its
+    components along ``n`` and ``t`` give the formulas above. The wrap angle is the
+    turn of ``t`` between the incoming and outgoing span (mod 2π, left turns for
+    ``s = +1``, right turns for ``s = -1``); for a simple loop ``Σ s θ = 2π``.
+    The pitch circles stand for the polygons (belt model): the teeth in mesh follow
+    from :func:`teeth_in_mesh`.
+
+    References
+    ----------
+    Tangent lines between circles (the belt problem); two-wheel case: Shigley, 9th ed.,
+    eq. (17-1). Tested against the two-wheel formula and an equilateral three-wheel
+    loop ``L = 3s + 2πR``.
+
+    Examples
+    --------
+    >>> lay = wrap_layout([[0, 0], [1, 0], [0.5, 0.8660254037844386]], [0.1, 0.1, 0.1])
+    >>> round(lay.length, 6), round(float(lay.wrap_angle[0]), 6)
+    (3.628319, 2.094395)
+    """
+    c = as_float_array("centres", centres)
+    if c.ndim != 2 or c.shape[1] != 2 or c.shape[0] < 2:
+        raise InputError(f"centres must have shape (n, 2) with n >= 2, got shape {c.shape}")
+    n = c.shape[0]
+    r = check_positive("radii", radii, "m")
+    if r.shape != (n,):
+        raise InputError(f"radii must have shape ({n},) like centres, got {r.shape}")
+    s = np.ones(n) if sides is None else as_float_array("sides", sides)
+    if s.shape != (n,) or not np.all(np.isin(s, (-1.0, 1.0))):
+        raise InputError(f"sides must be +1 or -1 for each of the {n} wheels, got {sides!r}")
+    rho = s * r
+    d = np.roll(c, -1, axis=0) - c
+    D = np.hypot(d[:, 0], d[:, 1])
+    drho = np.roll(rho, -1) - rho
+    if np.any(D <= np.abs(drho)):
+        bad = int(np.argmax(D <= np.abs(drho)))
+        raise InfeasibleError(
+            f"wheels {bad} and {(bad + 1) % n} overlap so that the chain has no common "
+            f"tangent: centre distance {D[bad]:g} m must exceed |±R1 ∓ R2| = {abs(drho[bad]):g} m"
+        )
+    delta = np.arctan2(d[:, 1], d[:, 0])
+    alpha = delta - np.arcsin(drho / D)
+    ell = np.sqrt(D**2 - drho**2)
+    t = np.column_stack([np.cos(alpha), np.sin(alpha)])
+    nrm = np.column_stack([-t[:, 1], t[:, 0]])
+    start = c - rho[:, None] * nrm
+    end = np.roll(c, -1, axis=0) - np.roll(rho, -1)[:, None] * nrm
+    alpha_in = np.roll(alpha, 1)
+    turn = np.mod(s * (alpha - alpha_in), 2 * np.pi)
+    wrap = np.where(np.isclose(turn, 0.0, atol=1e-12), 0.0, turn)
+    total_turn = float(np.sum(s * wrap))
+    if not np.isclose(total_turn, 2 * np.pi, atol=1e-6):
+        raise InfeasibleError(
+            "the wheels do not form a simple counter-clockwise loop in the given order "
+            f"(total turning {total_turn:.4f} rad, expected 2π); list the wheels in the "
+            "order of chain travel, counter-clockwise, and mark back-side idlers with side -1"
+        )
+    arc = r * wrap
+    return WrapLayout(centres=c, radii=r, sides=s, span_start=start, span_end=end,
+                      span_length=ell, span_angle=alpha, wrap_angle=wrap, wrap_length=arc,
+                      length=float(ell.sum() + arc.sum()))
+
+
+def _loop_lengths(centres: np.ndarray, radii: np.ndarray, sides: np.ndarray) -> np.ndarray:
+    """:attr:`WrapLayout.length` for many layouts at once, ``-inf`` where there is none.
+
+    ``centres`` (m, n, 2) on checked ``radii`` and ``sides`` (n,): the operations of
+    :func:`wrap_layout` row by row (its ``isclose`` tests written out), without the
+    validation, for the root searches of :func:`tensioner_travel`.
+    """
+    rho = sides * radii
+    d = np.roll(centres, -1, axis=-2) - centres
+    D = np.hypot(d[..., 0], d[..., 1])
+    drho = np.roll(rho, -1) - rho
+    with np.errstate(invalid="ignore", divide="ignore"):
+        alpha = np.arctan2(d[..., 1], d[..., 0]) - np.arcsin(drho / D)
+        ell = np.sqrt(D**2 - drho**2)
+    turn = np.mod(sides * (alpha - np.roll(alpha, 1, axis=-1)), 2 * np.pi)
+    wrap = np.where(np.abs(turn) <= 1e-12, 0.0, turn)
+    total_turn = np.sum(sides * wrap, axis=-1)
+    ok = np.all(D > np.abs(drho), axis=-1) & (np.abs(total_turn - 2 * np.pi) <= 1e-6 + 1e-5 * 2 * np.pi)
+    length = np.sum(ell, axis=-1) + np.sum(radii * wrap, axis=-1)
+    return np.where(ok, length, -np.inf)
+
+
+@finite_guard
+def teeth_in_mesh(wrap_angle: ArrayLike, teeth: ArrayLike) -> np.ndarray:
+    r"""Number of teeth in mesh (hinges seated) for a wrap angle.
+
+    .. math:: z_m = \left\lfloor \frac{\theta z}{2\pi} \right\rfloor
+
+    Parameters
+    ----------
+    wrap_angle : float or array_like
+        Wrap angle ``θ`` [rad], ``0 <= θ <= 2π``.
+    teeth : int or array_like
+        Tooth count [-].
+
+    Returns
+    -------
+    ndarray of int
+        Whole teeth fully in the wrap (the load-carrying teeth); the fractional
+        value is ``θ z / 2π``.
+
+    References
+    ----------
+    ISO 10823:2004 recommends a wrap of at least 120° on the small sprocket.
+
+    Examples
+    --------
+    >>> int(teeth_in_mesh(np.pi, 19))
+    9
+    """
+    th = check_nonnegative("wrap_angle", wrap_angle, "rad")
+    if np.any(th > 2 * np.pi + 1e-12):
+        raise InputError(f"wrap_angle must lie in [0, 2π] rad, got {th}")
+    z = check_teeth("teeth", teeth, minimum=2)
+    return np.floor(th * z / (2 * np.pi) + 1e-9).astype(int)
+
+
+# --------------------------------------------------------------------------- sag
+
+
+def _catenary_parts(chord_length, inclination, tension, mass_per_length, gravity):
+    L = check_positive("chord_length", chord_length, "m")
+    g = as_float_array("inclination", inclination)
+    if np.any(np.abs(g) >= np.pi / 2):
+        raise InputError(f"inclination must lie in (-π/2, π/2) rad (not a vertical span), got {g}")
+    H = check_positive("tension", tension, "N")
+    q = check_positive("mass_per_length", mass_per_length, "kg/m")
+    gr = check_positive("gravity", gravity, "m/s^2")
+    span = L * np.cos(g)
+    rise = L * np.sin(g)
+    k = q * gr / H
+    return span, rise, k
+
+
+@finite_guard
+def catenary_sag(
+    chord_length: ArrayLike,
+    inclination: ArrayLike,
+    tension: ArrayLike,
+    mass_per_length: ArrayLike,
+    gravity: float = GRAVITY,
+) -> FloatOrArray:
+    r"""Sag of a chain span hanging as a catenary (largest vertical chord-to-chain distance).
+
+    .. math::
+        y = \frac{\cosh k(x - x_0) - \cosh k x_0}{k},\quad k = \frac{q g}{H},\quad
+        x_0 = \frac{\ell}{2} - \frac1k\operatorname{asinh}\frac{k h}{2\sinh(k\ell/2)},
+        \quad f = m x^* - y(x^*),\ \sinh k(x^* - x_0) = m = h/\ell
+
+    Parameters
+    ----------
+    chord_length : float or array_like
+        Distance between the span's end hinges [m].
+    inclination : float or array_like
+        Angle of the chord above the horizontal [rad], ``|γ| < π/2``.
+    tension : float or array_like
+        Horizontal component ``H`` of the chain tension [N] (constant along a
+        catenary; the tension at a point is ``H cosh``).
+    mass_per_length : float or array_like
+        Chain mass per length ``q`` [kg/m].
+    gravity : float
+        [m/s²].
+
+    Returns
+    -------
+    ndarray
+        Vertical sag ``f`` [m].
+
+    Notes
+    -----
+    Exact for an inextensible chain of uniform weight per *arc* length; ``ℓ = L cos γ``,
+    ``h = L sin γ``. For ``k ℓ → 0`` it tends to :func:`parabolic_sag` (tested).
+    Valid for spans that are not vertical.
+
+    References
+    ----------
+    Irvine, H. M., Cable Structures, MIT Press 1981, ch. 1 (inclined catenary).
+
+    Examples
+    --------
+    >>> round(float(catenary_sag(2.0, 0.0, 500.0, 2.6)) * 1e3, 3)
+    25.503
+    """
+    span, rise, k = _catenary_parts(chord_length, inclination, tension, mass_per_length, gravity)
+    return _catenary_sag(span, rise, k)
+
+
+def _catenary_sag(span, rise, k):
+    # the formula of catenary_sag on checked inputs (horizontal span, rise, k = q g / H)
+    x0 = span / 2 - np.arcsinh(k * rise / (2 * np.sinh(k * span / 2))) / k
+    m = rise / span
+    xs = x0 + np.arcsinh(m) / k
+    ys = (np.cosh(k * (xs - x0)) - np.cosh(k * x0)) / k
+    return m * xs - ys
+
+
+@finite_guard
+def parabolic_sag(
+    chord_length: ArrayLike,
+    inclination: ArrayLike,
+    tension: ArrayLike,
+    mass_per_length: ArrayLike,
+    gravity: float = GRAVITY,
+) -> FloatOrArray:
+    r"""Sag of a span by the parabolic approximation.
+
+    .. math:: f = \frac{q g \ell^2}{8 H \cos\gamma},\qquad \ell = L\cos\gamma
+
+    Parameters
+    ----------
+    chord_length : float or array_like
+        [m].
+    inclination : float or array_like
+        Chord angle above horizontal [rad].
+    tension : float or array_like
+        Horizontal tension ``H`` [N].
+    mass_per_length : float or array_like
+        [kg/m].
+    gravity : float
+        [m/s²].
+
+    Returns
+    -------
+    ndarray
+        Vertical sag at mid-span [m].
+
+    Notes
+    -----
+    Derivation: a taut chain lies close to its chord, so its weight per horizontal
+    length is ``q g / cos γ``; a load ``w`` uniform per horizontal length on a string
+    with horizontal tension ``H`` gives the parabola with mid-span sag ``w ℓ² / 8H``.
+    Within 0.2 % of :func:`catenary_sag` for ``f/ℓ < 0.005`` (tested).
+
+    References
+    ----------
+    Irvine, H. M., Cable Structures (1981), ch. 1 (inclined parabolic cable).
+
+    Examples
+    --------
+    >>> round(float(parabolic_sag(2.0, 0.0, 500.0, 2.6)) * 1e3, 3)
+    25.497
+    """
+    span, _, k = _catenary_parts(chord_length, inclination, tension, mass_per_length, gravity)
+    return k * span**2 / (8.0 * np.cos(np.asarray(inclination, dtype=float)))
+
+
+@finite_guard
+def tension_for_sag(
+    chord_length: ArrayLike,
+    inclination: ArrayLike,
+    sag: ArrayLike,
+    mass_per_length: ArrayLike,
+    gravity: float = GRAVITY,
+) -> FloatOrArray:
+    r"""Horizontal tension that gives a catenary span the stated sag (inverse).
+
+    .. math:: f(H) = f_{given}\ \text{solved for}\ H
+
+    Parameters
+    ----------
+    chord_length : float or array_like
+        [m].
+    inclination : float or array_like
+        [rad].
+    sag : float or array_like
+        Vertical sag ``f > 0`` [m].
+    mass_per_length : float or array_like
+        [kg/m].
+    gravity : float
+        [m/s²].
+
+    Returns
+    -------
+    ndarray
+        Horizontal tension ``H`` [N].
+
+    Notes
+    -----
+    The sag decreases monotonically with ``H``; vectorised bisection on ``log H``
+    (100 halvings of 30 decades, relative error < 1e-12), started from the parabolic
+    value. A catenary can take any sag ``f > 0``.
+
+    References
+    ----------
+    Inverse of :func:`catenary_sag`.
+
+    Examples
+    --------
+    >>> round(float(tension_for_sag(2.0, 0.0, 0.025502816, 2.6)), 3)
+    500.0
+    """
+    f = check_positive("sag", sag, "m")
+    span, _, k1 = _catenary_parts(chord_length, inclination, 1.0, mass_per_length, gravity)
+    w = k1  # q g (k for H = 1)
+    H0 = w * span**2 / (8.0 * f)
+    lo = np.log(H0) - 15.0 * np.log(10.0)
+    hi = np.log(H0) + 15.0 * np.log(10.0)
+    lo, hi = np.broadcast_arrays(lo, hi)
+    lo, hi = lo.astype(float).copy(), hi.astype(float).copy()
+    span, rise, w = np.broadcast_arrays(span, *_catenary_parts(chord_length, inclination, 1.0, mass_per_length,
+                                                                gravity)[1:])
+    for _ in range(100):
+        mid = 0.5 * (lo + hi)
+        too_slack = _catenary_sag(span, rise, w / np.exp(mid)) > f
+        lo = np.where(too_slack, mid, lo)
+        hi = np.where(too_slack, hi, mid)
+    return np.exp(0.5 * (lo + hi))
+
+
+# --------------------------------------------------------------------------- wear take-up
+
+
+@finite_guard
+def centre_distance_travel(
+    pitch: float,
+    teeth_1: int,
+    teeth_2: int,
+    centre_distance: float,
+    elongation: ArrayLike,
+    *,
+    bar_diameter: float | None = None,
+) -> np.ndarray:
+    r"""Increase of centre distance that takes up a chain elongation (two wheels).
+
+    .. math:: L_c(a + \Delta a) = (1 + e)\, L_c(a)
+
+    Parameters
+    ----------
+    pitch : float
+        [m].
+    teeth_1, teeth_2 : int
+        [-].
+    centre_distance : float
+        Initial centre distance [m] (chain taut on the pitch circles).
+    elongation : float or array_like
+        Relative elongation ``e`` of the chain (0.03 for 3 %) [-].
+    bar_diameter : float, optional
+        [m].
+
+    Returns
+    -------
+    ndarray
+        ``Δa`` [m], same shape as ``elongation``; about ``e L / 2``.
+
+    Notes
+    -----
+    Uses the pitch-circle model with the worn pitch ``p(1+e)``: the worn chain rides
+    higher on the teeth, which this neglects (conservative: it overstates travel by
+    the radius growth, ``≈ e R`` per wheel).
+
+    References
+    ----------
+    Belt model of :func:`chain_length_circles`.
+
+    Examples
+    --------
+    >>> round(float(centre_distance_travel(0.0254, 19, 57, 1.05, 0.03)), 4)
+    0.0468
+    """
+    from ._roots import brentq
+
+    e = check_nonnegative("elongation", elongation)
+    a0 = float(check_positive("centre_distance", centre_distance, "m"))
+    p = float(pitch)
+    r1 = float(pitch_radius(p, teeth_1, bar_diameter))
+    r2 = float(pitch_radius(p, teeth_2, bar_diameter))
+    L0 = float(_belt_length(a0, r1, r2))
+    out = np.empty(e.shape).ravel()
+    for i, ei in enumerate(e.ravel()):
+        if ei == 0:
+            out[i] = 0.0
+            continue
+        target = L0 * (1 + ei)
+        out[i] = brentq(lambda a, t=target: _belt_length(a, r1, r2) - t, a0, a0 + target) - a0
+    return out.reshape(e.shape)
+
+
+@finite_guard
+def tensioner_travel(
+    centres: ArrayLike,
+    radii: ArrayLike,
+    sides: ArrayLike | None,
+    index: int,
+    direction: ArrayLike,
+    elongation: ArrayLike,
+    *,
+    chain_length: float | None = None,
+    extra_length: float = 0.0,
+) -> np.ndarray:
+    r"""Travel of a tensioner wheel that takes up a chain elongation (any layout).
+
+    .. math:: L(c_k + s\,\mathbf{u}) = L(c_k) + \Delta L_0 + e\,L_{chain}
+
+    Parameters
+    ----------
+    centres, radii, sides
+        The layout as for :func:`wrap_layout`.
+    index : int
+        Index of the tensioner wheel (it moves; the others stay).
+    direction : array_like, shape (2,)
+        Direction of the tensioner's travel (normalised here); it must lengthen the
+        chain path (e.g. pushing into the slack span).
+    elongation : float or array_like
+        Relative elongation ``e`` [-] (0.01, 0.02, 0.03).
+    chain_length : float, optional
+        Length of the new chain ``L_chain`` [m]; default the path length ``L(c_k)``.
+    extra_length : float
+        Slack ``ΔL_0 >= 0`` of the new chain over the path at the given position [m]
+        (a chain rounded up to whole links), taken up first.
+
+    Returns
+    -------
+    ndarray
+        Travel ``s`` [m] from the given position for each elongation.
+
+    Raises
+    ------
+    InfeasibleError
+        If moving along ``direction`` does not lengthen the path enough (the
+        tensioner runs out of the loop geometry).
+
+    Notes
+    -----
+    Pitch-circle model (:func:`wrap_layout`); root by Brent's method.
+
+    References
+    ----------
+    Layout model of this package (docs/drive.md).
+
+    Examples
+    --------
+    >>> c = [[0, 0], [1, -0.2], [2, 0]]  # back-side idler under the lower span
+    >>> s = tensioner_travel(c, [0.2, 0.05, 0.2], [1, -1, 1], 1, [0, 1], [0.01, 0.03])
+    >>> np.round(s, 4)
+    array([0.184 , 0.3517])
+    """
+    from ._roots import brentq
+
+    c = as_float_array("centres", centres)
+    lay0 = wrap_layout(c, radii, sides)
+    u = as_float_array("direction", direction)
+    if u.shape != (2,) or not np.hypot(*u) > 0:
+        raise InputError(f"direction must be a non-zero 2-vector, got {direction!r}")
+    u = u / np.hypot(*u)
+    k = int(index)
+    if not 0 <= k < c.shape[0]:
+        raise InputError(f"index must lie in [0, {c.shape[0] - 1}], got {index}")
+    e = check_nonnegative("elongation", elongation)
+    extra = float(check_nonnegative("extra_length", extra_length, "m"))
+    Lch = lay0.length if chain_length is None else float(check_positive("chain_length", chain_length, "m"))
+
+    r, sd = lay0.radii, lay0.sides
+
+    def positions(s):  # centres with the tensioner moved by s (array of travels)
+        cc = np.broadcast_to(c, np.shape(s) + c.shape).copy()
+        cc[..., k, :] = c[k] + np.asarray(s)[..., None] * u
+        return cc
+
+    def length(s):
+        return float(_loop_lengths(positions(np.array([s])), r, sd)[0])
+
+    out = np.empty(e.size)
+    smax = float(np.max(np.hypot(*(c - c[k]).T))) + float(np.max(lay0.radii)) * 4
+    grid = np.linspace(0, smax, 120)
+    vals = _loop_lengths(positions(grid), r, sd)  # bracket the roots once for all e
+    for i, ei in enumerate(e.ravel()):
+        target = lay0.length + extra + ei * Lch
+        if target <= lay0.length:
+            out[i] = 0.0
+            continue
+        idx = np.nonzero(vals >= target)[0]
+        if idx.size == 0:
+            raise InfeasibleError(
+                f"the tensioner cannot take up an elongation of {ei:g} (plus {extra:g} m of "
+                f"initial slack): moving it along "
+                f"{u.tolist()} lengthens the chain path by at most "
+                f"{(np.max(vals[np.isfinite(vals)]) / lay0.length - 1):.4g}"
+            )
+        j = int(idx[0])
+        out[i] = brentq(lambda s, t=target: length(s) - t, grid[j - 1], grid[j])
+    return out.reshape(e.shape)

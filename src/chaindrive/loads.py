@@ -1,0 +1,434 @@
+r"""Chain loads: tight- and slack-side tension, centrifugal tension, dynamic load,
+shaft loads, static safety, service factors.
+
+All functions take and return SI units (N, N·m, W, m, rad/s, kg).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from numpy.typing import ArrayLike
+
+from ._registry import Registry
+from ._typing import FloatOrArray
+from ._validation import as_float_array, check_nonnegative, check_positive, check_teeth
+from .errors import InputError
+
+__all__ = [
+    "torque_from_power",
+    "power_from_torque",
+    "chain_speed",
+    "tight_side_tension",
+    "centrifugal_tension",
+    "free_entry_acceleration_peak",
+    "dynamic_tension",
+    "dynamic_factor",
+    "shaft_load",
+    "static_safety_factor",
+    "service_factor",
+    "SERVICE_FACTORS",
+]
+
+
+def torque_from_power(power: ArrayLike, angular_velocity: ArrayLike) -> FloatOrArray:
+    r"""Torque from power and speed, ``T = P / ω``.
+
+    .. math:: T = \frac{P}{\omega}
+
+    Parameters
+    ----------
+    power : float or array_like
+        Power ``P >= 0`` [W].
+    angular_velocity : float or array_like
+        Shaft speed ``ω > 0`` [rad/s].
+
+    Returns
+    -------
+    ndarray
+        Torque [N·m].
+
+    References
+    ----------
+    Definition of mechanical power of a rotating shaft.
+
+    Examples
+    --------
+    >>> round(float(torque_from_power(15e3, 960 * 2 * np.pi / 60)), 2)
+    149.21
+    """
+    P = check_nonnegative("power", power, "W")
+    w = check_positive("angular_velocity", angular_velocity, "rad/s")
+    return P / w
+
+
+def power_from_torque(torque: ArrayLike, angular_velocity: ArrayLike) -> FloatOrArray:
+    r"""Power from torque and speed, ``P = T ω``.
+
+    .. math:: P = T\,\omega
+
+    Parameters
+    ----------
+    torque : float or array_like
+        [N·m], ``>= 0``.
+    angular_velocity : float or array_like
+        [rad/s], ``> 0``.
+
+    Returns
+    -------
+    ndarray
+        [W].
+
+    Examples
+    --------
+    >>> float(power_from_torque(100.0, 10.0))
+    1000.0
+    """
+    T = check_nonnegative("torque", torque, "N*m")
+    w = check_positive("angular_velocity", angular_velocity, "rad/s")
+    return T * w
+
+
+def chain_speed(pitch: ArrayLike, teeth: ArrayLike, angular_velocity: ArrayLike) -> FloatOrArray:
+    r"""Mean chain speed, one pitch per tooth passing.
+
+    .. math:: v = \frac{z\,p\,\omega}{2\pi}
+
+    Parameters
+    ----------
+    pitch : float or array_like
+        Chain pitch [m] (inner link length ``t``; a pocket wheel with ``z`` pockets
+        passes ``2z`` links of mean length ``t`` per turn, so pass ``teeth = 2z``).
+    teeth : int or array_like
+        Teeth of the wheel turning at ``ω`` (hinges per turn) [-].
+    angular_velocity : float or array_like
+        [rad/s].
+
+    Returns
+    -------
+    ndarray
+        [m/s].
+
+    Notes
+    -----
+    The mean over a tooth period; the instantaneous speed varies by the polygonal
+    effect (Dolipiński et al., eqs 1–13; :mod:`chaindrive.kinematics`).
+
+    References
+    ----------
+    ISO 10823:2004 (chain speed); Shigley, 9th ed., eq. (17-29) ``V = N p n``.
+
+    Examples
+    --------
+    >>> round(float(chain_speed(0.0254, 19, 960 * 2 * np.pi / 60)), 4)
+    7.7216
+    """
+    p = check_positive("pitch", pitch, "m")
+    z = check_teeth("teeth", teeth, minimum=2)
+    w = check_positive("angular_velocity", angular_velocity, "rad/s")
+    return z * p * w / (2.0 * np.pi)
+
+
+def tight_side_tension(torque: ArrayLike, pitch_radius: ArrayLike) -> FloatOrArray:
+    r"""Effective pull of the chain from the driving torque, ``F = T / R``.
+
+    .. math:: F_t = \frac{T}{R}
+
+    Parameters
+    ----------
+    torque : float or array_like
+        Torque on the driving wheel [N·m], ``>= 0``.
+    pitch_radius : float or array_like
+        Pitch radius of that wheel [m], ``> 0``.
+
+    Returns
+    -------
+    ndarray
+        Effective (working) pull [N]; the tight-side tension is this plus the
+        slack-side and centrifugal tensions.
+
+    Notes
+    -----
+    With the pitch radius (not the instantaneous polygonal lever ``R cos φ``) this is
+    the mean pull; the lever varies within ``R cos(π/z) … R``.
+
+    References
+    ----------
+    Shigley, 9th ed., §17-5; ISO 10823:2004.
+
+    Examples
+    --------
+    >>> round(float(tight_side_tension(149.21, 0.077159)), 1)
+    1933.8
+    """
+    T = check_nonnegative("torque", torque, "N*m")
+    R = check_positive("pitch_radius", pitch_radius, "m")
+    return T / R
+
+
+def centrifugal_tension(mass_per_length: ArrayLike, chain_speed: ArrayLike) -> FloatOrArray:
+    r"""Centrifugal tension of a chain running round a wheel.
+
+    .. math:: F_c = q\,v^2
+
+    Parameters
+    ----------
+    mass_per_length : float or array_like
+        [kg/m], ``> 0``.
+    chain_speed : float or array_like
+        [m/s], ``>= 0``.
+
+    Returns
+    -------
+    ndarray
+        [N]; it acts along the whole chain and is not carried to the shafts.
+
+    Notes
+    -----
+    Derivation: an arc ``R dθ`` of mass ``q R dθ`` needs the radial force
+    ``q R dθ v²/R`` which the tension supplies as ``F dθ``, so ``F = q v²``
+    independent of ``R``.
+
+    References
+    ----------
+    ISO 10823:2004 (centrifugal force ``F_c = q v²``); Shigley, 9th ed., eq. (17-8)
+    for belts.
+
+    Examples
+    --------
+    >>> round(float(centrifugal_tension(2.6, 7.72)), 1)
+    155.0
+    """
+    q = check_positive("mass_per_length", mass_per_length, "kg/m")
+    v = check_nonnegative("chain_speed", chain_speed, "m/s")
+    return q * v**2
+
+
+def free_entry_acceleration_peak(angular_velocity: ArrayLike, pitch_radius: ArrayLike, half_angle: ArrayLike) -> FloatOrArray:
+    r"""Peak longitudinal chain acceleration of free (unguided) entry on a polygon.
+
+    .. math:: a_{max} = \omega^2 R \sin\frac{\delta}{2}
+
+    Parameters
+    ----------
+    angular_velocity : float or array_like
+        Wheel speed ``ω`` [rad/s].
+    pitch_radius : float or array_like
+        Pitch radius ``R`` [m].
+    half_angle : float or array_like
+        Half the central angle ``δ/2`` of the link entering [rad]: ``π/z`` for a
+        roller chain; ``δ1/2`` of the horizontal link of a round link chain.
+
+    Returns
+    -------
+    ndarray
+        [m/s²].
+
+    Notes
+    -----
+    Derivation: the chain moves with the hinge that has just seated; its speed is
+    ``v = ωR cos φ`` for ``φ ∈ [-δ/2, δ/2]``, so ``dv/dt = -ω² R sin φ`` with peak
+    ``ω² R sin(δ/2)`` at the ends of the period (``= ω² p/2`` for a roller chain).
+    Checked by finite differences (tests). Guided entry: use
+    :func:`chaindrive.kinematics.chain_entry`.
+
+    References
+    ----------
+    Dolipiński et al., eqs (1)–(13) (free entry).
+
+    Examples
+    --------
+    >>> round(float(free_entry_acceleration_peak(100.0, 0.077159, np.pi / 19)), 1)
+    127.0
+    """
+    w = check_positive("angular_velocity", angular_velocity, "rad/s")
+    R = check_positive("pitch_radius", pitch_radius, "m")
+    h = check_positive("half_angle", half_angle, "rad")
+    if np.any(h > np.pi / 2):
+        raise InputError(f"half_angle must lie in (0, π/2] rad, got {h}")
+    return w**2 * R * np.sin(h)
+
+
+def dynamic_tension(moving_mass: ArrayLike, acceleration: ArrayLike) -> FloatOrArray:
+    r"""Inertia force of the moving chain (and masses moving with it).
+
+    .. math:: F_d = m\,a_{max}
+
+    Parameters
+    ----------
+    moving_mass : float or array_like
+        Mass accelerated by the polygonal action [kg] (the chain ``q L``, plus the
+        load reduced to the chain where it moves with it).
+    acceleration : float or array_like
+        Peak acceleration [m/s²] (:func:`free_entry_acceleration_peak` or the
+        kinematics module).
+
+    Returns
+    -------
+    ndarray
+        [N].
+
+    References
+    ----------
+    Dolipiński et al. (the acceleration); Newton's second law.
+
+    Examples
+    --------
+    >>> float(dynamic_tension(10.0, 2.0))
+    20.0
+    """
+    m = check_nonnegative("moving_mass", moving_mass, "kg")
+    a = check_nonnegative("acceleration", acceleration, "m/s^2")
+    return m * a
+
+
+def dynamic_factor(tension: ArrayLike, dynamic_tension: ArrayLike) -> FloatOrArray:
+    r"""Dynamic factor ``K_d = (F + F_d) / F``.
+
+    .. math:: K_d = 1 + \frac{F_d}{F}
+
+    Parameters
+    ----------
+    tension : float or array_like
+        Static tight-side tension ``F > 0`` [N].
+    dynamic_tension : float or array_like
+        Inertia force ``F_d >= 0`` [N].
+
+    Returns
+    -------
+    ndarray
+        [-], ``>= 1``.
+
+    Examples
+    --------
+    >>> float(dynamic_factor(1000.0, 250.0))
+    1.25
+    """
+    F = check_positive("tension", tension, "N")
+    Fd = check_nonnegative("dynamic_tension", dynamic_tension, "N")
+    return 1.0 + Fd / F
+
+
+def shaft_load(tensions: ArrayLike, directions: ArrayLike) -> tuple[FloatOrArray, FloatOrArray]:
+    r"""Load on a shaft: vector sum of the span tensions acting on its wheel.
+
+    .. math:: \mathbf{F} = \sum_i F_i\,(\cos\alpha_i, \sin\alpha_i)
+
+    Parameters
+    ----------
+    tensions : array_like, shape (..., k)
+        Span tensions pulling on the wheel [N], ``>= 0``.
+    directions : array_like, shape (..., k)
+        Direction of each pull *from the wheel along the span* [rad].
+
+    Returns
+    -------
+    magnitude : ndarray, shape (...)
+        [N].
+    angle : ndarray, shape (...)
+        Direction of the resultant [rad].
+
+    Notes
+    -----
+    For a two-wheel drive with span angle ``β`` the two spans pull at ``±β``-ish
+    directions; the centrifugal tension does not load the shaft (it is balanced
+    inside the wrapped chain) and must be left out of ``tensions``.
+
+    References
+    ----------
+    Statics; ISO 10823:2004 (shaft load ``≈ F_t``…``1.15 F_t``).
+
+    Examples
+    --------
+    >>> m, a = shaft_load([1000.0, 100.0], [0.0, 0.0])
+    >>> float(m)
+    1100.0
+    """
+    F = check_nonnegative("tensions", tensions, "N")
+    a = as_float_array("directions", directions)
+    fx = np.sum(F * np.cos(a), axis=-1)
+    fy = np.sum(F * np.sin(a), axis=-1)
+    return np.hypot(fx, fy), np.arctan2(fy, fx)
+
+
+def static_safety_factor(breaking_force: ArrayLike, tension: ArrayLike) -> FloatOrArray:
+    r"""Static safety factor against the chain's breaking force.
+
+    .. math:: S = \frac{F_B}{F_{max}}
+
+    Parameters
+    ----------
+    breaking_force : float or array_like
+        Minimum breaking force of the chain (all strands) [N].
+    tension : float or array_like
+        Largest tension in the chain (tight side + centrifugal + dynamic) [N].
+
+    Returns
+    -------
+    ndarray
+        [-].
+
+    Notes
+    -----
+    ISO 10823 and chain makers ask for ``S >= 7…8`` in power drives; Diamond Chain
+    advises that the working load never exceed 1/6 of the ultimate strength.
+
+    References
+    ----------
+    ISO 606:2015 (minimum tensile strength); Diamond Chain, Technical Engineering
+    Guide (working load <= 1/6 MUTS).
+
+    Examples
+    --------
+    >>> float(static_safety_factor(60000.0, 5000.0))
+    12.0
+    """
+    Fb = check_positive("breaking_force", breaking_force, "N")
+    F = check_positive("tension", tension, "N")
+    return Fb / F
+
+
+#: Service factors K_s (ANSI/ACA, as tabulated in Shigley's Mechanical Engineering
+#: Design, 9th ed., Table 17-15): rows load character, columns driver type.
+SERVICE_FACTORS = Registry("load character")
+SERVICE_FACTORS.add("smooth", {"ic_hydraulic": 1.0, "electric_motor": 1.0, "ic_mechanical": 1.2})
+SERVICE_FACTORS.add("moderate", {"ic_hydraulic": 1.2, "electric_motor": 1.3, "ic_mechanical": 1.4})
+SERVICE_FACTORS.add("heavy", {"ic_hydraulic": 1.4, "electric_motor": 1.5, "ic_mechanical": 1.7})
+
+
+def service_factor(load: str = "smooth", driver: str = "electric_motor") -> float:
+    r"""Service (shock) factor ``K_s`` for a load character and a driver.
+
+    .. math:: P_{design} = K_s\,P
+
+    Parameters
+    ----------
+    load : {"smooth", "moderate", "heavy"}
+        Character of the driven load (uniform; moderate shock; heavy shock).
+    driver : {"ic_hydraulic", "electric_motor", "ic_mechanical"}
+        Internal-combustion engine with hydraulic drive; electric motor or turbine;
+        internal-combustion engine with mechanical drive.
+
+    Returns
+    -------
+    float
+        [-].
+
+    Raises
+    ------
+    UnknownNameError
+        Unknown load character or driver (lists the valid ones).
+
+    References
+    ----------
+    American Chain Association; Shigley, 9th ed., Table 17-15.
+
+    Examples
+    --------
+    >>> service_factor("moderate", "electric_motor")
+    1.3
+    """
+    row = SERVICE_FACTORS.get(load)
+    drivers = Registry("driver")
+    for k, v in row.items():
+        drivers.add(k, v)
+    return float(drivers.get(driver))
