@@ -1,4 +1,20 @@
-"""Base class for result objects: named arrays, ``to_dict()`` and ``to_json()`` (internal)."""
+"""Base class for result objects: named arrays, units per field, ``to_dict()`` and ``to_json()``.
+
+Every numeric field of a result class declares its SI unit once, where the field is
+defined, with :func:`quantity`::
+
+    @dataclass(frozen=True)
+    class SpanTension(Result):
+        tension: float = quantity("N")                  # shown in kN (the default for N)
+        sag: float | None = quantity("m", display="mm", default=None)
+        links: int = quantity("1")                      # a count: dimensionless
+        note: str = ""                                  # text: no unit
+
+:meth:`Result.unit_of` and :meth:`Result.display_unit_of` read them; the report, the
+command line, the web page and the study summaries show every number through them
+(:mod:`chaindrive.workflows.display` converts SI to the display unit). A field holding
+another result (or a tuple of them) needs no unit: its own fields carry theirs.
+"""
 
 from __future__ import annotations
 
@@ -8,7 +24,44 @@ from typing import Any
 
 import numpy as np
 
-__all__ = ["Result", "jsonable"]
+__all__ = ["Result", "jsonable", "quantity", "DIMENSIONLESS"]
+
+#: The unit of a ratio, a count, a factor or any pure number.
+DIMENSIONLESS = "1"
+
+_UNIT_KEY = "unit"
+_DISPLAY_KEY = "display"
+
+
+def quantity(unit: str, *, display: str | None = None, default: Any = dataclasses.MISSING,
+             default_factory: Any = dataclasses.MISSING, **kwargs: Any) -> Any:
+    """A dataclass field that carries its SI ``unit`` (and optionally its ``display`` unit).
+
+    Parameters
+    ----------
+    unit : str
+        The SI unit of the value held (``"N"``, ``"m"``, ``"rad/s"``, ``"Pa"``, ``"W"``,
+        ``"kg/m"``, ...) or :data:`DIMENSIONLESS` (``"1"``) for a pure number.
+    display : str, optional
+        The unit a presenter shows it in; by default the one of
+        :data:`chaindrive.workflows.display.DISPLAY` for ``unit`` (kN for N, mm for m ...).
+    default, default_factory, **kwargs
+        As for :func:`dataclasses.field`.
+
+    Examples
+    --------
+    >>> from dataclasses import dataclass
+    >>> @dataclass(frozen=True)
+    ... class Toy(Result):
+    ...     force: float = quantity("N")
+    >>> Toy(5.0).unit_of("force"), Toy.display_unit_of("force")
+    ('N', None)
+    """
+    metadata = dict(kwargs.pop("metadata", None) or {})
+    metadata[_UNIT_KEY] = unit
+    if display is not None:
+        metadata[_DISPLAY_KEY] = display
+    return dataclasses.field(default=default, default_factory=default_factory, metadata=metadata, **kwargs)
 
 
 def jsonable(value: Any) -> Any:
@@ -34,7 +87,8 @@ def jsonable(value: Any) -> Any:
 
 
 class Result:
-    """Mixin for result dataclasses: ``to_dict()`` and ``to_json()`` in SI units."""
+    """Mixin for result dataclasses: ``to_dict()`` and ``to_json()`` in SI units, and the
+    unit of every numeric field (:func:`quantity`)."""
 
     def to_dict(self) -> dict[str, Any]:
         if not dataclasses.is_dataclass(self):  # a programming error: Result is a mixin of dataclasses
@@ -43,3 +97,29 @@ class Result:
 
     def to_json(self, **kwargs: Any) -> str:
         return json.dumps(self.to_dict(), **kwargs)
+
+    @classmethod
+    def _field(cls, name: str) -> dataclasses.Field[Any]:
+        if not dataclasses.is_dataclass(cls):
+            raise TypeError(f"{cls.__name__} must be a dataclass to inherit Result")
+        for f in dataclasses.fields(cls):
+            if f.name == name:
+                return f
+        raise KeyError(f"{cls.__name__} has no field {name!r}")
+
+    @classmethod
+    def unit_of(cls, name: str) -> str | None:
+        """The SI unit declared for field ``name`` (``None``: text, a flag or a nested result)."""
+        return cls._field(name).metadata.get(_UNIT_KEY)
+
+    @classmethod
+    def display_unit_of(cls, name: str) -> str | None:
+        """The display unit declared for field ``name``, or ``None`` for the default of its SI unit."""
+        return cls._field(name).metadata.get(_DISPLAY_KEY)
+
+    @classmethod
+    def field_units(cls) -> dict[str, str]:
+        """``{field: SI unit}`` of every field that declares one."""
+        if not dataclasses.is_dataclass(cls):
+            raise TypeError(f"{cls.__name__} must be a dataclass to inherit Result")
+        return {f.name: f.metadata[_UNIT_KEY] for f in dataclasses.fields(cls) if _UNIT_KEY in f.metadata}
