@@ -20,10 +20,10 @@ Examples
 
 from typing import Any
 
-from .model import ContactSpec, Drive, Guide, Load, Tensioner, TrackSpec, Wheel
+from .model import ContactSpec, Conveyor, Drive, Guide, Load, Tensioner, TrackSpec, Wheel
 
 __all__ = [
-    "Drive", "Wheel", "Tensioner", "Guide", "Load", "ContactSpec", "TrackSpec",
+    "Drive", "Wheel", "Tensioner", "Guide", "Load", "ContactSpec", "TrackSpec", "Conveyor",
     "load_project", "Project",
 ]
 

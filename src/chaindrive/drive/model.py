@@ -35,7 +35,7 @@ if TYPE_CHECKING:
     from ..chains import Chain
 
 __all__ = ["WHEEL_KINDS", "sides_per_turn", "Wheel", "Tensioner", "Guide", "Load", "ContactSpec", "TrackSpec",
-           "Drive"]
+           "Conveyor", "RETURN_STRANDS", "Drive"]
 
 WHEEL_KINDS = ("sprocket", "pocket_wheel", "track_wheel", "idler")
 TENSIONER_KINDS = ("spring", "weight", "screw", "hydraulic")
@@ -309,6 +309,113 @@ class TrackSpec:
     allowable_contact: float | None = None
 
 
+#: How the return strand of a conveyor runs: on the bottom pans or hanging free.
+RETURN_STRANDS = ("supported", "free")
+
+
+@dataclass(frozen=True)
+class Conveyor:
+    """A scraper (drag) chain conveyor: the pans, the conveyed material, the drives.
+
+    The carrying strand is the span arriving at the driving wheel (the head); it lies
+    on the pans with the material scraped along them. The tail is the wheel it comes
+    from. The other spans are the return strand: on the bottom pans
+    (``return_strand = "supported"``: every return span longer than a quarter of the
+    carrying strand; the short spans round a tensioner hang free) or hanging free.
+
+    Parameters
+    ----------
+    chain_friction : float
+        Friction coefficient of the chain on the pans ``μ`` (0 … 1.5).
+    material_friction : float
+        Friction coefficient of the material on the pans ``μ_m`` (0 … 1.5).
+    material_load : float, optional
+        Material per metre on the carrying strand ``q_m`` [kg/m]; or give ``capacity``.
+    capacity : float, optional
+        Mass flow [kg/s] (``q_m = Q / v``).
+    inclination : float
+        Inclination of the conveyor [rad], positive when the head is higher
+        (conveying uphill), ``|α| <= 45°``.
+    return_strand : {"supported", "free"}
+    return_friction : float, optional
+        ``μ`` of the return strand on the bottom pans; default ``chain_friction``.
+    head_share : float
+        Share of the drive force taken by the head drive, ``0 < share <= 1``; below 1
+        the tail wheel drives too and takes the rest.
+    minimum_tension : float
+        Smallest tension wanted at every sprocket exit [N] (>= 0).
+    efficiency : float
+        Efficiency of each drive between motor and sprocket, ``0 < η <= 1``.
+    """
+
+    chain_friction: float = 0.4
+    material_friction: float = 0.6
+    material_load: float | None = None
+    capacity: float | None = None
+    inclination: float = 0.0
+    return_strand: str = "supported"
+    return_friction: float | None = None
+    head_share: float = 1.0
+    minimum_tension: float = 2000.0
+    efficiency: float = 1.0
+
+    def __post_init__(self) -> None:
+        for name in ("chain_friction", "material_friction"):
+            x = _finite(getattr(self, name), f"conveyor.{name}", nonnegative=True)
+            if x > 1.5:
+                raise InputError(f"conveyor.{name} must lie in [0, 1.5], got {x:g}", field=f"conveyor.{name}")
+            object.__setattr__(self, name, x)
+        if self.return_friction is not None:
+            x = _finite(self.return_friction, "conveyor.return_friction", nonnegative=True)
+            if x > 1.5:
+                raise InputError(f"conveyor.return_friction must lie in [0, 1.5], got {x:g}",
+                                 field="conveyor.return_friction")
+            object.__setattr__(self, "return_friction", x)
+        if self.material_load is not None and self.capacity is not None:
+            raise InputError("conveyor: give material_load or capacity, not both", field="conveyor.capacity")
+        for name in ("material_load", "capacity"):
+            if getattr(self, name) is not None:
+                object.__setattr__(self, name, _finite(getattr(self, name), f"conveyor.{name}", nonnegative=True))
+        a = _finite(self.inclination, "conveyor.inclination")
+        if abs(a) > math.pi / 4:
+            raise InputError(f"conveyor.inclination must lie in [-45°, 45°], got {math.degrees(a):.4g}°",
+                             field="conveyor.inclination")
+        object.__setattr__(self, "inclination", a)
+        if self.return_strand not in RETURN_STRANDS:
+            raise InputError(f"conveyor.return_strand must be one of {', '.join(RETURN_STRANDS)}, got "
+                             f"{self.return_strand!r}", field="conveyor.return_strand")
+        share = _finite(self.head_share, "conveyor.head_share")
+        if not 0 < share <= 1:
+            raise InputError(f"conveyor.head_share must lie in (0, 1], got {share:g}", field="conveyor.head_share")
+        object.__setattr__(self, "head_share", share)
+        object.__setattr__(self, "minimum_tension",
+                           _finite(self.minimum_tension, "conveyor.minimum_tension", nonnegative=True))
+        eta = _finite(self.efficiency, "conveyor.efficiency")
+        if not 0 < eta <= 1:
+            raise InputError(f"conveyor.efficiency must lie in (0, 1], got {eta:g}", field="conveyor.efficiency")
+        object.__setattr__(self, "efficiency", eta)
+
+    @property
+    def return_on_pans(self) -> bool:
+        """True when the return strand lies on the bottom pans."""
+        return self.return_strand == "supported"
+
+    @property
+    def return_pan_friction(self) -> float:
+        """``μ`` of the return strand on the bottom pans."""
+        return self.chain_friction if self.return_friction is None else float(self.return_friction)
+
+    def material_mass_per_length(self, chain_speed: float) -> float:
+        """``q_m`` [kg/m]: given, or ``capacity / chain_speed``."""
+        if self.material_load is not None:
+            return float(self.material_load)
+        if self.capacity is not None:
+            from ..conveyor import material_mass_per_length
+
+            return float(material_mass_per_length(self.capacity, chain_speed))
+        return 0.0
+
+
 def _spec(value: Any, cls: type, what: str) -> Any:
     if value is None or isinstance(value, cls):
         return value
@@ -362,6 +469,8 @@ class Drive:
     self_regulating : object, optional
         Self-regulating drive inputs
         (:class:`chaindrive.drive.self_regulating.SelfRegulatingSpec`).
+    conveyor : Conveyor, optional
+        Scraper conveyor: pans, material, drives (a mapping of its fields is accepted).
 
     Examples
     --------
@@ -397,9 +506,11 @@ class Drive:
     contact: ContactSpec | None = None
     track: TrackSpec | None = None
     self_regulating: Any = field(default=None)
+    conveyor: Conveyor | None = None
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "wheels", tuple(self.wheels))
+        object.__setattr__(self, "conveyor", _spec(self.conveyor, Conveyor, "conveyor"))
         object.__setattr__(self, "guides", tuple(self.guides))
         object.__setattr__(self, "contact", _spec(self.contact, ContactSpec, "contact"))
         object.__setattr__(self, "track", _spec(self.track, TrackSpec, "track"))

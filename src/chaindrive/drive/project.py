@@ -266,6 +266,21 @@ class TrackSpec(_Model):
     allowable_contact: Stress | None = None
 
 
+class ConveyorSpec(_Model):
+    """``[conveyor]``: scraper conveyor pans, material and drives (:class:`chaindrive.drive.Conveyor`)."""
+
+    chain_friction: float = Field(default=0.4, ge=0, le=1.5)
+    material_friction: float = Field(default=0.6, ge=0, le=1.5)
+    material_load: Annotated[float, _quantity("kg/m", allow_zero=True)] | None = None
+    capacity: Annotated[float, _quantity("kg/s", allow_zero=True)] | None = None
+    inclination: Annotated[float, _quantity("rad", signed=True)] = 0.0
+    return_strand: Literal["supported", "free"] = "supported"
+    return_friction: float | None = Field(default=None, ge=0, le=1.5)
+    head_share: float = Field(default=1.0, gt=0, le=1)
+    minimum_tension: ForceOrZero = 2000.0
+    efficiency: float = Field(default=1.0, gt=0, le=1)
+
+
 class Project(_Model):
     """The whole project file."""
 
@@ -278,6 +293,7 @@ class Project(_Model):
     contact: ContactSpec | None = None
     track: TrackSpec | None = None
     self_regulating: dict[str, Any] | None = None
+    conveyor: ConveyorSpec | None = None
 
 
 # --------------------------------------------------------------------------- line numbers
@@ -478,6 +494,7 @@ def project_from_mapping(data: dict[str, Any], filename: str = "<project>", *,
             contact=None if proj.contact is None else _model.ContactSpec(**proj.contact.model_dump()),
             track=None if proj.track is None else _model.TrackSpec(**proj.track.model_dump()),
             self_regulating=_self_regulating(proj.self_regulating, filename, index),
+            conveyor=None if proj.conveyor is None else _model.Conveyor(**proj.conveyor.model_dump()),
         )
     except ChainDriveError as exc:
         raise _located(exc, _loc_of(exc.field), filename, index) from None

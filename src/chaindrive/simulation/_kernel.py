@@ -28,8 +28,14 @@ from numba import njit
 # wheel parameter columns
 W_CX, W_CY, W_R, W_Z, W_RS, W_CPSI, W_SPSI, W_HTIP, W_INERTIA, W_MODE, W_OMEGA0, W_RAMP, \
     W_TORQUE, W_DAMP, W_SLIDE, W_DX, W_DY, W_SMASS, W_SK, W_SC, W_SF, W_NSEAT, W_DA, W_DB, \
-    W_PLAIN, W_RE, W_CEA, W_CEB, W_TCA, W_TCB, W_DTA, W_DTB = range(32)
-NWP = 32
+    W_PLAIN, W_RE, W_CEA, W_CEB, W_TCA, W_TCB, W_DTA, W_DTB, W_MSYNC, W_MTK, W_MSK, W_RIPA, W_RIPW, \
+    W_TSTOP, W_TDOWN = range(39)
+NWP = 39
+# time-varying drive: W_MSYNC, W_MTK, W_MSK synchronous speed [rad/s], breakdown torque [N m]
+# and breakdown slip of a motor on the Kloss curve (MODE_MOTOR, reduced to the wheel);
+# W_RIPA, W_RIPW relative amplitude and angular frequency [rad/s] of a torque ripple;
+# W_TSTOP, W_TDOWN: from W_TSTOP [s] the motor is off (MODE_MOTOR) or the prescribed
+# speed falls linearly to 0 over W_TDOWN [s] (MODE_SPEED); W_TSTOP <= 0: never
 # W_RE > 0: ISO 606 convex flank arc of radius r_e (sprockets): its centre (W_CEA, W_CEB)
 # and the tooth corner (W_TCA, W_TCB) in gap coordinates (a, |b|), the unit direction
 # (W_DTA, W_DTB) from the flank centre to the corner; W_RE = 0: straight flank (pockets)
@@ -45,7 +51,11 @@ NPAR = 17
 # P_PITCH: rest length of the even links (i = 0, 2, ...); P_PITCH2: of the odd links
 # (equal for a roller chain; t + d and t - d for a round link chain)
 # wheel modes
-MODE_SPEED, MODE_FREE, MODE_LOCKED = 0, 1, 2
+MODE_SPEED, MODE_FREE, MODE_LOCKED, MODE_MOTOR = 0, 1, 2, 3
+# guide table columns: ax, ay, ux, uy, nx, ny, length, friction (< 0: the model's), material
+# mass per pin [kg] scraped along the guide, its friction coefficient
+G_MU, G_MM, G_MMU = 7, 8, 9
+NGD = 10
 
 
 @njit(cache=True, fastmath=False, inline="always")
@@ -213,6 +223,45 @@ def guide_penetration(px, py, gd, g, rr):
     return rr - h, gd[g, 4], gd[g, 5]
 
 
+@njit(cache=True, fastmath=False, inline="always")
+def drive_torque(wp, w, om, t):
+    """Torque [N m] of a motor on the Kloss curve at wheel speed ``om`` and time ``t``.
+
+    ``T = 2 T_k s s_k / (s² + s_k²)`` with the slip ``s = (ω_s − ω)/ω_s`` (Kloss), times
+    ``1 + a sin(Ω t)`` (ripple); 0 once the motor is switched off.
+    """
+    tstop = wp[w, W_TSTOP]
+    if tstop > 0.0 and t >= tstop:
+        return 0.0
+    ws_ = wp[w, W_MSYNC]
+    sk = wp[w, W_MSK]
+    s = (ws_ - om) / ws_
+    tq = 2.0 * wp[w, W_MTK] * s * sk / (s * s + sk * sk)
+    if wp[w, W_RIPA] != 0.0:
+        tq *= 1.0 + wp[w, W_RIPA] * math.sin(wp[w, W_RIPW] * t)
+    return tq
+
+
+@njit(cache=True, fastmath=False, inline="always")
+def speed_factor(wp, w, t):
+    """Prescribed speed over its target: linear ramp up, hold, linear ramp down to 0."""
+    ramp = wp[w, W_RAMP]
+    f = 1.0
+    if ramp > 0.0 and t < ramp:
+        f = t / ramp
+    tstop = wp[w, W_TSTOP]
+    if tstop > 0.0 and t >= tstop:
+        down = wp[w, W_TDOWN]
+        g = 0.0 if down <= 0.0 else 1.0 - (t - tstop) / down
+        if g < 0.0:
+            g = 0.0
+        if g < f:
+            f = g
+    if wp[w, W_RIPA] != 0.0:
+        f *= 1.0 + wp[w, W_RIPA] * math.sin(wp[w, W_RIPW] * t)
+    return f
+
+
 @njit(cache=True, fastmath=False)
 def integrate(pos, vel, force, work, tension, contact, ws, wp, gd, tab, par, t0, nsteps, record_every,
               probes, rec_t, rec_probe, rec_tension, rec_contact, rec_ws, rec_pos, rec_energy,
@@ -249,6 +298,8 @@ def integrate(pos, vel, force, work, tension, contact, ws, wp, gd, tab, par, t0,
     # pins near each guide, listed at the same rebuilds as the wheels' candidates
     gcand = np.empty((ng, n), np.int64)
     ngcand = np.zeros(ng, np.int64)
+    # material carried by a pin this step: mass [kg] and the pan's unit tangent
+    extra = np.zeros((n, 3))
     countdown = 0
     vmax_s = 0.0
     fgx = m * gx
@@ -443,10 +494,26 @@ def integrate(pos, vel, force, work, tension, contact, ws, wp, gd, tab, par, t0,
                 epot += 0.5 * kg * pen * pen
                 # tangent (my, -mx): the segment direction on its face
                 vt = vel[i, 0] * my - vel[i, 1] * mx
-                ve = mu * fn * dtref * inv_m
+                mug = gd[g, G_MU] if gd[g, G_MU] >= 0.0 else mu
+                ve = mug * fn * dtref * inv_m
                 if ve < veps:
                     ve = veps
-                ft = -mu * fn * _sat(vt / ve)
+                ft = -mug * fn * _sat(vt / ve)
+                mmat = gd[g, G_MM]
+                if mmat > 0.0:
+                    # material scraped along a pan by this pin: its weight along the pan
+                    # and its friction on the pan (regularised like the chain's); its
+                    # inertia in the pin's update (extra mass along the pan)
+                    gt = gx * my - gy * mx
+                    gn = abs(gx * mx + gy * my)
+                    fm = mmat * gd[g, G_MMU] * gn
+                    vem = fm * dtref * inv_m
+                    if vem < veps:
+                        vem = veps
+                    ft += mmat * gt - fm * _sat(vt / vem)
+                    extra[i, 0] = mmat
+                    extra[i, 1] = my
+                    extra[i, 2] = -mx
                 force[i, 0] += fn * mx + ft * my
                 force[i, 1] += fn * my - ft * mx
                 contact[i] += fn
@@ -513,8 +580,12 @@ def integrate(pos, vel, force, work, tension, contact, ws, wp, gd, tab, par, t0,
         hdt = inv_m * dt
         if assembled:
             for i in range(n):
+                vx0 = vel[i, 0]
+                vy0 = vel[i, 1]
                 vel[i, 0] += force[i, 0] * hdt
                 vel[i, 1] += force[i, 1] * hdt
+                if extra[i, 0] > 0.0:
+                    _carry(vel, extra, i, vx0, vy0, m)
                 pos[i, 0] += vel[i, 0] * dt
                 pos[i, 1] += vel[i, 1] * dt
                 force[i, 0] = 0.0
@@ -526,8 +597,12 @@ def integrate(pos, vel, force, work, tension, contact, ws, wp, gd, tab, par, t0,
             for i in range(n):
                 wx1 = work[i, 0]
                 wy1 = work[i, 1]
+                vx0 = vel[i, 0]
+                vy0 = vel[i, 1]
                 vel[i, 0] += (force[i, 0] + fgx - cm * vel[i, 0] + wx1 - wx0) * hdt
                 vel[i, 1] += (force[i, 1] + fgy - cm * vel[i, 1] + wy1 - wy0) * hdt
+                if extra[i, 0] > 0.0:
+                    _carry(vel, extra, i, vx0, vy0, m)
                 pos[i, 0] += vel[i, 0] * dt
                 pos[i, 1] += vel[i, 1] * dt
                 force[i, 0] = 0.0
@@ -540,11 +615,11 @@ def integrate(pos, vel, force, work, tension, contact, ws, wp, gd, tab, par, t0,
         for w in range(nw):
             mode = wp[w, W_MODE]
             if mode == MODE_SPEED:
-                ramp = wp[w, W_RAMP]
-                f = 1.0
-                if ramp > 0.0 and tn < ramp:
-                    f = tn / ramp
-                ws[w, S_OMEGA] = wp[w, W_OMEGA0] * f
+                ws[w, S_OMEGA] = wp[w, W_OMEGA0] * speed_factor(wp, w, tn)
+            elif mode == MODE_MOTOR:
+                acc = (ws[w, S_TORQUE] + drive_torque(wp, w, ws[w, S_OMEGA], t) + wp[w, W_TORQUE]
+                       - wp[w, W_DAMP] * ws[w, S_OMEGA]) / wp[w, W_INERTIA]
+                ws[w, S_OMEGA] += acc * dt
             elif mode == MODE_FREE:
                 acc = (ws[w, S_TORQUE] + wp[w, W_TORQUE] - wp[w, W_DAMP] * ws[w, S_OMEGA]) \
                     / wp[w, W_INERTIA]
@@ -560,6 +635,19 @@ def integrate(pos, vel, force, work, tension, contact, ws, wp, gd, tab, par, t0,
                 ws[w, S_SDOT] += fs / wp[w, W_SMASS] * dt
                 ws[w, S_S] += ws[w, S_SDOT] * dt
     return nrec
+
+
+@njit(cache=True, fastmath=False, inline="always")
+def _carry(vel, extra, i, vx0, vy0, m):
+    """Pin ``i`` carries material of mass ``extra[i, 0]`` along the pan tangent
+    ``extra[i, 1:]``: its velocity change along the pan is that of ``m + m_material``."""
+    tx = extra[i, 1]
+    ty = extra[i, 2]
+    dvt = (vel[i, 0] - vx0) * tx + (vel[i, 1] - vy0) * ty
+    corr = dvt * extra[i, 0] / (m + extra[i, 0])
+    vel[i, 0] -= corr * tx
+    vel[i, 1] -= corr * ty
+    extra[i, 0] = 0.0
 
 
 def seat_table(wp):

@@ -107,10 +107,22 @@ def model_from_drive(drive: Drive, *, ramp_time: float = 0.2, axial_stiffness: f
     i0 = next(i for i, w in enumerate(wheels) if w.driving)
     wheels = wheels[i0:] + wheels[:i0]
     torque = float(drive.torque())
+    tail_torque = 0.0
+    if drive.conveyor is not None:
+        # a conveyor's load is the friction on its pans (and the material), not a torque
+        # on the tail; a tail drive takes its share of the pull there
+        from ..analysis.conveyor import conveyor_pull
+
+        pull = conveyor_pull(drive)
+        tail_force = 0.0 if pull is None else pull.tail_force
+        torque = 0.0
+        tail_torque = tail_force
     tens_name = drive.tensioner.wheel if drive.tensioner is not None else None
     # the load goes to the first driven wheel that is neither an idler nor the tensioner
     load_idx = next((i for i, w in enumerate(wheels)
                      if i > 0 and w.name != tens_name and w.kind != "idler"), None)
+    if drive.conveyor is not None:
+        load_idx = len(wheels) - 1   # the tail: the carrying strand leaves it towards the head
     if load_idx is None:
         raise InputError("simulation: the drive has no driven wheel (besides the driver, only "
                          "idlers and the tensioner) to carry the load; a track drive's load, "
@@ -128,6 +140,8 @@ def model_from_drive(drive: Drive, *, ramp_time: float = 0.2, axial_stiffness: f
         else:
             # power balance at the mean speeds: T_j = T_0 ω_0/ω_j = T_0 z_j/z_0
             load = -torque * _teeth(w) / _teeth(wheels[0]) if i == load_idx else 0.0
+            if drive.conveyor is not None and i == load_idx:
+                load = tail_torque * r
             sw = SimWheel(body, _disc_inertia(r), "free", torque=load)
         sim_wheels.append(sw)
     tens = None
@@ -157,8 +171,17 @@ def model_from_drive(drive: Drive, *, ramp_time: float = 0.2, axial_stiffness: f
                                 link_mass=_required(chain.mass_per_length, chain.name, "mass_per_length") * p,
                                 axial_stiffness=ea, roller_radius=radius, bar_diameter=bar if link else None,
                 wheels=sim_wheels, tensioner=tens, pretension=max(slack, 1.0))
+    if drive.conveyor is not None and "gravity" not in kwargs:
+        from ..analysis.conveyor import gravity_direction
+
+        gdir = gravity_direction(drive) * 9.81
+        opts["gravity"] = (float(gdir[0]), float(sign * gdir[1]))
     opts.update(kwargs)
     model = SimulationModel(**opts)
+    if drive.conveyor is not None and "guides" not in kwargs:
+        from .conveyor import conveyor_pans
+
+        model.guides.extend(conveyor_pans(model, drive, model.gravity))
     if "guides" not in kwargs:
         names = [w.name for w in wheels]
         for g in drive.guides:

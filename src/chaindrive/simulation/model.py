@@ -58,6 +58,7 @@ from ..errors import InputError
 
 if TYPE_CHECKING:
     from ..geometry.sprocket import IsoToothForm
+    from ..motor import Motor
 
 __all__ = ["SimWheel", "SimTensioner", "SimGuide", "SimulationModel", "roller_example",
            "iso_flank",
@@ -180,7 +181,7 @@ def link_seat_profile(pitch: float, bar_diameter: float, teeth: int,
     tilt = max(0.5 * d1 + h / (2 * (t + d)), 0.5 * d2 + h / (2 * (t - d)))
     return 0.5 * math.pi - tilt, h
 
-_MODES = ("speed", "torque", "free")
+_MODES = ("speed", "torque", "free", "motor")
 
 
 @dataclass
@@ -209,6 +210,19 @@ class SimWheel:
         Applied torque [N m] (counter-clockwise positive): a load is negative.
     damping : float
         Viscous bearing damping [N m s/rad].
+    motor : chaindrive.motor.Motor, optional
+        Mode ``"motor"``: the wheel is driven by this motor (Kloss curve, reduced to the
+        wheel; add the motor's reduced inertia to ``inertia``).
+    stop_time : float
+        From this time [s] the motor is off (mode ``"motor"``) or the prescribed speed
+        falls linearly to 0 over ``stop_ramp`` [s] (mode ``"speed"``); 0: never.
+    stop_ramp : float
+        [s].
+    ripple : float
+        Relative amplitude of a torque (mode ``"motor"``) or speed (mode ``"speed"``)
+        ripple ``1 + a sin(Ω t)``, ``|a| < 1``.
+    ripple_frequency : float
+        ``Ω`` [rad/s].
 
     Notes
     -----
@@ -225,8 +239,21 @@ class SimWheel:
     ramp_time: float = 0.0
     torque: float = 0.0
     damping: float = 0.0
+    motor: Motor | None = None
+    stop_time: float = 0.0
+    stop_ramp: float = 0.0
+    ripple: float = 0.0
+    ripple_frequency: float = 0.0
 
     def __post_init__(self) -> None:
+        if (self.mode == "motor") != (self.motor is not None):
+            raise InputError("a wheel in mode 'motor' needs its motor (and a motor needs mode 'motor')",
+                             field="motor")
+        check_nonnegative("stop_time", self.stop_time, "s")
+        check_nonnegative("stop_ramp", self.stop_ramp, "s")
+        if not abs(float(self.ripple)) < 1:
+            raise InputError(f"ripple must lie in (-1, 1), got {self.ripple!r}", field="ripple")
+        check_nonnegative("ripple_frequency", self.ripple_frequency, "rad/s")
         if not isinstance(self.wheel, Wheel):
             raise InputError(f"SimWheel.wheel must be a chaindrive.drive.Wheel, got {type(self.wheel).__name__}")
         if self.mode not in _MODES:
@@ -364,14 +391,28 @@ def _mass_per_length(chain: Any) -> float:
 class SimGuide:
     """A straight guide (line segment); the chain runs on its left side (start → end).
 
+    A conveyor's pan is a guide under a strand with its own ``friction`` and,
+    under the carrying strand, the material each pin scrapes along it.
+
     Parameters
     ----------
     start, end : (float, float)
         End points [m] of the guide line on which the roller *surfaces* slide.
+    friction : float, optional
+        Coulomb coefficient chain–guide; default the model's ``friction``.
+    material_mass : float
+        Material pushed along the guide by each pin in contact [kg] (``q_m`` times
+        the mean link length); its weight component along the guide, its friction
+        (``material_friction`` times its weight normal to the guide) and its inertia
+        act on that pin.
+    material_friction : float
     """
 
     start: tuple[float, float]
     end: tuple[float, float]
+    friction: float | None = None
+    material_mass: float = 0.0
+    material_friction: float = 0.0
 
 
 @dataclass

@@ -404,7 +404,15 @@ def kernel_arrays(model: SimulationModel, dt: float | None = None) -> tuple[np.n
             wp[i, K.W_HTIP] = 0.0
             wp[i, K.W_NSEAT] = 3
             wp[i, K.W_Z] = 0  # reported as teeth = 0 (toothless)
-        wp[i, K.W_MODE] = K.MODE_SPEED if w.mode == "speed" else K.MODE_FREE
+        wp[i, K.W_MODE] = {"speed": K.MODE_SPEED, "motor": K.MODE_MOTOR}.get(w.mode, K.MODE_FREE)
+        if w.motor is not None:
+            wp[i, K.W_MSYNC] = w.motor.synchronous_speed
+            wp[i, K.W_MTK] = w.motor.breakdown_torque
+            wp[i, K.W_MSK] = w.motor.breakdown_slip
+        wp[i, K.W_RIPA] = w.ripple
+        wp[i, K.W_RIPW] = w.ripple_frequency
+        wp[i, K.W_TSTOP] = w.stop_time
+        wp[i, K.W_TDOWN] = w.stop_ramp
         wp[i, K.W_OMEGA0] = w.angular_velocity
         wp[i, K.W_RAMP] = w.ramp_time
         wp[i, K.W_TORQUE] = w.torque
@@ -419,13 +427,14 @@ def kernel_arrays(model: SimulationModel, dt: float | None = None) -> tuple[np.n
         wp[t.wheel, K.W_SK] = t.stiffness
         wp[t.wheel, K.W_SC] = t.damping
         wp[t.wheel, K.W_SF] = t.preload
-    gd = np.zeros((len(model.guides), 7))
+    gd = np.zeros((len(model.guides), K.NGD))
     for g, gu in enumerate(model.guides):
         a = np.asarray(gu.start, float)
         b = np.asarray(gu.end, float)
         length = float(np.hypot(*(b - a)))
         u = (b - a) / length
-        gd[g] = [a[0], a[1], u[0], u[1], -u[1], u[0], length]
+        gd[g] = [a[0], a[1], u[0], u[1], -u[1], u[0], length,
+                 -1.0 if gu.friction is None else gu.friction, gu.material_mass, gu.material_friction]
     return par, wp, gd
 
 
@@ -517,7 +526,7 @@ def assemble(model: SimulationModel, *, dt: float | None = None, method: str = "
     for i, w in enumerate(model.wheels):
         r = wp[i, K.W_R]
         wp[i, K.W_DAMP] = w.damping + 2.0 * math.sqrt(2 * kspan * r * r * w.inertia)
-        if w.mode == "speed":
+        if w.mode in ("speed", "motor"):
             wp[i, K.W_MODE] = K.MODE_LOCKED
     if model.tensioner is None:
         wp[adj, K.W_SLIDE] = 1.0

@@ -1,0 +1,390 @@
+r"""Chain pull of scraper (drag) chain conveyors: resistance to motion of a strand,
+the material load, a free (hanging) strand, the mean tension of a closed loop and the
+drive power.
+
+All functions take and return SI units (N, m, kg, rad, W). The loop walk (which strand
+is on the pans, where the drives sit, the tensioner) is
+:mod:`chaindrive.analysis.conveyor`; these are its single formulas.
+
+A strand moving a distance ``L`` along a pan inclined by ``α`` (rising in the direction
+of travel) changes the chain tension by the friction of the chain on the pan, the
+friction of the scraped material on the pan and the weight components of both:
+
+.. math::
+    ΔT = g L\,[(q μ + q_m μ_m)\cos α + (q + q_m)\sin α]
+
+(Tsubakimoto, *Large size conveyor chain, selection*, Table 3; the same method,
+strand by strand with a factor at each sprocket, in the "Calculation formula of
+tension acting on the chain" sheets 20-2 to 20-4 of e-uparts' machine handbook:
+``T = W(L f + H) + M(L f_1 + H) + T_2`` with ``L`` the horizontal and ``H`` the
+vertical distance, i.e. ``L = ℓ cos α``, ``H = ℓ sin α``).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+from numpy.typing import ArrayLike
+
+from ._finite import finite_guard
+from ._results import Result, quantity
+from ._roots import brentq
+from ._typing import FloatOrArray
+from ._validation import as_float_array, check_nonnegative, check_positive, check_range
+from .errors import InputError
+from .layout import GRAVITY, _catenary_sag
+
+__all__ = ["material_mass_per_length", "strand_resistance", "drive_power", "mean_tension",
+           "FreeStrand", "free_strand", "free_strand_minimum_tension", "pretension_for_minimum"]
+
+
+@dataclass(frozen=True)
+class FreeStrand(Result):
+    """A free (hanging) strand (:func:`free_strand`): tensions, sag and the chain length
+    its catenary takes beyond the chord."""
+
+    horizontal_tension: float = quantity("N")
+    start_tension: float = quantity("N")
+    end_tension: float = quantity("N")
+    sag: float = quantity("m", display="mm")
+    excess_length: float = quantity("m", display="mm")
+    lowest_tension: float = quantity("N")
+
+
+@finite_guard
+def material_mass_per_length(capacity: ArrayLike, chain_speed: ArrayLike) -> FloatOrArray:
+    r"""Mass of conveyed material per metre of conveyor, ``q_m = Q / v`` [kg/m].
+
+    .. math:: q_m = \frac{Q}{v}
+
+    Parameters
+    ----------
+    capacity : float or array_like
+        Mass flow ``Q >= 0`` [kg/s] (1 t/h = 1/3.6 kg/s).
+    chain_speed : float or array_like
+        ``v > 0`` [m/s].
+
+    Returns
+    -------
+    ndarray
+        ``q_m`` [kg/m].
+
+    References
+    ----------
+    Tsubakimoto, *Large size conveyor chain, selection*, 9.1: ``W = 16.7 Q / V``
+    (``Q`` in t/h, ``V`` in m/min, ``16.7 = 1000/60``), the same relation.
+
+    Examples
+    --------
+    >>> round(float(material_mass_per_length(500 / 3.6, 1.0)), 2)   # 500 t/h at 1 m/s
+    138.89
+    """
+    Q = check_nonnegative("capacity", capacity, "kg/s")
+    v = check_positive("chain_speed", chain_speed, "m/s")
+    return Q / v
+
+
+@finite_guard
+def strand_resistance(length: ArrayLike, mass_per_length: ArrayLike, friction: ArrayLike,
+                      inclination: ArrayLike = 0.0, material_mass_per_length: ArrayLike = 0.0,
+                      material_friction: ArrayLike = 0.0, gravity: float = GRAVITY) -> FloatOrArray:
+    r"""Tension gained by a chain strand dragged along a pan, ``ΔT`` [N].
+
+    .. math::
+        ΔT = g L\,[(q μ + q_m μ_m)\cos α + (q + q_m)\sin α]
+
+    Parameters
+    ----------
+    length : float or array_like
+        Length ``L > 0`` of the strand along the pan [m].
+    mass_per_length : float or array_like
+        Chain mass per length ``q > 0`` [kg/m] (all chains of the strand).
+    friction : float or array_like
+        Friction coefficient ``μ`` of the chain on the pan, ``0 <= μ <= 1.5``
+        (0 for a strand hanging free: only the weight term is left).
+    inclination : float or array_like
+        ``α`` [rad], positive when the strand rises in its direction of travel,
+        ``|α| <= π/2``.
+    material_mass_per_length : float or array_like
+        Material scraped along the pan ``q_m >= 0`` [kg/m].
+    material_friction : float or array_like
+        ``μ_m`` of the material on the pan, ``0 <= μ_m <= 1.5``.
+    gravity : float
+        [m/s²].
+
+    Returns
+    -------
+    ndarray
+        ``ΔT`` [N]: the tension at the strand's end minus that at its start (negative
+        on a steep enough descent).
+
+    Notes
+    -----
+    Coulomb friction of a strand lying on its pan with its own and the material's
+    weight, the material pushed by the scrapers (so its friction acts on the chain).
+    Valid while the strand lies on the pan (tension small against ``q g R`` of the
+    pan's curvature: a straight pan line); no sprocket or bend losses (a chain maker's
+    factor 1.05–1.1 per sprocket is applied by the caller when wanted).
+
+    References
+    ----------
+    Tsubakimoto, *Large size conveyor chain, selection*, Table 3 (chain and scraped
+    material: ``f = f_2/f_1``); e-uparts machine handbook, sheet 20-3 (inclined
+    transport: ``T = W(L f + H) + M(L f_1 + H) + T_2``).
+
+    Examples
+    --------
+    >>> round(float(strand_resistance(100.0, 14.3, 0.4)), 1)          # chain alone, level
+    5609.4
+    >>> round(float(strand_resistance(100.0, 14.3, 0.4, material_mass_per_length=100.0,
+    ...                               material_friction=0.6)), 1)
+    64449.3
+    """
+    L = check_positive("length", length, "m")
+    q = check_positive("mass_per_length", mass_per_length, "kg/m")
+    mu = check_range("friction", friction, 0.0, 1.5)
+    a = check_range("inclination", inclination, -math.pi / 2, math.pi / 2, unit="rad")
+    qm = check_nonnegative("material_mass_per_length", material_mass_per_length, "kg/m")
+    mum = check_range("material_friction", material_friction, 0.0, 1.5)
+    g = check_positive("gravity", gravity, "m/s^2")
+    return g * L * ((q * mu + qm * mum) * np.cos(a) + (q + qm) * np.sin(a))
+
+
+@finite_guard
+def drive_power(force: ArrayLike, chain_speed: ArrayLike, efficiency: ArrayLike = 1.0) -> FloatOrArray:
+    r"""Power of a drive pulling the chain with ``force`` at ``chain_speed``, ``P = F v / η`` [W].
+
+    .. math:: P = \frac{F v}{η}
+
+    Parameters
+    ----------
+    force : float or array_like
+        Drive force (tension entering minus tension leaving the sprocket) [N], >= 0.
+    chain_speed : float or array_like
+        [m/s], > 0.
+    efficiency : float or array_like
+        Efficiency ``0 < η <= 1`` of the drive (gearbox, coupling) between motor and
+        sprocket; 1 gives the power at the sprocket shaft.
+
+    Returns
+    -------
+    ndarray
+        [W].
+
+    References
+    ----------
+    Tsubakimoto, *Large size conveyor chain, selection*, Table 3 (``kW = T V /
+    (60 η)`` with ``T`` in kN and ``V`` in m/min).
+
+    Examples
+    --------
+    >>> round(float(drive_power(50e3, 0.8, 0.85)))
+    47059
+    """
+    F = check_nonnegative("force", force, "N")
+    v = check_positive("chain_speed", chain_speed, "m/s")
+    eta = check_range("efficiency", efficiency, 0.0, 1.0)
+    if np.any(eta <= 0):
+        raise InputError(f"efficiency must lie in (0, 1], got {eta}", field="efficiency")
+    return F * v / eta
+
+
+def mean_tension(position: ArrayLike, tension: ArrayLike) -> float:
+    r"""Mean tension of a closed chain loop, ``(1/L) ∮ T ds`` [N].
+
+    .. math:: \bar T = \frac1L \oint T\,ds
+
+    The running chain's elongation is ``∮ T ds / EA``; a loop of fixed length between
+    fixed (or locked) wheels keeps that integral, so the tension at rest — the
+    *pretension*, uniform at standstill on level pans — equals the running loop's
+    mean tension (Hooke's law on the whole loop; the small change of the sag of free
+    strands neglected).
+
+    Parameters
+    ----------
+    position : array_like
+        Path coordinate round the loop [m], increasing, from 0 to the loop length.
+    tension : array_like
+        Tension at those positions [N] (piecewise linear between them).
+
+    Returns
+    -------
+    float
+        [N].
+
+    References
+    ----------
+    Derived here (compatibility of elongations of a linear-elastic chain of fixed
+    length); the "elongation balance" used for AFC pretension in the chain makers'
+    and the AFC literature.
+
+    Examples
+    --------
+    >>> mean_tension([0.0, 100.0, 100.0, 200.0], [10e3, 10e3, 30e3, 50e3])
+    25000.0
+    """
+    s = as_float_array("position", position)
+    T = as_float_array("tension", tension)
+    if s.ndim != 1 or s.shape != T.shape or s.size < 2:
+        raise InputError("position and tension must be 1-D arrays of the same length (>= 2)")
+    if np.any(np.diff(s) < 0) or not s[-1] > s[0]:
+        raise InputError("position must increase along the loop")
+    return float(np.sum(0.5 * (T[1:] + T[:-1]) * np.diff(s)) / (s[-1] - s[0]))
+
+
+def pretension_for_minimum(minimum: float, lowest: float, mean: float) -> float:
+    r"""Pretension [N] that lifts a running profile's lowest tension to ``minimum``.
+
+    A running profile ``T(s) = S_0 + τ(s)`` with mean ``\bar T`` and lowest value
+    ``T_min`` is shifted by ``minimum − T_min``; its mean (:func:`mean_tension`) is then
+    the standstill tension of the loop:
+
+    .. math:: S_{pre} = \bar T + (T_{req} − T_{min})
+
+    Parameters
+    ----------
+    minimum : float
+        Required lowest running tension [N], >= 0.
+    lowest, mean : float
+        Lowest and mean tension of the profile as computed [N].
+
+    Returns
+    -------
+    float
+        [N].
+
+    Examples
+    --------
+    >>> pretension_for_minimum(5e3, 2e3, 20e3)
+    23000.0
+    """
+    m = float(check_nonnegative("minimum", minimum, "N"))
+    return float(mean) + (m - float(lowest))
+
+
+def _x0(H: float, span: float, rise: float, w: float) -> float:
+    k = w / H
+    return span / 2 - math.asinh(k * rise / (2 * math.sinh(k * span / 2))) / k
+
+
+def _start_tension(H: float, span: float, rise: float, w: float) -> float:
+    """Tension ``H cosh(k x_0)`` at the start of the catenary of horizontal tension ``H``."""
+    arg = w / H * _x0(H, span, rise, w)
+    return H * math.cosh(arg) if abs(arg) < 700 else math.inf
+
+
+def _start_tension_curve(span: float, rise: float, w: float, chord: float, top: float):
+    """Start tension over a grid of horizontal tensions from ``k c = 50`` (deep sag) up."""
+    Hs = np.geomspace(w * chord / 50.0, max(1e3 * top, w * chord), 400)
+    return Hs, np.array([_start_tension(float(H), span, rise, w) for H in Hs])
+
+
+def free_strand_minimum_tension(chord_length: float, inclination: float, mass_per_length: float,
+                                gravity: float = GRAVITY) -> float:
+    """Smallest start tension [N] for which a catenary joins the ends of a free strand.
+
+    Below it (:func:`free_strand`) the chain would have to lie on the ground.
+
+    Examples
+    --------
+    >>> round(free_strand_minimum_tension(100.0, 0.0, 10.0))   # ~ 0.76 q g c
+    7392
+    """
+    c = float(check_positive("chord_length", chord_length, "m"))
+    gam = float(inclination)
+    w = float(check_positive("mass_per_length", mass_per_length, "kg/m")) * float(gravity)
+    Hs, vals = _start_tension_curve(c * math.cos(gam), c * math.sin(gam), w, c, w * c)
+    i = int(np.argmin(vals))
+    lo, hi = float(Hs[max(i - 1, 0)]), float(Hs[min(i + 1, len(Hs) - 1)])
+    for _ in range(60):  # golden-section refinement of the minimum
+        a, b = lo + 0.382 * (hi - lo), lo + 0.618 * (hi - lo)
+        if _start_tension(a, c * math.cos(gam), c * math.sin(gam), w) < _start_tension(
+                b, c * math.cos(gam), c * math.sin(gam), w):
+            hi = b
+        else:
+            lo = a
+    return float(_start_tension(0.5 * (lo + hi), c * math.cos(gam), c * math.sin(gam), w))
+
+
+@finite_guard(check_result=False)
+def free_strand(chord_length: float, inclination: float, start_tension: float,
+                mass_per_length: float, gravity: float = GRAVITY) -> FreeStrand:
+    r"""A strand hanging free between two wheels as a catenary, from its start tension.
+
+    With ``k = q g / H``, the horizontal span ``ℓ = c cos γ`` and rise ``h = c sin γ``
+    the chain is ``y = (\cosh k(x − x_0) − \cosh k x_0)/k`` (Irvine), with
+
+    .. math::
+        x_0 = \frac{ℓ}{2} - \frac1k\operatorname{asinh}\frac{k h}{2\sinh(kℓ/2)},\quad
+        T(x) = H\cosh k(x - x_0),\quad
+        s = \frac{\sinh k(ℓ - x_0) + \sinh k x_0}{k}
+
+    The horizontal tension ``H`` is solved (Brent) so that ``T(0)`` is ``start_tension``;
+    the end tension is then ``T(0) + q g h`` exactly.
+
+    Parameters
+    ----------
+    chord_length : float
+        Distance between the strand's ends [m], > 0.
+    inclination : float
+        Angle of the chord above the horizontal in the direction of travel [rad],
+        ``|γ| < π/2``.
+    start_tension : float
+        Tension where the strand starts [N], larger than ``q g`` times the depth of
+        the strand's lowest point below its start (so that a catenary exists).
+    mass_per_length : float
+        [kg/m].
+    gravity : float
+        [m/s²].
+
+    Returns
+    -------
+    FreeStrand
+
+    Raises
+    ------
+    InputError
+        No catenary through both ends carries ``start_tension`` (too low a tension
+        for the span: the strand would lie on the ground).
+
+    References
+    ----------
+    Irvine, H. M., *Cable Structures*, MIT Press 1981, ch. 1 (inextensible inclined
+    catenary); the sag as :func:`chaindrive.layout.catenary_sag`.
+
+    Examples
+    --------
+    >>> s = free_strand(28.8, 0.0, 20e3, 6.7)
+    >>> round(s.horizontal_tension), round(s.sag, 3), round(s.excess_length * 1e3, 2)
+    (19978, 0.341, 10.77)
+    """
+    c = float(check_positive("chord_length", chord_length, "m"))
+    gam = float(check_range("inclination", inclination, -math.pi / 2, math.pi / 2, unit="rad"))
+    if abs(gam) >= math.pi / 2:
+        raise InputError(f"inclination must lie in (-π/2, π/2) rad (not a vertical strand), got {gam}")
+    T0 = float(check_positive("start_tension", start_tension, "N"))
+    q = float(check_positive("mass_per_length", mass_per_length, "kg/m"))
+    g = float(check_positive("gravity", gravity, "m/s^2"))
+    span, rise = c * math.cos(gam), c * math.sin(gam)
+    w = q * g
+
+    Hs, vals = _start_tension_curve(span, rise, w, c, T0)
+    i_min = int(np.argmin(vals))
+    if not vals[i_min] < T0:
+        raise InputError(f"start_tension {T0:.6g} N is too low for a free strand of {c:.6g} m "
+                         f"(q = {q:g} kg/m): at least {vals[i_min]:.6g} N is needed",
+                         field="start_tension")
+    # the taut branch: H between the minimum and the top of the grid
+    hi = Hs[-1]
+    H = brentq(lambda x: _start_tension(x, span, rise, w) - T0, float(Hs[i_min]), float(hi),
+               xtol=1e-9 * T0, rtol=1e-13)
+    k = w / H
+    x0 = _x0(H, span, rise, w)
+    sag = float(_catenary_sag(span, rise, k))
+    arc = (math.sinh(k * (span - x0)) + math.sinh(k * x0)) / k
+    return FreeStrand(horizontal_tension=float(H), start_tension=T0,
+                      end_tension=float(H * math.cosh(k * (span - x0))), sag=sag,
+                      excess_length=float(arc - c),
+                      lowest_tension=float(H if 0 < x0 < span else min(T0, H * math.cosh(k * (span - x0)))))

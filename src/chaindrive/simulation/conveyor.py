@@ -1,0 +1,227 @@
+r"""Scraper conveyors in the simulation: pans under the strands, the steady state, the
+peak-tension envelope.
+
+A pan is a :class:`~chaindrive.simulation.model.SimGuide` along a span's tangent line
+(the pin line; the bar surfaces slide on it), on the side of gravity, stopping
+``R + 3 t`` short of each wheel's tangent point so that it stays clear of the pockets.
+The contact is unilateral (penalty) with regularised Coulomb friction (the kernel's
+law, ``F_t = −μ F_n sat(v_t/v_ε)``); the carrying strand's pan also gets the material
+each pin in contact scrapes along it (its weight along the pan, its friction and its
+inertia: :func:`chaindrive.simulation._kernel.integrate`).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import TYPE_CHECKING
+
+import numpy as np
+
+from .._results import Result, quantity
+from ..errors import InputError
+from .model import SimGuide, SimulationModel
+
+if TYPE_CHECKING:
+    from ..analysis.conveyor import ConveyorPull
+    from ..drive.model import Drive
+    from .run import SimulationResult
+
+#: Clearance of a pan below the tangent line of its span, in bar (roller) radii.
+PAN_GAP = 0.1
+
+__all__ = ["conveyor_pans", "SteadyState", "steady_state", "peak_tension_envelope", "span_kinds"]
+
+
+def span_kinds(model: SimulationModel, drive: Drive) -> list[str]:
+    """Kind of each simulated span ``i`` (wheel ``i`` to ``i + 1``): ``"carrying"``,
+    ``"pans"`` (return on the bottom pans) or ``"free"`` (the analysis' rule:
+    :data:`chaindrive.analysis.conveyor.RETURN_SPAN_FRACTION`)."""
+    from ..analysis.conveyor import RETURN_SPAN_FRACTION
+    from .run import _tangent
+
+    conv = drive.conveyor
+    if conv is None:
+        raise InputError("the drive has no [conveyor] table", field="conveyor")
+    nw = len(model.wheels)
+    radii = model.signed_radii()
+    lengths = []
+    for i in range(nw):
+        j = (i + 1) % nw
+        p1, p2, _, _ = _tangent(model.wheels[i].centre, radii[i], model.wheels[j].centre, radii[j])
+        lengths.append(float(np.hypot(*(p2 - p1))))
+    carry = lengths[nw - 1]   # wheel 0 is the head: the last span arrives at it
+    kinds = []
+    for i in range(nw):
+        if i == nw - 1:
+            kinds.append("carrying")
+        elif conv.return_on_pans and lengths[i] >= RETURN_SPAN_FRACTION * carry:
+            kinds.append("pans")
+        else:
+            kinds.append("free")
+    return kinds
+
+
+def conveyor_pans(model: SimulationModel, drive: Drive, gravity: tuple[float, float]) -> list[SimGuide]:
+    """Pans under the carrying strand (with the material) and, when the return strand is
+    supported, under the long return spans (module notes).
+
+    Parameters
+    ----------
+    model : SimulationModel
+        Wheel 0 the head, chain order counter-clockwise (as :func:`model_from_drive`).
+    drive : chaindrive.drive.Drive
+        With its :class:`~chaindrive.drive.Conveyor`.
+    gravity : (float, float)
+        Gravity vector in the model's frame [m/s²].
+
+    Returns
+    -------
+    list of SimGuide
+    """
+    from .run import _tangent
+
+    conv = drive.conveyor
+    if conv is None:
+        raise InputError("the drive has no [conveyor] table", field="conveyor")
+    g = np.asarray(gravity, float)
+    ghat = g / max(float(np.hypot(*g)), 1e-300)
+    nw = len(model.wheels)
+    radii = model.signed_radii()
+    speed = drive.chain_speed()
+    qm = conv.material_mass_per_length(speed)
+    pans = []
+    for i, kind in enumerate(span_kinds(model, drive)):
+        if kind == "free":
+            continue
+        j = (i + 1) % nw
+        p1, p2, u, _ = _tangent(model.wheels[i].centre, radii[i], model.wheels[j].centre, radii[j])
+        length = float(np.hypot(*(p2 - p1)))
+        m1 = abs(radii[i]) + 3.0 * model.pitch
+        m2 = abs(radii[j]) + 3.0 * model.pitch
+        if length - m1 - m2 < 2.0 * model.pitch:
+            continue
+        a = p1 + m1 * u
+        b = p2 - m2 * u
+        left = np.array([-u[1], u[0]])
+        if left @ ghat > 0:          # the chain lies on the pan's left: against gravity
+            a, b = b, a
+            left = -left
+        # the pan surface a little (PAN_GAP bar radii) below the tangent line: the
+        # static assembly starts with the pins just clear of it, not on the contact's edge
+        drop = (1.0 + PAN_GAP) * model.roller_radius
+        a = a - drop * left
+        b = b - drop * left
+        if kind == "carrying":
+            pans.append(SimGuide((float(a[0]), float(a[1])), (float(b[0]), float(b[1])),
+                                 friction=conv.chain_friction, material_mass=qm * model.pitch,
+                                 material_friction=conv.material_friction))
+        else:
+            pans.append(SimGuide((float(a[0]), float(a[1])), (float(b[0]), float(b[1])),
+                                 friction=conv.return_pan_friction))
+    return pans
+
+
+@dataclass(frozen=True)
+class SteadyState(Result):
+    """Time means of a conveyor simulation over its steady window (:func:`steady_state`)."""
+
+    slack_tension: float = quantity("N")
+    tight_tension: float = quantity("N")
+    return_sag: float = quantity("m", display="mm")
+    slack_tension_std: float = quantity("N")
+    tight_tension_std: float = quantity("N")
+    return_sag_std: float = quantity("m", display="mm")
+    start: float = quantity("s")
+
+
+def _link_nearest(pos: np.ndarray, point: np.ndarray) -> np.ndarray:
+    """Index of the link (mid-point of pins i, i+1) nearest ``point`` in every record."""
+    mid = 0.5 * (pos + np.roll(pos, -1, axis=1))
+    return np.argmin(np.sum((mid - point) ** 2, axis=2), axis=1)
+
+
+def steady_state(result: SimulationResult, model: SimulationModel, drive: Drive, *,
+                 start: float | None = None, offset_links: float = 6.0) -> SteadyState:
+    """Slack and tight tension at the head and the sag of the return strand, as time means.
+
+    The slack (tight) tension is that of the link ``offset_links`` link lengths after
+    (before) the head's tangent point along the span leaving (arriving at) it; the sag
+    is the largest vertical distance of the pins below the chord of the longest free
+    return span (0 when every return span lies on pans).
+
+    Parameters
+    ----------
+    result : SimulationResult
+    model : SimulationModel
+    drive : chaindrive.drive.Drive
+    start : float, optional
+        Start of the window [s]; default the second half of the run.
+    offset_links : float
+
+    Returns
+    -------
+    SteadyState
+    """
+    from .run import _tangent
+
+    t = result.time
+    t0 = float(t[0] + 0.5 * (t[-1] - t[0])) if start is None else float(start)
+    sel = t >= t0
+    if not np.any(sel):
+        raise InputError(f"steady_state: no record after start = {t0:g} s", field="start")
+    pos = result.positions[sel]
+    ten = result.tension[sel]
+    c = result.wheel_centres
+    radii = model.signed_radii()
+    nw = len(model.wheels)
+    p_out, _, u_out, _ = _tangent(c[0], radii[0], c[1], radii[1])
+    _, p_in, u_in, _ = _tangent(c[nw - 1], radii[nw - 1], c[0], radii[0])
+    step = offset_links * model.pitch
+    rows = np.arange(pos.shape[0])
+    slack = ten[rows, _link_nearest(pos, p_out + step * u_out)]
+    tight = ten[rows, _link_nearest(pos, p_in - step * u_in)]
+    kinds = span_kinds(model, drive)
+    free = [i for i, k in enumerate(kinds) if k == "free"]
+    sag = np.zeros(pos.shape[0])
+    if free:
+        lengths = []
+        for i in free:
+            a, b, _, _ = _tangent(c[i], radii[i], c[(i + 1) % nw], radii[(i + 1) % nw])
+            lengths.append((float(np.hypot(*(b - a))), a, b))
+        _, a, b = max(lengths, key=lambda x: x[0])
+        lo, hi = min(a[0], b[0]), max(a[0], b[0])
+        x = pos[:, :, 0]
+        y = pos[:, :, 1]
+        inside = (x > lo + 0.05 * (hi - lo)) & (x < hi - 0.05 * (hi - lo))
+        chord = a[1] + (b[1] - a[1]) * (x - a[0]) / (b[0] - a[0]) if b[0] != a[0] else np.full_like(x, a[1])
+        # the pins of this span: inside its x range and below the chord by less than the
+        # span itself (the carrying strand lies above)
+        below = np.where(inside & (y < chord + 1e-3) & (chord - y < 0.5 * (hi - lo)), chord - y, 0.0)
+        sag = np.max(below, axis=1)
+    return SteadyState(float(np.mean(slack)), float(np.mean(tight)), float(np.mean(sag)),
+                       float(np.std(slack)), float(np.std(tight)), float(np.std(sag)), t0)
+
+
+def peak_tension_envelope(result: SimulationResult) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Largest and smallest tension each link saw over the run, by position along the chain.
+
+    Returns
+    -------
+    position : ndarray (N,)
+        Link index times the mean link length [m] (along the chain from link 0).
+    peak, low : ndarray (N,)
+        [N].
+    """
+    n = result.tension.shape[1]
+    return np.arange(n) * result.pitch, np.max(result.tension, axis=0), np.min(result.tension, axis=0)
+
+
+def compare(pull: ConveyorPull, state: SteadyState) -> dict[str, tuple[float, float, float]]:
+    """Analysis, simulation and their difference [%] of slack, tight tension and sag."""
+    out = {}
+    for name, a, s in (("slack tension", pull.slack_tension, state.slack_tension),
+                       ("tight tension", pull.tight_tension, state.tight_tension),
+                       ("sag", pull.return_sag, state.return_sag)):
+        out[name] = (float(a), float(s), 100.0 * (s - a) / a if a else math.nan)
+    return out
