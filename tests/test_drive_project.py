@@ -443,7 +443,8 @@ def test_examples_write_every_quantity_with_its_unit(name):
     data = tomllib.loads((root / f"{name}.toml").read_text(encoding="utf-8"))
     dimensionless = {"teeth", "service_factor", "slack_sag_ratio", "required_static_safety",
                      "elongation_limit", "links", "strands", "direction", "side", "adhesion",
-                     "rims", "hardness", "wear_factor"}
+                     "rims", "hardness", "wear_factor", "chain_friction", "material_friction",
+                     "return_friction", "head_share", "efficiency"}
     assert is_dimensional("m") and not is_dimensional("")
 
     def walk(node, key=""):
