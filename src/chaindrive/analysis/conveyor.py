@@ -303,15 +303,16 @@ def conveyor_pull(drive: Drive, layout: DriveLayout | None = None) -> ConveyorPu
         tau_in, tau_out = _offsets_round_wheel(walk, spans, wrap, iw, head, tail, head_force, tail_force)
         ea = _axial_stiffness(drive)
         k = float(tens.stiffness) if tens.kind == "spring" else 0.0
+        force0 = float(tens.force)
 
         def residual(s0: float) -> float:
             pos, ten, _, excess, _, _ = profile(s0)
             stretch = float(np.sum(0.5 * (ten[1:] + ten[:-1]) * np.diff(pos))) / ea
             travel = (stretch - excess) / gproj
-            return float(tens.force) - k * travel - _chain_on_slide(s0, tau_in, tau_out, u_in, u_out, d)
+            return force0 - k * travel - _chain_on_slide(s0, tau_in, tau_out, u_in, u_out, d)
 
         lo = lower
-        hi = max(2.0 * lo + 1.0, float(tens.force) / gproj * 4.0 + abs(tau_in) + abs(tau_out) + 1.0)
+        hi = max(2.0 * lo + 1.0, force0 / gproj * 4.0 + abs(tau_in) + abs(tau_out) + 1.0)
         for _ in range(60):
             if residual(hi) < 0:
                 break

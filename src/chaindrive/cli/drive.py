@@ -31,7 +31,8 @@ def new_command(
     kind: str = typer.Option(
         "roller", "--kind", "-k",
         help="Template: roller (ISO 606 16B industrial drive), mining (Dolipiński et al.: 18x64 "
-             "chain, 8-pocket wheels, tensioner, tangential guide) or crawler (Sharipov: "
+             "chain, 8-pocket wheels, tensioner, tangential guide), conveyor (a 30 m scraper "
+             "conveyor with its [conveyor] table: pans, material, drives) or crawler (Sharipov: "
              "tracked-tractor drive wheel).",
     ),
     force: bool = typer.Option(False, "--force", help="Overwrite an existing file."),

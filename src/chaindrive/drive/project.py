@@ -678,6 +678,60 @@ wheel = "drive"
 kind = "tangential"             # guide line tangent to the pitch circle, H = R (Dolipiński et al.)
 end_distance = "0.256 m"        # l, Dolipiński et al. worked case
 """,
+    "conveyor": _HEAD + """# A scraper conveyor: the [conveyor] table gives the pans, the material and the drives;
+# `chaindrive analyze` then computes the chain pull along the whole loop.
+
+[drive]
+name = "Scraper conveyor, 30 m"
+description = "Round link chain 18x64 (DIN 22252) on two 8-pocket wheels 30 m apart, the return strand hanging from a spring-loaded pocket idler behind the head"
+speed = "5 rad/s"               # chain speed about 0.82 m/s
+required_static_safety = 3.5    # mining link chains run at lower static safety than roller chains
+elongation_limit = 0.02         # DIN 22252 chains are replaced at about 2 % elongation
+
+[chain]
+name = "18x64"                  # DIN 22252, t = 64 mm, d = 18 mm
+
+[load]
+power = "40 kW"                 # installed power of the head drive
+service_factor = 1.5            # heavy shock
+
+[[wheels]]
+name = "drive"
+kind = "pocket_wheel"
+teeth = 8                       # pockets
+position = ["0 m", "0 m"]
+driving = true
+
+[[wheels]]
+name = "tensioner"
+kind = "idler"
+teeth = 6                       # pocket idler inside the loop, pressing the return strand down
+position = ["1.2 m", "-0.4 m"]
+
+[[wheels]]
+name = "tail"
+kind = "pocket_wheel"
+teeth = 8
+position = ["30 m", "0 m"]
+
+[tensioner]
+wheel = "tensioner"
+mass = "60 kg"                  # reduced to the tensioner axis
+stiffness = "200 kN/m"
+kind = "spring"
+direction = [0, -1]             # travel that takes up slack
+force = "5 kN"                  # spring force when the unstretched chain just fits
+
+[conveyor]
+chain_friction = 0.4            # chain on steel pans, dry (chain makers: 0.35-0.45)
+material_friction = 0.6         # coal on steel pans
+material_load = "100 kg/m"      # or capacity = "300 t/h" (material load = capacity / chain speed)
+inclination = "0 deg"           # positive: the head higher than the tail
+return_strand = "free"          # "supported": on the bottom pans; "free": hanging
+head_share = 1.0                # a tail drive takes the rest
+minimum_tension = "2 kN"        # wanted at every sprocket exit
+efficiency = 0.9                # gearbox and coupling
+""",
     "crawler": _HEAD + """
 [drive]
 name = "Tracked tractor drive wheel (Sharipov)"
@@ -740,7 +794,7 @@ direction = [1, 0]
 
 
 def template(kind: str = "roller") -> str:
-    """Commented project template: ``"roller"``, ``"mining"`` or ``"crawler"``.
+    """Commented project template: ``"roller"``, ``"mining"``, ``"conveyor"`` or ``"crawler"``.
 
     Examples
     --------

@@ -19,18 +19,21 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from .._results import Result, quantity
+from .._validation import check_nonnegative
 from ..errors import InputError
 from .model import SimGuide, SimulationModel
 
 if TYPE_CHECKING:
     from ..analysis.conveyor import ConveyorPull
     from ..drive.model import Drive
+    from ..motor import Motor
     from .run import SimulationResult
 
 #: Clearance of a pan below the tangent line of its span, in bar (roller) radii.
 PAN_GAP = 0.1
 
-__all__ = ["conveyor_pans", "SteadyState", "steady_state", "peak_tension_envelope", "span_kinds"]
+__all__ = ["conveyor_pans", "SteadyState", "steady_state", "peak_tension_envelope", "span_kinds", "StartUp",
+           "start_up", "path_envelope", "compare"]
 
 
 def span_kinds(model: SimulationModel, drive: Drive) -> list[str]:
@@ -225,3 +228,137 @@ def compare(pull: ConveyorPull, state: SteadyState) -> dict[str, tuple[float, fl
                        ("sag", pull.return_sag, state.return_sag)):
         out[name] = (float(a), float(s), 100.0 * (s - a) / a if a else math.nan)
     return out
+
+
+@dataclass(frozen=True)
+class StartUp(Result):
+    """A conveyor's start-up (or stop) in the simulation (:func:`start_up`).
+
+    Attributes
+    ----------
+    time : ndarray
+        [s].
+    chain_speed : ndarray
+        Mean chain speed at the head, ``n t ω / 2π`` [m/s].
+    drive_torque : ndarray
+        Torque of the head's motor (Kloss curve) or, at prescribed speed, that of the
+        chain on the head, reversed [N m].
+    tight_tension, slack_tension : ndarray
+        Arriving at and leaving the head [N].
+    envelope_position : ndarray
+        Position along the path from the head's exit [m].
+    envelope_peak, envelope_low : ndarray
+        Highest and lowest tension seen at that path position [N].
+    steady_tension : ndarray
+        Tension along the path at the end of the run [N].
+    peak_tension, peak_position, peak_time : float
+        The highest tension [N], where along the path [m] and when [s].
+    """
+
+    time: np.ndarray = quantity("s")
+    chain_speed: np.ndarray = quantity("m/s")
+    drive_torque: np.ndarray = quantity("N*m")
+    tight_tension: np.ndarray = quantity("N")
+    slack_tension: np.ndarray = quantity("N")
+    envelope_position: np.ndarray = quantity("m")
+    envelope_peak: np.ndarray = quantity("N")
+    envelope_low: np.ndarray = quantity("N")
+    steady_tension: np.ndarray = quantity("N")
+    peak_tension: float = quantity("N")
+    peak_position: float = quantity("m", display="m")
+    peak_time: float = quantity("s")
+
+
+def path_envelope(result: SimulationResult, model: SimulationModel
+                  ) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, int, int]:
+    """Tension by position along the path (space-fixed), from the head's exit.
+
+    In every record the link nearest the head's exit tangent point is path position 0
+    and link ``k + j`` sits at ``j`` mean link lengths along the path.
+
+    Returns
+    -------
+    position, peak, low, last : ndarray (N,)
+        [m], [N], [N], [N]; plus the record index and path index of the peak.
+    """
+    from .run import _tangent
+
+    c = result.wheel_centres
+    radii = model.signed_radii()
+    p_out, _, u_out, _ = _tangent(c[0], radii[0], c[1], radii[1])
+    k = _link_nearest(result.positions, p_out + 0.5 * model.pitch * u_out)
+    n = result.tension.shape[1]
+    idx = (k[:, None] + np.arange(n)[None, :]) % n
+    along = np.take_along_axis(result.tension, idx, axis=1)
+    peak_at = np.unravel_index(int(np.argmax(along)), along.shape)
+    return (np.arange(n) * model.pitch, np.max(along, axis=0), np.min(along, axis=0), along[-1],
+            int(peak_at[0]), int(peak_at[1]))
+
+
+def start_up(drive: Drive, duration: float, *, motor: Motor | None = None, motor_inertia: float = 0.0,
+             ramp_time: float = 0.0, stop_time: float = 0.0, stop_ramp: float = 0.0, ripple: float = 0.0,
+             ripple_frequency: float = 0.0, samples: int = 1500,
+             ) -> tuple[StartUp, SimulationResult, SimulationModel]:
+    """Start (and optionally stop) a conveyor from rest with a time-varying head drive.
+
+    With ``motor`` the head wheel is driven by it (Kloss curve, switched on at ``t = 0``,
+    off at ``stop_time``; ``motor_inertia`` [kg m²] is the motor's rotor and coupling
+    reduced to the head shaft, added to the wheel's); without, the head follows a
+    prescribed speed: a linear ramp over ``ramp_time`` [s], down to 0 over ``stop_ramp``
+    from ``stop_time``. ``ripple`` (relative amplitude) and ``ripple_frequency`` [rad/s]
+    modulate the motor torque (or the prescribed speed).
+
+    Parameters
+    ----------
+    drive : chaindrive.drive.Drive
+        A conveyor (with ``[conveyor]``).
+    duration : float
+        Simulated time [s].
+    motor, motor_inertia, ramp_time, stop_time, stop_ramp, ripple, ripple_frequency
+        As above.
+    samples : int
+        Records kept.
+
+    Returns
+    -------
+    (StartUp, SimulationResult, SimulationModel)
+    """
+    import dataclasses
+
+    from .from_drive import model_from_drive
+    from .run import simulate
+
+    check_nonnegative("motor_inertia", motor_inertia, "kg m^2")
+    model = model_from_drive(drive, ramp_time=ramp_time)
+    head = model.wheels[0]
+    if motor is not None:
+        head = dataclasses.replace(head, mode="motor", motor=motor, inertia=head.inertia + motor_inertia,
+                                   stop_time=stop_time, ripple=ripple, ripple_frequency=ripple_frequency)
+    else:
+        head = dataclasses.replace(head, stop_time=stop_time, stop_ramp=stop_ramp, ripple=ripple,
+                                   ripple_frequency=ripple_frequency)
+    model.wheels[0] = head
+    result = simulate(model, duration, samples=samples)
+    seats = model.seats_per_turn(head.teeth)
+    omega = result.wheel_speed[:, 0]
+    chain_speed = omega * seats * model.pitch / (2 * math.pi)
+    if motor is not None:
+        torque = np.where((stop_time <= 0) | (result.time < stop_time), motor.torque(omega), 0.0)
+        if ripple:
+            torque = torque * (1.0 + ripple * np.sin(ripple_frequency * result.time))
+    else:
+        torque = -result.wheel_torque[:, 0]
+    from .run import _tangent
+
+    c = result.wheel_centres
+    radii = model.signed_radii()
+    nw = len(model.wheels)
+    p_out, _, u_out, _ = _tangent(c[0], radii[0], c[1], radii[1])
+    _, p_in, u_in, _ = _tangent(c[nw - 1], radii[nw - 1], c[0], radii[0])
+    rows = np.arange(result.time.size)
+    step = 6.0 * model.pitch
+    slack = result.tension[rows, _link_nearest(result.positions, p_out + step * u_out)]
+    tight = result.tension[rows, _link_nearest(result.positions, p_in - step * u_in)]
+    pos, peak, low, last, i_t, i_s = path_envelope(result, model)
+    return (StartUp(result.time, chain_speed, torque, tight, slack, pos, peak, low, last,
+                    float(peak[i_s]), float(pos[i_s]), float(result.time[i_t])), result, model)
