@@ -37,6 +37,7 @@ from ..errors import InputError
 from ..layout import GRAVITY
 from .checks import Check
 from .layout import DriveLayout, drive_layout
+from .parts import Part, PartContext, register_part
 
 __all__ = ["TensionProfile", "ConveyorPull", "conveyor_pull", "conveyor_checks", "gravity_direction",
            "RETURN_SPAN_FRACTION"]
@@ -152,7 +153,8 @@ def _head_tail(drive: Drive) -> tuple[int, int]:
 
 
 def _walk(drive: Drive, layout: DriveLayout) -> list[tuple[str, int]]:
-    """The loop in the direction of travel from the head: ("wheel", i) and ("span", j)."""
+    """The loop in the direction of travel from the head's exit: ("span", j) and ("wheel", i),
+    ending with the head's wrap."""
     n = len(drive.wheels)
     head, _ = _head_tail(drive)
     out: list[tuple[str, int]] = []
@@ -163,7 +165,7 @@ def _walk(drive: Drive, layout: DriveLayout) -> list[tuple[str, int]]:
         else:
             w = (head - step) % n
             out += [("wheel", w), ("span", (w - 1) % n)]
-    return out
+    return out[1:] + out[:1]   # from the head's exit round to the head's wrap
 
 
 def _axial_stiffness(drive: Drive) -> float:
@@ -247,8 +249,8 @@ def conveyor_pull(drive: Drive, layout: DriveLayout | None = None) -> ConveyorPu
 
     def profile(s0: float) -> tuple[np.ndarray, np.ndarray, list[float], float, float, float]:
         """Positions, tensions, wheel starts, excess length, largest free sag, lowest free tension."""
-        pos, ten, starts = [0.0], [s0 + head_force], []
-        t = s0 + head_force
+        pos, ten, starts = [0.0], [s0], []
+        t = s0
         s = 0.0
         excess = 0.0
         sag = 0.0
@@ -367,7 +369,7 @@ def _span_unit(wrap, j: int) -> np.ndarray:
 
 def _offsets(walk, spans, wrap, head, tail, head_force, tail_force):
     """``τ`` after each element of the walk (tension minus the head's exit tension)."""
-    t = head_force
+    t = 0.0
     out = []
     for kind, j in walk:
         if kind == "wheel":
@@ -392,7 +394,7 @@ def _exit_offsets(walk, spans, wrap, head, tail, head_force, tail_force) -> list
 
 def _offsets_round_wheel(walk, spans, wrap, wheel, head, tail, head_force, tail_force) -> tuple[float, float]:
     """``τ`` of the chain arriving at and leaving ``wheel``."""
-    before = head_force
+    before = 0.0
     for kind, j, t in _offsets(walk, spans, wrap, head, tail, head_force, tail_force):
         if kind == "wheel" and j == wheel:
             return before, t
@@ -422,6 +424,10 @@ def _lowest_feasible(walk, spans, q, start) -> float:
     return lo
 
 
+def _conveyor_part(ctx: PartContext) -> ConveyorPull | None:
+    return conveyor_pull(ctx.drive, ctx["layout"])
+
+
 def conveyor_checks(drive: Drive, result: ConveyorPull) -> list[Check]:
     """Lowest running tension against the stated minimum; drive power against the installed power."""
     src = "Tsubakimoto, Large size conveyor chain selection, Table 3 (chain pull); chaindrive.conveyor"
@@ -434,3 +440,8 @@ def conveyor_checks(drive: Drive, result: ConveyorPull) -> list[Check]:
                             float(drive.load.power), "W", bool(result.drive_power <= drive.load.power), src,
                             note="installed power: [load] power", relation="<="))
     return checks
+
+
+register_part(Part("conveyor", "Chain pull along the conveyor", _conveyor_part, needs=("layout",),
+                   checks=lambda ctx, result: conveyor_checks(ctx.drive, result), order=35,
+                   section="chaindrive.workflows.sections:conveyor_section"))

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 import numpy as np
 
@@ -16,6 +17,9 @@ from ._wheels import wheel_teeth
 from .checks import Check
 from .layout import DriveLayout, drive_layout, slack_span_sag, span_inclination
 from .parts import Part, PartContext, register_part
+
+if TYPE_CHECKING:
+    from .conveyor import ConveyorPull
 
 __all__ = ["DriveLoads", "drive_loads", "free_entry_acceleration", "static_safety_check", "wrap_check",
            "MINIMUM_WRAP"]
@@ -137,7 +141,7 @@ def _slack_tension(drive: Drive, layout: DriveLayout) -> tuple[float, str]:
 
 def drive_loads(drive: Drive, layout: DriveLayout | None = None, *,
                 acceleration_peak: float | None = None, acceleration_source: str = "given",
-                moving_mass: float | None = None) -> DriveLoads:
+                moving_mass: float | None = None, conveyor: ConveyorPull | None = None) -> DriveLoads:
     r"""Tight, slack, centrifugal and inertia tensions and the shaft loads of ``drive``.
 
     .. math::
@@ -163,6 +167,11 @@ def drive_loads(drive: Drive, layout: DriveLayout | None = None, *,
         Where a given ``acceleration_peak`` comes from (for the report).
     moving_mass : float, optional
         Mass moved by the polygonal action [kg]; default the whole chain.
+    conveyor : ConveyorPull, optional
+        A scraper conveyor's chain pull (:func:`chaindrive.analysis.conveyor.conveyor_pull`):
+        then the slack tension is the tension leaving the head and the effective pull
+        ``K_s`` times the head drive's force (the friction along the loop, not the
+        installed power).
 
     Returns
     -------
@@ -185,9 +194,13 @@ def drive_loads(drive: Drive, layout: DriveLayout | None = None, *,
     k = drive.driving_index
     R = float(lay.pitch_radii[k])
     v = drive.chain_speed()
-    Fe = float(F.tight_side_tension(drive.torque(), R)) * drive.load.service_factor
     Fc = float(F.centrifugal_tension(q, v))
-    Fs, src = _slack_tension(drive, lay)
+    if conveyor is not None:
+        Fe = float(conveyor.head_force) * drive.load.service_factor
+        Fs, src = float(conveyor.slack_tension), f"conveyor chain pull ({conveyor.source})"
+    else:
+        Fe = float(F.tight_side_tension(drive.torque(), R)) * drive.load.service_factor
+        Fs, src = _slack_tension(drive, lay)
     tight = Fe + Fs + Fc
     if acceleration_peak is None:
         a, asrc = free_entry_acceleration(drive), "free entry on the driving wheel, ω² R sin(δ/2) (Dolipiński et al.)"
@@ -236,10 +249,15 @@ def wrap_check(drive: Drive, layout: DriveLayout) -> Check:
 def _loads_part(ctx: PartContext) -> DriveLoads:
     entry = ctx["entry"]
     return drive_loads(ctx.drive, ctx["layout"], acceleration_peak=entry.acceleration_peak,
-                       acceleration_source=f"chaindrive.kinematics.chain_entry ({entry.driving.case.entry} entry)")
+                       acceleration_source=f"chaindrive.kinematics.chain_entry ({entry.driving.case.entry} entry)",
+                       conveyor=ctx["conveyor"])
 
 
 def _slack_sag_part(ctx: PartContext) -> float | None:
+    pull = ctx["conveyor"]
+    if pull is not None:
+        # a conveyor: the sag that matters is the free return strand's
+        return float(pull.return_sag)
     try:
         return slack_span_sag(ctx.drive, ctx["layout"], ctx["loads"].slack)
     except ChainDriveError as exc:
@@ -249,14 +267,19 @@ def _slack_sag_part(ctx: PartContext) -> float | None:
 
 def _slack_sag_checks(ctx: PartContext, sag: float) -> list[Check]:
     lay = ctx["layout"]
+    pull = ctx["conveyor"]
+    if pull is not None:
+        return [Check("sag of the free return strand", float(sag), None, "m", None,
+                      "catenary of the return strand at the conveyor's running tension (chaindrive.conveyor)",
+                      "largest sag of a free span of the return strand", relation="info")]
     span = float(lay.wrap.span_length[lay.slack_span])
     return [Check("sag of the slack span", float(sag), None, "m", None, "catenary, docs/drive.md",
                   f"{sag / span * 100:.2f} % of the span at the slack tension", relation="info")]
 
 
-register_part(Part("loads", "Loads and safety", _loads_part, needs=("layout", "entry"),
+register_part(Part("loads", "Loads and safety", _loads_part, needs=("layout", "entry", "conveyor"),
                    checks=lambda ctx, loads: [static_safety_check(ctx.drive, loads)], order=20,
                    section="chaindrive.workflows.sections:loads_section"))
-register_part(Part("slack_sag", "Sag of the slack span", _slack_sag_part, needs=("layout", "loads"),
+register_part(Part("slack_sag", "Sag of the slack span", _slack_sag_part, needs=("layout", "loads", "conveyor"),
                    checks=_slack_sag_checks, order=21, unit="m",
                    section="chaindrive.workflows.sections:layout_section"))

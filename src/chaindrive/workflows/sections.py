@@ -520,3 +520,28 @@ def build_sections(analysis: DriveAnalysis, *, figures: bool = True,
         if sec is not None:
             out.append(sec)
     return out, timings
+
+
+# --------------------------------------------------------------------------- conveyor
+def conveyor_section(a: DriveAnalysis, fig: _Figures) -> Section | None:
+    """The chain pull of a scraper conveyor: its figures, the tension along the loop, its checks."""
+    from ..analysis.parts import get_part
+
+    res = a.results.get("conveyor")
+    if res is None:
+        return None
+    part = get_part("conveyor")
+    sec = Section(part.title)
+    sec.tables.append(Table(f"{part.title} (running tension from the head's exit: {res.source})",
+                            ["quantity", "value", "unit"], _field_rows(res)))
+
+    def profile_figure() -> MatplotlibFigure:
+        from ..plotting.conveyor import conveyor_plot
+
+        return conveyor_plot(res)
+
+    fig(sec, profile_figure, "Running chain tension along the loop from the head's exit (wheels marked; "
+        "pans: friction of chain and material, free strands: catenary)", "conveyor.png")
+    _checks(sec, a, ("conveyor",))
+    sec.results = {"conveyor": part.to_json(res)}
+    return sec
