@@ -50,15 +50,14 @@ def _result_classes() -> list[type]:
 
 CLASSES = _result_classes()
 
+#: Fields whose unit is held by another field of the instance: (class, field) -> that field.
+_UNIT_FROM_FIELD = {
+    ("Check", "value"): "unit",
+    ("Check", "limit"): "unit",
+}
+
 #: Classes whose units are still being declared (the sweep goes module by module).
 _PENDING: set[str] = {
-    "chaindrive.analysis",
-    "chaindrive.analysis.checks",
-    "chaindrive.analysis.geometry",
-    "chaindrive.analysis.layout",
-    "chaindrive.analysis.loads",
-    "chaindrive.analysis.strength",
-    "chaindrive.analysis.vibration",
     "chaindrive.drive.self_regulating",
     "chaindrive.geometry.hub",
     "chaindrive.geometry.part",
@@ -71,10 +70,6 @@ _PENDING: set[str] = {
     "chaindrive.layout",
     "chaindrive.selection",
     "chaindrive.simulation.run",
-    "chaindrive.strength.bolts",
-    "chaindrive.strength.fretting",
-    "chaindrive.strength.skew",
-    "chaindrive.strength.track_tooth",
     "chaindrive.wear",
     "chaindrive.workflows.report",
 }
@@ -107,6 +102,9 @@ def test_every_numeric_field_has_a_unit(cls: type) -> None:
     missing = []
     for f in dataclasses.fields(cls):
         annotation = f.type if isinstance(f.type, str) else getattr(f.type, "__name__", str(f.type))
+        if (cls.__name__, f.name) in _UNIT_FROM_FIELD:
+            assert _UNIT_FROM_FIELD[cls.__name__, f.name] in {g.name for g in dataclasses.fields(cls)}
+            continue
         if _numeric(annotation) and cls.unit_of(f.name) is None:
             missing.append(f"{f.name}: {annotation}")
     assert not missing, f"{cls.__name__}: no unit for " + ", ".join(missing)
