@@ -237,7 +237,7 @@ def analyze_drive(drive: Drive, *, include: Iterable[str] | None = None,
             else:
                 notes.append("wear life: no wear model applies (a link chain needs wear_coefficient in [drive])")
         if "self_regulating" in want and drive.self_regulating is not None:
-            from ..drive.self_regulating import self_regulating_analysis, self_regulating_checks
+            from .self_regulating import self_regulating_analysis, self_regulating_checks
 
             sr = self_regulating_analysis(drive, drive.self_regulating)
             out["self_regulating"] = sr

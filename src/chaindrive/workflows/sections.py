@@ -403,7 +403,7 @@ def wear_section(a: DriveAnalysis, fig: _Figures) -> Section | None:
 def self_regulating_section(a: DriveAnalysis, fig: _Figures) -> Section | None:
     if a.self_regulating is None:
         return None
-    from ..drive.self_regulating import self_regulating_checks
+    from ..analysis.self_regulating import self_regulating_checks
 
     sec = Section("Self-regulating drive: tension against load and wear")
     res = a.self_regulating
