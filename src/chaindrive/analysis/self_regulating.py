@@ -1,5 +1,6 @@
-"""The self-regulating drive model (:mod:`chaindrive.self_regulating`) for a
-:class:`chaindrive.drive.Drive` with a ``[self_regulating]`` table, and its checks."""
+"""The self-regulating drive as a declared analysis part: the model of
+:mod:`chaindrive.self_regulating` for a :class:`chaindrive.drive.Drive` with a
+``[self_regulating]`` table (carrier statics over load and wear), and its checks."""
 
 from __future__ import annotations
 
@@ -13,6 +14,7 @@ from ..drive.carrier import SelfRegulatingSpec
 from ..errors import InputError
 from ..self_regulating.grid import SelfRegulatingDriveResult, self_regulating_drive
 from .checks import Check
+from .parts import Part, PartContext, register_part
 
 if TYPE_CHECKING:
     from ..drive.model import Drive
@@ -156,3 +158,20 @@ def self_regulating_checks(result: SelfRegulatingDriveResult) -> tuple[Any, ...]
     if not isinstance(result, SelfRegulatingDriveResult):
         raise InputError(f"result must be a SelfRegulatingDriveResult, got {type(result).__name__}")
     return tuple(Check(**c) for c in result.checks)
+
+
+def _self_regulating_part(ctx: PartContext) -> SelfRegulatingDriveResult | None:
+    if ctx.drive.self_regulating is None:
+        return None
+    sr = self_regulating_analysis(ctx.drive, ctx.drive.self_regulating)
+    for text in sr.warnings:
+        ctx.note(text)
+    return sr
+
+
+def _self_regulating_checks(ctx: PartContext, sr: SelfRegulatingDriveResult) -> tuple[Check, ...]:
+    return self_regulating_checks(sr)
+
+
+register_part(Part("self_regulating", "Self-regulating drive", _self_regulating_part, checks=_self_regulating_checks,
+                   order=100, section="chaindrive.workflows.sections:self_regulating_section"))
