@@ -468,7 +468,7 @@ class Drive:
         Track drive wheel strength (a mapping of its fields is accepted).
     self_regulating : object, optional
         Self-regulating drive inputs
-        (:class:`chaindrive.drive.self_regulating.SelfRegulatingSpec`).
+        (:class:`chaindrive.drive.carrier.SelfRegulatingSpec`).
     conveyor : Conveyor, optional
         Scraper conveyor: pans, material, drives (a mapping of its fields is accepted).
 
