@@ -168,7 +168,7 @@ def test_pull_balances_round_the_loop():
     assert r.drive_force == pytest.approx(r.carrying_resistance + r.return_resistance, rel=1e-12)
     # the free return is level end to end: no resistance; the carrying strand: Table 3
     assert abs(r.return_resistance) < 1e-6 * r.drive_force
-    length = r.carrying_resistance / ((14.3 * 0.4 + 50 * 0.6) * G)
+    length = r.carrying_resistance / ((13.6 * 0.4 + 50 * 0.6) * G)
     assert 97.0 < length < 100.0
     assert r.drive_power == pytest.approx(r.drive_force * r.chain_speed, rel=1e-12)
 

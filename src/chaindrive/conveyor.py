@@ -36,7 +36,7 @@ from ._validation import as_float_array, check_nonnegative, check_positive, chec
 from .errors import InputError
 from .layout import GRAVITY, _catenary_sag
 
-__all__ = ["material_mass_per_length", "strand_resistance", "drive_power", "mean_tension",
+__all__ = ["pan_end_clearance", "material_mass_per_length", "strand_resistance", "drive_power", "mean_tension",
            "FreeStrand", "free_strand", "free_strand_minimum_tension", "pretension_for_minimum"]
 
 
@@ -51,6 +51,45 @@ class FreeStrand(Result):
     sag: float = quantity("m", display="mm")
     excess_length: float = quantity("m", display="mm")
     lowest_tension: float = quantity("N")
+
+
+@finite_guard
+def pan_end_clearance(pitch_radius: ArrayLike, tip_height: ArrayLike, pitch: ArrayLike) -> FloatOrArray:
+    r"""Distance [m] from a wheel's tangent point to the end of the pan under the strand.
+
+    The pan holds the strand on the wheel's tangent line; it must stop where that line
+    enters the wheel's tip circle (radius ``R + h_a``), and one link before it:
+
+    .. math:: c = \sqrt{(R + h_a)^2 - R^2} + t
+
+    Parameters
+    ----------
+    pitch_radius : float or array_like
+        ``R`` [m].
+    tip_height : float or array_like
+        ``h_a`` [m] (a pocket wheel: ``d/2``).
+    pitch : float or array_like
+        Link length ``t`` [m].
+
+    Returns
+    -------
+    ndarray
+        [m]. Over this length at each end the strand hangs free (no pan friction, no
+        material).
+
+    References
+    ----------
+    Geometry (secant of the tip circle along the tangent line).
+
+    Examples
+    --------
+    >>> round(float(pan_end_clearance(0.16428, 0.009, 0.064)), 4)
+    0.1191
+    """
+    R = check_positive("pitch_radius", pitch_radius, "m")
+    h = check_nonnegative("tip_height", tip_height, "m")
+    t = check_positive("pitch", pitch, "m")
+    return np.sqrt((R + h) ** 2 - R**2) + t
 
 
 @finite_guard
@@ -289,8 +328,8 @@ def free_strand_minimum_tension(chord_length: float, inclination: float, mass_pe
 
     Examples
     --------
-    >>> round(free_strand_minimum_tension(100.0, 0.0, 10.0))   # ~ 0.76 q g c
-    7392
+    >>> round(free_strand_minimum_tension(100.0, 0.0, 10.0))   # ~ 0.75 q g c
+    7399
     """
     c = float(check_positive("chord_length", chord_length, "m"))
     gam = float(inclination)

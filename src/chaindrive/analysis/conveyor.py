@@ -203,8 +203,8 @@ def conveyor_pull(drive: Drive, layout: DriveLayout | None = None) -> ConveyorPu
     >>> from chaindrive.drive import Conveyor
     >>> d = dataclasses.replace(conveyor_drive(), conveyor=Conveyor(return_strand="free"))
     >>> r = conveyor_pull(d)
-    >>> round(r.carrying_resistance)     # 0.4 x 14.3 kg/m x g x 98.4 m of pans
-    5527
+    >>> round(r.carrying_resistance)     # 0.4 x 13.6 kg/m x g x 99.67 m of pans
+    5317
     """
     conv = drive.conveyor
     if conv is None:
@@ -236,11 +236,16 @@ def conveyor_pull(drive: Drive, layout: DriveLayout | None = None) -> ConveyorPu
         ang = float(wrap.span_angle[j]) + (0.0 if sign > 0 else math.pi)
         u = np.array([math.cos(ang), math.sin(ang)])
         beta = math.asin(max(-1.0, min(1.0, -float(u @ ghat))))
+        # the pan stops short of each wheel (pan_end_clearance): the ends hang free
+        ends = _pan_ends(drive, layout, j)
+        pan = max(length - ends, 1e-9)
+        free_ends = q * GRAVITY * (length - pan) * math.sin(beta)
         if j == carrying:
             spans[j] = ("carrying", length, beta, float(C.strand_resistance(
-                length, q, conv.chain_friction, beta, qm, conv.material_friction)))
+                pan, q, conv.chain_friction, beta, qm, conv.material_friction)) + free_ends)
         elif conv.return_on_pans and length >= RETURN_SPAN_FRACTION * carry_len:
-            spans[j] = ("pans", length, beta, float(C.strand_resistance(length, q, conv.return_pan_friction, beta)))
+            spans[j] = ("pans", length, beta,
+                        float(C.strand_resistance(pan, q, conv.return_pan_friction, beta)) + free_ends)
         else:
             spans[j] = ("free", length, beta, q * GRAVITY * length * math.sin(beta))
     total = sum(v[3] for v in spans.values())
@@ -353,6 +358,18 @@ def conveyor_pull(drive: Drive, layout: DriveLayout | None = None) -> ConveyorPu
         tail_power=_power(tail_force, speed, conv.efficiency), material_load=float(qm),
         return_sag=float(sag), tensioner_force=t_force, tensioner_travel=t_travel,
         chain_speed=speed, source=source)
+
+
+def _pan_ends(drive: Drive, layout: DriveLayout, span: int) -> float:
+    """Length [m] of span ``span`` (wheel ``span`` to ``span + 1``) without pan at its two ends."""
+    n = len(drive.wheels)
+    chain = drive.chain
+    if chain.bar_diameter is not None:
+        tip = 0.5 * float(chain.bar_diameter)
+    else:
+        tip = 0.5 * float(chain.roller_diameter or 0.0)
+    return sum(float(C.pan_end_clearance(float(layout.pitch_radii[w]), tip, drive.pitch))
+               for w in (span, (span + 1) % n))
 
 
 def _power(force: float, speed: float, efficiency: float) -> float:

@@ -7,6 +7,7 @@ Roller chains on sprockets and round link chains on pocket wheels (links ``t + d
 See ``docs/simulation.md`` for the model, the integrator and the validation.
 """
 
+from .examples import link_example, roller_example
 from .from_drive import (
     channel_guides,
     conveyor_drive,
@@ -20,8 +21,6 @@ from .model import (
     SimTensioner,
     SimulationModel,
     SimWheel,
-    link_example,
-    roller_example,
 )
 from .run import SimulationResult, State, assemble, simulate
 

@@ -3,7 +3,8 @@ peak-tension envelope.
 
 A pan is a :class:`~chaindrive.simulation.model.SimGuide` along a span's tangent line
 (the pin line; the bar surfaces slide on it), on the side of gravity, stopping
-``R + 3 t`` short of each wheel's tangent point so that it stays clear of the pockets.
+:func:`chaindrive.conveyor.pan_end_clearance` short of each wheel's tangent point (clear
+of the tip circle), as the analysis assumes.
 The contact is unilateral (penalty) with regularised Coulomb friction (the kernel's
 law, ``F_t = −μ F_n sat(v_t/v_ε)``); the carrying strand's pan also gets the material
 each pin in contact scrapes along it (its weight along the pan, its friction and its
@@ -20,6 +21,7 @@ import numpy as np
 
 from .._results import Result, quantity
 from .._validation import check_nonnegative
+from ..conveyor import pan_end_clearance
 from ..errors import InputError
 from .model import SimGuide, SimulationModel
 
@@ -100,8 +102,8 @@ def conveyor_pans(model: SimulationModel, drive: Drive, gravity: tuple[float, fl
         j = (i + 1) % nw
         p1, p2, u, _ = _tangent(model.wheels[i].centre, radii[i], model.wheels[j].centre, radii[j])
         length = float(np.hypot(*(p2 - p1)))
-        m1 = abs(radii[i]) + 3.0 * model.pitch
-        m2 = abs(radii[j]) + 3.0 * model.pitch
+        m1 = float(pan_end_clearance(abs(radii[i]), model.tip(model.wheels[i].teeth), model.pitch))
+        m2 = float(pan_end_clearance(abs(radii[j]), model.tip(model.wheels[j].teeth), model.pitch))
         if length - m1 - m2 < 2.0 * model.pitch:
             continue
         a = p1 + m1 * u

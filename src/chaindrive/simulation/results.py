@@ -1,0 +1,182 @@
+"""The result of a simulation run: :class:`SimulationResult` and its summary."""
+
+from __future__ import annotations
+
+import os
+from collections.abc import Sequence
+from dataclasses import dataclass, field
+from typing import TYPE_CHECKING
+
+import numpy as np
+
+from .._results import Result, quantity
+from . import _kernel as K
+from .model import SimulationModel
+from .placement import _tangent
+
+if TYPE_CHECKING:
+    from matplotlib.axes import Axes
+    from matplotlib.figure import Figure
+
+    from .run import State
+
+__all__ = ["SimulationResult", "default_probes", "tight_span", "slack_span"]
+
+
+@dataclass(frozen=True)
+class SimulationResult(Result):
+    """Time histories of a simulation (SI units), sampled every ``record_every`` steps.
+
+    Attributes
+    ----------
+    time : ndarray (R,)
+        [s].
+    probe_points : ndarray (P, 4)
+        Probe point (x, y) [m] and direction (unit vector) at which the chain speed is
+        taken (velocity component of the pin nearest the point).
+    chain_velocity : ndarray (R, P)
+        Chain speed at the probes [m/s].
+    tension : ndarray (R, N)
+        Force in each link [N] (link i joins pins i and i+1).
+    contact_force : ndarray (R, N)
+        Total normal contact force on each roller [N].
+    wheel_angle, wheel_speed, wheel_torque : ndarray (R, W)
+        Angle [rad], speed [rad/s] and torque of the chain on each wheel [N m] (for the
+        driver, minus the driving torque).
+    tensioner_position : ndarray (R, W)
+        Slide displacement of each wheel from its assembled position [m] (0 if fixed).
+    positions : ndarray (R, N, 2)
+        Pin positions [m].
+    energy : ndarray (R,)
+        Mechanical energy (kinetic + elastic + contact + gravity) [J].
+    wheel_centres : ndarray (W, 2), pitch_radii : ndarray (W,), teeth : ndarray (W,)
+    tight_span : ndarray (2, 2)
+        End points of the tight span (entering the driver) [m].
+    slack_span : ndarray (2, 2)
+        End points of the span leaving the driver [m].
+    dt : float
+        Time step [s].
+    steps : int
+    wall_time : float
+        Wall-clock time of the integration [s] (excluding assembly).
+    assembly_time : float
+        Simulated relaxation time of the assembly [s].
+    guide_segments : ndarray (G, 2, 2)
+        Start and end points of the guides' roller surfaces [m].
+    """
+
+    time: np.ndarray = quantity("s")
+    probe_points: np.ndarray = quantity("m")
+    chain_velocity: np.ndarray = quantity("m/s")
+    tension: np.ndarray = quantity("N")
+    contact_force: np.ndarray = quantity("N")
+    wheel_angle: np.ndarray = quantity("rad")
+    wheel_speed: np.ndarray = quantity("rad/s")
+    wheel_torque: np.ndarray = quantity("N*m")
+    tensioner_position: np.ndarray = quantity("m")
+    positions: np.ndarray = quantity("m")
+    energy: np.ndarray = quantity("J")
+    wheel_centres: np.ndarray = quantity("m")
+    pitch_radii: np.ndarray = quantity("m")
+    teeth: np.ndarray = quantity("1")
+    tight_span: np.ndarray = quantity("m")
+    slack_span: np.ndarray = quantity("m")
+    pitch: float = quantity("m")
+    roller_radius: float = quantity("m")
+    dt: float = quantity("s")
+    steps: int = quantity("1")
+    wall_time: float = quantity("s")
+    assembly_time: float = quantity("s")
+    guide_segments: np.ndarray = quantity("m", default_factory=lambda: np.zeros((0, 2, 2)))
+    summary: dict = field(default_factory=dict)
+    if TYPE_CHECKING:  # set by simulate(); at run time not a dataclass field (not saved)
+        final_state: State = field(init=False)
+
+    def tight_side_tension(self) -> np.ndarray:
+        """Tension of the link nearest the middle of the tight span, over time [N]."""
+        return self._span_tension(self.tight_span)
+
+    def slack_side_tension(self) -> np.ndarray:
+        """Tension of the link nearest the middle of the span leaving the driver [N]."""
+        return self._span_tension(self.slack_span)
+
+    def _span_tension(self, span) -> np.ndarray:
+        # the link nearest the span's mid-point among the links nearer to this span's line
+        # than to the other's (a deeply sagging span lies nearer another span's mid-point)
+        other = self.slack_span if span is self.tight_span else self.tight_span
+        mid = 0.5 * (span[0] + span[1])
+        pos = self.positions
+        lm = 0.5 * (pos + np.roll(pos, -1, axis=1))
+
+        def to_segment(seg):
+            u = seg[1] - seg[0]
+            t = np.clip(((lm - seg[0]) @ u) / (u @ u), 0.0, 1.0)
+            return np.sum((lm - seg[0] - t[..., None] * u) ** 2, axis=2)
+
+        d = np.sum((lm - mid) ** 2, axis=2)
+        d = np.where(to_segment(span) <= to_segment(other), d, np.inf)
+        idx = np.argmin(d, axis=1)
+        return self.tension[np.arange(len(idx)), idx]
+
+    def save_npz(self, path: str | os.PathLike[str]) -> None:
+        """Write every array (and scalars) to a ``.npz`` file."""
+        data = {k: v for k, v in self.__dict__.items() if k != "summary"}
+        np.savez_compressed(path, **data)
+
+    def plot(self, *, ax: Sequence[Axes] | None = None) -> Figure:
+        """Standard views (see :func:`chaindrive.plotting.simulation.simulation_plot`)."""
+        from ..plotting.simulation import simulation_plot
+
+        return simulation_plot(self, ax=ax)
+
+
+def _summary(res: SimulationResult, settle: float) -> dict:
+    after = res.time >= settle
+    sel: np.ndarray | slice = after if np.any(after) else slice(None)
+    v = res.chain_velocity[sel]
+    tt = res.tight_side_tension()[sel]
+    out = {
+        "duration": float(res.steps * res.dt),
+        "dt": res.dt,
+        "steps": res.steps,
+        "wall_time": res.wall_time,
+        "link_steps_per_second": res.steps * res.tension.shape[1] / max(res.wall_time, 1e-12),
+        "wall_seconds_per_simulated_second": res.wall_time / max(res.steps * res.dt, 1e-300),
+        "steady_from": settle,
+        "tight_side_tension_mean": float(np.mean(tt)),
+        "tight_side_tension_max": float(np.max(tt)),
+        "slack_side_tension_mean": float(np.mean(res.slack_side_tension()[sel])),
+        "max_link_tension": float(np.max(res.tension[sel])),
+        "max_contact_force": float(np.max(res.contact_force[sel])),
+        "wheel_speed_mean": np.mean(res.wheel_speed[sel], axis=0).tolist(),
+    }
+    if v.shape[1]:
+        out["chain_velocity_mean"] = np.mean(v, axis=0).tolist()
+        out["chain_velocity_max"] = np.max(v, axis=0).tolist()
+        out["chain_velocity_min"] = np.min(v, axis=0).tolist()
+    return out
+
+
+def default_probes(model: SimulationModel, state: State) -> np.ndarray:
+    """Probe at the middle of the tight span (entering wheel 0), along the chain."""
+    p1, p2 = tight_span(model, state)
+    u = (p2 - p1) / np.hypot(*(p2 - p1))
+    mid = 0.5 * (p1 + p2)
+    return np.array([[mid[0], mid[1], u[0], u[1]]])
+
+
+def tight_span(model: SimulationModel, state: State) -> tuple[np.ndarray, np.ndarray]:
+    """(start, end) of the span entering wheel 0 (from the last wheel) [m]."""
+    nw = len(model.wheels)
+    c = np.column_stack([state.wp[:, K.W_CX], state.wp[:, K.W_CY]])
+    radii = model.signed_radii()
+    p1, p2, _, _ = _tangent(c[nw - 1], radii[nw - 1], c[0], radii[0])
+    return p1, p2
+
+
+def slack_span(model: SimulationModel, state: State) -> tuple[np.ndarray, np.ndarray]:
+    """(start, end) of the span leaving wheel 0 (to wheel 1) [m]."""
+    c = np.column_stack([state.wp[:, K.W_CX], state.wp[:, K.W_CY]])
+    radii = model.signed_radii()
+    p1, p2, _, _ = _tangent(c[0], radii[0], c[1], radii[1])
+    return p1, p2

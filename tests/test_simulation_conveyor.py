@@ -1,0 +1,122 @@
+"""The conveyor in the simulation: pans (unilateral contact with regularised Coulomb
+friction, the scraped material), one steady state with the analysis, the time-varying
+drive (Kloss motor, stop, ripple) and the peak-tension envelope."""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+
+import numpy as np
+import pytest
+
+from chaindrive import chains
+from chaindrive.analysis.conveyor import conveyor_pull
+from chaindrive.drive.model import Conveyor, Drive, Load, Tensioner, Wheel
+from chaindrive.errors import InputError
+from chaindrive.motor import Motor
+from chaindrive.simulation import SimWheel, simulate
+from chaindrive.simulation.conveyor import compare, start_up, steady_state
+from chaindrive.simulation.from_drive import model_from_drive
+
+
+def _short(return_strand="supported", length=10.0, material=60.0, share=1.0):
+    """An 18x64 conveyor, the tail on a spring slide (how AFCs are tensioned)."""
+    wheels = (Wheel("head", "pocket_wheel", 8, (0.0, 0.0), driving=True),
+              Wheel("tail", "pocket_wheel", 8, (length, 0.0)))
+    return Drive(chain=chains.get("18x64"), wheels=wheels, speed=5.0, load=Load(power=30e3),
+                 tensioner=Tensioner("tail", 200.0, 1e6, "spring", (1.0, 0.0), 20e3),
+                 conveyor=Conveyor(return_strand=return_strand, material_load=material, head_share=share))
+
+
+def test_pans_lie_under_the_strands_on_the_side_of_gravity():
+    d = _short()
+    m = model_from_drive(d)
+    assert len(m.guides) == 2
+    radius = float(m.pitch_radii()[0])
+    for g in m.guides:
+        a, b = np.asarray(g.start), np.asarray(g.end)
+        u = (b - a) / np.hypot(*(b - a))
+        left = np.array([-u[1], u[0]])
+        assert left[1] > 0.99                      # the chain on top of the pan
+        assert abs(abs(a[1]) - radius) < 1.2 * m.roller_radius + 1e-9
+    carrying = [g for g in m.guides if g.material_mass > 0]
+    assert len(carrying) == 1 and carrying[0].start[1] > 0
+    assert carrying[0].material_mass == pytest.approx(60.0 * m.pitch)
+    # the load is the friction on the pans: no torque on the tail
+    assert [w.torque for w in m.wheels] == [0.0, 0.0]
+
+
+def test_steady_state_agrees_with_the_analysis_supported_return():
+    # one steady state: the analysis' chain pull and the simulation within 5 %
+    d = _short()
+    pull = conveyor_pull(d)
+    m = model_from_drive(d, ramp_time=0.5)
+    r = simulate(m, 2.0, samples=300)
+    state = steady_state(r, m, d, start=1.2)
+    diffs = compare(pull, state)
+    assert abs(diffs["slack tension"][2]) < 5.0
+    assert abs(diffs["tight tension"][2]) < 5.0
+    assert state.return_sag == 0.0 and pull.return_sag == 0.0
+    # regression of the analysis (a supported level return adds mu q g L)
+    assert pull.return_resistance == pytest.approx(0.4 * 6.6 * 9.80665 * (10.0 - 0.0), rel=0.05)
+
+
+@pytest.mark.slow
+def test_steady_state_free_return_30_m_example():
+    # the 30 m example of benchmarks/conveyor.py (slack, tight tension and sag within 5 %)
+    from chaindrive.drive.project import load_project
+
+    d = load_project("examples/scraper_conveyor.toml")
+    pull = conveyor_pull(d)
+    m = model_from_drive(d, ramp_time=1.5)
+    r = simulate(m, 5.0, samples=500)
+    for name, (_a, _s, diff) in compare(pull, steady_state(r, m, d, start=3.0)).items():
+        assert abs(diff) < 5.0, name
+
+
+def test_motor_start_up_reaches_its_running_slip_and_the_envelope_covers_it():
+    d = _short(length=8.0)
+    motor = Motor.rated(30e3, 5.0, rated_slip=0.05, breakdown_ratio=2.8)
+    su, res, model = start_up(d, 1.5, motor=motor, motor_inertia=50.0, samples=600)
+    pull = conveyor_pull(d)
+    # at the end the motor's torque carries the pull: T = F R on the Kloss curve
+    radius = float(model.pitch_radii()[0])
+    tail = su.time > 1.0
+    assert np.mean(su.drive_torque[tail]) == pytest.approx(pull.head_force * radius, rel=0.1)
+    assert 0.0 < np.mean(su.chain_speed[tail]) < motor.synchronous_speed * 8 * 0.064 / math.pi
+    # the envelope is the largest tension seen at each place: above the end state
+    assert np.all(su.envelope_peak >= su.steady_tension - 1e-9)
+    assert su.peak_tension == pytest.approx(float(np.max(su.envelope_peak)))
+    assert su.peak_tension >= float(np.max(res.tension[-1])) - 1e-9
+
+
+def test_prescribed_speed_stops_on_its_ramp():
+    d = _short(length=6.0)
+    su, _res, _m = start_up(d, 1.2, ramp_time=0.3, stop_time=0.6, stop_ramp=0.3, samples=240)
+    v = su.chain_speed
+    t = su.time
+    nominal = 5.0 * 16 * 0.064 / (2 * math.pi)   # n t omega / 2 pi, 2 z = 16 seats
+    assert np.max(v) == pytest.approx(nominal, rel=1e-6)
+    assert np.all(np.abs(v[t > 0.92]) < 1e-9)
+    mid = np.argmin(np.abs(t - 0.75))
+    assert v[mid] == pytest.approx(nominal * (1 - (t[mid] - 0.6) / 0.3), rel=0.05)
+
+
+@pytest.mark.parametrize("kwargs, match", [
+    (dict(mode="motor"), "motor"),
+    (dict(ripple=1.0), "ripple"),
+    (dict(stop_time=-1.0), "stop_time"),
+])
+def test_time_varying_drive_errors(kwargs, match):
+    with pytest.raises(InputError, match=match):
+        SimWheel.at((0.0, 0.0), 8, **{k: v for k, v in kwargs.items() if k == "mode"}) if "mode" in kwargs \
+            else dataclasses.replace(SimWheel.at((0.0, 0.0), 8), **kwargs)
+
+
+def test_steady_state_needs_records_after_its_start():
+    d = _short(length=6.0)
+    m = model_from_drive(d)
+    r = simulate(m, 0.01, samples=10)
+    with pytest.raises(InputError, match="no record"):
+        steady_state(r, m, d, start=1.0)
