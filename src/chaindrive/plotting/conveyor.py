@@ -105,7 +105,7 @@ def startup_plot(result: StartUp, *, ax: tuple[Axes, Axes] | None = None) -> Fig
     b.set_ylabel(f"tension [{unit}]")
     h1, l1 = a1.get_legend_handles_labels()
     h2, l2 = b.get_legend_handles_labels()
-    a1.legend(h1 + h2, l1 + l2, fontsize=8, loc="lower right")
+    a1.legend(h1 + h2, l1 + l2, fontsize=8, loc="center right")
     a1.set_title("Loaded start-up")
     a2.plot(result.envelope_position, k * np.asarray(result.envelope_peak), color="C3",
             label="peak over the start-up")
