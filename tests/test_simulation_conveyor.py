@@ -120,3 +120,13 @@ def test_steady_state_needs_records_after_its_start():
     r = simulate(m, 0.01, samples=10)
     with pytest.raises(InputError, match="no record"):
         steady_state(r, m, d, start=1.0)
+
+
+def test_cli_time_varying_drive_errors(tmp_path, capsys):
+    from chaindrive.cli import main
+
+    assert main(["simulate", "--example", "roller", "--motor", "-o", str(tmp_path / "a")]) == 2
+    assert "apply to project files" in capsys.readouterr().err
+    assert main(["simulate", "examples/scraper_conveyor.toml", "--motor-inertia", "10 kg*m**2",
+                 "-o", str(tmp_path / "b")]) == 2
+    assert "needs --motor" in capsys.readouterr().err

@@ -32,6 +32,12 @@ def simulate_command(
     frames: int = typer.Option(60, "--frames", help=f"Frames of the GIF animation, 0...{MAX_FRAMES} (dimensionless count; 0: none)."),
     no_plots: bool = typer.Option(False, "--no-plots", help="Skip PNGs and GIF."),
     as_json: bool = typer.Option(False, "--json", help="Print the summary as JSON (SI units)."),
+    motor: bool = typer.Option(False, "--motor", help="Project files: drive the driving wheel with an induction motor on the Kloss curve, rated at [load] power at the drive speed (chaindrive.motor.Motor.rated: rated slip and breakdown-torque ratio of a high-slip mining motor), switched on direct at t = 0, instead of the prescribed speed ramp."),
+    motor_inertia: str | None = typer.Option(None, "--motor-inertia", help=unit_help("With --motor: rotor and coupling inertia reduced to the driving wheel's shaft (J_motor times the gear ratio squared), added to the wheel's (default 0).", "kg*m**2", "835 kg*m**2")),
+    stop: str | None = typer.Option(None, "--stop", help=unit_help("Project files: from this time the motor is switched off (--motor) or the prescribed speed falls to rest over --stop-ramp (default: no stop).", "s", "3 s")),
+    stop_ramp: str | None = typer.Option(None, "--stop-ramp", help=unit_help("Project files: time for the prescribed speed to fall to rest after --stop (default 0: at once).", "s", "1 s")),
+    ripple: float = typer.Option(0.0, "--ripple", help="Project files: relative amplitude a of a ripple 1 + a sin(Omega t) of the motor torque (--motor) or of the prescribed speed, -1 < a < 1 (dimensionless; default 0)."),
+    ripple_frequency: str | None = typer.Option(None, "--ripple-frequency", help=unit_help("Angular frequency Omega of the --ripple (default 0).", "rad/s or Hz", "50 Hz")),
     force: bool = typer.Option(False, "--force", help="Replace an earlier run in the output directory (the results are built in a temporary folder and moved into place when complete; a failed run leaves an earlier one unchanged)."),
 ) -> None:
     """Simulate the drive: point-mass pins, elastic links (EA), penalty contact of rollers
@@ -58,6 +64,9 @@ def simulate_command(
     check_size("--frames", frames, MAX_FRAMES, minimum=0)
     if (project is None) == (example is None):
         raise InputError("give a project file or --example roller|link|conveyor (exactly one)")
+    if example is not None and (motor or stop or stop_ramp or ripple or ripple_frequency or motor_inertia):
+        raise InputError("--motor, --motor-inertia, --stop, --stop-ramp, --ripple and --ripple-frequency "
+                         "apply to project files, not to --example")
     if example is not None:
 
         def conveyor(angular_velocity: float, load_torque: float, ramp_time: float) -> Any:
@@ -89,8 +98,26 @@ def simulate_command(
         model = build(angular_velocity=w, load_torque=t, ramp_time=ramp_time)
     elif project is not None:
         from ..drive.project import load_project
+        from ..simulation.conveyor import with_drive_profile
 
-        model = model_from_drive(load_project(project), ramp_time=ramp_time)
+        drive = load_project(project)
+        model = model_from_drive(drive, ramp_time=ramp_time)
+        motor_spec = None
+        if motor:
+            from ..motor import Motor
+
+            if drive.load.power is None:
+                raise InputError("--motor needs the installed power: give [load] power in the project")
+            motor_spec = Motor.rated(float(drive.load.power), float(drive.speed))
+        elif motor_inertia is not None:
+            raise InputError("--motor-inertia needs --motor")
+        model = with_drive_profile(
+            model, motor=motor_spec,
+            motor_inertia=quantity(motor_inertia, "kg*m**2", "motor-inertia") if motor_inertia else 0.0,
+            stop_time=quantity(stop, "s", "stop") if stop else 0.0,
+            stop_ramp=quantity(stop_ramp, "s", "stop-ramp") if stop_ramp else 0.0,
+            ripple=ripple,
+            ripple_frequency=quantity(ripple_frequency, "rad/s", "ripple-frequency") if ripple_frequency else 0.0)
     else:  # refused above: exactly one of a project and --example
         raise InputError("give a project file or --example roller|link|conveyor (exactly one)")
 
@@ -115,6 +142,8 @@ def simulate_command(
     final_output = output
     with atomic_output_dir(final_output, force=force) as output:  # moved into place when complete
         _write_outputs(res, output, no_plots, frames)
+        if project is not None:
+            _write_start_up(res, model, output, no_plots)
     output = final_output
     _report(res, output, as_json)
 
@@ -139,6 +168,26 @@ def _write_outputs(res, output: Path, no_plots: bool, frames: int) -> None:
         plt.close(fig)
         if frames > 0:
             simulation_animation(res, output / "simulation.gif", frames=frames)
+
+
+def _write_start_up(res, model, output: Path, no_plots: bool) -> None:
+    """The start-up's tensions at the head and the peak-tension envelope along the path:
+    ``startup.json`` (SI units) and ``startup.png``."""
+    from ..simulation.conveyor import start_up_of
+
+    su = start_up_of(res, model)
+    data = {"peak_tension": su.peak_tension, "peak_position": su.peak_position, "peak_time": su.peak_time,
+            "envelope": {"position": su.envelope_position.tolist(), "peak": su.envelope_peak.tolist(),
+                         "low": su.envelope_low.tolist()}}
+    (output / "startup.json").write_text(json.dumps(data) + "\n")
+    if not no_plots:
+        import matplotlib.pyplot as plt
+
+        from ..plotting.conveyor import startup_plot
+
+        fig = startup_plot(su)
+        fig.savefig(output / "startup.png", dpi=100)
+        plt.close(fig)
 
 
 def _report(res, output: Path, as_json: bool) -> None:

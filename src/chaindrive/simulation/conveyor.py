@@ -35,7 +35,7 @@ if TYPE_CHECKING:
 PAN_GAP = 0.1
 
 __all__ = ["conveyor_pans", "SteadyState", "steady_state", "peak_tension_envelope", "span_kinds", "StartUp",
-           "start_up", "path_envelope", "compare"]
+           "start_up", "start_up_of", "with_drive_profile", "path_envelope", "compare"]
 
 
 def span_kinds(model: SimulationModel, drive: Drive) -> list[str]:
@@ -297,6 +297,52 @@ def path_envelope(result: SimulationResult, model: SimulationModel
             int(peak_at[0]), int(peak_at[1]))
 
 
+def with_drive_profile(model: SimulationModel, *, motor: Motor | None = None, motor_inertia: float = 0.0,
+                       stop_time: float = 0.0, stop_ramp: float = 0.0, ripple: float = 0.0,
+                       ripple_frequency: float = 0.0) -> SimulationModel:
+    """``model`` with its driving wheel (wheel 0) given a time-varying drive (:func:`start_up`)."""
+    import dataclasses
+
+    check_nonnegative("motor_inertia", motor_inertia, "kg m^2")
+    head = model.wheels[0]
+    if motor is not None:
+        head = dataclasses.replace(head, mode="motor", motor=motor, inertia=head.inertia + motor_inertia,
+                                   stop_time=stop_time, ripple=ripple, ripple_frequency=ripple_frequency)
+    else:
+        head = dataclasses.replace(head, stop_time=stop_time, stop_ramp=stop_ramp, ripple=ripple,
+                                   ripple_frequency=ripple_frequency)
+    return dataclasses.replace(model, wheels=[head, *model.wheels[1:]], guides=list(model.guides))
+
+
+def start_up_of(result: SimulationResult, model: SimulationModel) -> StartUp:
+    """The start-up quantities of a run of ``model`` (:class:`StartUp`)."""
+    from .run import _tangent
+
+    head = model.wheels[0]
+    seats = model.seats_per_turn(head.teeth)
+    omega = result.wheel_speed[:, 0]
+    chain_speed = omega * seats * model.pitch / (2 * math.pi)
+    if head.motor is not None:
+        on = (head.stop_time <= 0) | (result.time < head.stop_time)
+        torque = np.where(on, head.motor.torque(omega), 0.0)
+        if head.ripple:
+            torque = torque * (1.0 + head.ripple * np.sin(head.ripple_frequency * result.time))
+    else:
+        torque = -result.wheel_torque[:, 0]
+    c = result.wheel_centres
+    radii = model.signed_radii()
+    nw = len(model.wheels)
+    p_out, _, u_out, _ = _tangent(c[0], radii[0], c[1], radii[1])
+    _, p_in, u_in, _ = _tangent(c[nw - 1], radii[nw - 1], c[0], radii[0])
+    rows = np.arange(result.time.size)
+    step = 6.0 * model.pitch
+    slack = result.tension[rows, _link_nearest(result.positions, p_out + step * u_out)]
+    tight = result.tension[rows, _link_nearest(result.positions, p_in - step * u_in)]
+    pos, peak, low, last, i_t, i_s = path_envelope(result, model)
+    return StartUp(result.time, chain_speed, torque, tight, slack, pos, peak, low, last,
+                   float(peak[i_s]), float(pos[i_s]), float(result.time[i_t]))
+
+
 def start_up(drive: Drive, duration: float, *, motor: Motor | None = None, motor_inertia: float = 0.0,
              ramp_time: float = 0.0, stop_time: float = 0.0, stop_ramp: float = 0.0, ripple: float = 0.0,
              ripple_frequency: float = 0.0, samples: int = 1500,
@@ -313,7 +359,7 @@ def start_up(drive: Drive, duration: float, *, motor: Motor | None = None, motor
     Parameters
     ----------
     drive : chaindrive.drive.Drive
-        A conveyor (with ``[conveyor]``).
+        A conveyor (with ``[conveyor]``), or any drive.
     duration : float
         Simulated time [s].
     motor, motor_inertia, ramp_time, stop_time, stop_ramp, ripple, ripple_frequency
@@ -325,42 +371,11 @@ def start_up(drive: Drive, duration: float, *, motor: Motor | None = None, motor
     -------
     (StartUp, SimulationResult, SimulationModel)
     """
-    import dataclasses
-
     from .from_drive import model_from_drive
     from .run import simulate
 
-    check_nonnegative("motor_inertia", motor_inertia, "kg m^2")
-    model = model_from_drive(drive, ramp_time=ramp_time)
-    head = model.wheels[0]
-    if motor is not None:
-        head = dataclasses.replace(head, mode="motor", motor=motor, inertia=head.inertia + motor_inertia,
-                                   stop_time=stop_time, ripple=ripple, ripple_frequency=ripple_frequency)
-    else:
-        head = dataclasses.replace(head, stop_time=stop_time, stop_ramp=stop_ramp, ripple=ripple,
-                                   ripple_frequency=ripple_frequency)
-    model.wheels[0] = head
+    model = with_drive_profile(model_from_drive(drive, ramp_time=ramp_time), motor=motor,
+                               motor_inertia=motor_inertia, stop_time=stop_time, stop_ramp=stop_ramp,
+                               ripple=ripple, ripple_frequency=ripple_frequency)
     result = simulate(model, duration, samples=samples)
-    seats = model.seats_per_turn(head.teeth)
-    omega = result.wheel_speed[:, 0]
-    chain_speed = omega * seats * model.pitch / (2 * math.pi)
-    if motor is not None:
-        torque = np.where((stop_time <= 0) | (result.time < stop_time), motor.torque(omega), 0.0)
-        if ripple:
-            torque = torque * (1.0 + ripple * np.sin(ripple_frequency * result.time))
-    else:
-        torque = -result.wheel_torque[:, 0]
-    from .run import _tangent
-
-    c = result.wheel_centres
-    radii = model.signed_radii()
-    nw = len(model.wheels)
-    p_out, _, u_out, _ = _tangent(c[0], radii[0], c[1], radii[1])
-    _, p_in, u_in, _ = _tangent(c[nw - 1], radii[nw - 1], c[0], radii[0])
-    rows = np.arange(result.time.size)
-    step = 6.0 * model.pitch
-    slack = result.tension[rows, _link_nearest(result.positions, p_out + step * u_out)]
-    tight = result.tension[rows, _link_nearest(result.positions, p_in - step * u_in)]
-    pos, peak, low, last, i_t, i_s = path_envelope(result, model)
-    return (StartUp(result.time, chain_speed, torque, tight, slack, pos, peak, low, last,
-                    float(peak[i_s]), float(pos[i_s]), float(result.time[i_t])), result, model)
+    return start_up_of(result, model), result, model
