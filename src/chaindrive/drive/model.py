@@ -683,5 +683,6 @@ class Drive:
             "track": None if self.track is None else dataclasses.asdict(self.track),
             "self_regulating": (None if self.self_regulating is None
                                 else jsonable(self.self_regulating)),
+            "conveyor": None if self.conveyor is None else dataclasses.asdict(self.conveyor),
         }
 
