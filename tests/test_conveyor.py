@@ -211,3 +211,26 @@ def base_force():
 
 def test_no_conveyor_no_pull():
     assert conveyor_pull(conveyor_drive()) is None
+
+
+@settings(max_examples=15, deadline=None)
+@given(mu=st.floats(0.1, 0.8), mum=st.floats(0.2, 0.9), qm=st.floats(0.0, 150.0),
+       incl=st.floats(-0.15, 0.15), share=st.floats(0.3, 1.0),
+       ret=st.sampled_from(["supported", "free"]))
+def test_pull_properties(mu, mum, qm, incl, share, ret):
+    # the profile closes round the loop, the drives take the whole pull in their shares,
+    # the pretension lifts the lowest sprocket exit to the stated minimum
+    d = dataclasses.replace(load_project("examples/scraper_conveyor.toml"),
+                            conveyor=Conveyor(chain_friction=mu, material_friction=mum, material_load=qm,
+                                              inclination=incl, head_share=share, return_strand=ret))
+    try:
+        r = conveyor_pull(d)
+    except InputError as exc:               # a tensioner too weak for a steep free return
+        assert "tensioner" in str(exc) or "slack" in str(exc)
+        return
+    prof = r.tension_profile
+    assert prof.tension[-1] == pytest.approx(prof.tension[0], abs=1e-6 * r.tight_tension)
+    assert r.head_force + r.tail_force == pytest.approx(r.drive_force, rel=1e-12, abs=1e-9)
+    assert r.head_force == pytest.approx(share * r.drive_force, rel=1e-12, abs=1e-9)
+    assert np.all(np.diff(prof.position) >= 0)
+    assert r.minimum_tension == pytest.approx(float(np.min(prof.tension)))

@@ -252,8 +252,8 @@ def conveyor_pull(drive: Drive, layout: DriveLayout | None = None) -> ConveyorPu
     head_force = conv.head_share * total
     tail_force = total - head_force
 
-    def profile(s0: float) -> tuple[np.ndarray, np.ndarray, list[float], float, float, float]:
-        """Positions, tensions, wheel starts, excess length, largest free sag, lowest free tension."""
+    def profile(s0: float) -> tuple[np.ndarray, np.ndarray, list[float], float, float]:
+        """Positions, tensions, wheel starts, extra length of the free strands, largest free return sag."""
         pos, ten, starts = [0.0], [s0], []
         t = s0
         s = 0.0
@@ -283,17 +283,16 @@ def conveyor_pull(drive: Drive, layout: DriveLayout | None = None) -> ConveyorPu
             s += length
             pos.append(s)
             ten.append(t)
-        return np.array(pos), np.array(ten), starts, excess, sag, 0.0
+        return np.array(pos), np.array(ten), starts, excess, sag
 
     # the head's exit tension
-    walk_only = profile  # noqa: F841 - readability of the branches below
-    exits = _exit_offsets(walk, spans, wrap, head, tail, head_force, tail_force)
+    exits = _exit_offsets(walk, spans, head, tail, head_force, tail_force)
     lowest_offset = min(exits)
     required_s0 = conv.minimum_tension - lowest_offset
     t_force: float | None = None
     t_travel: float | None = None
     tens = drive.tensioner
-    lower = _lowest_feasible(walk, spans, q, required_s0)
+    lower = _lowest_feasible(walk, spans, q)
     if tens is not None and tens.force is not None and tens.kind in ("spring", "weight", "hydraulic"):
         iw = drive.wheel_index(tens.wheel)
         # unit vectors of the spans arriving at and leaving the wheel, in the direction of travel
@@ -307,13 +306,13 @@ def conveyor_pull(drive: Drive, layout: DriveLayout | None = None) -> ConveyorPu
         if not gproj > 1e-9:
             raise InputError("tensioner: moving its wheel along direction does not take up slack "
                              "(the chain runs straight past it)", field="tensioner.direction")
-        tau_in, tau_out = _offsets_round_wheel(walk, spans, wrap, iw, head, tail, head_force, tail_force)
+        tau_in, tau_out = _offsets_round_wheel(walk, spans, iw, head, tail, head_force, tail_force)
         ea = _axial_stiffness(drive)
         k = float(tens.stiffness) if tens.kind == "spring" else 0.0
         force0 = float(tens.force)
 
         def residual(s0: float) -> float:
-            pos, ten, _, excess, _, _ = profile(s0)
+            pos, ten, _, excess, _ = profile(s0)
             stretch = float(np.sum(0.5 * (ten[1:] + ten[:-1]) * np.diff(pos))) / ea
             travel = (stretch - excess) / gproj
             return force0 - k * travel - _chain_on_slide(s0, tau_in, tau_out, u_in, u_out, d)
@@ -328,7 +327,7 @@ def conveyor_pull(drive: Drive, layout: DriveLayout | None = None) -> ConveyorPu
             raise InputError("conveyor: the tensioner cannot hold the chain off the ground "
                              "(raise tensioner.force)", field="tensioner.force")
         s0 = brentq(residual, lo, hi, xtol=1e-6, rtol=1e-12)
-        pos, ten, _, excess, _, _ = profile(s0)
+        pos, ten, _, excess, _ = profile(s0)
         stretch = float(np.sum(0.5 * (ten[1:] + ten[:-1]) * np.diff(pos))) / ea
         t_travel = (stretch - excess) / gproj
         t_force = _chain_on_slide(s0, tau_in, tau_out, u_in, u_out, d)
@@ -340,7 +339,7 @@ def conveyor_pull(drive: Drive, layout: DriveLayout | None = None) -> ConveyorPu
     else:
         s0 = max(required_s0, lower)
         source = "stated minimum tension at every sprocket exit"
-    pos, ten, starts, _, sag, _ = profile(s0)
+    pos, ten, starts, _, sag = profile(s0)
     i_min = int(np.argmin(ten))
     pos_req, ten_req, *_ = profile(max(required_s0, lower))
     pre = C.mean_tension(pos_req, ten_req)
@@ -384,7 +383,7 @@ def _span_unit(wrap, j: int) -> np.ndarray:
     return np.array([math.cos(a), math.sin(a)])
 
 
-def _offsets(walk, spans, wrap, head, tail, head_force, tail_force):
+def _offsets(walk, spans, head, tail, head_force, tail_force):
     """``τ`` after each element of the walk (tension minus the head's exit tension)."""
     t = 0.0
     out = []
@@ -400,19 +399,19 @@ def _offsets(walk, spans, wrap, head, tail, head_force, tail_force):
     return out
 
 
-def _exit_offsets(walk, spans, wrap, head, tail, head_force, tail_force) -> list[float]:
+def _exit_offsets(walk, spans, head, tail, head_force, tail_force) -> list[float]:
     """``τ`` where the chain leaves the head and (a driving tail) the tail."""
     out = [0.0]
-    for kind, j, t in _offsets(walk, spans, wrap, head, tail, head_force, tail_force):
+    for kind, j, t in _offsets(walk, spans, head, tail, head_force, tail_force):
         if kind == "wheel" and j == tail and tail_force != 0.0:
             out.append(t)
     return out
 
 
-def _offsets_round_wheel(walk, spans, wrap, wheel, head, tail, head_force, tail_force) -> tuple[float, float]:
+def _offsets_round_wheel(walk, spans, wheel, head, tail, head_force, tail_force) -> tuple[float, float]:
     """``τ`` of the chain arriving at and leaving ``wheel``."""
     before = 0.0
-    for kind, j, t in _offsets(walk, spans, wrap, head, tail, head_force, tail_force):
+    for kind, j, t in _offsets(walk, spans, head, tail, head_force, tail_force):
         if kind == "wheel" and j == wheel:
             return before, t
         before = t
@@ -425,7 +424,7 @@ def _chain_on_slide(s0, tau_in, tau_out, u_in, u_out, d) -> float:
     return float((s0 + tau_in) * (u_in @ d) - (s0 + tau_out) * (u_out @ d))
 
 
-def _lowest_feasible(walk, spans, q, start) -> float:
+def _lowest_feasible(walk, spans, q) -> float:
     """Smallest head exit tension [N] for which every free span hangs as a catenary
     (:func:`chaindrive.conveyor.free_strand_minimum_tension`, 1 % above it), at least 1 N."""
     lo = 1.0
@@ -436,8 +435,8 @@ def _lowest_feasible(walk, spans, q, start) -> float:
             if what == "free":
                 lo = max(lo, 1.01 * C.free_strand_minimum_tension(length, beta, q) - t)
             t += dt
-        # tension offsets of the wheels are added by the caller's walk; the free spans of
-        # a conveyor lie on the return, after the head and before the tail drive
+        # (a tail drive's drop is not followed here: the free spans of a conveyor lie on
+        # the return, after the head and before the tail)
     return lo
 
 
