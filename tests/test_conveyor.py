@@ -234,3 +234,27 @@ def test_pull_properties(mu, mum, qm, incl, share, ret):
     assert r.head_force == pytest.approx(share * r.drive_force, rel=1e-12, abs=1e-9)
     assert np.all(np.diff(prof.position) >= 0)
     assert r.minimum_tension == pytest.approx(float(np.min(prof.tension)))
+
+
+def test_long_drive_without_conveyor_table_gets_a_note():
+    from chaindrive.analysis import analyze_drive
+
+    d = dataclasses.replace(load_project("examples/long_conveyor.toml"), conveyor=None)
+    a = analyze_drive(d, include=["conveyor"])
+    assert a.conveyor is None
+    assert any("[conveyor] table" in w for w in a.warnings)
+    assert not analyze_drive(load_project("examples/roller_industrial.toml"), include=["conveyor"]).warnings
+
+
+def test_analysis_part_in_results_json():
+    from chaindrive.analysis import analyze_drive
+
+    a = analyze_drive(load_project("examples/scraper_conveyor.toml"), include=["conveyor", "loads", "slack_sag"])
+    data = a.to_dict()["conveyor"]
+    assert set(data["tension_profile"]) == {"position", "tension"}
+    for key in ("minimum_tension", "pretension", "drive_power"):
+        assert isinstance(data[key], float)
+    # the conveyor feeds the loads: slack = tension leaving the head; the sag = the return's
+    assert a.loads.slack == pytest.approx(a.conveyor.slack_tension)
+    assert a.slack_sag == pytest.approx(a.conveyor.return_sag)
+    assert [c.part for c in a.checks if c.part == "conveyor"]

@@ -42,6 +42,10 @@ from .parts import Part, PartContext, register_part
 __all__ = ["TensionProfile", "ConveyorPull", "conveyor_pull", "conveyor_checks", "gravity_direction",
            "RETURN_SPAN_FRACTION"]
 
+#: A drive with a span longer than this [m] and no [conveyor] table gets a note (it may be
+#: a conveyor described without its pans).
+LONG_SPAN = 10.0
+
 #: A return span lies on the bottom pans when longer than this fraction of the
 #: carrying strand (shorter spans, round a tensioner, hang free).
 RETURN_SPAN_FRACTION = 0.25
@@ -441,7 +445,16 @@ def _lowest_feasible(walk, spans, q) -> float:
 
 
 def _conveyor_part(ctx: PartContext) -> ConveyorPull | None:
-    return conveyor_pull(ctx.drive, ctx["layout"])
+    drive = ctx.drive
+    if drive.conveyor is None:
+        spans = ctx["layout"].wrap.span_length
+        if float(np.max(spans)) > LONG_SPAN:
+            ctx.note(f"a span of {float(np.max(spans)):.3g} m: if this drive is a conveyor, describe its pans "
+                     "and material in a [conveyor] table (docs/conveyor.md); without it the slack tension "
+                     "comes from the tensioner force or the sag rule alone (no chain length, friction or "
+                     "material) and a simulation runs without pans")
+        return None
+    return conveyor_pull(drive, ctx["layout"])
 
 
 def conveyor_checks(drive: Drive, result: ConveyorPull) -> list[Check]:
