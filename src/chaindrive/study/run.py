@@ -225,6 +225,13 @@ def run_batch(batch: Sequence[tuple[int, str, dict]], *, base: dict, outputs: Se
     [(0, 'k0', True), (1, 'k1', False)]
     """
     worker = f"{socket.gethostname()}:{os.getpid()}"
+    if simulation is None:  # the analysis parts of many variants together (chaindrive.study.batch)
+        from .batch import evaluate_batch
+
+        rows = evaluate_batch(base, [inputs for _, _, inputs in batch], outputs, parts=parts)
+        for (number, key, _), row in zip(batch, rows, strict=True):
+            row.update(key=key, variant=number, worker=worker)
+        return rows
     rows = []
     for number, key, inputs in batch:
         row = evaluate_variant(base, inputs, outputs, parts=parts, simulation=simulation)
