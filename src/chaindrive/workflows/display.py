@@ -47,6 +47,8 @@ CONVERSIONS: dict[tuple[str, str], float] = {
     ("m^2", "mm^2"): 1e6,
     ("m^3", "cm^3"): 1e6,
     ("1", "%"): 100.0,
+    ("rad", "arcmin"): 180.0 * 60.0 / math.pi,
+    ("N/m", "kN/m"): 1e-3,
 }
 
 
