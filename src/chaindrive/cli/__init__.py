@@ -54,8 +54,37 @@ def _one_line(text: object) -> str:
     return lines[0] if lines else ""
 
 
+_LONG_NUMBER = None
+
+
+def shorten_numbers(text: str) -> str:
+    """Numbers of more than 15 digits in a message written with 6 significant digits.
+
+    Examples
+    --------
+    >>> shorten_numbers("ratio must lie in (0, 10], got " + "1" + "0" * 300 + ".0")
+    'ratio must lie in (0, 10], got 1e+300'
+    >>> shorten_numbers("teeth 1000000")
+    'teeth 1000000'
+    """
+    import re
+
+    global _LONG_NUMBER
+    if _LONG_NUMBER is None:
+        _LONG_NUMBER = re.compile(r"(?<![\w.])-?\d{16,}(?:\.\d*)?(?:[eE][-+]?\d+)?(?![\w.])")
+    return _LONG_NUMBER.sub(lambda m: f"{float(m.group()):.6g}", text)
+
+
+def _notes(exc: BaseException | None) -> str:
+    notes = []
+    while exc is not None:
+        notes += [n for n in getattr(exc, "__notes__", []) or [] if n not in notes]
+        exc = exc.__cause__ or exc.__context__
+    return "".join(f"; {n}" for n in notes)
+
+
 def _cap(text: object, limit: int = MAX_ERROR_LINES) -> str:
-    lines = str(text).splitlines() or [""]
+    lines = shorten_numbers(str(text)).splitlines() or [""]
     if len(lines) <= limit:
         return "\n".join(lines)
     return "\n".join(lines[:limit] + [f"... and {len(lines) - limit} more"])
@@ -102,8 +131,8 @@ def main(argv: list[str] | None = None) -> int:
             return code
         print(f"error: {code}", file=sys.stderr)
         return 2
-    except KeyboardInterrupt:
-        print("interrupted", file=sys.stderr)
+    except KeyboardInterrupt as exc:  # the note says what is kept
+        print(f"interrupted{_notes(exc)}", file=sys.stderr)
         return 130
     except BrokenPipeError:  # e.g. `chaindrive chains | head`
         try:
@@ -116,14 +145,20 @@ def main(argv: list[str] | None = None) -> int:
               "magnitudes and units", file=sys.stderr)
         return 2
     except OSError as exc:  # a file or folder the command was given
-        where = f": {exc.filename!r}" if getattr(exc, "filename", None) else ""
-        print(f"error: {exc.strerror or _one_line(exc) or type(exc).__name__}{where}", file=sys.stderr)
+        from .._io import show_path
+
+        where = f": {show_path(exc.filename)}" if getattr(exc, "filename", None) else ""
+        print(f"error: {exc.strerror or _one_line(exc) or type(exc).__name__}{where}{_notes(exc)}",
+              file=sys.stderr)
         return 2
     except Exception as exc:  # click usage errors in non-standalone mode, and the unexpected
         if hasattr(exc, "show") and hasattr(exc, "exit_code"):  # click.ClickException
             exc.show()
             return 2
-        if type(exc).__name__ == "Abort":
+        if type(exc).__name__ == "Abort":  # click's answer to Ctrl-C (or EOF at a prompt)
+            if isinstance(exc.__context__, KeyboardInterrupt):
+                print(f"interrupted{_notes(exc.__context__)}", file=sys.stderr)
+                return 130
             return 1
         if debug:
             traceback.print_exc()
