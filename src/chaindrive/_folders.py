@@ -253,15 +253,18 @@ def _lock_path(real: Path) -> Path:
     return real.parent / f".{real.name[:200]}.lock"
 
 
-def _holder(fd: int) -> str:
+def _holder(fd: int) -> tuple[str, str]:
+    """(what, pid) written in a held lock file, e.g. ``("study", "1234")``."""
     try:
-        pid = os.pread(fd, 32, 0).decode("ascii", "replace").strip()
+        words = os.pread(fd, 64, 0).decode("ascii", "replace").split()
     except OSError:
-        return ""
-    return f" (process {pid})" if pid.isdigit() else ""
+        return "run", ""
+    pid = words[0] if words and words[0].isdigit() else ""
+    what = words[1] if len(words) > 1 and words[1].isalpha() else "run"
+    return what, pid
 
 
-def _acquire(lock: Path, message: str) -> int | None:
+def _acquire(lock: Path, message: str, what: str = "run") -> int | None:
     """Take the exclusive lock on ``lock`` (created when missing) or raise ``InputError(message)``."""
     if fcntl is None:  # pragma: no cover - Windows
         return None
@@ -273,10 +276,10 @@ def _acquire(lock: Path, message: str) -> int | None:
         try:
             fcntl.flock(fd, fcntl.LOCK_EX | fcntl.LOCK_NB)
         except OSError as exc:
-            who = _holder(fd)
+            kind, pid = _holder(fd)
             os.close(fd)
             if exc.errno in (errno.EWOULDBLOCK, errno.EAGAIN, errno.EACCES):
-                raise InputError(message.format(who=who)) from None
+                raise InputError(message.format(what=kind, who=f" (process {pid})" if pid else "")) from None
             return None  # locks not supported on this file system
         try:  # the holder before us may have removed the file: lock the current one
             same = os.stat(lock).st_ino == os.fstat(fd).st_ino
@@ -285,7 +288,7 @@ def _acquire(lock: Path, message: str) -> int | None:
         if same:
             with contextlib.suppress(OSError):
                 os.ftruncate(fd, 0)
-                os.pwrite(fd, f"{os.getpid()}\n".encode(), 0)
+                os.pwrite(fd, f"{os.getpid()} {what}\n".encode(), 0)
             return fd
         os.close(fd)
 
@@ -348,10 +351,10 @@ def folder_lock(path: str | os.PathLike, *, option: str = "--output", what: str 
     held = _HELD.get(key)
     if held is None:
         made = _make_parents(real.parent)
-        message = (f"{option}: the folder {show_path(path)} is in use by another chaindrive {what}"
-                   "{who}; wait until it finishes, or give another folder")
+        message = (f"{option}: the folder {show_path(path)} is in use by another chaindrive "
+                   "{what}{who}; wait until it finishes, or give another folder")
         try:
-            fd = _acquire(lock, message)
+            fd = _acquire(lock, message, what)
         except BaseException:
             _remove_empty(made)
             raise
@@ -467,17 +470,18 @@ def claim_output_dir(path: str | os.PathLike, *, force: bool, option: str = "--o
         had_run = _is_run(real)
         try:
             yield Path(os.fspath(path))
-        except KeyboardInterrupt as exc:
-            notes = getattr(exc, "__notes__", [])
-            if not any("nothing was written" in n for n in notes):
-                exc.add_note(_nothing_note(path, had_run))
+        except BaseException as exc:  # Ctrl-C (KeyboardInterrupt or the command line's own)
+            if not isinstance(exc, (Exception, SystemExit, GeneratorExit)):
+                notes = getattr(exc, "__notes__", [])
+                if not any("nothing was written" in n for n in notes):
+                    exc.add_note(_nothing_note(path, had_run))
             raise
 
 
 def _map_filename(exc: OSError, tmp: Path, text: str) -> str:
     name = getattr(exc, "filename", None)
     if not name:
-        return show_path(text)
+        return f"the results into {show_path(text)}"
     with contextlib.suppress(ValueError, TypeError):
         return show_path(Path(text) / Path(os.fspath(name)).relative_to(tmp))
     return show_path(os.fspath(name))
@@ -550,7 +554,8 @@ def atomic_output_dir(path: str | os.PathLike, *, force: bool = False,
                                  f"{_nothing_note(text, had_run)}") from None
             except BaseException as exc:
                 notes = getattr(exc, "__notes__", [])
-                if hasattr(exc, "add_note") and not any("nothing was written" in n for n in notes):
+                if not isinstance(exc, (SystemExit, GeneratorExit)) and not any(
+                        "nothing was written" in n for n in notes):
                     exc.add_note(_nothing_note(text, had_run))
                 raise
             moved = _move_into_place(tmp, real, text, force=force, option=option)

@@ -102,6 +102,15 @@ def _split_debug(argv: list[str]) -> tuple[list[str], bool]:
     return out, debug
 
 
+class Interrupted(BaseException):
+    """Ctrl-C (SIGINT) during a command; raised instead of KeyboardInterrupt so that typer
+    does not swallow it, and the message can say what is kept."""
+
+
+def _interrupt(signum, frame):  # noqa: ARG001
+    raise Interrupted
+
+
 def main(argv: list[str] | None = None) -> int:
     """Entry point of the ``chaindrive`` command; returns the exit code.
 
@@ -111,13 +120,29 @@ def main(argv: list[str] | None = None) -> int:
     traceback).
     """
     import os
-    import traceback
     import warnings
 
     argv = list(sys.argv[1:] if argv is None else argv)
     argv, debug = _split_debug(argv)
     debug = debug or os.environ.get("CHAINDRIVE_DEBUG", "") not in ("", "0")
+    import signal
+    import threading
+
     warnings.showwarning = _show_warning
+    previous = None
+    if threading.current_thread() is threading.main_thread():
+        previous = signal.signal(signal.SIGINT, _interrupt)
+    try:
+        return _main(argv, debug)
+    finally:
+        if previous is not None:
+            signal.signal(signal.SIGINT, previous)
+
+
+def _main(argv: list[str], debug: bool) -> int:
+    import os
+    import traceback
+
     try:
         rv = app(args=argv, prog_name="chaindrive", standalone_mode=False)
     except ChainDriveError as exc:
@@ -131,7 +156,7 @@ def main(argv: list[str] | None = None) -> int:
             return code
         print(f"error: {code}", file=sys.stderr)
         return 2
-    except KeyboardInterrupt as exc:  # the note says what is kept
+    except (KeyboardInterrupt, Interrupted) as exc:  # the note says what is kept
         print(f"interrupted{_notes(exc)}", file=sys.stderr)
         return 130
     except BrokenPipeError:  # e.g. `chaindrive chains | head`
