@@ -145,8 +145,14 @@ def _main(argv: list[str], debug: bool) -> int:
 
     try:
         rv = app(args=argv, prog_name="chaindrive", standalone_mode=False)
-    except ChainDriveError as exc:
-        print(f"error: {_cap(exc)}", file=sys.stderr)
+    except ChainDriveError as exc:  # named by the option the user typed, not the formula's parameter
+        from .app import command_options, name_options
+
+        try:
+            text = name_options(str(exc), *command_options(argv))
+        except Exception:  # noqa: BLE001 - the message as raised is still an answer
+            text = str(exc)
+        print(f"error: {_cap(text)}", file=sys.stderr)
         return 2
     except SystemExit as exc:  # typer/click exits
         code = exc.code
