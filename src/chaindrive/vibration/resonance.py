@@ -139,7 +139,7 @@ def reduced_tensioner(method: str = "sliding", **parameters: float) -> ReducedTe
 # --------------------------------------------------------------------------- excitation
 @finite_guard
 def excitation_multipliers(ratio: float = 1.0, teeth: int | None = None, *,
-                           link_chain: bool = False) -> dict[str, float]:
+                           link_chain: bool = False, harmonics: bool = False) -> dict[str, float]:
     r"""Exciting frequencies as multiples of the driving sprocket speed ω1.
 
     Parameters
@@ -147,45 +147,60 @@ def excitation_multipliers(ratio: float = 1.0, teeth: int | None = None, *,
     ratio : float
         Transmission ratio u = ω1/ω2 (> 0).
     teeth : int, optional
-        Teeth (pockets) z1 of the driving wheel; adds the meshing excitation.
+        Teeth (pockets) z1 of the driving wheel; adds the excitations of the chain's own
+        period (unequal link lengths, polygonal action).
     link_chain : bool
-        Round link chain on a pocket wheel: links pass at 2 z1 ω1, and the unequal
-        link lengths t ± d repeat with the pair of links, at z1 ω1 (half of it).
+        Round link chain on a pocket wheel.
+    harmonics : bool
+        Also the round link chain's link passing 2 z1 ω1, the second harmonic of its
+        polygon period (judged by the forced response, not by the band; see Notes).
 
     Returns
     -------
     dict
         name -> multiplier k (ω_j = k ω1).
 
-    .. math:: \omega_1,\ \omega_2 = \omega_1/u,\ z_1\omega_1\ (\text{roller}),\
-              2z_1\omega_1 \text{ and } z_1\omega_1\ (\text{round link})
+    .. math:: \omega_1,\ \omega_1/u,\ z_1\omega_1/2 \text{ and } z_1\omega_1\ (\text{roller}),\
+              z_1\omega_1\ [\text{and } 2z_1\omega_1]\ (\text{round link})
 
     Notes
     -----
-    Roller chain: the pitch polygon has period 2π/z1 → meshing at z1 ω1. Round link
-    chain with z1 pockets: the bi-regular polygon has 2 z1 sides (t + d, t − d) and
-    period 2π/z1 for a *pair* of links (Dolipiński et al., δ1 + δ2 = 2π/z): each link passes
-    at 2 z1 ω1, the length difference of the two links excites half of that, z1 ω1.
+    The tensioner paper names three: the eccentricity of the driving sprocket (ω1), of
+    the driven sprocket (ω1/u) and the unequal lengths of the chain's links. Roller
+    chain: inner and outer links alternate, so a difference of their pitches (within
+    the length tolerance of ISO 606:2015, 3.4.4) repeats every two pitches, at
+    z1 ω1/2; the pitch polygon itself (chordal action, not in the paper) repeats every
+    pitch, at z1 ω1 ("meshing"). Round link chain with z1 pockets: the hinges form a
+    bi-regular polygon of sides t + d and t − d (Dolipiński et al., eq. 6): the unequal
+    lengths *and* the polygon repeat every pair of links, at z1 ω1; each link passes at
+    2 z1 ω1, the second harmonic of that period, which is not a separate source. The
+    0.7...1.4 band of the paper is applied to the fundamentals; 2 z1 ω1 is only in the
+    forced response (:func:`chaindrive.vibration.excitation.span_excitations`), because
+    the bands of an excitation and its octave touch, so that every frequency from
+    0.7 z1 ω1 to 2.8 z1 ω1 would fail whatever its response.
 
     Examples
     --------
     >>> excitation_multipliers(2.5, 17)
-    {'driving sprocket': 1.0, 'driven sprocket': 0.4, 'meshing': 17.0}
-    >>> excitation_multipliers(2.0, 8, link_chain=True)["link pair (t ± d)"]
-    8.0
+    {'driving sprocket': 1.0, 'driven sprocket': 0.4, 'unequal links (inner/outer)': 8.5, 'meshing': 17.0}
+    >>> excitation_multipliers(2.0, 8, link_chain=True)
+    {'driving sprocket': 1.0, 'driven sprocket': 0.5, 'link pair (t ± d)': 8.0}
 
     References
     ----------
-    the tensioner paper (ω1 = ω, ω2 = ω/u_n, unequal link lengths); Dolipiński et al., eq. (6).
+    the tensioner paper (ω1 = ω, ω2 = ω/u_n, unequal link lengths); Dolipiński et al., eq. (6);
+    ISO 606:2015, 3.4.4 (chain length tolerance).
     """
     u = float(check_positive("ratio", ratio))
     out = {"driving sprocket": 1.0, "driven sprocket": 1.0 / u}
     if teeth is not None:
         z = int(check_teeth("teeth", teeth))
         if link_chain:
-            out["link passing"] = 2.0 * z
             out["link pair (t ± d)"] = float(z)
+            if harmonics:
+                out["link passing"] = 2.0 * z
         else:
+            out["unequal links (inner/outer)"] = z / 2.0
             out["meshing"] = float(z)
     return out
 
@@ -226,7 +241,7 @@ def excitation_frequencies(speed: ArrayLike, ratio: float = 1.0, teeth: int | No
     Examples
     --------
     >>> {k: round(v, 3) for k, v in excitation_frequencies(10.0, 2.5, 17).items()}
-    {'driving sprocket': 10.0, 'driven sprocket': 4.0, 'meshing': 170.0}
+    {'driving sprocket': 10.0, 'driven sprocket': 4.0, 'unequal links (inner/outer)': 85.0, 'meshing': 170.0}
 
     References
     ----------
