@@ -49,6 +49,8 @@ def _run(project: Path, output: Path, pdf: bool, figures: bool, quiet: bool, for
         out.print(f"  warning: {w}", markup=False)
     out.print(f"report: {outcome.files['html']}")
     out.print(f"results: {outcome.files['json']}")
+    if "proposal" in outcome.files:
+        out.print(f"proposal (a design that passes the resonance check): {outcome.files['proposal']}")
     if "pdf" in outcome.files:
         out.print(f"pdf: {outcome.files['pdf']}")
     return outcome.exit_code

@@ -14,7 +14,7 @@ import math
 from typing import Any
 
 from ..errors import InputError
-from .model import Drive
+from .model import TENSIONER_PARTS, Drive
 
 __all__ = ["drive_to_toml"]
 
@@ -27,7 +27,8 @@ _UNITS: dict[str, dict[str, str]] = {
                 "contact_length": "m"},
     "track": {"tractor_weight": "N", "tooth_width": "m", "pin_radius": "m", "allowable_bending": "Pa",
               "allowable_contact": "Pa"},
-    "tensioner": {"mass": "kg", "stiffness": "N/m", "force": "N"},
+    "tensioner": {"mass": "kg", "stiffness": "N/m", "force": "N", **TENSIONER_PARTS["lever"],
+                  **TENSIONER_PARTS["sliding"]},
     "guides": {"end_distance": "m", "height": "m"},
     "wheels": {"diameter": "m"},
 }
@@ -124,9 +125,10 @@ def drive_to_toml(drive: Drive, *, header: str = "") -> str:
                                    "driving": w.driving, "side": w.side}, array=True)
     if drive.tensioner is not None:
         t = drive.tensioner
-        lines += _table("tensioner", {"wheel": t.wheel, "mass": t.mass, "stiffness": t.stiffness,
-                                      "kind": t.kind, "direction": [float(v) for v in t.direction],
-                                      "force": t.force})
+        reduced = {"mechanism": t.mechanism, **dict(t.parts)} if t.mechanism else {"mass": t.mass,
+                                                                                      "stiffness": t.stiffness}
+        lines += _table("tensioner", {"wheel": t.wheel, **reduced, "kind": t.kind,
+                                      "direction": [float(v) for v in t.direction], "force": t.force})
     for g in drive.guides:
         lines += _table("guides", {"wheel": g.wheel, "end_distance": g.end_distance, "kind": g.kind,
                                    "height": g.height}, array=True)
