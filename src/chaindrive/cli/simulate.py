@@ -8,6 +8,7 @@ Writes ``simulation.npz`` (all arrays), ``simulation.json`` (summary), ``simulat
 from __future__ import annotations
 
 import json
+from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
@@ -45,9 +46,35 @@ def simulate_command(
     guides (channels) and idlers (toothed, toothless, outside), tensioner, prescribed
     driver speed, driven inertia and load, gravity; assembled in static equilibrium
     first (see docs/simulation.md)."""
-    from .._io import atomic_output_dir, check_output_dir
+    from .._io import claim_output_dir
 
-    check_output_dir(output, force=force)  # before any work: an earlier run needs --force
+    # before any work: the folder locked (a second run into it is refused), an earlier run
+    # needs --force, a folder with other files is refused
+    with claim_output_dir(output, force=force):
+        _simulate(project, example, duration, output, speed, load, ramp, frames, no_plots, as_json, force,
+                  DriveProfile(motor, motor_inertia, stop, stop_ramp, ripple, ripple_frequency))
+
+
+@dataclass(frozen=True)
+class DriveProfile:
+    """The time-varying drive options as typed (--motor ... --ripple-frequency)."""
+
+    motor: bool = False
+    motor_inertia: str | None = None
+    stop: str | None = None
+    stop_ramp: str | None = None
+    ripple: float = 0.0
+    ripple_frequency: str | None = None
+
+
+def _simulate(project: Path | None, example: str | None, duration: str | None, output: Path,
+              speed: str | None, load: str | None, ramp: str | None, frames: int, no_plots: bool,
+              as_json: bool, force: bool, profile: DriveProfile | None = None) -> None:
+    profile = DriveProfile() if profile is None else profile
+    motor, motor_inertia, stop, stop_ramp = profile.motor, profile.motor_inertia, profile.stop, profile.stop_ramp
+    ripple, ripple_frequency = profile.ripple, profile.ripple_frequency
+    from .._io import atomic_output_dir
+
     typer.echo("assembling the model...", err=True)
     from ..simulation import (
         conveyor_example,
