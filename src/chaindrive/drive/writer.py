@@ -31,6 +31,7 @@ _UNITS: dict[str, dict[str, str]] = {
                   **TENSIONER_PARTS["sliding"]},
     "guides": {"end_distance": "m", "height": "m"},
     "wheels": {"diameter": "m"},
+    "conveyor": {"material_load": "kg/m", "capacity": "kg/s", "inclination": "rad", "minimum_tension": "N"},
 }
 
 
@@ -132,7 +133,7 @@ def drive_to_toml(drive: Drive, *, header: str = "") -> str:
     for g in drive.guides:
         lines += _table("guides", {"wheel": g.wheel, "end_distance": g.end_distance, "kind": g.kind,
                                    "height": g.height}, array=True)
-    for name in ("contact", "track"):
+    for name in ("contact", "track", "conveyor"):
         spec = getattr(drive, name)
         if spec is not None:
             lines += _table(name, dataclasses.asdict(spec))
