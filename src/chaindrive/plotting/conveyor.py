@@ -105,8 +105,9 @@ def startup_plot(result: StartUp, *, ax: tuple[Axes, Axes] | None = None) -> Fig
     b.set_ylabel(f"tension [{unit}]")
     h1, l1 = a1.get_legend_handles_labels()
     h2, l2 = b.get_legend_handles_labels()
-    a1.legend(h1 + h2, l1 + l2, fontsize=8, loc="center right")
-    a1.set_title("Loaded start-up")
+    a1.legend(h1 + h2, l1 + l2, fontsize=7, loc="lower center", bbox_to_anchor=(0.5, 1.0), ncol=3,
+              frameon=False)
+    fig.suptitle("Start-up: the head's chain speed and tensions")
     a2.plot(result.envelope_position, k * np.asarray(result.envelope_peak), color="C3",
             label="peak over the start-up")
     a2.plot(result.envelope_position, k * np.asarray(result.envelope_low), color="C2",
