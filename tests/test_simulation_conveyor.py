@@ -130,3 +130,22 @@ def test_cli_time_varying_drive_errors(tmp_path, capsys):
     assert main(["simulate", "examples/scraper_conveyor.toml", "--motor-inertia", "10 kg*m**2",
                  "-o", str(tmp_path / "b")]) == 2
     assert "needs --motor" in capsys.readouterr().err
+
+
+def test_startup_and_pull_plots_label_their_units():
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    from chaindrive.plotting.conveyor import conveyor_plot, startup_plot
+
+    d = _short(length=6.0)
+    su, _res, _m = start_up(d, 0.3, ramp_time=0.1, samples=60)
+    fig = startup_plot(su)
+    labels = [ax.get_ylabel() for ax in fig.axes]
+    assert "chain speed [m/s]" in labels and "tension [kN]" in labels
+    assert fig.axes[1].get_xlabel() == "position along the path from the head exit [m]"
+    fig2, ax = plt.subplots()
+    assert conveyor_plot(conveyor_pull(d), ax=ax) is fig2
+    plt.close("all")
