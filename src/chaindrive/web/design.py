@@ -9,6 +9,7 @@ naming the form field.
 
 from __future__ import annotations
 
+import dataclasses
 import json
 import math
 import warnings
@@ -55,6 +56,8 @@ DEFAULTS: dict[str, str] = {
     "skew": "",
     "required_static_safety": "",
     "wear_coefficient": "",
+    # a scraper conveyor's [conveyor] table as "key=value;..." (opened from a project file)
+    "conveyor": "",
 }
 
 #: The mining scraper conveyor of Dolipiński et al. (DIN 22252 18x64 on 8-pocket wheels).
@@ -329,7 +332,44 @@ def _project_text(d: Design, state: dict[str, str], positions: list, idler: tupl
     if state["skew"].strip() and not d.chain.is_link_chain:
         lines += ["[contact]", f"skew = {_toml_string(state['skew'].strip())}",
                   "wear_factor = 0.65", ""]
+    if state.get("conveyor", "").strip():
+        lines += ["[conveyor]", *_conveyor_lines(state["conveyor"]), ""]
     return "\n".join(lines)
+
+
+#: [conveyor] keys written as TOML numbers (dimensionless); the others are quantities or text.
+_CONVEYOR_NUMBERS = ("chain_friction", "material_friction", "return_friction", "head_share", "efficiency")
+
+
+def _conveyor_lines(text: str) -> list[str]:
+    """TOML lines of the state's ``conveyor`` text ``key=value;...`` (parse_project checks them)."""
+    out = []
+    for item in text.split(";"):
+        key, _, value = item.partition("=")
+        key, value = key.strip(), value.strip()
+        if not key.isidentifier() or not value:
+            continue
+        if key in _CONVEYOR_NUMBERS:
+            try:
+                out.append(f"{key} = {float(value)!r}")
+            except ValueError:
+                out.append(f"{key} = {_toml_string(value)}")
+        else:
+            out.append(f"{key} = {_toml_string(value)}")
+    return out
+
+
+def conveyor_state(conveyor: Any) -> str:
+    """A drive's :class:`~chaindrive.drive.Conveyor` as the state's ``key=value;...`` text (SI units)."""
+    if conveyor is None:
+        return ""
+    units = {"material_load": "kg/m", "capacity": "kg/s", "inclination": "rad", "minimum_tension": "N"}
+    parts = []
+    for key, value in dataclasses.asdict(conveyor).items():
+        if value is None:
+            continue
+        parts.append(f"{key}={value!r} {units[key]}" if key in units else f"{key}={value}")
+    return ";".join(parts)
 
 
 def design_from_state(state: dict[str, str]) -> tuple[Design | None, dict[str, str]]:
@@ -530,6 +570,7 @@ def state_from_project(text: str, filename: str = "project.toml") -> dict[str, s
         "required_static_safety": f"{drive.required_static_safety:g}",
         "wear_coefficient": "" if drive.wear_coefficient is None else f"{drive.wear_coefficient:g} m**2/N",
         "tensioner": "", "guide": "", "skew": "",
+        "conveyor": conveyor_state(drive.conveyor),
     })
     if load.power is not None:
         state["power"] = f"{load.power / 1e3:.6g} kW"

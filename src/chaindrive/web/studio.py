@@ -150,7 +150,7 @@ def studio_payload(state: dict[str, str]) -> dict[str, Any]:
             name, value, unit, *rest = row
             value_text, unit_text = show(value, unit, units)
             rows.append([str(name), value_text, unit_text, " ".join(str(x) for x in rest)])
-        out["loads"] = {"caption": loads.caption, "rows": rows}
+        out["loads"] = {"caption": loads.caption, "rows": rows + _conveyor_rows(analysis, units)}
     life = next((c for c in analysis.checks if "hours" in c["name"] and isinstance(c["value"], (int, float))), None)
     if life is not None and design.hours_per_day > 0:
         out["life_years"] = fmt(life["value"] / (design.hours_per_day * 365.0), 3)
@@ -161,6 +161,20 @@ def studio_payload(state: dict[str, str]) -> dict[str, Any]:
     out["has_tensioner"] = drive.tensioner is not None
     out["elapsed_ms"] = round((time.perf_counter() - t0) * 1e3, 1)
     return out
+
+
+def _conveyor_rows(analysis: Any, units: str) -> list[list[str]]:
+    """Rows of the conveyor part's chain pull (a project opened with a [conveyor] table)."""
+    pull = None if analysis.analysis is None else analysis.analysis.results.get("conveyor")
+    if pull is None:
+        return []
+    rows = []
+    for name in ("tight_tension", "slack_tension", "minimum_tension", "pretension", "drive_force",
+                 "drive_power", "return_sag"):
+        value_text, unit_text = show(getattr(pull, name), type(pull).unit_of(name), units)
+        rows.append([f"conveyor: {name.replace('_', ' ')}", value_text, unit_text,
+                     f"chain pull along the loop ({pull.source})"])
+    return rows
 
 
 def charts_payload(state: dict[str, str]) -> dict[str, Any]:
