@@ -12,7 +12,15 @@ tooth count, turning in phase; the cams engage the hinges of the conveyor's trac
 See ``docs/crawler.md``.
 """
 
-from .cam import cam_force, cam_hinge_distance, cam_stiffness
+from .cam import (
+    ElasticLoop,
+    cam_force,
+    cam_hinge_distance,
+    cam_pushing_off_force,
+    cam_stiffness,
+    elastic_loop,
+    guide_reaction,
+)
 from .drive import MEASURES, SUMMARY_KEYS, CrawlerKinematics, crawler_drive, crawler_nonuniformity
 from .laws import (
     GUIDES,
@@ -32,16 +40,20 @@ __all__ = [
     "MEASURES",
     "SUMMARY_KEYS",
     "CrawlerKinematics",
+    "ElasticLoop",
     "cam_force",
     "cam_hinge_distance",
+    "cam_pushing_off_force",
     "cam_stiffness",
     "crawler_drive",
     "crawler_nonuniformity",
+    "elastic_loop",
     "free_span_acceleration",
     "free_span_displacement",
     "free_span_height",
     "free_span_velocity",
     "guide_link_angle",
+    "guide_reaction",
     "guided_acceleration",
     "guided_displacement",
     "guided_velocity",

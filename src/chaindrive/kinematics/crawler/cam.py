@@ -5,15 +5,27 @@ and rebuilt here).
 
 from __future__ import annotations
 
+from dataclasses import dataclass
+
 import numpy as np
 from numpy.typing import ArrayLike
 
+from ..._results import Result, quantity
 from ..._typing import FloatOrArray
-from ..._validation import as_float_array, check_positive
+from ..._validation import as_float_array, check_positive, check_teeth
 from ...errors import InputError
-from .laws import _out
+from .laws import (
+    GUIDES,
+    _out,
+    free_span_displacement,
+    free_span_velocity,
+    guided_displacement,
+    guided_velocity,
+    leaving_displacement,
+)
 
-__all__ = ["cam_force", "cam_hinge_distance", "cam_stiffness"]
+__all__ = ["ElasticLoop", "cam_force", "cam_hinge_distance", "cam_pushing_off_force", "cam_stiffness",
+           "elastic_loop", "guide_reaction"]
 
 
 def cam_stiffness(stiffness: ArrayLike, sprocket_distance: ArrayLike, cam_distance: ArrayLike) -> FloatOrArray:
@@ -168,3 +180,269 @@ def cam_hinge_distance(engagement_distance: float, cam_pitch: float, index: Arra
     return _out(l1 + k * tk)
 
 
+
+
+# ----------------------------------------------------------------------------- guide reaction
+
+
+def guide_reaction(tension: ArrayLike, link_angle: ArrayLike) -> FloatOrArray:
+    r"""Force the guide takes at the first hinge on it, where the chain leaves the polygon [N].
+
+    .. math:: N = T\,\tan φ_1
+
+    Parameters
+    ----------
+    tension : float or array_like
+        Tension ``T`` of the span on the guide at that end [N], ``T >= 0``.
+    link_angle : float or array_like
+        Inclination ``φ1`` of the link between the seated hinge and the hinge on the
+        guide (eq. 6.15, :func:`~chaindrive.kinematics.crawler.guide_link_angle`),
+        ``0 <= φ1 < π/2`` [rad]; at most ``γ = π/z``.
+
+    Returns
+    -------
+    ndarray or float
+        ``N`` [N], directed from the guide line towards the sprocket axis (the inclined
+        link pulls the hinge off the guide; the guide, embracing the chain, holds it).
+
+    Notes
+    -----
+    Statics of the massless hinge ``G`` on the guide line: the link ``SG`` pulls it
+    with ``T_1`` at ``φ1`` below the guide, the next link along the guide with
+    ``T``; frictionless guide, force ``N`` normal to it. Along the guide
+    ``T_1 cos φ1 = T``; across it ``N = T_1 sin φ1 = T tan φ1``. Largest,
+    ``T tan(π/z)``, just before the hinge seats. These are, with the cam's own
+    :func:`cam_pushing_off_force`, the "pushing-off forces" the guide receives
+    (the crawler drive text: «направляющую, охватывающую цепь, которая воспринимает
+    отжимающие усилия, действующие на кулак»); without a guide the same forces move
+    the span sideways (the transverse throw).
+
+    References
+    ----------
+    the crawler drive text, text to Fig. 6.9 b and eq. (6.15); statics derived here.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> round(float(guide_reaction(10e3, np.pi / 8)), 3)   # T tan(pi/z), z = 8
+    4142.136
+    """
+    T = as_float_array("tension", tension)
+    phi = as_float_array("link_angle", link_angle)
+    if np.any(~np.isfinite(T)) or np.any(T < 0):
+        raise InputError(f"tension must be finite and >= 0 N (0 <= T < inf), got {T}", field="tension")
+    if np.any(~np.isfinite(phi)) or np.any(phi < 0) or np.any(phi >= np.pi / 2):
+        raise InputError(f"link_angle must lie in [0, pi/2) rad, got {phi}", field="link_angle")
+    return _out(T * np.tan(phi))
+
+
+def cam_pushing_off_force(cam_force: ArrayLike, face_angle: ArrayLike) -> FloatOrArray:
+    r"""Force pushing the cam off the traction chain, taken by the guide [N].
+
+    .. math:: N_K = |P|\,\tan α
+
+    Parameters
+    ----------
+    cam_force : float or array_like
+        Force ``P`` along the chain between the cam and the traction-chain hinge [N].
+    face_angle : float or array_like
+        Pressure angle ``α`` of the cam's working face: the angle between the contact
+        normal and the chain axis, ``0 <= α < π/2`` [rad] (``0``: a face square to the
+        chain, no pushing-off force).
+
+    Returns
+    -------
+    ndarray or float
+        ``N_K`` [N], across the chain, away from the traction chain.
+
+    Notes
+    -----
+    The contact force between the cam face and the traction-chain hinge is normal to
+    the face (frictionless); its component along the chain is ``P``, across it
+    ``P tan α``. The guide embracing the drive chain takes this force (the crawler
+    drive text: the guide «воспринимает отжимающие усилия, действующие на кулак»).
+    Friction on the face (coefficient ``μ``) would turn ``α`` into ``α ± atan μ``
+    depending on the sliding direction; not included.
+
+    References
+    ----------
+    the crawler drive text, text to Fig. 6.9 b; statics derived here.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> round(float(cam_pushing_off_force(20e3, np.radians(20))), 3)
+    7279.404
+    """
+    P = as_float_array("cam_force", cam_force)
+    a = as_float_array("face_angle", face_angle)
+    if np.any(~np.isfinite(P)):
+        raise InputError("cam_force must be finite (-inf < P < inf N)", field="cam_force")
+    if np.any(~np.isfinite(a)) or np.any(a < 0) or np.any(a >= np.pi / 2):
+        raise InputError(f"face_angle must lie in [0, pi/2) rad (0...90 deg), got {a}", field="face_angle")
+    return _out(np.abs(P) * np.tan(a))
+
+
+# ----------------------------------------------------------------------------- the elastic loop
+
+
+@dataclass(frozen=True)
+class ElasticLoop(Result):
+    """The drive-chain loop with an elastic return span and a free tensioning sprocket.
+
+    Attributes
+    ----------
+    psi : ndarray
+        Driving-sprocket angle ``ψ`` [rad].
+    force : ndarray
+        Force on the cam ``P = T_b - T_a`` [N] (total, not about its mean).
+    rigid_force : ndarray
+        The same from :func:`cam_force` with the tensioning sprocket in phase
+        (``θ = ψ``: rigid return span) [N].
+    lag : ndarray
+        ``θ - ψ``: how far the tensioning sprocket runs ahead of the in-phase position [rad].
+    tension_tensioning_side, tension_driving_side, tension_return : ndarray
+        Total tensions of the segment tensioning sprocket–cam ``T_a``, cam–driving
+        sprocket ``T_b`` and of the return span ``T_c`` [N].
+    """
+
+    psi: np.ndarray = quantity("rad")
+    force: np.ndarray = quantity("N")
+    rigid_force: np.ndarray = quantity("N")
+    lag: np.ndarray = quantity("rad")
+    tension_tensioning_side: np.ndarray = quantity("N")
+    tension_driving_side: np.ndarray = quantity("N")
+    tension_return: np.ndarray = quantity("N")
+
+
+def _running_on(angle, t, z, kind):
+    return guided_displacement(angle, t, z) if kind == "tangent" else free_span_displacement(angle, t, z)
+
+
+def _running_on_rate(angle, t, z, kind):
+    """du/dψ of the running-on law (velocity at ω = 1)."""
+    return guided_velocity(angle, t, z, 1.0) if kind == "tangent" else free_span_velocity(angle, t, z, 1.0)
+
+
+def _leaving_rate(angle, t, z, kind):
+    """du_1/dψ of the running-off law: the running-on rate at the mirrored phase."""
+    gamma = np.pi / z
+    s = np.mod(angle, 2 * gamma)
+    return _running_on_rate(2 * gamma - s, t, z, kind) if kind == "tangent" else _running_on_rate(angle, t, z, kind)
+
+
+def elastic_loop(psi: ArrayLike, pitch: float, teeth: int, stiffness: float, sprocket_distance: float,
+                 cam_distance: float, cam_displacement: ArrayLike, *, pretension: float,
+                 guide: str = "tangent", return_guide: str = "none",
+                 return_stiffness: float | None = None) -> ElasticLoop:
+    r"""Force on the cam with an elastic return span and a free tensioning sprocket [N].
+
+    The check of the two assumptions of :func:`cam_force` (rigid return span, tensioning
+    sprocket in phase with the driving one, imposing its own displacement): here the
+    tensioning sprocket is free (massless, frictionless bearing) and turns to the angle
+    ``θ`` at which its two spans balance,
+
+    .. math::
+        T_a\,\frac{du_1}{dθ}(θ) = T_c\,\frac{du_r}{dθ}(θ),\qquad
+        T_a = T_0 + \frac{E_П}{l}(u_П - u_1(θ)),\quad
+        T_b = T_0 + \frac{E_П}{A - l}(u_З(ψ) - u_П),\quad
+        T_c = T_0 + \frac{E_c}{A}(u_r(θ) - u_{r2}(ψ)),
+
+    and the force on the cam is ``P = T_b - T_a``. ``u_1`` is the running-off law of the
+    working span at the tensioning sprocket, ``u_r`` the running-on law of the return
+    span there, ``u_{r2}`` its running-off law at the driving sprocket.
+
+    Parameters
+    ----------
+    psi : array_like
+        Driving-sprocket angles ``ψ`` [rad].
+    pitch : float
+        ``t`` [m].
+    teeth : int
+        ``z`` of both sprockets.
+    stiffness : float
+        ``E_П`` = ``EA`` of the drive chain [N].
+    sprocket_distance : float
+        ``A`` [m] (the return span is as long as the working span).
+    cam_distance : float
+        ``l`` from the tensioning sprocket [m], ``0 < l < A``.
+    cam_displacement : array_like
+        ``u_П`` at each ``ψ`` [m] (imposed by the traction chain).
+    pretension : float
+        ``T_0`` [N], the tension of every span with the chain at rest (``> 0``).
+    guide, return_guide : {"tangent", "none"}
+        Guide of the working span and of the return span.
+    return_stiffness : float, optional
+        ``E_c`` = ``EA`` of the return span [N]; default ``E_П``.
+
+    Returns
+    -------
+    ElasticLoop
+
+    Notes
+    -----
+    Quasi-static, massless chain and sprocket; the balance is solved for ``θ`` near ``ψ``
+    by bracketing root finding. As ``E_c -> inf`` the return span becomes rigid,
+    ``θ -> ψ`` (for the same law on both ends of the return span) and ``P`` tends to
+    :func:`cam_force` with ``u_1`` the running-off law: the closed form's limit
+    (tested). With ``E_c = E_П`` the difference measures what the assumptions cost.
+
+    References
+    ----------
+    the crawler drive text, text after eq. (6.16) (formula lost in the OCR); model built here.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> psi = np.array([0.1])
+    >>> u_cam = 8 * 0.1 / (2 * np.pi) * psi          # the cam at the mean speed
+    >>> r = elastic_loop(psi, 0.1, 8, 5e6, 2.0, 0.7, u_cam, pretension=5e3)
+    >>> round(float(r.rigid_force[0]), 1), round(float(r.force[0]), 1)
+    (2008.5, 1458.2)
+    """
+    from scipy.optimize import brentq
+
+    t = float(check_positive("pitch", pitch, "m"))
+    z = int(check_teeth("teeth", teeth))
+    E = float(check_positive("stiffness", stiffness, "N"))
+    A = float(check_positive("sprocket_distance", sprocket_distance, "m"))
+    Ec = E if return_stiffness is None else float(check_positive("return_stiffness", return_stiffness, "N"))
+    T0 = float(check_positive("pretension", pretension, "N"))
+    l = float(cam_distance)
+    cam_stiffness(E, A, l)  # validates l
+    kind, rkind = GUIDES.get(guide), GUIDES.get(return_guide)
+    p = np.atleast_1d(as_float_array("psi", psi))
+    up = np.broadcast_to(as_float_array("cam_displacement", cam_displacement), p.shape)
+    if np.any(~np.isfinite(p)) or np.any(~np.isfinite(up)):
+        raise InputError("psi and cam_displacement must be finite", field="psi")
+    gamma = np.pi / z
+
+    def tensions(theta, psi_, up_):
+        u1 = float(leaving_displacement(theta, t, z, kind))
+        ur = float(_running_on(theta, t, z, rkind))
+        ur2 = float(leaving_displacement(psi_, t, z, rkind))
+        Ta = T0 + E / l * (up_ - u1)
+        Tc = T0 + Ec / A * (ur - ur2)
+        return Ta, Tc
+
+    def balance(theta, psi_, up_):
+        Ta, Tc = tensions(theta, psi_, up_)
+        return Ta * float(_leaving_rate(theta, t, z, kind)) - Tc * float(_running_on_rate(theta, t, z, rkind))
+
+    theta = np.empty_like(p)
+    for i, (ps, u) in enumerate(zip(p, up, strict=True)):
+        lo, hi = ps - 0.5 * gamma, ps + 0.5 * gamma
+        if balance(lo, ps, u) * balance(hi, ps, u) > 0:
+            raise InputError("elastic_loop: the tensioning sprocket finds no balance within half a tooth "
+                             "period; the pretension is too small for this stiffness and displacement",
+                             field="pretension")
+        theta[i] = brentq(balance, lo, hi, args=(ps, u), xtol=1e-15, rtol=1e-15)
+    Ta = np.empty_like(p)
+    Tc = np.empty_like(p)
+    for i, (th, ps, u) in enumerate(zip(theta, p, up, strict=True)):
+        Ta[i], Tc[i] = tensions(th, ps, u)
+    uz = _running_on(p, t, z, kind)
+    Tb = T0 + E / (A - l) * (uz - up)
+    rigid = cam_force(E, A, l, uz, up, leaving_displacement(p, t, z, kind))
+    return ElasticLoop(psi=p, force=Tb - Ta, rigid_force=np.asarray(rigid), lag=theta - p,
+                       tension_tensioning_side=Ta, tension_driving_side=Tb, tension_return=Tc)
