@@ -50,7 +50,7 @@ __all__ = ["Project", "load_project", "parse_project", "project_from_mapping", "
 _PLAUSIBLE_KIND = {"rad/s": "angular_velocity", "W": "power", "N": "force"}
 
 
-def _parse_quantity_field(value: Any, unit: str, name: str) -> float:
+def _parse_quantity_field(value: Any, unit: str, name: str, plausible: bool = True) -> float:
     """A project-file quantity in ``unit``: a string with its unit; a bare number only when
     ``unit`` is dimensionless (a TOML number for a length or a speed is refused)."""
     if isinstance(value, bool):
@@ -64,15 +64,16 @@ def _parse_quantity_field(value: Any, unit: str, name: str) -> float:
     except InputError as exc:
         raise ValueError(str(exc).removeprefix(f"{name}: ")) from None
     kind = "pitch" if unit == "m" and name == "pitch" else _PLAUSIBLE_KIND.get(unit)
-    if kind is not None:
+    if kind is not None and plausible:
         warn_implausible(name, x, kind, stacklevel=2)
     return x
 
 
-def _quantity(unit: str, *, positive: bool = True, allow_zero: bool = False, signed: bool = False):
+def _quantity(unit: str, *, positive: bool = True, allow_zero: bool = False, signed: bool = False,
+              plausible: bool = True):
     def parse(value: Any, info: ValidationInfo) -> float:
         name = info.field_name or "value"
-        x = _parse_quantity_field(value, unit, name)
+        x = _parse_quantity_field(value, unit, name, plausible)
         if not signed:
             if positive and not allow_zero and not x > 0:
                 raise ValueError(f"{name} must be positive (0 < {name} < inf {unit}), got {x:g}")
@@ -252,6 +253,46 @@ class ContactSpec(_Model):
             raise ValueError("give skew or the measurement (skew_height_difference, skew_base), not both")
 
 
+class RimBoltsSpec(_Model):
+    """``[track.bolts]``: the bolts of a toothed rim (Sharipov, Fig. 14)."""
+
+    count: int = Field(ge=1, le=1000)
+    circle_radius: Length
+    diameter: Length
+    joint: Literal["fitted", "friction"] = "fitted"
+    shear_planes: int = Field(default=1, ge=1, le=10)
+    plate_thickness: Length | None = None
+    allowable_shear: Stress | None = None
+    allowable_bearing: Stress | None = None
+    friction: Ratio = 0.15
+    friction_faces: int = Field(default=1, ge=1, le=10)
+    slip_safety: Ratio = 1.25
+    thread_pitch: Length | None = None
+    yield_strength: Stress | None = None
+
+
+class CrawlerSpec(_Model):
+    """``[crawler]``: the conveyor crawler drive (cams on the drive chain, guide, stiffness)."""
+
+    stiffness: Annotated[float, _quantity("N", plausible=False)]  # axial rigidity EA, not a force
+    guide: Literal["tangent", "none"] = "tangent"
+    cam_distance: Length | None = None
+    engagement_distance: Length | None = None
+    cam_pitch: Length | None = None
+    cam_index: int = Field(default=0, ge=0, le=10_000)
+    cam_face_angle: Angle = 0.0
+    return_guide: Literal["tangent", "none"] = "none"
+
+
+class FrettingSpec(_Model):
+    """``[fretting]``: empirical constants of the fretting latent period (Vikulov)."""
+
+    roughness: Length
+    latent_coefficient: Annotated[float, _quantity("s/m")]
+    decay_coefficient: Annotated[float, _quantity("s/N")]
+    frequency: Annotated[float, _quantity("Hz")] | None = None
+
+
 class TrackSpec(_Model):
     """``[track]``: tracked-tractor drive wheel strength (Sharipov)."""
 
@@ -264,6 +305,7 @@ class TrackSpec(_Model):
     hardness: float | None = Field(default=None, gt=0, le=70)
     allowable_bending: Stress | None = None
     allowable_contact: Stress | None = None
+    bolts: RimBoltsSpec | None = None
 
 
 class Project(_Model):
@@ -278,6 +320,8 @@ class Project(_Model):
     contact: ContactSpec | None = None
     track: TrackSpec | None = None
     self_regulating: dict[str, Any] | None = None
+    crawler: CrawlerSpec | None = None
+    fretting: FrettingSpec | None = None
 
 
 # --------------------------------------------------------------------------- line numbers
@@ -477,6 +521,8 @@ def project_from_mapping(data: dict[str, Any], filename: str = "<project>", *,
             name=proj.drive.name, description=proj.drive.description, travel=proj.drive.travel,
             contact=None if proj.contact is None else _model.ContactSpec(**proj.contact.model_dump()),
             track=None if proj.track is None else _model.TrackSpec(**proj.track.model_dump()),
+            crawler=None if proj.crawler is None else _model.CrawlerSpec(**proj.crawler.model_dump()),
+            fretting=None if proj.fretting is None else _model.FrettingSpec(**proj.fretting.model_dump()),
             self_regulating=_self_regulating(proj.self_regulating, filename, index),
         )
     except ChainDriveError as exc:
