@@ -206,7 +206,7 @@ def test_project_with_more_wheels_is_refused_with_a_reason():
     from chaindrive.drive.project import template
 
     with pytest.raises(InputError, match="two sprockets or pocket wheels"):
-        state_from_project(template("crawler"))
+        state_from_project(template("track"))
 
 
 def test_open_upload_and_bad_upload(client):

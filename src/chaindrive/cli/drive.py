@@ -31,17 +31,25 @@ def new_command(
     kind: str = typer.Option(
         "roller", "--kind", "-k",
         help="Template: roller (ISO 606 16B industrial drive), mining (Dolipiński et al.: 18x64 "
-             "chain, 8-pocket wheels, tensioner, tangential guide) or crawler (Sharipov: "
-             "tracked-tractor drive wheel).",
+             "chain, 8-pocket wheels, tensioner, tangential guide), track (Sharipov: tracked-tractor "
+             "drive wheel, tooth and rim-bolt checks) or crawler-conveyor (the conveyor crawler drive: "
+             "drive chain with cams, guide, cam force). 'crawler' is the former name of 'track' "
+             "(deprecated).",
     ),
     force: bool = typer.Option(False, "--force", help="Overwrite an existing file."),
 ) -> None:
     """Write a commented project template (edit it, then run `chaindrive layout FILE`)."""
+    import warnings
+
     from .._io import atomic_write_text, check_output_path
     from ..drive.project import template
 
     path = check_output_path(file, (".toml",), option="FILE", force=force)
-    text = template(kind).replace("{file}", path.name)
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always", FutureWarning)
+        text = template(kind).replace("{file}", path.name)
+    for w in caught:
+        typer.echo(f"warning: {w.message}", err=True)
     atomic_write_text(path, text, force=force, option="FILE")
     typer.echo(f"wrote {path} ({kind} template)")
 

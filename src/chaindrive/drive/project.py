@@ -707,7 +707,7 @@ wheel = "drive"
 kind = "tangential"             # guide line tangent to the pitch circle, H = R (Dolipiński et al.)
 end_distance = "0.256 m"        # l, Dolipiński et al. worked case
 """,
-    "crawler": _HEAD + """
+    "track": _HEAD + """
 [drive]
 name = "Tracked tractor drive wheel (Sharipov)"
 description = "Track of a 70 kN tractor, lantern-pin pitch 170 mm, 13-tooth drive wheel"
@@ -728,9 +728,11 @@ mass_per_length = "90 kg/m"     # track links with shoes
 source = "illustrative tracked-tractor track"
 
 [load]
-# P = 0.65 G_T phi / i (Sharipov): G_T = 70 kN, phi = 1.0, two tracks -> 22.75 kN per
-# track; torque = 22.75 kN x R_0 (R_0 = 0.355 m)
-torque = "8.08 kN*m"
+# Sharipov p. 34: "the design force follows from the largest adhesion of the track with the
+# ground": P = 0.65 G_T phi = 0.65 x 70 kN x 1.0 = 45.5 kN on this track's drive wheel;
+# P_P = P / i is the force on one tooth, i the toothed rims of the wheel (here 2: 22.75 kN
+# per tooth). Design torque of the wheel P R_0 = 45.5 kN x 0.35518 m = 16.16 kN*m.
+torque = "16.16 kN*m"
 service_factor = 1.0
 
 [[wheels]]
@@ -764,18 +766,97 @@ mass = "120 kg"
 stiffness = "1.5 MN/m"
 kind = "spring"
 direction = [1, 0]
+
+[track]
+# drive wheel tooth strength (Sharipov): P_P = P / i, P = 0.65 G_T phi, i = toothed rims
+tractor_weight = "70 kN"
+adhesion = 1.0
+rims = 2
+tooth_width = "50 mm"
+pin_radius = "22.5 mm"          # lantern pin r_c (roller_diameter / 2)
+link = "cast"
+hardness = 52                   # HRC, Sharipov: 48...60
+allowable_bending = "400 MPa"
+allowable_contact = "1200 MPa"
+
+[track.bolts]
+# the bolts of one toothed rim (Sharipov, Fig. 14): they pass the rim's torque P_P R_0
+count = 12
+circle_radius = "260 mm"
+diameter = "20 mm"              # fitted (reamed) shank
+joint = "fitted"
+shear_planes = 1
+plate_thickness = "25 mm"
+allowable_shear = "150 MPa"
+allowable_bearing = "300 MPa"
+""",
+    "crawler-conveyor": _HEAD + """
+[drive]
+name = "Intermediate crawler drive of a conveyor"
+description = "40B drive chain with cams, 10/10 teeth, tangent guide, 20 kN traction force"
+speed = "50 rpm"                # driving sprocket
+travel = "ccw"
+required_static_safety = 7
+elongation_limit = 0.03
+slack_tension = "6 kN"          # pre-tension set by the tensioning sprocket
+
+[chain]
+name = "40B"                    # the drive chain (catalogue name)
+
+[load]
+# traction force 20 kN at the pitch radius R = 63.5 mm / (2 sin(18 deg)) = 102.74 mm
+torque = "2.055 kN*m"
+service_factor = 1.0
+
+[[wheels]]
+name = "driving sprocket"
+kind = "sprocket"
+teeth = 10
+position = ["2032 mm", "0 mm"]  # 32 pitches from the tensioning sprocket (in phase)
+driving = true
+
+[[wheels]]
+name = "tensioning sprocket"
+kind = "sprocket"
+teeth = 10
+position = ["0 mm", "0 mm"]
+
+[crawler]
+stiffness = "20 MN"             # E_P: axial rigidity EA of the drive chain (illustrative)
+guide = "tangent"               # chain axis tangent to the pitch circles (Fig. 6.9 b)
+engagement_distance = "381 mm"  # l1: where a cam engages a traction-chain hinge
+cam_pitch = "1016 mm"           # t_K
+cam_index = 1                   # the cam at l = l1 + k t_K = 1397 mm
+cam_face_angle = "15 deg"       # pressure angle of the cam face (pushing-off force P tan alpha)
+return_guide = "none"
 """,
 }
 
 
+#: Former template names: the tractor track was ``"crawler"``, a name that belongs to the
+#: conveyor crawler drive (the crawler drive text).
+_RENAMED_TEMPLATES = {"crawler": "track"}
+
+
 def template(kind: str = "roller") -> str:
-    """Commented project template: ``"roller"``, ``"mining"`` or ``"crawler"``.
+    """Commented project template: ``"roller"``, ``"mining"``, ``"track"`` (tracked tractor,
+    Sharipov) or ``"crawler-conveyor"`` (the conveyor crawler drive).
+
+    ``"crawler"`` is the former name of ``"track"``: it still works, with a
+    :class:`FutureWarning`.
 
     Examples
     --------
-    >>> "[[wheels]]" in template("crawler")
-    True
+    >>> "[track.bolts]" in template("track"), "[crawler]" in template("crawler-conveyor")
+    (True, True)
     """
+    if kind in _RENAMED_TEMPLATES:
+        from .._deprecation import warn_renamed
+
+        new = _RENAMED_TEMPLATES[kind]
+        warn_renamed(f"template kind {kind!r}", f"{new!r} (the tractor track; the conveyor crawler drive is "
+                     "'crawler-conveyor')")
+        kind = new
     try:
         return TEMPLATES[kind]
     except KeyError:
