@@ -31,7 +31,7 @@ def kinematics_command(
     entry: str = typer.Option("free", "--entry", help="Entry type: free (no guide, Dolipiński et al. eqs 1-13), chordal (H = R cos(delta1/2), eqs 14-25), tangential (H = R, eqs 26-43)."),
     guide_end: str | None = typer.Option(None, "--guide-end", "-l", help=unit_help("Distance l of the guide end from the wheel axis along the guide line (Dolipiński et al. eqs 14-43); needed for guided entry.", "m", "256 mm")),
     guide_height: str | None = typer.Option(None, "--guide-height", help=unit_help("Custom guide height H >= 0 above the wheel axis; replaces --entry chordal/tangential.", "m", "160 mm")),
-    model: str = typer.Option("exact", "--model", help="exact: rigid links with a taut span to the guide end (general solver); paper: Dolipiński et al.'s rod mechanism, eqs 14-43 corrected."),
+    model: str = typer.Option("exact", "--model", help="exact: rigid links with a taut span to the guide end (general solver); paper: Dolipiński et al.'s rod mechanism, one for both guides (the rod shortens by a link when the next hinge seats; eqs 14-43 corrected); as_printed: the same, but the chordal rod switched at pi/z as printed (a reset: the speed jumps)."),
     points: int = typer.Option(361, "--points", "-n", help=f"Number of samples over one period 0 <= phi <= 2 pi/z, 2...{MAX_POINTS} (dimensionless count)."),
     pitch: str | None = typer.Option(None, "--pitch", help=unit_help("Chain pitch t (link chain) or p (roller chain) when no --chain is given.", "m", "64 mm")),
     bar_diameter: str | None = typer.Option(None, "--bar-diameter", help=unit_help("Bar diameter d of a round link chain (Dolipiński et al. eq. 6) when no --chain is given.", "m", "18 mm")),

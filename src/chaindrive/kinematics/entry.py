@@ -42,9 +42,20 @@ Models (``model=``):
     the span then shortens by exactly the seated link, so ``x`` and ``v`` are
     continuous. Free entry is the same mechanism with ``G`` at infinity.
 ``"paper"``
-    Dolipiński et al.'s own simplified mechanism: a rigid rod of fixed length from the seated
-    hinge to a point sliding on the guide line, closed forms (14)-(43) with the
-    printed errors corrected (list in :mod:`chaindrive.kinematics.paper`).
+    Dolipiński et al.'s own simplified mechanism, one mechanism for both guides: a rigid
+    rod of fixed length from the seated hinge to a point sliding on the guide line,
+    shortened by exactly one link when the next hinge seats (the rod collinear with
+    the chord to it). Tangential entry: the closed forms (26)-(43) with the printed
+    errors corrected (their switches are the seatings, eqs 29 and 34). Chordal entry:
+    the same rod mechanism solved by :func:`~chaindrive.kinematics.solver.rod_seating_schedule`
+    and :func:`~chaindrive.kinematics.solver.rod_entry` (in the worked case the second
+    hinge seats at ``φ = 0.3741950302`` rad, not at ``π/z``); ``x`` and ``v`` are
+    continuous and the chain advances ``2t`` per period. Free entry: eqs (1)-(13).
+``"as_printed"``
+    The mechanisms as the paper prints them: the chordal entry's closed forms (14)-(25),
+    corrected, with the rod switched at ``π/z`` (a reset, not a seating: ``x`` is made
+    continuous by a constant, ``v`` jumps by 3.7 mm/s in the worked case and the chain
+    advances 2.3 µm more than ``2t`` per period); free and tangential entry as ``"paper"``.
 """
 
 from __future__ import annotations
@@ -63,7 +74,14 @@ from .._validation import as_float_array, check_nonnegative, check_positive, che
 from ..errors import InfeasibleError, InputError
 from ..geometry.polygon import bi_regular_polygon, roller_chain_pitch_radius
 from . import paper as _paper
-from .solver import GuideEnd, WheelPolygon, taut_entry, taut_seating_angles
+from .solver import (
+    GuideEnd,
+    WheelPolygon,
+    rod_entry,
+    rod_seating_schedule,
+    taut_entry,
+    taut_seating_angles,
+)
 
 if TYPE_CHECKING:
     from ..chains import Chain
@@ -260,8 +278,32 @@ def _check_reach(case, poly, seats):
         )
 
 
+@lru_cache(maxsize=64)
+def _chordal_rod_schedule(case: _Case) -> tuple[tuple[float, int, float], ...]:
+    """The consistent rod schedule of the chordal entry (seatings, not the printed reset)."""
+    return tuple(rod_seating_schedule(case.polygon(), case.guide()))
+
+
+def _chordal_rod(case: _Case, phi):
+    sched = list(_chordal_rod_schedule(case))
+    r = rod_entry(case.polygon(), phi, case.w, case.guide(), sched, continuous=False)
+    r["seats"] = np.array([p for p, _, _ in sched])
+    return r
+
+
 @MODELS.register("paper")
 def _paper_model(case: _Case, phi):
+    if case.entry == "chordal":
+        r = _chordal_rod(case, phi)
+        for key in ("x", "velocity", "acceleration"):
+            if not np.all(np.isfinite(r[key])):
+                raise InfeasibleError("the rod of the paper's mechanism cannot reach the guide line")
+        return r
+    return _as_printed_model(case, phi)
+
+
+@MODELS.register("as_printed")
+def _as_printed_model(case: _Case, phi):
     t, d = (case.t, 0.0) if case.roller else (case.t, case.d)
     d1, d2 = case.d1, (case.d1 if case.roller else case.d2)
     with np.errstate(invalid="ignore"):
@@ -281,7 +323,7 @@ def _paper_model(case: _Case, phi):
                 raise InfeasibleError("limit angles out of order")
         else:
             raise InputError(
-                "model='paper' covers entry 'free', 'chordal' and 'tangential' only "
+                "model='paper' and 'as_printed' cover entry 'free', 'chordal' and 'tangential' only "
                 "(the paper gives no closed form for another guide_height); use model='exact'"
             )
     for key in ("x", "velocity", "acceleration"):
@@ -479,7 +521,7 @@ def chain_entry(
         required for guided entry.
     guide_height : float, optional
         Height ``H >= 0`` of the guide line above the wheel axis [m] (custom guide).
-    model : {"exact", "paper"}
+    model : {"exact", "paper", "as_printed"}
         Mechanism (see module docstring).
     points : int
         Number of samples over ``0 <= φ <= 2π/z`` (ignored if ``phi`` is given).
@@ -509,8 +551,8 @@ def chain_entry(
     Valid for a rigid, inextensible chain at constant ``ω``; ``H >= 0``. At a seating
     the acceleration jumps; ``phi`` exactly at the period end takes the limit from the
     left. Mean speed over a period is exactly ``(chain per period) z ω / 2π`` for the
-    exact model and the paper's free and tangential entry; the paper's chordal entry
-    resets its rod at ``π/z`` and advances slightly more (see ``summary``).
+    exact model and the ``"paper"`` model; the ``"as_printed"`` chordal entry resets
+    its rod at ``π/z`` and advances slightly more (see ``summary``).
 
     References
     ----------
@@ -628,7 +670,7 @@ def dolipinski_worked_case(model: str = "exact", points: int = 361) -> dict[str,
 
     Parameters
     ----------
-    model : {"exact", "paper"}
+    model : {"exact", "paper", "as_printed"}
         Mechanism.
     points : int
         Samples per period.
