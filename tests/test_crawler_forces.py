@@ -159,3 +159,50 @@ def test_guide_reaction_grows_with_tension(tension, angle):
     a = float(guide_reaction(tension, angle))
     b = float(guide_reaction(2 * tension, angle))
     assert a >= 0 and b == pytest.approx(2 * a)
+
+
+# ----------------------------------------------------------------------------- doors: CLI and studio
+
+
+def test_crawler_drive_summary_has_the_guide_reaction_and_pushing_off():
+    from chaindrive.kinematics.crawler import crawler_drive
+
+    r = crawler_drive(T, Z, np.pi, stiffness=5e6, sprocket_distance=2.0, cam_distance=0.7, tension=10e3,
+                      traction_force=8e3, cam_face_angle=np.radians(15))
+    s = r.summary
+    assert s["guide_reaction_max"] == pytest.approx(10e3 * np.tan(G), rel=1e-9)
+    assert s["cam_force_max"] == pytest.approx(8e3 + s["force_max"])
+    peak = max(abs(8e3 + s["force_min"]), abs(8e3 + s["force_max"]))
+    assert s["cam_pushing_off_max"] == pytest.approx(peak * np.tan(np.radians(15)))
+    free = crawler_drive(T, Z, np.pi, guide="none", tension=10e3)
+    assert "guide_reaction_max" not in free.summary  # no guide, no reaction
+    with pytest.raises(InputError, match="traction_force must be non-negative"):
+        crawler_drive(T, Z, np.pi, stiffness=5e6, sprocket_distance=2.0, cam_distance=0.7, traction_force=-1.0)
+
+
+def test_cli_crawler_guide_reaction(capsys):
+    from chaindrive.cli import main
+
+    assert main(["crawler", "--pitch", "100 mm", "--teeth", "8", "--speed", "30 rpm", "--stiffness", "5 MN",
+                 "-A", "2 m", "-l", "0.7 m", "--tension", "10 kN", "--traction-force", "8 kN",
+                 "--cam-face-angle", "15 deg"]) == 0
+    out = capsys.readouterr().out
+    assert "largest guide reaction at the guide end" in out and "4142.14 N" in out
+    assert "pushing-off force on the guide at the cam" in out
+    assert main(["crawler", "--pitch", "100 mm", "--teeth", "8", "--speed", "30 rpm", "--tension", "10"]) == 2
+    assert "--tension: give a unit" in capsys.readouterr().err
+
+
+def test_studio_crawler_page_cam_force_and_guide_reaction():
+    from chaindrive.web.expert import DEFAULTS, crawler_result
+    from chaindrive.web.fields import FieldError
+
+    state = dict(DEFAULTS["crawler"], stiffness="5 MN", sprocket_distance="2 m", cam_distance="0.7 m",
+                 tension="10 kN", traction_force="8 kN", cam_face_angle="15 deg")
+    r = crawler_result(state)
+    guided = r["summaries"]["tangent guide"]
+    assert guided["guide_reaction_max"] == pytest.approx(10e3 * np.tan(G), rel=1e-9)
+    assert guided["force_range"] == pytest.approx(5659.04, rel=1e-5)
+    with pytest.raises(FieldError) as exc:
+        crawler_result(dict(state, sprocket_distance="2.05 m"))
+    assert exc.value.field == "sprocket_distance"

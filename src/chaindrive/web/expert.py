@@ -34,10 +34,15 @@ PAGES = {
 
 _SPEED = FieldSpec("rad/s", 0.0, 1000.0, example="5 rad/s")
 _LENGTH = FieldSpec("m", 0.0, 10.0, example="256 mm")
+_FORCE = FieldSpec("N", 0.0, 1e8, open_minimum=False, example="10 kN")
+_STIFFNESS = FieldSpec("N", 0.0, 1e11, example="5 MN")
+_ANGLE = FieldSpec("rad", 0.0, 1.5707, open_minimum=False, example="15 deg")
 
 DEFAULTS = {
     "kinematics": {"chain": "18x64", "teeth": "8", "speed": "5 rad/s", "guide_end": "256 mm", "model": "exact"},
-    "crawler": {"chain": "", "pitch": "100 mm", "teeth": "8", "speed": "30 rpm"},
+    "crawler": {"chain": "", "pitch": "100 mm", "teeth": "8", "speed": "30 rpm", "stiffness": "",
+                "sprocket_distance": "", "cam_distance": "", "traction_force": "0 N", "tension": "",
+                "cam_face_angle": "0 deg"},
     "pocket-wheel": {"chain": "18x64", "teeth": "8"},
     "track-wheel": {"pitch": "170 mm", "teeth": "13", "pin_radius": "25 mm", "link": "cast"},
     "simulation": {"example": "link", "speed": "5 rad/s", "load": "2000 N*m", "duration": "0.5 s",
@@ -125,12 +130,21 @@ def crawler_result(state: dict[str, str], points: int = 361) -> dict[str, Any]:
     pitch = _chain(state["chain"]).pitch if state["chain"].strip() else parse_field("pitch", state["pitch"], _LENGTH)
     teeth = parse_integer("teeth", state["teeth"], 3, 150)
     omega = parse_field("speed", state["speed"], _SPEED)
+    cam = {}  # the cam force and the guide reaction, when their inputs are given
+    for key, spec in (("stiffness", _STIFFNESS), ("sprocket_distance", _LENGTH), ("cam_distance", _LENGTH),
+                      ("tension", _FORCE)):
+        if state.get(key, "").strip():
+            cam[key] = parse_field(key, state[key], spec)
+    cam["traction_force"] = parse_field("traction_force", state.get("traction_force") or "0 N", _FORCE)
+    cam["cam_face_angle"] = parse_field("cam_face_angle", state.get("cam_face_angle") or "0 deg", _ANGLE)
     res = {}
-    for name, guide in (("no guide", False), ("tangent guide", True)):
+    for name, guide in (("tangent guide", True), ("no guide", False)):
         try:
-            res[name] = crawler_drive(pitch, teeth, omega, with_guide=guide, points=points)
+            res[name] = crawler_drive(pitch, teeth, omega, with_guide=guide, points=points, **cam)
         except ChainDriveError as exc:
-            raise FieldError("teeth", str(exc)) from None
+            named = [k for k in ("sprocket_distance", "cam_distance", "stiffness", "tension", "traction_force",
+                                 "cam_face_angle") if str(exc).startswith(k) or f" {k} " in str(exc)]
+            raise FieldError(named[0] if named else "teeth", str(exc)) from None
     psi = np.degrees(res["no guide"].psi)
     return {"summaries": {k: r.summary for k, r in res.items()},
             "plots": [_line(psi, {k: r.velocity for k, r in res.items()}, "sprocket angle ψ [°]",

@@ -13,9 +13,9 @@ from ..._finite import finite_guard
 from ..._registry import Registry
 from ..._results import Result
 from ..._typing import FloatOrArray
-from ..._validation import as_float_array, check_positive, check_teeth
+from ..._validation import as_float_array, check_nonnegative, check_positive, check_teeth
 from ...errors import InfeasibleError, InputError
-from .cam import cam_force, cam_stiffness
+from .cam import cam_force, cam_pushing_off_force, cam_stiffness, guide_reaction
 from .laws import (
     GUIDES,
     _geometry,
@@ -190,7 +190,8 @@ def crawler_nonuniformity(teeth: ArrayLike, guide: str="tangent", measure: str="
 @finite_guard
 def crawler_drive(pitch: float, teeth: int, angular_velocity: float, *, guide: str="tangent", with_guide: bool | None=None,
                   points: int=361, psi: ArrayLike | None=None, stiffness: float | None=None, sprocket_distance: float | None=None,
-                  cam_distance: float | None=None) -> CrawlerKinematics:
+                  cam_distance: float | None=None, tension: float | None = None,
+                  traction_force: float = 0.0, cam_face_angle: float = 0.0) -> CrawlerKinematics:
     r"""Kinematics of the crawler drive chain with or without the tangent guide (the crawler drive text).
 
     .. math:: v_{none} = ωR\cos(ψ - γ),\qquad
@@ -220,6 +221,16 @@ def crawler_drive(pitch: float, teeth: int, angular_velocity: float, *, guide: s
         ``A`` [m], a whole number of pitches (sprockets in phase).
     cam_distance : float, optional
         ``l`` from the tensioning sprocket, ``0 < l < A`` [m].
+    tension : float, optional
+        Tension ``T`` of the span on the guide [N]; with the tangent guide adds the
+        largest guide reaction ``T tan φ1`` (:func:`guide_reaction`) to the summary.
+    traction_force : float
+        Mean force on the cam (the traction force it passes to the conveyor) [N],
+        ``>= 0``; added to the cam force's fluctuation for ``cam_force_max`` and the
+        pushing-off force.
+    cam_face_angle : float
+        Pressure angle ``α`` of the cam face [rad], ``0 <= α < π/2``; with the cam force
+        adds the pushing-off force ``P tan α`` (:func:`cam_pushing_off_force`).
 
     Returns
     -------
@@ -358,6 +369,14 @@ def crawler_drive(pitch: float, teeth: int, angular_velocity: float, *, guide: s
             "force_max": float(ff.max() - mean),
             "force_range": float(ff.max() - ff.min()),
         })
+        F = float(check_nonnegative("traction_force", traction_force, "N"))
+        peak = max(abs(F + summary["force_min"]), abs(F + summary["force_max"]))
+        summary["cam_force_max"] = F + summary["force_max"]
+        summary["cam_pushing_off_max"] = float(cam_pushing_off_force(peak, cam_face_angle))
+    if tension is not None and kind == "tangent":
+        # largest where the hinge on the guide is about to seat: phi1 -> gamma
+        near_seat = period * (1.0 - 1e-13)
+        summary["guide_reaction_max"] = float(guide_reaction(tension, guide_link_angle(near_seat, t, z)))
     return CrawlerKinematics(
         psi=psi, displacement=np.asarray(u), velocity=np.asarray(v),
         acceleration=np.asarray(a), transverse_position=np.asarray(y),
