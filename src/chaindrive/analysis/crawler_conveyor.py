@@ -105,7 +105,7 @@ def _sprockets(drive: Drive) -> tuple[float, int]:
         raise InputError(f"crawler: the sprockets must be a whole number of pitches apart (in phase); "
                          f"{distance * 1e3:.6g} mm is {ratio:.6g} pitches: nearest {lo * 1e3:.6g} mm or "
                          f"{hi * 1e3:.6g} mm", field="wheels")
-    return round(ratio) * t, int(a.teeth)
+    return round(ratio) * t, int(a.teeth or 0)
 
 
 def crawler_conveyor(ctx: PartContext) -> CrawlerConveyor | None:

@@ -281,12 +281,16 @@ def _check_reach(case, poly, seats):
 @lru_cache(maxsize=64)
 def _chordal_rod_schedule(case: _Case) -> tuple[tuple[float, int, float], ...]:
     """The consistent rod schedule of the chordal entry (seatings, not the printed reset)."""
-    return tuple(rod_seating_schedule(case.polygon(), case.guide()))
+    return tuple(rod_seating_schedule(case.polygon(), _guide_end(case)))
+
+
+def _guide_end(case: _Case) -> GuideEnd:
+    return (case.guide_end_distance(), case.guide_height())
 
 
 def _chordal_rod(case: _Case, phi):
     sched = list(_chordal_rod_schedule(case))
-    r = rod_entry(case.polygon(), phi, case.w, case.guide(), sched, continuous=False)
+    r = rod_entry(case.polygon(), phi, case.w, _guide_end(case), sched, continuous=False)
     r["seats"] = np.array([p for p, _, _ in sched])
     return r
 

@@ -130,7 +130,7 @@ def crawler_result(state: dict[str, str], points: int = 361) -> dict[str, Any]:
     pitch = _chain(state["chain"]).pitch if state["chain"].strip() else parse_field("pitch", state["pitch"], _LENGTH)
     teeth = parse_integer("teeth", state["teeth"], 3, 150)
     omega = parse_field("speed", state["speed"], _SPEED)
-    cam = {}  # the cam force and the guide reaction, when their inputs are given
+    cam: dict[str, Any] = {}  # the cam force and the guide reaction, when their inputs are given
     for key, spec in (("stiffness", _STIFFNESS), ("sprocket_distance", _LENGTH), ("cam_distance", _LENGTH),
                       ("tension", _FORCE)):
         if state.get(key, "").strip():

@@ -366,13 +366,42 @@ def strength_section(a: DriveAnalysis, fig: _Figures) -> Section | None:
         sec.results["contact"] = res.to_dict()
     if a.track_tooth is not None:
         rd = a.track_tooth.to_dict()
+        sec.paragraphs.append(
+            "Sharipov, p. 34: «Расчетное усилие определяется из условия максимального сцепления гусеницы с "
+            "грунтом и передачи всего усилия одним зубом: P_Р = P / i, где P = 0,65 G_T φ; i — число зубчатых "
+            "венцов у ведущего колеса (i = 1 у одновенцового колеса и i = 2 у двухвенцового). Здесь φ = 1,0.» "
+            "(The design force follows from the largest adhesion of the track with the ground, the whole force "
+            "passed by one tooth; i is the number of toothed rims of the drive wheel.) Read here: P is the "
+            "adhesion force of one track, carried by its drive wheel (design torque P R_0); i counts the rims of "
+            "that wheel, not the tracks, so each rim's tooth carries P_P = P / i and each rim's bolts the torque "
+            "P_P R_0.")
         sec.tables.append(Table(
-            "Track drive wheel tooth (Sharipov, p. 34: P = 0.65 G_T φ / i)", ["quantity", "value", "unit"],
-            [["design force P", rd["design_force"] / 1e3, "kN"],
+            "Track drive wheel tooth (Sharipov, p. 34: P_P = P / i, P = 0.65 G_T φ)", ["quantity", "value", "unit"],
+            [["adhesion force of the track P = 0.65 G_T φ", rd["wheel_force"] / 1e3, "kN"],
+             ["toothed rims i", rd["rims"], "-"],
+             ["design force on one tooth P_P = P / i", rd["design_force"] / 1e3, "kN"],
+             ["design torque of the drive wheel P R_0", rd["design_torque"] / 1e3, "kN·m"],
+             ["torque of one rim P_P R_0 (on its bolts)", rd["rim_torque"] / 1e3, "kN·m"],
              ["bending stress at the root (force at the tip)", rd["bending_stress"] / 1e6, "MPa"],
              ["pin–tooth contact stress", rd["contact_stress"] / 1e6, "MPa"]]))
         _checks(sec, a, ("track_tooth",))
         sec.results["track_tooth"] = rd
+    bolts = getattr(a, "rim_bolts", None)
+    if bolts is not None:
+        rows = [["joint", bolts.joint, ""], ["bolts per rim", bolts.count, "-"],
+                ["bolt circle radius", bolts.circle_radius * 1e3, "mm"],
+                ["rim torque P_P R_0", bolts.rim_torque / 1e3, "kN·m"],
+                ["force per bolt T / (n R_b)", bolts.bolt_force / 1e3, "kN"]]
+        for label, value, unit, factor in (("shear stress", bolts.shear_stress, "MPa", 1e-6),
+                                           ("bearing stress", bolts.bearing_stress, "MPa", 1e-6),
+                                           ("required preload per bolt", bolts.required_preload, "kN", 1e-3),
+                                           ("preload stress", bolts.preload_stress, "MPa", 1e-6)):
+            if value is not None:
+                rows.append([label, value * factor, unit])
+        sec.tables.append(Table("Rim bolts (Sharipov, Fig. 14; fitted bolts: Shigley §8-12, friction joint: "
+                                "VDI 2230-1)", ["quantity", "value", "unit"], rows))
+        _checks(sec, a, ("rim_bolts",))
+        sec.results["rim_bolts"] = bolts.to_dict()
     return sec
 
 
