@@ -143,3 +143,15 @@ def test_worn_tip_check_fails_for_a_short_tooth():
     check = next(c for c in a.checks if c.name.startswith("tip radius holds the worn chain"))
     r0 = 0.17 / (2 * math.sin(math.pi / 13))
     assert check.limit == pytest.approx(1.1 * r0, rel=1e-12) and check.passed is False
+
+
+def test_studio_shows_the_fretting_table_for_a_multi_strand_chain():
+    from chaindrive.web.design import normalise_state
+    from chaindrive.web.studio import studio_payload
+
+    p = studio_payload(normalise_state({"chain": "16B-2"}))
+    assert p["errors"] == {} and p["chain"]["name"] == "16B-2"
+    rows = {name: (value, unit) for name, value, unit in p["fretting"]["rows"]}
+    assert rows["strands"] == ("2", "") and rows["slip without"][1] == "mm"
+    assert float(rows["slip ratio"][0]) > 1
+    assert "fretting" not in studio_payload(normalise_state({"chain": "16B-1"}))

@@ -150,6 +150,14 @@ def studio_payload(state: dict[str, str]) -> dict[str, Any]:
             value_text, unit_text = show(value, unit, units)
             rows.append([str(name), value_text, unit_text, " ".join(str(x) for x in rest)])
         out["loads"] = {"caption": loads.caption, "rows": rows}
+    fretting = None if analysis.analysis is None else getattr(analysis.analysis, "fretting", None)
+    if fretting is not None:  # a multi-strand chain: Vikulov's pin slip with and without intermediate plates
+        rows = []
+        for name, unit in type(fretting).field_units().items():
+            value = getattr(fretting, name)
+            if value is not None:
+                rows.append([name.replace("_", " "), *show(value, "-" if unit == "1" else unit, units)])
+        out["fretting"] = {"caption": "Fretting and pin slip of the multi-strand chain (Vikulov)", "rows": rows}
     life = next((c for c in analysis.checks if "hours" in c["name"] and isinstance(c["value"], (int, float))), None)
     if life is not None and design.hours_per_day > 0:
         out["life_years"] = fmt(life["value"] / (design.hours_per_day * 365.0), 3)

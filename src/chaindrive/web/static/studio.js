@@ -111,6 +111,18 @@
       }
     }
     $("loads").hidden = !d.loads;
+    const fb = $("fretting").querySelector("tbody");
+    fb.replaceChildren();
+    if (d.fretting) {
+      text($("fretting-caption"), d.fretting.caption);
+      for (const [name, value, unit] of d.fretting.rows) {
+        const tr = document.createElement("tr");
+        cell(tr, name);
+        cell(tr, value + " " + unit);
+        fb.appendChild(tr);
+      }
+    }
+    $("fretting").hidden = !d.fretting;
     const cb = $("checks").querySelector("tbody");
     cb.replaceChildren();
     for (const c of d.checks || []) {
