@@ -50,9 +50,9 @@ class ContactAnalysis(Result):
         :meth:`RollerToothContact.stress` at ``load`` and ``skew``.
     """
 
-    load: float
-    skew: float
-    wear_factor: float
+    load: float = quantity("N")
+    skew: float = quantity("rad")
+    wear_factor: float = quantity("1")
     contact: RollerToothContact
     result: RollerContactResult
 

@@ -508,7 +508,7 @@ class Drive:
         Empirical constants of the fretting latent period (multi-strand chains).
     self_regulating : object, optional
         Self-regulating drive inputs
-        (:class:`chaindrive.drive.self_regulating.SelfRegulatingSpec`).
+        (:class:`chaindrive.drive.carrier.SelfRegulatingSpec`).
 
     Examples
     --------

@@ -550,10 +550,10 @@ def _speed_of(speed: float | ChainSpeedSpec, chain, wheels, filename: str, index
 
 
 def _self_regulating(table: dict[str, Any] | None, filename: str, index: dict) -> Any:
-    """The ``[self_regulating]`` table as a :class:`~chaindrive.drive.self_regulating.SelfRegulatingSpec`."""
+    """The ``[self_regulating]`` table as a :class:`~chaindrive.drive.carrier.SelfRegulatingSpec`."""
     if table is None:
         return None
-    from .self_regulating import SelfRegulatingSpec
+    from .carrier import SelfRegulatingSpec
 
     for key in ("pivot", "weight", "weight_offset", "stiffness", "preload"):
         values = table.get(key)
