@@ -32,7 +32,7 @@ from collections.abc import Iterable
 from dataclasses import dataclass, field
 from typing import Any
 
-from .._results import Result, jsonable
+from .._results import Result, jsonable, quantity
 from ..drive.model import Drive
 from ..errors import ChainDriveError, InputError
 from ..wear import WearLife
@@ -91,7 +91,7 @@ class DriveAnalysis(Result):
     drive: Drive
     layout: DriveLayout | None = None
     loads: DriveLoads | None = None
-    slack_sag: float | None = None
+    slack_sag: float | None = quantity("m", default=None)
     rating: DriveRating | None = None
     entry: DriveEntry | None = None
     vibration: DriveVibration | None = None

@@ -5,7 +5,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
-from .._results import Result
+from .._results import Result, quantity
 from ..drive.model import Drive
 from ..errors import InputError
 from ..strength import RollerToothContact, skew_from_measurement, track_tooth_check
@@ -39,9 +39,9 @@ class ContactAnalysis(Result):
         :meth:`RollerToothContact.stress` at ``load`` and ``skew``.
     """
 
-    load: float
-    skew: float
-    wear_factor: float
+    load: float = quantity("N")
+    skew: float = quantity("rad")
+    wear_factor: float = quantity("1")
     contact: RollerToothContact
     result: RollerContactResult
 

@@ -8,7 +8,7 @@ from typing import TypedDict
 
 import numpy as np
 
-from .._results import Result
+from .._results import Result, quantity
 from ..drive.model import Drive
 from ..errors import ChainDriveError
 from ..vibration import (
@@ -57,9 +57,9 @@ class FreeSpans(Result):
     """
 
     names: tuple[str, ...]
-    lengths: dict[str, float]
-    running_tensions: dict[str, float]
-    frequencies: np.ndarray
+    lengths: dict[str, float] = quantity("m")
+    running_tensions: dict[str, float] = quantity("N")
+    frequencies: np.ndarray = quantity("rad/s", display="rad/s")
     check: ResonanceCheck
 
     @property
@@ -75,7 +75,7 @@ class DriveVibration(Result):
     paper's check) and ``free_spans`` (spans as free strings, information) is set.
     """
 
-    excitations: dict[str, float]
+    excitations: dict[str, float] = quantity("rad/s", display="rad/s")
     span: TensionerSpan | None
     tensioner: SpanVibration | None
     proposal: SafeTensioner | None

@@ -22,7 +22,7 @@ from typing import Any
 import numpy as np
 from numpy.typing import ArrayLike
 
-from .._results import Result
+from .._results import Result, quantity
 from .._typing import FloatOrArray
 from .._validation import as_float_array, check_positive
 from ..errors import InfeasibleError, InputError
@@ -133,9 +133,9 @@ class WheelPart(Result):
     kind: str
     title: str
     chain: str
-    teeth: int
+    teeth: int = quantity("1")
     outline: Outline
-    width: float
+    width: float = quantity("m")
     hub: Hub
     chamfer: ToothChamfer | None
     groove: Groove | None

@@ -29,7 +29,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
-from .._results import Result
+from .._results import Result, quantity
 from ..errors import InfeasibleError, InputError
 from .outline import Line
 from .part import WheelPart
@@ -196,15 +196,15 @@ def write_step(part: WheelPart, path: str | os.PathLike[str], *, force: bool = F
     return solid
 
 
-@dataclass
+@dataclass(frozen=True)
 class SolidCheck(Result):
     """What a STEP file holds: number of solids, validity, volume [m³], bounding box [m]."""
 
-    solids: int
+    solids: int = quantity("1")
     valid: bool
-    volume: float
-    bounding_box_min: tuple
-    bounding_box_max: tuple
+    volume: float = quantity("m^3", display="cm^3")
+    bounding_box_min: tuple[float, float, float] = quantity("m")
+    bounding_box_max: tuple[float, float, float] = quantity("m")
 
 
 def read_step(path: str | os.PathLike[str]) -> SolidCheck:

@@ -37,7 +37,7 @@ from numpy.typing import ArrayLike
 
 from .._finite import finite_guard
 from .._registry import Registry
-from .._results import Result
+from .._results import Result, quantity
 from .._typing import FloatOrArray
 from .._validation import check_nonnegative, check_positive, check_range, warn_outside
 from ..errors import InputError, ValidityRangeWarning
@@ -343,20 +343,20 @@ class RollerContactResult(Result):
     ``relative_life_fatigue`` L/L0 [-], ``contact`` "convex"/"concave".
     """
 
-    nominal_load: np.ndarray | float
-    max_skew: np.ndarray | float
-    design_skew: np.ndarray | float
-    gamma: np.ndarray | float
-    load_factor: np.ndarray | float
-    equivalent_load: np.ndarray | float
-    reduced_radius: np.ndarray | float
-    effective_modulus: np.ndarray | float
-    stress_unskewed: np.ndarray | float
-    stress: np.ndarray | float
-    stress_ratio: np.ndarray | float
-    half_width: np.ndarray | float
-    relative_life_wear: np.ndarray | float
-    relative_life_fatigue: np.ndarray | float
+    nominal_load: np.ndarray | float = quantity("N")
+    max_skew: np.ndarray | float = quantity("rad")
+    design_skew: np.ndarray | float = quantity("rad")
+    gamma: np.ndarray | float = quantity("1/arcmin^2")
+    load_factor: np.ndarray | float = quantity("1")
+    equivalent_load: np.ndarray | float = quantity("N")
+    reduced_radius: np.ndarray | float = quantity("m")
+    effective_modulus: np.ndarray | float = quantity("Pa", display="GPa")
+    stress_unskewed: np.ndarray | float = quantity("Pa")
+    stress: np.ndarray | float = quantity("Pa")
+    stress_ratio: np.ndarray | float = quantity("1")
+    half_width: np.ndarray | float = quantity("m")
+    relative_life_wear: np.ndarray | float = quantity("1")
+    relative_life_fatigue: np.ndarray | float = quantity("1")
     contact: str
 
 
