@@ -39,8 +39,17 @@ app = typer.Typer(
 _PLAUSIBLE_KIND = {"rad/s": "angular_velocity", "W": "power", "N": "force"}
 
 
+def _print_version(value: bool) -> None:
+    if value:
+        from .. import __version__
+
+        print(f"chaindrive {__version__}")
+        raise typer.Exit()
+
+
 @app.callback()
-def _root() -> None:
+def _root(version: bool = typer.Option(False, "--version", callback=_print_version, is_eager=True,
+                                       help="Print the chaindrive version and exit.")) -> None:
     """chaindrive: design and analysis of chain drives."""
 
 
