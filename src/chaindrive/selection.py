@@ -37,7 +37,7 @@ import numpy as np
 from numpy.typing import ArrayLike
 
 from ._finite import finite_guard
-from ._results import Result
+from ._results import Result, quantity
 from ._validation import check_nonnegative, check_positive, check_teeth, warn_outside
 from .errors import InfeasibleError, InputError, UnknownNameError, ValidityRangeWarning
 
@@ -691,18 +691,18 @@ class ChainRating(Result):
     """
 
     chain: str
-    pitch: float
-    strands: int
-    teeth: int
-    angular_velocity: float
-    chain_speed: float
-    link_plate: float
-    roller_bushing: float
-    galling: float
-    rated_power: float
+    pitch: float = quantity("m")
+    strands: int = quantity("1")
+    teeth: int = quantity("1")
+    angular_velocity: float = quantity("rad/s")
+    chain_speed: float = quantity("m/s")
+    link_plate: float = quantity("W")
+    roller_bushing: float = quantity("W")
+    galling: float = quantity("W")
+    rated_power: float = quantity("W")
     governing_limit: str
-    tension: float
-    galling_speed: float
+    tension: float = quantity("N")
+    galling_speed: float = quantity("rad/s")
     galling_exceeded: bool
     lubrication: str
     lubrication_method: str
@@ -882,25 +882,25 @@ class Candidate(Result):
     chain: str
     names: tuple[str, ...]
     family: str
-    pitch: float
-    strands: int
-    teeth_driving: int
-    teeth_driven: int
-    speed: float
-    power: float
-    service_factor: float
-    chain_speed: float
-    rated_power: float
-    design_power: float
-    power_margin: float
+    pitch: float = quantity("m")
+    strands: int = quantity("1")
+    teeth_driving: int = quantity("1")
+    teeth_driven: int = quantity("1")
+    speed: float = quantity("rad/s")
+    power: float = quantity("W")
+    service_factor: float = quantity("1")
+    chain_speed: float = quantity("m/s")
+    rated_power: float = quantity("W")
+    design_power: float = quantity("W")
+    power_margin: float = quantity("1")
     governing_limit: str
-    working_tension: float
-    static_safety: float | None
-    galling_speed: float
+    working_tension: float = quantity("N")
+    static_safety: float | None = quantity("1")
+    galling_speed: float = quantity("rad/s")
     lubrication: str
     lubrication_method: str
-    centre_distance: float
-    links: int
+    centre_distance: float = quantity("m")
+    links: int = quantity("1")
     notes: tuple[str, ...]
 
 

@@ -49,7 +49,7 @@ Models (``model=``):
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from functools import lru_cache
 from typing import TYPE_CHECKING, Any
 
@@ -58,7 +58,7 @@ from numpy.typing import ArrayLike
 
 from .._finite import finite_guard
 from .._registry import Registry
-from .._results import Result
+from .._results import Result, quantity
 from .._validation import as_float_array, check_nonnegative, check_positive, check_teeth
 from ..errors import InfeasibleError, InputError
 from ..geometry.polygon import bi_regular_polygon, roller_chain_pitch_radius
@@ -99,7 +99,7 @@ SUMMARY_KEYS = (
 )
 
 
-@dataclass
+@dataclass(frozen=True)
 class EntryKinematics(Result):
     """Kinematics of the chain over the requested wheel angles.
 
@@ -149,28 +149,28 @@ class EntryKinematics(Result):
         paper model ``φ_g1, φ_g2``) [rad].
     """
 
-    phi: np.ndarray
-    x: np.ndarray
-    velocity: np.ndarray
-    acceleration: np.ndarray
-    transverse_position: np.ndarray | None
-    transverse_velocity: np.ndarray | None
-    transverse_acceleration: np.ndarray | None
+    phi: np.ndarray = quantity("rad")
+    x: np.ndarray = quantity("m")
+    velocity: np.ndarray = quantity("m/s")
+    acceleration: np.ndarray = quantity("m/s^2")
+    transverse_position: np.ndarray | None = quantity("m")
+    transverse_velocity: np.ndarray | None = quantity("m/s")
+    transverse_acceleration: np.ndarray | None = quantity("m/s^2")
     summary: dict
     entry: str
     model: str
     chain_type: str
-    pitch: float
-    bar_diameter: float
-    teeth: int
-    angular_velocity: float
-    radius: float
-    delta1: float
-    delta2: float
-    guide_height: float | None
-    guide_end_distance: float | None
-    period: float
-    seating_angles: np.ndarray = field(default_factory=lambda: np.zeros(0))
+    pitch: float = quantity("m")
+    bar_diameter: float = quantity("m")
+    teeth: int = quantity("1")
+    angular_velocity: float = quantity("rad/s")
+    radius: float = quantity("m")
+    delta1: float = quantity("rad")
+    delta2: float = quantity("rad")
+    guide_height: float | None = quantity("m")
+    guide_end_distance: float | None = quantity("m")
+    period: float = quantity("rad")
+    seating_angles: np.ndarray = quantity("rad", default_factory=lambda: np.zeros(0))
 
 
 @dataclass(frozen=True)
