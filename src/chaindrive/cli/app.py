@@ -53,6 +53,16 @@ def _root(version: bool = typer.Option(False, "--version", callback=_print_versi
     """chaindrive: design and analysis of chain drives."""
 
 
+#: One rule for every output file a command writes (--plot, --svg, --dxf, --step,
+#: --campbell, --map, --write, FILE): an existing file is refused unless --force is given.
+FORCE_OPTION_HELP = "Replace output files that exist (without it an existing file is refused before any work)."
+
+
+def force_option() -> Any:
+    """The ``--force`` option of a command that writes files."""
+    return typer.Option(False, "--force", help=FORCE_OPTION_HELP)
+
+
 def option_name(field: str) -> str:
     """``"guide_end"`` -> ``"--guide-end"`` (messages name the option as typed)."""
     return field if field.startswith("-") else "--" + field.replace("_", "-")
