@@ -15,7 +15,16 @@ import typer
 
 from ..errors import InputError
 from ..limits import MAX_POINTS, MAX_TEETH
-from .app import app, echo_json, force_option, motion_rows, print_rows, quantity, unit_help, wheel_speed
+from .app import (
+    app,
+    echo_json,
+    force_option,
+    motion_rows,
+    print_rows,
+    quantity,
+    unit_help,
+    wheel_speed,
+)
 
 _CHAIN = typer.Option(None, "--chain", "-c", help="Drive chain from the catalogue (e.g. 16B, 'ANSI 80'); its pitch t is used. Give either --chain or --pitch.")
 _PITCH = typer.Option(None, "--pitch", "-p", help=unit_help("Drive-chain pitch t (the crawler drive text eqs 6.15-6.16).", "m", "100 mm"))

@@ -14,7 +14,16 @@ import typer
 
 from ..errors import InputError
 from ..limits import MAX_POINTS, MAX_TEETH
-from .app import app, echo_json, force_option, motion_rows, print_rows, quantity, unit_help, wheel_speed
+from .app import (
+    app,
+    echo_json,
+    force_option,
+    motion_rows,
+    print_rows,
+    quantity,
+    unit_help,
+    wheel_speed,
+)
 
 _PLOT = typer.Option(
     None, "--plot",
