@@ -32,7 +32,7 @@ __all__ = ["html_of", "drive_html", "analysis_html", "result_html", "drawing_svg
 
 _STYLE = ("<style>.cd-table{border-collapse:collapse;font-size:0.9em;margin:0.3em 0}"
           ".cd-table td,.cd-table th{border-bottom:1px solid #ddd;padding:2px 8px;text-align:left}"
-          ".cd-table td:nth-child(2){text-align:right;font-variant-numeric:tabular-nums}"
+          ".cd-table td:nth-child(2),.cd-table td:nth-child(3){text-align:right;font-variant-numeric:tabular-nums;white-space:nowrap}"
           ".cd-fail{color:#b03a2e;font-weight:bold}.cd-pass{color:#1e8449}"
           ".cd-drawing svg{max-width:560px;height:auto}</style>")
 
@@ -191,22 +191,25 @@ def analysis_html(analysis: Any) -> str:
     and each part folded as its table."""
     verdict = ("<span class='cd-pass'>all checks pass</span>" if analysis.passed
                else "<span class='cd-fail'>at least one check fails</span>")
+    from ..analysis.parts import get_part
+
     parts = []
-    for f in dataclasses.fields(analysis):
-        if f.name in ("drive", "checks", "warnings", "parts"):
-            continue
-        value = getattr(analysis, f.name)
+    for name, value in analysis.results.items():
         if value is None:
             continue
+        try:
+            title = f"{get_part(name).title} ({name})"
+        except Exception:  # noqa: BLE001 - a result stored under a name no part declares
+            title = name
         if isinstance(value, tuple):
             inner = "".join(result_html(v, title=getattr(v, "name", None)) for v in value
                             if dataclasses.is_dataclass(v))
         elif dataclasses.is_dataclass(value):
             inner = result_html(value)
         else:
-            cell, unit = _number_cells(value, f.metadata.get("unit"), f.metadata.get("display"))
+            cell, unit = _number_cells(value, None, None)
             inner = f"<p>{cell} {escape(unit)}</p>"
-        parts.append(_fold(_label(f.name), inner))
+        parts.append(_fold(title, inner))
     warnings = "".join(f"<li>{escape(w)}</li>" for w in analysis.warnings)
     try:
         svg = f"<div class='cd-drawing'>{drawing_svg(analysis)}</div>"
