@@ -460,8 +460,8 @@ def test_dxf_downloads_are_the_workshop_drawing_and_the_mining_example_is_the_fi
 
     from chaindrive.geometry import Sprocket
     from chaindrive.geometry.drawing import part_drawing
-    from chaindrive.web.design import design_from_state
     from chaindrive.geometry.part import sprocket_part
+    from chaindrive.web.design import design_from_state
 
     res = client.get("/download/wheel.dxf?" + _query({}))
     doc = ezdxf.read(io.StringIO(res.content.decode()))

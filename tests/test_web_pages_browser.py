@@ -15,9 +15,10 @@ from pathlib import Path
 import pytest
 
 from test_web_browser import ARTIFACTS as _WEB_ARTIFACTS  # noqa: F401 - skips the module without chromium
-from test_web_browser import _live, browser, page, server  # noqa: F401 - shared fixtures
+from test_web_browser import _live, browser, page, server  # noqa: F401, F811 - shared fixtures
 
 pytestmark = pytest.mark.browser
+# ruff: noqa: F811 - the fixtures imported above are the test parameters
 SHOTS = Path(__file__).parent / "artifacts" / "pages"
 ATTRIBUTE = re.compile(r"\b[a-z]+_[a-z0-9_]+\b")          # a snake_case library name
 RESIDUE = re.compile(r"\d\.\d+e-(?:0[7-9]|[1-9]\d)")     # 7.694e-12: rounding noise shown as a number
