@@ -206,3 +206,15 @@ def test_studio_crawler_page_cam_force_and_guide_reaction():
     with pytest.raises(FieldError) as exc:
         crawler_result(dict(state, sprocket_distance="2.05 m"))
     assert exc.value.field == "sprocket_distance"
+
+
+def test_studio_crawler_table_shows_the_guide_reaction():
+    from chaindrive.web.expert import DEFAULTS, crawler_result
+
+    state = dict(DEFAULTS["crawler"], stiffness="5 MN", sprocket_distance="2 m", cam_distance="0.7 m",
+                 tension="10 kN", traction_force="8 kN", cam_face_angle="15 deg")
+    table = crawler_result(state)["table"]
+    rows = {label: (unit, cells) for label, unit, cells in table["rows"]}
+    unit, cells = rows["largest guide reaction at the guide end, T tan φ1"]
+    assert unit == "kN" and cells[table["columns"].index("tangent guide")] == "4.142"
+    assert "pushing-off force on the guide at the cam, P tan α" in rows

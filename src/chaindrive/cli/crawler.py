@@ -15,7 +15,16 @@ import typer
 
 from ..errors import InputError
 from ..limits import MAX_POINTS, MAX_TEETH
-from .app import app, echo_json, motion_rows, print_rows, quantity, unit_help, wheel_speed
+from .app import (
+    app,
+    echo_json,
+    force_option,
+    motion_rows,
+    print_rows,
+    quantity,
+    unit_help,
+    wheel_speed,
+)
 
 _CHAIN = typer.Option(None, "--chain", "-c", help="Drive chain from the catalogue (e.g. 16B, 'ANSI 80'); its pitch t is used. Give either --chain or --pitch.")
 _PITCH = typer.Option(None, "--pitch", "-p", help=unit_help("Drive-chain pitch t (the crawler drive text eqs 6.15-6.16).", "m", "100 mm"))
@@ -49,6 +58,7 @@ def crawler_command(
     points: int = _POINTS,
     as_json: bool = _JSON,
     plot: Path | None = _PLOT,
+    force: bool = force_option(),
 ) -> None:
     """Speed of the crawler drive chain with/without the tangent guide and the force on the cam.
 
@@ -65,7 +75,7 @@ def crawler_command(
     if plot is not None:
         from .._io import FIGURE_SUFFIXES, check_output_path
 
-        check_output_path(plot, FIGURE_SUFFIXES, option="--plot")
+        check_output_path(plot, FIGURE_SUFFIXES, option="--plot", force=force)
     if (chain is None) == (pitch is None):
         raise InputError("give exactly one of --chain (e.g. 16B) and --pitch (t > 0 m)")
     if chain is not None:
@@ -92,7 +102,7 @@ def crawler_command(
         from ..plotting.crawler import crawler_plot
 
         fig = crawler_plot([main, other] if guide else [other, main])
-        save_figure(fig, plot, option="--plot", dpi=120)
+        save_figure(fig, plot, option="--plot", dpi=120, force=force)
         import matplotlib.pyplot as plt
 
         plt.close(fig)

@@ -14,7 +14,16 @@ import typer
 
 from ..errors import InputError
 from ..limits import MAX_POINTS, MAX_TEETH
-from .app import app, echo_json, motion_rows, print_rows, quantity, unit_help, wheel_speed
+from .app import (
+    app,
+    echo_json,
+    force_option,
+    motion_rows,
+    print_rows,
+    quantity,
+    unit_help,
+    wheel_speed,
+)
 
 _PLOT = typer.Option(
     None, "--plot",
@@ -38,6 +47,7 @@ def kinematics_command(
     roller: bool = typer.Option(False, "--roller", help="Custom chain is a roller chain (regular polygon R = p / (2 sin(pi/z))) when no --chain is given."),
     as_json: bool = typer.Option(False, "--json", help="Print phi (rad), x (m), velocity (m/s), acceleration (m/s²) and the summary as JSON, SI units."),
     plot: Path | None = _PLOT,
+    force: bool = force_option(),
 ) -> None:
     """Velocity and acceleration of a chain running onto its wheel (polygonal effect).
 
@@ -53,7 +63,7 @@ def kinematics_command(
     if plot is not None:
         from .._io import FIGURE_SUFFIXES, check_output_path
 
-        check_output_path(plot, FIGURE_SUFFIXES, option="--plot")
+        check_output_path(plot, FIGURE_SUFFIXES, option="--plot", force=force)
     t, d = _chain_geometry(chain, pitch, bar_diameter, roller)
     w = wheel_speed(speed, pitch=t, teeth=teeth, link_chain=d is not None)
     l = quantity(guide_end, "m", "guide-end")
@@ -72,7 +82,7 @@ def kinematics_command(
         from ..plotting.kinematics import kinematics_plot
 
         fig = kinematics_plot(res)
-        save_figure(fig, plot, option="--plot", dpi=120)
+        save_figure(fig, plot, option="--plot", dpi=120, force=force)
         import matplotlib.pyplot as plt
 
         plt.close(fig)

@@ -695,6 +695,13 @@ class Drive:
         """Power times service factor [W]."""
         return self.power() * self.load.service_factor
 
+    def _repr_html_(self) -> str:
+        """Notebook display: the drive's data with units and its drawing to scale
+        (formatted by :func:`chaindrive.workflows.notebook.html_of`)."""
+        from ..workflows.notebook import html_of
+
+        return html_of(self)
+
     def is_two_wheel(self) -> bool:
         """Two toothed wheels and nothing else (the exact polygon length applies)."""
         return len(self.wheels) == 2 and all(w.teeth is not None for w in self.wheels)

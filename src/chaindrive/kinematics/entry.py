@@ -96,6 +96,7 @@ __all__ = [
     "ENTRIES",
     "MODELS",
     "SUMMARY_KEYS",
+    "SUMMARY_QUANTITIES",
 ]
 
 #: Named entry types.
@@ -117,6 +118,36 @@ SUMMARY_KEYS = (
     "sign_change_at_period_end",
     "transverse_throw",
 )
+
+#: Every key of :attr:`EntryKinematics.summary` (and of the crawler's): its label and SI
+#: unit ("1": a ratio or a count; "": a yes/no), declared where the summary is made, for
+#: presenters (the studio's expert pages, the command line).
+SUMMARY_QUANTITIES: dict[str, tuple[str, str]] = {
+    "v_mean": ("mean chain speed", "m/s"),
+    "v_min": ("minimum chain speed", "m/s"),
+    "v_max": ("maximum chain speed", "m/s"),
+    "nonuniformity": ("speed non-uniformity (vmax − vmin)/vmean", "1"),
+    "a_min": ("minimum acceleration", "m/s^2"),
+    "a_max": ("maximum acceleration", "m/s^2"),
+    "a_abs_max": ("largest |acceleration|", "m/s^2"),
+    "sign_change_at_period_end": ("acceleration changes sign at the period end", ""),
+    "transverse_throw": ("transverse throw of the span", "m"),
+    "advance_per_period": ("chain advance per tooth period", "m"),
+    "a_end_left": ("acceleration just before the period end", "m/s^2"),
+    "a_end_right": ("acceleration just after the period start", "m/s^2"),
+    "a_jump_at_period_end": ("acceleration jump at the period end", "m/s^2"),
+    "a_jump_max": ("largest acceleration jump (seatings)", "m/s^2"),
+    "sign_changing_jumps": ("acceleration jumps that change sign", "1"),
+    "psi_v_min": ("sprocket angle of the minimum speed", "rad"),
+    "peak_deviation": ("largest deviation from the mean speed", "m/s"),
+    "cam_stiffness": ("stiffness at the cam", "N/m"),
+    "force_min": ("cam force minimum (about the mean)", "N"),
+    "force_max": ("cam force maximum (about the mean)", "N"),
+    "force_range": ("cam force range", "N"),
+    "cam_force_max": ("cam force maximum (with the traction force)", "N"),
+    "cam_pushing_off_max": ("pushing-off force on the guide at the cam, P tan α", "N"),
+    "guide_reaction_max": ("largest guide reaction at the guide end, T tan φ1", "N"),
+}
 
 
 @dataclass(frozen=True)

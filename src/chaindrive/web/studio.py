@@ -11,7 +11,6 @@ Routes (the page state is the query string, so a link reproduces a design):
 
 from __future__ import annotations
 
-import io
 import json
 import time
 from pathlib import Path
@@ -27,7 +26,6 @@ from ..errors import ChainDriveError, InputError
 from .design import (
     DEFAULTS,
     FIELDS,
-    MINING_EXAMPLE,
     design_from_state,
     normalise_state,
     service_factor_table,
@@ -42,7 +40,7 @@ DOWNLOADS = {
     "report.html": "Calculation report (HTML, figures inside)",
     "report.pdf": "Calculation report (PDF)",
     "results.json": "Every number of the analysis (JSON, SI units)",
-    "wheel.dxf": "Driving wheel outline (DXF, mm)",
+    "wheel.dxf": "Driving wheel workshop drawing (DXF, mm)",
     "wheel.svg": "Driving wheel outline (SVG, mm)",
 }
 
@@ -225,21 +223,27 @@ def _results_json(design: Any) -> str:
                                 "results": analysis.results()}), indent=2)
 
 
+def _example_query(name: str) -> str:
+    """The studio's state of the example project file ``name`` of ``examples/`` (the same
+    file ``chaindrive analyze`` reads), as a query string."""
+    from .._examples import example_path
+
+    return state_query(normalise_state(state_from_project(example_path(name).read_text(encoding="utf-8"), name)))
+
+
 def _wheel_file(design: Any, kind: str) -> bytes:
+    """The driving wheel: its workshop drawing as DXF (what ``chaindrive sprocket --dxf``
+    writes), or its outline as SVG."""
     from ..geometry import PocketWheel, Sprocket
-    from ..geometry.export import dxf_document, svg_text
+    from ..geometry.export import svg_text
+    from .expert import workshop_drawing
 
     chain = design.chain
     z = design.teeth_driving
     wheel = PocketWheel.from_chain(chain, z) if chain.is_link_chain else Sprocket.from_chain(chain, z)
-    outline = wheel.outline()
-    title = wheel.label()
     if kind == "svg":
-        return svg_text(outline, title=title).encode("utf-8")
-    doc = dxf_document(outline, title)
-    buf = io.StringIO()
-    doc.write(buf)
-    return buf.getvalue().encode("utf-8")
+        return svg_text(wheel.outline(), title=wheel.label()).encode("utf-8")
+    return workshop_drawing(wheel)
 
 
 def router(ctx: Any) -> APIRouter:
@@ -257,7 +261,7 @@ def router(ctx: Any) -> APIRouter:
         return ctx.render(request, "studio.html", state=state, table=table, fields=FIELDS,
                           driven_options=driven_options,
                           downloads=DOWNLOADS, open_error=request.query_params.get("open_error", "")[:500],
-                          mining_query=state_query(normalise_state(MINING_EXAMPLE)),
+                          mining_query=_example_query("mining_conveyor.toml"),
                           query=state_query(state))
 
     @r.get("/api/design")

@@ -9,6 +9,16 @@
     figs.forEach((f, i) => window.Plotly.newPlot($("plot-" + (i + 1)), f.data, f.layout, cfg));
   }
   const form = $("expert-form");
+  // results shown for other inputs than those in the form are marked stale at once
+  const result = $("result");
+  if (form && result) {
+    const initial = new URLSearchParams(new FormData(form)).toString();
+    form.addEventListener("input", () => {
+      const stale = new URLSearchParams(new FormData(form)).toString() !== initial;
+      result.classList.toggle("stale", stale);
+      $("stale").hidden = !stale;
+    });
+  }
   if (!form || !form.action.endsWith("/expert/simulation")) return;
   function text(el, v) { el.textContent = v == null ? "" : String(v); }
   form.addEventListener("submit", async (e) => {
