@@ -71,10 +71,12 @@ def test_crawler_part_checks_and_report(crawler_analysis, tmp_path):
     assert data["guide_reaction_driving"] > 0 and data["cam_force_max"] > 0
     from chaindrive.workflows.analyze import analyze
 
-    out = analyze(crawler_analysis.drive, tmp_path, figures=False)
+    out = analyze(crawler_analysis.drive, tmp_path, figures=True)
     html = out.files["html"].read_text(encoding="utf-8")
     assert "Conveyor crawler drive: cam force and guide reaction" in html
-    assert "guide reaction driving" in html and "cam force max" in html
+    assert "guide reaction at the driving sprocket end, T tan φ1" in html and "cam force, largest" in html
+    assert "pushing-off force at the cam, P tan α" in html and "m/s²" in html
+    assert (tmp_path / "crawler.png").exists() or "crawler.png" in html
 
 
 def test_crawler_part_without_guide_and_errors(crawler):

@@ -35,6 +35,7 @@ from .._results import Result, quantity
 from ..drive.model import Drive
 from ..errors import InputError
 from ..kinematics.crawler import (
+    CrawlerKinematics,
     cam_pushing_off_force,
     crawler_drive,
     elastic_loop,
@@ -67,8 +68,8 @@ class CrawlerConveyor(Result):
     cam_distance: float = quantity("m", display="mm")
     mean_speed: float = quantity("m/s")
     speed_nonuniformity: float = quantity("1")
-    acceleration_min: float = quantity("m/s**2")
-    acceleration_max: float = quantity("m/s**2")
+    acceleration_min: float = quantity("m/s^2")
+    acceleration_max: float = quantity("m/s^2")
     transverse_throw: float = quantity("m", display="mm")
     cam_stiffness: float = quantity("N/m")
     traction_force: float = quantity("N")
@@ -84,6 +85,7 @@ class CrawlerConveyor(Result):
     guide_reaction_tensioning: float | None = quantity("N", default=None)
     cam_pushing_off: float = quantity("N", default=0.0)
     cam_face_angle: float = quantity("rad", display="°", default=0.0)
+    kinematics: CrawlerKinematics | None = None
 
 
 def _sprockets(drive: Drive) -> tuple[float, int]:
@@ -173,7 +175,7 @@ def crawler_conveyor(ctx: PartContext) -> CrawlerConveyor | None:
         tensioning_sprocket_lag=lag,
         tensioning_side_tension_min=float(ta.min()), driving_side_tension_max=float(tb.max()),
         guide_reaction_driving=reaction_drive, guide_reaction_tensioning=reaction_tension,
-        cam_pushing_off=pushing, cam_face_angle=float(spec.cam_face_angle),
+        cam_pushing_off=pushing, cam_face_angle=float(spec.cam_face_angle), kinematics=kin,
     )
 
 
@@ -200,4 +202,5 @@ def crawler_checks(ctx: PartContext, r: CrawlerConveyor) -> list[Check]:
 
 
 register_part(Part("crawler_conveyor", "Conveyor crawler drive: cam force and guide reaction", crawler_conveyor,
-                   needs=("loads",), checks=crawler_checks, order=36))
+                   needs=("loads",), checks=crawler_checks, order=36,
+                   section="chaindrive.workflows.sections:crawler_section"))

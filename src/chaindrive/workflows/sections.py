@@ -405,6 +405,85 @@ def strength_section(a: DriveAnalysis, fig: _Figures) -> Section | None:
     return sec
 
 
+# --------------------------------------------------------------------------- crawler conveyor
+#: Rows of the crawler table: field of the part's result, label (units from the result class).
+_CRAWLER_ROWS = (
+    ("guide", "guide"),
+    ("teeth", "teeth of both sprockets"),
+    ("pitch_radius", "pitch radius R"),
+    ("sprocket_distance", "sprocket distance A"),
+    ("cam_distance", "cam distance l from the tensioning sprocket"),
+    ("mean_speed", "mean chain speed z t ω / 2π"),
+    ("speed_nonuniformity", "speed non-uniformity (v_max − v_min)/v_mean"),
+    ("acceleration_min", "smallest acceleration"),
+    ("acceleration_max", "largest acceleration"),
+    ("transverse_throw", "transverse throw of the span"),
+    ("cam_stiffness", "stiffness at the cam E_П A / (l (A − l))"),
+    ("traction_force", "traction force (mean cam force = effective pull)"),
+    ("pretension", "pre-tension (slack tension)"),
+    ("cam_force_min", "cam force, smallest"),
+    ("cam_force_max", "cam force, largest"),
+    ("cam_force_range", "cam force fluctuation (rigid return span)"),
+    ("cam_force_range_elastic", "cam force fluctuation (elastic return span, free tensioning sprocket)"),
+    ("tensioning_sprocket_lag", "largest lag of the free tensioning sprocket"),
+    ("tensioning_side_tension_min", "smallest tension, tensioning sprocket – cam"),
+    ("driving_side_tension_max", "largest tension, cam – driving sprocket"),
+    ("guide_reaction_driving", "guide reaction at the driving sprocket end, T tan φ1"),
+    ("guide_reaction_tensioning", "guide reaction at the tensioning sprocket end, T tan φ1"),
+    ("cam_face_angle", "pressure angle of the cam face α"),
+    ("cam_pushing_off", "pushing-off force at the cam, P tan α"),
+)
+
+
+def crawler_section(a: DriveAnalysis, fig: _Figures) -> Section | None:
+    """The conveyor crawler drive: kinematics, cam force, guide reactions (the crawler drive text)."""
+    r = getattr(a, "crawler_conveyor", None)
+    if r is None:
+        return None
+    from .display import display
+
+    sec = Section("Conveyor crawler drive: cam force and guide reaction")
+    sec.paragraphs.append(
+        "The drive chain carries cams that push the hinges of the conveyor's traction chain; it runs round the "
+        "driving and the tensioning sprocket, in phase (the crawler drive text, eqs 6.7, 6.14–6.16). The force on "
+        "the cam is the rebuilt formula P = E_П [(u_З − u_П)/(A − l) + (u_1 − u_П)/l] with the cam moved at the "
+        "mean speed; its mean is the traction force. It assumes a rigid return span and a tensioning sprocket "
+        "that turns in phase and imposes its own displacement; the second fluctuation drops both (elastic return "
+        "span, free tensioning sprocket) as a check. The guide takes the text's pushing-off forces: T tan φ1 at "
+        "each end of the guide and P tan α at the cam (docs/crawler.md).")
+    rows: list[list[Any]] = []
+    for name, label in _CRAWLER_ROWS:
+        value = getattr(r, name)
+        if value is None:
+            continue
+        if isinstance(value, str):
+            rows.append([label, value, ""])
+            continue
+        unit = type(r).unit_of(name) or ""
+        shown = type(r).display_unit_of(name)
+        if shown == "°":
+            rows.append([label, math.degrees(float(value)), "°"])
+        elif shown == "mm":
+            rows.append([label, float(value) * 1e3, "mm"])
+        else:
+            v, u = display(float(value), unit)
+            rows.append([label, v, "-" if u == "1" else u.replace("^2", "²")])
+    sec.tables.append(Table("Conveyor crawler drive (the crawler drive text; cam force rebuilt, docs/crawler.md)",
+                            ["quantity", "value", "unit"], rows))
+    _checks(sec, a, ("crawler_conveyor",))
+    kin = r.kinematics
+    if kin is not None:
+        def crawler_figure() -> MatplotlibFigure:
+            from ..plotting.crawler import crawler_plot
+
+            return crawler_plot([kin])
+
+        fig(sec, crawler_figure, "Drive-chain speed, acceleration and cam force (about its mean) over one tooth "
+            "period", "crawler.png")
+    sec.results["crawler_conveyor"] = {k: v for k, v in r.to_dict().items() if k != "kinematics"}
+    return sec
+
+
 # --------------------------------------------------------------------------- wear
 def wear_section(a: DriveAnalysis, fig: _Figures) -> Section | None:
     if "wear" not in a.parts:
