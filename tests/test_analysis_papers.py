@@ -157,3 +157,15 @@ def test_studio_shows_the_fretting_table_for_a_multi_strand_chain():
     assert rows["strands"] == ("2", "") and rows["slip without"][1] == "mm"
     assert float(rows["slip ratio"][0]) > 1
     assert "fretting" not in studio_payload(normalise_state({"chain": "16B-1"}))
+
+
+def test_expert_track_wheel_page_shows_the_worn_chain_tip():
+    from chaindrive.web.expert import DEFAULTS, wheel_result
+    from chaindrive.web.fields import FieldError
+
+    rows = {label: (value, unit) for label, value, unit in wheel_result("track-wheel", DEFAULTS["track-wheel"])
+            ["dimensions"]}
+    r0 = 0.17 / (2 * math.sin(math.pi / 13))
+    assert float(rows["worn tip radius"][0]) == pytest.approx(1.03 * r0 * 1e3, abs=0.05)
+    with pytest.raises(FieldError, match="elongation_limit"):
+        wheel_result("track-wheel", dict(DEFAULTS["track-wheel"], elongation_limit="0.5"))

@@ -35,6 +35,7 @@ PAGES = {
 
 _SPEED = FieldSpec("rad/s", 0.0, 1000.0, example="5 rad/s")
 _LENGTH = FieldSpec("m", 0.0, 10.0, example="256 mm")
+_ELONGATION = FieldSpec("", 0.0, 0.1, example="0.03")
 _FORCE = FieldSpec("N", 0.0, 1e8, open_minimum=False, example="10 kN")
 _STIFFNESS = FieldSpec("N", 0.0, 1e11, example="5 MN")
 _ANGLE = FieldSpec("rad", 0.0, 1.5707, open_minimum=False, example="15 deg")
@@ -45,7 +46,8 @@ DEFAULTS = {
                 "sprocket_distance": "", "cam_distance": "", "traction_force": "0 N", "tension": "",
                 "cam_face_angle": "0 deg"},
     "pocket-wheel": {"chain": "18x64", "teeth": "8"},
-    "track-wheel": {"pitch": "170 mm", "teeth": "13", "pin_radius": "25 mm", "link": "cast"},
+    "track-wheel": {"pitch": "170 mm", "teeth": "13", "pin_radius": "25 mm", "link": "cast",
+                    "elongation_limit": "0.03"},
     "simulation": {"example": "link", "speed": "5 rad/s", "load": "2000 N*m", "duration": "0.5 s",
                    "frames": "30", "design": ""},
 }
@@ -326,7 +328,10 @@ def _wheel(page: str, state: dict[str, str]):
             wheel = TrackDriveWheel(pitch=parse_field("pitch", state["pitch"], _LENGTH),
                                     teeth=parse_integer("teeth", state["teeth"], 3, 60),
                                     pin_radius=parse_field("pin_radius", state["pin_radius"], _LENGTH),
-                                    link=state["link"])
+                                    link=state["link"],
+                                    elongation_limit=parse_field("elongation_limit",
+                                                                 state.get("elongation_limit") or "0.03",
+                                                                 _ELONGATION))
         outline = wheel.outline()
     except FieldError:
         raise
