@@ -108,17 +108,17 @@ def test_fretting_part_multi_strand():
     swing = a.loads.tight - a.loads.slack
     pin = MultiRowPin.from_chain(chains.get("16B-2"))
     assert r.load_swing == pytest.approx(swing)
-    assert r.slip_without == pytest.approx(float(pin.bending(swing, intermediate_plates=False).slip_amplitude))
-    assert r.slip_with == pytest.approx(float(pin.bending(swing, intermediate_plates=True).slip_amplitude))
+    assert r.slip_without_plates == pytest.approx(float(pin.bending(swing, intermediate_plates=False).slip_amplitude))
+    assert r.slip_with_plates == pytest.approx(float(pin.bending(swing, intermediate_plates=True).slip_amplitude))
     assert r.slip_ratio > 1  # Vikulov: intermediate plates reduce the slip
     assert r.frequency == pytest.approx(19 * 960 / 60)  # tooth frequency of the driving wheel
-    assert r.latent_with is None  # no [fretting] constants
+    assert r.latent_period_with_plates is None  # no [fretting] constants
     spec = FrettingSpec(roughness=0.8e-6, latent_coefficient=1e9, decay_coefficient=1e-6)
     a = analyze_drive(dataclasses.replace(duplex, fretting=spec), include=["fretting"])
     r = a.fretting
     k1, k2, ra = 1e9, 1e-6, 0.8e-6
-    tau = k1 * ra * np.exp(-k2 * r.slip_with * r.normal_load * r.frequency / ra)
-    assert r.latent_with == pytest.approx(tau, rel=1e-12)
+    tau = k1 * ra * np.exp(-k2 * r.slip_with_plates * r.normal_load * r.frequency / ra)
+    assert r.latent_period_with_plates == pytest.approx(tau, rel=1e-12)
     assert r.life_ratio > 1
     assert any(c.name.startswith("fretting latent period") for c in a.checks)
 
@@ -154,7 +154,7 @@ def test_studio_shows_the_fretting_table_for_a_multi_strand_chain():
     p = studio_payload(normalise_state({"chain": "16B-2"}))
     assert p["errors"] == {} and p["chain"]["name"] == "16B-2"
     rows = {name: (value, unit) for name, value, unit in p["fretting"]["rows"]}
-    assert rows["strands"] == ("2", "") and rows["slip without"][1] == "mm"
+    assert rows["strands"] == ("2", "") and rows["slip without plates"][1] == "mm"
     assert float(rows["slip ratio"][0]) > 1
     assert "fretting" not in studio_payload(normalise_state({"chain": "16B-1"}))
 

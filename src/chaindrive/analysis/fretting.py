@@ -41,13 +41,13 @@ class FrettingAnalysis(Result):
     load_swing: float = quantity("N")
     normal_load: float = quantity("N")
     frequency: float = quantity("Hz")
-    stress_without: float = quantity("Pa")
-    stress_with: float = quantity("Pa")
-    slip_without: float = quantity("m", display="mm")
-    slip_with: float = quantity("m", display="mm")
+    pin_stress_without_plates: float = quantity("Pa")
+    pin_stress_with_plates: float = quantity("Pa")
+    slip_without_plates: float = quantity("m", display="mm")
+    slip_with_plates: float = quantity("m", display="mm")
     slip_ratio: float = quantity("1")
-    latent_without: float | None = quantity("s", default=None)
-    latent_with: float | None = quantity("s", default=None)
+    latent_period_without_plates: float | None = quantity("s", default=None)
+    latent_period_with_plates: float | None = quantity("s", default=None)
     life_ratio: float | None = quantity("1", default=None)
 
 
@@ -81,10 +81,10 @@ def drive_fretting(ctx: PartContext) -> FrettingAnalysis | None:
         life = float(cmp.life_ratio)
     return FrettingAnalysis(
         strands=pin.strands, load_swing=swing, normal_load=normal, frequency=frequency,
-        stress_without=float(without.max_stress), stress_with=float(with_.max_stress),
-        slip_without=float(without.slip_amplitude), slip_with=float(with_.slip_amplitude),
+        pin_stress_without_plates=float(without.max_stress), pin_stress_with_plates=float(with_.max_stress),
+        slip_without_plates=float(without.slip_amplitude), slip_with_plates=float(with_.slip_amplitude),
         slip_ratio=float(without.slip_amplitude) / float(with_.slip_amplitude),
-        latent_without=latent_without, latent_with=latent_with, life_ratio=life,
+        latent_period_without_plates=latent_without, latent_period_with_plates=latent_with, life_ratio=life,
     )
 
 
