@@ -13,7 +13,8 @@ import math
 import typer
 
 from ..errors import ChainDriveError
-from .app import app, echo_json, quantity, unit_help
+from ..units import angular_velocity_to_rpm
+from .app import OPTION_ALIASES, app, echo_json, quantity, unit_help
 
 
 def _console():
@@ -125,6 +126,9 @@ def layout_command(
         con.print(f"warning: {w}", markup=False)
 
 
+OPTION_ALIASES["select"] = {"teeth_driving": "--teeth", "service_factor": "--service-factor"}
+
+
 @app.command("select")
 def select_command(
     power: str = typer.Option(..., "--power", "-P", help=unit_help(
@@ -173,6 +177,13 @@ def select_command(
     w = quantity(speed, "rad/s", "speed")
     a = quantity(centre_distance, "m", "centre_distance")
     counts = _strand_counts(strands)
+    from ..limits import MAX_TEETH, check_size
+
+    check_size("--teeth", teeth, MAX_TEETH, minimum=3)
+    if not (math.isfinite(ratio) and 1.0 <= ratio <= MAX_TEETH / max(teeth, 1)):
+        # the driven wheel has round(z1 ratio) teeth, at most chaindrive.limits.MAX_TEETH
+        raise InputError(f"--ratio must lie in [1, {MAX_TEETH / max(teeth, 1):.6g}] (driven teeth = "
+                         f"round({teeth} x ratio) <= {MAX_TEETH}), got {ratio:.6g}")
     if limit < 1:
         raise InputError(f"--limit must be a whole number >= 1, got {limit}")
     found = select(P, w, ratio, service_factor=service_factor, teeth_driving=teeth, family=family,
@@ -194,7 +205,7 @@ def select_command(
     first = found[0]
     where = ("centre distance 40 pitches (default)" if a is None
              else f"centre distance about {a * 1e3:g} mm")
-    t = Table(title=f"Chains for {P / 1e3:g} kW × {service_factor:g} at {w * 60 / (2 * math.pi):g} rpm, "
+    t = Table(title=f"Chains for {P / 1e3:g} kW × {service_factor:g} at {angular_velocity_to_rpm(w):g} rpm, "
                     f"{first.teeth_driving}/{first.teeth_driven} teeth, {where}")
     from rich.markup import escape
 

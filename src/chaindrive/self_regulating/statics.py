@@ -13,6 +13,7 @@ from numpy.typing import ArrayLike
 from .. import layout as L
 from .._validation import as_float_array, check_nonnegative, check_positive, check_range
 from ..errors import InfeasibleError, InputError
+from ..loads import sides_per_turn
 
 CARRIER_KINDS = ("pivot", "slide")
 TORQUE_REACTIONS = ("carrier", "frame")
@@ -64,7 +65,8 @@ def _unit(name: str, value) -> np.ndarray:
 
 
 def _sides_per_turn(teeth, bar_diameter):
-    return 2.0 * teeth if bar_diameter else 1.0 * teeth
+    """:func:`chaindrive.loads.sides_per_turn`, the link chain told by its bar diameter."""
+    return float(sides_per_turn(int(teeth), bool(bar_diameter)))
 
 
 

@@ -15,6 +15,7 @@ from ..._results import Result, quantity
 from ..._typing import FloatOrArray
 from ..._validation import as_float_array, check_nonnegative, check_positive, check_teeth
 from ...errors import InfeasibleError, InputError
+from ...loads import mean_chain_speed
 from .cam import cam_force, cam_pushing_off_force, cam_stiffness, guide_reaction
 from .laws import (
     GUIDES,
@@ -296,7 +297,7 @@ def crawler_drive(pitch: float, teeth: int, angular_velocity: float, *, guide: s
             a = np.where(end, free_span_acceleration(left, t, z, w), a)
         else:
             a = np.where(end, guided_acceleration(left, t, z, w), a)
-    v_mean = z * t * w / (2.0 * np.pi)
+    v_mean = mean_chain_speed(z, t, w)
     v_max = w * R
     if kind == "none":
         psi_min = 0.0
