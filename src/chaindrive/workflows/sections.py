@@ -40,6 +40,21 @@ class _Figures:
         section.figures.append(Figure.from_matplotlib(make(), caption, filename))
 
 
+def wheel_description(drive: Any, name: str) -> str:
+    """A wheel as every table of the report names it: its type and its role in the drive
+    (``"pocket wheel, tensioner idler"``, ``"sprocket, driving"``)."""
+    wheel = next(w for w in drive.wheels if w.name == name)
+    link = drive.chain.is_link_chain
+    if wheel.kind == "idler":
+        kind = ("pocket wheel" if link else "sprocket") if wheel.teeth is not None else "plain wheel"
+    else:
+        kind = wheel.kind.replace("_", " ")
+    tensioner = drive.tensioner is not None and drive.tensioner.wheel == name
+    role = ("driving" if wheel.driving else "tensioner idler" if tensioner else
+            "idler" if wheel.kind == "idler" else "driven")
+    return f"{kind}, {role}"
+
+
 def _teeth_cell(wheel: Wheel) -> int | str:
     """Teeth of a wheel, or the diameter of a toothless idler, for the input table."""
     if wheel.teeth is not None:
@@ -81,8 +96,8 @@ def inputs_section(a: DriveAnalysis, fig: _Figures) -> Section | None:
     ]
     tables = [Table("Input data", ["quantity", "value", "unit"], [[n, "—" if v is None else v, u] for n, v, u in rows]),
               Table("Wheels (in the order the chain passes them)",
-                    ["name", "kind", "teeth", "x [mm]", "y [mm]", "driving", "side"],
-                    [[w.name, w.kind, _teeth_cell(w),
+                    ["name", "wheel", "teeth", "x [mm]", "y [mm]", "driving", "side"],
+                    [[w.name, wheel_description(d, w.name), _teeth_cell(w),
                       w.position[0] * 1e3, w.position[1] * 1e3, w.driving, w.side] for w in d.wheels])]
     if d.tensioner is not None:
         t = d.tensioner
@@ -320,7 +335,9 @@ def geometry_section(a: DriveAnalysis, fig: _Figures) -> Section | None:
                          f"{dim.tip_diameter_min * 1e3:.2f} … {dim.tip_diameter_max * 1e3:.2f}",
                          dim.root_diameter * 1e3, g.basis])
         sec.results[g.wheel] = dd
-    sec.tables.append(Table("Main diameters", ["wheel", "kind", "teeth", "pitch Ø [mm]", "tip Ø [mm]", "root Ø [mm]",
+    for row in rows:  # the wheel named as in the input table (type and role), e.g. "pocket wheel, tensioner idler"
+        row[1] = wheel_description(a.drive, row[0])
+    sec.tables.append(Table("Main diameters", ["name", "wheel", "teeth", "pitch Ø [mm]", "tip Ø [mm]", "root Ø [mm]",
                                                "basis"], rows))
     drv = a.drive.driving_wheel.name
     driving = next((g for g in a.geometry if g.wheel == drv), None)
