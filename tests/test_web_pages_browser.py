@@ -96,7 +96,7 @@ def test_simulation_page_summary_in_engineering_units(page):
     assert len(rows) > 8
     text = page.inner_text("#sim-summary")
     assert not ATTRIBUTE.search(text)
-    for label, value, unit in rows:
+    for label, _value, unit in rows:
         assert unit or label in ("time steps", "computing seconds per simulated second"), label
     _shot(page, "simulation")
     page.goto(page.base + "/about")
