@@ -40,6 +40,8 @@ from ._finite import finite_guard
 from ._results import Result, quantity
 from ._validation import check_nonnegative, check_positive, check_teeth, warn_outside
 from .errors import InfeasibleError, InputError, UnknownNameError, ValidityRangeWarning
+from .loads import mean_chain_speed
+from .units import angular_velocity_to_rpm, rpm_to_angular_velocity
 
 if TYPE_CHECKING:
     from .chains import Chain
@@ -69,7 +71,6 @@ __all__ = [
 
 HP = 745.69987158227022
 _INCH = 0.0254
-_RPM = 2.0 * np.pi / 60.0
 
 
 def _inputs(teeth, angular_velocity, pitch):
@@ -77,7 +78,7 @@ def _inputs(teeth, angular_velocity, pitch):
     w = check_positive("angular_velocity", angular_velocity, "rad/s")
     p = check_positive("pitch", pitch, "m")
     warn_outside("teeth", z, 9, 45, "the ANSI/ACA rating (tables for 9…45 teeth)", stacklevel=4)
-    return z, w / _RPM, p / _INCH
+    return z, angular_velocity_to_rpm(w), p / _INCH
 
 
 def ansi_link_plate_power(teeth: ArrayLike, angular_velocity: ArrayLike, pitch: ArrayLike,
@@ -375,7 +376,7 @@ def galling_speed(pitch: ArrayLike, teeth: ArrayLike, tension: ArrayLike) -> np.
     warn_outside("pitch [in]", p, *_GALLING_PITCH_RANGE_IN, "the galling limit (ANSI nos. 25-240)",
                  stacklevel=3)
     log_ratio = math.log(82.5) - p * math.log(7.95) - z * math.log(1.0278) - f / 1000.0 * math.log(1.323)
-    return 1000.0 * np.exp(_galling_exponent(p) * log_ratio) * _RPM
+    return rpm_to_angular_velocity(1000.0 * np.exp(_galling_exponent(p) * log_ratio))
 
 
 def _galling_tension_lbf(p_in, z, n_rpm):
@@ -417,12 +418,13 @@ def galling_tension(pitch: ArrayLike, teeth: ArrayLike, angular_velocity: ArrayL
     """
     p = check_positive("pitch", pitch, "m") / _INCH
     z = check_teeth("teeth", teeth)
-    n = check_positive("angular_velocity", angular_velocity, "rad/s") / _RPM
+    n = angular_velocity_to_rpm(check_positive("angular_velocity", angular_velocity, "rad/s"))
     warn_outside("pitch [in]", p, *_GALLING_PITCH_RANGE_IN, "the galling limit (ANSI nos. 25-240)",
                  stacklevel=3)
     f = _galling_tension_lbf(p, z, n) * _LBF
     if np.any(f < 0):
-        n0 = float(np.min(np.broadcast_to(galling_speed(pitch, teeth, 0.0), np.shape(f))[f < 0])) / _RPM
+        n0 = float(np.min(np.broadcast_to(galling_speed(pitch, teeth, 0.0), np.shape(f))[f < 0]))
+        n0 = angular_velocity_to_rpm(n0)
         warnings.warn(
             f"angular_velocity is above the galling speed at zero tension ({n0:.4g} rpm): the "
             "chain galls unloaded, galling tension 0 returned",
@@ -465,7 +467,7 @@ def galling_power(pitch: ArrayLike, teeth: ArrayLike, angular_velocity: ArrayLik
     131.6
     """
     f = galling_tension(pitch, teeth, angular_velocity)
-    v = np.asarray(teeth) * np.asarray(pitch, dtype=float) * np.asarray(angular_velocity, dtype=float) / (2 * np.pi)
+    v = mean_chain_speed(np.asarray(teeth), np.asarray(pitch, dtype=float), np.asarray(angular_velocity, dtype=float))
     return f * v
 
 
@@ -792,7 +794,7 @@ def chain_rating(chain: Chain | str, teeth: int, angular_velocity: float, *,
         k2 = multi_strand_factor(ch.strands)
         h1 = float(ansi_link_plate_power(z, w, ch.pitch, kp))
         h2 = float(ansi_roller_bushing_power(z, w, ch.pitch, kr))
-        v = z * ch.pitch * w / (2 * np.pi)
+        v = mean_chain_speed(z, ch.pitch, w)
         h3 = float(galling_power(ch.pitch, z, w))
         tension = (min(h1, h2) if design is None else design / k2) / v
         n_gall = float(galling_speed(ch.pitch, z, tension))
@@ -807,7 +809,7 @@ def chain_rating(chain: Chain | str, teeth: int, angular_velocity: float, *,
     exceeded = bool(w > n_gall)
     if exceeded:
         region = "C'"
-        notes.append(f"galling region: the joints gall above {n_gall * 30 / np.pi:.4g} rpm at "
+        notes.append(f"galling region: the joints gall above {angular_velocity_to_rpm(n_gall):.4g} rpm at "
                      f"{tension / 1e3:.3g} kN per strand (Shigley §17-5); submit the design to the "
                      "chain manufacturer")
     return ChainRating(
@@ -1033,7 +1035,7 @@ def select(power: float, speed: float, ratio: float, *, service_factor: float = 
             if not 9 <= z1 <= 45:
                 notes.append(f"{z1} teeth: outside the 9-45 teeth of the ANSI/ACA tables")
             if r.galling_exceeded:
-                notes.append(f"galling region above {r.galling_speed * 30 / np.pi:.4g} rpm: submit to the "
+                notes.append(f"galling region above {angular_velocity_to_rpm(r.galling_speed):.4g} rpm: submit to the "
                              "chain manufacturer")
             fc = 0.0
             if ch.mass_per_length is None:
@@ -1072,7 +1074,7 @@ def select(power: float, speed: float, ratio: float, *, service_factor: float = 
         extra = f"; sprockets too large for the centre distance: {', '.join(too_close[:4])}" if too_close else ""
         raise InfeasibleError(
             f"no catalogue roller chain carries {design / 1e3:g} kW (design power) at "
-            f"{w / _RPM:g} rpm with {z1} teeth{extra}; try more teeth, more strands, a lower "
+            f"{angular_velocity_to_rpm(w):g} rpm with {z1} teeth{extra}; try more teeth, more strands, a lower "
             "speed or a longer centre distance"
         )
     rows = sorted(found.values(), key=lambda c: (c.lubrication == "C'", c.strands, c.pitch,

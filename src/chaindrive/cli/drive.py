@@ -13,6 +13,7 @@ import math
 import typer
 
 from ..errors import ChainDriveError
+from ..units import angular_velocity_to_rpm
 from .app import app, echo_json, quantity, unit_help
 
 
@@ -186,7 +187,7 @@ def select_command(
     first = found[0]
     where = ("centre distance 40 pitches (default)" if a is None
              else f"centre distance about {a * 1e3:g} mm")
-    t = Table(title=f"Chains for {P / 1e3:g} kW × {service_factor:g} at {w * 60 / (2 * math.pi):g} rpm, "
+    t = Table(title=f"Chains for {P / 1e3:g} kW × {service_factor:g} at {angular_velocity_to_rpm(w):g} rpm, "
                     f"{first.teeth_driving}/{first.teeth_driven} teeth, {where}")
     from rich.markup import escape
 

@@ -30,6 +30,7 @@ import numpy as np
 from .. import layout as L
 from .. import loads as F
 from ..errors import InputError
+from ..loads import mean_chain_speed, sides_per_turn
 
 if TYPE_CHECKING:
     from ..chains import Chain
@@ -40,16 +41,6 @@ __all__ = ["WHEEL_KINDS", "sides_per_turn", "Wheel", "Tensioner", "Guide", "Load
 WHEEL_KINDS = ("sprocket", "pocket_wheel", "track_wheel", "idler")
 TENSIONER_KINDS = ("spring", "weight", "screw", "hydraulic")
 GUIDE_KINDS = ("tangential", "chordal", "guided")
-
-
-def sides_per_turn(teeth: int, link_chain: bool) -> int:
-    """Chain links seated per turn of a wheel: ``z`` (roller chain), ``2z`` (round link chain
-    on a pocket wheel: a horizontal and a vertical link per pocket, Dolipiński et al.).
-
-    >>> sides_per_turn(8, True), sides_per_turn(19, False)
-    (16, 19)
-    """
-    return 2 * int(teeth) if link_chain else int(teeth)
 
 
 def _finite(value: Any, what: str, *, positive: bool = False, nonnegative: bool = False) -> float:
@@ -361,7 +352,7 @@ class Drive:
         Track drive wheel strength (a mapping of its fields is accepted).
     self_regulating : object, optional
         Self-regulating drive inputs
-        (:class:`chaindrive.drive.self_regulating.SelfRegulatingSpec`).
+        (:class:`chaindrive.drive.carrier.SelfRegulatingSpec`).
 
     Examples
     --------
@@ -504,7 +495,7 @@ class Drive:
     def chain_speed(self) -> float:
         """Mean chain speed [m/s]: sides per turn × pitch × ω / 2π."""
         w = self.driving_wheel
-        return w.sides_per_turn(self.chain) * self.pitch * self.speed / (2 * math.pi)
+        return float(mean_chain_speed(w.sides_per_turn(self.chain), self.pitch, self.speed))
 
     def angular_velocities(self) -> np.ndarray:
         """Mean angular velocity of every wheel [rad/s]."""

@@ -81,6 +81,7 @@ from .._typing import FloatOrArray
 from .._validation import as_float_array, check_positive, check_teeth
 from ..errors import InfeasibleError, InputError
 from ..geometry.polygon import roller_chain_pitch_radius
+from ..loads import mean_chain_speed
 
 __all__ = [
     "GUIDES",
@@ -943,7 +944,7 @@ def crawler_drive(pitch: float, teeth: int, angular_velocity: float, *, guide: s
             a = np.where(end, free_span_acceleration(left, t, z, w), a)
         else:
             a = np.where(end, guided_acceleration(left, t, z, w), a)
-    v_mean = z * t * w / (2.0 * np.pi)
+    v_mean = mean_chain_speed(z, t, w)
     v_max = w * R
     if kind == "none":
         psi_min = 0.0

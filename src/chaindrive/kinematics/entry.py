@@ -49,6 +49,7 @@ Models (``model=``):
 
 from __future__ import annotations
 
+import dataclasses
 from dataclasses import dataclass
 from functools import lru_cache
 from typing import TYPE_CHECKING, Any
@@ -254,9 +255,8 @@ def _exact(case: _Case, phi):
     r = taut_entry(poly, phi, case.w, guide, seats)
     T = case.period
     s = np.mod(seats[:-1], T)
-    r["seats"] = np.sort(np.where(np.isclose(s, T, rtol=0, atol=1e-12), 0.0, s))
-    r["advance"] = poly.advance
-    return r
+    return dataclasses.replace(r, seats=np.sort(np.where(np.isclose(s, T, rtol=0, atol=1e-12), 0.0, s)),
+                               advance=poly.advance)
 
 
 @lru_cache(maxsize=64)
@@ -279,7 +279,7 @@ def _checked_seats(case: _Case) -> np.ndarray:
 def _check_reach(case, poly, seats):
     """At every instant the free span must hold at least one whole (longest) link."""
     grid = np.linspace(seats[0], seats[-1], 721)
-    span = taut_entry(poly, grid, case.w, case.guide(), seats)["span"]
+    span = taut_entry(poly, grid, case.w, case.guide(), seats).span
     longest = max(poly.links)
     if np.min(span) < longest:
         raise InfeasibleError(
@@ -295,18 +295,21 @@ def _paper_model(case: _Case, phi):
     with np.errstate(invalid="ignore"):
         if case.entry == "free":
             r = _paper.paper_free_entry(phi, case.R, d1, d2, case.w, roller=case.roller)
-            r["seats"] = np.array([0.0]) if case.roller else np.array([0.0, 0.5 * (d1 + d2)])
+            r = dataclasses.replace(r, seats=np.array([0.0]) if case.roller else np.array([0.0, 0.5 * (d1 + d2)]))
         elif case.entry == "chordal":
             r = _paper.paper_chordal_entry(phi, t, d, case.R, d1, d2, case.guide_end_distance(), case.w,
                                            roller=case.roller)
-            r["seats"] = np.array([0.0]) if case.roller else np.array([0.0, 0.5 * (d1 + d2)])
+            r = dataclasses.replace(r, seats=np.array([0.0]) if case.roller else np.array([0.0, 0.5 * (d1 + d2)]))
         elif case.entry == "tangential":
             r = _paper.paper_tangential_entry(phi, t, d, case.R, d1, d2, case.guide_end_distance(), case.w,
                                               roller=case.roller)
-            g1, g2 = r["limit_angles"]
-            r["seats"] = np.array([g1]) if case.roller else np.array([g1, g2])
-            if not case.roller and not (g1 < d1 < g2 < d1 + d2):
+            g1, g2 = r.limit_angles or (0.0, None)
+            if case.roller or g2 is None:
+                r = dataclasses.replace(r, seats=np.array([g1]))
+            elif not (g1 < d1 < g2 < d1 + d2):
                 raise InfeasibleError("limit angles out of order")
+            else:
+                r = dataclasses.replace(r, seats=np.array([g1, g2]))
         else:
             raise InputError(
                 "model='paper' covers entry 'free', 'chordal' and 'tangential' only "
@@ -417,8 +420,8 @@ def _summary(case: _Case, model: str, seats) -> dict:
     extra = extra[(extra > 0) & (extra < T)]
     grid = np.sort(np.concatenate([base[:-1], extra]))
     r = _run(case, model, grid)
-    v, a = r["velocity"], r["acceleration"]
-    advance = float(r["advance"])
+    v, a = r.velocity, r.acceleration
+    advance = float(r.advance)
     v_mean = advance / (T / case.w)
     # one-sided limits of the acceleration at the period end (left) and start (right)
     a_left = float(_run(case, model, np.array([T - 1e-12 * T]))["acceleration"][0])
@@ -436,7 +439,7 @@ def _summary(case: _Case, model: str, seats) -> dict:
         jump_list += list(hi - lo)
     jumps = np.asarray(jump_list)
     if case.entry == "free":
-        y = r["y"]
+        y = r.y
         throw = float(case.R - case.R * np.cos(0.5 * max(case.d1, case.d2)))
         throw = max(throw, float(np.max(y) - np.min(y)))
     else:
@@ -581,11 +584,12 @@ def chain_entry(
         if case.entry == "free":
             raise
         _explain_infeasible(case, model, exc)
-    summary = _summary(case, model, np.asarray(r["seats"], dtype=float))
+    summary = _summary(case, model, np.asarray(r.seats, dtype=float))
     shape = np.shape(phi_arr)
 
     def out(key):
-        return None if key not in r else np.reshape(r[key], shape)
+        value = getattr(r, key, None)
+        return None if value is None else np.reshape(value, shape)
 
     free = case.entry == "free"
     return EntryKinematics(
@@ -610,7 +614,7 @@ def chain_entry(
         guide_height=case.H,
         guide_end_distance=case.l,
         period=T,
-        seating_angles=np.asarray(r["seats"], dtype=float),
+        seating_angles=np.asarray(r.seats, dtype=float),
     )
 
 

@@ -6,6 +6,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
+from ..units import angular_velocity_to_rpm, rpm_to_angular_velocity
 from ._axes import figure_of
 
 if TYPE_CHECKING:
@@ -16,7 +17,6 @@ if TYPE_CHECKING:
 
 __all__ = ["campbell_plot", "resonance_map_plot"]
 
-_RPM = 60.0 / (2.0 * np.pi)  # rad/s -> rpm
 
 
 def _runs(mask: np.ndarray) -> list[tuple[int, int]]:
@@ -100,12 +100,13 @@ def campbell_plot(result: CampbellResult, *, ax: Axes | None = None) -> Figure:
                    label="forbidden speeds: a P_i inside a band" if n == 0 else None)
     if result.design_speed is not None:
         ax.axvline(result.design_speed, color="0.3", lw=1, ls=":",
-                   label=f"design speed {result.design_speed:.3g} rad/s ({result.design_speed * _RPM:.0f} rpm)")
+                   label=f"design speed {result.design_speed:.3g} rad/s "
+                         f"({angular_velocity_to_rpm(result.design_speed):.0f} rpm)")
     ax.set_xlim(x[0], x[-1])
     ax.set_ylim(0, ymax)
     ax.set_xlabel("driving sprocket speed ω₁ [rad/s]")
     ax.set_ylabel("frequency [rad/s]")
-    top = ax.secondary_xaxis("top", functions=(lambda v: v * _RPM, lambda v: v / _RPM))
+    top = ax.secondary_xaxis("top", functions=(angular_velocity_to_rpm, rpm_to_angular_velocity))
     top.set_xlabel("n₁ [rpm]")
     ax.set_title("Campbell diagram: slack span with tensioner (the tensioner paper)\n"
                  f"shaded round each excitation: forbidden {lo:g} ≤ P/ω ≤ {hi:g}", fontsize=10)
@@ -176,8 +177,8 @@ def resonance_map_plot(result: ResonanceMapResult, *, ax: Axes | None = None) ->
     lo, hi = result.speed_range
     ax.set_title("Resonance map (the tensioner paper)\n"
                  f"natural frequencies against {len(result.excitation_names)} excitations over "
-                 f"ω₁ = {lo:.3g}…{hi:.3g} rad/s ({lo * _RPM:.0f}…{hi * _RPM:.0f} rpm, {result.speeds} speeds)",
-                 fontsize=10, wrap=True)
+                 f"ω₁ = {lo:.3g}…{hi:.3g} rad/s ({angular_velocity_to_rpm(lo):.0f}…"
+                 f"{angular_velocity_to_rpm(hi):.0f} rpm, {result.speeds} speeds)", fontsize=10)
     ax.legend(loc="lower left", fontsize=8, framealpha=0.9)
     fig.tight_layout()
     return fig

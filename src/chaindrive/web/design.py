@@ -18,12 +18,13 @@ from pathlib import Path
 from typing import Any
 
 from ..errors import ChainDriveError, InputError, ValidityRangeWarning
+from ..loads import mean_chain_speed, sides_per_turn
+from ..units import angular_velocity_to_rpm
 from .fields import FieldError, FieldSpec, parse_field, parse_integer
 
 __all__ = ["DEFAULTS", "FIELDS", "Design", "service_factor_table", "normalise_state",
            "design_from_state", "state_from_project", "MINING_EXAMPLE", "ROLLER_EXAMPLE"]
 
-RPM = 2.0 * math.pi / 60.0
 
 #: Every field of the studio form, its default text (roller-chain example).
 DEFAULTS: dict[str, str] = {
@@ -261,7 +262,7 @@ def _link_candidates(power: float, speed: float, ks: float, z1: int, required: f
     for ch in catalogue("din22252"):
         if ch.breaking_force is None:
             continue
-        v = 2 * z1 * ch.pitch * speed / (2 * math.pi)
+        v = mean_chain_speed(sides_per_turn(z1, True), ch.pitch, speed)
         q = ch.mass_per_length or 0.0
         pull = ks * power / v + q * v * v
         safety = ch.breaking_force / pull
@@ -518,7 +519,7 @@ def state_from_project(text: str, filename: str = "project.toml") -> dict[str, s
     state.update({
         "name": drive.name,
         "kind": "link" if drive.chain.is_link_chain else "roller",
-        "speed": f"{drive.speed / RPM:.6g} rpm" if drive.speed > 20 else f"{drive.speed:.6g} rad/s",
+        "speed": f"{angular_velocity_to_rpm(drive.speed):.6g} rpm" if drive.speed > 20 else f"{drive.speed:.6g} rad/s",
         "driven_speed": "",
         "ratio": f"{(other.teeth or 1) / (drv.teeth or 1):.6g}",
         "chain": drive.chain.name,
