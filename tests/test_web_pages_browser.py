@@ -86,3 +86,18 @@ def test_studio_marks_results_stale_after_an_invalid_input(page):
     page.wait_for_selector("#stale-banner:not([hidden])")
     assert "stale" in page.inner_text("#overall")
     _shot(page, "studio-stale")
+
+
+def test_simulation_page_summary_in_engineering_units(page):
+    page.goto(page.base + "/expert/simulation?example=roller&duration=0.1+s&frames=0")
+    page.click("#run")
+    page.wait_for_selector("body[data-job=done]", timeout=240_000)
+    rows = _table_text(page, "#sim-summary")
+    assert len(rows) > 8
+    text = page.inner_text("#sim-summary")
+    assert not ATTRIBUTE.search(text)
+    for label, _value, unit in rows:
+        assert unit or label in ("time steps", "computing seconds per simulated second"), label
+    _shot(page, "simulation")
+    page.goto(page.base + "/about")
+    _shot(page, "about")

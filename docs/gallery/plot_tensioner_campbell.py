@@ -10,6 +10,7 @@ speed; the resonance map shows which tensioner masses and stiffnesses are safe o
 whole speed range.
 """
 
+import dataclasses
 import math
 
 import numpy as np
@@ -30,6 +31,6 @@ fig = campbell_plot(diagram)
 proposal = propose_safe_tensioner(span, speed_range, ratio=2.5, teeth=17, points=81)
 chart = resonance_map(span, np.geomspace(1, 300, 60), np.geomspace(1e3, 1e6, 60), speed_range,
                       ratio=2.5, teeth=17)
-chart.proposal = (proposal.mass, proposal.stiffness)
+chart = dataclasses.replace(chart, proposal=(proposal.mass, proposal.stiffness))
 fig2 = resonance_map_plot(chart)
 print(f"nearest safe tensioner: {proposal.mass:.1f} kg, {proposal.stiffness / 1e3:.1f} kN/m")

@@ -95,7 +95,7 @@ def layout_command(
                   f"{cd.loose * 1e3:.3f} mm (loosest)")
     t = Table(title="Wheels")
     for h in ("wheel", "pitch radius [mm]", "wrap [°]", "teeth in mesh", "shaft load [kN]"):
-        t.add_column(escape(h))  # '[mm]' is not rich markup
+        t.add_column(escape(h), overflow="fold")  # '[mm]' is not rich markup
     for i, name in enumerate(lay.wheel_names):
         t.add_row(name, f"{lay.pitch_radii[i] * 1e3:.2f}", f"{math.degrees(lay.wrap.wrap_angle[i]):.1f}",
                   "-" if lay.teeth_in_mesh[i] is None else str(lay.teeth_in_mesh[i]),
@@ -103,7 +103,7 @@ def layout_command(
     con.print(t)
     t = Table(title="Spans")
     for h in ("span", "length [mm]", "angle [°]", "tension [kN]", ""):
-        t.add_column(escape(h))
+        t.add_column(escape(h), overflow="fold")
     n = len(lay.wheel_names)
     for i in range(n):
         tag = "tight" if i == lay.tight_span else ("slack" if i == lay.slack_span else "")
@@ -211,7 +211,8 @@ def select_command(
 
     for h in ("#", "chain", "pitch [mm]", "strands", "rated [kW]", "margin", "limit", "links",
               "centre distance [mm]", "v [m/s]", "static safety", "lubrication", "notes"):
-        t.add_column(escape(h), no_wrap=h in ("chain", "pitch [mm]", "rated [kW]"))
+        # cells wrap (long words fold) rather than end in "…": every word is read in full
+        t.add_column(escape(h), no_wrap=h in ("chain", "pitch [mm]", "rated [kW]", "limit"), overflow="fold")
     for k, c in enumerate(found, 1):
         t.add_row(str(k), " / ".join(c.names), f"{c.pitch * 1e3:.3f}", str(c.strands),
                   f"{c.rated_power / 1e3:.2f}", f"{c.power_margin:.2f}", c.governing_limit.replace("_", "-"),

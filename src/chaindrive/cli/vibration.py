@@ -58,7 +58,7 @@ def vibration_command(
     speed_min: str | None = typer.Option(None, "--speed-min", help=unit_help("Lower end of the speed range of --campbell/--map; default 0.8 x --speed (operating range).", "rpm or rad/s", "100 rpm")),
     speed_max: str | None = typer.Option(None, "--speed-max", help=unit_help("Upper end of the speed range of --campbell/--map; default 1.2 x --speed.", "rpm or rad/s", "400 rpm")),
     as_json: bool = typer.Option(False, "--json", help="Print frequencies_rad_s, frequencies_hz, static_rod_force_n (N) and resonance rows as JSON, SI units."),
-    campbell_file: Path | None = typer.Option(None, "--campbell", help="Write a PNG Campbell diagram (frequencies [Hz] vs speed [rpm], forbidden bands shaded); needs --speed or --speed-max."),
+    campbell_file: Path | None = typer.Option(None, "--campbell", help="Write a PNG Campbell diagram (frequencies against the driving speed, both in rad/s, rpm on a second axis; forbidden bands shaded); needs --speed or --speed-max."),
     force: bool = force_option(),
     map_file: Path | None = typer.Option(None, "--map", help="Write a PNG resonance map over tensioner mass and stiffness (±1.5 decades) with the safe region and the nearest safe design; needs --speed or --speed-max."),
 ) -> None:

@@ -20,7 +20,7 @@ from ..errors import ChainDriveError
 from .fields import FieldError, FieldSpec, parse_field, parse_integer
 
 __all__ = ["router", "kinematics_result", "crawler_result", "wheel_result", "summary_table", "dimension_rows",
-           "workshop_drawing", "MAX_POINTS"]
+           "workshop_drawing", "simulation_rows", "MAX_POINTS"]
 
 #: Samples per period on the expert pages and in ``/api/kinematics``.
 MAX_POINTS = 5001
@@ -178,6 +178,34 @@ def _wheel_speed(text: str, *, pitch: float, teeth: int, link_chain: bool) -> fl
     except InputError as exc:
         raise FieldError("speed", str(exc).removeprefix("speed: ")) from None
     return parse_field("speed", f"{omega!r} rad/s", _SPEED)
+
+
+def simulation_rows(summary: dict[str, Any]) -> list[tuple[str, str, str]]:
+    """(label, value, unit) of a simulation summary (labels and units declared with the
+    summary: :data:`chaindrive.simulation.run.SUMMARY_QUANTITIES`); a list of values (one
+    per wheel or probe) is shown as a list; a speed in rad/s with its rpm.
+
+    Examples
+    --------
+    >>> simulation_rows({"tight_side_tension_mean": 12500.0, "wheel_speed_mean": [5.0, 5.0]})
+    [('tight-side tension, mean', '12.5', 'kN'), ('wheel speeds, mean', '5, 5 (47.75, 47.75 rpm)', 'rad/s')]
+    """
+    from ..simulation.run import SUMMARY_QUANTITIES
+
+    rows = []
+    for key, (label, unit) in SUMMARY_QUANTITIES.items():
+        if key not in summary or summary[key] is None:
+            continue
+        value = summary[key]
+        values = value if isinstance(value, list) else [value]
+        if unit == "rad/s":
+            text = ", ".join(_shown(v, "rad/s", "rad/s")[0] for v in values)
+            rpm = ", ".join(_shown(v, "rad/s", "rpm")[0] for v in values)
+            rows.append((label, f"{text} ({rpm} rpm)", "rad/s"))
+            continue
+        cells = [_shown(v, unit) for v in values]
+        rows.append((label, ", ".join(c[0] for c in cells), cells[0][1] if cells else ""))
+    return rows
 
 
 def _line(x: Any, ys: dict[str, np.ndarray], xtitle: str, ytitle: str, title: str) -> dict[str, Any]:

@@ -65,6 +65,21 @@ class _Figures:
         section.figures.append(Figure.from_matplotlib(make(), caption, filename))
 
 
+def wheel_description(drive: Any, name: str) -> str:
+    """A wheel as every table of the report names it: its type and its role in the drive
+    (``"pocket wheel, tensioner idler"``, ``"sprocket, driving"``)."""
+    wheel = next(w for w in drive.wheels if w.name == name)
+    link = drive.chain.is_link_chain
+    if wheel.kind == "idler":
+        kind = ("pocket wheel" if link else "sprocket") if wheel.teeth is not None else "plain wheel"
+    else:
+        kind = wheel.kind.replace("_", " ")
+    tensioner = drive.tensioner is not None and drive.tensioner.wheel == name
+    role = ("driving" if wheel.driving else "tensioner idler" if tensioner else
+            "idler" if wheel.kind == "idler" else "driven")
+    return f"{kind}, {role}"
+
+
 def _teeth_cell(wheel: Wheel) -> int | str:
     """Teeth of a wheel, or the diameter of a toothless idler, for the input table."""
     if wheel.teeth is not None:
@@ -106,8 +121,8 @@ def inputs_section(a: DriveAnalysis, fig: _Figures) -> Section | None:
     ]
     tables = [Table("Input data", ["quantity", "value", "unit"], [[n, "—" if v is None else v, u] for n, v, u in rows]),
               Table("Wheels (in the order the chain passes them)",
-                    ["name", "kind", "teeth", f"x [{_unit('m')}]", f"y [{_unit('m')}]", "driving", "side"],
-                    [[w.name, w.kind, _teeth_cell(w),
+                    ["name", "wheel", "teeth", f"x [{_unit('m')}]", f"y [{_unit('m')}]", "driving", "side"],
+                    [[w.name, wheel_description(d, w.name), _teeth_cell(w),
                       _val(w.position[0], "m"), _val(w.position[1], "m"), w.driving, w.side] for w in d.wheels])]
     if d.tensioner is not None:
         t = d.tensioner
@@ -380,8 +395,10 @@ def geometry_section(a: DriveAnalysis, fig: _Figures) -> Section | None:
                          f"{_val(dim.tip_diameter_min, 'm'):.2f} … {_val(dim.tip_diameter_max, 'm'):.2f}",
                          _val(dim.root_diameter, "m"), g.basis])
         sec.results[g.wheel] = dd
+    for row in rows:  # the wheel named as in the input table (type and role), e.g. "pocket wheel, tensioner idler"
+        row[1] = wheel_description(a.drive, row[0])
     mm = _unit("m")
-    sec.tables.append(Table("Main diameters", ["wheel", "kind", "teeth", f"pitch Ø [{mm}]", f"tip Ø [{mm}]",
+    sec.tables.append(Table("Main diameters", ["name", "wheel", "teeth", f"pitch Ø [{mm}]", f"tip Ø [{mm}]",
                                                f"root Ø [{mm}]", "basis"], rows))
     drv = a.drive.driving_wheel.name
     driving = next((g for g in a.geometry if g.wheel == drv), None)

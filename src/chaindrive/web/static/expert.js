@@ -59,16 +59,16 @@
       fig.append(img, cap);
       out.appendChild(fig);
     }
-    const s = j.result && j.result.summary;
-    if (s) {
+    const rows = j.result && j.result.rows;
+    if (rows) {
       const t = document.createElement("table");
       t.className = "kv";
       t.id = "sim-summary";
-      for (const [k, v] of Object.entries(s)) {
-        if (typeof v === "object") continue;
+      for (const [label, value, unit] of rows) {
         const tr = t.insertRow();
-        const th = document.createElement("th"); text(th, k); tr.appendChild(th);
-        const td = tr.insertCell(); text(td, typeof v === "number" ? v.toPrecision(5) : v);
+        const th = document.createElement("th"); th.scope = "row"; text(th, label); tr.appendChild(th);
+        const td = tr.insertCell(); td.className = "numcell"; text(td, value);
+        const tu = tr.insertCell(); text(tu, unit);
       }
       out.appendChild(t);
     }
