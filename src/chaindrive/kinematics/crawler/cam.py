@@ -109,7 +109,13 @@ def cam_force(stiffness: ArrayLike, sprocket_distance: ArrayLike, cam_distance: 
 
     Notes
     -----
-    Equilibrium of the cam hinge between the two segments: segment ``A - l`` is
+    Assumptions (stated; the text's formula is lost): (1) the return span is rigid, so
+    (2) the tensioning sprocket turns in phase with the driving one and *imposes its own
+    displacement* ``u_1`` on the working span (its axis fixed). :func:`elastic_loop` drops
+    both (elastic return span, free tensioning sprocket) and tends to this formula as the
+    return span's stiffness grows (tested; docs/crawler.md §2a): with a return span as
+    stiff as the working span the fluctuation of ``P`` is smaller, so the formula errs on
+    the safe side for the cam's strength. Equilibrium of the cam hinge between the two segments: segment ``A - l`` is
     stretched by ``u_З - u_П`` (force ``E_П (u_З - u_П)/(A - l)``), segment ``l`` by
     ``u_1 - u_П``; the forces add (parallel). With a common end law the paper's
     quantities ``E_П, A, l, u_З, u_П`` give the closed form above. Forces are changes
