@@ -24,7 +24,7 @@ Examples
 >>> [round(a.contact.result.stress / 1e6, 1) for a in out]
 [104.4, 108.4, 112.5]
 >>> out.shared
-('layout', 'entry', 'loads')
+('layout', 'entry', 'conveyor', 'loads')
 """
 
 from __future__ import annotations

@@ -20,10 +20,22 @@ Examples
 
 from typing import Any
 
-from .model import ContactSpec, Conveyor, Drive, Guide, Load, Tensioner, TrackSpec, Wheel
+from .model import (
+    ContactSpec,
+    Conveyor,
+    CrawlerSpec,
+    Drive,
+    FrettingSpec,
+    Guide,
+    Load,
+    RimBoltsSpec,
+    Tensioner,
+    TrackSpec,
+    Wheel,
+)
 
 __all__ = [
-    "Drive", "Wheel", "Tensioner", "Guide", "Load", "ContactSpec", "TrackSpec", "Conveyor",
+    "Drive", "Wheel", "Tensioner", "Guide", "Load", "ContactSpec", "TrackSpec", "CrawlerSpec", "FrettingSpec", "RimBoltsSpec", "Conveyor",
     "load_project", "Project",
 ]
 

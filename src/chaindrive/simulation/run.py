@@ -47,9 +47,16 @@ from ..errors import ConvergenceError, UnknownNameError
 from . import _kernel as K
 from .model import SimulationModel, iso_flank
 from .placement import _path, _place, _tangent  # noqa: F401 - _path, _tangent: also imported from here
-from .results import SimulationResult, _summary, default_probes, slack_span, tight_span
+from .results import (
+    SUMMARY_QUANTITIES,
+    SimulationResult,
+    _summary,
+    default_probes,
+    slack_span,
+    tight_span,
+)
 
-__all__ = ["SimulationResult", "assemble", "simulate", "kernel_arrays", "State", "conservative"]
+__all__ = ["SimulationResult", "SUMMARY_QUANTITIES", "assemble", "simulate", "kernel_arrays", "State", "conservative"]
 
 
 # ---------------------------------------------------------------------------- kernel data
