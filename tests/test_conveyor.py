@@ -120,7 +120,7 @@ def test_kloss_curve():
 
 @pytest.mark.parametrize("call, match", [
     (lambda: kloss_torque(0.1, 100.0, 1.0), "breakdown_slip"),
-    (lambda: kloss_torque(2.0, 100.0, 0.1), "slip"),
+    (lambda: kloss_torque(2.5, 100.0, 0.1), "slip"),
     (lambda: breakdown_slip(0.02, 0.9), "breakdown_ratio"),
     (lambda: Motor(4.0, 100.0, 0.0), "breakdown_slip"),
 ])

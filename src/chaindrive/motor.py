@@ -14,7 +14,7 @@ from numpy.typing import ArrayLike
 from ._finite import finite_guard
 from ._results import Result, quantity
 from ._typing import FloatOrArray
-from ._validation import as_float_array, check_positive, check_range
+from ._validation import as_float_array, check_positive, check_range, warn_outside
 from .errors import InputError
 
 __all__ = ["kloss_torque", "breakdown_slip", "Motor"]
@@ -29,7 +29,8 @@ def kloss_torque(slip: ArrayLike, breakdown_torque: ArrayLike, breakdown_slip: A
     Parameters
     ----------
     slip : float or array_like
-        ``s = (ω_s − ω)/ω_s`` [-], ``-1 <= s <= 1`` (negative: generating).
+        ``s = (ω_s − ω)/ω_s`` [-], ``-2 <= s <= 2`` (negative: generating; above 1 the
+        rotor turns backwards, plugging: outside ``[-1, 1]`` a ValidityRangeWarning).
     breakdown_torque : float or array_like
         Pull-out (breakdown) torque ``T_k > 0`` [N m].
     breakdown_slip : float or array_like
@@ -58,7 +59,8 @@ def kloss_torque(slip: ArrayLike, breakdown_torque: ArrayLike, breakdown_slip: A
     >>> round(float(kloss_torque(1.0, 1000.0, 0.2)), 1)      # locked rotor
     384.6
     """
-    s = check_range("slip", slip, -1.0, 1.0)
+    s = check_range("slip", slip, -2.0, 2.0)
+    warn_outside("slip", s, -1.0, 1.0, "the Kloss formula (motoring and generating)")
     tk = check_positive("breakdown_torque", breakdown_torque, "N m")
     sk = check_range("breakdown_slip", breakdown_slip, 0.0, 1.0)
     if np.any(sk <= 0) or np.any(sk >= 1):

@@ -14,6 +14,7 @@ inertia: :func:`chaindrive.simulation._kernel.integrate`).
 from __future__ import annotations
 
 import math
+import warnings
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
@@ -22,7 +23,7 @@ import numpy as np
 from .._results import Result, quantity
 from .._validation import check_nonnegative
 from ..conveyor import pan_end_clearance
-from ..errors import InputError
+from ..errors import InputError, ValidityRangeWarning
 from .model import SimGuide, SimulationModel
 
 if TYPE_CHECKING:
@@ -324,7 +325,10 @@ def start_up_of(result: SimulationResult, model: SimulationModel) -> StartUp:
     chain_speed = omega * seats * model.pitch / (2 * math.pi)
     if head.motor is not None:
         on = (head.stop_time <= 0) | (result.time < head.stop_time)
-        torque = np.where(on, head.motor.torque(omega), 0.0)
+        with warnings.catch_warnings():
+            # a loaded start may turn the head back a little at switch-on (slip just above 1)
+            warnings.simplefilter("ignore", ValidityRangeWarning)
+            torque = np.where(on, head.motor.torque(omega), 0.0)
         if head.ripple:
             torque = torque * (1.0 + head.ripple * np.sin(head.ripple_frequency * result.time))
     else:
