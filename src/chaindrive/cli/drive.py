@@ -74,7 +74,7 @@ def layout_command(
 
     con = _console()
     con.print(f"[bold]{escape(drive.name)}[/bold]  chain {escape(drive.chain.name)}, pitch "
-              f"{drive.pitch * 1e3:.3f} mm, speed {drive.speed:.4g} rad/s = {drive.speed * 30 / math.pi:.4g} rpm, "
+              f"{drive.pitch * 1e3:.3f} mm, speed {drive.speed:.4g} rad/s = {angular_velocity_to_rpm(drive.speed):.4g} rpm, "
               f"v = {ten.chain_speed:.3f} m/s")
     con.print(f"links required {lay.links_required:.3f}, chosen {lay.links}")
     cd = lay.centre_distance_for_links

@@ -17,6 +17,7 @@ import typer
 
 from ..errors import InputError
 from ..limits import MAX_MODES
+from ..units import angular_velocity_to_rpm
 from .app import app, echo_json, exit_code, print_rows, quantity, unit_help
 
 
@@ -153,7 +154,7 @@ def vibration_command(
                    f"q = {q:g} kg/m, l1 = {l1:g} m, l2 = {l2:g} m, beta1 = {math.degrees(b1):g} deg, "
                    f"beta2 = {math.degrees(b2):g} deg, m = {m:g} kg, C = {c:g} N/m", rows)
         if check is not None and w is not None:
-            print(f"resonance check at ω1 = {w:g} rad/s ({w * 30 / math.pi:g} rpm): band 0.7 <= P/ω <= 1.4")
+            print(f"resonance check at ω1 = {w:g} rad/s ({angular_velocity_to_rpm(w):g} rpm): band 0.7 <= P/ω <= 1.4")
             print(f"  {'mode':>4}  {'excitation':<20} {'P [rad/s]':>10} {'omega [rad/s]':>13} "
                   f"{'P/omega [-]':>11} {'margin [-]':>10}  ok")
             for r in check.rows():
