@@ -14,6 +14,7 @@ from .._finite import finite_guard
 from .._typing import FloatOrArray
 from .._validation import as_float_array, check_positive
 from ..errors import InfeasibleError, InputError, ValidityRangeWarning
+from ..limits import MAX_TEETH
 
 if TYPE_CHECKING:
 
@@ -52,6 +53,11 @@ def _teeth(teeth) -> np.ndarray:
             f"teeth must be a whole number >= {MIN_TEETH} (ISO 606:2015 Annex A covers "
             f"z = {MIN_TEETH}...{MAX_TEETH_TABULATED}), got {got}"
         )
+    if np.any(z > MAX_TEETH):  # size-like: a bound before anything is drawn (chaindrive.limits)
+        got = f"{float(np.max(z)):.6g}"
+        raise InputError(f"teeth must be at most {MAX_TEETH} (chaindrive.limits.MAX_TEETH; ISO 606:2015 "
+                         f"Annex A tabulates z = {MIN_TEETH}...{MAX_TEETH_TABULATED}), got {got}",
+                         field="teeth")
     if np.any(z > MAX_TEETH_TABULATED):
         warnings.warn(
             f"teeth above {MAX_TEETH_TABULATED}: outside ISO 606:2015 Annex A "

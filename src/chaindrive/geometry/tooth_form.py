@@ -15,6 +15,7 @@ from .._registry import Registry
 from .._results import Result, quantity
 from .._validation import as_float_array, check_positive
 from ..errors import InfeasibleError, InputError
+from ..limits import MAX_TEETH
 from .iso606 import (
     _INCH,
     _flank_radius_range,
@@ -351,8 +352,8 @@ def iso_tooth_form(pitch: float, teeth: int, roller_diameter: float, *, form: st
     if form not in ("min", "max"):
         raise InputError(f"form must be 'min' (minimum tooth gap) or 'max' (maximum tooth gap), got {form!r}")
     zf = float(as_float_array("teeth", teeth))
-    if zf != round(zf) or zf < 3:
-        raise InputError(f"teeth must be a whole number >= 3, got {zf:g}")
+    if zf != round(zf) or not 3 <= zf <= MAX_TEETH:
+        raise InputError(f"teeth must be a whole number in [3, {MAX_TEETH}], got {zf:g}", field="teeth")
     z = int(zf)
     p, d1 = (float(v) for v in _roller(pitch, roller_diameter))
     ri_lo, ri_hi = (float(v) for v in seating_radius_limits(d1))
@@ -456,9 +457,10 @@ def sprocket_outline(pitch: float, teeth: int, roller_diameter: float, *, method
     >>> o.closure_gap() < 1e-12, len(o.centres)
     (True, 19)
     """
-    fn = TOOTH_FORMS.get(method)
     if np.ndim(teeth) or np.ndim(pitch) or np.ndim(roller_diameter):
         raise InputError("sprocket_outline draws one wheel: pitch, teeth and roller_diameter must be scalars")
+    _teeth(teeth)  # bounded (MIN_TEETH...chaindrive.limits.MAX_TEETH) before anything is drawn
+    fn = TOOTH_FORMS.get(method)
     if method == "iso606" and form is None:
         form = "min"
     return fn(pitch, teeth, roller_diameter, form=form, tip_diameter=tip_diameter)
