@@ -250,3 +250,19 @@ values = [17, 21]
     # a bigger chain carries more power (ANSI/ACA rating grows with pitch, Shigley eq. (17-32))
     power = {(r["chain.name"], r["wheels.0.teeth"]): r["rating.rated_power"] for r in got}
     assert power[("12B", 17)] < power[("16B", 17)] < power[("20B", 17)]
+
+
+def test_results_as_dataframe_with_units(local_run):
+    pytest.importorskip("pandas")
+    from chaindrive.study import read_dataframe
+
+    out, _ = local_run
+    df = read_dataframe(out)
+    assert len(df) == 6 and list(df["variant"]) == list(range(6))
+    units = df.attrs["units"]
+    assert units["contact.skew"] == "arcmin"          # an input: the study file's unit
+    assert units["contact.stress"] == "Pa" and units["loads.maximum"] == "N"   # outputs: SI
+    assert units["seconds"] == "s" and units["passed"] == "" and set(units) == set(df.columns)
+    assert df.attrs["study"]["inputs"] == ["contact.skew", "wheels.0.teeth"]
+    with pytest.raises(InputError, match="holds no results"):
+        read_dataframe(out / "nothing")

@@ -421,7 +421,7 @@ def tooth_side_radius(pitch: ArrayLike) -> FloatOrArray:
 
 @finite_guard
 def tooth_side_relief_limits(pitch: ArrayLike) -> tuple[FloatOrArray, FloatOrArray]:
-    r"""Nominal tooth side relief ``ba = 0.1 p ... 0.15 p``, ISO 606:2015 clause 5.6.
+    r"""Nominal tooth side relief ``ba`` from 0.1 p to 0.15 p, ISO 606:2015 clause 5.6.
 
     .. math:: b_a = (0.10 \dots 0.15)\,p
 

@@ -5,7 +5,7 @@ Layer 1 holds one published formula per function (vectorised, SI units); the too
 outline builders and the thin :class:`Sprocket` object sit on top of them.
 
 Sources (see docs/geometry.md for the full discussion)
------------------------------------------------------
+------------------------------------------------------
 * ISO 606:2015, *Short-pitch transmission precision roller and bush chains, attachments
   and associated chain sprockets*, clause 5 "Chain sprockets": 5.3 diametral dimensions,
   5.4 tooth gap forms, 5.5 tooth heights and tip diameters, 5.6 rim profiles

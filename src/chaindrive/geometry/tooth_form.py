@@ -300,8 +300,8 @@ def iso_tooth_form(pitch: float, teeth: int, roller_diameter: float, *, form: st
     tooth centreline.
 
     .. math::
-        r_{i,\min} = 0.505\,d_1,\quad α_{\max} = 140° - rac{90°}{z},\quad
-        r_{e,\max} = 0.008\,d_1 (z^2 + 180)\quad	ext{(minimum gap form)}
+        r_{i,\min} = 0.505\,d_1,\quad α_{\max} = 140° - \frac{90°}{z},\quad
+        r_{e,\max} = 0.008\,d_1 (z^2 + 180)\quad\text{(minimum gap form)}
 
     Parameters
     ----------
