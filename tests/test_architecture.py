@@ -47,6 +47,7 @@ OVERSIZE_ALLOWED = {
     "chaindrive.selection",         # moving to chaindrive.rating / chaindrive.design
     "chaindrive.simulation.run",    # being split
     "chaindrive.simulation.model",  # being split
+    "chaindrive.drive.model",       # 807 lines since the tensioner mechanisms: to split
 }
 
 

@@ -83,3 +83,9 @@ def test_candidate_drive_is_the_selected_row() -> None:
 def test_self_regulating_refused(examples_dir) -> None:
     with pytest.raises(InputError, match="self_regulating"):
         drive_to_toml(load_project(examples_dir / "self_regulating.toml"))
+
+
+def test_control_characters_in_names_round_trip(roller_drive) -> None:
+    # found by the round-trip property: DEL (U+007F) must be escaped in a TOML string
+    d = roller_drive(name="fan\x7f drive", description="tab\there")
+    assert parse_project(project_text(d)) == d

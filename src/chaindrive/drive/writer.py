@@ -44,7 +44,9 @@ _UNITS: dict[str, dict[str, str]] = {
 
 
 def _s(text: str) -> str:
-    return json.dumps(text, ensure_ascii=False)
+    # JSON escapes are TOML escapes; DEL (U+007F), a control character TOML refuses raw, is
+    # the one JSON leaves as it is
+    return json.dumps(text, ensure_ascii=False).replace("\x7f", "\\u007f")
 
 
 def _q(value: float, unit: str) -> str:
