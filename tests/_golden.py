@@ -15,7 +15,8 @@ from _shared import EXAMPLES
 #: Stored results, one file per example project.
 GOLDEN = Path(__file__).resolve().parent / "data" / "golden"
 #: The example projects (the study files are no projects).
-NAMES = ("roller_industrial", "mining_conveyor", "tractor_track", "self_regulating", "long_conveyor")
+NAMES = ("roller_industrial", "mining_conveyor", "tractor_track", "self_regulating", "long_conveyor",
+         "crawler_conveyor")
 #: Tolerance of a number: |new - old| <= REL |old| + ABS.
 REL, ABS = 1e-9, 1e-12
 #: Keys that change with every run (the date, the wall-clock timings, the file path).
