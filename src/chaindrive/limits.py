@@ -17,6 +17,10 @@ MAX_MODES           100          natural frequencies asked for
 MAX_GRID            1 000        points per axis of a speed sweep or resonance map
 MAX_FRAMES          1 000        frames of an animation
 MAX_STRANDS         100          rows of a multi-row chain (ISO 606: up to 3)
+MAX_SOLID_TEETH     150          teeth of a 3-D solid (STEP); ISO 606 Annex A ends at
+                                 150, and OpenCascade takes minutes beyond
+MAX_PRIMITIVES      200 000      lines and arcs of one outline (20 per tooth)
+MAX_ARC_POINTS      10 000       points per arc when an outline is sampled
 ==================  ===========  ===================================================
 
 :func:`warn_implausible` warns (:class:`~chaindrive.errors.ValidityRangeWarning`, never
@@ -44,6 +48,9 @@ __all__ = [
     "MAX_GRID",
     "MAX_FRAMES",
     "MAX_STRANDS",
+    "MAX_SOLID_TEETH",
+    "MAX_PRIMITIVES",
+    "MAX_ARC_POINTS",
     "PLAUSIBLE",
     "check_size",
     "check_duration",
@@ -66,6 +73,13 @@ MAX_GRID = 1_000
 MAX_FRAMES = 1_000
 #: Rows of a multi-row chain (a pin model with one beam element per row and plate).
 MAX_STRANDS = 100
+#: Teeth or pockets of a wheel built as a 3-D solid (STEP): ISO 606 Annex A ends at 150,
+#: and an OpenCascade solid of 150 teeth already takes minutes.
+MAX_SOLID_TEETH = 150
+#: Lines and arcs of one outline (drawings, DXF, SVG): 20 per tooth at MAX_TEETH.
+MAX_PRIMITIVES = 20 * MAX_TEETH
+#: Points per arc when an outline is sampled into a polyline.
+MAX_ARC_POINTS = 10_000
 
 #: Plausible range of a value typed at the boundary, by kind:
 #: (low, high, SI unit, display factor, display unit, why). Outside: a warning.

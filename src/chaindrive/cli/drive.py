@@ -14,7 +14,7 @@ import typer
 
 from ..errors import ChainDriveError
 from ..units import angular_velocity_to_rpm
-from .app import app, echo_json, quantity, unit_help
+from .app import OPTION_ALIASES, app, echo_json, quantity, unit_help
 
 
 def _console():
@@ -118,6 +118,9 @@ def layout_command(
         con.print(f"warning: {w}", markup=False)
 
 
+OPTION_ALIASES["select"] = {"teeth_driving": "--teeth", "service_factor": "--service-factor"}
+
+
 @app.command("select")
 def select_command(
     power: str = typer.Option(..., "--power", "-P", help=unit_help(
@@ -166,6 +169,13 @@ def select_command(
     w = quantity(speed, "rad/s", "speed")
     a = quantity(centre_distance, "m", "centre_distance")
     counts = _strand_counts(strands)
+    from ..limits import MAX_TEETH, check_size
+
+    check_size("--teeth", teeth, MAX_TEETH, minimum=3)
+    if not (math.isfinite(ratio) and 1.0 <= ratio <= MAX_TEETH / max(teeth, 1)):
+        # the driven wheel has round(z1 ratio) teeth, at most chaindrive.limits.MAX_TEETH
+        raise InputError(f"--ratio must lie in [1, {MAX_TEETH / max(teeth, 1):.6g}] (driven teeth = "
+                         f"round({teeth} x ratio) <= {MAX_TEETH}), got {ratio:.6g}")
     if limit < 1:
         raise InputError(f"--limit must be a whole number >= 1, got {limit}")
     found = select(P, w, ratio, service_factor=service_factor, teeth_driving=teeth, family=family,

@@ -36,6 +36,7 @@ from .._results import Result, quantity
 from .._typing import FloatOrArray
 from .._validation import as_float_array, check_positive
 from ..errors import InfeasibleError, InputError, ValidityRangeWarning
+from ..limits import MAX_TEETH
 from .outline import Arc, Line, Outline, _drop_short, _repeat
 
 if TYPE_CHECKING:
@@ -86,6 +87,11 @@ def _teeth(teeth) -> np.ndarray:
             f"teeth must be a whole number >= {MIN_TEETH} (ISO 606:2015 Annex A covers "
             f"z = {MIN_TEETH}...{MAX_TEETH_TABULATED}), got {got}"
         )
+    if np.any(z > MAX_TEETH):  # size-like: a bound before anything is drawn (chaindrive.limits)
+        got = f"{float(np.max(z)):.6g}"
+        raise InputError(f"teeth must be at most {MAX_TEETH} (chaindrive.limits.MAX_TEETH; ISO 606:2015 "
+                         f"Annex A tabulates z = {MIN_TEETH}...{MAX_TEETH_TABULATED}), got {got}",
+                         field="teeth")
     if np.any(z > MAX_TEETH_TABULATED):
         warnings.warn(
             f"teeth above {MAX_TEETH_TABULATED}: outside ISO 606:2015 Annex A "
@@ -867,8 +873,8 @@ def iso_tooth_form(pitch: float, teeth: int, roller_diameter: float, *, form: st
     if form not in ("min", "max"):
         raise InputError(f"form must be 'min' (minimum tooth gap) or 'max' (maximum tooth gap), got {form!r}")
     zf = float(as_float_array("teeth", teeth))
-    if zf != round(zf) or zf < 3:
-        raise InputError(f"teeth must be a whole number >= 3, got {zf:g}")
+    if zf != round(zf) or not 3 <= zf <= MAX_TEETH:
+        raise InputError(f"teeth must be a whole number in [3, {MAX_TEETH}], got {zf:g}", field="teeth")
     z = int(zf)
     p, d1 = (float(v) for v in _roller(pitch, roller_diameter))
     ri_lo, ri_hi = (float(v) for v in seating_radius_limits(d1))
@@ -972,9 +978,10 @@ def sprocket_outline(pitch: float, teeth: int, roller_diameter: float, *, method
     >>> o.closure_gap() < 1e-12, len(o.centres)
     (True, 19)
     """
-    fn = TOOTH_FORMS.get(method)
     if np.ndim(teeth) or np.ndim(pitch) or np.ndim(roller_diameter):
         raise InputError("sprocket_outline draws one wheel: pitch, teeth and roller_diameter must be scalars")
+    _teeth(teeth)  # bounded (MIN_TEETH...chaindrive.limits.MAX_TEETH) before anything is drawn
+    fn = TOOTH_FORMS.get(method)
     if method == "iso606" and form is None:
         form = "min"
     return fn(pitch, teeth, roller_diameter, form=form, tip_diameter=tip_diameter)

@@ -13,6 +13,7 @@ Public API:
 See ``docs/kinematics.md``.
 """
 
+from .._deprecation import renamed_attributes as _renamed_attributes
 from .entry import (
     ENTRIES,
     MODELS,
@@ -53,3 +54,9 @@ __all__ = [
     "taut_entry",
     "taut_seating_angles",
 ]
+
+
+# former public names (renamed; deprecated, removed in the next release: chaindrive._deprecation)
+__getattr__ = _renamed_attributes(
+    "chaindrive.kinematics",
+    {"seed002_case": "dolipinski_worked_case"})

@@ -57,6 +57,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 from numpy.typing import ArrayLike
 
+from .._deprecation import renamed_attributes as _renamed_attributes
 from .._finite import finite_guard
 from .._registry import Registry
 from .._results import Result, quantity
@@ -681,3 +682,9 @@ def dolipinski_worked_case(model: str = "exact", points: int = 361) -> dict[str,
                        points=points)
         for e in ("free", "chordal", "tangential")
     }
+
+
+# former public names (renamed; deprecated, removed in the next release: chaindrive._deprecation)
+__getattr__ = _renamed_attributes(
+    "chaindrive.kinematics.entry",
+    {"seed002_case": "dolipinski_worked_case"})

@@ -12,9 +12,11 @@ from typing import TYPE_CHECKING, Any, cast
 
 from ..analysis import DriveAnalysis
 from ..analysis.parts import Part, all_parts
+from ..analysis.vibration_remedy import REQUIRED_MARGIN
 from ..drive.model import Wheel
 from ..errors import InputError
-from .display import convert
+from ..vibration.excitation import AMPLIFICATION_LIMIT, DAMPING_RATIO
+from .display import convert, display_of
 from .report import Figure, Section, Table
 
 if TYPE_CHECKING:
@@ -273,12 +275,18 @@ def entry_section(a: DriveAnalysis, fig: _Figures) -> Section | None:
 
 
 # --------------------------------------------------------------------------- vibration
-def _check_table(sec: Section, rows: list[dict], names: tuple[str, ...] | None = None) -> None:
+def _check_table(sec: Section, rows: list[dict], names: tuple[str, ...] | None = None,
+                 response: dict[str, float | None] | None = None) -> None:
+    headers = ["mode", "excitation", "P [rad/s]", "ω [rad/s]", "ratio P/ω", "margin", "ok"]
+    if response is not None:
+        headers.append("forced response [mm]")
     sec.tables.append(Table(
-        "Resonance check 0.7 ≤ P_i/ω_j ≤ 1.4 forbidden (tensioner paper); margin = max(r/1.4 − 1, 1 − r/0.7)",
-        ["mode", "excitation", "P [rad/s]", "ω [rad/s]", "ratio P/ω", "margin", "ok"],
+        "Resonance check 0.7 ≤ P_i/ω_j ≤ 1.4 forbidden (tensioner paper); margin = max(r/1.4 − 1, 1 − r/0.7)"
+        + ("; beside it the largest span amplitude that excitation drives (severity table)" if response else ""),
+        headers,
         [[names[r["mode"] - 1] if names else r["mode"], r["excitation"], r["natural_frequency"],
-          r["exciting_frequency"], r["ratio"], r["margin"], r["ok"]] for r in rows]))
+          r["exciting_frequency"], r["ratio"], r["margin"], r["ok"],
+          *([response.get(r["excitation"])] if response is not None else [])] for r in rows]))
 
 
 def vibration_section(a: DriveAnalysis, fig: _Figures) -> Section | None:
@@ -305,14 +313,37 @@ def vibration_section(a: DriveAnalysis, fig: _Figures) -> Section | None:
             "Slack span with the tensioner (tensioner paper, frequency equation re-derived; docs/vibration.md)",
             ["quantity", "value", "unit"], quantities))
         if res.check is not None:  # span_vibration had the driving speed: always checked
-            _check_table(sec, res.check.rows())
-        if v.proposal is not None:
-            p = v.proposal
-            sec.paragraphs.append(
-                f"Nearest tensioner that is free of resonance over ±10 % of the speed (tensioner paper check, "
-                f"margin ≥ 0.05): m = {p.mass:.4g} kg, C = {_val(p.stiffness, 'N/m', 'kN/m'):.4g} {_unit('N/m', 'kN/m')} "
-                f"({p.distance:.2f} decades from the design).")
-            sec.results["proposal"] = p.to_dict()
+            response = {e.name: display_of(e, "response")[0] for e in v.severity}
+            _check_table(sec, res.check.rows(), response=response)
+        if v.severity:
+            sec.tables.append(Table(
+                "Severity: forced response of the slack span to each excitation (string model, structural damping "
+                f"ζ = {DAMPING_RATIO:g}; both span ends excited with the amplitude shown, responses added; docs/vibration.md §6a). "
+                "The paper's three excitations are judged by the band above; the polygon by its amplification",
+                ["excitation", "ω [rad/s]", "span-end amplitude [mm]", "largest span amplitude [mm]",
+                 "tensioner amplitude [mm]", "amplification", "criterion", "verdict", "source of the amplitude"],
+                [[e.name, e.frequency, display_of(e, "end_amplitude")[0], display_of(e, "response")[0],
+                  display_of(e, "tensioner_amplitude")[0], e.amplification,
+                  "band 0.7…1.4 (paper)" if e.criterion == "band" else f"amplification ≤ {AMPLIFICATION_LIMIT:.3g}",
+                  "see band" if e.passed is None else ("pass" if e.passed else "FAIL"), e.source]
+                 for e in v.severity]))
+        if v.remedy is not None:
+            rm = v.remedy
+            if rm.found:
+                sec.paragraphs.append(
+                    "A design that passes the resonance check (nearest within the searched ranges: "
+                    f"{rm.ranges}; band margin {rm.margin:.3f} ≥ {REQUIRED_MARGIN:g}, polygon amplification {rm.amplification:.3g}); "
+                    "written as proposal.toml next to this report:")
+            else:
+                sec.paragraphs.append(
+                    f"No design within the searched ranges ({rm.ranges}) passes the resonance check. The nearest "
+                    f"design found (band margin {rm.margin:.3f}, polygon amplification {rm.amplification:.3g}) "
+                    f"still fails because {rm.reason}. Guides or supports that shorten the free span were not "
+                    "searched. The nearest design:")
+            sec.tables.append(Table("Proposed changes" if rm.found else "Nearest design (fails)", ["change"],
+                                    [[c] for c in rm.changes]))
+            sec.results["remedy"] = {"found": rm.found, "changes": list(rm.changes), "margin": rm.margin,
+                                     "amplification": rm.amplification, "reason": rm.reason}
         campbell = res.campbell
         if campbell is not None:
             from ..plotting.vibration import campbell_plot
