@@ -132,3 +132,24 @@ def test_service_factor_table_is_the_loads_table():
     for character, row in t["factors"].items():
         for driver, value in row.items():
             assert service_factor(character, driver) == value
+
+
+def test_presenters_hold_no_rating_formula():
+    """web/ and cli/ call no rating formula; the web also no chain_rating or select (issue 18)."""
+    import pathlib
+    import re
+
+    import chaindrive
+
+    root = pathlib.Path(chaindrive.__file__).parent
+    formulas = re.compile(r"\b(ansi_rated_power|ansi_link_plate_power|ansi_roller_bushing_power|galling_power|"
+                          r"galling_speed|galling_tension|multi_strand_factor|tooth_correction_factor|"
+                          r"lubrication_region|ansi_constants)\(")
+    for folder in ("web", "cli"):
+        for path in (root / folder).rglob("*.py"):
+            text = path.read_text(encoding="utf-8")
+            assert not formulas.search(text), f"{path} calls a rating formula"
+            if folder == "web":
+                assert not re.search(r"\bchain_rating\b|\bselect\(", text), f"{path} rates or selects chains"
+            assert not re.search(r"math\.radians\(60|0\.2 \* omega|2\.0 \* omega|= 3\.5\b", text), path
+            assert "_excitation_kwargs" not in text, path

@@ -16,7 +16,7 @@ from __future__ import annotations
 
 import math
 
-__all__ = ["link_candidates"]
+__all__ = ["link_candidates", "power_at_safety"]
 
 
 def link_candidates(power: float, speed: float, service_factor: float, teeth: int,
@@ -70,3 +70,39 @@ def link_candidates(power: float, speed: float, service_factor: float, teeth: in
                     "governing_limit": "static safety", "notes": []})
     out.sort(key=lambda c: (c["pitch"], c["rated_power"]))
     return out[:limit]
+
+
+def power_at_safety(chain, teeth: int, angular_velocity, required: float | None = None):
+    r"""Power a round link chain carries at the required static safety over speeds, ``F_B v / S``.
+
+    .. math:: P = \frac{F_B}{S_{req}}\,v,\qquad v = \frac{2 z p \omega}{2\pi}
+
+    Parameters
+    ----------
+    chain : Chain
+        A round link chain with a breaking force.
+    teeth : int
+        Pockets of the driving wheel [-].
+    angular_velocity : array_like
+        [rad/s].
+    required : float, optional
+        Default the analysis's required safety for link chains.
+
+    Returns
+    -------
+    ndarray
+        [W] (the centrifugal part omitted: it is small at scraper-conveyor speeds).
+
+    Examples
+    --------
+    >>> from chaindrive.chains import get
+    >>> round(float(power_at_safety(get("18x64"), 8, 5.0)) / 1e3)
+    95
+    """
+    import numpy as np
+
+    from ..analysis.loads import required_static_safety
+
+    need = required_static_safety(chain) if required is None else required
+    v = 2 * teeth * chain.pitch * np.asarray(angular_velocity, dtype=float) / (2 * math.pi)
+    return chain.breaking_force / need * v

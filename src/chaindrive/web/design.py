@@ -16,7 +16,7 @@ from dataclasses import dataclass, field
 from functools import lru_cache
 from typing import Any
 
-from ..analysis.loads import required_static_safety
+from ..analysis.loads import REQUIRED_STATIC_SAFETY, required_static_safety
 from ..design.duty import service_factor_table
 from ..design.link import link_candidates
 from ..design.policy import BASE_TEETH
@@ -67,7 +67,8 @@ MINING_EXAMPLE: dict[str, str] = {
     "chain": "18x64", "teeth_driving": "8", "teeth_driven": "8", "centre_distance": "4.05 m",
     "tensioner": "on", "idler_teeth": "6", "idler_position": "0.3", "idler_offset": "400 mm",
     "tensioner_mass": "60 kg", "tensioner_stiffness": "200 kN/m", "tensioner_force": "5 kN",
-    "guide": "tangential", "guide_end": "256 mm", "required_static_safety": "3.5",
+    "guide": "tangential", "guide_end": "256 mm",
+    "required_static_safety": f"{REQUIRED_STATIC_SAFETY['link']:g}",
     "wear_coefficient": "2e-16 m**2/N",
 }
 
