@@ -18,8 +18,8 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from .._results import Result, quantity
 from .. import wear as W
+from .._results import Result, quantity
 from .checks import Check
 from .parts import Part, PartContext, register_part
 
