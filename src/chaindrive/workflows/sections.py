@@ -116,7 +116,7 @@ def inputs_section(a: DriveAnalysis, fig: _Figures) -> Section | None:
         ["power (without service factor)", *_si(d.power(), "W")],
         ["torque on the driving wheel", *_si(d.torque(), "N*m")],
         ["service factor", d.load.service_factor, "-"],
-        ["required static safety", d.required_static_safety, "-"],
+        ["required static safety", d.static_safety_required, "-"],
         ["wear elongation limit", *_si(d.elongation_limit, "1", "%")],
     ]
     tables = [Table("Input data", ["quantity", "value", "unit"], [[n, "—" if v is None else v, u] for n, v, u in rows]),
