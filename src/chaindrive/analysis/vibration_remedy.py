@@ -151,7 +151,7 @@ def search_remedy(drive: Drive, vib: DriveVibration) -> Remedy | None:
     """
     if drive.tensioner is None or vib.span is None:
         return None
-    from .vibration import MODES, _excitation_kwargs
+    from .vibration import MODES, excitation_kwargs
 
     t0 = drive.tensioner
     m0, c0 = float(t0.mass), float(t0.stiffness)
@@ -160,7 +160,7 @@ def search_remedy(drive: Drive, vib: DriveVibration) -> Remedy | None:
     fc = np.geomspace(*rng["stiffness"], _GRID["stiffness"]) if 0 < c0 < math.inf else np.array([1.0])
     ff = np.geomspace(*rng["force"], _GRID["force"]) if t0.force else np.array([1.0])
     fs = np.linspace(*rng["shift"], _GRID["shift"])
-    kw = _excitation_kwargs(drive)
+    kw = excitation_kwargs(drive)
     mult = np.array(list(excitation_multipliers(kw["ratio"], kw["teeth"], link_chain=kw["link_chain"]).values()))
     omega = float(drive.speed)
     lo, hi = 0.7, 1.4
