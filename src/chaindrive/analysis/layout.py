@@ -68,10 +68,10 @@ class DriveLayout(Result):
     wheel_names: tuple[str, ...]
     pitch_radii: np.ndarray = quantity("m")
     teeth_in_mesh: tuple[int | None, ...] = quantity("1")
-    chain_length_circles: float = quantity("m")
+    chain_length_circles: float = quantity("m", display="m")
     links_required: float = quantity("1")
     links: int = quantity("1")
-    chain_length: float = quantity("m")
+    chain_length: float = quantity("m", display="m")
     chain_mass: float | None = quantity("kg")
     polygon: L.PolygonLength | None
     centre_distance: float | None = quantity("m")

@@ -30,6 +30,7 @@ import numpy as np
 from .. import layout as L
 from .. import loads as F
 from ..errors import InputError
+from ..loads import mean_chain_speed, sides_per_turn
 
 if TYPE_CHECKING:
     from ..chains import Chain
@@ -47,16 +48,6 @@ TENSIONER_PARTS: dict[str, dict[str, str]] = {
                 "spring_angle": "rad"},
 }
 GUIDE_KINDS = ("tangential", "chordal", "guided")
-
-
-def sides_per_turn(teeth: int, link_chain: bool) -> int:
-    """Chain links seated per turn of a wheel: ``z`` (roller chain), ``2z`` (round link chain
-    on a pocket wheel: a horizontal and a vertical link per pocket, Dolipiński et al.).
-
-    >>> sides_per_turn(8, True), sides_per_turn(19, False)
-    (16, 19)
-    """
-    return 2 * int(teeth) if link_chain else int(teeth)
 
 
 def _finite(value: Any, what: str, *, positive: bool = False, nonnegative: bool = False) -> float:
@@ -441,7 +432,7 @@ class Drive:
         Track drive wheel strength (a mapping of its fields is accepted).
     self_regulating : object, optional
         Self-regulating drive inputs
-        (:class:`chaindrive.drive.self_regulating.SelfRegulatingSpec`).
+        (:class:`chaindrive.drive.carrier.SelfRegulatingSpec`).
 
     Examples
     --------
@@ -468,7 +459,7 @@ class Drive:
     links: int | None = None
     slack_tension: float | None = None
     slack_sag_ratio: float = 0.02
-    required_static_safety: float = 7.0
+    required_static_safety: float | None = None
     elongation_limit: float = 0.03
     wear_coefficient: float | None = None
     name: str = "chain drive"
@@ -518,7 +509,8 @@ class Drive:
         if not 0 < limit <= 0.1:
             raise InputError(f"drive.elongation_limit must lie in (0, 0.1], got {limit:g}",
                              field="drive.elongation_limit")
-        _finite(self.required_static_safety, "drive.required_static_safety", positive=True)
+        if self.required_static_safety is not None:
+            _finite(self.required_static_safety, "drive.required_static_safety", positive=True)
         if self.wear_coefficient is not None:
             _finite(self.wear_coefficient, "drive.wear_coefficient", positive=True)
 
@@ -577,6 +569,16 @@ class Drive:
                              "[chain] table of the project", field="chain.mass_per_length")
         return float(q)
 
+    @property
+    def static_safety_required(self) -> float:
+        """Required ``F_B / F_max``: the drive's ``required_static_safety``, or the one table's
+        value for its chain kind (:data:`chaindrive.loads.REQUIRED_STATIC_SAFETY`: 7 roller, 3.5 link)."""
+        if self.required_static_safety is not None:
+            return float(self.required_static_safety)
+        from ..loads import REQUIRED_STATIC_SAFETY
+
+        return REQUIRED_STATIC_SAFETY["link" if self.chain.is_link_chain else "roller"]
+
     def pitch_radii(self) -> np.ndarray:
         """Pitch radius of every wheel in chain order [m]."""
         return np.array([w.pitch_radius(self.chain) for w in self.wheels])
@@ -584,7 +586,7 @@ class Drive:
     def chain_speed(self) -> float:
         """Mean chain speed [m/s]: sides per turn × pitch × ω / 2π."""
         w = self.driving_wheel
-        return w.sides_per_turn(self.chain) * self.pitch * self.speed / (2 * math.pi)
+        return float(mean_chain_speed(w.sides_per_turn(self.chain), self.pitch, self.speed))
 
     def angular_velocities(self) -> np.ndarray:
         """Mean angular velocity of every wheel [rad/s]."""
@@ -645,7 +647,7 @@ class Drive:
             "links": self.links,
             "slack_tension": self.slack_tension,
             "slack_sag_ratio": self.slack_sag_ratio,
-            "required_static_safety": self.required_static_safety,
+            "required_static_safety": self.static_safety_required,
             "elongation_limit": self.elongation_limit,
             "wear_coefficient": self.wear_coefficient,
             "contact": None if self.contact is None else dataclasses.asdict(self.contact),

@@ -17,7 +17,6 @@ in the file, e.g. ``drive.toml:14: wheels[1].teeth: must be a whole number >= 3`
 from __future__ import annotations
 
 import dataclasses
-import math
 import os
 import re
 import tomllib  # noqa: F401 - used by the doctests (Python >= 3.11)
@@ -36,6 +35,7 @@ from pydantic import (
 
 from ..errors import ChainDriveError, InputError, UnknownNameError
 from ..limits import MAX_LINKS, MAX_TEETH, warn_implausible
+from ..loads import mean_chain_speed
 from ..units import chain_speed_to_angular_velocity, is_dimensional, parse_quantity, unit_example
 from . import model as _model
 from .model import Drive, Guide, Load, Tensioner, Wheel
@@ -164,7 +164,7 @@ class DriveSpec(_Model):
     links: int | None = Field(default=None, gt=0, le=MAX_LINKS)
     slack_tension: Force | None = None
     slack_sag_ratio: Ratio = 0.02
-    required_static_safety: Ratio = 7.0
+    required_static_safety: Ratio | None = None
     elongation_limit: Ratio = 0.03
     wear_coefficient: WearCoefficient | None = None
     travel: Literal["ccw", "cw"] = "ccw"
@@ -536,7 +536,7 @@ def _speed_of(speed: float | ChainSpeedSpec, chain, wheels, filename: str, index
     if not isinstance(speed, ChainSpeedSpec):
         if len(driving) == 1 and driving[0].teeth is not None and not warn_implausible(
                 "drive.speed", speed, "angular_velocity", stacklevel=3):
-            v = driving[0].sides_per_turn(chain) * chain.pitch * speed / (2 * math.pi)
+            v = mean_chain_speed(driving[0].sides_per_turn(chain), chain.pitch, speed)
             warn_implausible("drive.speed (chain speed n p omega / 2 pi)", v, "chain_speed", stacklevel=3)
         return speed
     where = _where(filename, _line_for(("drive", "speed"), index))
@@ -550,10 +550,10 @@ def _speed_of(speed: float | ChainSpeedSpec, chain, wheels, filename: str, index
 
 
 def _self_regulating(table: dict[str, Any] | None, filename: str, index: dict) -> Any:
-    """The ``[self_regulating]`` table as a :class:`~chaindrive.drive.self_regulating.SelfRegulatingSpec`."""
+    """The ``[self_regulating]`` table as a :class:`~chaindrive.drive.carrier.SelfRegulatingSpec`."""
     if table is None:
         return None
-    from .self_regulating import SelfRegulatingSpec
+    from .carrier import SelfRegulatingSpec
 
     for key in ("pivot", "weight", "weight_offset", "stiffness", "preload"):
         values = table.get(key)
