@@ -185,7 +185,7 @@ def test_study_cli_errors(study_file, tmp_path, capsys):
 
 def test_run_errors(study_file, tmp_path, local_run):
     study = load_study(study_file)
-    with pytest.raises(InputError, match=r"batch_size must lie in \[1, 1000\], got 0"):
+    with pytest.raises(InputError, match=r"batch_size must lie in \[1, 20000\], got 0"):
         run_study(study, tmp_path / "a", batch_size=0, progress=False)
     with pytest.raises(InputError, match=r"workers must lie in \[1, 256\], got 0"):
         run_study(study, tmp_path / "a", workers=0, progress=False)
