@@ -12,13 +12,13 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
+from _shared import EXAMPLES, roller_drive
 from chaindrive.analysis import PARTS, Check, DriveAnalysis, analyze_drive
 from chaindrive.chains import get
 from chaindrive.drive import Drive, Load, Wheel, load_project
 from chaindrive.errors import InputError
 from chaindrive.workflows.analyze import analyze
 
-EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
 BASELINE = Path(__file__).resolve().parent / "data" / "analysis_regression"
 NAMES = ["mining_conveyor", "roller_industrial", "tractor_track"]
 
@@ -68,10 +68,7 @@ def test_results_json_numbers_unchanged(name, tmp_path):
 
 
 def _roller(**changes):
-    d = Drive(chain=get("16B"), speed=100.53, load=Load(power=15e3),
-              wheels=[Wheel("motor", "sprocket", 19, (0, 0), driving=True),
-                      Wheel("fan", "sprocket", 57, (1.05, 0))])
-    return dataclasses.replace(d, **changes) if changes else d
+    return roller_drive(speed=100.53, **changes)
 
 
 def test_drive_cannot_be_changed_in_place():

@@ -12,6 +12,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
+from _shared import EXAMPLES, roller_drive
 from chaindrive.analysis import (
     analyze_drive,
     drive_entry,
@@ -30,14 +31,11 @@ from chaindrive.drive import Drive, Guide, Load, Tensioner, Wheel, load_project
 from chaindrive.drive.project import line_index, parse_project, template
 from chaindrive.errors import InputError, UnknownNameError
 
-EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
 RPM = 2 * math.pi / 60
 
 
 def _roller():
-    return Drive(chain=get("16B"), speed=960 * RPM, load=Load(power=15e3),
-                 wheels=[Wheel("motor", "sprocket", 19, (0, 0), driving=True),
-                         Wheel("fan", "sprocket", 57, (1.05, 0))])
+    return roller_drive(speed=960 * RPM)
 
 
 # ---------------------------------------------------------------- objects

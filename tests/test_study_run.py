@@ -14,12 +14,11 @@ import pytest
 pytest.importorskip("distributed")
 pa = pytest.importorskip("pyarrow")
 
+from _shared import EXAMPLES, free_port  # noqa: E402
 from chaindrive.cli import main  # noqa: E402
 from chaindrive.errors import InfeasibleError, InputError  # noqa: E402
 from chaindrive.study.run import evaluate_variant, existing_keys, read_results, run_study  # noqa: E402
 from chaindrive.study.spec import load_study  # noqa: E402
-
-EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
 
 # 6 variants: 2 skews x 3 tooth counts of the driving sprocket; teeth = 2 is refused by
 # the project schema (whole number >= 3), so 2 variants fail and record their error
@@ -106,10 +105,6 @@ def test_rerun_adds_nothing(local_run, study_file, capsys):
     assert existing_keys(out) == keys and len(keys) == 6
 
 
-def _free_port() -> int:
-    with socket.socket() as s:
-        s.bind(("127.0.0.1", 0))
-        return s.getsockname()[1]
 
 
 def _stop(proc: subprocess.Popen) -> None:
@@ -123,7 +118,7 @@ def _stop(proc: subprocess.Popen) -> None:
 
 
 def test_separate_scheduler_and_worker_give_the_same_rows(local_run, study_file, tmp_path):
-    port = _free_port()
+    port = free_port()
     address = f"tcp://127.0.0.1:{port}"
     procs = []
     try:
@@ -196,7 +191,7 @@ def test_run_errors(study_file, tmp_path, local_run):
         read_results(tmp_path)
     # nobody listens on a fresh port: refused with the address named
     with pytest.raises(InputError, match=r"--scheduler: cannot reach the scheduler at 'tcp://127.0.0.1:\d+'"):
-        run_study(study, tmp_path / "b", scheduler=f"tcp://127.0.0.1:{_free_port()}", progress=False,
+        run_study(study, tmp_path / "b", scheduler=f"tcp://127.0.0.1:{free_port()}", progress=False,
                   wait_for_workers=1)
     other = load_study(EXAMPLES / "skew_study.toml")
     with pytest.raises(InputError, match="holds another study"):

@@ -367,39 +367,6 @@ def candidate_project(candidate: Candidate, *, name: str | None = None) -> str:
     >>> 'name = "10B-1"' in text and "links = 116" in text
     True
     """
-    c = candidate
-    title = name or f"{c.chain} chain drive, {c.teeth_driving}/{c.teeth_driven} teeth"
-    also = f" (= {', '.join(c.names[1:])})" if len(c.names) > 1 else ""
-    rpm = c.speed * 30 / math.pi
-    lines = [
-        "# chaindrive project file written by `chaindrive select` (TOML). Quantities carry units;",
-        "# a bare number is refused for them. Check it with:  chaindrive layout <this file>",
-        "",
-        "[drive]",
-        f"name = {_toml_string(title)}",
-        f"description = {_toml_string(f'{c.chain}{also}: rated {c.rated_power / 1e3:.4g} kW for a design power of {c.design_power / 1e3:.4g} kW (margin {c.power_margin:.2f}), lubrication {c.lubrication} ({c.lubrication_method})')}",
-        f'speed = "{rpm:.10g} rpm"               # driving (small) sprocket',
-        f"links = {c.links}                      # even number of pitches",
-        "",
-        "[chain]",
-        f"name = {_toml_string(c.chain)}",
-        "",
-        "[load]",
-        f'power = "{c.power / 1e3:.10g} kW"',
-        f"service_factor = {c.service_factor:g}",
-        "",
-        "[[wheels]]",
-        'name = "driving"',
-        'kind = "sprocket"',
-        f"teeth = {c.teeth_driving}",
-        'position = ["0 mm", "0 mm"]',
-        "driving = true",
-        "",
-        "[[wheels]]",
-        'name = "driven"',
-        'kind = "sprocket"',
-        f"teeth = {c.teeth_driven}",
-        f'position = ["{c.centre_distance * 1e3:.3f} mm", "0 mm"]   # centre distance for {c.links} links (ISO 10823)',
-        "",
-    ]
-    return "\n".join(lines)
+    from .drive.writer import candidate_project_text
+
+    return candidate_project_text(candidate, name=name)
