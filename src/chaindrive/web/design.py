@@ -52,6 +52,9 @@ DEFAULTS: dict[str, str] = {
     "tensioner_mass": "2 kg",
     "tensioner_stiffness": "20 kN/m",
     "tensioner_force": "200 N",
+    "tensioner_mechanism": "",
+    **{f"tensioner_{k}": "" for k in ("arm_length", "arm_mass", "wheel_mass", "carriage_mass", "spring_stiffness",
+                                      "spring_lever", "spring_angle")},
     "guide": "",
     "guide_end": "100 mm",
     "skew": "",
@@ -79,6 +82,7 @@ CHOICES: dict[str, tuple[str, ...]] = {
     "units": ("metric", "imperial"),
     "kind": ("roller", "link"),
     "tensioner": ("", "on"),
+    "tensioner_mechanism": ("", "lever", "sliding"),
     "guide": ("", "tangential", "chordal"),
 }
 
@@ -96,6 +100,14 @@ FIELDS: dict[str, FieldSpec] = {
     "tensioner_mass": FieldSpec("kg", 0.0, 1e5, example="2 kg"),
     "tensioner_stiffness": FieldSpec("N/m", 0.0, 1e10, example="20 kN/m"),
     "tensioner_force": FieldSpec("N", 0.0, 1e7, open_minimum=False, example="200 N"),
+    # a tensioner described by its parts (chaindrive.drive.model.Tensioner.from_parts)
+    "tensioner_arm_length": FieldSpec("m", 0.0, 10.0, example="400 mm"),
+    "tensioner_arm_mass": FieldSpec("kg", 0.0, 1e5, open_minimum=False, example="30 kg"),
+    "tensioner_wheel_mass": FieldSpec("kg", 0.0, 1e5, open_minimum=False, example="40 kg"),
+    "tensioner_carriage_mass": FieldSpec("kg", 0.0, 1e5, open_minimum=False, example="25 kg"),
+    "tensioner_spring_stiffness": FieldSpec("N/m", 0.0, 1e10, example="600 kN/m"),
+    "tensioner_spring_lever": FieldSpec("m", 0.0, 10.0, open_minimum=False, example="250 mm"),
+    "tensioner_spring_angle": FieldSpec("rad", 0.0, 1.5, open_minimum=False, example="10 deg"),
     "guide_end": FieldSpec("m", 0.0, 10.0, example="100 mm"),
     "skew": FieldSpec("rad", 0.0, 0.2, open_minimum=False, example="50 arcmin"),
     "required_static_safety": FieldSpec("", 1.0, 50.0, open_minimum=False, example="7"),
@@ -245,6 +257,12 @@ def _toml_string(text: str) -> str:
     return json.dumps(text, ensure_ascii=False)
 
 
+#: The parts of each tensioner mechanism the studio offers (a subset of chaindrive.drive.model.TENSIONER_PARTS).
+_TENSIONER_PARTS = {"lever": ("arm_length", "arm_mass", "wheel_mass", "spring_stiffness", "spring_lever",
+                              "spring_angle"),
+                    "sliding": ("carriage_mass", "wheel_mass", "spring_stiffness", "spring_angle")}
+
+
 def _project_text(d: Design, state: dict[str, str], positions: list, idler: tuple | None,
                   links: int | None) -> str:
     kind_wheel = "pocket_wheel" if d.chain.is_link_chain else "sprocket"
@@ -283,9 +301,15 @@ def _project_text(d: Design, state: dict[str, str], positions: list, idler: tupl
             lines.append("driving = true")
         lines.append("")
     if idler is not None:
-        lines += ["[tensioner]", 'wheel = "tensioner"',
-                  f"mass = {_toml_string(state['tensioner_mass'].strip())}",
-                  f"stiffness = {_toml_string(state['tensioner_stiffness'].strip())}",
+        mechanism = state["tensioner_mechanism"]
+        if mechanism:  # described by its parts: the project file reduces them to the axis
+            reduced = [f"mechanism = {_toml_string(mechanism)}"] + [
+                f"{k} = {_toml_string(state['tensioner_' + k].strip())}" for k in _TENSIONER_PARTS[mechanism]
+                if state["tensioner_" + k].strip()]
+        else:
+            reduced = [f"mass = {_toml_string(state['tensioner_mass'].strip())}",
+                       f"stiffness = {_toml_string(state['tensioner_stiffness'].strip())}"]
+        lines += ["[tensioner]", 'wheel = "tensioner"', *reduced,
                   'kind = "spring"', "direction = [0, -1]",
                   f"force = {_toml_string(state['tensioner_force'].strip())}", ""]
     if state["guide"]:
@@ -375,7 +399,10 @@ def design_from_state(state: dict[str, str]) -> tuple[Design | None, dict[str, s
     if tensioner:
         pos = _number(state, "idler_position", errors)
         off = _number(state, "idler_offset", errors)
-        for name in ("tensioner_mass", "tensioner_stiffness", "tensioner_force"):
+        mech = state["tensioner_mechanism"]
+        reduced = ("tensioner_mass", "tensioner_stiffness") if not mech else tuple(
+            "tensioner_" + k for k in _TENSIONER_PARTS[mech] if state["tensioner_" + k].strip())
+        for name in (*reduced, "tensioner_force"):
             _number(state, name, errors)
         try:
             zi = parse_integer("idler_teeth", state["idler_teeth"], 3 if kind == "link" else 6, TEETH_RANGE[1])
@@ -450,6 +477,10 @@ def _links_and_centre(geometry: tuple, text: str, exact: bool) -> tuple[int, flo
 
 def _field_of(message: str) -> str:
     """The form field an engine message is about (the drawing area when unknown)."""
+    for part in ("arm_length", "arm_mass", "wheel_mass", "carriage_mass", "spring_stiffness", "spring_lever",
+                 "spring_angle"):
+        if f"tensioner.{part}" in message or f"tensioner: {part}" in message:
+            return "tensioner_" + part
     for key in ("tensioner", "guide", "skew", "teeth", "centre", "chain", "speed", "power"):
         if key in message:
             return {"tensioner": "tensioner_force", "guide": "guide_end", "teeth": "teeth_driving",
@@ -540,6 +571,12 @@ def state_from_project(text: str, filename: str = "project.toml") -> dict[str, s
             "tensioner_mass": f"{t.mass:g} kg", "tensioner_stiffness": f"{t.stiffness / 1e3:g} kN/m",
             "tensioner_force": f"{(t.force or 0.0):g} N",
         })
+        if t.mechanism in _TENSIONER_PARTS:
+            parts = dict(t.parts)
+            state["tensioner_mechanism"] = t.mechanism
+            for k in _TENSIONER_PARTS[t.mechanism]:
+                if k in parts:
+                    state["tensioner_" + k] = f"{parts[k]:g} {FIELDS['tensioner_' + k].unit}"
     elif idlers:
         raise InputError(f"{filename}: an idler without a [tensioner] table is not edited by the studio; "
                          "use `chaindrive analyze`")

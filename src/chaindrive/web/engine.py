@@ -99,7 +99,7 @@ def light_analysis(drive: Drive) -> LightAnalysis:
     """
     from ..analysis import analyze_drive  # the typed analysis layer
 
-    res = analyze_drive(drive)
+    res = analyze_drive(drive, exclude=["remedy"])  # the remedy search (~1.5 s) belongs to the full report
     checks = [_check_dict(_group(c), c) for c in res.checks]
     return LightAnalysis(checks=checks, warnings=[str(w) for w in res.warnings],
                          passed=bool(res.passed), analysis=res, layout=res.layout)
