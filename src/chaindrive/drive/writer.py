@@ -71,7 +71,7 @@ def drive_to_toml(drive: Drive, *, header: str = "") -> str:
     drive : Drive
         The drive.
     header : str
-        Comment lines put first (each line gets ``# ``).
+        Comment lines put first (each line starts with a hash and a space).
 
     Returns
     -------
