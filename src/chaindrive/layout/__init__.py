@@ -10,10 +10,19 @@ Three models of the chain path are provided:
 * **pitch polygons** (:func:`chain_length_polygon`, :func:`centre_distance_polygon`):
   the taut chain is the boundary of the convex hull of the pitch polygons of the two
   wheels; its length depends on the phases of the wheels. See the function notes.
+  Any number of wheels, inside or outside the loop, toothed or toothless:
+  :func:`chain_length_loop`, :func:`adjust_loop` (one wheel moved to fit the links).
 
 All lengths in metres, angles in radians, chain lengths in pitches (links).
 """
 
+from .polygon_loop import (
+    LoopAdjustment,
+    LoopLength,
+    adjust_loop,
+    chain_length_loop,
+    loop_length_at_phases,
+)
 from .sag import GRAVITY, catenary_sag, parabolic_sag, tension_for_sag
 from .travel import centre_distance_travel, tensioner_travel
 
@@ -60,6 +69,11 @@ __all__ = [
     "PolygonCentreDistance",
     "wrap_layout",
     "WrapLayout",
+    "chain_length_loop",
+    "loop_length_at_phases",
+    "adjust_loop",
+    "LoopLength",
+    "LoopAdjustment",
     "teeth_in_mesh",
     "catenary_sag",
     "parabolic_sag",
