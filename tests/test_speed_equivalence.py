@@ -8,7 +8,7 @@ here (or in the module, private) as the reference:
   :func:`~chaindrive.layout.wrap_layout`, and the travel against the previous
   implementation (a root of ``wrap_layout(...).length`` by SciPy);
 * :func:`chaindrive._roots.brentq` against ``scipy.optimize.brentq`` (bit for bit);
-* :func:`~chaindrive.vibration.resonance.propose_safe_tensioner` (branch and bound)
+* :func:`~chaindrive.vibration.tensioner_design.propose_safe_tensioner` (branch and bound)
   against the whole resonance map (the previous implementation).
 """
 
@@ -25,13 +25,12 @@ from scipy.optimize import brentq as scipy_brentq
 from chaindrive import layout as L
 from chaindrive._roots import brentq
 from chaindrive.errors import InfeasibleError, InputError
-from chaindrive.vibration.resonance import (
+from chaindrive.vibration.resonance import TensionerSpan, excitation_multipliers
+from chaindrive.vibration.tensioner_design import (
     SafeTensioner,
-    TensionerSpan,
     _min_margin,
     _speed_grid,
     _unsafe_frequencies,
-    excitation_multipliers,
     propose_safe_tensioner,
     resonance_map,
 )

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import dataclasses
 import math
 
 import numpy as np
@@ -31,7 +32,7 @@ from chaindrive.vibration import (
     tensioner_frequencies,
     wave_speed,
 )
-from chaindrive.vibration.resonance import _min_margin
+from chaindrive.vibration.tensioner_design import _min_margin
 
 B20 = math.radians(20)
 BASE = dict(tension=2000.0, mass_per_length=2.6, length_1=0.8, length_2=0.8, angle_1=B20, angle_2=B20)
@@ -414,7 +415,7 @@ def test_span_object_campbell_map_proposal(tmp_path):
     mp = resonance_map(span, np.geomspace(1, 300, 30), np.geomspace(1e3, 1e6, 30), rng, ratio=2.5, teeth=17)
     assert 0 < mp.safe.mean() < 1
     assert set(mp.to_dict()) >= {"mass", "stiffness", "min_margin", "safe"}
-    mp.proposal = (prop.mass, prop.stiffness)
+    mp = dataclasses.replace(mp, proposal=(prop.mass, prop.stiffness))
     import matplotlib.pyplot as plt
 
     for name, fig in (("campbell.png", cb.plot()), ("map.png", mp.plot())):

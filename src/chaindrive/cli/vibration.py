@@ -8,6 +8,7 @@ and, with ``--speed``, the table of the check 0.7 <= P_i/ω_j <= 1.4. ``--json``
 
 from __future__ import annotations
 
+import dataclasses
 import math
 from pathlib import Path
 from typing import Any
@@ -128,7 +129,7 @@ def vibration_command(
             try:
                 prop = propose_safe_tensioner(span, (wmin, wmax), speeds=50, **common)
                 if prop.changed:
-                    rm.proposal = (prop.mass, prop.stiffness)
+                    rm = dataclasses.replace(rm, proposal=(prop.mass, prop.stiffness))
             except Exception:  # noqa: BLE001 - nothing safe in the window: map without a proposal
                 pass
             fig = rm.plot()

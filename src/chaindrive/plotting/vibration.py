@@ -12,7 +12,7 @@ if TYPE_CHECKING:
     from matplotlib.axes import Axes
     from matplotlib.figure import Figure
 
-    from ..vibration.resonance import CampbellResult, ResonanceMapResult
+    from ..vibration.tensioner_design import CampbellResult, ResonanceMapResult
 
 __all__ = ["campbell_plot", "resonance_map_plot"]
 

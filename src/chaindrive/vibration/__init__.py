@@ -16,22 +16,14 @@ Derivations and figures: docs/vibration.md.
 from .resonance import (
     BAND,
     TENSIONER_REDUCTIONS,
-    CampbellResult,
     ReducedTensioner,
     ResonanceCheck,
-    ResonanceMapResult,
-    SafeTensioner,
-    SpanVibration,
     TensionerSpan,
-    campbell,
     excitation_frequencies,
     excitation_multipliers,
-    propose_safe_tensioner,
     reduced_tensioner,
     resonance_check,
-    resonance_map,
     resonance_margin,
-    span_vibration,
 )
 from .string import moving_string_frequencies, wave_speed
 from .tensioner import (
@@ -44,6 +36,16 @@ from .tensioner import (
     span_parameters,
     static_rod_force,
     tensioner_frequencies,
+)
+from .tensioner_design import (
+    CampbellResult,
+    ResonanceMapResult,
+    SafeTensioner,
+    SpanVibration,
+    campbell,
+    propose_safe_tensioner,
+    resonance_map,
+    span_vibration,
 )
 
 __all__ = [

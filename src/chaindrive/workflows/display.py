@@ -18,7 +18,7 @@ from typing import TYPE_CHECKING, Any
 if TYPE_CHECKING:
     from ..analysis.checks import Check
 
-__all__ = ["DISPLAY", "display", "fmt", "check_line_parts", "check_value_text", "check_limit_text"]
+__all__ = ["DISPLAY", "CONVERSIONS", "convert", "display_of", "display", "fmt", "check_line_parts", "check_value_text", "check_limit_text"]
 
 #: SI unit -> (display unit, factor).
 DISPLAY: dict[str, tuple[str, float]] = {
@@ -30,6 +30,51 @@ DISPLAY: dict[str, tuple[str, float]] = {
     "rad/s": ("rpm", 30.0 / math.pi),
     "N*m": ("N·m", 1.0),
 }
+
+
+#: (SI unit, display unit) -> factor, for the display units a result field may declare
+#: (``quantity(unit, display=...)``) besides the defaults of :data:`DISPLAY`.
+CONVERSIONS: dict[tuple[str, str], float] = {
+    **{(si, shown): factor for si, (shown, factor) in DISPLAY.items()},
+    ("m", "m"): 1.0,
+    ("m", "µm"): 1e6,
+    ("N", "N"): 1.0,
+    ("W", "W"): 1.0,
+    ("Pa", "GPa"): 1e-9,
+    ("rad/s", "rad/s"): 1.0,
+    ("rad/s", "Hz"): 1.0 / (2.0 * math.pi),
+    ("s", "h"): 1.0 / 3600.0,
+    ("m^2", "mm^2"): 1e6,
+    ("m^3", "cm^3"): 1e6,
+    ("1", "%"): 100.0,
+}
+
+
+def convert(value: float | None, unit: str, shown: str | None = None) -> tuple[float | None, str]:
+    """``value`` [``unit``, SI] in the unit ``shown`` (default: its display unit of :data:`DISPLAY`).
+
+    A unit with no display entry is shown as it is; an unknown (unit, shown) pair is a
+    programming error (``KeyError``).
+
+    >>> convert(0.0125, "m"), convert(10.0, "rad/s", "Hz")[1], convert(3.0, "kg")
+    ((12.5, 'mm'), 'Hz', (3.0, 'kg'))
+    """
+    if shown is None or shown == unit:
+        return display(value, unit) if shown is None else (value if value is None else float(value), unit)
+    factor = CONVERSIONS[(unit, shown)]
+    return (None if value is None else float(value) * factor), shown
+
+
+def display_of(result: Any, name: str) -> tuple[float | None, str]:
+    """Field ``name`` of a result object (:class:`chaindrive._results.Result`) in its display unit.
+
+    >>> from chaindrive.vibration import TensionerSpan
+    >>> display_of(TensionerSpan(2000.0, 2.6, 0.8, 0.8, 0.35, 0.35, 3.0, 5e4), "length_1")
+    (800.0, 'mm')
+    """
+    unit = type(result).unit_of(name) or "1"
+    value = getattr(result, name)
+    return convert(None if value is None else float(value), unit, type(result).display_unit_of(name))
 
 
 def display(value: float | None, unit: str) -> tuple[float | None, str]:
