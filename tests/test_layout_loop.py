@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import math
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -76,16 +77,19 @@ def _brute_force_length(centres, teeth, sides, phases, pitch=P):
     spans = []
     for i in range(n):
         j = (i + 1) % n
-        found = []
-        for a, va in enumerate(polys[i]):
-            for b, vb in enumerate(polys[j]):
-                t = vb - va
-                cross_a = t[0] * (polys[i] - va)[:, 1] - t[1] * (polys[i] - va)[:, 0]
-                cross_b = t[0] * (polys[j] - va)[:, 1] - t[1] * (polys[j] - va)[:, 0]
-                if np.all(sides[i] * cross_a >= -1e-12) and np.all(sides[j] * cross_b >= -1e-12):
-                    ang = math.atan2(t[1], t[0])
-                    found.append((abs(math.remainder(ang - circle.span_angle[i], 2 * math.pi)), a, b, np.hypot(*t)))
-        spans.append(min(found)[1:])  # the supporting line next to the circles' tangent
+        A, B = polys[i], polys[j]
+        t = B[None, :, :] - A[:, None, :]  # every pair (a, b)
+
+        def side_of(points, t=t, A=A):
+            rel = points[None, None, :, :] - A[:, None, None, :]
+            return t[..., None, 0] * rel[..., 1] - t[..., None, 1] * rel[..., 0]
+
+        supporting = (np.all(sides[i] * side_of(A) >= -1e-12, axis=-1)
+                      & np.all(sides[j] * side_of(B) >= -1e-12, axis=-1))
+        ang = np.arctan2(t[..., 1], t[..., 0])
+        off = np.abs(np.angle(np.exp(1j * (ang - circle.span_angle[i]))))
+        a, b = np.unravel_index(np.argmin(np.where(supporting, off, np.inf)), off.shape)
+        spans.append((int(a), int(b), float(np.hypot(*t[a, b]))))  # the supporting line next to the circles'
     total = sum(s[2] for s in spans)
     for i in range(n):
         k_in, k_out, z = spans[(i - 1) % n][1], spans[i][0], teeth[i]
@@ -190,3 +194,44 @@ def test_grazed_idler_falls_back_to_circles_with_a_warning():
         r = chain_length_loop(P, centres, [19, None, 19], [1, -1, 1], diameters=[None, 0.05, None], phases=4)
     assert not r.exact
     assert r.links_max == r.links_circles
+
+
+# ---------------------------------------------------------------- the multi-wheel example
+
+
+def test_multi_wheel_example_length_matches_brute_force():
+    # acceptance: examples/multi_wheel.toml (motor sprocket, back-side take-up idler, two
+    # machine sprockets) analyzes, and its exact length at the adjusted idler position equals
+    # the exhaustive-search computation above over every phase combination of a 3-phase grid
+    import itertools
+
+    from chaindrive.analysis import analyze_drive
+    from chaindrive.drive import load_project
+
+    drive = load_project(Path(__file__).resolve().parents[1] / "examples" / "multi_wheel.toml")
+    a = analyze_drive(drive)
+    lay = a.layout
+    assert lay.loop.exact and lay.adjustment.exact
+    assert lay.links == 144
+    assert lay.loop.links_max == pytest.approx(144, abs=1e-9)  # the idler set so that 144 links are taut
+    teeth = [w.teeth for w in drive.wheels]
+    sides = [w.side for w in drive.wheels]
+    centres = lay.wrap.centres
+    pitch = drive.pitch
+    grids = [np.arange(3) * (2 * math.pi / z) / 3 for z in teeth]
+    brute = [_brute_force_length(centres, teeth, sides, np.array(f), pitch) / pitch
+             for f in itertools.product(*grids)]
+    exact = chain_length_loop(pitch, centres, teeth, sides, phases=3)
+    assert exact.links_max == pytest.approx(max(brute), abs=1e-9)
+    assert exact.links_min == pytest.approx(min(brute), abs=1e-9)
+    assert exact.links_mean == pytest.approx(np.mean(brute), abs=1e-9)
+    # cross-check: the pitch circles with each wrap counted in seated links (a different
+    # approximation) lies within the polygonal play
+    assert abs(lay.links_required - lay.loop.links_mean) < 2e-3
+    # the power split: the tension rises by 60 % and 40 % of the effective pull
+    t = a.loads
+    k = drive.driving_index
+    assert t.span_tensions[k] == pytest.approx(t.slack)
+    assert t.span_tensions[2] - t.span_tensions[1] == pytest.approx(0.6 * t.effective_pull)
+    assert t.span_tensions[3] - t.span_tensions[2] == pytest.approx(0.4 * t.effective_pull)
+    assert t.tight == pytest.approx(max(t.span_tensions) + t.centrifugal)

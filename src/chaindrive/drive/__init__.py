@@ -20,10 +20,10 @@ Examples
 
 from typing import Any
 
-from .model import ContactSpec, Drive, Guide, Load, Tensioner, TrackSpec, Wheel
+from .model import Adjustable, ContactSpec, Drive, Guide, Load, Tensioner, TrackSpec, Wheel
 
 __all__ = [
-    "Drive", "Wheel", "Tensioner", "Guide", "Load", "ContactSpec", "TrackSpec",
+    "Drive", "Wheel", "Tensioner", "Adjustable", "Guide", "Load", "ContactSpec", "TrackSpec",
     "load_project", "Project",
 ]
 

@@ -10,6 +10,8 @@ import math
 from collections.abc import Callable
 from typing import TYPE_CHECKING, Any
 
+import numpy as np
+
 from ..analysis import DriveAnalysis
 from ..analysis.checks import Check
 from ..drive.model import Wheel
@@ -80,9 +82,12 @@ def inputs_section(a: DriveAnalysis, fig: _Figures) -> Section | None:
     ]
     tables = [Table("Input data", ["quantity", "value", "unit"], [[n, "—" if v is None else v, u] for n, v, u in rows]),
               Table("Wheels (in the order the chain passes them)",
-                    ["name", "kind", "teeth", "x [mm]", "y [mm]", "driving", "side"],
-                    [[w.name, w.kind, _teeth_cell(w),
-                      w.position[0] * 1e3, w.position[1] * 1e3, w.driving, w.side] for w in d.wheels])]
+                    ["name", "kind", "teeth", "x [mm]", "y [mm]", "driving", "side", "power share"],
+                    [[w.name, w.kind, _teeth_cell(w), w.position[0] * 1e3, w.position[1] * 1e3, w.driving, w.side,
+                      "—" if w.power_share is None else w.power_share] for w in d.wheels])]
+    if d.adjustable is not None:
+        tables.append(Table("Adjustable wheel (moved to fit the link count)", ["wheel", "direction x", "direction y"],
+                            [[d.adjustable.wheel, *d.adjustable.direction]]))
     if d.tensioner is not None:
         t = d.tensioner
         tables.append(Table("Tensioner (reduced to its axis, tensioner paper eq. (7))",
@@ -120,9 +125,19 @@ def layout_section(a: DriveAnalysis, fig: _Figures) -> Section | None:
         cd = lay.centre_distance_for_links
         rows.append([f"centre distance for {lay.links} links (taut)", cd.taut * 1e3, "mm"])
         rows.append([f"centre distance for {lay.links} links (loosest fit)", cd.loose * 1e3, "mm"])
+    if lay.loop is not None:
+        label = "exact, pitch polygons" if lay.loop.exact else "pitch circles: no polygon path"
+        rows.append([f"chain length, taut at the tightest phase ({label})", lay.loop.links_max, "pitches"])
+        rows.append([f"chain length, taut at the loosest phase ({label})", lay.loop.links_min, "pitches"])
+    if lay.adjustment is not None:
+        adj = lay.adjustment
+        name = lay.wheel_names[adj.wheel]
+        rows.append([f"{name} moved for {lay.links} links (taut)", adj.taut * 1e3, "mm"])
+        rows.append([f"{name} moved for {lay.links} links (loosest fit)", adj.loose * 1e3, "mm"])
+        rows.append([f"{name} position x, y", f"{adj.position[0] * 1e3:.2f}, {adj.position[1] * 1e3:.2f}", "mm"])
     if lay.chain_mass is not None:
         rows.append(["chain mass", lay.chain_mass, "kg"])
-    sec.tables.append(Table("Chain length and centre distance (exact polygon model for two wheels; docs/drive.md)",
+    sec.tables.append(Table("Chain length and centre distance (exact pitch-polygon model; docs/drive.md)",
                             ["quantity", "value", "unit"], rows))
     sec.tables.append(Table(
         "Wheels on the chain", ["wheel", "pitch radius [mm]", "speed [rpm]", "wrap [°]", "teeth in mesh"],
@@ -171,11 +186,20 @@ def loads_section(a: DriveAnalysis, fig: _Figures) -> Section | None:
          ["inertia force m a_max", t.dynamic / 1e3, "kN", "polygonal effect (Dolipiński et al.)"],
          ["maximum tension", t.maximum / 1e3, "kN", "tight + inertia"],
          ["dynamic factor", t.dynamic_factor, "-", "maximum / tight"]]))
+    n = len(t.wheel_names)
+    shares = t.power_shares if t.power_shares is not None else np.zeros(n)
+    powers = t.wheel_powers if t.wheel_powers is not None else np.zeros(n)
+    torques = t.wheel_torques if t.wheel_torques is not None else np.zeros(n)
     sec.tables.append(Table(
-        "Shaft loads (vector sum of the span tensions, without centrifugal part)",
-        ["wheel", "load [kN]", "direction [°]"],
-        [[n, f / 1e3, math.degrees(ang)] for n, f, ang in zip(t.wheel_names, t.shaft_loads, t.shaft_load_angles,
-                                                                strict=True)]))
+        "Per wheel: power taken off, span tensions (without centrifugal part) and shaft load "
+        "(vector sum of the two span tensions); the tension rises across each driven wheel by its share "
+        "of K_s T / R",
+        ["wheel", "power share", "power [kW]", "torque [N·m]", "tension in [kN]", "tension out [kN]",
+         "shaft load [kN]", "direction [°]"],
+        [[name, share, pw / 1e3, tq, t_in / 1e3, t_out / 1e3, f / 1e3, math.degrees(ang)]
+         for name, share, pw, tq, t_in, t_out, f, ang in zip(
+             t.wheel_names, shares, powers, torques, np.roll(t.span_tensions, 1), t.span_tensions,
+             t.shaft_loads, t.shaft_load_angles, strict=True)]))
     _checks(sec, a, ("static safety", "ANSI/ACA rated power", "speed below the galling"))
     rating = a.rating
     if rating is not None:
