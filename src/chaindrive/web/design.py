@@ -14,9 +14,9 @@ import math
 import warnings
 from dataclasses import dataclass, field
 from functools import lru_cache
-from pathlib import Path
 from typing import Any
 
+from ..design.duty import service_factor_table
 from ..errors import ChainDriveError, InputError, ValidityRangeWarning
 from .fields import FieldError, FieldSpec, parse_field, parse_integer
 
@@ -99,31 +99,6 @@ FIELDS: dict[str, FieldSpec] = {
 }
 
 TEETH_RANGE = (6, 150)
-
-
-@lru_cache(maxsize=1)
-def service_factor_table() -> dict[str, Any]:
-    """The published service-factor table (driving machine x driven machine), with its source.
-
-    Returns
-    -------
-    dict
-        ``source``, ``drivers``, ``characters``, ``factors[character][driver]`` and
-        ``driven_machines[key] = [label, character]``.
-
-    References
-    ----------
-    U.S. Tsubaki, *The Complete Guide to Chain*, Table 4.2; ACA table in Shigley's
-    Mechanical Engineering Design, 9th ed., Table 17-15.
-
-    Examples
-    --------
-    >>> t = service_factor_table()
-    >>> t["factors"]["heavy"]["electric_motor"]
-    1.5
-    """
-    path = Path(__file__).with_name("data") / "service_factors.json"
-    return json.loads(path.read_text(encoding="utf-8"))
 
 
 def normalise_state(params: dict[str, Any]) -> dict[str, str]:
