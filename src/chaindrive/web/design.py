@@ -19,6 +19,7 @@ from typing import Any
 from ..design.duty import service_factor_table
 from ..errors import ChainDriveError, InputError, ValidityRangeWarning
 from .fields import FieldError, FieldSpec, parse_field, parse_integer
+from .wheels import EXTRA_CHOICES, EXTRA_DEFAULTS, add_extra_wheels, extra_wheels
 
 __all__ = ["DEFAULTS", "FIELDS", "Design", "service_factor_table", "normalise_state",
            "design_from_state", "state_from_project", "MINING_EXAMPLE", "ROLLER_EXAMPLE"]
@@ -54,6 +55,7 @@ DEFAULTS: dict[str, str] = {
     "skew": "",
     "required_static_safety": "",
     "wear_coefficient": "",
+    **EXTRA_DEFAULTS,  # further wheels (chaindrive.web.wheels)
 }
 
 #: The mining scraper conveyor of Dolipiński et al. (DIN 22252 18x64 on 8-pocket wheels).
@@ -76,6 +78,7 @@ CHOICES: dict[str, tuple[str, ...]] = {
     "kind": ("roller", "link"),
     "tensioner": ("", "on"),
     "guide": ("", "tangential", "chordal"),
+    **EXTRA_CHOICES,
 }
 
 #: Ranges of the numeric fields (SI unit, minimum, maximum, example).
@@ -377,6 +380,7 @@ def design_from_state(state: dict[str, str]) -> tuple[Design | None, dict[str, s
         _number(state, "skew", errors)
     if state["wear_coefficient"].strip():
         _number(state, "wear_coefficient", errors)
+    extras = extra_wheels(state, errors, kind)
     if errors or centre is None:
         return None, errors
     d = Design(state=state, power=power, speed=speed, ratio=ratio, service_factor=ks,
@@ -396,12 +400,18 @@ def design_from_state(state: dict[str, str]) -> tuple[Design | None, dict[str, s
         idler = (zi, (pos * centre, -(min(r1, r2) + off)))
     positions = [(0.0, 0.0), (centre, 0.0)]
     try:
-        text = _project_text(d, state, positions, idler, None)
-        geometry = (chain.name, z1, z2, centre, idler, state["guide"], state["guide_end"])
-        links, exact = _links_and_centre(geometry, text, idler is None)
+        wheel_kind = "pocket_wheel" if chain.is_link_chain else "sprocket"
+
+        def project(links: int | None) -> str:
+            return add_extra_wheels(_project_text(d, state, positions, idler, links), extras,
+                                    wheel_kind=wheel_kind, adjustable=idler is None)
+
+        text = project(None)
+        geometry = (chain.name, z1, z2, centre, idler, state["guide"], state["guide_end"], tuple(extras))
+        links, exact = _links_and_centre(geometry, text, idler is None and not extras)
         if exact is not None:
             positions = [(0.0, 0.0), (exact, 0.0)]
-        text = _project_text(d, state, positions, idler, links)
+        text = project(links)
         drive = parse_project(text, filename="studio.toml")
     except ChainDriveError as exc:
         errors[_field_of(str(exc))] = str(exc).removeprefix("studio.toml: ")
