@@ -155,7 +155,7 @@ def test_properties_of_the_analysis(power, factor, teeth):
     d = _roller(load=Load(power=power, service_factor=factor)).with_wheel("motor", teeth=teeth)
     a = analyze_drive(d, exclude=["geometry", "vibration"])
     # the static safety check is F_B / F_max and its verdict follows from its value
-    s = a.checks[0]
+    s = a.checks_of("loads")[0]
     assert s.value == pytest.approx(d.chain.breaking_force / a.loads.maximum)
     assert s.passed == (s.value >= d.required_static_safety)
     # effective pull scales with the service factor, F_max = tight + dynamic

@@ -44,6 +44,7 @@ __all__ = [
     "MAX_TEXT_LENGTH",
     "chain_speed_to_angular_velocity",
     "parse_wheel_speed",
+    "convert_from_si",
 ]
 
 #: The SI unit the core expects for each kind of quantity, as pint spells it.
@@ -143,6 +144,19 @@ def _unit_info(unit: str) -> tuple[Any, float, Any, int, bool]:
     radians = int(dict(root._units).get("radian", 0))
     hertz = any(name in ("hertz",) or name.endswith("hertz") for name in dict(parsed._units))
     return parsed, float(factor), ureg.Quantity(1.0, parsed).dimensionality, radians, hertz
+
+
+def convert_from_si(value: float, si_unit: str, unit: str) -> float:
+    """``value`` [``si_unit``] expressed in ``unit`` (presenters' display units).
+
+    >>> round(convert_from_si(10.0, "rad/s", "rpm"), 3), convert_from_si(0.5, "m", "mm")
+    (95.493, 500.0)
+    """
+    _, f_si, dims_si, _, _ = _unit_info(si_unit)
+    _, f_unit, dims_unit, _, _ = _unit_info(unit)
+    if dims_si != dims_unit:
+        raise InputError(f"cannot show a value in {si_unit} as {unit}", field="unit")
+    return float(value) * f_si / f_unit
 
 
 def is_dimensional(unit: str) -> bool:

@@ -7,6 +7,7 @@ from typing import TYPE_CHECKING, Any
 
 from .._results import Result
 from ..drive.model import Drive, Wheel
+from .parts import Part, register_part
 
 if TYPE_CHECKING:
     from ..geometry.pocket_wheel import PocketWheel, PocketWheelDimensions
@@ -69,3 +70,9 @@ def drive_geometry(drive: Drive) -> tuple[WheelGeometry, ...]:
     """:func:`wheel_geometry` of every toothed wheel that has a form."""
     out = (wheel_geometry(drive, w) for w in drive.wheels)
     return tuple(g for g in out if g is not None)
+
+
+# --------------------------------------------------------------------------- declared parts
+register_part(Part("geometry", "Wheel geometry", lambda ctx: drive_geometry(ctx.drive), order=60,
+                   section="chaindrive.workflows.sections:geometry_section",
+                   json=lambda wheels: {g.wheel: g.to_dict() for g in wheels}))

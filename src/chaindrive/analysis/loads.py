@@ -11,10 +11,11 @@ from .. import layout as L
 from .. import loads as F
 from .._results import Result
 from ..drive.model import Drive
-from ..errors import InputError
+from ..errors import ChainDriveError, InputError
 from ._wheels import wheel_teeth
 from .checks import Check
-from .layout import DriveLayout, drive_layout, span_inclination
+from .layout import DriveLayout, drive_layout, slack_span_sag, span_inclination
+from .parts import Part, PartContext, register_part
 
 __all__ = ["DriveLoads", "drive_loads", "span_tensions", "free_entry_acceleration", "static_safety_check", "wrap_check",
            "MINIMUM_WRAP"]
@@ -296,3 +297,33 @@ def wrap_check(drive: Drive, layout: DriveLayout) -> Check:
     wrap = float(layout.wrap.wrap_angle[drive.driving_index])
     return Check(name="wrap on the driving wheel", value=wrap, limit=MINIMUM_WRAP, unit="rad",
                  passed=bool(wrap >= MINIMUM_WRAP - 1e-12), source="ISO 10823:2004 guidance (at least 120°)")
+
+
+# --------------------------------------------------------------------------- declared parts
+def _loads_part(ctx: PartContext) -> DriveLoads:
+    entry = ctx["entry"]
+    return drive_loads(ctx.drive, ctx["layout"], acceleration_peak=entry.acceleration_peak,
+                       acceleration_source=f"chaindrive.kinematics.chain_entry ({entry.driving.case.entry} entry)")
+
+
+def _slack_sag_part(ctx: PartContext) -> float | None:
+    try:
+        return slack_span_sag(ctx.drive, ctx["layout"], ctx["loads"].slack)
+    except ChainDriveError as exc:
+        ctx.note(f"sag not computed: {exc}")
+        return None
+
+
+def _slack_sag_checks(ctx: PartContext, sag: float) -> list[Check]:
+    lay = ctx["layout"]
+    span = float(lay.wrap.span_length[lay.slack_span])
+    return [Check("sag of the slack span", float(sag), None, "m", None, "catenary, docs/drive.md",
+                  f"{sag / span * 100:.2f} % of the span at the slack tension", relation="info")]
+
+
+register_part(Part("loads", "Loads and safety", _loads_part, needs=("layout", "entry"),
+                   checks=lambda ctx, loads: [static_safety_check(ctx.drive, loads)], order=20,
+                   section="chaindrive.workflows.sections:loads_section"))
+register_part(Part("slack_sag", "Sag of the slack span", _slack_sag_part, needs=("layout", "loads"),
+                   checks=_slack_sag_checks, order=21, unit="m",
+                   section="chaindrive.workflows.sections:layout_section"))

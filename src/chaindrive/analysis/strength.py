@@ -11,6 +11,7 @@ from ..errors import InputError
 from ..strength import RollerToothContact, skew_from_measurement, track_tooth_check
 from .checks import Check
 from .loads import DriveLoads
+from .parts import Part, PartContext, register_part
 
 if TYPE_CHECKING:
     from ..geometry.track_wheel import TrackDriveWheel
@@ -106,3 +107,21 @@ def track_tooth_checks(drive: Drive, result: TrackToothResult) -> tuple[Check, .
     return tuple(out)
 
 
+
+
+# --------------------------------------------------------------------------- declared parts
+def _track_tooth_part(ctx: PartContext) -> TrackToothResult | None:
+    from ..geometry.track_wheel import TrackDriveWheel
+
+    if ctx.drive.track is None:
+        return None
+    wheel = next((g.object for g in ctx["geometry"] or () if isinstance(g.object, TrackDriveWheel)), None)
+    return drive_track_tooth(ctx.drive, wheel)
+
+
+register_part(Part("contact", "Roller–tooth contact with skew", lambda ctx: drive_contact(ctx.drive, ctx["loads"]),
+                   needs=("loads",), checks=lambda ctx, con: contact_checks(con), order=70,
+                   section="chaindrive.workflows.sections:strength_section"))
+register_part(Part("track_tooth", "Track drive wheel teeth", _track_tooth_part, needs=("geometry",),
+                   checks=lambda ctx, tt: track_tooth_checks(ctx.drive, tt), order=80,
+                   section="chaindrive.workflows.sections:strength_section"))

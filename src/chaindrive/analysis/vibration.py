@@ -25,6 +25,7 @@ from ..vibration import (
 from .checks import Check
 from .layout import DriveLayout, span_inclination
 from .loads import DriveLoads
+from .parts import Part, PartContext, register_part
 
 __all__ = ["COUPLING_LIMIT_ANGLE", "FreeSpans", "DriveVibration", "tensioner_span", "drive_vibration"]
 
@@ -211,3 +212,16 @@ def vibration_checks(vib: DriveVibration) -> tuple[Check, ...]:
                       None, "pairs", None, "tensioner paper criterion applied to free spans (information)",
                       relation="info"),)
     return ()
+
+
+# --------------------------------------------------------------------------- declared parts
+def _vibration_part(ctx: PartContext) -> DriveVibration:
+    vib = drive_vibration(ctx.drive, ctx["layout"], ctx["loads"])
+    for text in vib.notes:
+        ctx.note(text)
+    return vib
+
+
+register_part(Part("vibration", "Span vibration and the resonance check", _vibration_part, needs=("layout", "loads"),
+                   checks=lambda ctx, vib: vibration_checks(vib), order=50,
+                   section="chaindrive.workflows.sections:vibration_section"))

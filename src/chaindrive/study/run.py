@@ -86,11 +86,13 @@ def analysis_result(drive: Drive, parts: Sequence[str] = ()) -> dict[str, Any]:
     >>> round(r["loads"]["effective_pull"]), r["contact"]
     (1934, None)
     """
-    from ..analysis import PARTS, analyze_drive
+    from ..analysis import analyze_drive
+    from ..analysis.parts import part_names
 
     include = None
     if parts and not set(parts) & {"passed", "checks", "warnings"}:
-        include = [p for p in parts if p in PARTS] or None
+        names = part_names()
+        include = [p for p in parts if p in names] or None
     return analyze_drive(drive, include=include).to_dict()
 
 

@@ -8,12 +8,12 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING, Any, cast
 
 import numpy as np
 
 from ..analysis import DriveAnalysis
-from ..analysis.checks import Check
+from ..analysis.parts import Part, all_parts
 from ..drive.model import Wheel
 from ..errors import InputError
 from .report import Figure, Section, Table
@@ -21,7 +21,7 @@ from .report import Figure, Section, Table
 if TYPE_CHECKING:
     from matplotlib.figure import Figure as MatplotlibFigure
 
-__all__ = ["SECTIONS", "build_sections"]
+__all__ = ["report_sections", "build_sections", "generic_section"]
 
 RPM = 60.0 / (2.0 * math.pi)
 
@@ -52,8 +52,9 @@ def _teeth_cell(wheel: Wheel) -> int | str:
     return f"Ø{wheel.diameter * 1e3:.0f} mm"
 
 
-def _checks(section: Section, a: DriveAnalysis, names: tuple[str, ...]) -> None:
-    section.checks.extend(c for c in a.checks if any(c.name.startswith(n) for n in names))
+def _checks(section: Section, a: DriveAnalysis, parts: tuple[str, ...]) -> None:
+    """The checks of the named analysis parts (each check knows its part)."""
+    section.checks.extend(a.checks_of(*parts))
 
 
 # --------------------------------------------------------------------------- inputs
@@ -154,12 +155,7 @@ def layout_section(a: DriveAnalysis, fig: _Figures) -> Section | None:
         sec.tables.append(Table(f"Take-up needed for wear elongation: {lay.take_up_kind}",
                                 ["elongation [%]", "take-up [mm]"],
                                 [[e * 100, t * 1e3] for e, t in zip(lay.elongations, lay.take_up, strict=True)]))
-    if a.slack_sag is not None:
-        j = lay.slack_span
-        sec.checks.append(Check("sag of the slack span", a.slack_sag, None, "m", None, "catenary, docs/drive.md",
-                                f"{a.slack_sag / w.span_length[j] * 100:.2f} % of the span at the slack tension",
-                                relation="info"))
-    _checks(sec, a, ("wrap on the driving wheel",))
+    _checks(sec, a, ("layout", "slack_sag"))
     from ..plotting.drive import layout_plot
 
     fig(sec, lambda: layout_plot(a), "Layout of the drive: pitch circles, spans (tight span marked), wheel names",
@@ -200,7 +196,7 @@ def loads_section(a: DriveAnalysis, fig: _Figures) -> Section | None:
          for name, share, pw, tq, t_in, t_out, f, ang in zip(
              t.wheel_names, shares, powers, torques, np.roll(t.span_tensions, 1), t.span_tensions,
              t.shaft_loads, t.shaft_load_angles, strict=True)]))
-    _checks(sec, a, ("static safety", "ANSI/ACA rated power", "speed below the galling"))
+    _checks(sec, a, ("loads", "rating"))
     rating = a.rating
     if rating is not None:
         r = rating.rating
@@ -245,7 +241,7 @@ def entry_section(a: DriveAnalysis, fig: _Figures) -> Section | None:
         "eqs (1)–(43) corrected; docs/kinematics.md)",
         ["wheel", "entry", "v mean [m/s]", "v min [m/s]", "v max [m/s]", "non-uniformity [%]", "a min [m/s²]",
          "a max [m/s²]", "sign change at period end"], rows))
-    _checks(sec, a, ("speed non-uniformity",))
+    _checks(sec, a, ("entry",))
     sec.paragraphs.append(
         "The chain entering a wheel follows the polygon of seated hinges. With a straight guide the chain in the "
         "guide is driven through the free span from the last seated hinge to the guide end. The peak acceleration "
@@ -322,7 +318,7 @@ def vibration_section(a: DriveAnalysis, fig: _Figures) -> Section | None:
                                 "(Wickert & Mote 1990; tensioner paper eq. (1))", ["quantity", "value", "unit"], rows))
         _check_table(sec, fs.check.rows(), fs.names)
         sec.results["free_spans"] = {"frequencies": fs.frequencies, "modes": list(fs.names), "check": fs.check.rows()}
-    _checks(sec, a, ("resonance margin", "free-span pairs"))
+    _checks(sec, a, ("vibration",))
     return sec
 
 
@@ -380,7 +376,7 @@ def strength_section(a: DriveAnalysis, fig: _Figures) -> Section | None:
              ["contact stress without skew", float(res.stress_unskewed) / 1e6, "MPa"],
              ["contact stress with skew", float(res.stress) / 1e6, "MPa"],
              ["relative life (wear law)", float(res.relative_life_wear), "-"]]))
-        _checks(sec, a, ("contact stress with skew", "life with skew"))
+        _checks(sec, a, ("contact",))
 
         def skew_figure() -> MatplotlibFigure:
             import numpy as np
@@ -399,7 +395,7 @@ def strength_section(a: DriveAnalysis, fig: _Figures) -> Section | None:
             [["design force P", rd["design_force"] / 1e3, "kN"],
              ["bending stress at the root (force at the tip)", rd["bending_stress"] / 1e6, "MPa"],
              ["pin–tooth contact stress", rd["contact_stress"] / 1e6, "MPa"]]))
-        _checks(sec, a, ("tooth bending", "pin–tooth contact", "surface hardness"))
+        _checks(sec, a, ("track_tooth",))
         sec.results["track_tooth"] = rd
     return sec
 
@@ -415,7 +411,7 @@ def wear_section(a: DriveAnalysis, fig: _Figures) -> Section | None:
     sec.tables.append(Table(f"Chain elongation (model: {res.model}; docs/drive.md)", ["quantity", "value", "unit"],
                             [["elongation limit", res.elongation_limit * 100, "%"],
                              ["hours to the limit", res.hours_to_limit, "h"]]))
-    _checks(sec, a, ("hours to the elongation limit",))
+    _checks(sec, a, ("wear",))
     from ..plotting.drive import wear_plot
 
     fig(sec, lambda: wear_plot(res), "Chain elongation over operating hours", "wear.png")
@@ -427,8 +423,6 @@ def wear_section(a: DriveAnalysis, fig: _Figures) -> Section | None:
 def self_regulating_section(a: DriveAnalysis, fig: _Figures) -> Section | None:
     if a.self_regulating is None:
         return None
-    from ..drive.self_regulating import self_regulating_checks
-
     sec = Section("Self-regulating drive: tension against load and wear")
     res = a.self_regulating
     sec.tables.append(Table(
@@ -439,7 +433,7 @@ def self_regulating_section(a: DriveAnalysis, fig: _Figures) -> Section | None:
          ["slack tension S2, range", f"{res.slack_tension.min() / 1e3:.4g} … {res.slack_tension.max() / 1e3:.4g}", "kN"],
          ["centre distance, range", f"{res.centre_distance.min() * 1e3:.5g} … {res.centre_distance.max() * 1e3:.5g}", "mm"],
          ["carrier travel over the wear range", res.carrier_travel, res.coordinate_unit]]))
-    sec.checks.extend(self_regulating_checks(res))
+    _checks(sec, a, ("self_regulating",))
     sec.results = {"self_regulating": res.to_dict()}
     try:
         from ..plotting.self_regulating import self_regulating_plot
@@ -451,18 +445,86 @@ def self_regulating_section(a: DriveAnalysis, fig: _Figures) -> Section | None:
     return sec
 
 
-#: The report's sections, in order: (key, title, function(analysis, figures) -> Section or None).
-SECTIONS: tuple[tuple[str, str, Callable[[DriveAnalysis, _Figures], Section | None]], ...] = (
-    ("inputs", "Input data", inputs_section),
-    ("layout", "Layout", layout_section),
-    ("loads", "Loads and safety", loads_section),
-    ("kinematics", "Entry kinematics", entry_section),
-    ("vibration", "Span vibration", vibration_section),
-    ("geometry", "Wheel geometry", geometry_section),
-    ("strength", "Strength", strength_section),
-    ("life", "Wear life", wear_section),
-    ("self_regulating", "Self-regulating drive", self_regulating_section),
-)
+# --------------------------------------------------------------------------- generic
+def _field_rows(result: Any, prefix: str = "") -> list[list[Any]]:
+    """Rows (quantity, value, unit) of a result's unit-declared scalar fields, in display units."""
+    import dataclasses
+
+    from .._results import Result
+    from .display import display
+
+    rows: list[list[Any]] = []
+    if not (isinstance(result, Result) and dataclasses.is_dataclass(result)):
+        return rows
+    units = type(result).field_units()
+    for f in dataclasses.fields(result):
+        value = getattr(result, f.name)
+        label = f"{prefix}{f.name.replace('_', ' ')}"
+        if isinstance(value, Result):
+            rows += _field_rows(value, prefix=f"{label}: ")
+        elif f.name in units and isinstance(value, (int, float)) and not isinstance(value, bool):
+            unit = type(result).display_unit_of(f.name)
+            shown, shown_unit = display(float(value), units[f.name])
+            if unit is not None and unit != shown_unit:
+                from ..units import convert_from_si
+
+                shown, shown_unit = convert_from_si(float(value), units[f.name], unit), unit
+            rows.append([label, shown if units[f.name] != "1" or not isinstance(value, int) else value,
+                         "" if shown_unit == "1" else shown_unit])
+    return rows
+
+
+def generic_section(part: Part) -> Callable[[DriveAnalysis, _Figures], Section | None]:
+    """The section of a part that declares none: its result's fields with their units, and its checks."""
+
+    def section(a: DriveAnalysis, fig: _Figures) -> Section | None:
+        res = a.results.get(part.name)
+        if res is None:
+            return None
+        sec = Section(part.title)
+        if isinstance(res, (int, float)) and part.unit is not None:
+            from .display import display
+
+            shown, unit = display(float(res), part.unit)
+            rows = [[part.title, shown, unit]]
+        else:
+            rows = _field_rows(res)
+        if rows:
+            sec.tables.append(Table(part.title, ["quantity", "value", "unit"], rows))
+        _checks(sec, a, (part.name,))
+        sec.results = {part.name: part.to_json(res)}
+        return sec
+
+    section.__name__ = f"{part.name}_section"
+    return section
+
+
+def _section_function(part: Part) -> Callable[[DriveAnalysis, _Figures], Section | None]:
+    if part.section is None:
+        return generic_section(part)
+    import importlib
+
+    module, _, name = part.section.partition(":")
+    return cast("Callable[[DriveAnalysis, _Figures], Section | None]", getattr(importlib.import_module(module), name))
+
+
+def report_sections() -> tuple[tuple[str, str, Callable[[DriveAnalysis, _Figures], Section | None]], ...]:
+    """The report's sections, in order: (key, title, function(analysis, figures) -> Section or None).
+
+    The input data first, then one section per declared analysis part in report order
+    (parts that share a section function appear once, under the first part's name).
+    """
+    out: list[tuple[str, str, Callable[[DriveAnalysis, _Figures], Section | None]]] = [
+        ("inputs", "Input data", inputs_section)]
+    seen: set[Any] = set()
+    for part in all_parts():
+        fn = _section_function(part)
+        key = part.section if part.section is not None else part.name
+        if key in seen:
+            continue
+        seen.add(key)
+        out.append((part.name, part.title, fn))
+    return tuple(out)
 
 
 def build_sections(analysis: DriveAnalysis, *, figures: bool = True,
@@ -472,9 +534,10 @@ def build_sections(analysis: DriveAnalysis, *, figures: bool = True,
 
     fig = _Figures(figures)
     out, timings = [], {}
-    for i, (key, title, fn) in enumerate(SECTIONS):
+    sections = report_sections()
+    for i, (key, title, fn) in enumerate(sections):
         if progress is not None:
-            progress(title, i, len(SECTIONS))
+            progress(title, i, len(sections))
         t0 = time.perf_counter()
         sec = fn(analysis, fig)
         timings[key] = time.perf_counter() - t0
