@@ -18,10 +18,30 @@ from .layout import DriveLayout, drive_layout, slack_span_sag, span_inclination
 from .parts import Part, PartContext, register_part
 
 __all__ = ["DriveLoads", "drive_loads", "span_tensions", "free_entry_acceleration", "static_safety_check", "wrap_check",
-           "MINIMUM_WRAP"]
+           "MINIMUM_WRAP", "REQUIRED_STATIC_SAFETY", "required_static_safety"]
 
 #: Smallest wrap on the driving wheel [rad] (ISO 10823:2004 guidance: 120°).
 MINIMUM_WRAP = math.radians(120.0)
+#: Required static safety ``F_B / F_max`` by chain kind, the one table of chaindrive: roller
+#: chains 7 (the project default of chaindrive since its first release; stricter than
+#: Diamond Chain's "load in service should never exceed 1/6 of the ultimate strength",
+#: because F_max here includes the slack, centrifugal and dynamic parts), round link chains
+#: 3.5 (mining scraper conveyors, the value of the Dolipiński et al. example drive). No
+#: standard table was found that prescribes either; a project sets its own with
+#: ``required_static_safety``.
+REQUIRED_STATIC_SAFETY = {"roller": 7.0, "link": 3.5}
+
+
+def required_static_safety(chain) -> float:
+    """The required static safety of :data:`REQUIRED_STATIC_SAFETY` for a chain (link or roller).
+
+    >>> from chaindrive.chains import get
+    >>> required_static_safety(get("18x64")), required_static_safety(get("16B-1"))
+    (3.5, 7.0)
+    """
+    return REQUIRED_STATIC_SAFETY["link" if chain.is_link_chain else "roller"]
+
+
 #: A slack span steeper than this hangs in its own weight (no sag to speak of) [rad].
 NEAR_VERTICAL = math.radians(80.0)
 

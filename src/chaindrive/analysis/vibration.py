@@ -27,7 +27,7 @@ from .layout import DriveLayout, span_inclination
 from .loads import DriveLoads
 from .parts import Part, PartContext, register_part
 
-__all__ = ["COUPLING_LIMIT_ANGLE", "FreeSpans", "DriveVibration", "tensioner_span", "drive_vibration"]
+__all__ = ["COUPLING_LIMIT_ANGLE", "CAMPBELL_RANGE", "PROPOSAL_RANGE", "excitation_kwargs", "FreeSpans", "DriveVibration", "tensioner_span", "drive_vibration"]
 
 #: Largest inclination of a span part to the normal of the tensioner's axis for which the
 #: tensioner paper's coupling is used [rad]. Beyond it the tensioner moves almost along the
@@ -126,9 +126,19 @@ class _Excitation(TypedDict):
     link_chain: bool
 
 
-def _excitation_kwargs(drive: Drive) -> _Excitation:
+def excitation_kwargs(drive: Drive) -> _Excitation:
+    """The excitation arguments of a drive: speed ratio, driving teeth, link chain or not.
+
+    >>> from chaindrive.drive.project import parse_project, template
+    >>> excitation_kwargs(parse_project(template("roller")))["teeth"]
+    19
+    """
     return _Excitation(ratio=drive.speed_ratio(), teeth=drive.driving_wheel.teeth,
                        link_chain=bool(drive.chain.is_link_chain))
+
+
+#: Old private name of :func:`excitation_kwargs`.
+_excitation_kwargs = excitation_kwargs
 
 
 def drive_vibration(drive: Drive, layout: DriveLayout, loads: DriveLoads) -> DriveVibration:
@@ -149,7 +159,7 @@ def drive_vibration(drive: Drive, layout: DriveLayout, loads: DriveLoads) -> Dri
     drive).
     """
     omega = float(drive.speed)
-    kw = _excitation_kwargs(drive)
+    kw = excitation_kwargs(drive)
     exc = excitation_frequencies(omega, **kw)
     notes: list[str] = []
     span = tensioner_span(drive, layout, loads)

@@ -38,7 +38,7 @@ from .ansi import (
 if TYPE_CHECKING:
     from ..chains import Chain
 
-__all__ = ["ChainRating", "chain_rating", "RATING_METHODS", "default_method", "HP"]
+__all__ = ["ChainRating", "chain_rating", "RATING_METHODS", "RATING_CURVES", "default_method", "rated_power_curve", "HP"]
 
 # --------------------------------------------------------------------------- one chain
 
@@ -293,3 +293,52 @@ def default_method(chain: Chain) -> str:
     if chain.family == "iso606" and "B" in chain.name and "iso10823" in RATING_METHODS:
         return "iso10823"
     return "ansi"
+
+
+def _ansi_curve(chain: Chain, teeth: int, angular_velocity: np.ndarray) -> np.ndarray:
+    from .ansi import ansi_rated_power
+
+    kp, kr = ansi_constants(chain.name)
+    return np.asarray(ansi_rated_power(chain.pitch, teeth, angular_velocity, strands=chain.strands,
+                                       plate_constant=kp, roller_constant=kr), dtype=float)
+
+
+#: Rated power against speed by method: ``f(chain, teeth, angular_velocities) -> ndarray`` [W].
+RATING_CURVES = Registry("rating curve")
+RATING_CURVES.add("ansi", _ansi_curve)
+
+
+def rated_power_curve(chain: Chain | str, teeth: int, angular_velocity: np.ndarray, *,
+                      method: str | None = None) -> np.ndarray:
+    r"""Rated power of a chain over small-sprocket speeds, by its family's method (a rating chart's line).
+
+    .. math:: P_r(\omega) = K_2 \min(H_1(\omega), H_2(\omega))\ \text{(ANSI/ACA)}
+
+    Parameters
+    ----------
+    chain : Chain or str
+    teeth : int
+        Small-sprocket teeth [-].
+    angular_velocity : array_like
+        Small-sprocket speeds [rad/s].
+    method : str, optional
+        Default :func:`default_method`.
+
+    Returns
+    -------
+    ndarray
+        [W], validity-range warnings silenced (the chart marks its own range).
+
+    Examples
+    --------
+    >>> w = np.array([100.0, 1000.0]) * np.pi / 30
+    >>> [round(float(x) / HP, 2) for x in rated_power_curve("ANSI 40", 17, w)]
+    [0.69, 5.48]
+    """
+    from ..chains import get
+
+    ch = get(chain)
+    name = default_method(ch) if method is None else method
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", ValidityRangeWarning)
+        return RATING_CURVES.get(name)(ch, int(teeth), np.asarray(angular_velocity, dtype=float))

@@ -16,7 +16,10 @@ from dataclasses import dataclass, field
 from functools import lru_cache
 from typing import Any
 
+from ..analysis.loads import REQUIRED_STATIC_SAFETY, required_static_safety
 from ..design.duty import service_factor_table
+from ..design.link import link_candidates
+from ..design.policy import BASE_TEETH
 from ..errors import ChainDriveError, InputError, ValidityRangeWarning
 from .fields import FieldError, FieldSpec, parse_field, parse_integer
 from .wheels import EXTRA_CHOICES, EXTRA_DEFAULTS, add_extra_wheels, extra_wheels
@@ -40,7 +43,7 @@ DEFAULTS: dict[str, str] = {
     "service_factor": "",
     "hours_per_day": "8",
     "chain": "",
-    "teeth_driving": "19",
+    "teeth_driving": "",
     "teeth_driven": "",
     "centre_distance": "500 mm",
     "tensioner": "",
@@ -66,7 +69,8 @@ MINING_EXAMPLE: dict[str, str] = {
     "chain": "18x64", "teeth_driving": "8", "teeth_driven": "8", "centre_distance": "4.05 m",
     "tensioner": "on", "idler_teeth": "6", "idler_position": "0.3", "idler_offset": "400 mm",
     "tensioner_mass": "60 kg", "tensioner_stiffness": "200 kN/m", "tensioner_force": "5 kN",
-    "guide": "tangential", "guide_end": "256 mm", "required_static_safety": "3.5",
+    "guide": "tangential", "guide_end": "256 mm",
+    "required_static_safety": f"{REQUIRED_STATIC_SAFETY['link']:g}",
     "wear_coefficient": "2e-16 m**2/N",
 }
 
@@ -196,6 +200,8 @@ def _teeth(state: dict[str, str], errors: dict[str, str], ratio: float | None,
            kind: str) -> tuple[int | None, int | None]:
     lo = 3 if kind == "link" else TEETH_RANGE[0]
     z1 = z2 = None
+    if kind == "roller" and not state["teeth_driving"].strip():
+        return None, None  # the tooth-count policy of the design procedure decides
     try:
         z1 = parse_integer("teeth_driving", state["teeth_driving"], lo, TEETH_RANGE[1])
     except FieldError as exc:
@@ -215,42 +221,24 @@ def _teeth(state: dict[str, str], errors: dict[str, str], ratio: float | None,
 
 
 @lru_cache(maxsize=128)
-def _roller_candidates(power: float, speed: float, ratio: float, ks: float, z1: int) -> tuple:
-    from ..selection import select
+def _roller_design(power: float, speed: float, ratio: float, service_factor: float | None, driver: str,
+                   driven: str, hours: float, centre: float, teeth: int | None) -> Any:
+    """The design procedure's answer for the form's duty (cached by the duty)."""
+    from ..design import Duty, design_drive
 
+    duty = Duty(power, speed, ratio=ratio, driver=driver, driven_machine=driven, service_factor=service_factor,
+                hours_per_day=hours, centre_distance=centre)
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", ValidityRangeWarning)
-        found = select(power, speed, max(ratio, 1.0), service_factor=ks, teeth_driving=z1)
-    out = []
-    for c in found[:8]:
-        out.append({"chain": c.chain, "strands": c.strands, "pitch": c.pitch,
-                    "rated_power": c.rated_power, "design_power": c.design_power,
-                    "margin": c.power_margin, "static_safety": c.static_safety,
-                    "lubrication": c.lubrication, "governing_limit": c.governing_limit,
-                    "notes": tuple(c.notes)})
-    return tuple(out)
+        return design_drive(duty, teeth_driving=teeth, limit=8)
 
 
-def _link_candidates(power: float, speed: float, ks: float, z1: int, required: float) -> list[dict]:
-    """DIN 22252 chains ranked by static safety F_B / (K_s P / v + q v²) >= required."""
-    from ..chains import catalogue
-
-    out = []
-    for ch in catalogue("din22252"):
-        if ch.breaking_force is None:
-            continue
-        v = 2 * z1 * ch.pitch * speed / (2 * math.pi)
-        q = ch.mass_per_length or 0.0
-        pull = ks * power / v + q * v * v
-        safety = ch.breaking_force / pull
-        if safety < required:
-            continue
-        out.append({"chain": ch.name, "strands": ch.strands, "pitch": ch.pitch,
-                    "rated_power": ch.breaking_force / required * v, "design_power": ks * power,
-                    "margin": safety / required, "static_safety": safety, "lubrication": None,
-                    "governing_limit": "static safety", "notes": []})
-    out.sort(key=lambda c: (c["pitch"], c["rated_power"]))
-    return out[:8]
+def _candidate_rows(result: Any) -> list[dict]:
+    return [{"chain": c.chain, "strands": c.strands, "pitch": c.pitch, "rated_power": c.rated_power,
+             "design_power": c.design_power, "margin": c.power_margin, "static_safety": c.static_safety,
+             "lubrication": c.lubrication, "governing_limit": c.limited_by, "notes": tuple(c.notes),
+             "teeth_driving": c.driving_teeth, "teeth_driven": c.driven_teeth, "links": c.links,
+             "centre_distance": c.centre_distance} for c in result.candidates]
 
 
 def _toml_string(text: str) -> str:
@@ -274,7 +262,7 @@ def _project_text(d: Design, state: dict[str, str], positions: list, idler: tupl
     if state["required_static_safety"].strip():
         lines.append(f"required_static_safety = {_toml_string(state['required_static_safety'].strip())}")
     elif d.chain.is_link_chain:
-        lines.append("required_static_safety = 3.5")
+        lines.append(f"required_static_safety = {required_static_safety(d.chain):g}")
     if state["wear_coefficient"].strip():
         lines.append(f"wear_coefficient = {_toml_string(state['wear_coefficient'].strip())}")
     if d.chain.is_link_chain:
@@ -333,23 +321,44 @@ def design_from_state(state: dict[str, str]) -> tuple[Design | None, dict[str, s
     required = None
     if state["required_static_safety"].strip():
         required = _number(state, "required_static_safety", errors)
-    if (power is None or speed is None or ratio is None or ks is None or hours is None or z1 is None
-            or z2 is None or errors):
+    centre = _number(state, "centre_distance", errors)
+    if (power is None or speed is None or ratio is None or ks is None or hours is None or centre is None
+            or (kind == "link" and (z1 is None or z2 is None)) or errors):
         return None, errors
-    candidates, note = [], ""
+    candidates: list[dict] = []
+    note = ""
     try:
         if kind == "roller":
-            candidates = [dict(c) for c in _roller_candidates(power, speed, ratio, ks, z1)]
+            if ratio < 1:
+                note = "the design procedure covers speed-reducing drives (ratio >= 1): give a chain"
+            else:
+                given_ks = ks if state["service_factor"].strip() else None
+                result = _roller_design(power, speed, ratio, given_ks, state["driver"], state["driven"], hours,
+                                        centre, z1)
+                candidates = _candidate_rows(result)
         else:
-            candidates = _link_candidates(power, speed, ks, z1, required or 3.5)
+            assert z1 is not None
+            candidates = link_candidates(power, speed, ks, z1, required)
     except ChainDriveError as exc:
         note = str(exc)
     chain_name = state["chain"].strip()
     if not chain_name:
         if not candidates:
-            errors["chain"] = note or "no catalogue chain carries this duty; give a chain name"
+            if "too large for the centre distance" in note:
+                errors["centre_distance"] = f"{centre * 1e3:.1f} mm is too short: {note}"
+            else:
+                errors["chain"] = note or "no catalogue chain carries this duty; give a chain name"
             return None, errors
         chain_name = candidates[0]["chain"]
+    chosen = next((c for c in candidates if c["chain"] == chain_name and "links" in c), None)
+    if z1 is None:
+        z1 = chosen["teeth_driving"] if chosen is not None else BASE_TEETH
+    if z2 is None:
+        z2 = chosen["teeth_driven"] if chosen is not None and chosen["teeth_driving"] == z1 else int(round(z1 * ratio))
+        if not TEETH_RANGE[0] <= z2 <= TEETH_RANGE[1]:
+            errors["teeth_driven"] = (f"ratio x teeth_driving gives {z2} teeth, outside "
+                                      f"{TEETH_RANGE[0]} <= teeth_driven <= {TEETH_RANGE[1]}")
+            return None, errors
     try:
         chain = get(chain_name)
     except ChainDriveError as exc:
@@ -361,7 +370,6 @@ def design_from_state(state: dict[str, str]) -> tuple[Design | None, dict[str, s
     if kind == "roller" and chain.is_link_chain:
         errors["chain"] = f"{chain.name} is a round link chain; switch the chain type to link"
         return None, errors
-    centre = _number(state, "centre_distance", errors)
     tensioner = state["tensioner"] == "on"
     idler = None
     if tensioner:
@@ -408,7 +416,11 @@ def design_from_state(state: dict[str, str]) -> tuple[Design | None, dict[str, s
 
         text = project(None)
         geometry = (chain.name, z1, z2, centre, idler, state["guide"], state["guide_end"], tuple(extras))
-        links, exact = _links_and_centre(geometry, text, idler is None and not extras)
+        if (chosen is not None and idler is None and not extras
+                and (chosen["teeth_driving"], chosen["teeth_driven"]) == (z1, z2)):
+            links, exact = chosen["links"], chosen["centre_distance"]  # the design procedure's layout
+        else:
+            links, exact = _links_and_centre(geometry, text, idler is None and not extras)
         if exact is not None:
             positions = [(0.0, 0.0), (exact, 0.0)]
         text = project(links)

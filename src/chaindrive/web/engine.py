@@ -183,14 +183,14 @@ def tensioner_span(drive: Drive) -> tuple[TensionerSpan, _Excitation] | None:
     if drive.tensioner is None:
         return None
     from ..analysis.loads import drive_loads
-    from ..analysis.vibration import _excitation_kwargs
+    from ..analysis.vibration import excitation_kwargs
     from ..analysis.vibration import tensioner_span as _span
 
     lay = _layout(drive)
     span = _span(drive, lay, drive_loads(drive, lay))
     if span is None:
         return None
-    return span, _excitation_kwargs(drive)
+    return span, excitation_kwargs(drive)
 
 
 def full_report(drive: Drive, output: str | Path, *, pdf: bool = False) -> dict[str, str]:

@@ -23,6 +23,7 @@ from fastapi.responses import HTMLResponse, JSONResponse, RedirectResponse, Resp
 from starlette.datastructures import UploadFile as StarletteUpload
 
 from .._results import jsonable
+from ..analysis.loads import REQUIRED_STATIC_SAFETY
 from ..errors import ChainDriveError, InputError
 from .design import (
     DEFAULTS,
@@ -257,7 +258,7 @@ def router(ctx: Any) -> APIRouter:
         table = service_factor_table()
         driven_options = [(k, v[0]) for k, v in table["driven_machines"].items()]
         return ctx.render(request, "studio.html", state=state, table=table, fields=FIELDS,
-                          driven_options=driven_options,
+                          driven_options=driven_options, required_safety=REQUIRED_STATIC_SAFETY,
                           downloads=DOWNLOADS, open_error=request.query_params.get("open_error", "")[:500],
                           mining_query=state_query(normalise_state(MINING_EXAMPLE)),
                           query=state_query(state), extra_rows=extra_rows(state), extra_max=MAX_EXTRA_WHEELS,
