@@ -50,6 +50,18 @@ def test_equal_wheels_in_equal_phase():
 # ---------------------------------------------------------------- independent computations
 
 
+@pytest.mark.parametrize("teeth", [9, 19, 30])
+def test_equal_wheels_in_equal_phase_at_the_corners_of_a_convex_polygon(teeth):
+    # exact closed form: the hull of translates of one convex polygon P to the corners of a
+    # convex polygon C is the Minkowski sum P ⊕ C, and perimeters add under Minkowski sums
+    # (Cauchy's formula: support functions add), so L = z p + perimeter(C)
+    centres = np.array([[0, 0], [1.2, -0.1], [1.6, 0.5], [0.9, 1.1], [-0.2, 0.7]])
+    perimeter = float(np.sum(np.hypot(*(np.roll(centres, -1, axis=0) - centres).T)))
+    length = loop_length_at_phases(P, centres, [teeth] * 5, [0.37] * 5)
+    assert length == pytest.approx(teeth * P + perimeter, abs=1e-12)
+
+
+
 def _qhull_length(centres, teeth, phases, pitch=P):
     vertices = np.vstack([L.pitch_polygon_vertices(pitch, z, f, centre=c) for z, f, c in zip(teeth, phases, centres, strict=True)])
     return L._hull_perimeter(vertices)
