@@ -54,7 +54,7 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import ArrayLike
 
-from .._results import Result
+from .._results import Result, quantity
 from .._validation import as_float_array, check_positive
 from ..errors import InfeasibleError, InputError, ValidityRangeWarning
 from .two_wheels import _check_phases
@@ -293,10 +293,10 @@ class LoopLength(Result):
         False when the pitch circles stood in (see the warning).
     """
 
-    links_min: float
-    links_max: float
-    links_mean: float
-    links_circles: float
+    links_min: float = quantity("1")
+    links_max: float = quantity("1")
+    links_mean: float = quantity("1")
+    links_circles: float = quantity("1")
     exact: bool
 
 
@@ -414,13 +414,13 @@ class LoopAdjustment(Result):
         False when the pitch circles stood in.
     """
 
-    links: int
-    wheel: int
-    direction: np.ndarray
-    taut: float
-    loose: float
-    circles: float
-    position: np.ndarray
+    links: int = quantity("1")
+    wheel: int = quantity("1")
+    direction: np.ndarray = quantity("1")
+    taut: float = quantity("m")
+    loose: float = quantity("m")
+    circles: float = quantity("m")
+    position: np.ndarray = quantity("m")
     exact: bool
 
 

@@ -10,7 +10,7 @@ import numpy as np
 from numpy.typing import ArrayLike
 
 from .._finite import finite_guard
-from .._results import Result
+from .._results import Result, quantity
 from .._typing import FloatOrArray
 from .._validation import as_float_array, check_positive, check_teeth
 from ..errors import ConvergenceError, InfeasibleError, InputError
@@ -266,7 +266,7 @@ def _hull_perimeters(vertices_1: np.ndarray, vertices_2: np.ndarray) -> np.ndarr
     return own[:, None] + np.sum(extra, axis=-1)
 
 
-@dataclass
+@dataclass(frozen=True)
 class PolygonLength(Result):
     """Chain length on the pitch polygons over the phases of the two wheels.
 
@@ -284,14 +284,14 @@ class PolygonLength(Result):
         Length for each phase pair [pitches].
     """
 
-    links_min: float
-    links_max: float
-    links_mean: float
-    links_circles: float
-    links_approx: float | None
-    phase_1: np.ndarray
-    phase_2: np.ndarray
-    links: np.ndarray
+    links_min: float = quantity("1")
+    links_max: float = quantity("1")
+    links_mean: float = quantity("1")
+    links_circles: float = quantity("1")
+    links_approx: float | None = quantity("1")
+    phase_1: np.ndarray = quantity("rad")
+    phase_2: np.ndarray = quantity("rad")
+    links: np.ndarray = quantity("1")
 
 
 def _polygon_links(p, z1, z2, a, d, n):
@@ -420,7 +420,7 @@ def chain_length_polygon(
     )
 
 
-@dataclass
+@dataclass(frozen=True)
 class PolygonCentreDistance(Result):
     """Centre distance for a whole number of links on the pitch polygons.
 
@@ -440,11 +440,11 @@ class PolygonCentreDistance(Result):
         From :func:`centre_distance_approx` (roller chains) [m].
     """
 
-    links: int
-    taut: float
-    loose: float
-    circles: float
-    approx: float | None
+    links: int = quantity("1")
+    taut: float = quantity("m")
+    loose: float = quantity("m")
+    circles: float = quantity("m")
+    approx: float | None = quantity("m")
 
 
 def _solve_increasing(fun, target, lo, hi, what):

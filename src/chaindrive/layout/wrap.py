@@ -8,12 +8,12 @@ import numpy as np
 from numpy.typing import ArrayLike
 
 from .._finite import finite_guard
-from .._results import Result
+from .._results import Result, quantity
 from .._validation import as_float_array, check_nonnegative, check_positive, check_teeth
 from ..errors import InfeasibleError, InputError
 
 
-@dataclass
+@dataclass(frozen=True)
 class WrapLayout(Result):
     """Chain path around two or more wheels (pitch circles, exact tangents).
 
@@ -40,16 +40,16 @@ class WrapLayout(Result):
         Total chain length on the pitch circles [m].
     """
 
-    centres: np.ndarray
-    radii: np.ndarray
-    sides: np.ndarray
-    span_start: np.ndarray
-    span_end: np.ndarray
-    span_length: np.ndarray
-    span_angle: np.ndarray
-    wrap_angle: np.ndarray
-    wrap_length: np.ndarray
-    length: float
+    centres: np.ndarray = quantity("m")
+    radii: np.ndarray = quantity("m")
+    sides: np.ndarray = quantity("1")
+    span_start: np.ndarray = quantity("m")
+    span_end: np.ndarray = quantity("m")
+    span_length: np.ndarray = quantity("m")
+    span_angle: np.ndarray = quantity("rad")
+    wrap_angle: np.ndarray = quantity("rad")
+    wrap_length: np.ndarray = quantity("m")
+    length: float = quantity("m")
 
 
 @finite_guard
