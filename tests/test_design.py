@@ -153,3 +153,19 @@ def test_presenters_hold_no_rating_formula():
                 assert not re.search(r"\bchain_rating\b|\bselect\(", text), f"{path} rates or selects chains"
             assert not re.search(r"math\.radians\(60|0\.2 \* omega|2\.0 \* omega|= 3\.5\b", text), path
             assert "_excitation_kwargs" not in text, path
+
+
+def test_advice_at_every_door(api, capsys):
+    from chaindrive.web.design import normalise_state
+    from chaindrive.web.studio import studio_payload
+
+    names = [a.name for a in api.advice]
+    assert "roller-bushing impact limit governs" in names and all(a.source for a in api.advice)
+    assert main([*SELECT]) == 0
+    assert "advice: roller-bushing impact limit governs" in capsys.readouterr().out
+    assert main([*SELECT, "--json"]) == 0
+    assert [a["name"] for a in json.loads(capsys.readouterr().out)["recommended"]["advice"]] == names
+    p = studio_payload(normalise_state({
+        "power": "11 kW", "speed": "1460 rpm", "driven_speed": "480 rpm", "driven": "varying_conveyor",
+        "centre_distance": "600 mm"}))
+    assert [a["name"] for a in p["advice"]] == names

@@ -342,10 +342,10 @@ def test_failing_variant_is_a_row_with_its_error():
 
 
 def test_column_statistics_against_numpy():
-    x = [3.0, 1.0, None, 4.0, 1.5, 9.0]
-    s = column_statistics("contact.stress", x)
-    ref = np.array([v for v in x if v is not None])
-    assert s["n"] == 5 and s["unit"] == "Pa"
+    x = [3e6, 1e6, None, 4e6, 1.5e6, 9e6]
+    s = column_statistics("contact.stress", x)   # Pa, shown in MPa (issue 19: display units)
+    ref = np.array([v for v in x if v is not None]) / 1e6
+    assert s["n"] == 5 and s["unit"] == "MPa"
     assert float(s["mean"]) == pytest.approx(ref.mean(), rel=1e-3)
     assert float(s["std"]) == pytest.approx(ref.std(ddof=1), rel=1e-3)
     assert float(s["p95"]) == pytest.approx(np.quantile(ref, 0.95), rel=1e-3)

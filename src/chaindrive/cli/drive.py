@@ -132,7 +132,7 @@ def select_command(
                                "ic_hydraulic or ic_mechanical (service-factor table)."),
     driven_machine: str | None = typer.Option(None, "--driven-machine", help="Driven machine of the "
                                               "service-factor table, e.g. varying_conveyor (moderate shock)."),
-    load: str | None = typer.Option(None, "--load", help="Load character instead of a driven machine: "
+    load_character: str | None = typer.Option(None, "--load", help="Load character instead of a driven machine: "
                                     "smooth, moderate or heavy."),
     service_factor: float | None = typer.Option(None, "--service-factor", "-K", help="Explicit service "
                                                 "factor K_s >= 1, a bare number (instead of the duty class)."),
@@ -182,7 +182,7 @@ def select_command(
         raise InputError(f"--limit must be a whole number >= 1, got {limit}", field="--limit")
     duty = Duty(power=quantity(power, "W", "power"), speed=quantity(speed, "rad/s", "speed"), ratio=ratio,
                 driven_speed=quantity(driven_speed, "rad/s", "driven_speed"), driver=driver,
-                driven_machine=driven_machine, load_character=load, service_factor=service_factor,
+                driven_machine=driven_machine, load_character=load_character, service_factor=service_factor,
                 hours_per_day=hours, centre_distance=quantity(centre_distance, "m", "centre_distance"),
                 environment=environment, lubrication=lubrication)
     result = design_drive(duty, teeth_driving=teeth, family=family, strands=_strand_counts(strands),

@@ -60,6 +60,8 @@ class DesignCandidate(Result):
     chain: str
     names: tuple[str, ...]
     family: str
+    method: str
+    limited_by: str
     pitch: float = quantity("m", display="mm")
     strands: int = quantity("1")
     driving_teeth: int = quantity("1")
@@ -72,8 +74,6 @@ class DesignCandidate(Result):
     design_power: float = quantity("W")
     rated_power: float = quantity("W")
     power_margin: float = quantity("1")
-    method: str
-    limited_by: str
     chain_speed: float = quantity("m/s")
     lubrication: str = ""
     lubrication_method: str = ""

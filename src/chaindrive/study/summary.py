@@ -32,7 +32,7 @@ _UNITS = {
     "stress": "Pa", "stress_unskewed": "Pa", "effective_modulus": "Pa", "hours_to_limit": "h",
     "maximum": "N", "tight": "N", "slack": "N", "effective_pull": "N", "dynamic": "N",
     "centrifugal": "N", "nominal_load": "N", "equivalent_load": "N", "load": "N",
-    "chain_speed": "m/s", "torque": "N·m", "frequencies_rad_s": "rad/s", "frequencies_hz": "Hz",
+    "chain_speed": "m/s", "torque": "N*m", "frequencies_rad_s": "rad/s", "frequencies_hz": "Hz",
     "static_rod_force": "N", "heavy_tensioner_frequency": "rad/s", "rated_power": "W",
     "design_power": "W", "acceleration_peak": "m/s²", "skew": "rad", "max_skew": "rad",
     "design_skew": "rad", "half_width": "m", "centre_distance": "m", "slack_sag": "m",
@@ -124,9 +124,9 @@ def column_statistics(name: str, values: list) -> dict[str, Any]:
 
     Examples
     --------
-    >>> s = column_statistics("loads.maximum", [1.0, 2.0, 3.0, None])
-    >>> s["n"], s["mean"], s["p50"]
-    (3, '2', '2')
+    >>> s = column_statistics("loads.maximum", [1000.0, 2000.0, 3000.0, None])   # N, shown in kN
+    >>> s["n"], s["mean"], s["p50"], s["unit"]
+    (3, '2', '2', 'kN')
     >>> column_statistics("passed", [True, False, True])["fraction"]
     '67 %'
     """
@@ -137,7 +137,12 @@ def column_statistics(name: str, values: list) -> dict[str, Any]:
         return {"name": name, "unit": "-", "kind": "yes/no", "n": len(present), "true": t,
                 "fraction": f"{t / len(present):.0%}".replace("%", " %")}
     if present and all(isinstance(v, (int, float)) and not isinstance(v, bool) for v in present):
+        from ..workflows.display import display
+
         x = np.asarray(present, dtype=float)
+        if unit:  # SI results shown in display units (kN, MPa, mm, rpm, ...)
+            factor = display(1.0, unit)[0] or 1.0
+            x, unit = x * factor, display(1.0, unit)[1]
         q = np.quantile(x, [0.05, 0.5, 0.95])
         return {"name": name, "unit": unit or "-", "kind": "number", "n": int(x.size),
                 "mean": _fmt(x.mean()), "std": _fmt(x.std(ddof=1)) if x.size > 1 else "-",

@@ -161,6 +161,7 @@ class Design:
     links: int | None = None
     centre_distance: float | None = None
     exact_centre_distance: float | None = None
+    advice: tuple = ()
 
 
 def _number(state: dict[str, str], name: str, errors: dict[str, str]) -> float | None:
@@ -238,7 +239,9 @@ def _candidate_rows(result: Any) -> list[dict]:
              "design_power": c.design_power, "margin": c.power_margin, "static_safety": c.static_safety,
              "lubrication": c.lubrication, "governing_limit": c.limited_by, "notes": tuple(c.notes),
              "teeth_driving": c.driving_teeth, "teeth_driven": c.driven_teeth, "links": c.links,
-             "centre_distance": c.centre_distance} for c in result.candidates]
+             "centre_distance": c.centre_distance,
+             "advice": tuple({"name": a.name, "note": a.note, "source": a.source} for a in c.advice)}
+            for c in result.candidates]
 
 
 def _toml_string(text: str) -> str:
@@ -429,6 +432,8 @@ def design_from_state(state: dict[str, str]) -> tuple[Design | None, dict[str, s
         errors[_field_of(str(exc))] = str(exc).removeprefix("studio.toml: ")
         return None, errors
     d.project_text, d.drive, d.links, d.exact_centre_distance = text, drive, links, exact
+    if chosen is not None:
+        d.advice = chosen["advice"]
     return d, errors
 
 

@@ -135,6 +135,7 @@ def studio_payload(state: dict[str, str]) -> dict[str, Any]:
          "safety_text": fmt(c["static_safety"], 3), "chosen": c["chain"] == design.chain.name}
         for c in design.candidates]
     out["candidate_note"] = design.candidate_note
+    out["advice"] = list(design.advice)  # the design procedure's advice, with sources
     out["chain"] = {"name": design.chain.name, "family": design.chain.family,
                     "pitch": " ".join(show(design.chain.pitch, "m", units)),
                     "breaking_force": " ".join(show(design.chain.breaking_force, "N", units)),
