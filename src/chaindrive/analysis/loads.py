@@ -9,7 +9,7 @@ import numpy as np
 
 from .. import layout as L
 from .. import loads as F
-from .._results import Result
+from .._results import Result, quantity
 from ..drive.model import Drive
 from ..errors import ChainDriveError, InputError
 from ._wheels import wheel_teeth
@@ -112,9 +112,9 @@ class DriveLoads(Result):
     shaft_loads: np.ndarray
     shaft_load_angles: np.ndarray
     wheel_names: tuple[str, ...]
-    power_shares: np.ndarray | None = None
-    wheel_powers: np.ndarray | None = None
-    wheel_torques: np.ndarray | None = None
+    power_shares: np.ndarray | None = quantity("1", default=None)
+    wheel_powers: np.ndarray | None = quantity("W", default=None)
+    wheel_torques: np.ndarray | None = quantity("N*m", default=None)
 
 
 def free_entry_acceleration(drive: Drive) -> float:

@@ -16,6 +16,7 @@ from ..analysis import DriveAnalysis
 from ..analysis.parts import Part, all_parts
 from ..drive.model import Wheel
 from ..errors import InputError
+from .display import convert
 from .report import Figure, Section, Table
 
 if TYPE_CHECKING:
@@ -28,6 +29,16 @@ RPM = 60.0 / (2.0 * math.pi)
 
 def _mm(x: float | None) -> float | None:
     return None if x is None else float(x) * 1e3
+
+
+def _val(value: Any, unit: str, shown: str | None = None) -> float | None:
+    """An SI ``value`` in its display unit (the unit in a column header: :func:`_unit`)."""
+    return convert(None if value is None else float(value), unit, shown)[0]
+
+
+def _unit(unit: str, shown: str | None = None) -> str:
+    """The display unit of an SI ``unit``."""
+    return convert(None, unit, shown)[1]
 
 
 class _Figures:
@@ -133,9 +144,10 @@ def layout_section(a: DriveAnalysis, fig: _Figures) -> Section | None:
     if lay.adjustment is not None:
         adj = lay.adjustment
         name = lay.wheel_names[adj.wheel]
-        rows.append([f"{name} moved for {lay.links} links (taut)", adj.taut * 1e3, "mm"])
-        rows.append([f"{name} moved for {lay.links} links (loosest fit)", adj.loose * 1e3, "mm"])
-        rows.append([f"{name} position x, y", f"{adj.position[0] * 1e3:.2f}, {adj.position[1] * 1e3:.2f}", "mm"])
+        rows.append([f"{name} moved for {lay.links} links (taut)", _val(adj.taut, "m"), _unit("m")])
+        rows.append([f"{name} moved for {lay.links} links (loosest fit)", _val(adj.loose, "m"), _unit("m")])
+        rows.append([f"{name} position x", _val(adj.position[0], "m"), _unit("m")])
+        rows.append([f"{name} position y", _val(adj.position[1], "m"), _unit("m")])
     if lay.chain_mass is not None:
         rows.append(["chain mass", lay.chain_mass, "kg"])
     sec.tables.append(Table("Chain length and centre distance (exact pitch-polygon model; docs/drive.md)",
@@ -190,9 +202,11 @@ def loads_section(a: DriveAnalysis, fig: _Figures) -> Section | None:
         "Per wheel: power taken off, span tensions (without centrifugal part) and shaft load "
         "(vector sum of the two span tensions); the tension rises across each driven wheel by its share "
         "of K_s T / R",
-        ["wheel", "power share", "power [kW]", "torque [N·m]", "tension in [kN]", "tension out [kN]",
-         "shaft load [kN]", "direction [°]"],
-        [[name, share, pw / 1e3, tq, t_in / 1e3, t_out / 1e3, f / 1e3, math.degrees(ang)]
+        ["wheel", "power share", f"power [{_unit('W')}]", f"torque [{_unit('N*m')}]",
+         f"tension in [{_unit('N')}]", f"tension out [{_unit('N')}]", f"shaft load [{_unit('N')}]",
+         f"direction [{_unit('rad')}]"],
+        [[name, share, _val(pw, "W"), _val(tq, "N*m"), _val(t_in, "N"), _val(t_out, "N"), _val(f, "N"),
+          _val(ang, "rad")]
          for name, share, pw, tq, t_in, t_out, f, ang in zip(
              t.wheel_names, shares, powers, torques, np.roll(t.span_tensions, 1), t.span_tensions,
              t.shaft_loads, t.shaft_load_angles, strict=True)]))
