@@ -46,6 +46,7 @@ in with a :class:`~chaindrive.errors.ValidityRangeWarning`.
 
 from __future__ import annotations
 
+import functools
 import math
 import warnings
 from collections.abc import Sequence
@@ -77,6 +78,19 @@ class _Wheel:
     period: float  # phase period [rad]
 
 
+@functools.lru_cache(maxsize=256)
+def _polygon(pitch: float, teeth: int, bar_diameter: float | None) -> tuple[float, np.ndarray, np.ndarray, float]:
+    """Pitch radius, vertex angles, arc position of each vertex and perimeter of a wheel's polygon (cached:
+    the adjustable wheel's search and the studies ask for the same wheels again and again)."""
+    R, off = _radius_and_offsets(pitch, teeth, bar_diameter)
+    v = np.column_stack([np.cos(off), np.sin(off)]) * R
+    edges = np.hypot(*(np.roll(v, -1, axis=0) - v).T)
+    cum = np.concatenate([[0.0], np.cumsum(edges)[:-1]])
+    off.flags.writeable = False
+    cum.flags.writeable = False
+    return float(R), off, cum, float(edges.sum())
+
+
 def _wheels(pitch: float, centres: np.ndarray, teeth: Sequence[int | None], sides: np.ndarray,
             diameters: Sequence[float | None] | None, bar_diameter: float | None) -> list[_Wheel]:
     out = []
@@ -89,12 +103,8 @@ def _wheels(pitch: float, centres: np.ndarray, teeth: Sequence[int | None], side
             r = 0.5 * float(d)
             out.append(_Wheel(centres[i], int(sides[i]), r, None, None, 2 * math.pi * r, 2 * math.pi))
             continue
-        R, off = _radius_and_offsets(pitch, int(z), bar_diameter)
-        v = np.column_stack([np.cos(off), np.sin(off)]) * R
-        edges = np.hypot(*(np.roll(v, -1, axis=0) - v).T)
-        cum = np.concatenate([[0.0], np.cumsum(edges)[:-1]])
-        out.append(_Wheel(centres[i], int(sides[i]), float(R), off, cum, float(edges.sum()),
-                          2 * math.pi / int(z)))
+        R, off, cum, perimeter = _polygon(float(pitch), int(z), None if not bar_diameter else float(bar_diameter))
+        out.append(_Wheel(centres[i], int(sides[i]), R, off, cum, perimeter, 2 * math.pi / int(z)))
     return out
 
 
@@ -176,9 +186,14 @@ def _arc_position(w: _Wheel, angle: np.ndarray, index: np.ndarray, phase: np.nda
 
 
 def _span_terms(wheels: list[_Wheel], grids: list[np.ndarray], circle) -> tuple[list[np.ndarray], bool]:
-    """Span matrices ``M_i[φ_i, φ_{i+1}]`` of the cyclic sum [m], and whether all are exact."""
+    """Span matrices ``M_i[φ_i, φ_{i+1}]`` of the cyclic sum [m], and whether the polygon path exists.
+
+    It does not where a span has no common supporting line (overlapping polygons) or where
+    a wrap ``s_i (A_i(out) - A_i(in))`` would be negative at some phases (a grazed wheel).
+    """
     n = len(wheels)
     terms, exact = [], True
+    outs, ins = [], []
     for i in range(n):
         j = (i + 1) % n
         wa, wb = wheels[i], wheels[j]
@@ -191,25 +206,14 @@ def _span_terms(wheels: list[_Wheel], grids: list[np.ndarray], circle) -> tuple[
         a_in = _arc_position(wb, ang_b, kb, np.broadcast_to(pb, ang_b.shape), in_ref)
         exact &= bool(np.all(ok))
         terms.append(length + wa.side * a_out - wb.side * a_in)
+        outs.append(wa.side * a_out)  # (φ_i, φ_{i+1}) on wheel i
+        ins.append(wb.side * a_in)  # (φ_i, φ_{i+1}) on wheel i+1
+    if exact and n > 2:
+        for i in range(n):
+            # the shortest wrap of wheel i over the phases of its neighbours, at each of its phases
+            shortest = outs[i].min(axis=1) - ins[(i - 1) % n].max(axis=0)
+            exact &= bool(np.min(shortest) >= -1e-9)
     return terms, exact
-
-
-def _wraps_nonnegative(wheels, grids, circle) -> bool:
-    # the wrap of wheel i from its entry (span i-1) to its exit (span i) at the grid's first phases
-    n = len(wheels)
-    for i in range(n):
-        h = (i - 1) % n
-        w = wheels[i]
-        ph = grids[i][:1]
-        _, _, _, _, ang_in, k_in, _ = _span(wheels[h], w, grids[h][:1], ph, float(circle.span_angle[h]))
-        _, _, ang_out, k_out, _, _, _ = _span(w, wheels[(i + 1) % n], ph, grids[(i + 1) % n][:1],
-                                             float(circle.span_angle[i]))
-        out_ref = float(circle.span_angle[i]) - w.side * math.pi / 2
-        in_ref = out_ref - w.side * float(circle.wrap_angle[i])
-        wrap = w.side * (_arc_position(w, ang_out, k_out, ph, out_ref) - _arc_position(w, ang_in, k_in, ph, in_ref))
-        if float(np.min(wrap)) < -1e-9:
-            return False
-    return True
 
 
 def _max_plus_cycle(terms: list[np.ndarray], pick) -> float:
@@ -306,8 +310,6 @@ def _loop(p, c, teeth, s, diameters, bar_diameter, n, warn=True) -> LoopLength:
     grids = [_phase_grid(w, n) for w in wheels]
     circles = circle.length / p
     terms, exact = _span_terms(wheels, grids, circle)
-    if exact and len(wheels) > 2:
-        exact = _wraps_nonnegative(wheels, grids, circle)
     if not exact:
         if warn:
             warnings.warn("no exact polygon path for this layout (the polygons of neighbouring wheels overlap, or "

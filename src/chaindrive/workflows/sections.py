@@ -94,9 +94,10 @@ def inputs_section(a: DriveAnalysis, fig: _Figures) -> Section | None:
     ]
     tables = [Table("Input data", ["quantity", "value", "unit"], [[n, "—" if v is None else v, u] for n, v, u in rows]),
               Table("Wheels (in the order the chain passes them)",
-                    ["name", "kind", "teeth", "x [mm]", "y [mm]", "driving", "side", "power share"],
-                    [[w.name, w.kind, _teeth_cell(w), w.position[0] * 1e3, w.position[1] * 1e3, w.driving, w.side,
-                      "—" if w.power_share is None else w.power_share] for w in d.wheels])]
+                    ["name", "kind", "teeth", f"x [{_unit('m')}]", f"y [{_unit('m')}]", "driving", "side",
+                     "power share"],
+                    [[w.name, w.kind, _teeth_cell(w), _val(w.position[0], "m"), _val(w.position[1], "m"), w.driving,
+                      w.side, "—" if w.power_share is None else w.power_share] for w in d.wheels])]
     if d.adjustable is not None:
         tables.append(Table("Adjustable wheel (moved to fit the link count)", ["wheel", "direction x", "direction y"],
                             [[d.adjustable.wheel, *d.adjustable.direction]]))
