@@ -68,12 +68,12 @@ def _qhull_length(centres, teeth, phases, pitch=P):
 
 
 @settings(max_examples=30, deadline=None)
-@given(st.lists(st.floats(0, 2 * math.pi), min_size=4, max_size=4), st.floats(-0.3, 0.3))
-def test_wheels_inside_the_loop_equal_the_convex_hull(phases, shift):
+@given(st.lists(st.floats(0, 2 * math.pi), min_size=4, max_size=4), st.floats(-0.3, 0.3),
+       st.lists(st.integers(6, 40), min_size=4, max_size=4))
+def test_wheels_inside_the_loop_equal_the_convex_hull(phases, shift, teeth):
     # independent: with every wheel inside the loop and on the hull, the taut chain is the
     # boundary of the convex hull of all seated hinges; its perimeter by Qhull
     centres = np.array([[0, 0], [1.0, 0.1 + shift], [0.6, 0.7], [-0.2, 0.5]])
-    teeth = [17, 25, 13, 21]
     assert loop_length_at_phases(P, centres, teeth, phases) == pytest.approx(
         _qhull_length(centres, teeth, phases), abs=1e-12)
 
@@ -206,6 +206,8 @@ def test_grazed_idler_falls_back_to_circles_with_a_warning():
         r = chain_length_loop(P, centres, [19, None, 19], [1, -1, 1], diameters=[None, 0.05, None], phases=4)
     assert not r.exact
     assert r.links_max == r.links_circles
+    with pytest.raises(InfeasibleError, match="no polygon path at these phases"):
+        loop_length_at_phases(P, centres, [19, None, 19], [0.0, 0.0, 0.0], [1, -1, 1], diameters=[None, 0.05, None])
 
 
 # ---------------------------------------------------------------- the multi-wheel example

@@ -279,7 +279,9 @@ def loop_length_at_phases(
     circle = wrap_layout(c, [w.radius for w in wheels], s)
     terms, exact = _span_terms(wheels, [np.array([x]) for x in ph], circle)
     if not exact:
-        raise InfeasibleError("the pitch polygons of two neighbouring wheels overlap: no common supporting line")
+        raise InfeasibleError("no polygon path at these phases: the pitch polygons of two neighbouring wheels "
+                              "overlap, or the chain only grazes a wheel (use chain_length_loop, which falls back "
+                              "to the pitch circles)")
     return float(sum(float(t[0, 0]) for t in terms))
 
 
