@@ -157,7 +157,7 @@ def test_properties_of_the_analysis(power, factor, teeth):
     # the static safety check is F_B / F_max and its verdict follows from its value
     s = a.checks_of("loads")[0]
     assert s.value == pytest.approx(d.chain.breaking_force / a.loads.maximum)
-    assert s.passed == (s.value >= d.required_static_safety)
+    assert s.passed == (s.value >= d.static_safety_required)
     # effective pull scales with the service factor, F_max = tight + dynamic
     assert a.loads.effective_pull == pytest.approx(factor * d.torque() / a.layout.pitch_radii[0])
     assert a.loads.maximum == pytest.approx(a.loads.tight + a.loads.dynamic)

@@ -10,6 +10,7 @@ import numpy as np
 from .. import layout as L
 from .. import loads as F
 from .._results import Result, quantity
+from ..chains import Chain
 from ..drive.model import Drive
 from ..errors import ChainDriveError, InputError
 from ._wheels import wheel_teeth
@@ -22,17 +23,11 @@ __all__ = ["DriveLoads", "drive_loads", "span_tensions", "free_entry_acceleratio
 
 #: Smallest wrap on the driving wheel [rad] (ISO 10823:2004 guidance: 120°).
 MINIMUM_WRAP = math.radians(120.0)
-#: Required static safety ``F_B / F_max`` by chain kind, the one table of chaindrive: roller
-#: chains 7 (the project default of chaindrive since its first release; stricter than
-#: Diamond Chain's "load in service should never exceed 1/6 of the ultimate strength",
-#: because F_max here includes the slack, centrifugal and dynamic parts), round link chains
-#: 3.5 (mining scraper conveyors, the value of the Dolipiński et al. example drive). No
-#: standard table was found that prescribes either; a project sets its own with
-#: ``required_static_safety``.
-REQUIRED_STATIC_SAFETY = {"roller": 7.0, "link": 3.5}
+#: The one table of required static safeties (:data:`chaindrive.loads.REQUIRED_STATIC_SAFETY`).
+REQUIRED_STATIC_SAFETY = F.REQUIRED_STATIC_SAFETY
 
 
-def required_static_safety(chain) -> float:
+def required_static_safety(chain: Chain) -> float:
     """The required static safety of :data:`REQUIRED_STATIC_SAFETY` for a chain (link or roller).
 
     >>> from chaindrive.chains import get
@@ -305,8 +300,8 @@ def static_safety_check(drive: Drive, loads: DriveLoads) -> Check:
     fb = drive.chain.breaking_force
     sf = None if fb is None else float(fb) / loads.maximum
     return Check(
-        name="static safety F_B / F_max", value=sf, limit=float(drive.required_static_safety), unit="-",
-        passed=None if sf is None else bool(sf >= drive.required_static_safety),
+        name="static safety F_B / F_max", value=sf, limit=drive.static_safety_required, unit="-",
+        passed=None if sf is None else bool(sf >= drive.static_safety_required),
         source="catalogue breaking force (ISO 606:2015 table 1 / ASME B29.1 / DIN 22252); "
                "F_max = K_s T/R + S_slack + q v² + m a_max",
         note="" if fb is not None else "breaking force unknown")

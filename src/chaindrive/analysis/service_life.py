@@ -11,7 +11,8 @@ none (Garshniev & Maksymovych, wear law). Their product is the life of the skewe
 
 For a roller chain rated by the ANSI/ACA method this is a verdict: a drive whose skew
 eats more life than its power margin gives fails (a study's ``passed`` then counts it).
-For other chains (the Archard wear model) the life is reported for information.
+For other chains (the Archard wear model) the life is reported for information. Without a
+skew (no contact part) the part does not apply: the rating check covers the life.
 """
 
 from __future__ import annotations
@@ -39,10 +40,10 @@ class ServiceLife(Result):
 
 def _part(ctx: PartContext) -> ServiceLife | None:
     life = ctx["wear"]
-    if life is None:
-        return None
     contact = ctx["contact"]
-    rel = 1.0 if contact is None else float(contact.result.relative_life_wear)
+    if life is None or contact is None:  # no skew given: the rating check covers the life
+        return None
+    rel = float(contact.result.relative_life_wear)
     hours = float(life.hours_to_limit)
     required = None
     rating = ctx["rating"]

@@ -15,6 +15,15 @@ static safety of the drive.
 from __future__ import annotations
 
 import math
+from typing import TYPE_CHECKING
+
+import numpy as np
+from numpy.typing import ArrayLike
+
+from ..errors import InputError
+
+if TYPE_CHECKING:
+    from ..chains import Chain
 
 __all__ = ["link_candidates", "power_at_safety"]
 
@@ -72,7 +81,8 @@ def link_candidates(power: float, speed: float, service_factor: float, teeth: in
     return out[:limit]
 
 
-def power_at_safety(chain, teeth: int, angular_velocity, required: float | None = None):
+def power_at_safety(chain: Chain, teeth: int, angular_velocity: ArrayLike,
+                    required: float | None = None) -> np.ndarray:
     r"""Power a round link chain carries at the required static safety over speeds, ``F_B v / S``.
 
     .. math:: P = \frac{F_B}{S_{req}}\,v,\qquad v = \frac{2 z p \omega}{2\pi}
@@ -99,10 +109,10 @@ def power_at_safety(chain, teeth: int, angular_velocity, required: float | None 
     >>> round(float(power_at_safety(get("18x64"), 8, 5.0)) / 1e3)
     95
     """
-    import numpy as np
-
     from ..analysis.loads import required_static_safety
 
     need = required_static_safety(chain) if required is None else required
+    if chain.breaking_force is None:
+        raise InputError(f"chain {chain.name} has no breaking force", field="chain")
     v = 2 * teeth * chain.pitch * np.asarray(angular_velocity, dtype=float) / (2 * math.pi)
     return chain.breaking_force / need * v

@@ -281,7 +281,7 @@ def _candidate(chain: Chain, twins: tuple[str, ...], duty: Duty, factors: tuple[
         speed=duty.speed, power=duty.power, service_factor=ks, design_power=design, rated_power=r.rated_power,
         power_margin=r.rated_power / design, method=r.method, limited_by=r.limited_by,
         chain_speed=r.chain_speed, lubrication=r.lubrication, lubrication_method=r.lubrication_method,
-        static_safety=static_value, required_static_safety=float(drive.required_static_safety),
+        static_safety=static_value, required_static_safety=drive.static_safety_required,
         maximum_tension=maximum, teeth_rule=why, factors=cand_factors,
         checks=checks, advice=drive_advice(duty, r), notes=tuple(notes), project_text=text)
 

@@ -164,7 +164,7 @@ class DriveSpec(_Model):
     links: int | None = Field(default=None, gt=0, le=MAX_LINKS)
     slack_tension: Force | None = None
     slack_sag_ratio: Ratio = 0.02
-    required_static_safety: Ratio = 7.0
+    required_static_safety: Ratio | None = None
     elongation_limit: Ratio = 0.03
     wear_coefficient: WearCoefficient | None = None
     travel: Literal["ccw", "cw"] = "ccw"

@@ -63,7 +63,7 @@ def rating_chart(design: Design, *, units: str = "metric") -> dict[str, Any]:
         if ch.is_link_chain:
             if ch.breaking_force is None:
                 continue
-            required = design.drive.required_static_safety if design.drive is not None else None
+            required = design.drive.static_safety_required if design.drive is not None else None
             power = power_at_safety(ch, design.teeth_driving, speeds, required)
         else:
             power = rated_power_curve(ch, design.teeth_driving, speeds)

@@ -528,7 +528,7 @@ def state_from_project(text: str, filename: str = "project.toml") -> dict[str, s
         "teeth_driven": str(other.teeth),
         "centre_distance": f"{centre * 1e3:.6g} mm",
         "service_factor": f"{load.service_factor:g}",
-        "required_static_safety": f"{drive.required_static_safety:g}",
+        "required_static_safety": "" if drive.required_static_safety is None else f"{drive.required_static_safety:g}",
         "wear_coefficient": "" if drive.wear_coefficient is None else f"{drive.wear_coefficient:g} m**2/N",
         "tensioner": "", "guide": "", "skew": "",
     })

@@ -89,7 +89,7 @@ def inputs_section(a: DriveAnalysis, fig: _Figures) -> Section | None:
         ["power (without service factor)", d.power() / 1e3, "kW"],
         ["torque on the driving wheel", d.torque(), "N·m"],
         ["service factor", d.load.service_factor, "-"],
-        ["required static safety", d.required_static_safety, "-"],
+        ["required static safety", d.static_safety_required, "-"],
         ["wear elongation limit", d.elongation_limit * 100, "%"],
     ]
     tables = [Table("Input data", ["quantity", "value", "unit"], [[n, "—" if v is None else v, u] for n, v, u in rows]),
