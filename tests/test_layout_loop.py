@@ -249,3 +249,15 @@ def test_multi_wheel_example_length_matches_brute_force():
     assert t.span_tensions[2] - t.span_tensions[1] == pytest.approx(0.6 * t.effective_pull)
     assert t.span_tensions[3] - t.span_tensions[2] == pytest.approx(0.4 * t.effective_pull)
     assert t.tight == pytest.approx(max(t.span_tensions) + t.centrifugal)
+
+
+def test_toothless_wheels_only_give_the_pitch_circle_length():
+    # independent: with no toothed wheel the path is the belt on the circles (wrap_layout,
+    # closed-form tangents), whatever the sides
+    centres = [[0, 0], [0.45, 0.03], [0.9, 0], [0.5, 0.6]]
+    diameters = [0.2, 0.08, 0.3, 0.15]
+    sides = [1, -1, 1, 1]
+    r = chain_length_loop(P, centres, [None] * 4, sides, diameters=diameters)
+    circles = L.wrap_layout(centres, [d / 2 for d in diameters], sides).length / P
+    assert r.exact
+    assert (r.links_min, r.links_max, r.links_mean) == pytest.approx((circles,) * 3, abs=1e-12)

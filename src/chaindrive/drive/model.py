@@ -614,7 +614,8 @@ class Drive:
         return out
 
     def is_two_wheel(self) -> bool:
-        """Two toothed wheels and nothing else (the exact polygon length applies)."""
+        """Two toothed wheels and nothing else (the two-wheel hull model and its centre distance for the
+        links apply; more wheels: :func:`chaindrive.layout.chain_length_loop`)."""
         return len(self.wheels) == 2 and all(w.teeth is not None for w in self.wheels)
 
     def inputs(self) -> dict[str, Any]:
