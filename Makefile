@@ -35,8 +35,9 @@ test: $(VENV)/.installed-test
 bench: $(VENV)/.installed-bench
 	MPLBACKEND=Agg $(PY) benchmarks/run_all.py
 
-# >= 10,000 generated inputs per surface (CLI, project files, API, web); one summary line
-# each: tracebacks, exit codes outside 0/1/2/3, NaN/inf in outputs, calls over 30 s.
+# >= 10,000 generated inputs per surface (CLI, project files, API, web, and schemathesis
+# over the web's OpenAPI schema); one summary line each: tracebacks, exit codes outside
+# 0/1/2/3, NaN/inf in outputs, calls over 30 s. FUZZ_N=2000 make fuzz for a shorter run.
 fuzz: $(VENV)/.installed-test
 	MPLBACKEND=Agg $(PY) scripts/fuzz.py --n $${FUZZ_N:-10000}
 

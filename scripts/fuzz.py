@@ -12,6 +12,10 @@ not a chaindrive error, or the command's "internal error", exit code 3), exit co
 outside 0/1/2/3 (HTTP 5xx on the web), NaN/inf in an output, calls over 30 s; then up to
 ``--show`` reproducers of each kind. Exit status 0 when every count is zero.
 
+The ``openapi`` surface is schemathesis (property-based requests generated from the web
+app's OpenAPI schema, in-process) with the same judges; the ``web`` surface is this
+script's own generator, which also fills the pages' forms.
+
 The generators are also used by the bounded hypothesis tests ``tests/test_fuzz_*.py``
 (a seed drawn by hypothesis drives :class:`random.Random`).
 """
@@ -45,7 +49,7 @@ import numpy as np
 ROOT = Path(__file__).resolve().parents[1]
 SLOW_S = 30.0  # a call longer than this is reported
 HARD_S = 45.0  # a call is interrupted after this (reported as slow)
-SURFACES = ("cli", "project", "api", "web")
+SURFACES = ("cli", "project", "api", "web", "openapi")
 
 # --------------------------------------------------------------------------- judging
 
@@ -1105,6 +1109,101 @@ def fuzz_web(n: int, rnd: random.Random, progress: bool = True) -> Tally:
     return tally
 
 
+# --------------------------------------------------------------------------- web API by schemathesis
+
+#: Share of the OpenAPI inputs per operation: routes that start long jobs (worker
+#: processes) get few.
+OPENAPI_WEIGHTS = {"/api/jobs/simulate": 0.05}
+
+
+def openapi_operations(app, include_jobs: bool = True) -> list:
+    """The operations of the app's OpenAPI schema, as schemathesis sees them."""
+    import schemathesis
+
+    schema = schemathesis.openapi.from_asgi("/openapi.json", app)
+    ops = []
+    for result in schema.get_all_operations():
+        with contextlib.suppress(Exception):  # an operation schemathesis cannot read is skipped
+            op = result.ok()
+            if include_jobs or "jobs" not in op.path:
+                ops.append(op)
+    return ops
+
+
+def run_openapi_case(case, tally: Tally) -> None:
+    """Send one schemathesis case to the app in-process and judge the answer."""
+    tally.inputs += 1
+    what = (f"{case.method} {case.formatted_path} query={_trim(case.query)} "
+            f"body={_trim(case.body) if not _is_unset(case.body) else '-'}")
+    with timed(tally, what), warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        try:
+            resp = case.call()
+        except Exception as exc:  # noqa: BLE001
+            tally.add("tracebacks", what, _short_tb(exc))
+            tally.outcomes["raised"] = tally.outcomes.get("raised", 0) + 1
+            return
+    code = resp.status_code
+    tally.outcomes[f"HTTP {code}"] = tally.outcomes.get(f"HTTP {code}", 0) + 1
+    text = resp.text if isinstance(resp.text, str) else ""
+    if code >= 500 and code != 503:
+        tally.add("tracebacks", what, f"HTTP {code}: {text[:300]!r}")
+    if "Traceback (most recent call last)" in text:
+        tally.add("tracebacks", what, "traceback in the response body")
+    ctype = resp.headers.get("content-type") or ""
+    ctype = " ".join(ctype) if isinstance(ctype, (list, tuple)) else str(ctype)
+    if code < 400 and "json" in ctype:
+        try:
+            data = json.loads(text, parse_constant=lambda c: float(c))
+        except ValueError:
+            data = None
+        bad = nonfinite_in(data)
+        if bad:
+            tally.add("nonfinite", what, bad)
+
+
+def _is_unset(value) -> bool:
+    return type(value).__name__ == "NotSet"
+
+
+def fuzz_openapi(n: int, rnd: random.Random, progress: bool = True, include_jobs: bool = True) -> Tally:
+    """Property-based requests from the OpenAPI schema (schemathesis + hypothesis)."""
+    from hypothesis import HealthCheck, Phase, given, settings
+    from hypothesis import seed as hypothesis_seed
+
+    tally = Tally("openapi")
+    client = web_client()
+    ops = openapi_operations(client.app, include_jobs=include_jobs)
+    if not ops:
+        return tally
+    weights = [OPENAPI_WEIGHTS.get(op.path, 1.0) for op in ops]
+    total = sum(weights)
+    done = 0
+    for k, (op, w) in enumerate(zip(ops, weights, strict=True)):
+        share = max(1, round(n * w / total)) if k < len(ops) - 1 else max(1, n - done)
+        before = tally.inputs
+
+        @hypothesis_seed(rnd.randrange(2**32))
+        @settings(max_examples=share, deadline=None, database=None, phases=[Phase.generate],
+                  suppress_health_check=list(HealthCheck))
+        @given(case=op.as_strategy())
+        def one(case):
+            run_openapi_case(case, tally)
+            if tally.inputs % 50 == 0:
+                import matplotlib.pyplot as plt
+
+                plt.close("all")
+            _progress(progress, tally, tally.inputs - 1, n)
+
+        try:
+            one()
+        except Exception as exc:  # noqa: BLE001 - a strategy hypothesis cannot satisfy is not the app's fault
+            name = type(exc).__name__
+            tally.outcomes[f"generation {name}"] = tally.outcomes.get(f"generation {name}", 0) + 1
+        done += tally.inputs - before
+    return tally
+
+
 # --------------------------------------------------------------------------- driver
 
 
@@ -1114,7 +1213,7 @@ def _progress(on: bool, tally: Tally, i: int, n: int) -> None:
               f"NaN/inf {tally.nonfinite} slow {tally.slow}", file=sys.stderr, flush=True)
 
 
-FUZZERS = {"cli": fuzz_cli, "project": fuzz_project, "api": fuzz_api, "web": fuzz_web}
+FUZZERS = {"cli": fuzz_cli, "project": fuzz_project, "api": fuzz_api, "web": fuzz_web, "openapi": fuzz_openapi}
 
 
 def main(argv: list[str] | None = None) -> int:

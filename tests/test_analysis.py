@@ -35,8 +35,15 @@ def _leaves(x, path=""):
 
 
 #: Numbers of the earlier results.json that moved on purpose (closing note of the
-#: analysis-layer issue): the wrap check is now in SI (rad, not degrees).
-MOVED = ("safety.checks",)
+#: analysis-layer issue): the wrap check is now in SI (rad, not degrees). The resonance
+#: check's pairs (issue 20): the band is applied to the tensioner paper's three excitations
+#: only, so a round link chain's "link passing" 2 z1 ω1 pairs left the band table (it is
+#: judged by its forced response, docs/vibration.md §6); the Campbell lines and the free
+#: spans' information pairs follow the same excitations (a roller chain's meshing left them,
+#: its unequal links z1 ω1/2 came in).
+MOVED = ("safety.checks", "Span vibration and resonance check.tensioner.check",
+         "Span vibration and resonance check.check", "Span vibration and resonance check.tensioner.campbell",
+         "Span vibration and resonance check.free_spans.check")
 
 
 @pytest.mark.parametrize("name", NAMES)
@@ -136,7 +143,7 @@ def test_mining_conveyor_fails_the_resonance_check_only():
     a = analyze_drive(load_project(EXAMPLES / "mining_conveyor.toml"))
     assert [c.name for c in a.failed] == ["resonance margin of the slack span with tensioner, worst pair"]
     assert a.vibration.tensioner is not None and a.vibration.passed is False
-    assert any("no resonance-free tensioner" in w for w in a.warnings)
+    assert a.vibration.remedy is not None and a.vibration.remedy.found  # a way out (issue 20)
 
 
 def test_check_margin_and_verdict():

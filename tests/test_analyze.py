@@ -106,12 +106,15 @@ def test_vibration_section(outcomes):
     sec = data["sections"]["Span vibration and resonance check"]
     assert sec["checks"][0]["name"].startswith("resonance margin of the slack span with tensioner")
     rows = sec["results"]["check"]
-    # excitations of a round link chain on an 8-pocket wheel at 5 rad/s: ω1, ω2, 2zω1, zω1
-    assert sorted({round(r["exciting_frequency"], 9) for r in rows}) == [5.0, 40.0, 80.0]
+    # the paper's excitations of a round link chain on an 8-pocket wheel at 5 rad/s: ω1, ω2, zω1
+    # (t ± d); the link passing 2zω1 is judged by its forced response (severity table)
+    assert sorted({round(r["exciting_frequency"], 9) for r in rows}) == [5.0, 40.0]
+    assert any(c["name"].startswith("amplification of the slack span's response to the link passing")
+               for c in sec["checks"])
     for r in rows:
         assert r["ok"] == (not 0.7 <= r["ratio"] <= 1.4)
     # the verdict is the check's, and the drive's overall verdict follows it
-    assert sec["passed"] == all(r["ok"] for r in rows)
+    assert sec["passed"] == (all(r["ok"] for r in rows) and all(c["passed"] is not False for c in sec["checks"]))
     assert (folder / "campbell.png").exists()
     # roller drive without tensioner: free spans for information only
     outcome, folder = outcomes["roller_industrial"]

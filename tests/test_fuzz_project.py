@@ -55,7 +55,7 @@ def test_self_regulating_table_reproducers():
     # bool where a pair belongs, raised TypeError instead of a one-line InputError
     import pytest
 
-    from chaindrive.drive.self_regulating import SelfRegulatingSpec
+    from chaindrive.drive.carrier import SelfRegulatingSpec
     from chaindrive.errors import InputError
 
     with pytest.raises(InputError, match="required key.* missing: wheel"):

@@ -46,8 +46,8 @@ def test_contact_from_measurement_and_text(capsys):
     [
         (["contact", "--chain", "16B", "--load", "-5 kN"], "load must be positive"),
         (["contact", "--chain", "16B", "--load", "5 kN", "--skew", "10 arcmin", "--skew-dh", "1 mm"], "either --skew"),
-        (["contact", "--chain", "16B", "--load", "5 kN", "--skew-dh", "1 mm"], "skew_base"),
-        (["contact", "--load", "5 kN", "--length", "1 mm"], "roller_diameter is needed"),
+        (["contact", "--chain", "16B", "--load", "5 kN", "--skew-dh", "1 mm"], "--skew-base"),
+        (["contact", "--load", "5 kN", "--length", "1 mm"], "--roller-diameter is needed"),
         (["contact", "--pitch", "38.1 mm", "--roller-diameter", "25.4 mm", "--seat-radius", "80 mm", "--contact",
           "convex", "--length", "25 mm", "--load", "5 kN", "--skew", "20 arcmin", "--gamma-outside", "raise"],
          r"outside the gamma table of Garshniev & Maksymovych \(12.7 ... 25.4 mm\)"),

@@ -2,7 +2,19 @@
 with :class:`FutureWarning` for one release, and CHANGELOG.md lists it.
 
 :func:`moved_module` makes a module forward every attribute to its new home;
-:func:`alias` makes a renamed function that warns and calls the new one.
+:func:`alias` makes a renamed function that warns and calls the new one;
+:func:`renamed_attributes` gives a module the former names of its renamed functions.
+
+Renamed in this release (removed in the next):
+
+==============================================  ==================================================
+former name                                     new name
+==============================================  ==================================================
+``chaindrive.drive.layout/loads/selection/wear``  ``chaindrive.layout/loads/selection/wear``
+``chaindrive.strength.seed_contact_stress``     ``chaindrive.strength.skew_paper_contact_stress``
+``chaindrive.strength.seed_contact_coefficient``  ``chaindrive.strength.skew_paper_contact_coefficient``
+``chaindrive.kinematics.seed002_case``          ``chaindrive.kinematics.dolipinski_worked_case``
+==============================================  ==================================================
 """
 
 from __future__ import annotations
@@ -13,7 +25,7 @@ import warnings
 from collections.abc import Callable
 from typing import Any, TypeVar
 
-__all__ = ["alias", "moved_module", "warn_renamed"]
+__all__ = ["alias", "moved_module", "renamed_attributes", "warn_renamed"]
 
 F = TypeVar("F", bound=Callable[..., Any])
 
@@ -37,14 +49,41 @@ def alias(function: F, old: str) -> F:
     return wrapper  # type: ignore[return-value]
 
 
-def moved_module(old: str, new: str) -> Callable[[str], Any]:
-    """A module ``__getattr__`` forwarding every attribute of the moved module ``old`` to ``new``."""
+def moved_module(old: str, new: str, *more: str) -> Callable[[str], Any]:
+    """A module ``__getattr__`` forwarding every attribute of the moved module ``old`` to ``new``
+    (or, for a module split in parts, to the first of ``new, *more`` that has it)."""
 
     def __getattr__(name: str) -> Any:
-        module = importlib.import_module(new)
-        if name.startswith("__") or not hasattr(module, name):
-            raise AttributeError(f"module {old!r} has no attribute {name!r}")
-        warn_renamed(f"{old}.{name}", f"{new}.{name}")
-        return getattr(module, name)
+        if not name.startswith("__"):
+            for home in (new, *more):
+                module = importlib.import_module(home)
+                if hasattr(module, name):
+                    warn_renamed(f"{old}.{name}", f"{home}.{name}")
+                    return getattr(module, name)
+        raise AttributeError(f"module {old!r} has no attribute {name!r}")
+
+    return __getattr__
+
+
+def renamed_attributes(module: str, renamed: dict[str, str]) -> Callable[[str], Any]:
+    """A module ``__getattr__`` giving each former name in ``renamed`` (old -> new name in
+    the same module) as a warning :func:`alias` of the new function.
+
+    Examples
+    --------
+    >>> import warnings
+    >>> getter = renamed_attributes("chaindrive.strength", {"old_stress": "skew_paper_contact_stress"})
+    >>> with warnings.catch_warnings(record=True) as caught:
+    ...     warnings.simplefilter("always")
+    ...     value = round(getter("old_stress")(10e3, 0.02, 0.005) / 1e6, 1)
+    >>> value, caught[0].category.__name__
+    (1915.5, 'FutureWarning')
+    """
+
+    def __getattr__(name: str) -> Any:
+        if name not in renamed:
+            raise AttributeError(f"module {module!r} has no attribute {name!r}")
+        function = getattr(importlib.import_module(module), renamed[name])
+        return alias(function, f"{module}.{name}")
 
     return __getattr__

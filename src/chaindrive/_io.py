@@ -5,18 +5,8 @@ flushed to disk (``fsync``) and then renamed over its final name (``os.replace``
 on POSIX and Windows). A reader therefore sees either the earlier file or the complete
 new one, never a half-written file.
 
-Output folders (``chaindrive analyze -o DIR``, ``chaindrive simulate -o DIR``,
-``chaindrive demo -o DIR``) are built in a hidden sibling folder and moved into place
-when complete. The policy, also described in README "Using it" and in the commands'
-help:
-
-* a new or empty ``DIR`` is simply filled;
-* a ``DIR`` that holds an earlier run (it has the marker file ``.chaindrive-run``) is
-  replaced only with ``--force``; without it the command stops before any work;
-* a ``DIR`` that holds other files (no marker) is never replaced, not even with
-  ``--force``: chaindrive does not delete files it did not write;
-* when a run fails, the earlier results are left untouched and the error message says
-  that the files in ``DIR`` are from the earlier run; the half-built folder is removed.
+Output folders (run folders) are built aside and moved into place under a lock: see
+:mod:`chaindrive._folders` (re-exported here).
 
 Problems with a path (missing folder, a directory where a file is expected, no write
 permission, an unsupported file extension, an existing file) raise
@@ -26,15 +16,21 @@ permission, an unsupported file extension, an existing file) raise
 from __future__ import annotations
 
 import contextlib
-import errno
-import json
 import os
-import shutil
 import tempfile
-from collections.abc import Callable, Iterable, Iterator
+from collections.abc import Callable, Iterable
 from pathlib import Path
 from typing import TYPE_CHECKING, Any, TypeVar
 
+from ._folders import (
+    RUN_MARKER,
+    atomic_output_dir,
+    check_output_dir,
+    claim_output_dir,
+    earlier_run_note,
+    folder_lock,
+    show_path,
+)
 from .errors import ChainDriveError, InputError
 
 if TYPE_CHECKING:
@@ -51,16 +47,15 @@ __all__ = [
     "check_output_path",
     "check_output_dir",
     "atomic_output_dir",
+    "claim_output_dir",
+    "folder_lock",
+    "show_path",
     "earlier_run_note",
     "FIGURE_SUFFIXES",
     "save_figure",
     "save_dxf",
     "note_earlier_run",
 ]
-
-#: Marker file that identifies a folder written by chaindrive (a "run folder").
-RUN_MARKER = ".chaindrive-run"
-
 
 def _reason(exc: OSError) -> str:
     return exc.strerror or type(exc).__name__
@@ -133,9 +128,19 @@ def check_output_path(
     text = os.fspath(path)
     if not str(text).strip():
         raise InputError(f"{option}: empty file name; give a file path")
+    try:
+        return _check_output_path(text, allowed_suffixes, option, force)
+    except OSError as exc:  # a name too long, a loop of links, ...
+        raise InputError(f"{option}: cannot write {show_path(text)}: {_reason(exc)}") from None
+
+
+def _check_output_path(text: str, allowed_suffixes: Iterable[str] | None, option: str, force: bool) -> Path:
     p = Path(text)
+    if len(os.fsencode(p.name)) > 250:
+        raise InputError(f"{option}: the file name {show_path(p.name)} is {len(os.fsencode(p.name))} "
+                         "bytes long; file names have at most 250 bytes")
     if p.is_dir() or str(text).endswith(("/", os.sep)):
-        raise InputError(f"{option}: {text!r} is a folder; give a file name"
+        raise InputError(f"{option}: {show_path(text)} is a folder; give a file name"
                          + (f" ending in {', '.join(allowed_suffixes)}" if allowed_suffixes else ""))
     if allowed_suffixes is not None:
         allowed = tuple(s.lower() for s in allowed_suffixes)
@@ -145,11 +150,11 @@ def check_output_path(
     _check_parent(p, option)
     if p.exists() or p.is_symlink():
         if not p.is_file():
-            raise InputError(f"{option}: {text!r} exists and is not a regular file")
+            raise InputError(f"{option}: {show_path(text)} exists and is not a regular file")
         if not force:
-            raise InputError(f"{option}: {text!r} exists; use --force to overwrite it")
+            raise InputError(f"{option}: {show_path(text)} exists; use --force to overwrite it")
         if not os.access(p, os.W_OK):
-            raise InputError(f"{option}: {text!r} exists and is read-only")
+            raise InputError(f"{option}: {show_path(text)} exists and is read-only")
     return p
 
 
@@ -197,7 +202,7 @@ def atomic_write_bytes(path: str | os.PathLike, data: bytes, *, force: bool = Fa
     fd = None
     tmp = None
     try:
-        fd, tmp = tempfile.mkstemp(prefix=f".{p.name}.", suffix=".tmp", dir=folder)
+        fd, tmp = tempfile.mkstemp(prefix=f".{p.name[:200]}.", suffix=".tmp", dir=folder)
         with os.fdopen(fd, "wb") as fh:
             fd = None
             fh.write(data)
@@ -208,8 +213,9 @@ def atomic_write_bytes(path: str | os.PathLike, data: bytes, *, force: bool = Fa
             raise InputError(f"{option}: {str(p)!r} exists; use --force to overwrite it")
         os.replace(tmp, p)
         tmp = None
-    except OSError as exc:
-        raise InputError(f"{option}: cannot write {str(p)!r}: {_reason(exc)}") from None
+    except OSError as exc:  # disk full, quota, read-only: say what is kept
+        kept = (f"{show_path(p)} was left unchanged" if p.exists() else "nothing was written")
+        raise InputError(f"{option}: cannot write {show_path(p)}: {_reason(exc)}; {kept}") from None
     finally:
         if fd is not None:
             os.close(fd)
@@ -231,174 +237,6 @@ def atomic_write_text(path: str | os.PathLike, text: str, *, force: bool = False
     'x = 1\\n'
     """
     return atomic_write_bytes(path, text.encode(encoding), force=force, option=option)
-
-
-def _entries(folder: Path) -> list[str]:
-    try:
-        return sorted(os.listdir(folder))
-    except OSError as exc:
-        raise InputError(f"cannot read the folder {str(folder)!r}: {_reason(exc)}") from None
-
-
-def check_output_dir(path: str | os.PathLike, *, force: bool, option: str = "--output") -> Path:
-    """Check, before any work, that a run folder may be (re)written; see the module policy.
-
-    Parameters
-    ----------
-    path : str or os.PathLike
-        The folder.
-    force : bool
-        Replace an earlier run found there.
-    option : str
-        Option named in messages.
-
-    Returns
-    -------
-    pathlib.Path
-        The folder.
-
-    Raises
-    ------
-    InputError
-        The path is a file; it holds an earlier run and ``force`` is false; it holds
-        files chaindrive did not write; the parent cannot be created or written.
-
-    Examples
-    --------
-    >>> import tempfile, pathlib
-    >>> d = pathlib.Path(tempfile.mkdtemp())
-    >>> check_output_dir(d / "new", force=False).name
-    'new'
-    """
-    text = os.fspath(path)
-    if not str(text).strip():
-        raise InputError(f"{option}: empty folder name; give a folder path")
-    p = Path(text)
-    if p.exists() or p.is_symlink():
-        if not p.is_dir():
-            raise InputError(f"{option}: {text!r} is a file; give a folder (new, empty, or an earlier "
-                             "chaindrive run with --force)")
-        entries = _entries(p)
-        if entries:
-            if RUN_MARKER not in entries:
-                raise InputError(
-                    f"{option}: the folder {text!r} is not empty and was not written by chaindrive "
-                    f"(no {RUN_MARKER} file); chaindrive does not replace other files: give a new "
-                    "or empty folder")
-            if not force:
-                raise InputError(f"{option}: the folder {text!r} holds an earlier run; use --force to "
-                                 "replace it, or give another folder")
-        if not os.access(p, os.W_OK | os.X_OK):
-            raise InputError(f"{option}: no permission to write in the folder {text!r}")
-    parent = p.resolve().parent
-    probe = parent
-    while not probe.exists():
-        probe = probe.parent
-    if not probe.is_dir():
-        raise InputError(f"{option}: {str(probe)!r} is a file, so the folder {text!r} cannot be created")
-    if not os.access(probe, os.W_OK | os.X_OK):
-        raise InputError(f"{option}: no permission to create the folder {text!r} in {str(probe)!r}")
-    return p
-
-
-def earlier_run_note(path: str | os.PathLike) -> str:
-    """The sentence added to an error when a run fails in front of an earlier run."""
-    return (f"nothing was written; the files in {os.fspath(path)!r} are from an earlier run "
-            "and were left unchanged")
-
-
-@contextlib.contextmanager
-def atomic_output_dir(path: str | os.PathLike, *, force: bool = False,
-                      option: str = "--output") -> Iterator[Path]:
-    """Build a run folder in a hidden sibling folder and move it into place when complete.
-
-    Parameters
-    ----------
-    path : str or os.PathLike
-        The final folder (created with its parents when missing).
-    force : bool
-        Replace an earlier chaindrive run in ``path``.
-    option : str
-        Option named in messages.
-
-    Yields
-    ------
-    pathlib.Path
-        The temporary folder to write into.
-
-    Raises
-    ------
-    InputError
-        See :func:`check_output_dir`; raised before the body runs. An error inside
-        the body propagates unchanged in type; when an earlier run is present its
-        message says that those files are from the earlier run.
-
-    Examples
-    --------
-    >>> import tempfile, pathlib
-    >>> d = pathlib.Path(tempfile.mkdtemp()) / "run"
-    >>> with atomic_output_dir(d) as tmp:
-    ...     _ = (tmp / "a.json").write_text("{}")
-    >>> sorted(p.name for p in d.iterdir())
-    ['.chaindrive-run', 'a.json']
-    """
-    final = check_output_dir(path, force=force, option=option)
-    had_run = final.is_dir() and bool(_entries(final))
-    parent = final.resolve().parent
-    try:
-        parent.mkdir(parents=True, exist_ok=True)
-        tmp = Path(tempfile.mkdtemp(prefix=f".{final.name}.", suffix=".partial", dir=parent))
-        mask = os.umask(0)
-        os.umask(mask)
-        os.chmod(tmp, 0o777 & ~mask)  # mkdtemp makes 0o700; a run folder is an ordinary folder
-    except OSError as exc:
-        raise InputError(f"{option}: cannot create the folder {os.fspath(path)!r}: {_reason(exc)}") from None
-    moved = False
-    try:
-        try:
-            yield tmp
-        except ChainDriveError as exc:
-            if had_run:
-                raise type(exc)(f"{exc}; {earlier_run_note(path)}") from None
-            raise
-        except BaseException as exc:
-            if had_run and hasattr(exc, "add_note"):
-                exc.add_note(earlier_run_note(path))
-            raise
-        files = sorted(str(q.relative_to(tmp)) for q in tmp.rglob("*") if q.is_file())
-        (tmp / RUN_MARKER).write_text(json.dumps({"files": files}, indent=1) + "\n", encoding="utf-8")
-        _replace_dir(tmp, final, option)
-        moved = True
-    finally:
-        if not moved:
-            shutil.rmtree(tmp, ignore_errors=True)
-
-
-def _replace_dir(tmp: Path, final: Path, option: str) -> None:
-    old = None
-    try:
-        if final.exists():
-            if _entries(final):
-                old = Path(tempfile.mkdtemp(prefix=f".{final.name}.", suffix=".old", dir=tmp.parent))
-                os.rmdir(old)
-                os.replace(final, old)
-            else:
-                os.rmdir(final)
-        try:
-            os.replace(tmp, final)
-        except OSError:
-            if old is not None:  # put the earlier run back
-                os.replace(old, final)
-                old = None
-            raise
-    except OSError as exc:
-        if exc.errno in (errno.ENOTEMPTY, errno.EEXIST):
-            raise InputError(f"{option}: the folder {str(final)!r} changed during the run; "
-                             "nothing was replaced") from None
-        raise InputError(f"{option}: cannot move the results into {str(final)!r}: {_reason(exc)}") from None
-    finally:
-        if old is not None:
-            shutil.rmtree(old, ignore_errors=True)
 
 
 #: File types a figure can be saved as (matplotlib back ends always present).

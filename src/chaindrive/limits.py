@@ -17,6 +17,10 @@ MAX_MODES           100          natural frequencies asked for
 MAX_GRID            1 000        points per axis of a speed sweep or resonance map
 MAX_FRAMES          1 000        frames of an animation
 MAX_STRANDS         100          rows of a multi-row chain (ISO 606: up to 3)
+MAX_SOLID_TEETH     150          teeth of a 3-D solid (STEP); ISO 606 Annex A ends at
+                                 150, and OpenCascade takes minutes beyond
+MAX_PRIMITIVES      200 000      lines and arcs of one outline (20 per tooth)
+MAX_ARC_POINTS      10 000       points per arc when an outline is sampled
 ==================  ===========  ===================================================
 
 :func:`warn_implausible` warns (:class:`~chaindrive.errors.ValidityRangeWarning`, never
@@ -33,6 +37,7 @@ import numbers
 import warnings
 
 from .errors import InputError, ValidityRangeWarning
+from .units import RAD_S_PER_RPM, rpm_to_angular_velocity
 
 __all__ = [
     "MAX_POINTS",
@@ -43,6 +48,9 @@ __all__ = [
     "MAX_GRID",
     "MAX_FRAMES",
     "MAX_STRANDS",
+    "MAX_SOLID_TEETH",
+    "MAX_PRIMITIVES",
+    "MAX_ARC_POINTS",
     "PLAUSIBLE",
     "check_size",
     "check_duration",
@@ -65,11 +73,18 @@ MAX_GRID = 1_000
 MAX_FRAMES = 1_000
 #: Rows of a multi-row chain (a pin model with one beam element per row and plate).
 MAX_STRANDS = 100
+#: Teeth or pockets of a wheel built as a 3-D solid (STEP): ISO 606 Annex A ends at 150,
+#: and an OpenCascade solid of 150 teeth already takes minutes.
+MAX_SOLID_TEETH = 150
+#: Lines and arcs of one outline (drawings, DXF, SVG): 20 per tooth at MAX_TEETH.
+MAX_PRIMITIVES = 20 * MAX_TEETH
+#: Points per arc when an outline is sampled into a polyline.
+MAX_ARC_POINTS = 10_000
 
 #: Plausible range of a value typed at the boundary, by kind:
 #: (low, high, SI unit, display factor, display unit, why). Outside: a warning.
 PLAUSIBLE: dict[str, tuple[float, float, str, float, str, str]] = {
-    "angular_velocity": (1e-3, 10_000 * math.pi / 30, "rad/s", 30 / math.pi, "rpm",
+    "angular_velocity": (1e-3, rpm_to_angular_velocity(10_000), "rad/s", 1 / RAD_S_PER_RPM, "rpm",
                          "chain drives run between about 0.01 rpm and 10 000 rpm"),
     "chain_speed": (1e-4, 40.0, "m/s", 1.0, "m/s",
                     "no chain runs faster than about 40 m/s; scraper conveyors run at 0.5-2 m/s"),

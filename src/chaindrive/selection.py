@@ -14,15 +14,12 @@ import warnings
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
-import numpy as np
-
 from ._finite import finite_guard
-from ._results import Result
+from ._results import Result, quantity
 from ._validation import check_positive, check_teeth
 from .errors import InfeasibleError, InputError, UnknownNameError, ValidityRangeWarning
 from .rating import ChainRating, _scalar, chain_rating
 from .rating.ansi import (
-    _RPM,
     HP,
     LUBRICATION_REGIONS,
     LUBRICATION_TYPES,
@@ -39,6 +36,7 @@ from .rating.ansi import (
     multi_strand_factor,
     tooth_correction_factor,
 )
+from .units import angular_velocity_to_rpm
 
 if TYPE_CHECKING:
     from .chains import Chain
@@ -129,25 +127,25 @@ class Candidate(Result):
     chain: str
     names: tuple[str, ...]
     family: str
-    pitch: float
-    strands: int
-    teeth_driving: int
-    teeth_driven: int
-    speed: float
-    power: float
-    service_factor: float
-    chain_speed: float
-    rated_power: float
-    design_power: float
-    power_margin: float
+    pitch: float = quantity("m")
+    strands: int = quantity("1")
+    teeth_driving: int = quantity("1")
+    teeth_driven: int = quantity("1")
+    speed: float = quantity("rad/s")
+    power: float = quantity("W")
+    service_factor: float = quantity("1")
+    chain_speed: float = quantity("m/s")
+    rated_power: float = quantity("W")
+    design_power: float = quantity("W")
+    power_margin: float = quantity("1")
     governing_limit: str
-    working_tension: float
-    static_safety: float | None
-    galling_speed: float
+    working_tension: float = quantity("N")
+    static_safety: float | None = quantity("1")
+    galling_speed: float = quantity("rad/s")
     lubrication: str
     lubrication_method: str
-    centre_distance: float
-    links: int
+    centre_distance: float = quantity("m")
+    links: int = quantity("1")
     notes: tuple[str, ...]
 
 
@@ -232,7 +230,7 @@ def select(power: float, speed: float, ratio: float, *, service_factor: float = 
 
     Examples
     --------
-    >>> rows = select(7.5e3, 1450 * np.pi / 30, 3.0)
+    >>> rows = select(7.5e3, 1450 * math.pi / 30, 3.0)
     >>> [(c.chain, c.strands, round(c.power_margin, 2)) for c in rows][:3]
     [('10B-1', 1, 1.47), ('10A-1', 1, 1.47), ('08B-2', 2, 1.29)]
     >>> rows[1].names, rows[1].links, rows[1].lubrication
@@ -280,7 +278,7 @@ def select(power: float, speed: float, ratio: float, *, service_factor: float = 
             if not 9 <= z1 <= 45:
                 notes.append(f"{z1} teeth: outside the 9-45 teeth of the ANSI/ACA tables")
             if r.galling_exceeded:
-                notes.append(f"galling region above {r.galling_speed * 30 / np.pi:.4g} rpm: submit to the "
+                notes.append(f"galling region above {angular_velocity_to_rpm(r.galling_speed):.4g} rpm: submit to the "
                              "chain manufacturer")
             fc = 0.0
             if ch.mass_per_length is None:
@@ -319,7 +317,7 @@ def select(power: float, speed: float, ratio: float, *, service_factor: float = 
         extra = f"; sprockets too large for the centre distance: {', '.join(too_close[:4])}" if too_close else ""
         raise InfeasibleError(
             f"no catalogue roller chain carries {design / 1e3:g} kW (design power) at "
-            f"{w / _RPM:g} rpm with {z1} teeth{extra}; try more teeth, more strands, a lower "
+            f"{angular_velocity_to_rpm(w):g} rpm with {z1} teeth{extra}; try more teeth, more strands, a lower "
             "speed or a longer centre distance"
         )
     rows = sorted(found.values(), key=lambda c: (c.lubrication == "C'", c.strands, c.pitch,
@@ -364,7 +362,7 @@ def candidate_project(candidate: Candidate, *, name: str | None = None) -> str:
 
     Examples
     --------
-    >>> row = select(7.5e3, 1450 * np.pi / 30, 3.0)[0]
+    >>> row = select(7.5e3, 1450 * math.pi / 30, 3.0)[0]
     >>> text = candidate_project(row)
     >>> 'name = "10B-1"' in text and "links = 116" in text
     True

@@ -35,6 +35,28 @@ from typing import Any
 
 from .errors import InputError
 
+#: One revolution per minute in rad/s: the one rpm <-> rad/s conversion of the package
+#: (everything else calls :func:`rpm_to_angular_velocity` / :func:`angular_velocity_to_rpm`).
+RAD_S_PER_RPM = math.pi / 30.0
+
+
+def rpm_to_angular_velocity(rpm: Any) -> Any:
+    """Revolutions per minute to rad/s (scalars or arrays).
+
+    >>> round(rpm_to_angular_velocity(960.0), 4)
+    100.531
+    """
+    return rpm * RAD_S_PER_RPM
+
+
+def angular_velocity_to_rpm(angular_velocity: Any) -> Any:
+    """rad/s to revolutions per minute (scalars or arrays).
+
+    >>> round(angular_velocity_to_rpm(100.0), 3)
+    954.93
+    """
+    return angular_velocity / RAD_S_PER_RPM
+
 __all__ = [
     "parse_quantity",
     "SI_UNITS",
@@ -404,8 +426,9 @@ def chain_speed_to_angular_velocity(chain_speed: float, pitch: float, teeth: int
         raise InputError(f"pitch must be positive and finite (0 < pitch < inf m), got {pitch!r}")
     if isinstance(teeth, bool) or not isinstance(teeth, (int,)) and not float(teeth).is_integer() or teeth < 2:
         raise InputError(f"teeth must be a whole number >= 2, got {teeth!r}")
-    sides = (2 if link_chain else 1) * int(teeth)
-    return 2 * math.pi * float(chain_speed) / (sides * float(pitch))
+    from .loads import sides_per_turn
+
+    return 2 * math.pi * float(chain_speed) / (sides_per_turn(int(teeth), link_chain) * float(pitch))
 
 
 def parse_wheel_speed(text: Any, *, pitch: float, teeth: int, link_chain: bool = False,
@@ -472,7 +495,9 @@ def parse_wheel_speed(text: Any, *, pitch: float, teeth: int, link_chain: bool =
     valid = isinstance(teeth, int) and 2 <= teeth <= MAX_TEETH and math.isfinite(pitch) and pitch > 0
     if not warn_implausible(field, w, "angular_velocity", stacklevel=3) and w > 0 and valid:
         # a plausible wheel speed may still drive the chain faster than any chain runs
-        sides = (2 if link_chain else 1) * int(teeth)
-        warn_implausible(f"{field} (chain speed n p omega / 2 pi)", sides * float(pitch) * w / (2 * math.pi),
+        from .loads import mean_chain_speed, sides_per_turn
+
+        warn_implausible(f"{field} (chain speed n p omega / 2 pi)",
+                         mean_chain_speed(sides_per_turn(int(teeth), link_chain), float(pitch), w),
                          "chain_speed", stacklevel=3)
     return w

@@ -34,7 +34,7 @@ import numpy as np
 from numpy.typing import ArrayLike
 
 from ._registry import Registry
-from ._results import Result
+from ._results import Result, quantity
 from ._typing import FloatOrArray
 from ._validation import check_nonnegative, check_positive, check_range
 from .errors import InputError
@@ -198,7 +198,7 @@ def elongation_rate_archard(tension: ArrayLike, bearing_area: ArrayLike, joint_r
     return 2.0 / p * k * F / A * r * (2 * np.pi / z) * f
 
 
-@dataclass
+@dataclass(frozen=True)
 class WearLife(Result):
     """Elongation over time and the hours to the limit.
 
@@ -216,10 +216,10 @@ class WearLife(Result):
     """
 
     model: str
-    hours: np.ndarray
-    elongation: np.ndarray
-    elongation_limit: float
-    hours_to_limit: float
+    hours: np.ndarray = quantity("h")
+    elongation: np.ndarray = quantity("1")
+    elongation_limit: float = quantity("1")
+    hours_to_limit: float = quantity("h")
 
 
 WEAR_MODELS = Registry("wear model")

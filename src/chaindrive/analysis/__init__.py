@@ -29,7 +29,6 @@ True
 
 from __future__ import annotations
 
-import warnings
 from collections.abc import Iterable, Mapping
 from dataclasses import dataclass, field
 from types import MappingProxyType
@@ -196,10 +195,6 @@ def analyze_drive(drive: Drive, *, include: Iterable[str] | None = None,
     if not isinstance(drive, Drive):
         raise InputError(f"drive must be a chaindrive.drive.Drive, got {type(drive).__name__}", field="drive")
     parts = _parts(include, exclude)
-    with warnings.catch_warnings(record=True) as caught:
-        warnings.simplefilter("always")
-        results, checks, notes = compute_parts(drive, parts, {"entry_points": entry_points})
-    seen = dict.fromkeys(notes)
-    for w in caught:
-        seen.setdefault(str(w.message))
-    return DriveAnalysis(drive=drive, results=results, checks=tuple(checks), warnings=tuple(seen), parts=parts)
+    results, checks, notes = compute_parts(drive, parts, {"entry_points": entry_points})
+    return DriveAnalysis(drive=drive, results=results, checks=tuple(checks), warnings=tuple(dict.fromkeys(notes)),
+                         parts=parts)

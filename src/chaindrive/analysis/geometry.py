@@ -5,7 +5,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
-from .._results import Result
+from .._results import Result, quantity
 from ..drive.model import Drive, Wheel
 from .parts import Part, register_part
 
@@ -26,7 +26,7 @@ class WheelGeometry(Result):
 
     wheel: str
     kind: str
-    teeth: int
+    teeth: int = quantity("1")
     basis: str
     object: Sprocket | PocketWheel | TrackDriveWheel
 

@@ -9,7 +9,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .. import layout as L
-from .._results import Result
+from .._results import Result, quantity
 from ..drive.model import Drive
 from ..errors import InfeasibleError, ValidityRangeWarning
 from ._wheels import wheel_teeth
@@ -72,23 +72,23 @@ class DriveLayout(Result):
 
     wrap: L.WrapLayout
     wheel_names: tuple[str, ...]
-    pitch_radii: np.ndarray
-    teeth_in_mesh: tuple[int | None, ...]
-    chain_length_circles: float
-    links_required: float
-    links: int
-    chain_length: float
-    chain_mass: float | None
+    pitch_radii: np.ndarray = quantity("m")
+    teeth_in_mesh: tuple[int | None, ...] = quantity("1")
+    chain_length_circles: float = quantity("m", display="m")
+    links_required: float = quantity("1")
+    links: int = quantity("1")
+    chain_length: float = quantity("m", display="m")
+    chain_mass: float | None = quantity("kg")
     polygon: L.PolygonLength | None
-    centre_distance: float | None
+    centre_distance: float | None = quantity("m")
     centre_distance_for_links: L.PolygonCentreDistance | None
-    tight_span: int
-    slack_span: int
-    elongations: np.ndarray
-    take_up: np.ndarray | None
+    tight_span: int = quantity("1")
+    slack_span: int = quantity("1")
+    elongations: np.ndarray = quantity("1")
+    take_up: np.ndarray | None = quantity("m")
     take_up_kind: str
-    chain_speed: float
-    angular_velocities: np.ndarray
+    chain_speed: float = quantity("m/s")
+    angular_velocities: np.ndarray = quantity("rad/s")
     loop: L.LoopLength | None = None
     adjustment: L.LoopAdjustment | None = None
 

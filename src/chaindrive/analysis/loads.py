@@ -89,23 +89,23 @@ class DriveLoads(Result):
         Torque on each wheel's shaft without service factor [N·m], signed as the powers.
     """
 
-    torque: float
-    design_power: float
-    chain_speed: float
-    effective_pull: float
-    slack: float
+    torque: float = quantity("N*m")
+    design_power: float = quantity("W")
+    chain_speed: float = quantity("m/s")
+    effective_pull: float = quantity("N")
+    slack: float = quantity("N")
     slack_source: str
-    centrifugal: float
-    tight: float
-    acceleration_peak: float
+    centrifugal: float = quantity("N")
+    tight: float = quantity("N")
+    acceleration_peak: float = quantity("m/s^2")
     acceleration_source: str
-    moving_mass: float
-    dynamic: float
-    maximum: float
-    dynamic_factor: float
-    span_tensions: np.ndarray
-    shaft_loads: np.ndarray
-    shaft_load_angles: np.ndarray
+    moving_mass: float = quantity("kg")
+    dynamic: float = quantity("N")
+    maximum: float = quantity("N")
+    dynamic_factor: float = quantity("1")
+    span_tensions: np.ndarray = quantity("N")
+    shaft_loads: np.ndarray = quantity("N")
+    shaft_load_angles: np.ndarray = quantity("rad")
     wheel_names: tuple[str, ...]
     power_shares: np.ndarray | None = quantity("1", default=None)
     wheel_powers: np.ndarray | None = quantity("W", default=None)

@@ -33,7 +33,7 @@ import contextlib
 import dataclasses
 import importlib
 import pkgutil
-from collections.abc import Callable, Iterable, Iterator
+from collections.abc import Callable, Iterable, Iterator, Sequence
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any
 
@@ -79,6 +79,11 @@ class Part:
     json : callable, optional
         ``json(result) -> JSON-ready data`` where the result's ``to_dict()`` is not the form
         to publish.
+    batch : callable, optional
+        ``batch(contexts) -> list of results, or None``: the part for many variants of a
+        drive in one vectorised call (:func:`chaindrive.analysis.batch.analyze_variants`);
+        each result must equal ``compute`` of that variant. ``None`` (or a warning or an
+        error in the call) makes the variants computed one by one.
     """
 
     name: str
@@ -90,6 +95,7 @@ class Part:
     section: str | None = None
     unit: str | None = None
     json: Callable[[Any], Any] | None = None
+    batch: Callable[[Sequence[PartContext]], Sequence[Any] | None] | None = None
 
     def __post_init__(self) -> None:
         if not self.name.isidentifier() or self.name.startswith("_"):
@@ -114,6 +120,7 @@ _RESERVED = frozenset({"inputs", "passed", "checks", "warnings", "drive", "parts
 
 _REGISTRY: dict[str, Part] = {}
 _DISCOVERED = False
+_PLANS: dict[tuple[str, ...], tuple[Part, ...]] = {}  # resolved plans, cleared when a declaration changes
 
 
 def _discover() -> None:
@@ -142,12 +149,14 @@ def register_part(part: Part, *, replace: bool = False) -> Part:
         raise InputError(f"an analysis part named {part.name!r} is already declared "
                          f"(by {_REGISTRY[part.name].compute.__module__}); pass replace=True", field="name")
     _REGISTRY[part.name] = part
+    _PLANS.clear()
     return part
 
 
 def unregister_part(name: str) -> None:
     """Remove the part ``name`` (tests and plug-ins)."""
     _REGISTRY.pop(name, None)
+    _PLANS.clear()
 
 
 @contextlib.contextmanager
@@ -163,6 +172,7 @@ def temporary_part(part: Part) -> Iterator[Part]:
             unregister_part(part.name)
         else:
             _REGISTRY[part.name] = previous
+            _PLANS.clear()
 
 
 def all_parts() -> tuple[Part, ...]:
@@ -197,6 +207,11 @@ def resolve(names: Iterable[str]) -> tuple[Part, ...]:
     InputError
         An unknown part, or needs that form a circle.
     """
+    names = tuple(names)
+    _discover()
+    plan = _PLANS.get(names)
+    if plan is not None:
+        return plan
     order: list[Part] = []
     state: dict[str, int] = {}  # 1: on the path, 2: done
 
@@ -215,13 +230,15 @@ def resolve(names: Iterable[str]) -> tuple[Part, ...]:
 
     for name in sorted(set(names), key=lambda n: (get_part(n).order, n)):
         visit(name, ())
-    return tuple(order)
+    _PLANS[names] = plan = tuple(order)
+    return plan
 
 
 @dataclass
 class _Computed:
     result: Any = None
     notes: list[str] = field(default_factory=list)
+    caught: list[str] = field(default_factory=list)  # Python warnings raised while computing the part
 
 
 class PartContext:
@@ -246,25 +263,48 @@ class PartContext:
         """A warning for the reader of the analysis (reported once, if the part is returned)."""
         self._computed[self.part.name].notes.append(str(text))
 
+    def warn(self, text: str) -> None:
+        """Record a formula's warning for this variant as if the part had raised it (a
+        ``batch`` function replays each variant's warnings this way)."""
+        self._computed[self.part.name].caught.append(str(text))
 
-def compute_parts(drive: Drive, wanted: tuple[str, ...], options: dict[str, Any]
+
+def compute_parts(drive: Drive, wanted: tuple[str, ...], options: dict[str, Any], *,
+                  computed: dict[str, _Computed] | None = None,
+                  shared_checks: dict[str, list[Check]] | None = None,
                   ) -> tuple[dict[str, Any], list[Check], list[str]]:
     """Compute ``wanted`` and their needs; return (results of the wanted parts, their
-    checks in report order, their notes in report order). Internal to analyze_drive."""
-    computed: dict[str, _Computed] = {}
+    checks in report order, their notes and then every warning raised while computing,
+    in order). Internal to analyze_drive and analyze_variants: ``computed`` holds parts
+    already computed (reused, not recomputed), ``shared_checks`` their checks."""
+    import warnings
+
+    computed = {} if computed is None else computed
     plan = resolve(wanted)
     for part in plan:
-        computed[part.name] = _Computed()
+        if part.name in computed:
+            continue
+        entry = computed[part.name] = _Computed()
         ctx = PartContext(drive, part, computed, options)
-        computed[part.name].result = part.compute(ctx)
+        with warnings.catch_warnings(record=True) as caught:
+            warnings.simplefilter("always")
+            entry.result = part.compute(ctx)
+        entry.caught = [str(w.message) for w in caught]
     results: dict[str, Any] = {}
     checks: list[Check] = []
     notes: list[str] = []
     for part in sorted((p for p in plan if p.name in wanted), key=lambda p: (p.order, p.name)):
         res = computed[part.name].result
         results[part.name] = res
-        if res is not None and part.checks is not None:
+        if shared_checks is not None and part.name in shared_checks:
+            checks.extend(shared_checks[part.name])
+        elif res is not None and part.checks is not None:
             ctx = PartContext(drive, part, computed, options)
-            checks.extend(dataclasses.replace(c, part=part.name) for c in part.checks(ctx, res))
+            with warnings.catch_warnings(record=True) as caught:
+                warnings.simplefilter("always")
+                checks.extend(dataclasses.replace(c, part=part.name) for c in part.checks(ctx, res))
+            computed[part.name].caught.extend(str(w.message) for w in caught)
         notes.extend(computed[part.name].notes)
+    for part in plan:
+        notes.extend(computed[part.name].caught)
     return results, checks, notes

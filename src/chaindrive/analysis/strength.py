@@ -2,10 +2,11 @@
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
-from .._results import Result
+from .._results import Result, quantity
 from ..drive.model import Drive
 from ..errors import InputError
 from ..strength import RollerToothContact, skew_from_measurement, track_tooth_check
@@ -40,9 +41,9 @@ class ContactAnalysis(Result):
         :meth:`RollerToothContact.stress` at ``load`` and ``skew``.
     """
 
-    load: float
-    skew: float
-    wear_factor: float
+    load: float = quantity("N")
+    skew: float = quantity("rad")
+    wear_factor: float = quantity("1")
     contact: RollerToothContact
     result: RollerContactResult
 
@@ -119,9 +120,64 @@ def _track_tooth_part(ctx: PartContext) -> TrackToothResult | None:
     return drive_track_tooth(ctx.drive, wheel)
 
 
+def _contact_batch(contexts: Sequence[PartContext]) -> list[ContactAnalysis] | None:
+    """The contact of many variants in one vectorised call of
+    :meth:`~chaindrive.strength.RollerToothContact.stress` (same chain, seat, length and
+    tight-side tension; skews and wear factors vary); ``None`` where they differ."""
+    import dataclasses
+    import warnings
+
+    import numpy as np
+
+    from ..strength.hertz import warn_conformal
+    from ..strength.skew import RollerContactResult, design_skew, skew_gamma
+
+    first = contexts[0].drive
+    loads = contexts[0]["loads"]
+    con0, c = first.contact, first.chain
+    if con0 is None or not c.is_roller_chain or c.roller_diameter is None:
+        return None
+    skews, factors = [], []
+    for ctx in contexts:
+        con = ctx.drive.contact
+        if (ctx.drive.chain is not c or con is None or con.skew is None or ctx["loads"] is not loads
+                or con.seat_radius != con0.seat_radius or con.contact_length != con0.contact_length):
+            return None
+        skews.append(float(con.skew))
+        factors.append(float(con.wear_factor))
+    with warnings.catch_warnings(record=True) as shared:
+        warnings.simplefilter("always")
+        obj = RollerToothContact.from_chain(c, seat_radius=con0.seat_radius, length=con0.contact_length)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")  # replayed per variant below
+        res = obj.stress(loads.tight, max_skew=np.array(skews), wear_factor=np.array(factors))
+    # each variant's warnings, as its own call of RollerToothContact.stress raises them
+    # (roller_contact_stress: design_skew, then skew_gamma, then warn_conformal)
+    with warnings.catch_warnings(record=True) as gamma_warnings:
+        warnings.simplefilter("always")
+        skew_gamma(c.pitch)
+    fields = [f.name for f in dataclasses.fields(res)]
+    columns = {name: getattr(res, name) for name in fields}
+    out = []
+    for i, (skew, factor) in enumerate(zip(skews, factors, strict=True)):
+        ctx = contexts[i]
+        with warnings.catch_warnings(record=True) as own:
+            warnings.simplefilter("always")
+            design_skew(skew, factor)
+        with warnings.catch_warnings(record=True) as conformal_caught:
+            warnings.simplefilter("always")
+            warn_conformal(columns["half_width"][i], c.roller_diameter / 2, "roller-tooth contact")
+        for w in (*shared, *own, *gamma_warnings, *conformal_caught):
+            ctx.warn(str(w.message))
+        row: dict[str, Any] = {name: (float(v[i]) if isinstance(v, np.ndarray) and v.ndim else v)
+                               for name, v in columns.items()}
+        out.append(ContactAnalysis(float(loads.tight), skew, factor, obj, RollerContactResult(**row)))
+    return out
+
+
 register_part(Part("contact", "Roller–tooth contact with skew", lambda ctx: drive_contact(ctx.drive, ctx["loads"]),
                    needs=("loads",), checks=lambda ctx, con: contact_checks(con), order=70,
-                   section="chaindrive.workflows.sections:strength_section"))
+                   section="chaindrive.workflows.sections:strength_section", batch=_contact_batch))
 register_part(Part("track_tooth", "Track drive wheel teeth", _track_tooth_part, needs=("geometry",),
                    checks=lambda ctx, tt: track_tooth_checks(ctx.drive, tt), order=80,
                    section="chaindrive.workflows.sections:strength_section"))

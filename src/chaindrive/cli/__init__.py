@@ -54,8 +54,37 @@ def _one_line(text: object) -> str:
     return lines[0] if lines else ""
 
 
+_LONG_NUMBER = None
+
+
+def shorten_numbers(text: str) -> str:
+    """Numbers of more than 15 digits in a message written with 6 significant digits.
+
+    Examples
+    --------
+    >>> shorten_numbers("ratio must lie in (0, 10], got " + "1" + "0" * 300 + ".0")
+    'ratio must lie in (0, 10], got 1e+300'
+    >>> shorten_numbers("teeth 1000000")
+    'teeth 1000000'
+    """
+    import re
+
+    global _LONG_NUMBER
+    if _LONG_NUMBER is None:
+        _LONG_NUMBER = re.compile(r"(?<![\w.])-?\d{16,}(?:\.\d*)?(?:[eE][-+]?\d+)?(?![\w.])")
+    return _LONG_NUMBER.sub(lambda m: f"{float(m.group()):.6g}", text)
+
+
+def _notes(exc: BaseException | None) -> str:
+    notes = []
+    while exc is not None:
+        notes += [n for n in getattr(exc, "__notes__", []) or [] if n not in notes]
+        exc = exc.__cause__ or exc.__context__
+    return "".join(f"; {n}" for n in notes)
+
+
 def _cap(text: object, limit: int = MAX_ERROR_LINES) -> str:
-    lines = str(text).splitlines() or [""]
+    lines = shorten_numbers(str(text)).splitlines() or [""]
     if len(lines) <= limit:
         return "\n".join(lines)
     return "\n".join(lines[:limit] + [f"... and {len(lines) - limit} more"])
@@ -73,6 +102,15 @@ def _split_debug(argv: list[str]) -> tuple[list[str], bool]:
     return out, debug
 
 
+class Interrupted(BaseException):
+    """Ctrl-C (SIGINT) during a command; raised instead of KeyboardInterrupt so that typer
+    does not swallow it, and the message can say what is kept."""
+
+
+def _interrupt(signum, frame):  # noqa: ARG001
+    raise Interrupted
+
+
 def main(argv: list[str] | None = None) -> int:
     """Entry point of the ``chaindrive`` command; returns the exit code.
 
@@ -82,17 +120,39 @@ def main(argv: list[str] | None = None) -> int:
     traceback).
     """
     import os
-    import traceback
     import warnings
 
     argv = list(sys.argv[1:] if argv is None else argv)
     argv, debug = _split_debug(argv)
     debug = debug or os.environ.get("CHAINDRIVE_DEBUG", "") not in ("", "0")
+    import signal
+    import threading
+
     warnings.showwarning = _show_warning
+    previous = None
+    if threading.current_thread() is threading.main_thread():
+        previous = signal.signal(signal.SIGINT, _interrupt)
+    try:
+        return _main(argv, debug)
+    finally:
+        if previous is not None:
+            signal.signal(signal.SIGINT, previous)
+
+
+def _main(argv: list[str], debug: bool) -> int:
+    import os
+    import traceback
+
     try:
         rv = app(args=argv, prog_name="chaindrive", standalone_mode=False)
-    except ChainDriveError as exc:
-        print(f"error: {_cap(exc)}", file=sys.stderr)
+    except ChainDriveError as exc:  # named by the option the user typed, not the formula's parameter
+        from .app import command_options, name_options
+
+        try:
+            text = name_options(str(exc), *command_options(argv))
+        except Exception:  # noqa: BLE001 - the message as raised is still an answer
+            text = str(exc)
+        print(f"error: {_cap(text)}", file=sys.stderr)
         return 2
     except SystemExit as exc:  # typer/click exits
         code = exc.code
@@ -102,8 +162,8 @@ def main(argv: list[str] | None = None) -> int:
             return code
         print(f"error: {code}", file=sys.stderr)
         return 2
-    except KeyboardInterrupt:
-        print("interrupted", file=sys.stderr)
+    except (KeyboardInterrupt, Interrupted) as exc:  # the note says what is kept
+        print(f"interrupted{_notes(exc)}", file=sys.stderr)
         return 130
     except BrokenPipeError:  # e.g. `chaindrive chains | head`
         try:
@@ -116,14 +176,20 @@ def main(argv: list[str] | None = None) -> int:
               "magnitudes and units", file=sys.stderr)
         return 2
     except OSError as exc:  # a file or folder the command was given
-        where = f": {exc.filename!r}" if getattr(exc, "filename", None) else ""
-        print(f"error: {exc.strerror or _one_line(exc) or type(exc).__name__}{where}", file=sys.stderr)
+        from .._io import show_path
+
+        where = f": {show_path(exc.filename)}" if getattr(exc, "filename", None) else ""
+        print(f"error: {exc.strerror or _one_line(exc) or type(exc).__name__}{where}{_notes(exc)}",
+              file=sys.stderr)
         return 2
     except Exception as exc:  # click usage errors in non-standalone mode, and the unexpected
         if hasattr(exc, "show") and hasattr(exc, "exit_code"):  # click.ClickException
             exc.show()
             return 2
-        if type(exc).__name__ == "Abort":
+        if type(exc).__name__ == "Abort":  # click's answer to Ctrl-C (or EOF at a prompt)
+            if isinstance(exc.__context__, KeyboardInterrupt):
+                print(f"interrupted{_notes(exc.__context__)}", file=sys.stderr)
+                return 130
             return 1
         if debug:
             traceback.print_exc()

@@ -11,14 +11,23 @@ from .app import app
 
 
 def _run(project: Path, output: Path, pdf: bool, figures: bool, quiet: bool, force: bool = False) -> int:
+
+    from .._io import claim_output_dir
+
+    # before any work: the folder locked (a second run into it is refused), an earlier run
+    # needs --force, a folder with other files is refused
+    with claim_output_dir(output, force=force):
+        return _run_claimed(project, output, pdf, figures, quiet, force)
+
+
+def _run_claimed(project: Path, output: Path, pdf: bool, figures: bool, quiet: bool, force: bool) -> int:
     from rich.console import Console
     from rich.progress import BarColumn, Progress, TextColumn, TimeElapsedColumn
 
-    from .._io import atomic_output_dir, check_output_dir
+    from .._io import atomic_output_dir
     from ..drive.project import load_project
     from ..workflows.analyze import analyze
 
-    check_output_dir(output, force=force)  # before any work: an earlier run needs --force
     console = Console(stderr=True, quiet=quiet)
     drive = load_project(project)
     with Progress(TextColumn("[bold]{task.description}"), BarColumn(), TextColumn("{task.completed}/{task.total}"),
@@ -49,6 +58,8 @@ def _run(project: Path, output: Path, pdf: bool, figures: bool, quiet: bool, for
         out.print(f"  warning: {w}", markup=False)
     out.print(f"report: {outcome.files['html']}")
     out.print(f"results: {outcome.files['json']}")
+    if "proposal" in outcome.files:
+        out.print(f"proposal (a design that passes the resonance check): {outcome.files['proposal']}")
     if "pdf" in outcome.files:
         out.print(f"pdf: {outcome.files['pdf']}")
     return outcome.exit_code

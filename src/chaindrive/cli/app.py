@@ -44,6 +44,52 @@ def _root() -> None:
     """chaindrive: design and analysis of chain drives."""
 
 
+#: Internal parameter names a command's errors may carry, by command, and the option the
+#: user typed for each (``contact``: the formula's ``wear_factor`` is ``--k-phi``). The
+#: command's own options (``teeth`` -> ``--teeth``) are found without being listed here.
+OPTION_ALIASES: dict[str, dict[str, str]] = {}
+
+
+def command_options(argv: Sequence[str]) -> tuple[dict[str, str], dict[str, str]]:
+    """Parameter name -> option typed, and the command's :data:`OPTION_ALIASES`, for the
+    command ``argv`` invokes (for error messages)."""
+    group = typer.main.get_command(app)
+    name = next((a for a in argv if not a.startswith("-")), None)
+    command = getattr(group, "commands", {}).get(name) if name else None
+    names: dict[str, str] = {}
+    if command is not None:
+        for p in command.params:
+            if (getattr(p, "param_type_name", "") == "option" and p.name and p.opts
+                    and not getattr(p, "is_flag", False)):
+                names[p.name] = max(p.opts, key=len)
+    return names, OPTION_ALIASES.get(name or "", {})
+
+
+def name_options(message: str, names: Mapping[str, str], aliases: Mapping[str, str] | None = None) -> str:
+    """A message with the internal name it starts with (``teeth must ...``) replaced by the
+    option the user typed; the ``aliases`` (formula parameters a command passes options
+    to) anywhere in it.
+
+    Examples
+    --------
+    >>> name_options("wear_factor must lie in (0, 1], got -1", {"wear_factor": "--k-phi"})
+    '--k-phi must lie in (0, 1], got -1'
+    >>> name_options("radius_2 must be positive (0 < radius_2 < inf m)", {}, {"radius_2": "--seat-radius"})
+    '--seat-radius must be positive (0 < --seat-radius < inf m)'
+    >>> name_options("chain '16B' has no bar_diameter", {"chain": "--chain"})
+    "chain '16B' has no bar_diameter"
+    """
+    import re
+
+    names = {**names, **(aliases or {})}
+    m = re.match(r"([A-Za-z_][A-Za-z0-9_]*)(?=\s+(?:must|is|needs|should|cannot)\b|:|\s+\()", message)
+    if m and m.group(1) in names:
+        message = names[m.group(1)] + message[m.end():]
+    for name, option in (aliases or {}).items():
+        message = re.sub(rf"(?<![\w-]){re.escape(name)}(?![\w])", option, message)
+    return message
+
+
 def option_name(field: str) -> str:
     """``"guide_end"`` -> ``"--guide-end"`` (messages name the option as typed)."""
     return field if field.startswith("-") else "--" + field.replace("_", "-")

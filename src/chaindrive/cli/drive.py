@@ -14,7 +14,8 @@ import math
 import typer
 
 from ..errors import ChainDriveError
-from .app import app, echo_json, quantity, unit_help
+from ..units import angular_velocity_to_rpm
+from .app import OPTION_ALIASES, app, echo_json, quantity, unit_help
 
 
 def _console():
@@ -118,6 +119,10 @@ def layout_command(
         con.print(f"warning: {w}", markup=False)
 
 
+OPTION_ALIASES["select"] = {"teeth_driving": "--teeth", "service_factor": "--service-factor",
+                            "load_character": "--load", "hours_per_day": "--hours-per-day"}
+
+
 @app.command("select")
 def select_command(
     power: str = typer.Option(..., "--power", "-P", help=unit_help(
@@ -180,6 +185,10 @@ def select_command(
         out_file = check_output_path(write, (".toml",), option="--write", force=force)
     if limit < 1:
         raise InputError(f"--limit must be a whole number >= 1, got {limit}", field="--limit")
+    if teeth is not None:
+        from ..limits import MAX_TEETH, check_size
+
+        check_size("--teeth", teeth, MAX_TEETH, minimum=3)
     duty = Duty(power=quantity(power, "W", "power"), speed=quantity(speed, "rad/s", "speed"), ratio=ratio,
                 driven_speed=quantity(driven_speed, "rad/s", "driven_speed"), driver=driver,
                 driven_machine=driven_machine, load_character=load_character, service_factor=service_factor,
@@ -207,7 +216,7 @@ def select_command(
 
     con = _console()
     rec = result.recommended
-    con.print(escape(f"Duty: {duty.power / 1e3:g} kW at {duty.speed * 30 / math.pi:g} rpm, ratio "
+    con.print(escape(f"Duty: {duty.power / 1e3:g} kW at {angular_velocity_to_rpm(duty.speed):g} rpm, ratio "
                      f"{duty.speed_ratio:.4g}, {duty.hours_per_day:g} h/day, {duty.environment}"))
     for f in rec.factors:
         con.print(escape(f"  {f.name} {f.symbol} = {f.value:.4g}  [{f.source}]" + (f" ({f.note})" if f.note else "")))
@@ -258,7 +267,7 @@ def rating_command(
                    "lubrication": r.lubrication, "galling_speed": r.galling_speed, "source": r.source,
                    "warnings": list(r.warnings)})
         return
-    typer.echo(f"{r.chain} on {r.teeth} teeth at {r.angular_velocity * 30 / math.pi:.6g} rpm: rated "
+    typer.echo(f"{r.chain} on {r.teeth} teeth at {angular_velocity_to_rpm(r.angular_velocity):.6g} rpm: rated "
                f"{r.rated_power / 1e3:.4g} kW ({r.method}; limited by {r.limited_by.replace('_', '-')}); "
                f"link plate {r.link_plate / 1e3:.4g} kW, roller-bushing {r.roller_bushing / 1e3:.4g} kW; "
                f"chain speed {r.chain_speed:.3g} m/s, lubrication {r.lubrication} ({r.lubrication_method}) "

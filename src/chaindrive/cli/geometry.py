@@ -112,7 +112,7 @@ def _rng(lo, hi, unit="mm", f=1e3) -> str:
 @app.command("sprocket")
 def sprocket_command(
     chain: str | None = typer.Option(None, "--chain", "-c", help="Chain designation from the catalogue, e.g. 16B or 80 (ISO 606 / ANSI B29.1)."),
-    teeth: int = typer.Option(..., "--teeth", "-z", help="Number of teeth z, dimensionless count (9...150, ISO 606:2015 Annex A)."),
+    teeth: int = typer.Option(..., "--teeth", "-z", help="Number of teeth z, dimensionless count, 9...10000 (chaindrive.limits.MAX_TEETH; ISO 606:2015 Annex A tabulates 9...150; a STEP solid at most 150)."),
     form: str | None = typer.Option(None, "--form", help="ISO 606:2015 5.4 tooth gap form for the outline: 'min' (ri min, α max, re max, tip da max) or 'max' (ri max, α min, re min, tip da min). Default min; not used with --method ansi."),
     method: str = typer.Option("iso606", "--method", help="Tooth form: iso606 (ISO 606:2015 clause 5) or ansi (ASME B29.1, Machinery's Handbook)."),
     pitch: str | None = typer.Option(None, "--pitch", help=unit_help("Chain pitch p when no --chain is given.", "m", "25.4 mm")),

@@ -39,9 +39,19 @@ def simulate_command(
     guides (channels) and idlers (toothed, toothless, outside), tensioner, prescribed
     driver speed, driven inertia and load, gravity; assembled in static equilibrium
     first (see docs/simulation.md)."""
-    from .._io import atomic_output_dir, check_output_dir
+    from .._io import claim_output_dir
 
-    check_output_dir(output, force=force)  # before any work: an earlier run needs --force
+    # before any work: the folder locked (a second run into it is refused), an earlier run
+    # needs --force, a folder with other files is refused
+    with claim_output_dir(output, force=force):
+        _simulate(project, example, duration, output, speed, load, ramp, frames, no_plots, as_json, force)
+
+
+def _simulate(project: Path | None, example: str | None, duration: str | None, output: Path,
+              speed: str | None, load: str | None, ramp: str | None, frames: int, no_plots: bool,
+              as_json: bool, force: bool) -> None:
+    from .._io import atomic_output_dir
+
     typer.echo("assembling the model...", err=True)
     from ..simulation import (
         conveyor_example,

@@ -13,7 +13,7 @@ from typing import Any
 import typer
 
 from ..errors import InputError
-from .app import app, echo_json, exit_code, print_rows, quantity, unit_help
+from .app import OPTION_ALIASES, app, echo_json, exit_code, print_rows, quantity, unit_help
 
 
 def _chain(name):
@@ -33,6 +33,13 @@ def _mpa(v):
 def _f(v, fmt="{:.2f}"):
     """A dimensionless figure (safety factor, ratio), marked as such."""
     return "-" if v is None else fmt.format(v) + " (ratio)"
+
+
+OPTION_ALIASES["contact"] = {
+    "wear_factor": "--k-phi", "radius_2": "--seat-radius", "max_skew": "--skew",
+    "poisson_ratio": "--poisson", "poisson_ratio_1": "--poisson", "poisson_ratio_2": "--poisson",
+    "elastic_modulus": "--modulus", "elastic_modulus_1": "--modulus", "elastic_modulus_2": "--modulus",
+}
 
 
 @app.command("contact")

@@ -53,7 +53,7 @@ def vibration_command(
     speed: str | None = typer.Option(None, "--speed", help=unit_help("Driving sprocket speed omega1 > 0 for the resonance check (the tensioner paper, omega1 = omega).", "rpm or rad/s", "300 rpm")),
     ratio: float = typer.Option(1.0, "--ratio", help="Transmission ratio u > 0 (dimensionless): the driven sprocket excites omega2 = omega1/u (the tensioner paper)."),
     teeth: int | None = typer.Option(None, "--teeth", help="Teeth (pockets) z1 >= 3 of the driving wheel (dimensionless count): meshing excitation z1 omega1 (polygonal effect, Dolipiński et al.)."),
-    link_chain: bool = typer.Option(False, "--link-chain", help="Round link chain on a pocket wheel: excitations 2 z1 omega1 (link passing) and z1 omega1 (unequal links t + d, t - d, Dolipiński et al. eq. 6) instead of z1 omega1."),
+    link_chain: bool = typer.Option(False, "--link-chain", help="Round link chain on a pocket wheel: the excitation z1 omega1 of a pair of links (unequal lengths t + d, t - d, Dolipiński et al. eq. 6) instead of the roller chain's z1 omega1/2 (inner/outer links)."),
     model: str = typer.Option("projected", "--model", help="Coupling at the tensioner: projected (w_i = u cos beta_i, derived) or as_printed (w_i = u, the tensioner paper eq. 7 as printed)."),
     speed_min: str | None = typer.Option(None, "--speed-min", help=unit_help("Lower end of the speed range of --campbell/--map; default 0.5 x --speed (the analysis's Campbell range).", "rpm or rad/s", "100 rpm")),
     speed_max: str | None = typer.Option(None, "--speed-max", help=unit_help("Upper end of the speed range of --campbell/--map; default 1.5 x --speed (the analysis's Campbell range).", "rpm or rad/s", "400 rpm")),

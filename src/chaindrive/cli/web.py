@@ -21,13 +21,15 @@ def web(
     import uvicorn
 
     from ..web import create_app
+    from ..web.security import server_config
 
     if not 1 <= port <= 65535:
-        raise InputError(f"port must lie in 1...65535, got {port}")
+        raise InputError(f"--port must lie in 1...65535, got {port}")
     if not 1 <= max_jobs <= 64:
-        raise InputError(f"max-jobs must lie in 1...64, got {max_jobs}")
+        raise InputError(f"--max-jobs must lie in 1...64, got {max_jobs}")
     if not 1.0 <= job_time_limit <= 3600.0:
-        raise InputError(f"job-time-limit must lie in 1...3600 s, got {job_time_limit:g}")
+        raise InputError(f"--job-time-limit must lie in 1...3600 s, got {job_time_limit:g}")
     print(f"chaindrive design studio on http://{host}:{port}/ (Ctrl-C to stop)")
-    uvicorn.run(create_app(max_jobs=max_jobs, job_time_limit=job_time_limit), host=host, port=port,
-                log_level="warning", limit_concurrency=200, timeout_keep_alive=5)
+    # deadlines for slow headers and bodies, a connection limit (chaindrive.web.security)
+    uvicorn.Server(server_config(create_app(max_jobs=max_jobs, job_time_limit=job_time_limit),
+                                 host=host, port=port)).run()

@@ -14,13 +14,13 @@ static safety of the drive.
 
 from __future__ import annotations
 
-import math
 from typing import TYPE_CHECKING
 
 import numpy as np
 from numpy.typing import ArrayLike
 
 from ..errors import InputError
+from ..loads import mean_chain_speed, sides_per_turn
 
 if TYPE_CHECKING:
     from ..chains import Chain
@@ -67,7 +67,7 @@ def link_candidates(power: float, speed: float, service_factor: float, teeth: in
         if ch.breaking_force is None:
             continue
         need = required_static_safety(ch) if required is None else required
-        v = 2 * teeth * ch.pitch * speed / (2 * math.pi)
+        v = float(mean_chain_speed(sides_per_turn(teeth, True), ch.pitch, speed))
         q = ch.mass_per_length or 0.0
         pull = service_factor * power / v + q * v * v
         safety = ch.breaking_force / pull
@@ -114,5 +114,5 @@ def power_at_safety(chain: Chain, teeth: int, angular_velocity: ArrayLike,
     need = required_static_safety(chain) if required is None else required
     if chain.breaking_force is None:
         raise InputError(f"chain {chain.name} has no breaking force", field="chain")
-    v = 2 * teeth * chain.pitch * np.asarray(angular_velocity, dtype=float) / (2 * math.pi)
+    v = mean_chain_speed(sides_per_turn(teeth, True), chain.pitch, np.asarray(angular_velocity, dtype=float))
     return chain.breaking_force / need * v

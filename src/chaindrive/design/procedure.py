@@ -41,6 +41,8 @@ from ..errors import (
     UnknownNameError,
     ValidityRangeWarning,
 )
+from ..loads import mean_chain_speed
+from ..units import angular_velocity_to_rpm
 from .duty import Duty, Factor, duty_factors
 
 if TYPE_CHECKING:
@@ -154,7 +156,7 @@ def project_text(chain: str, teeth: tuple[int, int], centre_distance: float, lin
     if description:
         lines.append(f"description = {_toml_string(description)}")
     lines += [
-        f'speed = "{speed * 30 / math.pi:.12g} rpm"     # driving (small) sprocket',
+        f'speed = "{angular_velocity_to_rpm(speed):.12g} rpm"     # driving (small) sprocket',
         f"links = {int(links)}                      # even number of pitches",
         "",
         "[chain]",
@@ -196,7 +198,7 @@ def _teeth_for(chain: Chain, duty: Duty, given: int | None) -> tuple[int, str]:
 
     z, why = driving_teeth("A", duty.character, duty.speed_ratio, given=given)
     for _ in range(3):  # the region depends on the teeth through the chain speed
-        v = z * chain.pitch * duty.speed / (2 * math.pi)
+        v = float(mean_chain_speed(z, chain.pitch, duty.speed))
         with warnings.catch_warnings():
             warnings.simplefilter("ignore", ValidityRangeWarning)
             region = str(lubrication_region(v, chain.pitch))
@@ -378,7 +380,7 @@ def design_drive(duty: Duty, *, teeth_driving: int | None = None, family: str | 
         extra = f"; sprockets too large for the centre distance: {', '.join(too_close[:4])}" if too_close else ""
         raise InfeasibleError(
             f"no catalogue roller chain carries {duty.power * ks / 1e3:g} kW (design power) at "
-            f"{duty.speed * 30 / math.pi:g} rpm with the required static safety{extra}; try more strands, "
+            f"{angular_velocity_to_rpm(duty.speed):g} rpm with the required static safety{extra}; try more strands, "
             "a lower speed or a longer centre distance")
     rows = sorted(found, key=lambda c: (c.lubrication == "C'", c.strands, c.pitch, -(c.static_safety or 0.0),
                                         c.chain))

@@ -30,26 +30,25 @@ import numpy as np
 from .. import layout as L
 from .. import loads as F
 from ..errors import InputError
+from ..loads import mean_chain_speed, sides_per_turn
 
 if TYPE_CHECKING:
     from ..chains import Chain
 
-__all__ = ["WHEEL_KINDS", "sides_per_turn", "Wheel", "Tensioner", "Adjustable", "Guide", "Load", "ContactSpec", "TrackSpec",
+__all__ = ["WHEEL_KINDS", "TENSIONER_PARTS", "sides_per_turn", "Wheel", "Tensioner", "Adjustable", "Guide", "Load",
+           "ContactSpec", "TrackSpec",
            "Drive"]
 
 WHEEL_KINDS = ("sprocket", "pocket_wheel", "track_wheel", "idler")
 TENSIONER_KINDS = ("spring", "weight", "screw", "hydraulic")
+#: The parts of a tensioner described by its mechanism (:meth:`Tensioner.from_parts`), with their SI units.
+TENSIONER_PARTS: dict[str, dict[str, str]] = {
+    "lever": {"arm_length": "m", "arm_inertia": "kg*m**2", "arm_mass": "kg", "wheel_mass": "kg",
+              "spring_stiffness": "N/m", "spring_lever": "m", "spring_angle": "rad", "torsion_stiffness": "N*m/rad"},
+    "sliding": {"carriage_mass": "kg", "wheel_mass": "kg", "spring_stiffness": "N/m", "spring_mass": "kg",
+                "spring_angle": "rad"},
+}
 GUIDE_KINDS = ("tangential", "chordal", "guided")
-
-
-def sides_per_turn(teeth: int, link_chain: bool) -> int:
-    """Chain links seated per turn of a wheel: ``z`` (roller chain), ``2z`` (round link chain
-    on a pocket wheel: a horizontal and a vertical link per pocket, Dolipiński et al.).
-
-    >>> sides_per_turn(8, True), sides_per_turn(19, False)
-    (16, 19)
-    """
-    return 2 * int(teeth) if link_chain else int(teeth)
 
 
 def _finite(value: Any, what: str, *, positive: bool = False, nonnegative: bool = False) -> float:
@@ -178,6 +177,11 @@ class Tensioner:
         Direction in which the tensioner travels to take up slack (non-zero).
     force : float, optional
         Force of the tensioner on the chain [N]; sets the slack tension.
+    mechanism : {"lever", "sliding"}, optional
+        The tensioner described by its parts (:meth:`from_parts`); ``mass`` and
+        ``stiffness`` are then its reduction to the axis.
+    parts : tuple of (str, float)
+        The parts' values in SI units (:data:`TENSIONER_PARTS`), with ``mechanism``.
     """
 
     wheel: str
@@ -186,6 +190,74 @@ class Tensioner:
     kind: str = "spring"
     direction: tuple[float, float] = (0.0, 1.0)
     force: float | None = None
+    mechanism: str | None = None
+    parts: tuple[tuple[str, float], ...] = ()
+
+    @classmethod
+    def from_parts(cls, wheel: str, mechanism: str, parts: Mapping[str, float], **options: Any) -> Tensioner:
+        """A tensioner described by its parts, reduced to its axis by the energy balance.
+
+        Parameters
+        ----------
+        wheel : str
+            The idler it carries.
+        mechanism : {"lever", "sliding"}
+            Pivoted arm or straight slide.
+        parts : mapping
+            SI values of :data:`TENSIONER_PARTS` ``[mechanism]``; ``lever``: arm_length [m],
+            arm_inertia [kg m²] about the pivot (or arm_mass [kg] of a uniform arm, J = m L²/3),
+            wheel_mass [kg], spring_stiffness [N/m], spring_lever [m], spring_angle [rad],
+            torsion_stiffness [N m/rad]; ``sliding``: carriage_mass [kg], wheel_mass [kg],
+            spring_stiffness [N/m], spring_mass [kg], spring_angle [rad].
+        **options
+            kind, direction, force as for the class.
+
+        Returns
+        -------
+        Tensioner
+            ``mass`` and ``stiffness`` from :func:`chaindrive.vibration.reduced_tensioner`.
+
+        Examples
+        --------
+        >>> t = Tensioner.from_parts("idler", "lever", {"arm_length": 0.25, "arm_inertia": 0.05,
+        ...     "wheel_mass": 2.0, "spring_stiffness": 2e5, "spring_lever": 0.1})
+        >>> round(t.mass, 3), round(t.stiffness, 1)
+        (2.8, 32000.0)
+        """
+        from ..vibration import reduced_tensioner
+
+        if mechanism not in TENSIONER_PARTS:
+            raise InputError(f"tensioner.mechanism must be one of {', '.join(TENSIONER_PARTS)}, got {mechanism!r}",
+                             field="tensioner.mechanism")
+        allowed = TENSIONER_PARTS[mechanism]
+        values = {k: _finite(v, f"tensioner.{k}", nonnegative=True) for k, v in parts.items()}
+        for k in values:
+            if k not in allowed:
+                raise InputError(f"tensioner.{k} is not a part of a {mechanism} tensioner (parts: "
+                                 f"{', '.join(allowed)})", field=f"tensioner.{k}")
+        if mechanism == "lever":
+            if "arm_inertia" in values and "arm_mass" in values:
+                raise InputError("tensioner: give arm_inertia or arm_mass (a uniform arm), not both",
+                                 field="tensioner.arm_mass")
+            for k in ("arm_length", "spring_stiffness", "spring_lever"):
+                if k not in values:
+                    raise InputError(f"tensioner.{k} is required for a lever tensioner", field=f"tensioner.{k}")
+            length = values["arm_length"]
+            inertia = values.get("arm_inertia", values.get("arm_mass", 0.0) * length**2 / 3.0)
+            r = reduced_tensioner("pivot_arm", arm_inertia=inertia, sprocket_mass=values.get("wheel_mass", 0.0),
+                                  arm_length=length, spring_stiffness=values["spring_stiffness"],
+                                  spring_lever=values["spring_lever"], spring_angle=values.get("spring_angle", 0.0),
+                                  torsion_stiffness=values.get("torsion_stiffness", 0.0))
+        else:
+            if "spring_stiffness" not in values:
+                raise InputError("tensioner.spring_stiffness is required for a sliding tensioner",
+                                 field="tensioner.spring_stiffness")
+            r = reduced_tensioner("sliding", carriage_mass=values.get("carriage_mass", 0.0),
+                                  sprocket_mass=values.get("wheel_mass", 0.0),
+                                  spring_stiffness=values["spring_stiffness"],
+                                  spring_mass=values.get("spring_mass", 0.0),
+                                  spring_angle=values.get("spring_angle", 0.0))
+        return cls(wheel, r.mass, r.stiffness, mechanism=mechanism, parts=tuple(sorted(values.items())), **options)
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "mass", _finite(self.mass, "tensioner.mass", nonnegative=True))
@@ -396,7 +468,7 @@ class Drive:
         Track drive wheel strength (a mapping of its fields is accepted).
     self_regulating : object, optional
         Self-regulating drive inputs
-        (:class:`chaindrive.drive.self_regulating.SelfRegulatingSpec`).
+        (:class:`chaindrive.drive.carrier.SelfRegulatingSpec`).
     adjustable : Adjustable, optional
         The wheel moved to fit the link count (a mapping of its fields is accepted).
 
@@ -560,7 +632,7 @@ class Drive:
     def chain_speed(self) -> float:
         """Mean chain speed [m/s]: sides per turn × pitch × ω / 2π."""
         w = self.driving_wheel
-        return w.sides_per_turn(self.chain) * self.pitch * self.speed / (2 * math.pi)
+        return float(mean_chain_speed(w.sides_per_turn(self.chain), self.pitch, self.speed))
 
     def angular_velocities(self) -> np.ndarray:
         """Mean angular velocity of every wheel [rad/s]."""

@@ -17,7 +17,6 @@ in the file, e.g. ``drive.toml:14: wheels[1].teeth: must be a whole number >= 3`
 from __future__ import annotations
 
 import dataclasses
-import math
 import os
 import re
 import tomllib  # noqa: F401 - used by the doctests (Python >= 3.11)
@@ -36,6 +35,7 @@ from pydantic import (
 
 from ..errors import ChainDriveError, InputError, UnknownNameError
 from ..limits import MAX_LINKS, MAX_TEETH, warn_implausible
+from ..loads import mean_chain_speed
 from ..units import chain_speed_to_angular_velocity, is_dimensional, parse_quantity, unit_example
 from . import model as _model
 from .model import Adjustable, Drive, Guide, Load, Tensioner, Wheel
@@ -223,15 +223,60 @@ class AdjustableSpec(_Model):
     direction: tuple[float, float] = (1.0, 0.0)
 
 
+LengthOrZero = Annotated[float, _quantity("m", allow_zero=True)]
+MassOrZero = Annotated[float, _quantity("kg", allow_zero=True)]
+Inertia = Annotated[float, _quantity("kg*m**2", allow_zero=True)]
+StiffnessOrZero = Annotated[float, _quantity("N/m", allow_zero=True)]
+TorsionStiffness = Annotated[float, _quantity("N*m/rad", allow_zero=True)]
+
+
 class TensionerSpec(_Model):
-    """``[tensioner]``."""
+    """``[tensioner]``: mass and stiffness reduced to the axis, or the parts of a ``mechanism``."""
 
     wheel: str
-    mass: Mass
-    stiffness: Stiffness
+    mass: Mass | None = None
+    stiffness: Stiffness | None = None
     kind: Literal["spring", "weight", "screw", "hydraulic"] = "spring"
     direction: tuple[float, float] = (0.0, 1.0)
     force: ForceOrZero | None = None
+    mechanism: Literal["lever", "sliding"] | None = None
+    arm_length: Length | None = None
+    arm_inertia: Inertia | None = None
+    arm_mass: MassOrZero | None = None
+    wheel_mass: MassOrZero | None = None
+    carriage_mass: MassOrZero | None = None
+    spring_stiffness: StiffnessOrZero | None = None
+    spring_lever: LengthOrZero | None = None
+    spring_angle: Angle | None = None
+    spring_mass: MassOrZero | None = None
+    torsion_stiffness: TorsionStiffness | None = None
+
+    def model_post_init(self, _context: Any) -> None:
+        parts = [k for k in _model.TENSIONER_PARTS["lever"] | _model.TENSIONER_PARTS["sliding"]
+                 if getattr(self, k) is not None]
+        if self.mechanism is None:
+            if self.mass is None or self.stiffness is None:
+                raise ValueError("give mass and stiffness (reduced to the tensioner axis), or mechanism = "
+                                 '"lever" or "sliding" with its parts (see docs/vibration.md §5)')
+            if parts:
+                raise ValueError(f"{', '.join(parts)}: parts need mechanism = \"lever\" or \"sliding\"")
+        elif self.mass is not None or self.stiffness is not None:
+            raise ValueError(f"mechanism = {self.mechanism!r} computes mass and stiffness from the parts; "
+                             "give one or the other")
+        else:
+            foreign = [k for k in parts if k not in _model.TENSIONER_PARTS[self.mechanism]]
+            if foreign:
+                raise ValueError(f"{', '.join(foreign)}: not a part of a {self.mechanism} tensioner (parts: "
+                                 f"{', '.join(_model.TENSIONER_PARTS[self.mechanism])})")
+
+    def to_tensioner(self) -> Tensioner:
+        """The model's tensioner (its parts reduced to the axis when a mechanism is given)."""
+        common = {"kind": self.kind, "direction": self.direction, "force": self.force}
+        if self.mechanism is None:
+            assert self.mass is not None and self.stiffness is not None
+            return Tensioner(self.wheel, self.mass, self.stiffness, **common)
+        parts = {k: getattr(self, k) for k in _model.TENSIONER_PARTS[self.mechanism] if getattr(self, k) is not None}
+        return Tensioner.from_parts(self.wheel, self.mechanism, parts, **common)
 
 
 class GuideSpec(_Model):
@@ -477,7 +522,7 @@ def project_from_mapping(data: dict[str, Any], filename: str = "<project>", *,
             speed=_speed_of(proj.drive.speed, chain, wheels, filename, index),
             load=Load(power=proj.load.power, torque=proj.load.torque,
                       service_factor=proj.load.service_factor),
-            tensioner=None if proj.tensioner is None else Tensioner(**proj.tensioner.model_dump()),
+            tensioner=None if proj.tensioner is None else proj.tensioner.to_tensioner(),
             adjustable=None if proj.adjustable is None else Adjustable(**proj.adjustable.model_dump()),
             guides=tuple(Guide(**g.model_dump()) for g in proj.guides),
             links=proj.drive.links, slack_tension=proj.drive.slack_tension,
@@ -501,7 +546,7 @@ def _speed_of(speed: float | ChainSpeedSpec, chain, wheels, filename: str, index
     if not isinstance(speed, ChainSpeedSpec):
         if len(driving) == 1 and driving[0].teeth is not None and not warn_implausible(
                 "drive.speed", speed, "angular_velocity", stacklevel=3):
-            v = driving[0].sides_per_turn(chain) * chain.pitch * speed / (2 * math.pi)
+            v = mean_chain_speed(driving[0].sides_per_turn(chain), chain.pitch, speed)
             warn_implausible("drive.speed (chain speed n p omega / 2 pi)", v, "chain_speed", stacklevel=3)
         return speed
     where = _where(filename, _line_for(("drive", "speed"), index))
@@ -515,10 +560,10 @@ def _speed_of(speed: float | ChainSpeedSpec, chain, wheels, filename: str, index
 
 
 def _self_regulating(table: dict[str, Any] | None, filename: str, index: dict) -> Any:
-    """The ``[self_regulating]`` table as a :class:`~chaindrive.drive.self_regulating.SelfRegulatingSpec`."""
+    """The ``[self_regulating]`` table as a :class:`~chaindrive.drive.carrier.SelfRegulatingSpec`."""
     if table is None:
         return None
-    from .self_regulating import SelfRegulatingSpec
+    from .carrier import SelfRegulatingSpec
 
     for key in ("pivot", "weight", "weight_offset", "stiffness", "preload"):
         values = table.get(key)

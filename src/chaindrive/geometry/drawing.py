@@ -31,7 +31,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from ..errors import InputError
-from .part import Groove, WheelPart, side_chamfer_thickness
+from .part import Groove, WheelPart, check_part_size, side_chamfer_thickness
 
 if TYPE_CHECKING:
     from ezdxf.document import Drawing
@@ -595,6 +595,7 @@ def part_drawing(part: WheelPart, *, date: str | None = None, sheet: Sheet | Non
     >>> len(doc.modelspace().query("DIMENSION")) >= 10, doc.audit().has_errors
     (True, False)
     """
+    check_part_size(part)  # bounded before anything is drawn (chaindrive.limits)
     try:
         import ezdxf  # noqa: F401
     except ImportError as exc:  # pragma: no cover - depends on install
@@ -659,6 +660,7 @@ def write_drawing(part: WheelPart, path: str | os.PathLike[str], *, force: bool 
     >>> f.is_file()
     True
     """
+    check_part_size(part)
     from .._io import check_output_path, save_dxf
 
     check_output_path(path, (".dxf",), option=option, force=force)

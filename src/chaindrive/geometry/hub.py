@@ -25,7 +25,7 @@ from importlib import resources
 import numpy as np
 from numpy.typing import ArrayLike
 
-from .._results import Result
+from .._results import Result, quantity
 from .._typing import FloatOrArray
 from .._validation import as_float_array, check_nonnegative, check_positive
 from ..errors import InputError
@@ -66,12 +66,12 @@ class ParallelKey(Result):
         Table citation.
     """
 
-    shaft_over: float
-    shaft_up_to: float
-    width: float
-    height: float
-    shaft_depth: float
-    hub_depth: float
+    shaft_over: float = quantity("m")
+    shaft_up_to: float = quantity("m")
+    width: float = quantity("m")
+    height: float = quantity("m")
+    shaft_depth: float = quantity("m")
+    hub_depth: float = quantity("m")
     source: str = KEYWAY_SOURCE
 
     def label(self) -> str:
@@ -267,12 +267,12 @@ class Hub(Result):
         Hub diameters allowed for this bore [m].
     """
 
-    bore: float
-    hub_diameter: float
-    hub_length: float
+    bore: float = quantity("m")
+    hub_diameter: float = quantity("m")
+    hub_length: float = quantity("m")
     key: ParallelKey | None
-    bore_range: tuple[float, float]
-    hub_diameter_range: tuple[float, float]
+    bore_range: tuple[float, float] = quantity("m")
+    hub_diameter_range: tuple[float, float] = quantity("m")
 
     @property
     def keyway_dimension(self) -> float | None:

@@ -14,7 +14,10 @@ from typing import Any
 import numpy as np
 from numpy.typing import ArrayLike
 
-__all__ = ["Line", "Arc", "Outline", "Primitive", "rotate_points"]
+from ..errors import InputError
+from ..limits import MAX_ARC_POINTS, MAX_PRIMITIVES, MAX_TEETH, check_size
+
+__all__ = ["Line", "Arc", "Outline", "Primitive", "rotate_points", "check_outline_size"]
 
 
 def rotate_points(points: ArrayLike, angle: float) -> np.ndarray:
@@ -42,6 +45,7 @@ class Line:
         return float(np.hypot(self.end[0] - self.start[0], self.end[1] - self.start[1]))
 
     def sample(self, n: int = 2) -> np.ndarray:
+        check_size("points", n, MAX_ARC_POINTS, minimum=0)
         t = np.linspace(0.0, 1.0, max(n, 2))[:, None]
         return (1 - t) * np.asarray(self.start) + t * np.asarray(self.end)
 
@@ -98,6 +102,7 @@ class Arc:
         return abs(self.sweep) * self.radius
 
     def sample(self, n: int = 16) -> np.ndarray:
+        check_size("points", n, MAX_ARC_POINTS, minimum=0)
         a = np.linspace(self.start_angle, self.end_angle, max(n, 2))
         return np.stack(
             [self.center[0] + self.radius * np.cos(a), self.center[1] + self.radius * np.sin(a)],
@@ -159,8 +164,13 @@ class Outline:
     centres: np.ndarray
     circles: dict[str, float] = field(default_factory=dict)
 
+    def __post_init__(self) -> None:
+        check_outline_size(self)
+
     def polyline(self, points_per_arc: int = 24) -> np.ndarray:
         """Dense closed polyline ``(n, 2)`` [m]; the first point is repeated at the end."""
+        check_size("points_per_arc", points_per_arc, MAX_ARC_POINTS, minimum=2)
+        check_outline_size(self)
         pts = [self.primitives[0].sample(2)[:1]]
         for prim in self.primitives:
             n = 2 if isinstance(prim, Line) else points_per_arc
@@ -194,8 +204,35 @@ class Outline:
         }
 
 
+def check_outline_size(outline: Outline, name: str = "outline") -> None:
+    """Refuse an outline with more than :data:`chaindrive.limits.MAX_PRIMITIVES` lines and
+    arcs, or more reference centres than :data:`chaindrive.limits.MAX_TEETH` (before it is
+    sampled, drawn or exported).
+
+    Examples
+    --------
+    >>> check_outline_size(Outline([Line((0.0, 0.0), (1.0, 0.0))] * 3, 1.0, np.zeros((0, 2))))
+    >>> Outline([Line((0.0, 0.0), (1.0, 0.0))] * 300_000, 1.0, np.zeros((0, 2)))
+    Traceback (most recent call last):
+    ...
+    chaindrive.errors.InputError: outline has 300000 lines and arcs; at most 200000 (chaindrive.limits.MAX_PRIMITIVES)
+    """
+    count = len(outline.primitives)
+    if count > MAX_PRIMITIVES:
+        raise InputError(f"{name} has {count} lines and arcs; at most {MAX_PRIMITIVES} "
+                         "(chaindrive.limits.MAX_PRIMITIVES)", field=name)
+    centres = int(np.size(outline.centres)) // 2
+    if centres > MAX_TEETH:
+        raise InputError(f"{name} has {centres} reference centres; at most {MAX_TEETH} "
+                         "(chaindrive.limits.MAX_TEETH)", field=name)
+
+
 def _repeat(tooth: list[Primitive], count: int) -> list[Primitive]:
     """Copies of one period's primitives rotated by ``2π k / count`` (internal)."""
+    check_size("teeth", count, MAX_TEETH)
+    if len(tooth) * count > MAX_PRIMITIVES:
+        raise InputError(f"an outline of {count} teeth of {len(tooth)} lines and arcs each has more than "
+                         f"{MAX_PRIMITIVES} (chaindrive.limits.MAX_PRIMITIVES)", field="teeth")
     out: list[Primitive] = []
     for k in range(count):
         ang = 2.0 * np.pi * k / count

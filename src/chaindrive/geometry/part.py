@@ -22,12 +22,13 @@ from typing import Any
 import numpy as np
 from numpy.typing import ArrayLike
 
-from .._results import Result
+from .._results import Result, quantity
 from .._typing import FloatOrArray
 from .._validation import as_float_array, check_positive
 from ..errors import InfeasibleError, InputError
+from ..limits import MAX_ARC_POINTS, MAX_SOLID_TEETH, MAX_TEETH, check_size
 from .hub import Hub, design_hub, keyway_area
-from .outline import Arc, Outline
+from .outline import Arc, Outline, check_outline_size
 from .pocket_wheel import DEFAULT_INNER_WIDTH_RATIO, PocketWheel
 from .sprocket import Sprocket
 
@@ -133,9 +134,9 @@ class WheelPart(Result):
     kind: str
     title: str
     chain: str
-    teeth: int
+    teeth: int = quantity("1")
     outline: Outline
-    width: float
+    width: float = quantity("m")
     hub: Hub
     chamfer: ToothChamfer | None
     groove: Groove | None
@@ -263,6 +264,26 @@ def side_chamfer_moment(radius: ArrayLike, width: float, tip_radius: float, side
     return w * r * r / 2.0 - 2.0 * removed
 
 
+def check_part_size(part: WheelPart, maximum: int = MAX_TEETH, *, what: str = "a drawing") -> None:
+    """Refuse a part with more teeth than ``maximum`` (one of :mod:`chaindrive.limits`), or
+    an outline larger than :data:`chaindrive.limits.MAX_PRIMITIVES`, before it is drawn.
+
+    Examples
+    --------
+    >>> from chaindrive.geometry.sprocket import Sprocket
+    >>> check_part_size(sprocket_part(Sprocket.from_chain("16B", 160)), MAX_SOLID_TEETH, what="a 3-D solid")
+    Traceback (most recent call last):
+    ...
+    chaindrive.errors.InputError: teeth: a 3-D solid is built for at most 150 teeth (chaindrive.limits.MAX_SOLID_TEETH), got 160
+    """
+    teeth = getattr(part, "teeth", None)
+    if isinstance(teeth, (int, np.integer)) and teeth > maximum:
+        name = "MAX_SOLID_TEETH" if maximum == MAX_SOLID_TEETH else "MAX_TEETH"
+        raise InputError(f"teeth: {what} is built for at most {maximum} teeth (chaindrive.limits.{name}), "
+                         f"got {teeth}", field="teeth")
+    check_outline_size(part.outline)
+
+
 def plate_volume(outline: Outline, width: float, chamfer: ToothChamfer | None = None, *,
                  points_per_arc: int = 720) -> float:
     r"""Volume of the outline extruded over ``width``, less the tooth side chamfer [m³].
@@ -297,6 +318,8 @@ def plate_volume(outline: Outline, width: float, chamfer: ToothChamfer | None = 
     """
     w = float(check_positive("width", width, "m"))
     # lines are subdivided too: G(r)/r² varies along a line that crosses the chamfer zone
+    check_outline_size(outline)
+    check_size("points_per_arc", points_per_arc, MAX_ARC_POINTS, minimum=2)
     pieces = [prim.sample(points_per_arc if isinstance(prim, Arc) else 64) for prim in outline.primitives]
     a = np.concatenate([q[:-1] for q in pieces])
     b = np.concatenate([q[1:] for q in pieces])

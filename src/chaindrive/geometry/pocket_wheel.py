@@ -26,7 +26,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from .._finite import finite_guard
-from .._results import Result
+from .._results import Result, quantity
 from .._validation import check_nonnegative, check_positive, check_teeth
 from ..errors import InfeasibleError, InputError
 from .outline import Arc, Line, Outline, Primitive, _drop_short, _repeat
@@ -89,27 +89,27 @@ def pocket_angles(pitch: float, bar_diameter: float, teeth: int) -> tuple[np.nda
     return np.mod(pockets, two_pi), np.mod(hinges, two_pi), np.mod(pockets + np.pi / z, two_pi)
 
 
-@dataclass
+@dataclass(frozen=True)
 class PocketWheelDimensions(Result):
     """Computed pocket wheel dimensions (m, rad)."""
 
-    pitch: float
-    bar_diameter: float
-    teeth: int
-    pitch_radius: float
-    central_angle_horizontal: float
-    central_angle_vertical: float
-    pocket_angles: np.ndarray
-    hinge_angles: np.ndarray
-    vertical_link_angles: np.ndarray
-    pocket_floor_distance: float
-    pocket_length: float
-    horizontal_link_centre_distance: float
-    vertical_link_centre_distance: float
-    slot_radius: float
-    slot_width: float
-    tip_radius: float
-    clearance: float
+    pitch: float = quantity("m")
+    bar_diameter: float = quantity("m")
+    teeth: int = quantity("1")
+    pitch_radius: float = quantity("m")
+    central_angle_horizontal: float = quantity("rad")
+    central_angle_vertical: float = quantity("rad")
+    pocket_angles: np.ndarray = quantity("rad")
+    hinge_angles: np.ndarray = quantity("rad")
+    vertical_link_angles: np.ndarray = quantity("rad")
+    pocket_floor_distance: float = quantity("m")
+    pocket_length: float = quantity("m")
+    horizontal_link_centre_distance: float = quantity("m")
+    vertical_link_centre_distance: float = quantity("m")
+    slot_radius: float = quantity("m")
+    slot_width: float = quantity("m")
+    tip_radius: float = quantity("m")
+    clearance: float = quantity("m")
     sources: dict[str, str]
 
 

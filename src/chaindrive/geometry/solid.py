@@ -29,10 +29,11 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
-from .._results import Result
+from .._results import Result, quantity
 from ..errors import InfeasibleError, InputError
+from ..limits import MAX_SOLID_TEETH
 from .outline import Line
-from .part import WheelPart
+from .part import WheelPart, check_part_size
 
 __all__ = ["STEP_SUFFIXES", "SolidCheck", "part_solid", "write_step", "read_step", "have_build123d"]
 
@@ -128,6 +129,7 @@ def part_solid(part: WheelPart) -> Any:
     >>> solid.is_valid  # doctest: +SKIP
     True
     """
+    check_part_size(part, MAX_SOLID_TEETH, what="a 3-D solid")  # OpenCascade takes minutes beyond
     bd = _bd()
     w = part.width * _MM
     body = bd.Solid.extrude(_outline_face(bd, part.outline), bd.Vector(0, 0, w)).moved(bd.Location((0, 0, -w / 2)))
@@ -180,6 +182,7 @@ def write_step(part: WheelPart, path: str | os.PathLike[str], *, force: bool = F
     >>> from chaindrive.geometry.part import sprocket_part
     >>> write_step(sprocket_part(Sprocket.from_chain("16B", 19)), "s.step")  # doctest: +SKIP
     """
+    check_part_size(part, MAX_SOLID_TEETH, what="a 3-D solid")  # OpenCascade takes minutes beyond
     import tempfile
 
     from .._io import atomic_write_bytes, check_output_path
@@ -196,15 +199,15 @@ def write_step(part: WheelPart, path: str | os.PathLike[str], *, force: bool = F
     return solid
 
 
-@dataclass
+@dataclass(frozen=True)
 class SolidCheck(Result):
     """What a STEP file holds: number of solids, validity, volume [m³], bounding box [m]."""
 
-    solids: int
+    solids: int = quantity("1")
     valid: bool
-    volume: float
-    bounding_box_min: tuple
-    bounding_box_max: tuple
+    volume: float = quantity("m^3", display="cm^3")
+    bounding_box_min: tuple[float, float, float] = quantity("m")
+    bounding_box_max: tuple[float, float, float] = quantity("m")
 
 
 def read_step(path: str | os.PathLike[str]) -> SolidCheck:

@@ -32,10 +32,11 @@ from numpy.typing import ArrayLike
 
 from .._finite import finite_guard
 from .._registry import Registry
-from .._results import Result
+from .._results import Result, quantity
 from .._typing import FloatOrArray
 from .._validation import as_float_array, check_positive
 from ..errors import InfeasibleError, InputError, ValidityRangeWarning
+from ..limits import MAX_TEETH
 from .outline import Arc, Line, Outline, _drop_short, _repeat
 
 if TYPE_CHECKING:
@@ -86,6 +87,11 @@ def _teeth(teeth) -> np.ndarray:
             f"teeth must be a whole number >= {MIN_TEETH} (ISO 606:2015 Annex A covers "
             f"z = {MIN_TEETH}...{MAX_TEETH_TABULATED}), got {got}"
         )
+    if np.any(z > MAX_TEETH):  # size-like: a bound before anything is drawn (chaindrive.limits)
+        got = f"{float(np.max(z)):.6g}"
+        raise InputError(f"teeth must be at most {MAX_TEETH} (chaindrive.limits.MAX_TEETH; ISO 606:2015 "
+                         f"Annex A tabulates z = {MIN_TEETH}...{MAX_TEETH_TABULATED}), got {got}",
+                         field="teeth")
     if np.any(z > MAX_TEETH_TABULATED):
         warnings.warn(
             f"teeth above {MAX_TEETH_TABULATED}: outside ISO 606:2015 Annex A "
@@ -558,28 +564,28 @@ def max_hub_diameter(pitch: ArrayLike, teeth: ArrayLike, plate_height: ArrayLike
 
 
 # --------------------------------------------------------------------------- ANSI form
-@dataclass
+@dataclass(frozen=True)
 class AnsiToothForm(Result):
     """ASME B29.1 tooth form constants (Machinery's Handbook "Sprocket tooth form"), SI."""
 
-    seating_curve_diameter: Any
-    seating_radius: Any
-    angle_a: Any
-    angle_b: Any
-    ac: Any
-    m: Any
-    t: Any
-    working_radius: Any
-    chord_xy: Any
-    line_yz: Any
-    ab: Any
-    w: Any
-    v: Any
-    topping_radius: Any
-    h: Any
-    s: Any
-    outside_diameter_turned: Any
-    outside_diameter_pointed: Any
+    seating_curve_diameter: Any = quantity("m")
+    seating_radius: Any = quantity("m")
+    angle_a: Any = quantity("rad")
+    angle_b: Any = quantity("rad")
+    ac: Any = quantity("m")
+    m: Any = quantity("m")
+    t: Any = quantity("m")
+    working_radius: Any = quantity("m")
+    chord_xy: Any = quantity("m")
+    line_yz: Any = quantity("m")
+    ab: Any = quantity("m")
+    w: Any = quantity("m")
+    v: Any = quantity("m")
+    topping_radius: Any = quantity("m")
+    h: Any = quantity("m")
+    s: Any = quantity("m")
+    outside_diameter_turned: Any = quantity("m")
+    outside_diameter_pointed: Any = quantity("m")
 
 
 @finite_guard
@@ -772,7 +778,7 @@ def _centres(radius, teeth):
     return np.stack([radius * np.cos(ang), radius * np.sin(ang)], axis=-1)
 
 
-@dataclass
+@dataclass(frozen=True)
 class IsoToothForm(Result):
     """One ISO 606 tooth gap (SI units); see :func:`iso_tooth_form`.
 
@@ -791,14 +797,14 @@ class IsoToothForm(Result):
         The flank reaches the tooth centreline before the tip circle.
     """
 
-    teeth: int
-    pitch_radius: float
-    seat_radius: float
-    seat_angle: float
-    flank_radius: float
-    tip_radius: float
-    flank_centre: np.ndarray
-    tooth_corner: np.ndarray
+    teeth: int = quantity("1")
+    pitch_radius: float = quantity("m")
+    seat_radius: float = quantity("m")
+    seat_angle: float = quantity("rad")
+    flank_radius: float = quantity("m")
+    tip_radius: float = quantity("m")
+    flank_centre: np.ndarray = quantity("m")
+    tooth_corner: np.ndarray = quantity("m")
     pointed: bool
 
 
@@ -867,8 +873,8 @@ def iso_tooth_form(pitch: float, teeth: int, roller_diameter: float, *, form: st
     if form not in ("min", "max"):
         raise InputError(f"form must be 'min' (minimum tooth gap) or 'max' (maximum tooth gap), got {form!r}")
     zf = float(as_float_array("teeth", teeth))
-    if zf != round(zf) or zf < 3:
-        raise InputError(f"teeth must be a whole number >= 3, got {zf:g}")
+    if zf != round(zf) or not 3 <= zf <= MAX_TEETH:
+        raise InputError(f"teeth must be a whole number in [3, {MAX_TEETH}], got {zf:g}", field="teeth")
     z = int(zf)
     p, d1 = (float(v) for v in _roller(pitch, roller_diameter))
     ri_lo, ri_hi = (float(v) for v in seating_radius_limits(d1))
@@ -972,41 +978,42 @@ def sprocket_outline(pitch: float, teeth: int, roller_diameter: float, *, method
     >>> o.closure_gap() < 1e-12, len(o.centres)
     (True, 19)
     """
-    fn = TOOTH_FORMS.get(method)
     if np.ndim(teeth) or np.ndim(pitch) or np.ndim(roller_diameter):
         raise InputError("sprocket_outline draws one wheel: pitch, teeth and roller_diameter must be scalars")
+    _teeth(teeth)  # bounded (MIN_TEETH...chaindrive.limits.MAX_TEETH) before anything is drawn
+    fn = TOOTH_FORMS.get(method)
     if method == "iso606" and form is None:
         form = "min"
     return fn(pitch, teeth, roller_diameter, form=form, tip_diameter=tip_diameter)
 
 
 # --------------------------------------------------------------------------- objects
-@dataclass
+@dataclass(frozen=True)
 class SprocketDimensions(Result):
     """Every computed sprocket dimension in SI units (m, rad)."""
 
     method: str
-    teeth: int
-    pitch: float
-    roller_diameter: float
-    pitch_diameter: float
-    root_diameter: float
-    tip_diameter_min: float
-    tip_diameter_max: float
-    seating_radius_min: float
-    seating_radius_max: float
-    seating_angle_min: float
-    seating_angle_max: float
-    flank_radius_min: float
-    flank_radius_max: float
-    tooth_height_min: float
-    tooth_height_max: float
-    measurement_over_pins: float
-    tooth_side_radius: float
-    tooth_side_relief_min: float
-    tooth_side_relief_max: float
-    tooth_width: float | None = None
-    max_hub_diameter: float | None = None
+    teeth: int = quantity("1")
+    pitch: float = quantity("m")
+    roller_diameter: float = quantity("m")
+    pitch_diameter: float = quantity("m")
+    root_diameter: float = quantity("m")
+    tip_diameter_min: float = quantity("m")
+    tip_diameter_max: float = quantity("m")
+    seating_radius_min: float = quantity("m")
+    seating_radius_max: float = quantity("m")
+    seating_angle_min: float = quantity("rad")
+    seating_angle_max: float = quantity("rad")
+    flank_radius_min: float = quantity("m")
+    flank_radius_max: float = quantity("m")
+    tooth_height_min: float = quantity("m")
+    tooth_height_max: float = quantity("m")
+    measurement_over_pins: float = quantity("m")
+    tooth_side_radius: float = quantity("m")
+    tooth_side_relief_min: float = quantity("m")
+    tooth_side_relief_max: float = quantity("m")
+    tooth_width: float | None = quantity("m", default=None)
+    max_hub_diameter: float | None = quantity("m", default=None)
     ansi: dict | None = None
     sources: dict = field(default_factory=dict)
 

@@ -28,7 +28,7 @@ from numpy.typing import ArrayLike
 
 from .._finite import finite_guard
 from .._registry import Registry
-from .._results import Result
+from .._results import Result, quantity
 from .._typing import FloatOrArray
 from .._validation import check_positive, check_range, check_teeth
 from ..errors import InfeasibleError, InputError
@@ -254,27 +254,27 @@ def _floats(pair: tuple[FloatOrArray, FloatOrArray]) -> tuple[float, float]:
     return float(pair[0]), float(pair[1])
 
 
-@dataclass
+@dataclass(frozen=True)
 class TrackDriveWheelDimensions(Result):
     """Computed track drive wheel dimensions (m) with the paper's allowed ranges."""
 
-    pitch: float
-    teeth: int
-    pin_radius: float
+    pitch: float = quantity("m")
+    teeth: int = quantity("1")
+    pin_radius: float = quantity("m")
     link: str
-    pitch_radius: float
-    root_factor: float
-    root_factor_range: tuple[float, float]
-    pin_seat_radius: float
-    pin_seat_radius_range: tuple[float, float]
-    root_radius: float
-    root_radius_range: tuple[float, float]
-    tip_factor: float
-    tip_factor_range: tuple[float, float]
-    tip_radius: float
-    tip_radius_range: tuple[float, float]
-    flank_radius: float
-    pointed_tip_radius: float
+    pitch_radius: float = quantity("m")
+    root_factor: float = quantity("1")
+    root_factor_range: tuple[float, float] = quantity("1")
+    pin_seat_radius: float = quantity("m")
+    pin_seat_radius_range: tuple[float, float] = quantity("m")
+    root_radius: float = quantity("m")
+    root_radius_range: tuple[float, float] = quantity("m")
+    tip_factor: float = quantity("1")
+    tip_factor_range: tuple[float, float] = quantity("1")
+    tip_radius: float = quantity("m")
+    tip_radius_range: tuple[float, float] = quantity("m")
+    flank_radius: float = quantity("m")
+    pointed_tip_radius: float = quantity("m")
     tooth_pointed: bool
     sources: dict[str, str]
 

@@ -7,11 +7,13 @@ Public API:
   ``model="exact"`` (general rigid-link solver) or ``model="paper"`` (Dolipiński et al.'s
   corrected closed forms); returns :class:`EntryKinematics`.
 * :func:`dolipinski_worked_case` - the three entries of Dolipiński et al.'s worked case.
-* :mod:`.paper` - the closed forms, :mod:`.solver` - the general vectorised solver.
+* :mod:`.paper` - the closed forms, :mod:`.solver` - the general vectorised solver; both
+  return :mod:`.histories` result classes (:class:`PaperEntry`, :class:`TautEntry`, :class:`RodEntry`).
 
 See ``docs/kinematics.md``.
 """
 
+from .._deprecation import renamed_attributes as _renamed_attributes
 from .entry import (
     ENTRIES,
     MODELS,
@@ -21,6 +23,7 @@ from .entry import (
     chain_entry_for,
     dolipinski_worked_case,
 )
+from .histories import EntryHistory, PaperEntry, RodEntry, TautEntry
 from .paper import (
     paper_chordal_entry,
     paper_free_entry,
@@ -34,6 +37,10 @@ __all__ = [
     "MODELS",
     "SUMMARY_KEYS",
     "EntryKinematics",
+    "EntryHistory",
+    "PaperEntry",
+    "RodEntry",
+    "TautEntry",
     "WheelPolygon",
     "chain_entry",
     "chain_entry_for",
@@ -47,3 +54,9 @@ __all__ = [
     "taut_entry",
     "taut_seating_angles",
 ]
+
+
+# former public names (renamed; deprecated, removed in the next release: chaindrive._deprecation)
+__getattr__ = _renamed_attributes(
+    "chaindrive.kinematics",
+    {"seed002_case": "dolipinski_worked_case"})

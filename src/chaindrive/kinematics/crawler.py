@@ -76,11 +76,12 @@ from numpy.typing import ArrayLike
 
 from .._finite import finite_guard
 from .._registry import Registry
-from .._results import Result
+from .._results import Result, quantity
 from .._typing import FloatOrArray
 from .._validation import as_float_array, check_positive, check_teeth
 from ..errors import InfeasibleError, InputError
 from ..geometry.polygon import roller_chain_pitch_radius
+from ..loads import mean_chain_speed
 
 __all__ = [
     "GUIDES",
@@ -702,7 +703,7 @@ SUMMARY_KEYS = (
 )
 
 
-@dataclass
+@dataclass(frozen=True)
 class CrawlerKinematics(Result):
     """Kinematics (and optionally the cam force) of the crawler drive over ``psi``.
 
@@ -742,23 +743,23 @@ class CrawlerKinematics(Result):
         ``E_П`` [N], ``A`` [m], ``l`` [m].
     """
 
-    psi: np.ndarray
-    displacement: np.ndarray
-    velocity: np.ndarray
-    acceleration: np.ndarray
-    transverse_position: np.ndarray
-    link_angle: np.ndarray | None
-    force: np.ndarray | None
+    psi: np.ndarray = quantity("rad")
+    displacement: np.ndarray = quantity("m")
+    velocity: np.ndarray = quantity("m/s")
+    acceleration: np.ndarray = quantity("m/s^2")
+    transverse_position: np.ndarray = quantity("m")
+    link_angle: np.ndarray | None = quantity("rad")
+    force: np.ndarray | None = quantity("N")
     summary: dict
     guide: str
-    pitch: float
-    radius: float
-    teeth: int
-    angular_velocity: float
-    period: float
-    stiffness: float | None = None
-    sprocket_distance: float | None = None
-    cam_distance: float | None = None
+    pitch: float = quantity("m")
+    radius: float = quantity("m")
+    teeth: int = quantity("1")
+    angular_velocity: float = quantity("rad/s")
+    period: float = quantity("rad")
+    stiffness: float | None = quantity("N", default=None)
+    sprocket_distance: float | None = quantity("m", default=None)
+    cam_distance: float | None = quantity("m", default=None)
 
 
 def _guided_vmin_angle(t, R, gamma):
@@ -943,7 +944,7 @@ def crawler_drive(pitch: float, teeth: int, angular_velocity: float, *, guide: s
             a = np.where(end, free_span_acceleration(left, t, z, w), a)
         else:
             a = np.where(end, guided_acceleration(left, t, z, w), a)
-    v_mean = z * t * w / (2.0 * np.pi)
+    v_mean = mean_chain_speed(z, t, w)
     v_max = w * R
     if kind == "none":
         psi_min = 0.0

@@ -49,16 +49,18 @@ Models (``model=``):
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+import dataclasses
+from dataclasses import dataclass
 from functools import lru_cache
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
 from numpy.typing import ArrayLike
 
+from .._deprecation import renamed_attributes as _renamed_attributes
 from .._finite import finite_guard
 from .._registry import Registry
-from .._results import Result
+from .._results import Result, quantity
 from .._validation import as_float_array, check_nonnegative, check_positive, check_teeth
 from ..errors import InfeasibleError, InputError
 from ..geometry.polygon import bi_regular_polygon, roller_chain_pitch_radius
@@ -99,7 +101,7 @@ SUMMARY_KEYS = (
 )
 
 
-@dataclass
+@dataclass(frozen=True)
 class EntryKinematics(Result):
     """Kinematics of the chain over the requested wheel angles.
 
@@ -149,28 +151,28 @@ class EntryKinematics(Result):
         paper model ``φ_g1, φ_g2``) [rad].
     """
 
-    phi: np.ndarray
-    x: np.ndarray
-    velocity: np.ndarray
-    acceleration: np.ndarray
-    transverse_position: np.ndarray | None
-    transverse_velocity: np.ndarray | None
-    transverse_acceleration: np.ndarray | None
+    phi: np.ndarray = quantity("rad")
+    x: np.ndarray = quantity("m")
+    velocity: np.ndarray = quantity("m/s")
+    acceleration: np.ndarray = quantity("m/s^2")
+    transverse_position: np.ndarray | None = quantity("m")
+    transverse_velocity: np.ndarray | None = quantity("m/s")
+    transverse_acceleration: np.ndarray | None = quantity("m/s^2")
     summary: dict
     entry: str
     model: str
     chain_type: str
-    pitch: float
-    bar_diameter: float
-    teeth: int
-    angular_velocity: float
-    radius: float
-    delta1: float
-    delta2: float
-    guide_height: float | None
-    guide_end_distance: float | None
-    period: float
-    seating_angles: np.ndarray = field(default_factory=lambda: np.zeros(0))
+    pitch: float = quantity("m")
+    bar_diameter: float = quantity("m")
+    teeth: int = quantity("1")
+    angular_velocity: float = quantity("rad/s")
+    radius: float = quantity("m")
+    delta1: float = quantity("rad")
+    delta2: float = quantity("rad")
+    guide_height: float | None = quantity("m")
+    guide_end_distance: float | None = quantity("m")
+    period: float = quantity("rad")
+    seating_angles: np.ndarray = quantity("rad", default_factory=lambda: np.zeros(0))
 
 
 @dataclass(frozen=True)
@@ -226,9 +228,8 @@ def _exact(case: _Case, phi):
     r = taut_entry(poly, phi, case.w, guide, seats)
     T = case.period
     s = np.mod(seats[:-1], T)
-    r["seats"] = np.sort(np.where(np.isclose(s, T, rtol=0, atol=1e-12), 0.0, s))
-    r["advance"] = poly.advance
-    return r
+    return dataclasses.replace(r, seats=np.sort(np.where(np.isclose(s, T, rtol=0, atol=1e-12), 0.0, s)),
+                               advance=poly.advance)
 
 
 @lru_cache(maxsize=64)
@@ -251,7 +252,7 @@ def _checked_seats(case: _Case) -> np.ndarray:
 def _check_reach(case, poly, seats):
     """At every instant the free span must hold at least one whole (longest) link."""
     grid = np.linspace(seats[0], seats[-1], 721)
-    span = taut_entry(poly, grid, case.w, case.guide(), seats)["span"]
+    span = taut_entry(poly, grid, case.w, case.guide(), seats).span
     longest = max(poly.links)
     if np.min(span) < longest:
         raise InfeasibleError(
@@ -267,18 +268,21 @@ def _paper_model(case: _Case, phi):
     with np.errstate(invalid="ignore"):
         if case.entry == "free":
             r = _paper.paper_free_entry(phi, case.R, d1, d2, case.w, roller=case.roller)
-            r["seats"] = np.array([0.0]) if case.roller else np.array([0.0, 0.5 * (d1 + d2)])
+            r = dataclasses.replace(r, seats=np.array([0.0]) if case.roller else np.array([0.0, 0.5 * (d1 + d2)]))
         elif case.entry == "chordal":
             r = _paper.paper_chordal_entry(phi, t, d, case.R, d1, d2, case.guide_end_distance(), case.w,
                                            roller=case.roller)
-            r["seats"] = np.array([0.0]) if case.roller else np.array([0.0, 0.5 * (d1 + d2)])
+            r = dataclasses.replace(r, seats=np.array([0.0]) if case.roller else np.array([0.0, 0.5 * (d1 + d2)]))
         elif case.entry == "tangential":
             r = _paper.paper_tangential_entry(phi, t, d, case.R, d1, d2, case.guide_end_distance(), case.w,
                                               roller=case.roller)
-            g1, g2 = r["limit_angles"]
-            r["seats"] = np.array([g1]) if case.roller else np.array([g1, g2])
-            if not case.roller and not (g1 < d1 < g2 < d1 + d2):
+            g1, g2 = r.limit_angles or (0.0, None)
+            if case.roller or g2 is None:
+                r = dataclasses.replace(r, seats=np.array([g1]))
+            elif not (g1 < d1 < g2 < d1 + d2):
                 raise InfeasibleError("limit angles out of order")
+            else:
+                r = dataclasses.replace(r, seats=np.array([g1, g2]))
         else:
             raise InputError(
                 "model='paper' covers entry 'free', 'chordal' and 'tangential' only "
@@ -389,8 +393,8 @@ def _summary(case: _Case, model: str, seats) -> dict:
     extra = extra[(extra > 0) & (extra < T)]
     grid = np.sort(np.concatenate([base[:-1], extra]))
     r = _run(case, model, grid)
-    v, a = r["velocity"], r["acceleration"]
-    advance = float(r["advance"])
+    v, a = r.velocity, r.acceleration
+    advance = float(r.advance)
     v_mean = advance / (T / case.w)
     # one-sided limits of the acceleration at the period end (left) and start (right)
     a_left = float(_run(case, model, np.array([T - 1e-12 * T]))["acceleration"][0])
@@ -408,7 +412,7 @@ def _summary(case: _Case, model: str, seats) -> dict:
         jump_list += list(hi - lo)
     jumps = np.asarray(jump_list)
     if case.entry == "free":
-        y = r["y"]
+        y = r.y
         throw = float(case.R - case.R * np.cos(0.5 * max(case.d1, case.d2)))
         throw = max(throw, float(np.max(y) - np.min(y)))
     else:
@@ -553,11 +557,12 @@ def chain_entry(
         if case.entry == "free":
             raise
         _explain_infeasible(case, model, exc)
-    summary = _summary(case, model, np.asarray(r["seats"], dtype=float))
+    summary = _summary(case, model, np.asarray(r.seats, dtype=float))
     shape = np.shape(phi_arr)
 
     def out(key):
-        return None if key not in r else np.reshape(r[key], shape)
+        value = getattr(r, key, None)
+        return None if value is None else np.reshape(value, shape)
 
     free = case.entry == "free"
     return EntryKinematics(
@@ -582,7 +587,7 @@ def chain_entry(
         guide_height=case.H,
         guide_end_distance=case.l,
         period=T,
-        seating_angles=np.asarray(r["seats"], dtype=float),
+        seating_angles=np.asarray(r.seats, dtype=float),
     )
 
 
@@ -649,3 +654,9 @@ def dolipinski_worked_case(model: str = "exact", points: int = 361) -> dict[str,
                        points=points)
         for e in ("free", "chordal", "tangential")
     }
+
+
+# former public names (renamed; deprecated, removed in the next release: chaindrive._deprecation)
+__getattr__ = _renamed_attributes(
+    "chaindrive.kinematics.entry",
+    {"seed002_case": "dolipinski_worked_case"})

@@ -6,6 +6,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
+from ..units import angular_velocity_to_rpm
 from ._axes import figure_of
 
 if TYPE_CHECKING:
@@ -16,7 +17,6 @@ if TYPE_CHECKING:
 
 __all__ = ["campbell_plot", "resonance_map_plot"]
 
-_RPM = 60.0 / (2.0 * np.pi)  # rad/s -> rpm
 _HZ = 1.0 / (2.0 * np.pi)  # rad/s -> Hz
 
 
@@ -68,7 +68,7 @@ def campbell_plot(result: CampbellResult, *, ax: Axes | None = None) -> Figure:
     else:
         fig = figure_of(ax)
     w = np.asarray(result.speed, dtype=float)
-    x = w * _RPM
+    x = angular_velocity_to_rpm(w)
     p = np.asarray(result.natural_frequencies, dtype=float)
     if p.ndim == 1:
         p = p[:, None]
@@ -96,8 +96,8 @@ def campbell_plot(result: CampbellResult, *, ax: Axes | None = None) -> Figure:
                    label="forbidden speeds: some P_i in a band" if n == 0 else None)
         ax.axvspan(x0, x1, ymin=0.0, ymax=0.025, color="red", lw=0, zorder=4)  # on the speed axis
     if result.design_speed is not None:
-        ax.axvline(result.design_speed * _RPM, color="0.3", lw=1, ls=":",
-                   label=f"design speed {result.design_speed * _RPM:.0f} rpm")
+        ax.axvline(angular_velocity_to_rpm(result.design_speed), color="0.3", lw=1, ls=":",
+                   label=f"design speed {angular_velocity_to_rpm(result.design_speed):.0f} rpm")
     ax.set_xlim(x[0], x[-1])
     ax.set_ylim(0, ymax)
     ax.set_xlabel("driving sprocket speed n₁ [rpm]")
@@ -171,7 +171,7 @@ def resonance_map_plot(result: ResonanceMapResult, *, ax: Axes | None = None) ->
     lo, hi = result.speed_range
     ax.set_title("Resonance map (the tensioner paper): first natural frequencies vs "
                  f"{', '.join(result.excitation_names)}\n"
-                 f"over n₁ = {lo * 60 / (2 * np.pi):.0f}…{hi * 60 / (2 * np.pi):.0f} rpm "
+                 f"over n₁ = {angular_velocity_to_rpm(lo):.0f}…{angular_velocity_to_rpm(hi):.0f} rpm "
                  f"({result.speeds} speeds)", fontsize=10)
     ax.legend(loc="lower left", fontsize=8, framealpha=0.9)
     fig.tight_layout()

@@ -19,9 +19,11 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from .._registry import Registry
-from .._results import Result
+from .._results import Result, quantity
 from .._validation import check_positive, check_teeth
 from ..errors import InputError, ValidityRangeWarning
+from ..loads import mean_chain_speed
+from ..units import angular_velocity_to_rpm
 from .ansi import (
     _LUBRICATION_SOURCE,
     HP,
@@ -95,18 +97,18 @@ class ChainRating(Result):
     """
 
     chain: str
-    pitch: float
-    strands: int
-    teeth: int
-    angular_velocity: float
-    chain_speed: float
-    link_plate: float
-    roller_bushing: float
-    galling: float
-    rated_power: float
+    pitch: float = quantity("m")
+    strands: int = quantity("1")
+    teeth: int = quantity("1")
+    angular_velocity: float = quantity("rad/s")
+    chain_speed: float = quantity("m/s")
+    link_plate: float = quantity("W")
+    roller_bushing: float = quantity("W")
+    galling: float = quantity("W")
+    rated_power: float = quantity("W")
     governing_limit: str
-    tension: float
-    galling_speed: float
+    tension: float = quantity("N")
+    galling_speed: float = quantity("rad/s")
     galling_exceeded: bool
     lubrication: str
     lubrication_method: str
@@ -203,7 +205,7 @@ def _ansi_rating(chain: Chain | str, teeth: int, angular_velocity: float, *,
         k2 = multi_strand_factor(ch.strands)
         h1 = float(ansi_link_plate_power(z, w, ch.pitch, kp))
         h2 = float(ansi_roller_bushing_power(z, w, ch.pitch, kr))
-        v = z * ch.pitch * w / (2 * np.pi)
+        v = mean_chain_speed(z, ch.pitch, w)
         h3 = float(galling_power(ch.pitch, z, w))
         tension = (min(h1, h2) if design is None else design / k2) / v
         n_gall = float(galling_speed(ch.pitch, z, tension))
@@ -218,7 +220,7 @@ def _ansi_rating(chain: Chain | str, teeth: int, angular_velocity: float, *,
     exceeded = bool(w > n_gall)
     if exceeded:
         region = "C'"
-        notes.append(f"galling region: the joints gall above {n_gall * 30 / np.pi:.4g} rpm at "
+        notes.append(f"galling region: the joints gall above {angular_velocity_to_rpm(n_gall):.4g} rpm at "
                      f"{tension / 1e3:.3g} kN per strand (Shigley §17-5); submit the design to the "
                      "chain manufacturer")
     return ChainRating(

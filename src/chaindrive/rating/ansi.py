@@ -34,6 +34,8 @@ from numpy.typing import ArrayLike
 from .._finite import finite_guard
 from .._validation import check_nonnegative, check_positive, check_teeth, warn_outside
 from ..errors import InputError, UnknownNameError, ValidityRangeWarning
+from ..loads import mean_chain_speed
+from ..units import angular_velocity_to_rpm, rpm_to_angular_velocity
 
 __all__ = [
     "HP",
@@ -55,7 +57,6 @@ __all__ = [
 
 HP = 745.69987158227022
 _INCH = 0.0254
-_RPM = 2.0 * np.pi / 60.0
 
 
 def _inputs(teeth, angular_velocity, pitch):
@@ -63,7 +64,7 @@ def _inputs(teeth, angular_velocity, pitch):
     w = check_positive("angular_velocity", angular_velocity, "rad/s")
     p = check_positive("pitch", pitch, "m")
     warn_outside("teeth", z, 9, 45, "the ANSI/ACA rating (tables for 9…45 teeth)", stacklevel=4)
-    return z, w / _RPM, p / _INCH
+    return z, angular_velocity_to_rpm(w), p / _INCH
 
 
 def ansi_link_plate_power(teeth: ArrayLike, angular_velocity: ArrayLike, pitch: ArrayLike,
@@ -361,7 +362,7 @@ def galling_speed(pitch: ArrayLike, teeth: ArrayLike, tension: ArrayLike) -> np.
     warn_outside("pitch [in]", p, *_GALLING_PITCH_RANGE_IN, "the galling limit (ANSI nos. 25-240)",
                  stacklevel=3)
     log_ratio = math.log(82.5) - p * math.log(7.95) - z * math.log(1.0278) - f / 1000.0 * math.log(1.323)
-    return 1000.0 * np.exp(_galling_exponent(p) * log_ratio) * _RPM
+    return rpm_to_angular_velocity(1000.0 * np.exp(_galling_exponent(p) * log_ratio))
 
 
 def _galling_tension_lbf(p_in, z, n_rpm):
@@ -403,12 +404,13 @@ def galling_tension(pitch: ArrayLike, teeth: ArrayLike, angular_velocity: ArrayL
     """
     p = check_positive("pitch", pitch, "m") / _INCH
     z = check_teeth("teeth", teeth)
-    n = check_positive("angular_velocity", angular_velocity, "rad/s") / _RPM
+    n = angular_velocity_to_rpm(check_positive("angular_velocity", angular_velocity, "rad/s"))
     warn_outside("pitch [in]", p, *_GALLING_PITCH_RANGE_IN, "the galling limit (ANSI nos. 25-240)",
                  stacklevel=3)
     f = _galling_tension_lbf(p, z, n) * _LBF
     if np.any(f < 0):
-        n0 = float(np.min(np.broadcast_to(galling_speed(pitch, teeth, 0.0), np.shape(f))[f < 0])) / _RPM
+        n0 = float(np.min(np.broadcast_to(galling_speed(pitch, teeth, 0.0), np.shape(f))[f < 0]))
+        n0 = angular_velocity_to_rpm(n0)
         warnings.warn(
             f"angular_velocity is above the galling speed at zero tension ({n0:.4g} rpm): the "
             "chain galls unloaded, galling tension 0 returned",
@@ -451,7 +453,7 @@ def galling_power(pitch: ArrayLike, teeth: ArrayLike, angular_velocity: ArrayLik
     131.6
     """
     f = galling_tension(pitch, teeth, angular_velocity)
-    v = np.asarray(teeth) * np.asarray(pitch, dtype=float) * np.asarray(angular_velocity, dtype=float) / (2 * np.pi)
+    v = mean_chain_speed(np.asarray(teeth), np.asarray(pitch, dtype=float), np.asarray(angular_velocity, dtype=float))
     return f * v
 
 

@@ -22,6 +22,7 @@ Examples
 0.418
 """
 
+from .._deprecation import renamed_attributes as _renamed_attributes
 from .bolts import (
     FittedBoltResult,
     FrictionBoltResult,
@@ -96,3 +97,10 @@ __all__ = [
     "pin_tooth_contact_stress", "tooth_bending_stress", "track_design_force", "track_tooth_check",
     "track_tooth_section",
 ]
+
+
+# former public names (renamed; deprecated, removed in the next release: chaindrive._deprecation)
+__getattr__ = _renamed_attributes(
+    "chaindrive.strength",
+    {"seed_contact_stress": "skew_paper_contact_stress",
+     "seed_contact_coefficient": "skew_paper_contact_coefficient"})

@@ -22,7 +22,7 @@ import numpy as np
 from numpy.typing import ArrayLike
 
 from .._finite import finite_guard
-from .._results import Result
+from .._results import Result, quantity
 from .._typing import FloatOrArray
 from .._validation import check_positive, check_range
 from ..errors import InputError
@@ -134,11 +134,11 @@ class FittedBoltResult(Result):
     ``bearing_stress`` [Pa] (None without a clamp thickness), ``shear_safety``,
     ``bearing_safety`` [-] (None without an allowable), ``passes``."""
 
-    bolt_force: float
-    shear_stress: float
-    bearing_stress: float | None
-    shear_safety: float | None
-    bearing_safety: float | None
+    bolt_force: float = quantity("N")
+    shear_stress: float = quantity("Pa")
+    bearing_stress: float | None = quantity("Pa")
+    shear_safety: float | None = quantity("1")
+    bearing_safety: float | None = quantity("1")
     passes: bool
 
 
@@ -208,10 +208,10 @@ class FrictionBoltResult(Result):
     a stress area), ``yield_safety`` R_p0.2 / σ_V [-] (None without a yield strength),
     ``passes``."""
 
-    bolt_force: float
-    required_preload: float
-    preload_stress: float | None
-    yield_safety: float | None
+    bolt_force: float = quantity("N")
+    required_preload: float = quantity("N")
+    preload_stress: float | None = quantity("Pa")
+    yield_safety: float | None = quantity("1")
     passes: bool
 
 

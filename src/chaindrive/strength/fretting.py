@@ -38,7 +38,7 @@ from numpy.typing import ArrayLike
 
 from .._finite import finite_guard
 from .._registry import Registry
-from .._results import Result
+from .._results import Result, quantity
 from .._typing import FloatOrArray
 from .._validation import check_nonnegative, check_positive
 from ..errors import InfeasibleError, InputError
@@ -130,13 +130,13 @@ class BeamSolution(Result):
     (positive against the load), ``support_slopes`` [rad].
     """
 
-    x: np.ndarray
-    deflection: np.ndarray
-    slope: np.ndarray
-    moment: np.ndarray
-    supports: np.ndarray
-    reactions: np.ndarray
-    support_slopes: np.ndarray
+    x: np.ndarray = quantity("m")
+    deflection: np.ndarray = quantity("m")
+    slope: np.ndarray = quantity("rad")
+    moment: np.ndarray = quantity("N*m")
+    supports: np.ndarray = quantity("m")
+    reactions: np.ndarray = quantity("N")
+    support_slopes: np.ndarray = quantity("rad")
 
 
 @finite_guard
@@ -257,15 +257,15 @@ class PinBendingResult(Result):
     ``beam`` the nodal beam solution for a unit load (1 N).
     """
 
-    load: np.ndarray | float
+    load: np.ndarray | float = quantity("N")
     intermediate_plates: bool
-    max_deflection: np.ndarray | float
-    max_moment: np.ndarray | float
-    max_stress: np.ndarray | float
-    seat_slopes: np.ndarray
-    max_slope: np.ndarray | float
-    slip_amplitude: np.ndarray | float
-    reactions: np.ndarray
+    max_deflection: np.ndarray | float = quantity("m")
+    max_moment: np.ndarray | float = quantity("N*m")
+    max_stress: np.ndarray | float = quantity("Pa")
+    seat_slopes: np.ndarray = quantity("rad")
+    max_slope: np.ndarray | float = quantity("rad")
+    slip_amplitude: np.ndarray | float = quantity("m", display="µm")
+    reactions: np.ndarray = quantity("N")
     beam: BeamSolution = field(repr=False)
 
 
@@ -397,15 +397,15 @@ class FrettingComparison(Result):
     ``latent_with`` τ [s]; ``life_ratio`` τ_with / τ_without [-]; ``normal_load`` [N].
     """
 
-    slip_without: np.ndarray | float
-    slip_with: np.ndarray | float
-    slip_ratio: np.ndarray | float
-    stress_without: np.ndarray | float
-    stress_with: np.ndarray | float
-    normal_load: np.ndarray | float
-    latent_without: np.ndarray | float
-    latent_with: np.ndarray | float
-    life_ratio: np.ndarray | float
+    slip_without: np.ndarray | float = quantity("m", display="µm")
+    slip_with: np.ndarray | float = quantity("m", display="µm")
+    slip_ratio: np.ndarray | float = quantity("1")
+    stress_without: np.ndarray | float = quantity("Pa")
+    stress_with: np.ndarray | float = quantity("Pa")
+    normal_load: np.ndarray | float = quantity("N")
+    latent_without: np.ndarray | float = quantity("s")
+    latent_with: np.ndarray | float = quantity("s")
+    life_ratio: np.ndarray | float = quantity("1")
 
 
 @finite_guard

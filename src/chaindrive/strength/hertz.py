@@ -20,6 +20,7 @@ import warnings
 import numpy as np
 from numpy.typing import ArrayLike
 
+from .._deprecation import renamed_attributes as _renamed_attributes
 from .._finite import finite_guard
 from .._registry import Registry
 from .._typing import FloatOrArray
@@ -330,3 +331,10 @@ def warn_conformal(half_width: ArrayLike, radius: ArrayLike, what: str = "contac
             ValidityRangeWarning,
             stacklevel=3,
         )
+
+
+# former public names (renamed; deprecated, removed in the next release: chaindrive._deprecation)
+__getattr__ = _renamed_attributes(
+    "chaindrive.strength.hertz",
+    {"seed_contact_stress": "skew_paper_contact_stress",
+     "seed_contact_coefficient": "skew_paper_contact_coefficient"})

@@ -37,7 +37,7 @@ from numpy.typing import ArrayLike
 
 from .._finite import finite_guard
 from .._registry import Registry
-from .._results import Result
+from .._results import Result, quantity
 from .._typing import FloatOrArray
 from .._validation import check_nonnegative, check_positive, check_range, warn_outside
 from ..errors import InputError, ValidityRangeWarning
@@ -343,20 +343,20 @@ class RollerContactResult(Result):
     ``relative_life_fatigue`` L/L0 [-], ``contact`` "convex"/"concave".
     """
 
-    nominal_load: np.ndarray | float
-    max_skew: np.ndarray | float
-    design_skew: np.ndarray | float
-    gamma: np.ndarray | float
-    load_factor: np.ndarray | float
-    equivalent_load: np.ndarray | float
-    reduced_radius: np.ndarray | float
-    effective_modulus: np.ndarray | float
-    stress_unskewed: np.ndarray | float
-    stress: np.ndarray | float
-    stress_ratio: np.ndarray | float
-    half_width: np.ndarray | float
-    relative_life_wear: np.ndarray | float
-    relative_life_fatigue: np.ndarray | float
+    nominal_load: np.ndarray | float = quantity("N")
+    max_skew: np.ndarray | float = quantity("rad")
+    design_skew: np.ndarray | float = quantity("rad")
+    gamma: np.ndarray | float = quantity("1/arcmin^2")
+    load_factor: np.ndarray | float = quantity("1")
+    equivalent_load: np.ndarray | float = quantity("N")
+    reduced_radius: np.ndarray | float = quantity("m")
+    effective_modulus: np.ndarray | float = quantity("Pa", display="GPa")
+    stress_unskewed: np.ndarray | float = quantity("Pa")
+    stress: np.ndarray | float = quantity("Pa")
+    stress_ratio: np.ndarray | float = quantity("1")
+    half_width: np.ndarray | float = quantity("m")
+    relative_life_wear: np.ndarray | float = quantity("1")
+    relative_life_fatigue: np.ndarray | float = quantity("1")
     contact: str
 
 
@@ -369,7 +369,7 @@ def roller_contact_stress(
     *,
     contact: str = "concave",
     max_skew: ArrayLike = 0.0,
-    wear_factor: float = 0.65,
+    wear_factor: ArrayLike = 0.65,
     pitch: float | None = None,
     gamma: float | None = None,
     elastic_modulus: float = STEEL_ELASTIC_MODULUS,
@@ -402,7 +402,7 @@ def roller_contact_stress(
         Roller in the concave seat (default) or on a convex flank.
     max_skew : float or array_like
         Largest measured skew ``φ_p,max`` [rad] (:func:`skew_from_measurement`).
-    wear_factor : float
+    wear_factor : float or array_like
         ``K_φ`` [-], the paper's range 0.6…0.7.
     pitch : float, optional
         Chain pitch [m], used for ``γ`` (:func:`skew_gamma`) when ``gamma`` is None.
@@ -551,7 +551,7 @@ class RollerToothContact:
                 raise InputError("length (roller length > 0 m) is needed: the chain has no inner width")
         return cls(chain.pitch, d1, seat_radius, length, contact)
 
-    def stress(self, load: ArrayLike, *, max_skew: ArrayLike = 0.0, wear_factor: float = 0.65,
+    def stress(self, load: ArrayLike, *, max_skew: ArrayLike = 0.0, wear_factor: ArrayLike = 0.65,
                outside: str = "warn") -> RollerContactResult:
         """Contact stress for ``load`` [N] and ``max_skew`` [rad]; see :func:`roller_contact_stress`."""
         return roller_contact_stress(

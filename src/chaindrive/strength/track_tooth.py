@@ -27,7 +27,7 @@ import numpy as np
 from numpy.typing import ArrayLike
 
 from .._finite import finite_guard
-from .._results import Result
+from .._results import Result, quantity
 from .._typing import FloatOrArray
 from .._validation import check_positive, check_range, check_teeth, warn_outside
 from ..errors import InfeasibleError, InputError
@@ -279,15 +279,15 @@ class TrackToothResult(Result):
     allowable), ``passes`` all safety factors >= 1, ``hardness`` [HRC], ``sources``.
     """
 
-    design_force: float
-    root_thickness: float
-    lever_arm: float
-    bending_stress: float
-    contact_stress: float
-    reduced_radius: float
-    bending_safety: float | None
-    contact_safety: float | None
-    hardness: float | None
+    design_force: float = quantity("N")
+    root_thickness: float = quantity("m")
+    lever_arm: float = quantity("m")
+    bending_stress: float = quantity("Pa")
+    contact_stress: float = quantity("Pa")
+    reduced_radius: float = quantity("m")
+    bending_safety: float | None = quantity("1")
+    contact_safety: float | None = quantity("1")
+    hardness: float | None = quantity("HRC")
     passes: bool
     sources: dict[str, str]
 

@@ -27,7 +27,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
-from .._io import atomic_write_bytes, atomic_write_text
+from .._io import atomic_write_bytes, atomic_write_text, folder_lock
 from .._results import jsonable
 from ..errors import InfeasibleError, InputError
 from .spec import MAXIMUM_BATCH_SIZE, Study, set_path
@@ -246,6 +246,13 @@ def run_batch(batch: Sequence[tuple[int, str, dict]], *, base: dict, outputs: Se
     [(0, 'k0', True), (1, 'k1', False)]
     """
     worker = f"{socket.gethostname()}:{os.getpid()}"
+    if simulation is None:  # the analysis parts of many variants together (chaindrive.study.batch)
+        from .batch import evaluate_batch
+
+        rows = evaluate_batch(base, [inputs for _, _, inputs in batch], outputs, parts=parts)
+        for (number, key, _), row in zip(batch, rows, strict=True):
+            row.update(key=key, variant=number, worker=worker)
+        return rows
     rows = []
     for number, key, inputs in batch:
         row = evaluate_variant(base, inputs, outputs, parts=parts, simulation=simulation)
@@ -584,6 +591,16 @@ def run_study(study: Study, directory: str | Path, *, scheduler: str | None = No
     """
     t_start = time.perf_counter()
     directory = Path(directory)
+    # one study at a time per folder: a second one into it is refused at once (it would
+    # compute every variant again); the lock is the run folders' (.NAME.lock beside it)
+    with folder_lock(directory, option="--output", what="study"):
+        return _run_study(study, directory, t_start, scheduler=scheduler, workers=workers,
+                          batch_size=batch_size, progress=progress, wait_for_workers=wait_for_workers)
+
+
+def _run_study(study: Study, directory: Path, t_start: float, *, scheduler: str | None,
+               workers: int | None, batch_size: int | None, progress: bool,
+               wait_for_workers: float) -> StudyRun:
     batch_size = batch_size if batch_size is not None else study.batch_size
     if batch_size is not None and not 1 <= batch_size <= MAXIMUM_BATCH_SIZE:
         raise InputError(f"batch_size must lie in [1, {MAXIMUM_BATCH_SIZE}], got {batch_size}")

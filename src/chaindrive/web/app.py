@@ -52,7 +52,7 @@ class AppContext:
 
 
 def create_app(*, max_jobs: int = 4, job_workers: int = 2, job_time_limit: float = 90.0,
-               live_workers: int = 2, live_waiting: int = 8) -> FastAPI:
+               live_workers: int = 2, live_waiting: int = 8, body_timeout: float | None = None) -> FastAPI:
     """Build the FastAPI application.
 
     Parameters
@@ -66,6 +66,9 @@ def create_app(*, max_jobs: int = 4, job_workers: int = 2, job_time_limit: float
         Wall time cap of a job [s]; it is killed after that.
     live_workers, live_waiting : int
         Threads of the live analysis, and requests admitted to it at a time.
+    body_timeout : float, optional
+        Time for a request body to arrive [s] (default
+        :data:`chaindrive.web.security.BODY_TIMEOUT`); later: 408.
 
     Returns
     -------
@@ -152,14 +155,14 @@ def create_app(*, max_jobs: int = 4, job_workers: int = 2, job_time_limit: float
     def about(request: Request):
         return ctx.render(request, "about.html")
 
-    return _with_limits(app)
+    return _with_limits(app, body_timeout)
 
 
-def _with_limits(app: Any) -> Any:
-    """Install the size limits and security headers as the outermost middleware."""
-    from .security import LimitsMiddleware
+def _with_limits(app: Any, body_timeout: float | None = None) -> Any:
+    """Install the size limits, the body deadline and security headers as the outermost middleware."""
+    from .security import BODY_TIMEOUT, LimitsMiddleware
 
-    app.add_middleware(LimitsMiddleware)
+    app.add_middleware(LimitsMiddleware, body_timeout=BODY_TIMEOUT if body_timeout is None else body_timeout)
     return app
 
 

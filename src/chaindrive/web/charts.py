@@ -7,12 +7,12 @@ which the app serves from the installed ``plotly`` package (nothing from the int
 
 from __future__ import annotations
 
-import math
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
 from ..errors import ChainDriveError
+from ..units import angular_velocity_to_rpm, rpm_to_angular_velocity
 
 if TYPE_CHECKING:
     from ..analysis.vibration import _Excitation
@@ -22,7 +22,6 @@ if TYPE_CHECKING:
 
 __all__ = ["rating_chart", "campbell_chart", "resonance_map_chart", "tensioner_span_of"]
 
-RPM = 2.0 * math.pi / 60.0
 _LAYOUT = {"margin": {"l": 60, "r": 20, "t": 40, "b": 60}, "height": 400,
            "font": {"family": "DejaVu Sans, Arial, sans-serif", "size": 12},
            "paper_bgcolor": "#ffffff", "plot_bgcolor": "#fbfcfe",
@@ -53,7 +52,7 @@ def rating_chart(design: Design, *, units: str = "metric") -> dict[str, Any]:
     from ..rating import rated_power_curve
 
     label, factor = _power_unit(units)
-    speeds = np.geomspace(10, 6000, 120) * RPM
+    speeds = rpm_to_angular_velocity(np.geomspace(10, 6000, 120))
     traces = []
     names = [c["chain"] for c in design.candidates[:5]]
     if design.chain.name not in names:
@@ -69,11 +68,11 @@ def rating_chart(design: Design, *, units: str = "metric") -> dict[str, Any]:
             power = rated_power_curve(ch, design.teeth_driving, speeds)
         ok = np.isfinite(power) & (power > 0)
         traces.append({"type": "scatter", "mode": "lines", "name": name,
-                       "x": (speeds[ok] / RPM).round(3).tolist(), "y": (power[ok] * factor).round(5).tolist(),
+                       "x": angular_velocity_to_rpm(speeds[ok]).round(3).tolist(), "y": (power[ok] * factor).round(5).tolist(),
                        "line": {"width": 3 if name == design.chain.name else 1.5},
                        "hovertemplate": f"{name}<br>%{{x:.0f}} rpm<br>%{{y:.3g}} {label}<extra></extra>"})
     traces.append({"type": "scatter", "mode": "markers", "name": "operating point",
-                   "x": [design.speed / RPM], "y": [design.design_power * factor],
+                   "x": [angular_velocity_to_rpm(design.speed)], "y": [design.design_power * factor],
                    "marker": {"size": 13, "symbol": "x", "color": "#c0392b"},
                    "hovertemplate": f"design power K_s P<br>%{{x:.0f}} rpm<br>%{{y:.3g}} {label}<extra></extra>"})
     title = (f"ANSI/ACA rating (Shigley eqs 17-32, 17-33), z1 = {design.teeth_driving}"

@@ -21,13 +21,13 @@ from ..design.duty import service_factor_table
 from ..design.link import link_candidates
 from ..design.policy import BASE_TEETH
 from ..errors import ChainDriveError, InputError, ValidityRangeWarning
+from ..units import angular_velocity_to_rpm
 from .fields import FieldError, FieldSpec, parse_field, parse_integer
 from .wheels import EXTRA_CHOICES, EXTRA_DEFAULTS, add_extra_wheels, extra_wheels
 
 __all__ = ["DEFAULTS", "FIELDS", "Design", "service_factor_table", "normalise_state",
            "design_from_state", "state_from_project", "MINING_EXAMPLE", "ROLLER_EXAMPLE"]
 
-RPM = 2.0 * math.pi / 60.0
 
 #: Every field of the studio form, its default text (roller-chain example).
 DEFAULTS: dict[str, str] = {
@@ -520,7 +520,7 @@ def state_from_project(text: str, filename: str = "project.toml") -> dict[str, s
     state.update({
         "name": drive.name,
         "kind": "link" if drive.chain.is_link_chain else "roller",
-        "speed": f"{drive.speed / RPM:.6g} rpm" if drive.speed > 20 else f"{drive.speed:.6g} rad/s",
+        "speed": f"{angular_velocity_to_rpm(drive.speed):.6g} rpm" if drive.speed > 20 else f"{drive.speed:.6g} rad/s",
         "driven_speed": "",
         "ratio": f"{(other.teeth or 1) / (drv.teeth or 1):.6g}",
         "chain": drive.chain.name,

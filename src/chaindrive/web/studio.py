@@ -25,6 +25,7 @@ from starlette.datastructures import UploadFile as StarletteUpload
 from .._results import jsonable
 from ..analysis.loads import REQUIRED_STATIC_SAFETY
 from ..errors import ChainDriveError, InputError
+from ..units import angular_velocity_to_rpm
 from .design import (
     DEFAULTS,
     FIELDS,
@@ -123,7 +124,7 @@ def studio_payload(state: dict[str, str]) -> dict[str, Any]:
     lay = layout_summary(drive, analysis.layout)
     out["duty"] = {
         "power": show(design.power, "W", units), "design_power": show(design.design_power, "W", units),
-        "speed_rpm": fmt(design.speed * 60 / (2 * 3.141592653589793)), "ratio": fmt(design.ratio),
+        "speed_rpm": fmt(angular_velocity_to_rpm(design.speed)), "ratio": fmt(design.ratio),
         "service_factor": fmt(design.service_factor), "service_factor_source": design.service_factor_source,
         "load_character": table["characters"][design.load_character],
         "hours_per_day": fmt(design.hours_per_day),
