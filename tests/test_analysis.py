@@ -52,7 +52,13 @@ def test_results_json_numbers_unchanged(name, tmp_path):
     # `chaindrive analyze` wrote for the three examples before the analysis layer
     # (commit 0e69f60); every number of their sections' results must still be there.
     old = json.loads((BASELINE / f"{name}.json").read_text(encoding="utf-8"))
-    outcome = analyze(load_project(EXAMPLES / f"{name}.toml"), tmp_path, figures=False)
+    drive = load_project(EXAMPLES / f"{name}.toml")
+    if name == "tractor_track":
+        # the example's torque moved on purpose from 8.08 to 16.16 kN·m (Sharipov's i is the
+        # number of toothed rims of the drive wheel, not the number of tracks: docs/strength.md);
+        # with the baseline's torque every number of the baseline must still be there
+        drive = dataclasses.replace(drive, load=dataclasses.replace(drive.load, torque=8080.0))
+    outcome = analyze(drive, tmp_path, figures=False)
     new = json.loads(outcome.files["json"].read_text(encoding="utf-8"))
     values = sorted(v for _, v in _leaves(new))
     missing = []

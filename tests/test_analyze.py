@@ -72,8 +72,19 @@ def test_tractor_has_track_tooth_checks(outcomes):
     assert any("tooth bending" in n for n in names)
     data = json.loads((folder / "results.json").read_text())
     tt = data["sections"]["Strength: contact with skew, track wheel teeth"]["results"]["track_tooth"]
-    # Sharipov: P_R = 0.65 G_T φ / i = 0.65 · 70 kN · 1 / 2 = 22.75 kN
+    # Sharipov: P_R = P / i, P = 0.65 G_T φ = 0.65 · 70 kN · 1 = 45.5 kN, i = 2 rims -> 22.75 kN
     assert tt["design_force"] == pytest.approx(22750.0, rel=1e-12)
+    # the wheel's design torque P R_0 and one rim's P_P R_0 (R_0 = 0.17 / (2 sin(π/13)))
+    r0 = 0.17 / (2 * math.sin(math.pi / 13))
+    assert tt["design_torque"] == pytest.approx(45500.0 * r0, rel=1e-12)
+    assert tt["rim_torque"] == pytest.approx(22750.0 * r0, rel=1e-12)
+    # the rim bolts (Fig. 14) are in the report: F = P_P R_0 / (n R_b), τ = 4F / (π d²)
+    bolts = data["sections"]["Strength: contact with skew, track wheel teeth"]["results"]["rim_bolts"]
+    force = 22750.0 * r0 / (12 * 0.26)
+    assert bolts["bolt_force"] == pytest.approx(force, rel=1e-12)
+    assert bolts["shear_stress"] == pytest.approx(4 * force / (math.pi * 0.02**2), rel=1e-12)
+    assert any(n.startswith("rim bolt shear safety") for n in names)
+    assert any(n.startswith("tip radius holds the worn chain") for n in names)
 
 
 def test_cli_analyze_exit_codes(tmp_path, capsys):

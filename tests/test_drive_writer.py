@@ -40,3 +40,16 @@ def test_self_regulating_refused():
     d = load_project(EXAMPLES / "self_regulating.toml")
     with pytest.raises(InputError, match="self_regulating"):
         drive_to_toml(d)
+
+
+def test_crawler_fretting_and_rim_bolts_tables_are_written():
+    from chaindrive.drive.model import FrettingSpec
+
+    d = load_project(EXAMPLES / "crawler_conveyor.toml")
+    d2 = dataclasses.replace(d, fretting=FrettingSpec(roughness=0.8e-6, latent_coefficient=1e9,
+                                                      decay_coefficient=1e-6, frequency=12.5))
+    text = drive_to_toml(d2)
+    assert "[crawler]" in text and 'stiffness = "20000000.0 N"' in text and "[fretting]" in text
+    assert parse_project(text) == d2
+    t = drive_to_toml(load_project(EXAMPLES / "tractor_track.toml"))
+    assert "[track.bolts]" in t and 'circle_radius = "0.26 m"' in t

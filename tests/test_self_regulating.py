@@ -711,7 +711,7 @@ def test_through_the_analysis_layer():
     verdicts = [c.verdict for c in self_regulating_checks(a.self_regulating)]
     assert verdicts == ["pass", "FAIL", "pass", "FAIL"]
     assert a.self_regulating.excitations == pytest.approx(
-        {"driving sprocket": 100.0, "driven sprocket": 50.0, "meshing": 1900.0})
+        {"driving sprocket": 100.0, "driven sprocket": 50.0, "unequal links (inner/outer)": 950.0})
 
 
 def geometry(**changes):

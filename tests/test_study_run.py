@@ -185,7 +185,7 @@ def test_study_cli_errors(study_file, tmp_path, capsys):
 
 def test_run_errors(study_file, tmp_path, local_run):
     study = load_study(study_file)
-    with pytest.raises(InputError, match=r"batch_size must lie in \[1, 1000\], got 0"):
+    with pytest.raises(InputError, match=r"batch_size must lie in \[1, 20000\], got 0"):
         run_study(study, tmp_path / "a", batch_size=0, progress=False)
     with pytest.raises(InputError, match=r"workers must lie in \[1, 256\], got 0"):
         run_study(study, tmp_path / "a", workers=0, progress=False)
@@ -257,3 +257,19 @@ values = [17, 21]
     # a bigger chain carries more power (ANSI/ACA rating grows with pitch, Shigley eq. (17-32))
     power = {(r["chain.name"], r["wheels.0.teeth"]): r["rating.rated_power"] for r in got}
     assert power[("12B", 17)] < power[("16B", 17)] < power[("20B", 17)]
+
+
+def test_results_as_dataframe_with_units(local_run):
+    pytest.importorskip("pandas")
+    from chaindrive.study import read_dataframe
+
+    out, _ = local_run
+    df = read_dataframe(out)
+    assert len(df) == 6 and list(df["variant"]) == list(range(6))
+    units = df.attrs["units"]
+    assert units["contact.skew"] == "arcmin"          # an input: the study file's unit
+    assert units["contact.stress"] == "Pa" and units["loads.maximum"] == "N"   # outputs: SI
+    assert units["seconds"] == "s" and units["passed"] == "" and set(units) == set(df.columns)
+    assert df.attrs["study"]["inputs"] == ["contact.skew", "wheels.0.teeth"]
+    with pytest.raises(InputError, match="holds no results"):
+        read_dataframe(out / "nothing")

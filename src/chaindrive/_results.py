@@ -103,6 +103,13 @@ class Result:
     def to_json(self, **kwargs: Any) -> str:
         return json.dumps(self.to_dict(), **kwargs)
 
+    def _repr_html_(self) -> str:
+        """Notebook display: a table of the fields with their units (the presenter
+        :func:`chaindrive.workflows.notebook.html_of` formats it)."""
+        from .workflows.notebook import html_of
+
+        return html_of(self)
+
     @classmethod
     def _field(cls, name: str) -> dataclasses.Field[Any]:
         if not dataclasses.is_dataclass(cls):

@@ -66,6 +66,9 @@ __all__ = [
     "MAX_TEXT_LENGTH",
     "chain_speed_to_angular_velocity",
     "parse_wheel_speed",
+    "normalise_unit",
+    "SPELLINGS",
+    "AMBIGUOUS",
     "convert_from_si",
 ]
 
@@ -100,6 +103,64 @@ _EXPONENT = r"(?:(?:\^|\*\*)[+-]?[1-4]|[²³])"
 _FACTOR = rf"{_NAME}{_EXPONENT}?"
 _UNIT = rf"(?:1\s*/\s*)?{_FACTOR}(?:\s*[*/·]\s*{_FACTOR}|\s+{_FACTOR})*"
 _GRAMMAR = re.compile(rf"^\s*(?P<number>{_NUMBER})\s*(?P<unit>{_UNIT})?\s*$")
+
+#: Spellings engineers type that pint does not know, each with one meaning: token -> unit.
+#: (Case matters to pint: "KW" is no unit there, but nobody means kelvin-watts by it.)
+SPELLINGS: dict[str, str] = {
+    "RPM": "rpm", "Rpm": "rpm", "rpms": "rpm", "RPMs": "rpm",
+    "kw": "kW", "KW": "kW", "Kw": "kW",
+    "KN": "kN", "Kn": "kN",
+    "KG": "kg", "Kg": "kg",
+    "HP": "hp", "Hp": "hp",
+    "MPA": "MPa", "Mpa": "MPa",
+    "GPA": "GPa", "Gpa": "GPa",
+    "MM": "mm", "Mm": "mm",
+    "Nm": "N*m", "kNm": "kN*m", "KNm": "kN*m",
+    "sec": "s", "secs": "s",
+}
+
+#: Whole unit texts with one meaning (a revolution per minute written out).
+WHOLE_SPELLINGS: dict[str, str] = {
+    "rev/min": "rpm", "revs/min": "rpm", "r/min": "rpm", "U/min": "rpm", "rev/mn": "rpm",
+    "r/s": "rev/s", "revs/s": "rev/s",
+}
+
+#: Spellings that mean two different things: refused with both readings.
+AMBIGUOUS: dict[str, str] = {
+    "mw": "'mW' (milliwatt) or 'MW' (megawatt)",
+    "mpa": "'MPa' (megapascal) or 'mPa' (millipascal)",
+    "kn": "'kN' (kilonewton) or 'knot' (a speed)",
+    "gpa": "'GPa' (gigapascal)",
+}
+
+_TOKEN = re.compile(r"[A-Za-zµμΩ_]+")
+
+
+def normalise_unit(given: str, *, field: str = "value", text: str | None = None) -> str:
+    """The unit text ``given`` with the usual engineering spellings made pint's.
+
+    "RPM", "rev/min", "r/min" are rpm; "kw", "KW" are kW; "KN" is kN; "Nm" is N*m. A
+    spelling with two readings ("mw": milliwatt or megawatt?) is refused naming both.
+
+    Examples
+    --------
+    >>> normalise_unit("RPM"), normalise_unit("rev/min"), normalise_unit("KW"), normalise_unit("kN/m")
+    ('rpm', 'rpm', 'kW', 'kN/m')
+    >>> normalise_unit("mw", field="power")
+    Traceback (most recent call last):
+    ...
+    chaindrive.errors.InputError: power: unit 'mw' is ambiguous: write 'mW' (milliwatt) or 'MW' (megawatt)
+    """
+    stripped = given.strip()
+    if stripped in WHOLE_SPELLINGS:
+        return WHOLE_SPELLINGS[stripped]
+    for token in _TOKEN.findall(stripped):
+        if token in AMBIGUOUS:
+            where = f" in {text!r}" if text is not None and text.strip() != stripped else ""
+            raise InputError(f"{field}: unit {token!r}{where} is ambiguous: write {AMBIGUOUS[token]}",
+                             field=field)
+    return _TOKEN.sub(lambda m: SPELLINGS.get(m.group(0), m.group(0)), stripped)
+
 
 #: Two example units for a bare number, by the target unit.
 _EXAMPLES: dict[str, tuple[str, str]] = {
@@ -301,7 +362,7 @@ def parse_quantity(text: Any, unit: str, *, field: str = "value", require_unit: 
     magnitude = float(number)
     if not math.isfinite(magnitude):
         raise InputError(f"{field}: {number} is too large (|value| < 1.8e308), got {text!r}")
-    given = (match.group("unit") or "").strip()
+    given = normalise_unit((match.group("unit") or "").strip(), field=field, text=text)
     try:
         _, target_factor, target_dims, target_rad, target_hz = _unit_info(unit)
     except Exception as exc:  # noqa: BLE001 - a bad target is a programming error, still no traceback

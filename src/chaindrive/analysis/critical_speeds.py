@@ -1,7 +1,7 @@
 r"""Critical speeds of a chain drive beside the transverse one: longitudinal and torsional.
 
 The polygonal action excites the drive at the tooth frequency ``z1 ω1`` of the driving
-wheel. Two resonances besides the transverse span vibration (:mod:`.vibration`):
+wheel. Two resonances besides the transverse span vibration (:mod:`chaindrive.analysis.vibration`):
 
 * **longitudinal (wave-type)**: the tight span as an elastic rod between its wheels,
   ``ω_L = π/l sqrt(EA/q)`` (:func:`chaindrive.vibration.critical.longitudinal_frequency`);

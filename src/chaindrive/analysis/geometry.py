@@ -59,7 +59,8 @@ def wheel_geometry(drive: Drive, wheel: Wheel) -> WheelGeometry | None:
             return None
         link = drive.track.link if drive.track is not None else "built-up"
         return WheelGeometry(wheel.name, "track drive wheel", wheel.teeth, "Sharipov, p. 34",
-                             TrackDriveWheel(pitch=c.pitch, teeth=wheel.teeth, pin_radius=r, link=link, name=wheel.name))
+                             TrackDriveWheel(pitch=c.pitch, teeth=wheel.teeth, pin_radius=r, link=link, name=wheel.name,
+                                             elongation_limit=drive.elongation_limit))
     if wheel.teeth < ISO_MINIMUM_TEETH:
         return None
     return WheelGeometry(wheel.name, "sprocket", wheel.teeth, "ISO 606:2015 clause 5",

@@ -33,17 +33,25 @@ def new_command(
     kind: str = typer.Option(
         "roller", "--kind", "-k",
         help="Template: roller (ISO 606 16B industrial drive), mining (Dolipiński et al.: 18x64 "
-             "chain, 8-pocket wheels, tensioner, tangential guide) or crawler (Sharipov: "
-             "tracked-tractor drive wheel).",
+             "chain, 8-pocket wheels, tensioner, tangential guide), track (Sharipov: tracked-tractor "
+             "drive wheel, tooth and rim-bolt checks) or crawler-conveyor (the conveyor crawler drive: "
+             "drive chain with cams, guide, cam force). 'crawler' is the former name of 'track' "
+             "(deprecated).",
     ),
     force: bool = typer.Option(False, "--force", help="Overwrite an existing file."),
 ) -> None:
     """Write a commented project template (edit it, then run `chaindrive layout FILE`)."""
+    import warnings
+
     from .._io import atomic_write_text, check_output_path
     from ..drive.project import template
 
     path = check_output_path(file, (".toml",), option="FILE", force=force)
-    text = template(kind).replace("{file}", path.name)
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always", FutureWarning)
+        text = template(kind).replace("{file}", path.name)
+    for w in caught:
+        typer.echo(f"warning: {w.message}", err=True)
     atomic_write_text(path, text, force=force, option="FILE")
     typer.echo(f"wrote {path} ({kind} template)")
 
@@ -88,7 +96,7 @@ def layout_command(
                   f"{cd.loose * 1e3:.3f} mm (loosest)")
     t = Table(title="Wheels")
     for h in ("wheel", "pitch radius [mm]", "wrap [°]", "teeth in mesh", "shaft load [kN]"):
-        t.add_column(escape(h))  # '[mm]' is not rich markup
+        t.add_column(escape(h), overflow="fold")  # '[mm]' is not rich markup
     for i, name in enumerate(lay.wheel_names):
         t.add_row(name, f"{lay.pitch_radii[i] * 1e3:.2f}", f"{math.degrees(lay.wrap.wrap_angle[i]):.1f}",
                   "-" if lay.teeth_in_mesh[i] is None else str(lay.teeth_in_mesh[i]),
@@ -96,7 +104,7 @@ def layout_command(
     con.print(t)
     t = Table(title="Spans")
     for h in ("span", "length [mm]", "angle [°]", "tension [kN]", ""):
-        t.add_column(escape(h))
+        t.add_column(escape(h), overflow="fold")
     n = len(lay.wheel_names)
     for i in range(n):
         tag = "tight" if i == lay.tight_span else ("slack" if i == lay.slack_span else "")
@@ -223,7 +231,7 @@ def select_command(
     t = Table(title=f"Candidates (design power {rec.design_power / 1e3:.4g} kW)")
     for h in ("#", "chain", "teeth", "links", "centre distance [mm]", "rated [kW]", "margin", "limited by",
               "method", "v [m/s]", "lubrication", "static safety"):
-        t.add_column(escape(h), no_wrap=h in ("chain", "teeth", "rated [kW]"))
+        t.add_column(escape(h), no_wrap=h in ("chain", "teeth", "rated [kW]"), overflow="fold")
     for k, c in enumerate(found, 1):
         t.add_row(str(k), " / ".join(c.names), f"{c.driving_teeth}/{c.driven_teeth}", str(c.links),
                   f"{c.centre_distance * 1e3:.2f}", f"{c.rated_power / 1e3:.2f}", f"{c.power_margin:.2f}",

@@ -17,7 +17,7 @@ import typer
 
 from ..errors import InputError
 from ..limits import MAX_MODES
-from .app import app, echo_json, exit_code, print_rows, quantity, unit_help
+from .app import app, echo_json, exit_code, force_option, print_rows, quantity, unit_help
 
 
 def _angle(text: str, field: str) -> float:
@@ -58,7 +58,8 @@ def vibration_command(
     speed_min: str | None = typer.Option(None, "--speed-min", help=unit_help("Lower end of the speed range of --campbell/--map; default 0.5 x --speed (the analysis's Campbell range).", "rpm or rad/s", "100 rpm")),
     speed_max: str | None = typer.Option(None, "--speed-max", help=unit_help("Upper end of the speed range of --campbell/--map; default 1.5 x --speed (the analysis's Campbell range).", "rpm or rad/s", "400 rpm")),
     as_json: bool = typer.Option(False, "--json", help="Print frequencies_rad_s, frequencies_hz, static_rod_force_n (N) and resonance rows as JSON, SI units."),
-    campbell_file: Path | None = typer.Option(None, "--campbell", help="Write a PNG Campbell diagram (frequencies [Hz] vs speed [rpm], forbidden bands shaded); needs --speed or --speed-max."),
+    campbell_file: Path | None = typer.Option(None, "--campbell", help="Write a PNG Campbell diagram (frequencies against the driving speed, both in rad/s, rpm on a second axis; forbidden bands shaded); needs --speed or --speed-max."),
+    force: bool = force_option(),
     map_file: Path | None = typer.Option(None, "--map", help="Write a PNG resonance map over tensioner mass and stiffness (±1.5 decades) with the safe region and the nearest safe design; needs --speed or --speed-max."),
 ) -> None:
     """Natural frequencies of the slack span with a tensioner and the resonance check.
@@ -77,7 +78,7 @@ def vibration_command(
 
     for _file, _option in ((campbell_file, "--campbell"), (map_file, "--map")):
         if _file is not None:
-            check_output_path(_file, FIGURE_SUFFIXES, option=_option)
+            check_output_path(_file, FIGURE_SUFFIXES, option=_option, force=force)
     s = _positive(quantity(tension, "N", "tension"), "tension", "N")
     q = _positive(quantity(mass_per_length, "kg/m", "mass-per-length"), "mass-per-length", "kg/m")
     l1 = _positive(quantity(span1, "m", "span1"), "span1", "m")
@@ -119,7 +120,7 @@ def vibration_command(
         common: dict[str, Any] = dict(ratio=ratio, teeth=teeth, link_chain=link_chain, modes=modes)
         if campbell_file is not None:
             fig = campbell(span, (wmin, wmax), speeds=300, design_speed=w, **common).plot()
-            save_figure(fig, campbell_file, option="--campbell", dpi=120)
+            save_figure(fig, campbell_file, option="--campbell", dpi=120, force=force)
             plt.close(fig)
         if map_file is not None:
             import numpy as np
@@ -135,7 +136,7 @@ def vibration_command(
             except Exception:  # noqa: BLE001 - nothing safe in the window: map without a proposal
                 pass
             fig = rm.plot()
-            save_figure(fig, map_file, option="--map", dpi=120)
+            save_figure(fig, map_file, option="--map", dpi=120, force=force)
             plt.close(fig)
 
     if as_json:

@@ -1,10 +1,10 @@
 r"""The design layer: from a duty to the drive an engineer signs.
 
 :func:`design_drive` runs the procedure once (docs/design.md): duty -> service factor
-(:mod:`.duty`) -> tooth-count policy (:mod:`.policy`) -> candidate chains rated by the
+(:mod:`chaindrive.design.duty`) -> tooth-count policy (:mod:`chaindrive.design.policy`) -> candidate chains rated by the
 method of their family (:mod:`chaindrive.rating`) -> layout with an even link count and
 the exact centre distance -> the analysis (loads, static safety, rating checks) -> advice
-(:mod:`.advice`). The Python API, ``chaindrive select``, the design studio and studies
+(:mod:`chaindrive.design.advice`). The Python API, ``chaindrive select``, the design studio and studies
 call it.
 
 Examples

@@ -154,8 +154,8 @@ class Duty(Result):
                 return
             if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value) \
                     or not 0 < value <= upper:
-                raise InputError(f"{name} must be a finite number in (0, {upper:g}] {unit}, got {value!r}",
-                                 field=name)
+                where = f"(0, {upper:g}] {unit}".rstrip()
+                raise InputError(f"{name} must be a finite number in {where}, got {value!r}", field=name)
 
         positive("power", self.power, "W", 1e8)
         positive("speed", self.speed, "rad/s", 1e4)

@@ -20,10 +20,23 @@ Examples
 
 from typing import Any
 
-from .model import Adjustable, ContactSpec, Drive, Guide, Load, Tensioner, TrackSpec, Wheel
+from .model import (
+    Adjustable,
+    ContactSpec,
+    CrawlerSpec,
+    Drive,
+    FrettingSpec,
+    Guide,
+    Load,
+    RimBoltsSpec,
+    Tensioner,
+    TrackSpec,
+    Wheel,
+)
 
 __all__ = [
-    "Drive", "Wheel", "Tensioner", "Adjustable", "Guide", "Load", "ContactSpec", "TrackSpec",
+    "Drive", "Wheel", "Tensioner", "Adjustable", "Guide", "Load", "ContactSpec", "TrackSpec", "CrawlerSpec",
+    "FrettingSpec", "RimBoltsSpec",
     "load_project", "Project",
 ]
 

@@ -36,8 +36,7 @@ if TYPE_CHECKING:
     from ..chains import Chain
 
 __all__ = ["WHEEL_KINDS", "TENSIONER_PARTS", "sides_per_turn", "Wheel", "Tensioner", "Adjustable", "Guide", "Load",
-           "ContactSpec", "TrackSpec",
-           "Drive"]
+           "ContactSpec", "TrackSpec", "RimBoltsSpec", "CrawlerSpec", "FrettingSpec", "Drive"]
 
 WHEEL_KINDS = ("sprocket", "pocket_wheel", "track_wheel", "idler")
 TENSIONER_KINDS = ("spring", "weight", "screw", "hydraulic")
@@ -383,6 +382,64 @@ class ContactSpec:
 
 
 @dataclass(frozen=True)
+class RimBoltsSpec:
+    """Bolts fastening a toothed rim to the hub (Sharipov, Fig. 14), ``[track.bolts]``.
+
+    Parameters
+    ----------
+    count : int
+        Bolts per rim ``n``.
+    circle_radius : float
+        Bolt circle radius ``R_b`` [m].
+    diameter : float
+        Fitted shank diameter ``d`` (``joint = "fitted"``) or nominal thread diameter
+        (``joint = "friction"``) [m].
+    joint : {"fitted", "friction"}
+        Fitted bolts in shear, or a friction (slip-resistant) joint.
+    shear_planes : int
+        Shear planes ``m`` of a fitted bolt.
+    plate_thickness : float, optional
+        Thinnest clamped part for the bearing check [m].
+    allowable_shear, allowable_bearing : float, optional
+        [Pa] (fitted joint).
+    friction : float
+        Friction coefficient ``μ`` (friction joint).
+    friction_faces : int
+        Friction interfaces ``q``.
+    slip_safety : float
+        ``S >= 1`` (friction joint).
+    thread_pitch : float, optional
+        Thread pitch [m] for the stress area (friction joint).
+    yield_strength : float, optional
+        ``R_p0.2`` [Pa] (friction joint).
+    """
+
+    count: int
+    circle_radius: float
+    diameter: float
+    joint: str = "fitted"
+    shear_planes: int = 1
+    plate_thickness: float | None = None
+    allowable_shear: float | None = None
+    allowable_bearing: float | None = None
+    friction: float = 0.15
+    friction_faces: int = 1
+    slip_safety: float = 1.25
+    thread_pitch: float | None = None
+    yield_strength: float | None = None
+
+    def __post_init__(self) -> None:
+        if self.joint not in ("fitted", "friction"):
+            raise InputError(f"track.bolts.joint must be 'fitted' or 'friction', got {self.joint!r}",
+                             field="track.bolts.joint")
+        if isinstance(self.count, bool) or int(self.count) != self.count or not 1 <= self.count <= 1000:
+            raise InputError(f"track.bolts.count must be a whole number in [1, 1000], got {self.count!r}",
+                             field="track.bolts.count")
+        _finite(self.circle_radius, "track.bolts.circle_radius", positive=True)
+        _finite(self.diameter, "track.bolts.diameter", positive=True)
+
+
+@dataclass(frozen=True)
 class TrackSpec:
     """Track drive wheel strength inputs (Sharipov, p. 34).
 
@@ -403,6 +460,8 @@ class TrackSpec:
         Surface hardness [HRC].
     allowable_bending, allowable_contact : float, optional
         [Pa].
+    bolts : RimBoltsSpec, optional
+        The rim's bolts (Sharipov, Fig. 14); a mapping of its fields is accepted.
     """
 
     tractor_weight: float
@@ -414,6 +473,89 @@ class TrackSpec:
     hardness: float | None = None
     allowable_bending: float | None = None
     allowable_contact: float | None = None
+    bolts: RimBoltsSpec | None = None
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "bolts", _spec(self.bolts, RimBoltsSpec, "track.bolts"))
+
+
+@dataclass(frozen=True)
+class CrawlerSpec:
+    """The conveyor crawler drive (the crawler drive text), ``[crawler]``.
+
+    The drive's two toothed wheels are the driving and the tensioning sprocket of the drive
+    chain (same tooth count, a whole number of pitches apart); the cams on the drive chain
+    push the hinges of the conveyor's traction chain.
+
+    Parameters
+    ----------
+    stiffness : float
+        Reduced stiffness ``E_П`` of the drive chain as axial rigidity ``EA`` [N].
+    guide : {"tangent", "none"}
+        Guide holding the chain axis tangent to the pitch circles, or none.
+    cam_distance : float, optional
+        Distance ``l`` of the engaged cam's hinge from the tensioning sprocket [m]; or give
+        ``engagement_distance`` (``l1``), ``cam_pitch`` (``t_K``) and ``cam_index`` (``k``):
+        ``l = l1 + k t_K``.
+    cam_face_angle : float
+        Pressure angle ``α`` of the cam's working face [rad] (the pushing-off force
+        ``P tan α`` on the guide); ``0 <= α < π/2``.
+    return_guide : {"none", "tangent"}
+        Guide of the return span (for the elastic-loop check).
+    """
+
+    stiffness: float
+    guide: str = "tangent"
+    cam_distance: float | None = None
+    engagement_distance: float | None = None
+    cam_pitch: float | None = None
+    cam_index: int = 0
+    cam_face_angle: float = 0.0
+    return_guide: str = "none"
+
+    def __post_init__(self) -> None:
+        _finite(self.stiffness, "crawler.stiffness", positive=True)
+        for name in ("guide", "return_guide"):
+            if getattr(self, name) not in ("tangent", "none"):
+                raise InputError(f"crawler.{name} must be 'tangent' or 'none', got {getattr(self, name)!r}",
+                                 field=f"crawler.{name}")
+        if self.cam_distance is None:
+            if self.engagement_distance is None:
+                raise InputError("crawler: give cam_distance (l > 0 m), or engagement_distance (l1 > 0 m) with "
+                                 "cam_pitch and cam_index (l = l1 + k t_K)", field="crawler.cam_distance")
+            l1 = _finite(self.engagement_distance, "crawler.engagement_distance", positive=True)
+            k = self.cam_index
+            if isinstance(k, bool) or int(k) != k or k < 0:
+                raise InputError(f"crawler.cam_index must be a whole number >= 0, got {k!r}", field="crawler.cam_index")
+            tk = 0.0 if k == 0 else _finite(self.cam_pitch, "crawler.cam_pitch", positive=True)
+            object.__setattr__(self, "cam_distance", l1 + int(k) * tk)
+        object.__setattr__(self, "cam_distance", _finite(self.cam_distance, "crawler.cam_distance", positive=True))
+        a = _finite(self.cam_face_angle, "crawler.cam_face_angle", nonnegative=True)
+        if not a < math.pi / 2:
+            raise InputError(f"crawler.cam_face_angle must lie in [0, 90) deg, got {math.degrees(a):g} deg",
+                             field="crawler.cam_face_angle")
+
+
+@dataclass(frozen=True)
+class FrettingSpec:
+    """Fretting of a multi-strand roller chain (Vikulov), ``[fretting]``.
+
+    Parameters
+    ----------
+    roughness : float
+        ``Ra`` of the pin and bushing surfaces [m].
+    latent_coefficient : float
+        ``K1`` of ``τ = K1 Ra exp(−k2 A N f / Ra)`` [s/m].
+    decay_coefficient : float
+        ``k2 = −K2 > 0`` [s/N].
+    frequency : float, optional
+        Load frequency ``f`` [Hz]; default the tooth frequency of the driving wheel.
+    """
+
+    roughness: float
+    latent_coefficient: float
+    decay_coefficient: float
+    frequency: float | None = None
 
 
 def _spec(value: Any, cls: type, what: str) -> Any:
@@ -466,6 +608,10 @@ class Drive:
         Roller–tooth contact with skew (a mapping of its fields is accepted).
     track : TrackSpec, optional
         Track drive wheel strength (a mapping of its fields is accepted).
+    crawler : CrawlerSpec, optional
+        The conveyor crawler drive: cams, guide and drive-chain stiffness.
+    fretting : FrettingSpec, optional
+        Empirical constants of the fretting latent period (multi-strand chains).
     self_regulating : object, optional
         Self-regulating drive inputs
         (:class:`chaindrive.drive.carrier.SelfRegulatingSpec`).
@@ -506,6 +652,8 @@ class Drive:
     contact: ContactSpec | None = None
     track: TrackSpec | None = None
     self_regulating: Any = field(default=None)
+    crawler: CrawlerSpec | None = None
+    fretting: FrettingSpec | None = None
     adjustable: Adjustable | None = None
 
     def __post_init__(self) -> None:
@@ -514,6 +662,8 @@ class Drive:
         object.__setattr__(self, "guides", tuple(self.guides))
         object.__setattr__(self, "contact", _spec(self.contact, ContactSpec, "contact"))
         object.__setattr__(self, "track", _spec(self.track, TrackSpec, "track"))
+        object.__setattr__(self, "crawler", _spec(self.crawler, CrawlerSpec, "crawler"))
+        object.__setattr__(self, "fretting", _spec(self.fretting, FrettingSpec, "fretting"))
         if self.travel not in ("ccw", "cw"):
             raise InputError(f"travel must be 'ccw' or 'cw', got {self.travel!r}", field="drive.travel")
         if len(self.wheels) < 2:
@@ -685,6 +835,13 @@ class Drive:
         out[(k - 1) % n if self.travel == "ccw" else (k + 1) % n] = 1.0
         return out
 
+    def _repr_html_(self) -> str:
+        """Notebook display: the drive's data with units and its drawing to scale
+        (formatted by :func:`chaindrive.workflows.notebook.html_of`)."""
+        from ..workflows.notebook import html_of
+
+        return html_of(self)
+
     def is_two_wheel(self) -> bool:
         """Two toothed wheels and nothing else (the two-wheel hull model and its centre distance for the
         links apply; more wheels: :func:`chaindrive.layout.chain_length_loop`)."""
@@ -712,6 +869,8 @@ class Drive:
             "wear_coefficient": self.wear_coefficient,
             "contact": None if self.contact is None else dataclasses.asdict(self.contact),
             "track": None if self.track is None else dataclasses.asdict(self.track),
+            "crawler": None if self.crawler is None else dataclasses.asdict(self.crawler),
+            "fretting": None if self.fretting is None else dataclasses.asdict(self.fretting),
             "self_regulating": (None if self.self_regulating is None
                                 else jsonable(self.self_regulating)),
             "adjustable": None if self.adjustable is None else dataclasses.asdict(self.adjustable),

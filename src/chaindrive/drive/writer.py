@@ -30,6 +30,11 @@ _UNITS: dict[str, dict[str, str]] = {
     "tensioner": {"mass": "kg", "stiffness": "N/m", "force": "N", **TENSIONER_PARTS["lever"],
                   **TENSIONER_PARTS["sliding"]},
     "guides": {"end_distance": "m", "height": "m"},
+    "track.bolts": {"circle_radius": "m", "diameter": "m", "plate_thickness": "m", "allowable_shear": "Pa",
+                    "allowable_bearing": "Pa", "thread_pitch": "m", "yield_strength": "Pa"},
+    "crawler": {"stiffness": "N", "cam_distance": "m", "engagement_distance": "m", "cam_pitch": "m",
+                "cam_face_angle": "rad"},
+    "fretting": {"roughness": "m", "latent_coefficient": "s/m", "decay_coefficient": "s/N", "frequency": "Hz"},
     "wheels": {"diameter": "m"},
 }
 
@@ -71,7 +76,7 @@ def drive_to_toml(drive: Drive, *, header: str = "") -> str:
     drive : Drive
         The drive.
     header : str
-        Comment lines put first (each line gets ``# ``).
+        Comment lines put first (each line gets a leading ``#``).
 
     Returns
     -------
@@ -122,7 +127,10 @@ def drive_to_toml(drive: Drive, *, header: str = "") -> str:
     for w in drive.wheels:
         lines += _table("wheels", {"name": w.name, "kind": w.kind, "teeth": w.teeth, "diameter": w.diameter,
                                    "position": tuple(_q(v, "m")[1:-1] for v in w.position),
-                                   "driving": w.driving, "side": w.side}, array=True)
+                                   "driving": w.driving, "side": w.side, "power_share": w.power_share}, array=True)
+    if drive.adjustable is not None:
+        lines += _table("adjustable", {"wheel": drive.adjustable.wheel,
+                                       "direction": [float(v) for v in drive.adjustable.direction]})
     if drive.tensioner is not None:
         t = drive.tensioner
         reduced = {"mechanism": t.mechanism, **dict(t.parts)} if t.mechanism else {"mass": t.mass,
@@ -132,8 +140,12 @@ def drive_to_toml(drive: Drive, *, header: str = "") -> str:
     for g in drive.guides:
         lines += _table("guides", {"wheel": g.wheel, "end_distance": g.end_distance, "kind": g.kind,
                                    "height": g.height}, array=True)
-    for name in ("contact", "track"):
+    for name in ("contact", "track", "crawler", "fretting"):
         spec = getattr(drive, name)
         if spec is not None:
-            lines += _table(name, dataclasses.asdict(spec))
+            values = dataclasses.asdict(spec)
+            bolts = values.pop("bolts", None)
+            lines += _table(name, values)
+            if bolts is not None:  # [track.bolts]
+                lines += _table(f"{name}.bolts", bolts)
     return "\n".join(lines)

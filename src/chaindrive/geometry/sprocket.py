@@ -4,7 +4,7 @@ Layer 1 holds one published formula per function (vectorised, SI units); the too
 outline builders and the thin :class:`Sprocket` object sit on top of them.
 
 Sources (see docs/geometry.md for the full discussion)
------------------------------------------------------
+------------------------------------------------------
 * ISO 606:2015, *Short-pitch transmission precision roller and bush chains, attachments
   and associated chain sprockets*, clause 5 "Chain sprockets": 5.3 diametral dimensions,
   5.4 tooth gap forms, 5.5 tooth heights and tip diameters, 5.6 rim profiles
@@ -455,7 +455,7 @@ def tooth_side_radius(pitch: ArrayLike) -> FloatOrArray:
 
 @finite_guard
 def tooth_side_relief_limits(pitch: ArrayLike) -> tuple[FloatOrArray, FloatOrArray]:
-    r"""Nominal tooth side relief ``ba = 0.1 p ... 0.15 p``, ISO 606:2015 clause 5.6.
+    r"""Nominal tooth side relief ``ba`` from 0.1 p to 0.15 p, ISO 606:2015 clause 5.6.
 
     .. math:: b_a = (0.10 \dots 0.15)\,p
 
@@ -821,8 +821,8 @@ def iso_tooth_form(pitch: float, teeth: int, roller_diameter: float, *, form: st
     tooth centreline.
 
     .. math::
-        r_{i,\min} = 0.505\,d_1,\quad α_{\max} = 140° - rac{90°}{z},\quad
-        r_{e,\max} = 0.008\,d_1 (z^2 + 180)\quad	ext{(minimum gap form)}
+        r_{i,\min} = 0.505\,d_1,\quad α_{\max} = 140° - \frac{90°}{z},\quad
+        r_{e,\max} = 0.008\,d_1 (z^2 + 180)\quad\text{(minimum gap form)}
 
     Parameters
     ----------

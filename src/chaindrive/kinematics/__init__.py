@@ -4,7 +4,9 @@ Public API:
 
 * :func:`chain_entry` - free, chordal, tangential or custom-height guided entry of a
   round link chain (bi-regular polygon) or a roller chain (regular polygon), with
-  ``model="exact"`` (general rigid-link solver) or ``model="paper"`` (Dolipiński et al.'s
+  ``model="exact"`` (general rigid-link solver), ``model="paper"`` (Dolipiński et al.'s rod
+  mechanism, the same for both guides) or ``model="as_printed"`` (the chordal rod switched at
+  ``π/z`` as printed; Dolipiński et al.'s
   corrected closed forms); returns :class:`EntryKinematics`.
 * :func:`dolipinski_worked_case` - the three entries of Dolipiński et al.'s worked case.
 * :mod:`.paper` - the closed forms, :mod:`.solver` - the general vectorised solver; both

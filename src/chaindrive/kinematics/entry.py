@@ -42,9 +42,20 @@ Models (``model=``):
     the span then shortens by exactly the seated link, so ``x`` and ``v`` are
     continuous. Free entry is the same mechanism with ``G`` at infinity.
 ``"paper"``
-    Dolipiński et al.'s own simplified mechanism: a rigid rod of fixed length from the seated
-    hinge to a point sliding on the guide line, closed forms (14)-(43) with the
-    printed errors corrected (list in :mod:`chaindrive.kinematics.paper`).
+    Dolipiński et al.'s own simplified mechanism, one mechanism for both guides: a rigid
+    rod of fixed length from the seated hinge to a point sliding on the guide line,
+    shortened by exactly one link when the next hinge seats (the rod collinear with
+    the chord to it). Tangential entry: the closed forms (26)-(43) with the printed
+    errors corrected (their switches are the seatings, eqs 29 and 34). Chordal entry:
+    the same rod mechanism solved by :func:`~chaindrive.kinematics.solver.rod_seating_schedule`
+    and :func:`~chaindrive.kinematics.solver.rod_entry` (in the worked case the second
+    hinge seats at ``φ = 0.3741950302`` rad, not at ``π/z``); ``x`` and ``v`` are
+    continuous and the chain advances ``2t`` per period. Free entry: eqs (1)-(13).
+``"as_printed"``
+    The mechanisms as the paper prints them: the chordal entry's closed forms (14)-(25),
+    corrected, with the rod switched at ``π/z`` (a reset, not a seating: ``x`` is made
+    continuous by a constant, ``v`` jumps by 3.7 mm/s in the worked case and the chain
+    advances 2.3 µm more than ``2t`` per period); free and tangential entry as ``"paper"``.
 """
 
 from __future__ import annotations
@@ -65,7 +76,15 @@ from .._validation import as_float_array, check_nonnegative, check_positive, che
 from ..errors import InfeasibleError, InputError
 from ..geometry.polygon import bi_regular_polygon, roller_chain_pitch_radius
 from . import paper as _paper
-from .solver import GuideEnd, WheelPolygon, taut_entry, taut_seating_angles
+from .histories import PaperEntry
+from .solver import (
+    GuideEnd,
+    WheelPolygon,
+    rod_entry,
+    rod_seating_schedule,
+    taut_entry,
+    taut_seating_angles,
+)
 
 if TYPE_CHECKING:
     from ..chains import Chain
@@ -78,6 +97,7 @@ __all__ = [
     "ENTRIES",
     "MODELS",
     "SUMMARY_KEYS",
+    "SUMMARY_QUANTITIES",
 ]
 
 #: Named entry types.
@@ -99,6 +119,36 @@ SUMMARY_KEYS = (
     "sign_change_at_period_end",
     "transverse_throw",
 )
+
+#: Every key of :attr:`EntryKinematics.summary` (and of the crawler's): its label and SI
+#: unit ("1": a ratio or a count; "": a yes/no), declared where the summary is made, for
+#: presenters (the studio's expert pages, the command line).
+SUMMARY_QUANTITIES: dict[str, tuple[str, str]] = {
+    "v_mean": ("mean chain speed", "m/s"),
+    "v_min": ("minimum chain speed", "m/s"),
+    "v_max": ("maximum chain speed", "m/s"),
+    "nonuniformity": ("speed non-uniformity (vmax − vmin)/vmean", "1"),
+    "a_min": ("minimum acceleration", "m/s^2"),
+    "a_max": ("maximum acceleration", "m/s^2"),
+    "a_abs_max": ("largest |acceleration|", "m/s^2"),
+    "sign_change_at_period_end": ("acceleration changes sign at the period end", ""),
+    "transverse_throw": ("transverse throw of the span", "m"),
+    "advance_per_period": ("chain advance per tooth period", "m"),
+    "a_end_left": ("acceleration just before the period end", "m/s^2"),
+    "a_end_right": ("acceleration just after the period start", "m/s^2"),
+    "a_jump_at_period_end": ("acceleration jump at the period end", "m/s^2"),
+    "a_jump_max": ("largest acceleration jump (seatings)", "m/s^2"),
+    "sign_changing_jumps": ("acceleration jumps that change sign", "1"),
+    "psi_v_min": ("sprocket angle of the minimum speed", "rad"),
+    "peak_deviation": ("largest deviation from the mean speed", "m/s"),
+    "cam_stiffness": ("stiffness at the cam", "N/m"),
+    "force_min": ("cam force minimum (about the mean)", "N"),
+    "force_max": ("cam force maximum (about the mean)", "N"),
+    "force_range": ("cam force range", "N"),
+    "cam_force_max": ("cam force maximum (with the traction force)", "N"),
+    "cam_pushing_off_max": ("pushing-off force on the guide at the cam, P tan α", "N"),
+    "guide_reaction_max": ("largest guide reaction at the guide end, T tan φ1", "N"),
+}
 
 
 @dataclass(frozen=True)
@@ -261,8 +311,36 @@ def _check_reach(case, poly, seats):
         )
 
 
+@lru_cache(maxsize=64)
+def _chordal_rod_schedule(case: _Case) -> tuple[tuple[float, int, float], ...]:
+    """The consistent rod schedule of the chordal entry (seatings, not the printed reset)."""
+    return tuple(rod_seating_schedule(case.polygon(), _guide_end(case)))
+
+
+def _guide_end(case: _Case) -> GuideEnd:
+    return (case.guide_end_distance(), case.guide_height())
+
+
+def _chordal_rod(case: _Case, phi):
+    sched = list(_chordal_rod_schedule(case))
+    r = rod_entry(case.polygon(), phi, case.w, _guide_end(case), sched, continuous=False)
+    return PaperEntry(x=r.x, velocity=r.velocity, acceleration=r.acceleration, advance=r.advance,
+                      seats=np.array([p for p, _, _ in sched]))
+
+
 @MODELS.register("paper")
 def _paper_model(case: _Case, phi):
+    if case.entry == "chordal":
+        r = _chordal_rod(case, phi)
+        for key in ("x", "velocity", "acceleration"):
+            if not np.all(np.isfinite(r[key])):
+                raise InfeasibleError("the rod of the paper's mechanism cannot reach the guide line")
+        return r
+    return _as_printed_model(case, phi)
+
+
+@MODELS.register("as_printed")
+def _as_printed_model(case: _Case, phi):
     t, d = (case.t, 0.0) if case.roller else (case.t, case.d)
     d1, d2 = case.d1, (case.d1 if case.roller else case.d2)
     with np.errstate(invalid="ignore"):
@@ -285,7 +363,7 @@ def _paper_model(case: _Case, phi):
                 r = dataclasses.replace(r, seats=np.array([g1, g2]))
         else:
             raise InputError(
-                "model='paper' covers entry 'free', 'chordal' and 'tangential' only "
+                "model='paper' and 'as_printed' cover entry 'free', 'chordal' and 'tangential' only "
                 "(the paper gives no closed form for another guide_height); use model='exact'"
             )
     for key in ("x", "velocity", "acceleration"):
@@ -483,7 +561,7 @@ def chain_entry(
         required for guided entry.
     guide_height : float, optional
         Height ``H >= 0`` of the guide line above the wheel axis [m] (custom guide).
-    model : {"exact", "paper"}
+    model : {"exact", "paper", "as_printed"}
         Mechanism (see module docstring).
     points : int
         Number of samples over ``0 <= φ <= 2π/z`` (ignored if ``phi`` is given).
@@ -513,8 +591,8 @@ def chain_entry(
     Valid for a rigid, inextensible chain at constant ``ω``; ``H >= 0``. At a seating
     the acceleration jumps; ``phi`` exactly at the period end takes the limit from the
     left. Mean speed over a period is exactly ``(chain per period) z ω / 2π`` for the
-    exact model and the paper's free and tangential entry; the paper's chordal entry
-    resets its rod at ``π/z`` and advances slightly more (see ``summary``).
+    exact model and the ``"paper"`` model; the ``"as_printed"`` chordal entry resets
+    its rod at ``π/z`` and advances slightly more (see ``summary``).
 
     References
     ----------
@@ -633,7 +711,7 @@ def dolipinski_worked_case(model: str = "exact", points: int = 361) -> dict[str,
 
     Parameters
     ----------
-    model : {"exact", "paper"}
+    model : {"exact", "paper", "as_printed"}
         Mechanism.
     points : int
         Samples per period.

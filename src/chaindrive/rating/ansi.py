@@ -8,6 +8,7 @@ rpm as the smaller of two limits,
   ``K_p = 0.004`` (0.0022 for the lightweight No. 41 chain);
 * roller–bushing impact fatigue: ``H2 = 1000 K_r z1^1.5 p^0.8 / n1^1.5`` hp,
   ``K_r = 29`` (Nos. 25 and 35), 3.4 (No. 41), 17 (Nos. 40–240);
+
 and it is checked against galling of pins and bushings, a speed limit that falls
 with the chain tension (Shigley §17-5; :func:`galling_speed`, and as a power at a given
 speed :func:`galling_power`): above it the tables mark the galling region (type C').

@@ -884,6 +884,28 @@ class SimulationResult(Result):
         return simulation_plot(self, ax=ax)
 
 
+#: Every key of :attr:`SimulationResult.summary`: its label and SI unit ("1": a count or
+#: a ratio), for presenters (the studio's simulation page).
+SUMMARY_QUANTITIES: dict[str, tuple[str, str]] = {
+    "duration": ("simulated time", "s"),
+    "dt": ("time step", "s"),
+    "steps": ("time steps", "1"),
+    "wall_time": ("computing time", "s"),
+    "link_steps_per_second": ("link-steps per second of computing", "1/s"),
+    "wall_seconds_per_simulated_second": ("computing seconds per simulated second", "1"),
+    "steady_from": ("averages taken from", "s"),
+    "tight_side_tension_mean": ("tight-side tension, mean", "N"),
+    "tight_side_tension_max": ("tight-side tension, maximum", "N"),
+    "slack_side_tension_mean": ("slack-side tension, mean", "N"),
+    "max_link_tension": ("largest link tension", "N"),
+    "max_contact_force": ("largest contact force", "N"),
+    "wheel_speed_mean": ("wheel speeds, mean", "rad/s"),
+    "chain_velocity_mean": ("chain speed at the probes, mean", "m/s"),
+    "chain_velocity_max": ("chain speed at the probes, maximum", "m/s"),
+    "chain_velocity_min": ("chain speed at the probes, minimum", "m/s"),
+}
+
+
 def _summary(res: SimulationResult, settle: float) -> dict:
     after = res.time >= settle
     sel: np.ndarray | slice = after if np.any(after) else slice(None)

@@ -71,7 +71,7 @@ def __getattr__(name: str) -> Any:
     raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
 
 #: Largest number of variants sent to a worker as one task.
-MAXIMUM_BATCH_SIZE = 1000
+MAXIMUM_BATCH_SIZE = 20_000
 
 #: Longest simulated time per variant for ``simulation.*`` outputs [s].
 MAXIMUM_SIMULATION_DURATION = 10.0

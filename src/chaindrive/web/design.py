@@ -253,7 +253,7 @@ def _project_text(d: Design, state: dict[str, str], positions: list, idler: tupl
     kind_wheel = "pocket_wheel" if d.chain.is_link_chain else "sprocket"
     lines = [
         "# chaindrive project file written by the web studio (TOML). Quantities carry units;",
-        "# a bare number is read in SI units. Check it with:  chaindrive layout <file>",
+        "# a physical quantity without its unit is refused. Check it with:  chaindrive layout <file>",
         "",
         "[drive]",
         f"name = {_toml_string(state['name'] or 'Chain drive')}",

@@ -11,7 +11,6 @@ Routes (the page state is the query string, so a link reproduces a design):
 
 from __future__ import annotations
 
-import io
 import json
 import time
 from pathlib import Path
@@ -29,7 +28,6 @@ from ..units import angular_velocity_to_rpm
 from .design import (
     DEFAULTS,
     FIELDS,
-    MINING_EXAMPLE,
     design_from_state,
     normalise_state,
     service_factor_table,
@@ -45,7 +43,7 @@ DOWNLOADS = {
     "report.html": "Calculation report (HTML, figures inside)",
     "report.pdf": "Calculation report (PDF)",
     "results.json": "Every number of the analysis (JSON, SI units)",
-    "wheel.dxf": "Driving wheel outline (DXF, mm)",
+    "wheel.dxf": "Driving wheel workshop drawing (DXF, mm)",
     "wheel.svg": "Driving wheel outline (SVG, mm)",
 }
 
@@ -163,6 +161,14 @@ def studio_payload(state: dict[str, str]) -> dict[str, Any]:
             value_text, unit_text = show(value, unit, units)
             rows.append([str(name), value_text, unit_text, " ".join(str(x) for x in rest)])
         out["loads"] = {"caption": loads.caption, "rows": rows}
+    fretting = None if analysis.analysis is None else getattr(analysis.analysis, "fretting", None)
+    if fretting is not None:  # a multi-strand chain: Vikulov's pin slip with and without intermediate plates
+        rows = []
+        for name, unit in type(fretting).field_units().items():
+            value = getattr(fretting, name)
+            if value is not None:
+                rows.append([name.replace("_", " "), *show(value, "-" if unit == "1" else unit, units)])
+        out["fretting"] = {"caption": "Fretting and pin slip of the multi-strand chain (Vikulov)", "rows": rows}
     life = next((c for c in analysis.checks if "hours" in c["name"] and isinstance(c["value"], (int, float))), None)
     if life is not None and design.hours_per_day > 0:
         out["life_years"] = fmt(life["value"] / (design.hours_per_day * 365.0), 3)
@@ -230,21 +236,27 @@ def _results_json(design: Any) -> str:
                                 "results": analysis.results()}), indent=2)
 
 
+def _example_query(name: str) -> str:
+    """The studio's state of the example project file ``name`` of ``examples/`` (the same
+    file ``chaindrive analyze`` reads), as a query string."""
+    from .._examples import example_path
+
+    return state_query(normalise_state(state_from_project(example_path(name).read_text(encoding="utf-8"), name)))
+
+
 def _wheel_file(design: Any, kind: str) -> bytes:
+    """The driving wheel: its workshop drawing as DXF (what ``chaindrive sprocket --dxf``
+    writes), or its outline as SVG."""
     from ..geometry import PocketWheel, Sprocket
-    from ..geometry.export import dxf_document, svg_text
+    from ..geometry.export import svg_text
+    from .expert import workshop_drawing
 
     chain = design.chain
     z = design.teeth_driving
     wheel = PocketWheel.from_chain(chain, z) if chain.is_link_chain else Sprocket.from_chain(chain, z)
-    outline = wheel.outline()
-    title = wheel.label()
     if kind == "svg":
-        return svg_text(outline, title=title).encode("utf-8")
-    doc = dxf_document(outline, title)
-    buf = io.StringIO()
-    doc.write(buf)
-    return buf.getvalue().encode("utf-8")
+        return svg_text(wheel.outline(), title=wheel.label()).encode("utf-8")
+    return workshop_drawing(wheel)
 
 
 def router(ctx: Any) -> APIRouter:
@@ -262,7 +274,7 @@ def router(ctx: Any) -> APIRouter:
         return ctx.render(request, "studio.html", state=state, table=table, fields=FIELDS,
                           driven_options=driven_options, required_safety=REQUIRED_STATIC_SAFETY,
                           downloads=DOWNLOADS, open_error=request.query_params.get("open_error", "")[:500],
-                          mining_query=state_query(normalise_state(MINING_EXAMPLE)),
+                          mining_query=_example_query("mining_conveyor.toml"),
                           query=state_query(state), extra_rows=extra_rows(state), extra_max=MAX_EXTRA_WHEELS,
                           extra_options=[(str(n), "none" if n == 0 else str(n)) for n in range(MAX_EXTRA_WHEELS + 1)])
 

@@ -68,6 +68,21 @@ class _Figures:
         section.figures.append(Figure.from_matplotlib(make(), caption, filename))
 
 
+def wheel_description(drive: Any, name: str) -> str:
+    """A wheel as every table of the report names it: its type and its role in the drive
+    (``"pocket wheel, tensioner idler"``, ``"sprocket, driving"``)."""
+    wheel = next(w for w in drive.wheels if w.name == name)
+    link = drive.chain.is_link_chain
+    if wheel.kind == "idler":
+        kind = ("pocket wheel" if link else "sprocket") if wheel.teeth is not None else "plain wheel"
+    else:
+        kind = wheel.kind.replace("_", " ")
+    tensioner = drive.tensioner is not None and drive.tensioner.wheel == name
+    role = ("driving" if wheel.driving else "tensioner idler" if tensioner else
+            "idler" if wheel.kind == "idler" else "driven")
+    return f"{kind}, {role}"
+
+
 def _teeth_cell(wheel: Wheel) -> int | str:
     """Teeth of a wheel, or the diameter of a toothless idler, for the input table."""
     if wheel.teeth is not None:
@@ -109,10 +124,11 @@ def inputs_section(a: DriveAnalysis, fig: _Figures) -> Section | None:
     ]
     tables = [Table("Input data", ["quantity", "value", "unit"], [[n, "—" if v is None else v, u] for n, v, u in rows]),
               Table("Wheels (in the order the chain passes them)",
-                    ["name", "kind", "teeth", f"x [{_unit('m')}]", f"y [{_unit('m')}]", "driving", "side",
+                    ["name", "wheel", "teeth", f"x [{_unit('m')}]", f"y [{_unit('m')}]", "driving", "side",
                      "power share"],
-                    [[w.name, w.kind, _teeth_cell(w), _val(w.position[0], "m"), _val(w.position[1], "m"), w.driving,
-                      w.side, "—" if w.power_share is None else w.power_share] for w in d.wheels])]
+                    [[w.name, wheel_description(d, w.name), _teeth_cell(w), _val(w.position[0], "m"),
+                      _val(w.position[1], "m"), w.driving, w.side, "—" if w.power_share is None else w.power_share]
+                     for w in d.wheels])]
     if d.adjustable is not None:
         tables.append(Table("Adjustable wheel (moved to fit the link count)", ["wheel", "direction x", "direction y"],
                             [[d.adjustable.wheel, *d.adjustable.direction]]))
@@ -409,8 +425,10 @@ def geometry_section(a: DriveAnalysis, fig: _Figures) -> Section | None:
                          f"{_val(dim.tip_diameter_min, 'm'):.2f} … {_val(dim.tip_diameter_max, 'm'):.2f}",
                          _val(dim.root_diameter, "m"), g.basis])
         sec.results[g.wheel] = dd
+    for row in rows:  # the wheel named as in the input table (type and role), e.g. "pocket wheel, tensioner idler"
+        row[1] = wheel_description(a.drive, row[0])
     mm = _unit("m")
-    sec.tables.append(Table("Main diameters", ["wheel", "kind", "teeth", f"pitch Ø [{mm}]", f"tip Ø [{mm}]",
+    sec.tables.append(Table("Main diameters", ["name", "wheel", "teeth", f"pitch Ø [{mm}]", f"tip Ø [{mm}]",
                                                f"root Ø [{mm}]", "basis"], rows))
     drv = a.drive.driving_wheel.name
     driving = next((g for g in a.geometry if g.wheel == drv), None)
@@ -457,13 +475,105 @@ def strength_section(a: DriveAnalysis, fig: _Figures) -> Section | None:
     if a.track_tooth is not None:
         tt = a.track_tooth
         rd = tt.to_dict()
+        sec.paragraphs.append(
+            "Sharipov, p. 34: «Расчетное усилие определяется из условия максимального сцепления гусеницы с "
+            "грунтом и передачи всего усилия одним зубом: P_Р = P / i, где P = 0,65 G_T φ; i — число зубчатых "
+            "венцов у ведущего колеса (i = 1 у одновенцового колеса и i = 2 у двухвенцового). Здесь φ = 1,0.» "
+            "(The design force follows from the largest adhesion of the track with the ground, the whole force "
+            "passed by one tooth; i is the number of toothed rims of the drive wheel.) Read here: P is the "
+            "adhesion force of one track, carried by its drive wheel (design torque P R_0); i counts the rims of "
+            "that wheel, not the tracks, so each rim's tooth carries P_P = P / i and each rim's bolts the torque "
+            "P_P R_0.")
         sec.tables.append(Table(
-            "Track drive wheel tooth (Sharipov, p. 34: P = 0.65 G_T φ / i)", ["quantity", "value", "unit"],
-            [["design force P", *_q(tt, "design_force")],
+            "Track drive wheel tooth (Sharipov, p. 34: P_P = P / i, P = 0.65 G_T φ)", ["quantity", "value", "unit"],
+            [["adhesion force of the track P = 0.65 G_T φ", *_q(tt, "wheel_force")],
+             ["toothed rims i", *_q(tt, "rims")],
+             ["design force on one tooth P_P = P / i", *_q(tt, "design_force")],
+             ["design torque of the drive wheel P R_0", *_q(tt, "design_torque")],
+             ["torque of one rim P_P R_0 (on its bolts)", *_q(tt, "rim_torque")],
              ["bending stress at the root (force at the tip)", *_q(tt, "bending_stress")],
              ["pin–tooth contact stress", *_q(tt, "contact_stress")]]))
         _checks(sec, a, ("track_tooth",))
         sec.results["track_tooth"] = rd
+    bolts = getattr(a, "rim_bolts", None)
+    if bolts is not None:
+        rows = [["joint", bolts.joint, ""]]
+        for label, name in (("bolts per rim", "count"), ("bolt circle radius", "circle_radius"),
+                            ("rim torque P_P R_0", "rim_torque"), ("force per bolt T / (n R_b)", "bolt_force"),
+                            ("shear stress", "shear_stress"), ("bearing stress", "bearing_stress"),
+                            ("required preload per bolt", "required_preload"), ("preload stress", "preload_stress")):
+            if getattr(bolts, name) is not None:
+                rows.append([label, *_q(bolts, name)])
+        sec.tables.append(Table("Rim bolts (Sharipov, Fig. 14; fitted bolts: Shigley §8-12, friction joint: "
+                                "VDI 2230-1)", ["quantity", "value", "unit"], rows))
+        _checks(sec, a, ("rim_bolts",))
+        sec.results["rim_bolts"] = bolts.to_dict()
+    return sec
+
+
+# --------------------------------------------------------------------------- crawler conveyor
+#: Rows of the crawler table: field of the part's result, label (units from the result class).
+_CRAWLER_ROWS = (
+    ("guide", "guide"),
+    ("teeth", "teeth of both sprockets"),
+    ("pitch_radius", "pitch radius R"),
+    ("sprocket_distance", "sprocket distance A"),
+    ("cam_distance", "cam distance l from the tensioning sprocket"),
+    ("mean_speed", "mean chain speed z t ω / 2π"),
+    ("speed_nonuniformity", "speed non-uniformity (v_max − v_min)/v_mean"),
+    ("acceleration_min", "smallest acceleration"),
+    ("acceleration_max", "largest acceleration"),
+    ("transverse_throw", "transverse throw of the span"),
+    ("cam_stiffness", "stiffness at the cam E_П A / (l (A − l))"),
+    ("traction_force", "traction force (mean cam force = effective pull)"),
+    ("pretension", "pre-tension (slack tension)"),
+    ("cam_force_min", "cam force, smallest"),
+    ("cam_force_max", "cam force, largest"),
+    ("cam_force_range", "cam force fluctuation (rigid return span)"),
+    ("cam_force_range_elastic", "cam force fluctuation (elastic return span, free tensioning sprocket)"),
+    ("tensioning_sprocket_lag", "largest lag of the free tensioning sprocket"),
+    ("tensioning_side_tension_min", "smallest tension, tensioning sprocket – cam"),
+    ("driving_side_tension_max", "largest tension, cam – driving sprocket"),
+    ("guide_reaction_driving", "guide reaction at the driving sprocket end, T tan φ1"),
+    ("guide_reaction_tensioning", "guide reaction at the tensioning sprocket end, T tan φ1"),
+    ("cam_face_angle", "pressure angle of the cam face α"),
+    ("cam_pushing_off", "pushing-off force at the cam, P tan α"),
+)
+
+
+def crawler_section(a: DriveAnalysis, fig: _Figures) -> Section | None:
+    """The conveyor crawler drive: kinematics, cam force, guide reactions (the crawler drive text)."""
+    r = getattr(a, "crawler_conveyor", None)
+    if r is None:
+        return None
+    sec = Section("Conveyor crawler drive: cam force and guide reaction")
+    sec.paragraphs.append(
+        "The drive chain carries cams that push the hinges of the conveyor's traction chain; it runs round the "
+        "driving and the tensioning sprocket, in phase (the crawler drive text, eqs 6.7, 6.14–6.16). The force on "
+        "the cam is the rebuilt formula P = E_П [(u_З − u_П)/(A − l) + (u_1 − u_П)/l] with the cam moved at the "
+        "mean speed; its mean is the traction force. It assumes a rigid return span and a tensioning sprocket "
+        "that turns in phase and imposes its own displacement; the second fluctuation drops both (elastic return "
+        "span, free tensioning sprocket) as a check. The guide takes the text's pushing-off forces: T tan φ1 at "
+        "each end of the guide and P tan α at the cam (docs/crawler.md).")
+    rows: list[list[Any]] = []
+    for name, label in _CRAWLER_ROWS:
+        value = getattr(r, name)
+        if value is None:
+            continue
+        rows.append([label, value, ""] if isinstance(value, str) else [label, *_q(r, name)])
+    sec.tables.append(Table("Conveyor crawler drive (the crawler drive text; cam force rebuilt, docs/crawler.md)",
+                            ["quantity", "value", "unit"], rows))
+    _checks(sec, a, ("crawler_conveyor",))
+    kin = r.kinematics
+    if kin is not None:
+        def crawler_figure() -> MatplotlibFigure:
+            from ..plotting.crawler import crawler_plot
+
+            return crawler_plot([kin])
+
+        fig(sec, crawler_figure, "Drive-chain speed, acceleration and cam force (about its mean) over one tooth "
+            "period", "crawler.png")
+    sec.results["crawler_conveyor"] = {k: v for k, v in r.to_dict().items() if k != "kinematics"}
     return sec
 
 
