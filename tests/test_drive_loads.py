@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import math
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -154,3 +155,36 @@ def test_wear_scalar_vs_array():
     assert arr.shape == (3,)
     assert np.allclose(arr, [float(W.hours_to_elongation_rating(10e3, p, 120)) for p in P])
     assert np.all(np.diff(arr) < 0)  # more load, shorter life
+
+
+# ---------------------------------------------------------------- power split to several wheels
+
+
+def test_span_tensions_with_a_power_split():
+    # statics by hand: slack 100 N leaves the driving wheel 0; wheel 1 takes 40 %, wheel 2
+    # 60 % of F_e = 1000 N, so the spans carry 100, 500, 1100 N (ccw) ...
+    from chaindrive.analysis.loads import span_tensions
+
+    shares = np.array([0.0, 0.4, 0.6])
+    assert span_tensions(1000.0, 100.0, shares, 0).tolist() == pytest.approx([100, 500, 1100])
+    # ... and running clockwise the chain leaves wheel 0 along span 2, meets wheel 2 (+600 N),
+    # runs back along span 1, meets wheel 1 (+400 N) and arrives along span 0
+    assert span_tensions(1000.0, 100.0, shares, 0, "cw").tolist() == pytest.approx([1100, 700, 100])
+    # one driven wheel: the two-wheel tight/slack pair
+    assert span_tensions(1000.0, 100.0, np.array([0.0, 1.0]), 0).tolist() == pytest.approx([100, 1100])
+
+
+def test_shaft_loads_of_a_multi_wheel_drive_balance():
+    # independent: the chain loop is in equilibrium, so the shaft loads (the chain's pull on
+    # each wheel) sum to zero as vectors; the largest span carries F_e + S_slack
+    from chaindrive.analysis import analyze_drive
+    from chaindrive.drive import load_project
+
+    drive = load_project(Path(__file__).resolve().parents[1] / "examples" / "multi_wheel.toml")
+    t = analyze_drive(drive, include=["loads"]).loads
+    fx = np.sum(t.shaft_loads * np.cos(t.shaft_load_angles))
+    fy = np.sum(t.shaft_loads * np.sin(t.shaft_load_angles))
+    assert math.hypot(fx, fy) < 1e-9 * t.tight
+    assert max(t.span_tensions) == pytest.approx(t.effective_pull + t.slack, rel=1e-12)
+    assert t.wheel_powers.sum() == pytest.approx(0.0, abs=1e-6)  # the power delivered is taken off
+    assert t.wheel_powers[2] == pytest.approx(-0.6 * drive.power())

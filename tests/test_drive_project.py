@@ -461,7 +461,8 @@ def test_examples_write_every_quantity_with_its_unit(name):
                      "elongation_limit", "links", "strands", "direction", "side", "adhesion",
                      "rims", "hardness", "wear_factor", "cam_index", "count", "shear_planes",
                      "friction", "friction_faces", "slip_safety",
-                     "chain_friction", "material_friction", "return_friction", "head_share", "efficiency"}
+                     "chain_friction", "material_friction", "return_friction", "head_share", "efficiency",
+                     "power_share"}
     assert is_dimensional("m") and not is_dimensional("")
 
     def walk(node, key=""):
@@ -493,3 +494,49 @@ def test_self_regulating_table_loads_and_refuses_bare_numbers():
     bad = text.replace('torque_reaction = "carrier"', 'torque_reaction = "carrier"\nspring = "1 N/m"')
     with pytest.raises(InputError, match=r"sr.toml:\d+: .*unknown key"):
         parse_project(bad, "sr.toml")
+
+
+# ---------------------------------------------------------------- power split and the adjustable wheel
+
+
+def _multi(**changes):
+    text = (Path(__file__).resolve().parents[1] / "examples" / "multi_wheel.toml").read_text(encoding="utf-8")
+    for old, new in changes.items():
+        assert old in text
+        text = text.replace(old, new)
+    return text
+
+
+def test_power_shares_are_read_and_checked():
+    d = parse_project(_multi())
+    assert [w.power_share for w in d.wheels] == [None, None, 0.6, 0.4]
+    assert d.adjustable is not None and d.adjustable.wheel == "take-up idler"
+    assert d.power_shares().tolist() == [0.0, 0.0, 0.6, 0.4]
+    with pytest.raises(InputError, match=r"power_share of the driven wheels must sum to 1, got 0.6 \+ 0.3"):
+        parse_project(_multi(**{"power_share = 0.4": "power_share = 0.3"}))
+    with pytest.raises(InputError, match="power_share"):
+        parse_project(_multi(**{"power_share = 0.4": "power_share = 1.5"}))
+    with pytest.raises(InputError, match="power_share"):
+        parse_project(_multi(**{"power_share = 0.4": "power_share = 0"}))
+    with pytest.raises(InputError, match="power_share is for a driven wheel"):
+        parse_project(_multi(**{"driving = true": "driving = true\npower_share = 0.5"}))
+    with pytest.raises(InputError, match="exactly one wheel must have driving"):
+        parse_project(_multi(**{'kind = "idler"': 'kind = "idler"\ndriving = true'}))
+    with pytest.raises(InputError, match="adjustable.wheel: no wheel named 'nope'"):
+        parse_project(_multi(**{'wheel = "take-up idler"': 'wheel = "nope"'}))
+    with pytest.raises(InputError, match="adjustable.direction must be a non-zero vector"):
+        parse_project(_multi(**{"direction = [0, 1]": "direction = [0, 0]"}))
+
+
+def test_shares_sum_within_1e_9():
+    from chaindrive.chains import get
+    from chaindrive.drive import Drive, Load, Wheel
+
+    def drive(a, b):
+        return Drive(chain=get("16B"), speed=100.0, load=Load(power=10e3), wheels=[
+            Wheel("m", "sprocket", 19, (0, 0), driving=True), Wheel("a", "sprocket", 38, (1, 0), power_share=a),
+            Wheel("b", "sprocket", 30, (0.5, 0.8), power_share=b)])
+
+    assert drive(0.3, 0.7 + 5e-10).power_shares().sum() == pytest.approx(1.0)
+    with pytest.raises(InputError, match="must sum to 1"):
+        drive(0.3, 0.7 + 2e-9)

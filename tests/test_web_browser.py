@@ -238,3 +238,31 @@ def test_expert_pages(page):
     assert page.locator("#job-results img").count() == 3
     assert "done" in page.inner_text("#job-message")
     page.screenshot(path=str(ARTIFACTS / "simulation.png"), full_page=True)
+
+
+def test_add_and_remove_further_wheels(page):
+    # the studio edits a drive with more wheels: a second machine sprocket with 40 % of the
+    # power, added and removed with the page's buttons
+    page.shot_prefix = "wheels"
+    page.goto(page.base + "/")
+    _live(page)
+    assert page.locator("#wheel-row-0").count() == 0
+    with page.expect_navigation():
+        page.click("#add-wheel")
+    _live(page)
+    expect(page.locator("#wheel-row-0")).to_be_visible()
+    page.fill("#wheel0_x", "300 mm")
+    page.fill("#wheel0_y", "450 mm")
+    page.fill("#wheel0_share", "0.4")
+    expect(page.locator("#err-wheel0_share")).to_have_text("")
+    expect(page).to_have_url(re.compile(r"wheel0_share=0\.4"))
+    expect(page.locator("#drawing")).to_contain_text("machine 1")
+    page.screenshot(path=str(ARTIFACTS / "further-wheels.png"))
+    page.fill("#wheel0_y", "450")
+    expect(page.locator("#err-wheel0_y")).to_contain_text("give a unit")
+    page.fill("#wheel0_y", "450 mm")
+    expect(page.locator("#err-wheel0_y")).to_have_text("")
+    with page.expect_navigation():
+        page.click("#remove-wheel")
+    _live(page)
+    assert page.locator("#wheel-row-0").count() == 0

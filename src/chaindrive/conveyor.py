@@ -34,7 +34,8 @@ from ._roots import brentq
 from ._typing import FloatOrArray
 from ._validation import as_float_array, check_nonnegative, check_positive, check_range
 from .errors import InputError
-from .layout import GRAVITY, _catenary_sag
+from .layout import GRAVITY
+from .layout.sag import _catenary_sag
 
 __all__ = ["pan_end_clearance", "material_mass_per_length", "strand_resistance", "drive_power", "mean_tension",
            "FreeStrand", "free_strand", "free_strand_minimum_tension", "pretension_for_minimum"]

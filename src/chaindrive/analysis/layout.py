@@ -62,6 +62,12 @@ class DriveLayout(Result):
         Mean chain speed [m/s].
     angular_velocities : ndarray
         Mean angular velocity of every wheel [rad/s].
+    loop : LoopLength or None
+        Exact polygon length of a drive of three or more wheels
+        (:func:`chaindrive.layout.chain_length_loop`); ``links`` follows from its
+        ``links_max`` unless the pitch circles stood in (``loop.exact`` False).
+    adjustment : LoopAdjustment or None
+        The adjustable wheel's setting for ``links``; the layout is at that position.
     """
 
     wrap: L.WrapLayout
@@ -83,16 +89,23 @@ class DriveLayout(Result):
     take_up_kind: str
     chain_speed: float = quantity("m/s")
     angular_velocities: np.ndarray = quantity("rad/s")
+    loop: L.LoopLength | None = None
+    adjustment: L.LoopAdjustment | None = None
 
 
 def drive_layout(drive: Drive, *, phases: int = 8) -> DriveLayout:
     """Chain length, centre distance for whole links, wraps, spans and take-up of ``drive``.
 
     Two toothed wheels: the exact polygon length (:func:`chaindrive.layout.chain_length_polygon`)
-    and the centre distance for the even link count. More wheels: tangent spans and wraps
-    on the pitch circles (:func:`~chaindrive.layout.wrap_layout`), wraps counted in
-    seated links. The take-up for 1, 2 and 3 % wear is the tensioner travel (with a
-    tensioner) or the centre-distance increase (two wheels).
+    and the centre distance for the even link count. More wheels: the exact polygon length
+    of the loop (:func:`chaindrive.layout.chain_length_loop`, the pitch circles with a
+    warning where no polygon path exists) sets the even link count; ``links_required``
+    keeps the pitch-circle length with the wraps counted in seated links. With an
+    ``adjustable`` wheel, it is moved along its direction until the links fit
+    (:func:`chaindrive.layout.adjust_loop`) and the layout is drawn there. Spans and
+    wraps: tangents on the pitch circles (:func:`~chaindrive.layout.wrap_layout`). The
+    take-up for 1, 2 and 3 % wear is the tensioner travel (with a tensioner) or the
+    centre-distance increase (two wheels).
 
     Parameters
     ----------
@@ -126,28 +139,31 @@ def drive_layout(drive: Drive, *, phases: int = 8) -> DriveLayout:
     (142, 4.0)
     """
     wheels = drive.wheels
-    wrap = L.wrap_layout([w.position for w in wheels], drive.pitch_radii(), [w.side for w in wheels])
     p = drive.pitch
     radii = drive.pitch_radii()
     chain = drive.chain
-    wrap_links = np.array([
-        wrap.wrap_angle[i] * w.sides_per_turn(chain) / (2 * np.pi)
-        if w.teeth is not None else wrap.wrap_length[i] / p
-        for i, w in enumerate(wheels)
-    ])
-    links_required = float(wrap.span_length.sum() / p + wrap_links.sum())
-    polygon = cd = centre = None
+    sides = [w.side for w in wheels]
+    positions = np.array([w.position for w in wheels], dtype=float)
+    links_required, polygon, loop, centre = _required_length(drive, positions, phases)
+    needed = loop.links_max if loop is not None and loop.exact else links_required
+    links = int(drive.links) if drive.links is not None else int(L.even_links(needed))
+    adjustment = None
+    if drive.adjustable is not None:
+        idx = drive.wheel_index(drive.adjustable.wheel)
+        adjustment = L.adjust_loop(p, positions, [w.teeth for w in wheels], links, idx, drive.adjustable.direction,
+                                   sides, diameters=[w.diameter for w in wheels], bar_diameter=drive.bar_diameter,
+                                   phases=phases)
+        positions[idx] = adjustment.position
+        links_required, polygon, loop, centre = _required_length(drive, positions, phases)
+        needed = loop.links_max if loop is not None and loop.exact else links_required
+    wrap = L.wrap_layout(positions, radii, sides)
     two = drive.is_two_wheel()
+    cd = None
     z1 = z2 = 0
     if two:
-        w1, w2 = wheels
-        z1, z2 = wheel_teeth(w1, "a two-wheel drive"), wheel_teeth(w2, "a two-wheel drive")
-        centre = float(np.hypot(*np.subtract(w2.position, w1.position)))
-        polygon = L.chain_length_polygon(p, z1, z2, centre, bar_diameter=drive.bar_diameter, phases=phases)
-        links_required = polygon.links_max
-    links = int(drive.links) if drive.links is not None else int(L.even_links(links_required))
-    if links < links_required - 1e-9 and drive.tensioner is None and not two:
-        warnings.warn(f"links = {links} is shorter than the {links_required:.2f} pitches the "
+        z1, z2 = wheel_teeth(wheels[0], "a two-wheel drive"), wheel_teeth(wheels[1], "a two-wheel drive")
+    if links < needed - 1e-9 and drive.tensioner is None and not two:
+        warnings.warn(f"links = {links} is shorter than the {needed:.2f} pitches the "
                       "layout needs", ValidityRangeWarning, stacklevel=2)
     if two:
         cd = L.centre_distance_polygon(p, z1, z2, links, bar_diameter=drive.bar_diameter, phases=phases)
@@ -163,11 +179,19 @@ def drive_layout(drive: Drive, *, phases: int = 8) -> DriveLayout:
         try:
             # the chain of `links` may be longer than the path: take that up first
             extra = max(0.0, (links - links_required) * p)
-            take_up = L.tensioner_travel([w.position for w in wheels], radii, [w.side for w in wheels],
+            take_up = L.tensioner_travel(positions, radii, sides,
                                          idx, t.direction, elong, chain_length=links * p, extra_length=extra)
             kind = f"travel of tensioner wheel {t.wheel!r}"
         except InfeasibleError as exc:
             kind = f"tensioner cannot take up the elongation: {exc}"
+    elif adjustment is not None and drive.adjustable is not None and not two:
+        name = drive.adjustable.wheel
+        try:
+            take_up = L.tensioner_travel(positions, radii, sides, adjustment.wheel, adjustment.direction, elong,
+                                         chain_length=links * p)
+            kind = f"further travel of the adjustable wheel {name!r} from its setting for {links} links"
+        except InfeasibleError as exc:
+            kind = f"the adjustable wheel {name!r} cannot take up the elongation: {exc}"
     elif cd is not None:  # a two-wheel drive
         take_up = L.centre_distance_travel(p, z1, z2, cd.taut, elong, bar_diameter=drive.bar_diameter)
         kind = f"increase of centre distance from {cd.taut * 1e3:.2f} mm ({links} links)"
@@ -181,7 +205,32 @@ def drive_layout(drive: Drive, *, phases: int = 8) -> DriveLayout:
         slack_span=k if drive.travel == "ccw" else (k - 1) % n,
         elongations=elong, take_up=take_up, take_up_kind=kind,
         chain_speed=drive.chain_speed(), angular_velocities=drive.angular_velocities(),
+        loop=loop, adjustment=adjustment,
     )
+
+
+def _required_length(drive: Drive, positions: np.ndarray, phases: int):
+    """Chain length the wheels at ``positions`` need: (links on the circles with the wraps counted in seated
+    links, or the two-wheel polygon's largest; the two-wheel polygon; the loop polygon of three or more
+    wheels; the two-wheel centre distance)."""
+    wheels = drive.wheels
+    p = drive.pitch
+    wrap = L.wrap_layout(positions, drive.pitch_radii(), [w.side for w in wheels])
+    wrap_links = np.array([
+        wrap.wrap_angle[i] * w.sides_per_turn(drive.chain) / (2 * np.pi)
+        if w.teeth is not None else wrap.wrap_length[i] / p
+        for i, w in enumerate(wheels)
+    ])
+    required = float(wrap.span_length.sum() / p + wrap_links.sum())
+    if drive.is_two_wheel():
+        z1, z2 = wheel_teeth(wheels[0], "a two-wheel drive"), wheel_teeth(wheels[1], "a two-wheel drive")
+        centre = float(np.hypot(*(positions[1] - positions[0])))
+        polygon = L.chain_length_polygon(p, z1, z2, centre, bar_diameter=drive.bar_diameter, phases=phases)
+        return polygon.links_max, polygon, None, centre
+    loop = L.chain_length_loop(p, positions, [w.teeth for w in wheels], [w.side for w in wheels],
+                               diameters=[w.diameter for w in wheels], bar_diameter=drive.bar_diameter,
+                               phases=phases)
+    return required, None, loop, None
 
 
 def span_inclination(direction: float) -> float:

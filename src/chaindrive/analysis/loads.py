@@ -22,7 +22,7 @@ from .parts import Part, PartContext, register_part
 if TYPE_CHECKING:
     from .conveyor import ConveyorPull
 
-__all__ = ["DriveLoads", "drive_loads", "free_entry_acceleration", "static_safety_check", "wrap_check",
+__all__ = ["DriveLoads", "drive_loads", "span_tensions", "free_entry_acceleration", "static_safety_check", "wrap_check",
            "MINIMUM_WRAP", "REQUIRED_STATIC_SAFETY", "required_static_safety"]
 
 #: Smallest wrap on the driving wheel [rad] (ISO 10823:2004 guidance: 120°).
@@ -76,12 +76,21 @@ class DriveLoads(Result):
     dynamic_factor : float
         ``maximum / tight`` [-].
     span_tensions : ndarray
-        Static tension of each span without centrifugal part [N].
+        Static tension of each span without centrifugal part [N]: the slack tension on
+        the span leaving the driving wheel, rising at each driven wheel by its share of
+        the effective pull.
     shaft_loads : ndarray
         Resultant on each wheel [N].
     shaft_load_angles : ndarray
         [rad].
     wheel_names : tuple of str
+    power_shares : ndarray
+        Share of the power taken off at each wheel [-] (:meth:`Drive.power_shares`).
+    wheel_powers : ndarray
+        Power at each wheel without service factor [W]: the driving wheel's positive,
+        the driven wheels' negative (taken off), idlers 0.
+    wheel_torques : ndarray
+        Torque on each wheel's shaft without service factor [N·m], signed as the powers.
     """
 
     torque: float = quantity("N*m")
@@ -102,6 +111,9 @@ class DriveLoads(Result):
     shaft_loads: np.ndarray = quantity("N")
     shaft_load_angles: np.ndarray = quantity("rad")
     wheel_names: tuple[str, ...]
+    power_shares: np.ndarray | None = quantity("1", default=None)
+    wheel_powers: np.ndarray | None = quantity("W", default=None)
+    wheel_torques: np.ndarray | None = quantity("N*m", default=None)
 
 
 def free_entry_acceleration(drive: Drive) -> float:
@@ -216,29 +228,84 @@ def drive_loads(drive: Drive, layout: DriveLayout | None = None, *,
     else:
         Fe = float(F.tight_side_tension(drive.torque(), R)) * drive.load.service_factor
         Fs, src = _slack_tension(drive, lay)
-    tight = Fe + Fs + Fc
+    shares = drive.power_shares()
+    span_T = span_tensions(Fe, Fs, shares, drive.driving_index, drive.travel)
+    tight = float(span_T.max()) + Fc  # the largest span tension (Fe + Fs) plus q v²
     if acceleration_peak is None:
         a, asrc = free_entry_acceleration(drive), "free entry on the driving wheel, ω² R sin(δ/2) (Dolipiński et al.)"
     else:
         a, asrc = float(acceleration_peak), acceleration_source
     m = float(moving_mass) if moving_mass is not None else q * lay.links * drive.pitch
     Fd = float(F.dynamic_tension(m, a))
-    n = len(drive.wheels)
-    span_T = np.full(n, Fs)
-    span_T[lay.tight_span] = Fe + Fs
     ang = lay.wrap.span_angle
     # wheel i: pulled back along incoming span i-1, forward along outgoing span i
     tens = np.column_stack([np.roll(span_T, 1), span_T])
     dirs = np.column_stack([np.roll(ang, 1) + np.pi, ang])
     mag, th = F.shaft_load(tens, dirs)
+    powers = np.where(shares > 0, -shares * drive.power(), 0.0)
+    powers[drive.driving_index] = drive.power()
     return DriveLoads(
         torque=drive.torque(), design_power=drive.design_power(), chain_speed=v, effective_pull=Fe, slack=Fs, slack_source=src,
         centrifugal=Fc, tight=tight, acceleration_peak=a, acceleration_source=asrc,
         moving_mass=m, dynamic=Fd, maximum=tight + Fd,
         dynamic_factor=float(F.dynamic_factor(tight, Fd)), span_tensions=span_T,
         shaft_loads=np.asarray(mag, dtype=float), shaft_load_angles=np.asarray(th, dtype=float),
-        wheel_names=lay.wheel_names,
+        wheel_names=lay.wheel_names, power_shares=shares, wheel_powers=powers,
+        wheel_torques=powers / lay.angular_velocities,
     )
+
+
+def span_tensions(effective_pull: float, slack: float, shares: np.ndarray, driving: int,
+                  travel: str = "ccw") -> np.ndarray:
+    r"""Static tension of every span [N] with the power taken off at several wheels.
+
+    .. math:: S_{j} = S_{slack} + F_e \sum_{i \in \text{path}(k \to j)} \sigma_i
+
+    Following the chain from the slack span (leaving the driving wheel ``k``), each
+    driven wheel ``i`` takes its share ``σ_i`` of the torque, so the tension rises across
+    it by ``σ_i F_e`` (torque balance of the wheel, friction neglected); the span
+    arriving at the driving wheel carries ``S_slack + F_e``.
+
+    Parameters
+    ----------
+    effective_pull : float
+        ``F_e = K_s T / R`` of the driving wheel [N].
+    slack : float
+        Slack-side tension [N].
+    shares : ndarray
+        Share of the power of each wheel in chain order (sum 1) [-].
+    driving : int
+        Index of the driving wheel.
+    travel : {"ccw", "cw"}
+        Direction of chain travel along the wheel list.
+
+    Returns
+    -------
+    ndarray
+        Tension of span ``i`` (from wheel ``i`` to ``i+1``) [N].
+
+    References
+    ----------
+    Moment balance of each wheel (statics); two-wheel case: Shigley, 9th ed., sec. 17-5
+    (tight side ``F_e + S``, slack side ``S``).
+
+    Examples
+    --------
+    >>> span_tensions(1000.0, 100.0, np.array([0.0, 0.4, 0.6]), 0)
+    array([ 100.,  500., 1100.])
+    """
+    n = len(shares)
+    out = np.empty(n)
+    step = 1 if travel == "ccw" else -1
+    # ccw: span k leaves wheel k, then wheel k+1 ... ; cw: span k-1 leaves wheel k, then wheel k-1 ...
+    span = driving if travel == "ccw" else (driving - 1) % n
+    tension = slack
+    for _ in range(n):
+        out[span] = tension
+        wheel = (span + 1) % n if travel == "ccw" else span  # the wheel the chain reaches next
+        tension = tension + shares[wheel] * effective_pull
+        span = (span + step) % n
+    return out
 
 
 def static_safety_check(drive: Drive, loads: DriveLoads) -> Check:

@@ -21,6 +21,7 @@ Examples
 from typing import Any
 
 from .model import (
+    Adjustable,
     ContactSpec,
     Conveyor,
     CrawlerSpec,
@@ -35,7 +36,8 @@ from .model import (
 )
 
 __all__ = [
-    "Drive", "Wheel", "Tensioner", "Guide", "Load", "ContactSpec", "TrackSpec", "CrawlerSpec", "FrettingSpec", "RimBoltsSpec", "Conveyor",
+    "Drive", "Wheel", "Tensioner", "Adjustable", "Guide", "Load", "ContactSpec", "TrackSpec", "CrawlerSpec",
+    "FrettingSpec", "RimBoltsSpec", "Conveyor",
     "load_project", "Project",
 ]
 

@@ -35,8 +35,8 @@ from ..loads import mean_chain_speed, sides_per_turn
 if TYPE_CHECKING:
     from ..chains import Chain
 
-__all__ = ["WHEEL_KINDS", "TENSIONER_PARTS", "sides_per_turn", "Wheel", "Tensioner", "Guide", "Load", "ContactSpec",
-           "TrackSpec", "RimBoltsSpec", "CrawlerSpec", "FrettingSpec", "Conveyor", "RETURN_STRANDS",
+__all__ = ["WHEEL_KINDS", "TENSIONER_PARTS", "sides_per_turn", "Wheel", "Tensioner", "Adjustable", "Guide", "Load",
+           "ContactSpec", "TrackSpec", "RimBoltsSpec", "CrawlerSpec", "FrettingSpec", "Conveyor", "RETURN_STRANDS",
            "Drive"]
 
 WHEEL_KINDS = ("sprocket", "pocket_wheel", "track_wheel", "idler")
@@ -65,6 +65,16 @@ def _finite(value: Any, what: str, *, positive: bool = False, nonnegative: bool 
     return x
 
 
+def _direction(value: Any, what: str) -> tuple[float, float]:
+    d = tuple(value)
+    if len(d) != 2:
+        raise InputError(f"{what} must be (x, y), got {value!r}", field=what)
+    dx, dy = _finite(d[0], f"{what} x"), _finite(d[1], f"{what} y")
+    if not math.hypot(dx, dy) > 0:
+        raise InputError(f"{what} must be a non-zero vector", field=what)
+    return dx, dy
+
+
 @dataclass(frozen=True)
 class Wheel:
     """A wheel of the drive.
@@ -85,6 +95,10 @@ class Wheel:
         Pitch (running) diameter of a toothless idler [m].
     side : {+1, -1}
         +1 inside the chain loop; -1 an idler on the outside (back) of the chain.
+    power_share : float, optional
+        Share of the transmitted power taken off at this driven wheel, in (0, 1]; the
+        shares of a drive sum to 1. ``None``: the wheel takes no power (an idler), or,
+        when no wheel of the drive has a share, the one driven wheel takes it all.
     """
 
     name: str
@@ -94,6 +108,7 @@ class Wheel:
     driving: bool = False
     diameter: float | None = None
     side: int = 1
+    power_share: float | None = None
 
     def __post_init__(self) -> None:
         what = f"wheel {self.name!r}"
@@ -119,6 +134,14 @@ class Wheel:
         object.__setattr__(self, "position", (_finite(pos[0], f"{what}: position x"),
                                               _finite(pos[1], f"{what}: position y")))
         object.__setattr__(self, "driving", bool(self.driving))
+        if self.power_share is not None:
+            share = _finite(self.power_share, f"{what}: power_share")
+            if not 0 < share <= 1:
+                raise InputError(f"{what}: power_share must lie in (0, 1], got {share:g}", field="power_share")
+            if self.driving or self.kind == "idler" or self.teeth is None:
+                raise InputError(f"{what}: power_share is for a driven wheel with teeth (not the driving wheel "
+                                 "or an idler)", field="power_share")
+            object.__setattr__(self, "power_share", share)
 
     def pitch_radius(self, chain: Chain) -> float:
         """Pitch radius on ``chain`` [m] (pocket wheels: Dolipiński et al., eq. (6))."""
@@ -242,16 +265,28 @@ class Tensioner:
         if self.kind not in TENSIONER_KINDS:
             raise InputError(f"tensioner.kind must be one of {', '.join(TENSIONER_KINDS)}, got {self.kind!r}",
                              field="tensioner.kind")
-        d = tuple(self.direction)
-        if len(d) != 2:
-            raise InputError(f"tensioner.direction must be (x, y), got {self.direction!r}",
-                             field="tensioner.direction")
-        dx, dy = _finite(d[0], "tensioner.direction x"), _finite(d[1], "tensioner.direction y")
-        if not math.hypot(dx, dy) > 0:
-            raise InputError("tensioner.direction must be a non-zero vector", field="tensioner.direction")
-        object.__setattr__(self, "direction", (dx, dy))
+        object.__setattr__(self, "direction", _direction(self.direction, "tensioner.direction"))
         if self.force is not None:
             object.__setattr__(self, "force", _finite(self.force, "tensioner.force", nonnegative=True))
+
+
+@dataclass(frozen=True)
+class Adjustable:
+    """The wheel moved to fit a whole number of links (take-up, movable sprocket).
+
+    Parameters
+    ----------
+    wheel : str
+        Name of the wheel; its ``position`` is the nominal one.
+    direction : (float, float)
+        Direction along which it moves (non-zero).
+    """
+
+    wheel: str
+    direction: tuple[float, float] = (1.0, 0.0)
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "direction", _direction(self.direction, "adjustable.direction"))
 
 
 @dataclass(frozen=True)
@@ -690,6 +725,8 @@ class Drive:
         (:class:`chaindrive.drive.carrier.SelfRegulatingSpec`).
     conveyor : Conveyor, optional
         Scraper conveyor: pans, material, drives (a mapping of its fields is accepted).
+    adjustable : Adjustable, optional
+        The wheel moved to fit the link count (a mapping of its fields is accepted).
 
     Examples
     --------
@@ -728,10 +765,12 @@ class Drive:
     crawler: CrawlerSpec | None = None
     fretting: FrettingSpec | None = None
     conveyor: Conveyor | None = None
+    adjustable: Adjustable | None = None
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "wheels", tuple(self.wheels))
         object.__setattr__(self, "conveyor", _spec(self.conveyor, Conveyor, "conveyor"))
+        object.__setattr__(self, "adjustable", _spec(self.adjustable, Adjustable, "adjustable"))
         object.__setattr__(self, "guides", tuple(self.guides))
         object.__setattr__(self, "contact", _spec(self.contact, ContactSpec, "contact"))
         object.__setattr__(self, "track", _spec(self.track, TrackSpec, "track"))
@@ -756,6 +795,12 @@ class Drive:
             self.wheel(g.wheel, what=f"guides[{i}].wheel")
         if self.tensioner is not None:
             self.wheel(self.tensioner.wheel, what="tensioner.wheel")
+        if self.adjustable is not None:
+            self.wheel(self.adjustable.wheel, what="adjustable.wheel")
+        shares = [w.power_share for w in self.wheels if w.power_share is not None]
+        if shares and abs(math.fsum(shares) - 1.0) > 1e-9:
+            raise InputError("wheels: the power_share of the driven wheels must sum to 1, got "
+                             f"{' + '.join(f'{x:g}' for x in shares)} = {math.fsum(shares):.12g}", field="wheels")
         if self.links is not None:
             if isinstance(self.links, bool) or int(self.links) != self.links or self.links < 3:
                 raise InputError(f"drive.links must be a whole number >= 3, got {self.links!r}",
@@ -889,6 +934,19 @@ class Drive:
         """Power times service factor [W]."""
         return self.power() * self.load.service_factor
 
+    def power_shares(self) -> np.ndarray:
+        """Share of the power taken off at every wheel, in chain order [-] (sum 1).
+
+        The given ``power_share`` of each wheel; when none is given, all of it at the wheel
+        the tight span leaves (the driven wheel of a two-wheel drive).
+        """
+        if any(w.power_share is not None for w in self.wheels):
+            return np.array([w.power_share or 0.0 for w in self.wheels])
+        k, n = self.driving_index, len(self.wheels)
+        out = np.zeros(n)
+        out[(k - 1) % n if self.travel == "ccw" else (k + 1) % n] = 1.0
+        return out
+
     def _repr_html_(self) -> str:
         """Notebook display: the drive's data with units and its drawing to scale
         (formatted by :func:`chaindrive.workflows.notebook.html_of`)."""
@@ -897,7 +955,8 @@ class Drive:
         return html_of(self)
 
     def is_two_wheel(self) -> bool:
-        """Two toothed wheels and nothing else (the exact polygon length applies)."""
+        """Two toothed wheels and nothing else (the two-wheel hull model and its centre distance for the
+        links apply; more wheels: :func:`chaindrive.layout.chain_length_loop`)."""
         return len(self.wheels) == 2 and all(w.teeth is not None for w in self.wheels)
 
     def inputs(self) -> dict[str, Any]:
@@ -927,5 +986,6 @@ class Drive:
             "self_regulating": (None if self.self_regulating is None
                                 else jsonable(self.self_regulating)),
             "conveyor": None if self.conveyor is None else dataclasses.asdict(self.conveyor),
+            "adjustable": None if self.adjustable is None else dataclasses.asdict(self.adjustable),
         }
 

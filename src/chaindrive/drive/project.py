@@ -38,7 +38,7 @@ from ..limits import MAX_LINKS, MAX_TEETH, warn_implausible
 from ..loads import mean_chain_speed
 from ..units import chain_speed_to_angular_velocity, is_dimensional, parse_quantity, unit_example
 from . import model as _model
-from .model import Drive, Guide, Load, Tensioner, Wheel
+from .model import Adjustable, Drive, Guide, Load, Tensioner, Wheel
 from .templates import TEMPLATES, template  # the templates of `chaindrive new`
 
 __all__ = ["Project", "load_project", "parse_project", "project_from_mapping", "line_index", "template", "TEMPLATES"]
@@ -215,6 +215,14 @@ class WheelSpec(_Model):
     position: tuple[Coordinate, Coordinate]
     driving: bool = False
     side: Literal[1, -1] = 1
+    power_share: float | None = Field(default=None, gt=0, le=1)
+
+
+class AdjustableSpec(_Model):
+    """``[adjustable]``: the wheel moved to fit the link count."""
+
+    wheel: str
+    direction: tuple[float, float] = (1.0, 0.0)
 
 
 LengthOrZero = Annotated[float, _quantity("m", allow_zero=True)]
@@ -378,6 +386,7 @@ class Project(_Model):
     load: LoadSpec
     wheels: list[WheelSpec] = Field(min_length=2)
     tensioner: TensionerSpec | None = None
+    adjustable: AdjustableSpec | None = None
     guides: list[GuideSpec] = []
     contact: ContactSpec | None = None
     track: TrackSpec | None = None
@@ -564,7 +573,8 @@ def project_from_mapping(data: dict[str, Any], filename: str = "<project>", *,
     for i, w in enumerate(proj.wheels):
         try:
             wheels.append(Wheel(name=w.name, kind=w.kind, teeth=w.teeth, position=w.position,
-                                driving=w.driving, diameter=w.diameter, side=w.side))
+                                driving=w.driving, diameter=w.diameter, side=w.side,
+                                power_share=w.power_share))
         except ChainDriveError as exc:
             raise _located(exc, ("wheels", i), filename, index) from None
     try:
@@ -575,6 +585,7 @@ def project_from_mapping(data: dict[str, Any], filename: str = "<project>", *,
             load=Load(power=proj.load.power, torque=proj.load.torque,
                       service_factor=proj.load.service_factor),
             tensioner=None if proj.tensioner is None else proj.tensioner.to_tensioner(),
+            adjustable=None if proj.adjustable is None else Adjustable(**proj.adjustable.model_dump()),
             guides=tuple(Guide(**g.model_dump()) for g in proj.guides),
             links=proj.drive.links, slack_tension=proj.drive.slack_tension,
             slack_sag_ratio=proj.drive.slack_sag_ratio,

@@ -218,6 +218,12 @@ def project_text(drive: Drive, *, header: str | None = None, comments: Mapping[s
             out.key(where, "driving", "true")
         if w.side != 1:
             out.key(where, "side", str(int(w.side)))
+        if w.power_share is not None:
+            out.key(where, "power_share", _number(w.power_share))
+    if d.adjustable is not None:
+        out.table("adjustable")
+        out.key("adjustable", "wheel", toml_string(d.adjustable.wheel))
+        out.key("adjustable", "direction", _pair(d.adjustable.direction, ""))
     if d.tensioner is not None:
         t = d.tensioner
         out.table("tensioner")

@@ -24,6 +24,7 @@ from ..design.policy import BASE_TEETH
 from ..errors import ChainDriveError, InputError, ValidityRangeWarning
 from ..units import angular_velocity_to_rpm
 from .fields import FieldError, FieldSpec, parse_field, parse_integer
+from .wheels import EXTRA_CHOICES, EXTRA_DEFAULTS, add_extra_wheels, extra_wheels
 
 __all__ = ["DEFAULTS", "FIELDS", "Design", "service_factor_table", "normalise_state",
            "design_from_state", "state_from_project", "MINING_EXAMPLE", "ROLLER_EXAMPLE"]
@@ -63,6 +64,7 @@ DEFAULTS: dict[str, str] = {
     "wear_coefficient": "",
     # a scraper conveyor's [conveyor] table as "key=value;..." (opened from a project file)
     "conveyor": "",
+    **EXTRA_DEFAULTS,  # further wheels (chaindrive.web.wheels)
 }
 
 #: The mining scraper conveyor of Dolipiński et al. (DIN 22252 18x64 on 8-pocket wheels).
@@ -87,6 +89,7 @@ CHOICES: dict[str, tuple[str, ...]] = {
     "tensioner": ("", "on"),
     "tensioner_mechanism": ("", "lever", "sliding"),
     "guide": ("", "tangential", "chordal"),
+    **EXTRA_CHOICES,
 }
 
 #: Ranges of the numeric fields (SI unit, minimum, maximum, example).
@@ -455,6 +458,7 @@ def design_from_state(state: dict[str, str]) -> tuple[Design | None, dict[str, s
         _number(state, "skew", errors)
     if state["wear_coefficient"].strip():
         _number(state, "wear_coefficient", errors)
+    extras = extra_wheels(state, errors, kind)
     if errors or centre is None:
         return None, errors
     d = Design(state=state, power=power, speed=speed, ratio=ratio, service_factor=ks,
@@ -474,15 +478,22 @@ def design_from_state(state: dict[str, str]) -> tuple[Design | None, dict[str, s
         idler = (zi, (pos * centre, -(min(r1, r2) + off)))
     positions = [(0.0, 0.0), (centre, 0.0)]
     try:
-        text = _project_text(d, state, positions, idler, None)
-        geometry = (chain.name, z1, z2, centre, idler, state["guide"], state["guide_end"])
-        if (chosen is not None and idler is None and (chosen["teeth_driving"], chosen["teeth_driven"]) == (z1, z2)):
+        wheel_kind = "pocket_wheel" if chain.is_link_chain else "sprocket"
+
+        def project(links: int | None) -> str:
+            return add_extra_wheels(_project_text(d, state, positions, idler, links), extras,
+                                    wheel_kind=wheel_kind, adjustable=idler is None)
+
+        text = project(None)
+        geometry = (chain.name, z1, z2, centre, idler, state["guide"], state["guide_end"], tuple(extras))
+        if (chosen is not None and idler is None and not extras
+                and (chosen["teeth_driving"], chosen["teeth_driven"]) == (z1, z2)):
             links, exact = chosen["links"], chosen["centre_distance"]  # the design procedure's layout
         else:
-            links, exact = _links_and_centre(geometry, text, idler is None)
+            links, exact = _links_and_centre(geometry, text, idler is None and not extras)
         if exact is not None:
             positions = [(0.0, 0.0), (exact, 0.0)]
-        text = _project_text(d, state, positions, idler, links)
+        text = project(links)
         drive = parse_project(text, filename="studio.toml")
     except ChainDriveError as exc:
         errors[_field_of(str(exc))] = str(exc).removeprefix("studio.toml: ")

@@ -34,6 +34,7 @@ from .design import (
     state_from_project,
 )
 from .display import fmt, show
+from .wheels import MAX_EXTRA_WHEELS, extra_rows
 
 __all__ = ["router", "studio_payload", "charts_payload", "state_query"]
 
@@ -76,6 +77,16 @@ def _checks_for_page(checks: list[dict], units: str) -> list[dict]:
         out.append({**c, "value_text": value, "unit_text": unit, "limit_text": limit_text,
                     "margin_text": "" if c["margin"] is None else f"{c['margin'] * 100:+.0f} %"})
     return out
+
+
+def _exact_centre_text(design: Any, layout: Any, units: str) -> str | None:
+    """The centre distance that fits the links: the two-wheel solution, or where the layout moved the
+    driven wheel (a drive with further wheels; it moves along the line of centres from the origin)."""
+    exact = design.exact_centre_distance
+    adjustment = getattr(layout, "adjustment", None)
+    if exact is None and adjustment is not None:
+        exact = float(adjustment.position[0])
+    return None if exact is None else " ".join(show(exact, "m", units))
 
 
 def studio_payload(state: dict[str, str]) -> dict[str, Any]:
@@ -132,8 +143,7 @@ def studio_payload(state: dict[str, str]) -> dict[str, Any]:
         "links": lay["links"], "links_required": fmt(lay["links_required"]),
         "teeth_driving": design.teeth_driving, "teeth_driven": design.teeth_driven,
         "centre_distance_given": " ".join(show(design.centre_distance, "m", units)),
-        "centre_distance_exact": None if design.exact_centre_distance is None
-        else " ".join(show(design.exact_centre_distance, "m", units)),
+        "centre_distance_exact": _exact_centre_text(design, analysis.layout, units),
         "chain_length": " ".join(show(lay["chain_length"], "m", units)),
         "chain_speed": " ".join(show(lay["chain_speed"], "m/s", units)),
     }
@@ -279,7 +289,8 @@ def router(ctx: Any) -> APIRouter:
                           driven_options=driven_options, required_safety=REQUIRED_STATIC_SAFETY,
                           downloads=DOWNLOADS, open_error=request.query_params.get("open_error", "")[:500],
                           mining_query=_example_query("mining_conveyor.toml"),
-                          query=state_query(state))
+                          query=state_query(state), extra_rows=extra_rows(state), extra_max=MAX_EXTRA_WHEELS,
+                          extra_options=[(str(n), "none" if n == 0 else str(n)) for n in range(MAX_EXTRA_WHEELS + 1)])
 
     @r.get("/api/design")
     async def api_design(request: Request):

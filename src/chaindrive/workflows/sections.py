@@ -10,6 +10,8 @@ import math
 from collections.abc import Callable
 from typing import TYPE_CHECKING, Any, cast
 
+import numpy as np
+
 from ..analysis import DriveAnalysis
 from ..analysis.parts import Part, all_parts
 from ..analysis.vibration_remedy import REQUIRED_MARGIN
@@ -23,6 +25,7 @@ if TYPE_CHECKING:
     from matplotlib.figure import Figure as MatplotlibFigure
 
 __all__ = ["report_sections", "build_sections", "generic_section"]
+
 
 def _si(value: Any, unit: str, shown: str | None = None) -> list[Any]:
     """``[value, unit]`` cells of an SI ``value`` in its display unit (:mod:`.display`)."""
@@ -121,9 +124,14 @@ def inputs_section(a: DriveAnalysis, fig: _Figures) -> Section | None:
     ]
     tables = [Table("Input data", ["quantity", "value", "unit"], [[n, "—" if v is None else v, u] for n, v, u in rows]),
               Table("Wheels (in the order the chain passes them)",
-                    ["name", "wheel", "teeth", f"x [{_unit('m')}]", f"y [{_unit('m')}]", "driving", "side"],
-                    [[w.name, wheel_description(d, w.name), _teeth_cell(w),
-                      _val(w.position[0], "m"), _val(w.position[1], "m"), w.driving, w.side] for w in d.wheels])]
+                    ["name", "wheel", "teeth", f"x [{_unit('m')}]", f"y [{_unit('m')}]", "driving", "side",
+                     "power share"],
+                    [[w.name, wheel_description(d, w.name), _teeth_cell(w), _val(w.position[0], "m"),
+                      _val(w.position[1], "m"), w.driving, w.side, "—" if w.power_share is None else w.power_share]
+                     for w in d.wheels])]
+    if d.adjustable is not None:
+        tables.append(Table("Adjustable wheel (moved to fit the link count)", ["wheel", "direction x", "direction y"],
+                            [[d.adjustable.wheel, *d.adjustable.direction]]))
     if d.tensioner is not None:
         t = d.tensioner
         tables.append(Table("Tensioner (reduced to its axis, tensioner paper eq. (7))",
@@ -161,9 +169,20 @@ def layout_section(a: DriveAnalysis, fig: _Figures) -> Section | None:
         cd = lay.centre_distance_for_links
         rows.append([f"centre distance for {lay.links} links (taut)", *_q(cd, "taut")])
         rows.append([f"centre distance for {lay.links} links (loosest fit)", *_q(cd, "loose")])
+    if lay.loop is not None:
+        label = "exact, pitch polygons" if lay.loop.exact else "pitch circles: no polygon path"
+        rows.append([f"chain length, taut at the tightest phase ({label})", lay.loop.links_max, "pitches"])
+        rows.append([f"chain length, taut at the loosest phase ({label})", lay.loop.links_min, "pitches"])
+    if lay.adjustment is not None:
+        adj = lay.adjustment
+        name = lay.wheel_names[adj.wheel]
+        rows.append([f"{name} moved for {lay.links} links (taut)", *_q(adj, "taut")])
+        rows.append([f"{name} moved for {lay.links} links (loosest fit)", *_q(adj, "loose")])
+        rows.append([f"{name} position x", *_q(adj, "position", 0)])
+        rows.append([f"{name} position y", *_q(adj, "position", 1)])
     if lay.chain_mass is not None:
         rows.append(["chain mass", *_q(lay, "chain_mass")])
-    sec.tables.append(Table("Chain length and centre distance (exact polygon model for two wheels; docs/drive.md)",
+    sec.tables.append(Table("Chain length and centre distance (exact pitch-polygon model; docs/drive.md)",
                             ["quantity", "value", "unit"], rows))
     sec.tables.append(Table(
         "Wheels on the chain", ["wheel", f"pitch radius [{_col(lay, 'pitch_radii')}]",
@@ -211,11 +230,22 @@ def loads_section(a: DriveAnalysis, fig: _Figures) -> Section | None:
          ["inertia force m a_max", *_q(t, "dynamic"), "polygonal effect (Dolipiński et al.)"],
          ["maximum tension", *_q(t, "maximum"), "tight + inertia"],
          ["dynamic factor", t.dynamic_factor, "-", "maximum / tight"]]))
+    n = len(t.wheel_names)
+    shares = t.power_shares if t.power_shares is not None else np.zeros(n)
+    powers = t.wheel_powers if t.wheel_powers is not None else np.zeros(n)
+    torques = t.wheel_torques if t.wheel_torques is not None else np.zeros(n)
     sec.tables.append(Table(
-        "Shaft loads (vector sum of the span tensions, without centrifugal part)",
-        ["wheel", f"load [{_col(t, 'shaft_loads')}]", f"direction [{_col(t, 'shaft_load_angles')}]"],
-        [[n, _val(f, "N"), _val(ang, "rad")] for n, f, ang in zip(t.wheel_names, t.shaft_loads, t.shaft_load_angles,
-                                                                   strict=True)]))
+        "Per wheel: power taken off, span tensions (without centrifugal part) and shaft load "
+        "(vector sum of the two span tensions); the tension rises across each driven wheel by its share "
+        "of K_s T / R",
+        ["wheel", "power share", f"power [{_col(t, 'wheel_powers')}]", f"torque [{_col(t, 'wheel_torques')}]",
+         f"tension in [{_col(t, 'span_tensions')}]", f"tension out [{_col(t, 'span_tensions')}]",
+         f"shaft load [{_col(t, 'shaft_loads')}]", f"direction [{_col(t, 'shaft_load_angles')}]"],
+        [[name, share, _val(pw, "W"), _val(tq, "N*m"), _val(t_in, "N"), _val(t_out, "N"), _val(f, "N"),
+          _val(ang, "rad")]
+         for name, share, pw, tq, t_in, t_out, f, ang in zip(
+             t.wheel_names, shares, powers, torques, np.roll(t.span_tensions, 1), t.span_tensions,
+             t.shaft_loads, t.shaft_load_angles, strict=True)]))
     _checks(sec, a, ("loads", "rating"))
     rating = a.rating
     if rating is not None:

@@ -237,7 +237,17 @@
     toggleTensioner();
     schedule();
   });
-  form.addEventListener("change", () => { toggleTensioner(); schedule(); });
+  form.addEventListener("change", (e) => {
+    if (e.target && e.target.id === "extra_wheels") { form.submit(); return; }  // rows are drawn by the server
+    toggleTensioner(); schedule();
+  });
+  for (const b of form.querySelectorAll("[data-extra]")) {
+    b.addEventListener("click", () => {
+      const count = $("extra_wheels");
+      count.value = String(Number(count.value) + Number(b.dataset.extra));
+      form.submit();
+    });
+  }
   form.addEventListener("submit", (e) => { e.preventDefault(); update(); });
   $("slider-mass").addEventListener("input", slide);
   $("slider-stiffness").addEventListener("input", slide);
