@@ -588,7 +588,7 @@ def test_cli_chain_catalogue(capsys):
     (["--chain", "nosuchchain", "--teeth", "8", "--speed", "3 rad/s"], "nosuchchain"),
     (["--pitch", "0.1 m", "--teeth", "8", "--speed", "3 rad/s", "--stiffness", "1e6 N"], "needs all of"),
     (["--pitch", "0.1 m", "--teeth", "8", "--speed", "3 rad/s", "--stiffness", "1e6 N",
-      "--sprocket-distance", "2 m", "--cam-distance", "3 m"], "cam_distance must lie in"),
+      "--sprocket-distance", "2 m", "--cam-distance", "3 m"], "--cam-distance must lie in"),
     (["--pitch", "0.1 m", "--teeth", "8", "--speed", "3 rad/s", "--stiffness", "1e6 N",
       "--sprocket-distance", "2.03 m", "--cam-distance", "1 m"], "whole number of pitches"),
     (["--pitch", "0.1 m", "--teeth", "8", "--speed", "3 rad/s", "--points", "1"], "points must be"),

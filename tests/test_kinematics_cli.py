@@ -71,7 +71,7 @@ def test_text_output_and_plot(capsys, tmp_path):
         (["--entry", "tangential", "--guide-end", "10 mm"], "guide_end_distance = 0.01 m is too close"),
         (["--entry", "sideways"], "unknown entry 'sideways'"),
         (["--model", "nope"], "unknown model 'nope'"),
-        (["--guide-height", "-1 mm"], "guide_height must be non-negative"),
+        (["--guide-height", "-1 mm"], "--guide-height must be non-negative"),
     ],
 )
 def test_bad_input_exit_2_one_line(capsys, extra, match):
