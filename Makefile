@@ -5,7 +5,7 @@ VENV := .venv
 PY := $(VENV)/bin/python
 OUT ?= out
 
-.PHONY: demo test bench lint clean venv fuzz
+.PHONY: demo test test-fast bench lint clean venv fuzz docs test-dist
 
 $(VENV)/bin/python:
 	$(PYTHON) -m venv $(VENV)
@@ -23,6 +23,10 @@ $(VENV)/.installed-bench: pyproject.toml | $(VENV)/bin/python
 	$(PY) -m pip install --quiet -e '.[bench]'
 	touch $@ $(VENV)/.installed-all
 
+$(VENV)/.installed-docs: pyproject.toml | $(VENV)/bin/python
+	$(PY) -m pip install --quiet -e '.[docs]'
+	touch $@ $(VENV)/.installed-all
+
 venv: $(VENV)/.installed-all
 
 demo: $(VENV)/.installed-all
@@ -31,6 +35,22 @@ demo: $(VENV)/.installed-all
 
 test: $(VENV)/.installed-test
 	MPLBACKEND=Agg $(PY) -m pytest -n 2 -q
+
+# everything but the slow (> ~5 s), browser and fuzz tests: under a minute on 2 cores
+test-fast: $(VENV)/.installed-test
+	MPLBACKEND=Agg $(PY) -m pytest -n 2 -q -m "not slow and not browser and not fuzz"
+
+# the documentation site, offline, warnings as errors: docs/_build/html/index.html
+# (the API pages and the gallery are generated anew each time)
+docs: $(VENV)/.installed-docs
+	rm -rf docs/api docs/auto_examples docs/_build
+	MPLBACKEND=Agg $(PY) -m sphinx -b html -W --keep-going -q docs docs/_build/html
+	@echo "documentation: docs/_build/html/index.html"
+
+# the built sdist and wheel: the wheel installed into a fresh venv outside the source tree
+# runs the demo and the studio's --help (tests/test_dist.py; also part of `make test`)
+test-dist: $(VENV)/.installed-test
+	MPLBACKEND=Agg $(PY) -m pytest tests/test_dist.py -q -n 0
 
 bench: $(VENV)/.installed-bench
 	MPLBACKEND=Agg $(PY) benchmarks/run_all.py
@@ -46,4 +66,4 @@ lint: $(VENV)/.installed-test
 	$(VENV)/bin/mypy
 
 clean:
-	rm -rf $(VENV) $(OUT) .pytest_cache build dist
+	rm -rf $(VENV) $(OUT) .pytest_cache build dist docs/_build docs/api docs/auto_examples

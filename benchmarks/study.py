@@ -1,4 +1,16 @@
-"""Design studies on dask: a 1,000-variant analysis study with 1 and with 2 workers.
+"""Design studies: batched evaluation per core, then on dask with 1 and with 2 workers.
+
+First, in one process and one thread, the variants per second of CPU time of
+(a) batched evaluation with fixed geometry (the skew Monte Carlo of
+``examples/skew_study.toml``: skew and wear factor vary), (b) batched evaluation with
+varying geometry (driving teeth 17...25 and centre distance 0.9...1.2 m vary with the
+skew, so every variant needs its own layout), (c) the per-variant loop
+(:func:`~chaindrive.study.run.evaluate_variant`, one project read and one analysis per
+variant) on the study of (a); then (d) the whole 1,000,000-variant Monte Carlo of the skew
+example through ``run_study`` on the local cluster (``--million``; aim under 3 minutes).
+Aims: (a) >= 10,000 and (b) >= 300 variants/s per core.
+
+Then a 1,000-variant analysis study with 1 and with 2 workers.
 
 Prints variants per second of each run (compute time: from the first task to the last
 result, workers warmed up; and wall time with the local cluster's start), the speed-up
@@ -51,10 +63,86 @@ high = 206
 """
 
 
+GEOMETRY = """
+[study]
+name = "benchmark: varying geometry"
+base = "roller_industrial.toml"
+remove = ["contact.skew_height_difference", "contact.skew_base"]
+outputs = ["contact.stress", "loads.maximum", "layout.links", "passed"]
+[plan]
+kind = "latin_hypercube"
+samples = {samples}
+seed = 3
+[[vary]]
+path = "wheels.0.teeth"
+low = 17
+high = 25
+integer = true
+[[vary]]
+path = "wheels.1.position.0"
+unit = "mm"
+low = 900
+high = 1200
+[[vary]]
+path = "contact.skew"
+unit = "arcmin"
+low = 42
+high = 206
+"""
+
+
+def _per_core(study, count: int, batched: bool) -> float:
+    from chaindrive.study.batch import evaluate_batch
+
+    variants = [study.variant_inputs(r) for r in study.rows()[:count]]
+    c0 = time.process_time()
+    if batched:
+        for i in range(0, len(variants), 5000):
+            evaluate_batch(study.base, variants[i:i + 5000], study.outputs, parts=study.parts)
+    else:
+        for v in variants:
+            evaluate_variant(study.base, v, study.outputs, parts=study.parts)
+    return len(variants) / (time.process_time() - c0)
+
+
+def per_core_rates() -> None:
+    """The three per-core figures, measured in one run."""
+    fixed = parse_study((ROOT / "examples" / "skew_study.toml").read_text().replace("samples = 400", "samples = 20000"),
+                        filename="skew_study.toml", folder=ROOT / "examples")
+    geometry = parse_study(GEOMETRY.format(samples=600), filename="geometry.toml", folder=ROOT / "examples")
+    _per_core(fixed, 50, True)  # imports and caches outside the clock
+    a = _per_core(fixed, 20000, True)
+    b = _per_core(geometry, 600, True)
+    c = _per_core(fixed, 300, False)
+    print(f"batched, fixed geometry: {a:.0f} variants/s per core (aim >= 10,000; skew Monte Carlo, "
+          "20,000 variants)")
+    print(f"batched, varying geometry: {b:.0f} variants/s per core (aim >= 300; teeth, centre distance, "
+          "skew; 600 variants)")
+    print(f"per-variant loop: {c:.0f} variants/s per core (the skew Monte Carlo, 300 variants); "
+          f"batched/loop {a / c:.0f}x")
+
+
+def million() -> None:
+    """The 1,000,000-variant skew Monte Carlo through run_study on the local cluster."""
+    text = (ROOT / "examples" / "skew_study.toml").read_text().replace("samples = 400", "samples = 1000000")
+    study = parse_study(text, filename="skew_study.toml", folder=ROOT / "examples")
+    with tempfile.TemporaryDirectory() as tmp:
+        t0 = time.perf_counter()
+        run = run_study(study, Path(tmp) / "out", progress=False)
+        wall = time.perf_counter() - t0
+    print(f"1,000,000-variant skew Monte Carlo: {wall:.0f} s wall on {run.workers} workers "
+          f"({run.computed} computed, {run.failed} failed; aim < 180 s)")
+
+
 def main() -> None:
     parser = argparse.ArgumentParser()
     parser.add_argument("--variants", type=int, default=1000)
+    parser.add_argument("--million", action="store_true", help="also run the 1,000,000-variant Monte Carlo")
     args = parser.parse_args()
+    print(f"machine: {os.cpu_count()} cores, load average {os.getloadavg()[0]:.1f}")
+    per_core_rates()
+    if args.million:
+        million()
     study = parse_study(STUDY.format(samples=args.variants), filename="benchmark.toml",
                         folder=ROOT / "examples")
     print(f"machine: {os.cpu_count()} cores, load average {os.getloadavg()[0]:.1f} "

@@ -12,13 +12,13 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
+from _shared import EXAMPLES, roller_drive
 from chaindrive.analysis import PARTS, Check, DriveAnalysis, analyze_drive
 from chaindrive.chains import get
 from chaindrive.drive import Drive, Load, Wheel, load_project
 from chaindrive.errors import InputError
 from chaindrive.workflows.analyze import analyze
 
-EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
 BASELINE = Path(__file__).resolve().parent / "data" / "analysis_regression"
 NAMES = ["mining_conveyor", "roller_industrial", "tractor_track"]
 
@@ -35,8 +35,15 @@ def _leaves(x, path=""):
 
 
 #: Numbers of the earlier results.json that moved on purpose (closing note of the
-#: analysis-layer issue): the wrap check is now in SI (rad, not degrees).
-MOVED = ("safety.checks",)
+#: analysis-layer issue): the wrap check is now in SI (rad, not degrees). The resonance
+#: check's pairs (issue 20): the band is applied to the tensioner paper's three excitations
+#: only, so a round link chain's "link passing" 2 z1 ω1 pairs left the band table (it is
+#: judged by its forced response, docs/vibration.md §6); the Campbell lines and the free
+#: spans' information pairs follow the same excitations (a roller chain's meshing left them,
+#: its unequal links z1 ω1/2 came in).
+MOVED = ("safety.checks", "Span vibration and resonance check.tensioner.check",
+         "Span vibration and resonance check.check", "Span vibration and resonance check.tensioner.campbell",
+         "Span vibration and resonance check.free_spans.check")
 
 
 @pytest.mark.parametrize("name", NAMES)
@@ -45,7 +52,13 @@ def test_results_json_numbers_unchanged(name, tmp_path):
     # `chaindrive analyze` wrote for the three examples before the analysis layer
     # (commit 0e69f60); every number of their sections' results must still be there.
     old = json.loads((BASELINE / f"{name}.json").read_text(encoding="utf-8"))
-    outcome = analyze(load_project(EXAMPLES / f"{name}.toml"), tmp_path, figures=False)
+    drive = load_project(EXAMPLES / f"{name}.toml")
+    if name == "tractor_track":
+        # the example's torque moved on purpose from 8.08 to 16.16 kN·m (Sharipov's i is the
+        # number of toothed rims of the drive wheel, not the number of tracks: docs/strength.md);
+        # with the baseline's torque every number of the baseline must still be there
+        drive = dataclasses.replace(drive, load=dataclasses.replace(drive.load, torque=8080.0))
+    outcome = analyze(drive, tmp_path, figures=False)
     new = json.loads(outcome.files["json"].read_text(encoding="utf-8"))
     values = sorted(v for _, v in _leaves(new))
     missing = []
@@ -61,10 +74,7 @@ def test_results_json_numbers_unchanged(name, tmp_path):
 
 
 def _roller(**changes):
-    d = Drive(chain=get("16B"), speed=100.53, load=Load(power=15e3),
-              wheels=[Wheel("motor", "sprocket", 19, (0, 0), driving=True),
-                      Wheel("fan", "sprocket", 57, (1.05, 0))])
-    return dataclasses.replace(d, **changes) if changes else d
+    return roller_drive(speed=100.53, **changes)
 
 
 def test_drive_cannot_be_changed_in_place():
@@ -136,7 +146,7 @@ def test_mining_conveyor_fails_the_resonance_check_only():
     a = analyze_drive(load_project(EXAMPLES / "mining_conveyor.toml"))
     assert [c.name for c in a.failed] == ["resonance margin of the slack span with tensioner, worst pair"]
     assert a.vibration.tensioner is not None and a.vibration.passed is False
-    assert any("no resonance-free tensioner" in w for w in a.warnings)
+    assert a.remedy is not None and a.remedy.found  # a way out (issue 20)
 
 
 def test_check_margin_and_verdict():
@@ -155,9 +165,9 @@ def test_properties_of_the_analysis(power, factor, teeth):
     d = _roller(load=Load(power=power, service_factor=factor)).with_wheel("motor", teeth=teeth)
     a = analyze_drive(d, exclude=["geometry", "vibration"])
     # the static safety check is F_B / F_max and its verdict follows from its value
-    s = a.checks[0]
+    s = a.checks_of("loads")[0]
     assert s.value == pytest.approx(d.chain.breaking_force / a.loads.maximum)
-    assert s.passed == (s.value >= d.required_static_safety)
+    assert s.passed == (s.value >= d.static_safety_required)
     # effective pull scales with the service factor, F_max = tight + dynamic
     assert a.loads.effective_pull == pytest.approx(factor * d.torque() / a.layout.pitch_radii[0])
     assert a.loads.maximum == pytest.approx(a.loads.tight + a.loads.dynamic)

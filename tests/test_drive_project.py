@@ -12,6 +12,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
+from _shared import EXAMPLES, roller_drive
 from chaindrive.analysis import (
     analyze_drive,
     drive_entry,
@@ -30,14 +31,11 @@ from chaindrive.drive import Drive, Guide, Load, Tensioner, Wheel, load_project
 from chaindrive.drive.project import line_index, parse_project, template
 from chaindrive.errors import InputError, UnknownNameError
 
-EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
 RPM = 2 * math.pi / 60
 
 
 def _roller():
-    return Drive(chain=get("16B"), speed=960 * RPM, load=Load(power=15e3),
-                 wheels=[Wheel("motor", "sprocket", 19, (0, 0), driving=True),
-                         Wheel("fan", "sprocket", 57, (1.05, 0))])
+    return roller_drive(speed=960 * RPM)
 
 
 # ---------------------------------------------------------------- objects
@@ -156,10 +154,14 @@ def test_mining_example_is_dolipinski_worked_case():
 
 def test_tractor_example_sharipov_load():
     d = load_project(EXAMPLES / "tractor_track.toml")
-    # P = 0.65 G_T φ / 2 = 22.75 kN per track at the pitch radius of 13 teeth, 170 mm
+    # Sharipov p. 34: P = 0.65 G_T φ = 45.5 kN, the whole track's adhesion force, on the track's
+    # drive wheel at the pitch radius of 13 teeth, 170 mm; i = 2 rims share it per tooth
+    # (P_P = 22.75 kN), they do not halve the wheel's torque (the example read i as the
+    # number of tracks until this release: 8.08 kN·m)
     R = 0.170 / (2 * math.sin(math.pi / 13))
-    assert drive_loads(d).effective_pull == pytest.approx(8080 / R, rel=1e-9)
-    assert 8080 / R == pytest.approx(22.75e3, rel=0.001)
+    assert drive_loads(d).effective_pull == pytest.approx(16160 / R, rel=1e-9)
+    assert 16160 / R == pytest.approx(0.65 * 70e3 * 1.0, rel=0.001)
+    assert d.track.rims == 2 and d.track.bolts.count == 12
     assert drive_rating(d) is None  # custom chain: no ANSI rating
 
 
@@ -274,11 +276,11 @@ def test_cli_new_layout_select(tmp_path, capsys):
     assert out["layout"]["links"] == 122 and out["passed"] is True
     assert main(["layout", str(f)]) == 0
     assert "centre distance for 122 links" in capsys.readouterr().out
-    assert main(["select", "--power", "15 kW", "--speed", "1450 rpm", "--ratio", "3", "--json"]) == 0
+    assert main(["select", "--power", "15 kW", "--speed", "1450 rpm", "--ratio", "3", "-K", "1", "--json"]) == 0
     found = json.loads(capsys.readouterr().out)
-    assert found[0]["rated_power"] >= 15e3
-    assert main(["select", "--power", "15 kW", "--speed", "1450 rpm", "--ratio", "3"]) == 0
-    assert main(["select", "--power", "15 kg", "--speed", "1450 rpm", "--ratio", "3"]) == 2
+    assert found["recommended"]["rated_power"] >= 15e3
+    assert main(["select", "--power", "15 kW", "--speed", "1450 rpm", "--ratio", "3", "-K", "1"]) == 0
+    assert main(["select", "--power", "15 kg", "--speed", "1450 rpm", "--ratio", "3", "-K", "1"]) == 2
     assert "power" in capsys.readouterr().err
 
 
@@ -324,7 +326,7 @@ def test_vertical_drive_slack_from_weight():
     assert drive_layout(d).teeth_in_mesh == (9, 9)
 
 
-@pytest.mark.parametrize("kind", ["roller", "mining", "crawler"])
+@pytest.mark.parametrize("kind", ["roller", "mining", "track", "crawler-conveyor"])
 def test_cli_new_each_kind_loads(kind, tmp_path, capsys):
     f = tmp_path / f"{kind}.toml"
     assert main(["new", str(f), "--kind", kind]) == 0
@@ -332,6 +334,20 @@ def test_cli_new_each_kind_loads(kind, tmp_path, capsys):
     d = load_project(f)
     assert analyze_drive(d, include=["loads", "rating", "layout"]).passed
     assert f"chaindrive layout {kind}.toml" in f.read_text()
+
+
+def test_cli_new_crawler_is_the_former_name_of_track(tmp_path, capsys):
+    # `--kind crawler` produced the tractor track; the name belongs to the conveyor crawler
+    # drive, so it now warns and still writes the track template
+    f = tmp_path / "old.toml"
+    assert main(["new", str(f), "--kind", "crawler"]) == 0
+    err = capsys.readouterr().err
+    assert "'crawler' is deprecated" in err and "'track'" in err and "crawler-conveyor" in err
+    assert "[track.bolts]" in f.read_text()
+    from chaindrive.drive.project import template
+
+    with pytest.warns(FutureWarning, match="template kind 'crawler' is deprecated"):
+        assert template("crawler") == template("track")
 
 
 def test_cli_new_unknown_kind(tmp_path, capsys):
@@ -344,7 +360,7 @@ def test_cli_new_unknown_kind(tmp_path, capsys):
     [
         ("roller", 'power = "15 kW"', 'power = "15 kW"\ntorque = "100 N*m"',
          r"d.toml:\d+: load: give exactly one of power and torque"),
-        ("crawler", 'pitch = "170 mm"', 'pitch = "170 mm"\nbar_diameter = "10 mm"',
+        ("track", 'pitch = "170 mm"', 'pitch = "170 mm"\nbar_diameter = "10 mm"',
          r"d.toml:\d+: chain: give exactly one of roller_diameter"),
         ("mining", 'wheel = "tensioner"', 'wheel = "tens"',
          r"d.toml:\d+: tensioner.wheel: no wheel named 'tens'"),
@@ -443,7 +459,8 @@ def test_examples_write_every_quantity_with_its_unit(name):
     data = tomllib.loads((root / f"{name}.toml").read_text(encoding="utf-8"))
     dimensionless = {"teeth", "service_factor", "slack_sag_ratio", "required_static_safety",
                      "elongation_limit", "links", "strands", "direction", "side", "adhesion",
-                     "rims", "hardness", "wear_factor"}
+                     "rims", "hardness", "wear_factor", "cam_index", "count", "shear_planes",
+                     "friction", "friction_faces", "slip_safety"}
     assert is_dimensional("m") and not is_dimensional("")
 
     def walk(node, key=""):

@@ -8,10 +8,13 @@ import random
 import tempfile
 from pathlib import Path
 
+import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from _fuzz_loader import load_fuzz
+
+pytestmark = pytest.mark.fuzz
 
 fuzz = load_fuzz()
 TEXTS = fuzz.project_texts()
@@ -55,7 +58,7 @@ def test_self_regulating_table_reproducers():
     # bool where a pair belongs, raised TypeError instead of a one-line InputError
     import pytest
 
-    from chaindrive.drive.self_regulating import SelfRegulatingSpec
+    from chaindrive.drive.carrier import SelfRegulatingSpec
     from chaindrive.errors import InputError
 
     with pytest.raises(InputError, match="required key.* missing: wheel"):

@@ -2,7 +2,8 @@
 
 The classes are discovered by walking the package for subclasses of
 :class:`chaindrive._results.Result`; a numeric field is one annotated as a float, an int,
-a numpy array or a sequence of numbers (optionally ``| None``).
+a numpy array or a sequence of numbers (optionally ``| None``). A unit written
+``"a|b"`` is ``a`` or ``b`` by the kind of the object (a pivot's N·m/rad, a slide's N/m).
 """
 
 from __future__ import annotations
@@ -54,18 +55,10 @@ CLASSES = _result_classes()
 _UNIT_FROM_FIELD = {
     ("Check", "value"): "unit",
     ("Check", "limit"): "unit",
+    ("SelfRegulatingDriveResult", "carrier_coordinate"): "coordinate_unit",
+    ("SelfRegulatingDriveResult", "carrier_travel"): "coordinate_unit",
 }
 
-#: Classes whose units are still being declared (the sweep goes module by module).
-_PENDING: set[str] = {
-    "chaindrive.drive.self_regulating",
-    "chaindrive.kinematics.crawler",
-    "chaindrive.kinematics.entry",
-    "chaindrive.layout",
-    "chaindrive.selection",
-    "chaindrive.simulation.run",
-    "chaindrive.workflows.report",
-}
 
 _NUMERIC = re.compile(r"\b(float|int|np\.ndarray|ndarray|NDArray|FloatOrArray|ArrayLike|complex)\b")
 
@@ -82,16 +75,12 @@ def test_classes_found() -> None:
 
 @pytest.mark.parametrize("cls", CLASSES, ids=lambda c: f"{c.__module__}.{c.__name__}")
 def test_result_class_is_frozen(cls: type) -> None:
-    if cls.__module__ in _PENDING:
-        pytest.xfail("units not declared yet")
     assert dataclasses.is_dataclass(cls)
     assert cls.__dataclass_params__.frozen, f"{cls.__name__} is not frozen"  # type: ignore[attr-defined]
 
 
 @pytest.mark.parametrize("cls", CLASSES, ids=lambda c: f"{c.__module__}.{c.__name__}")
 def test_every_numeric_field_has_a_unit(cls: type) -> None:
-    if cls.__module__ in _PENDING:
-        pytest.xfail("units not declared yet")
     missing = []
     for f in dataclasses.fields(cls):
         annotation = f.type if isinstance(f.type, str) else getattr(f.type, "__name__", str(f.type))

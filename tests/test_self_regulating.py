@@ -1,4 +1,4 @@
-"""Tests of chaindrive.drive.self_regulating: the self-regulating drive (carrier statics, ψ,
+"""Tests of chaindrive.self_regulating (and its analysis, chaindrive.analysis.self_regulating): the self-regulating drive (carrier statics, ψ,
 wear and sag coupling) against hand statics, independent geometry and the full
 numerical equilibrium."""
 
@@ -14,15 +14,19 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from chaindrive import layout as L
+from chaindrive import self_regulating as SR
+from chaindrive.analysis.self_regulating import self_regulating_analysis, self_regulating_checks
 from chaindrive.chains import Chain, get
 from chaindrive.drive import Drive, Load, Wheel
-from chaindrive.drive import self_regulating as SR
+from chaindrive.drive.carrier import SelfRegulatingSpec
 from chaindrive.errors import (
     ConvergenceError,
     InfeasibleError,
     InputError,
     ValidityRangeWarning,
 )
+from chaindrive.self_regulating.equilibrium import _geometric_psi
+from chaindrive.self_regulating.sag import _catenary_excess
 
 P = 0.0254
 R19 = float(L.pitch_radius(P, 19))  # 0.077159 m
@@ -198,7 +202,7 @@ def test_sag_length_excess_against_catenary_arc_integral():
         arc = quad(lambda x, x0=x0, k=k: math.cosh(k * (x - x0)), 0, lx, epsabs=1e-14)[0]
         exact = arc - ell
         S = H / math.cos(gamma)
-        assert float(SR._catenary_excess(ell, gamma, S, q)) == pytest.approx(exact, rel=1e-9)
+        assert float(_catenary_excess(ell, gamma, S, q)) == pytest.approx(exact, rel=1e-9)
         assert float(SR.sag_length_excess(ell, gamma, S, q)) == pytest.approx(exact, rel=0.01)
 
 
@@ -291,11 +295,11 @@ def test_checks_and_json(example):
     names = [c["name"] for c in r.checks]
     assert len(names) == 4 and all(set(c) >= {"name", "value", "limit", "unit", "passed", "source",
                                               "note", "relation"} for c in r.checks)
-    checks = SR.self_regulating_checks(r)
+    checks = self_regulating_checks(r)
     assert [c.verdict for c in checks] == ["pass", "FAIL", "pass", "pass"]
     assert checks[1].margin == pytest.approx(-(r.checks[1]["value"] / 2.0 - 1.0))
     with pytest.raises(InputError, match="result must be a SelfRegulatingDriveResult"):
-        SR.self_regulating_checks(r.to_dict())
+        self_regulating_checks(r.to_dict())
     assert r.checks[0]["passed"] is True  # sag within 2 % at rated load
     assert r.checks[1]["passed"] is False  # S2/F_t is 13 times the rational value
     assert r.passed is False
@@ -331,7 +335,7 @@ def test_rational_pivot_keeps_psi_over_the_wear_range():
     assert all(c["passed"] for c in r.checks)
     # the swing and the ride-up cancel: equal ripple at the ends and the middle
     geo = SR.CarrierGeometry(**{**geometry().__dict__, "pivot": np.array(r0.pivot_rational)})
-    psi = SR._geometric_psi(geo, [0.0, 0.015, 0.03], geo.pivot)
+    psi = _geometric_psi(geo, [0.0, 0.015, 0.03], geo.pivot)
     assert psi[0] - r0.psi_rational == pytest.approx(r0.psi_rational - psi[1], abs=1e-9)
     assert psi[2] == pytest.approx(psi[0], abs=1e-9)
 
@@ -403,11 +407,11 @@ def test_link_chain_default_axial_stiffness():
     d = make_drive(chain=get("18x64"), wheels=[Wheel("drive", "pocket_wheel", 8, (3.0, 0.5), driving=True),
                                                Wheel("return", "pocket_wheel", 8, (0.0, 0.0))],
                    links=None, load=Load(torque=5000.0))
-    spec = SR.SelfRegulatingSpec(wheel="drive", pivot=(3.05, 0.35), weight=3000.0,
+    spec = SelfRegulatingSpec(wheel="drive", pivot=(3.05, 0.35), weight=3000.0,
                                  weight_offset=(0.2, 0.0), numerical=False, load_steps=2,
                                  elongation_steps=2)
-    r = SR.self_regulating_analysis(d, spec)
-    ref = SR.self_regulating_analysis(d, dataclasses.replace(spec, axial_stiffness=0.854e11 * 0.018**2))
+    r = self_regulating_analysis(d, spec)
+    ref = self_regulating_analysis(d, dataclasses.replace(spec, axial_stiffness=0.854e11 * 0.018**2))
     assert np.array_equal(r.carrier_stiffness, ref.carrier_stiffness)
     assert not any("upper bounds" in w for w in r.warnings)
 
@@ -483,14 +487,14 @@ def make_drive(**changes):
 
 def test_analysis_matches_the_pure_function():
     d = make_drive()
-    spec = SR.SelfRegulatingSpec(wheel="motor", pivot=(0.66, -0.045), weight=400.0,
+    spec = SelfRegulatingSpec(wheel="motor", pivot=(0.66, -0.045), weight=400.0,
                                  weight_offset=(0.08, 0.0), numerical=False)
     def state(drive):
         return repr((drive.links, [(w.name, w.position, w.driving) for w in drive.wheels],
                      drive.load, drive.speed, drive.travel))
 
     before = state(d)
-    r = SR.self_regulating_analysis(d, spec)
+    r = self_regulating_analysis(d, spec)
     assert state(d) == before  # the drive is read, never modified
     ref = run(load_factors=np.linspace(0, 1.5, 7), elongations=np.linspace(0, 0.03, 4),
               mass_per_length=d.chain.mass_per_length, numerical=False)
@@ -500,10 +504,10 @@ def test_analysis_matches_the_pure_function():
 
 def test_analysis_power_load_links_from_layout_and_frozen_copy():
     d = make_drive(load=Load(power=30e3), links=None)
-    spec = SR.SelfRegulatingSpec(wheel="motor", pivot=(0.66, -0.045), weight=400.0,
+    spec = SelfRegulatingSpec(wheel="motor", pivot=(0.66, -0.045), weight=400.0,
                                  weight_offset=(0.08, 0.0), load_steps=3, elongation_steps=2,
                                  numerical=False)
-    r = SR.self_regulating_analysis(d, spec)
+    r = self_regulating_analysis(d, spec)
     assert r.nominal_torque == pytest.approx(300.0)
     from chaindrive.analysis import drive_layout
 
@@ -511,7 +515,7 @@ def test_analysis_power_load_links_from_layout_and_frozen_copy():
     assert d.links is None
     # a changed copy (the way to edit a frozen Drive) gives its own result
     assert r.links == 78
-    r2 = SR.self_regulating_analysis(dataclasses.replace(d, links=80), spec)
+    r2 = self_regulating_analysis(dataclasses.replace(d, links=80), spec)
     assert r2.links == 80 and r2.centre_distance[0, 0] > r.centre_distance[0, 0]
 
 
@@ -635,58 +639,58 @@ def test_errors(call, error, match):
 ])
 def test_spec_errors(kwargs, match):
     with pytest.raises(InputError, match=match):
-        SR.SelfRegulatingSpec(**kwargs)
+        SelfRegulatingSpec(**kwargs)
 
 
 def test_spec_is_frozen_and_normalised():
-    spec = SR.SelfRegulatingSpec(wheel="motor", pivot=[0.66, -0.045], weight_offset=[0.08, 0])
+    spec = SelfRegulatingSpec(wheel="motor", pivot=[0.66, -0.045], weight_offset=[0.08, 0])
     assert spec.pivot == (0.66, -0.045) and spec.weight_offset == (0.08, 0.0)
     with pytest.raises(dataclasses.FrozenInstanceError):
         spec.weight = 1.0
 
 
 def test_spec_from_table_parses_units():
-    spec = SR.SelfRegulatingSpec.from_table({
+    spec = SelfRegulatingSpec.from_table({
         "wheel": "motor", "pivot": ["660 mm", "-45 mm"], "weight": "0.4 kN",
         "weight_offset": ["80 mm", 0.0], "stiffness": "50 N*m/rad", "preload": "2 N*m",
         "sag_allowance": "0.03", "numerical": False, "load_steps": 3})
-    assert spec == SR.SelfRegulatingSpec(wheel="motor", pivot=(0.66, -0.045), weight=400.0,
+    assert spec == SelfRegulatingSpec(wheel="motor", pivot=(0.66, -0.045), weight=400.0,
                                          weight_offset=(0.08, 0.0), stiffness=50.0, preload=2.0,
                                          sag_allowance=0.03, numerical=False, load_steps=3)
-    slide = SR.SelfRegulatingSpec.from_table({"wheel": "motor", "kind": "slide",
+    slide = SelfRegulatingSpec.from_table({"wheel": "motor", "kind": "slide",
                                               "direction": [1, "0.2"], "stiffness": "5 kN/m",
                                               "preload": "1.5 kN"})
     assert slide.stiffness == 5000.0 and slide.preload == 1500.0 and slide.direction == (1.0, 0.2)
     with pytest.raises(InputError, match="unknown key\\(s\\) spring; valid keys: wheel, kind"):
-        SR.SelfRegulatingSpec.from_table({"wheel": "motor", "spring": 1})
+        SelfRegulatingSpec.from_table({"wheel": "motor", "spring": 1})
     with pytest.raises(InputError, match="self_regulating.weight: '3 kg' has units of \\[mass\\]"):
-        SR.SelfRegulatingSpec.from_table({"wheel": "motor", "pivot": [0, 0], "weight": "3 kg"})
+        SelfRegulatingSpec.from_table({"wheel": "motor", "pivot": [0, 0], "weight": "3 kg"})
     with pytest.raises(InputError, match="self_regulating.pivot must be a pair"):
-        SR.SelfRegulatingSpec.from_table({"wheel": "motor", "pivot": "660 mm"})
+        SelfRegulatingSpec.from_table({"wheel": "motor", "pivot": "660 mm"})
     with pytest.raises(InputError, match="self_regulating must be a table"):
-        SR.SelfRegulatingSpec.from_table(3)
+        SelfRegulatingSpec.from_table(3)
 
 
 def test_analysis_errors():
-    spec = SR.SelfRegulatingSpec(wheel="motor", pivot=(0.66, -0.045), weight=400.0,
+    spec = SelfRegulatingSpec(wheel="motor", pivot=(0.66, -0.045), weight=400.0,
                                  weight_offset=(0.08, 0.0), numerical=False)
     three = make_drive(wheels=[Wheel("motor", "sprocket", 19, (0.6, 0.0), driving=True),
                                Wheel("fan", "sprocket", 38, (0.0, 0.0)),
                                Wheel("idler", "idler", None, (0.3, -0.3), diameter=0.1, side=-1)],
                        links=None)
     with pytest.raises(InputError, match="two-wheel drives of toothed wheels"):
-        SR.self_regulating_analysis(three, spec)
+        self_regulating_analysis(three, spec)
     with pytest.raises(InputError, match="self_regulating.wheel: no wheel named 'pump'"):
-        SR.self_regulating_analysis(make_drive(), dataclasses.replace(spec, wheel="pump"))
+        self_regulating_analysis(make_drive(), dataclasses.replace(spec, wheel="pump"))
     bare = Chain.custom("bare", pitch=P, roller_diameter=0.0159)
     with pytest.raises(InputError, match="has no mass_per_length"):
-        SR.self_regulating_analysis(make_drive(chain=bare), spec)
+        self_regulating_analysis(make_drive(chain=bare), spec)
     with pytest.raises(InputError, match="spec must be a SelfRegulatingSpec or a table, got int"):
-        SR.self_regulating_analysis(make_drive(), 3)
+        self_regulating_analysis(make_drive(), 3)
     with pytest.raises(InputError, match="the drive has no \\[self_regulating\\] table"):
-        SR.self_regulating_analysis(make_drive())
+        self_regulating_analysis(make_drive())
     with pytest.raises(InputError, match="self_regulating.pivot: a pivoted carrier needs"):
-        SR.self_regulating_analysis(make_drive(), {"wheel": "motor"})
+        self_regulating_analysis(make_drive(), {"wheel": "motor"})
 
 
 def test_through_the_analysis_layer():
@@ -696,18 +700,20 @@ def test_through_the_analysis_layer():
 
     table = {"wheel": "motor", "pivot": ["660 mm", "-45 mm"], "weight": "400 N",
              "weight_offset": ["80 mm", "0 mm"], "numerical": False}
-    d = make_drive(self_regulating=SR.SelfRegulatingSpec.from_table(table))
-    direct = SR.self_regulating_analysis(make_drive(), table)
-    assert np.array_equal(SR.self_regulating_analysis(d).slack_tension, direct.slack_tension)
+    d = make_drive(self_regulating=SelfRegulatingSpec.from_table(table))
+    direct = self_regulating_analysis(make_drive(), table)
+    assert np.array_equal(self_regulating_analysis(d).slack_tension, direct.slack_tension)
     a = analyze_drive(d, include=["self_regulating"])
     assert np.array_equal(a.self_regulating.slack_tension, direct.slack_tension)
     # sag, ψ, stability, resonance (the drive's speed gives the excitations: at zero load
     # the carrier on the slack span's sag rings at 41-82 rad/s, near the driven sprocket's
     # 50 rad/s)
-    verdicts = [c.verdict for c in SR.self_regulating_checks(a.self_regulating)]
+    verdicts = [c.verdict for c in self_regulating_checks(a.self_regulating)]
     assert verdicts == ["pass", "FAIL", "pass", "FAIL"]
+    # the tensioner paper's three excitations (issue 20): the roller chain's unequal inner and
+    # outer links at z1 ω1/2 (the meshing z1 ω1 is judged by its forced response, not a band)
     assert a.self_regulating.excitations == pytest.approx(
-        {"driving sprocket": 100.0, "driven sprocket": 50.0, "meshing": 1900.0})
+        {"driving sprocket": 100.0, "driven sprocket": 50.0, "unequal links (inner/outer)": 950.0})
 
 
 def geometry(**changes):
@@ -733,7 +739,7 @@ def test_numerical_solver_errors(monkeypatch):
     # a chain length that no carrier position matches (the polygon length replaced by a
     # constant far beyond the chain): the bracket search gives up
     fake = L.chain_length_polygon(P, 38, 19, 0.6, phases=1)
-    monkeypatch.setattr(SR.L, "chain_length_polygon",
+    monkeypatch.setattr(L, "chain_length_polygon",
                         lambda *a, **k: dataclasses.replace(fake, links_mean=1e4))
     with pytest.raises(ConvergenceError, match="could not bracket the carrier position"):
         SR.solve_equilibrium(geometry(), 1000.0, 0.0)

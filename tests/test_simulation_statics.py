@@ -180,9 +180,9 @@ def test_simulation_takes_the_tooth_form_below_nine_teeth():
 
 
 def test_tooth_form_errors():
-    with pytest.raises(InputError, match=r"teeth must be a whole number in \[3, 10000\], got 2"):
+    with pytest.raises(InputError, match=r"teeth must be a whole number in \[3, \d+\], got 2"):
         iso_tooth_form(0.0254, 2, 0.01588)
-    with pytest.raises(InputError, match=r"teeth must be a whole number in \[3, 10000\], got 8.5"):
+    with pytest.raises(InputError, match=r"teeth must be a whole number in \[3, \d+\], got 8.5"):
         iso_tooth_form(0.0254, 8.5, 0.01588)
     with pytest.raises(InputError, match=r"form must be 'min' \(minimum tooth gap\) or 'max'"):
         iso_tooth_form(0.0254, 17, 0.01588, form="mid")

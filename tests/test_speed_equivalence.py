@@ -268,15 +268,27 @@ def test_propose_safe_tensioner_equals_whole_map(tension, q, l1, l2, b1, b2, mas
 
 
 def test_propose_safe_tensioner_cases():
-    # the example drive mining_conveyor (18x64 chain, 8 pockets): nothing safe within
-    # ±1.5 decades, as the whole 121 x 121 map says
+    # the example drive mining_conveyor (18x64 chain, 8 pockets): the band is the paper's, on
+    # its three excitations (issue 20); at 5.5 rad/s the link pair z1 ω1 = 44 rad/s meets P1;
+    # the answer is what the whole map says
     span = TensionerSpan(11825.020394772118, 6.5, 1.2642691152114252, 2.877651194234193,
                          0.28988998113635517, 0.1254385892522538, 60.0, 200000.0)
-    omega = 2.0
-    assert _propose_reference(span, (0.9 * omega, 1.1 * omega), ratio=1.0, teeth=8, link_chain=True,
-                              points=61) is None
-    with pytest.raises(InfeasibleError, match=r"no safe tensioner within ±1.5 decades of m = 60 kg"):
-        propose_safe_tensioner(span, (0.9 * omega, 1.1 * omega), ratio=1.0, teeth=8, link_chain=True, points=61)
+    for omega in (2.0, 5.5):
+        expected = _propose_reference(span, (0.9 * omega, 1.1 * omega), ratio=1.0, teeth=8, link_chain=True,
+                                      points=61)
+        if expected is None:
+            with pytest.raises(InfeasibleError, match="no safe tensioner"):
+                propose_safe_tensioner(span, (0.9 * omega, 1.1 * omega), ratio=1.0, teeth=8, link_chain=True,
+                                       points=61)
+        else:
+            assert propose_safe_tensioner(span, (0.9 * omega, 1.1 * omega), ratio=1.0, teeth=8, link_chain=True,
+                                          points=61) == expected
+    # nothing safe within ±1.5 decades: a span whose two equal parts share a node mode
+    # jπc/ℓ that no tensioner can move, inside the driving sprocket's band
+    node = TensionerSpan(2000.0, 2.6, 0.8, 0.8, 0.35, 0.35, 3.0, 5e4)
+    p_node = float(node.frequencies(3)[1])
+    with pytest.raises(InfeasibleError, match=r"no safe tensioner within ±1.5 decades of m = 3 kg"):
+        propose_safe_tensioner(node, (0.95 * p_node, 1.05 * p_node), ratio=1.0, points=61)
     # the docstring span at speeds where it fails, with a safe design nearby (4, 12, 14, 62,
     # 66 rad/s), where nothing is safe (8, 72) and where it passes (30): as the whole map
     span = TensionerSpan(2000.0, 2.6, 0.8, 0.8, 0.35, 0.35, 3.0, 5e4)
@@ -288,8 +300,10 @@ def test_propose_safe_tensioner_cases():
         else:
             assert propose_safe_tensioner(span, (0.9 * omega, 1.1 * omega), ratio=2.5, teeth=17,
                                           points=61) == expected
-    # regression: the proposal at 12 rad/s (the whole map's answer, commit 6b56522)
-    r = propose_safe_tensioner(span, (10.8, 13.2), ratio=2.5, teeth=17, points=61)
+    # regression: the proposal at 24 rad/s (the whole map's answer): the same numbers as at
+    # 12 rad/s before issue 20, where z1 ω1 = 204 rad/s was the meshing excitation; now it is
+    # the unequal links' z1 ω1/2 at 24 rad/s (commit 6b56522)
+    r = propose_safe_tensioner(span, (21.6, 26.4), ratio=2.5, teeth=17, points=61)
     assert r.changed and r.distance == pytest.approx(0.36055512754639896, rel=1e-12)
     assert (r.mass, r.stiffness) == pytest.approx((5.985786944906639, 31547.867224009664), rel=1e-12)
     assert r.margin == pytest.approx(0.050148612898105016, rel=1e-9)

@@ -1,4 +1,4 @@
-"""Tests of chaindrive.strength.fretting (Vikulov, paper 3): latent period, pin beam."""
+"""Tests of chaindrive.strength.fretting (Vikulov): latent period, pin beam."""
 
 from __future__ import annotations
 
@@ -184,7 +184,7 @@ def test_unequal_row_shares_tilt_even_a_duplex_pin():
 
 
 def test_fretting_comparison_shows_the_seed_claim():
-    # Vikulov paper 3: intermediate plates reduce pin bending and micro-slip and raise life.
+    # Vikulov: intermediate plates reduce pin bending and micro-slip and raise life.
     pin = _pin_16b3()
     ra, f = 0.8e-6, 10.0
     a0 = pin.bending(5e3, intermediate_plates=False).slip_amplitude

@@ -14,6 +14,7 @@ import scipy.stats as st
 from hypothesis import given, settings
 from hypothesis import strategies as hs
 
+from _shared import EXAMPLES
 from chaindrive.errors import InputError, UnknownNameError
 from chaindrive.study.plan import (
     MAXIMUM_VARIANTS,
@@ -29,9 +30,6 @@ from chaindrive.study.plan import (
 from chaindrive.study.run import evaluate_variant, lookup
 from chaindrive.study.spec import canonical_hash, load_study, parse_study, remove_path, set_path
 from chaindrive.study.summary import column_statistics, output_unit
-
-EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
-
 
 # --------------------------------------------------------------------------- plans
 
@@ -133,7 +131,7 @@ def test_plan_errors():
         Variable("x", low=0.0, high=2.0, scale="log")
     with pytest.raises(InputError, match="scale must be 'linear' or 'log'"):
         Variable("x", low=1.0, high=2.0, scale="cubic")
-    with pytest.raises(InputError, match=r"count needs low and high and must lie in \[1, 200000\]"):
+    with pytest.raises(InputError, match=r"count needs low and high and must lie in \[1, 2000000\]"):
         Variable("x", low=1.0, high=2.0, count=0)
     with pytest.raises(UnknownNameError, match="unknown distribution 'gauss'"):
         Variable("x", distribution="gauss")
@@ -141,12 +139,12 @@ def test_plan_errors():
         frozen_distribution("norm", {"mu": 1.0})
     with pytest.raises(InputError, match="outside the domain"):
         frozen_distribution("norm", {"loc": 0.0, "scale": -1.0})
-    with pytest.raises(InputError, match=r"plan.samples must be a whole number in \[1, 200000\]"):
+    with pytest.raises(InputError, match=r"plan.samples must be a whole number in \[1, 2000000\]"):
         monte_carlo(0, 1, seed=1)
     with pytest.raises(InputError, match="plan.samples"):
         latin_hypercube(MAXIMUM_VARIANTS + 1, 1, seed=1)
-    with pytest.raises(InputError, match="at most 200000 per study"):
-        full_grid([range(1000), range(1000)])
+    with pytest.raises(InputError, match="at most 2000000 per study"):
+        full_grid([range(2000), range(1001)])
     with pytest.raises(InputError, match="vary at least 1 input"):
         plan_rows("grid", [])
     with pytest.raises(InputError, match="needs the number of samples"):
@@ -342,10 +340,11 @@ def test_failing_variant_is_a_row_with_its_error():
 
 
 def test_column_statistics_against_numpy():
-    x = [3.0, 1.0, None, 4.0, 1.5, 9.0]
+    # stresses are stored in Pa and shown in MPa (the unit ContactAnalysis' result declares)
+    x = [3e6, 1e6, None, 4e6, 1.5e6, 9e6]
     s = column_statistics("contact.stress", x)
-    ref = np.array([v for v in x if v is not None])
-    assert s["n"] == 5 and s["unit"] == "Pa"
+    ref = np.array([v for v in x if v is not None]) / 1e6
+    assert s["n"] == 5 and s["unit"] == "MPa"
     assert float(s["mean"]) == pytest.approx(ref.mean(), rel=1e-3)
     assert float(s["std"]) == pytest.approx(ref.std(ddof=1), rel=1e-3)
     assert float(s["p95"]) == pytest.approx(np.quantile(ref, 0.95), rel=1e-3)

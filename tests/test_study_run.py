@@ -14,12 +14,11 @@ import pytest
 pytest.importorskip("distributed")
 pa = pytest.importorskip("pyarrow")
 
+from _shared import EXAMPLES, free_port  # noqa: E402
 from chaindrive.cli import main  # noqa: E402
 from chaindrive.errors import InfeasibleError, InputError  # noqa: E402
 from chaindrive.study.run import evaluate_variant, existing_keys, read_results, run_study  # noqa: E402
 from chaindrive.study.spec import load_study  # noqa: E402
-
-EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
 
 # 6 variants: 2 skews x 3 tooth counts of the driving sprocket; teeth = 2 is refused by
 # the project schema (whole number >= 3), so 2 variants fail and record their error
@@ -86,7 +85,9 @@ def test_local_cluster_two_workers(local_run, study_file):
     assert [r["wheels.0.teeth"] for r in failed] == [2, 2]
     assert all("wheels[0].teeth" in r["error"] and r["contact.stress"] is None for r in failed)
     ok = [r for r in rows if not r["error"]]
-    assert all(r["contact.stress"] > 0 and r["passed"] is True for r in ok)
+    # passed counts every check: at 206' the life with skew (about 1900 h) falls below the life at the
+    # rated power (18 300 h), the service-life check fails (issue 19: passed ignored the skew)
+    assert all(r["contact.stress"] > 0 and r["passed"] is (r["contact.skew"] < 100) for r in ok)
     # more skew, more stress (Garshniev & Maksymovych eq. (2)); the 206' rows come after the 42' rows
     assert ok[-1]["contact.stress"] > 2 * ok[0]["contact.stress"]
     assert len({r["worker"] for r in rows}) >= 1
@@ -104,10 +105,6 @@ def test_rerun_adds_nothing(local_run, study_file, capsys):
     assert existing_keys(out) == keys and len(keys) == 6
 
 
-def _free_port() -> int:
-    with socket.socket() as s:
-        s.bind(("127.0.0.1", 0))
-        return s.getsockname()[1]
 
 
 def _stop(proc: subprocess.Popen) -> None:
@@ -121,7 +118,7 @@ def _stop(proc: subprocess.Popen) -> None:
 
 
 def test_separate_scheduler_and_worker_give_the_same_rows(local_run, study_file, tmp_path):
-    port = _free_port()
+    port = free_port()
     address = f"tcp://127.0.0.1:{port}"
     procs = []
     try:
@@ -183,7 +180,7 @@ def test_study_cli_errors(study_file, tmp_path, capsys):
 
 def test_run_errors(study_file, tmp_path, local_run):
     study = load_study(study_file)
-    with pytest.raises(InputError, match=r"batch_size must lie in \[1, 1000\], got 0"):
+    with pytest.raises(InputError, match=r"batch_size must lie in \[1, 20000\], got 0"):
         run_study(study, tmp_path / "a", batch_size=0, progress=False)
     with pytest.raises(InputError, match=r"workers must lie in \[1, 256\], got 0"):
         run_study(study, tmp_path / "a", workers=0, progress=False)
@@ -194,7 +191,7 @@ def test_run_errors(study_file, tmp_path, local_run):
         read_results(tmp_path)
     # nobody listens on a fresh port: refused with the address named
     with pytest.raises(InputError, match=r"--scheduler: cannot reach the scheduler at 'tcp://127.0.0.1:\d+'"):
-        run_study(study, tmp_path / "b", scheduler=f"tcp://127.0.0.1:{_free_port()}", progress=False,
+        run_study(study, tmp_path / "b", scheduler=f"tcp://127.0.0.1:{free_port()}", progress=False,
                   wait_for_workers=1)
     other = load_study(EXAMPLES / "skew_study.toml")
     with pytest.raises(InputError, match="holds another study"):
@@ -255,3 +252,19 @@ values = [17, 21]
     # a bigger chain carries more power (ANSI/ACA rating grows with pitch, Shigley eq. (17-32))
     power = {(r["chain.name"], r["wheels.0.teeth"]): r["rating.rated_power"] for r in got}
     assert power[("12B", 17)] < power[("16B", 17)] < power[("20B", 17)]
+
+
+def test_results_as_dataframe_with_units(local_run):
+    pytest.importorskip("pandas")
+    from chaindrive.study import read_dataframe
+
+    out, _ = local_run
+    df = read_dataframe(out)
+    assert len(df) == 6 and list(df["variant"]) == list(range(6))
+    units = df.attrs["units"]
+    assert units["contact.skew"] == "arcmin"          # an input: the study file's unit
+    assert units["contact.stress"] == "Pa" and units["loads.maximum"] == "N"   # outputs: SI
+    assert units["seconds"] == "s" and units["passed"] == "" and set(units) == set(df.columns)
+    assert df.attrs["study"]["inputs"] == ["contact.skew", "wheels.0.teeth"]
+    with pytest.raises(InputError, match="holds no results"):
+        read_dataframe(out / "nothing")

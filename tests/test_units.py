@@ -268,3 +268,52 @@ def test_chain_speed_round_trip_against_the_polygon(z, pitch_mm, omega, link):
         warnings.simplefilter("ignore", ValidityRangeWarning)  # fast corners of the range
         w = parse_wheel_speed(f"{v!r} m/s", pitch=p, teeth=z, link_chain=link)
     assert w == pytest.approx(omega, rel=1e-9)
+
+
+# ------------------------------------------------------- spellings engineers type (issue 22)
+@pytest.mark.parametrize("text,unit,expected", [
+    ("1450 RPM", "rad/s", 1450 * math.pi / 30),      # 1 rpm = 2π/60 rad/s
+    ("1450 Rpm", "rad/s", 1450 * math.pi / 30),
+    ("1450 rev/min", "rad/s", 1450 * math.pi / 30),
+    ("1450 r/min", "rad/s", 1450 * math.pi / 30),
+    ("1450 U/min", "rad/s", 1450 * math.pi / 30),
+    ("2 r/s", "rad/s", 4 * math.pi),
+    ("7.5 kw", "W", 7500.0),
+    ("7.5 KW", "W", 7500.0),
+    ("7.5 Kw", "W", 7500.0),
+    ("2 KN", "N", 2000.0),
+    ("50 KN/m", "N/m", 50000.0),
+    ("40 Nm", "N*m", 40.0),
+    ("1.2 kNm", "N*m", 1200.0),
+    ("3 KG", "kg", 3.0),
+    ("64 MM", "m", 0.064),
+    ("210 GPA", "Pa", 210e9),
+    ("10 HP", "W", 10 * 745.69987158227022),        # mechanical horsepower, 550 ft·lbf/s
+])
+def test_engineering_spellings_accepted(text, unit, expected):
+    from chaindrive.units import parse_quantity
+
+    assert parse_quantity(text, unit, field="x") == pytest.approx(expected, rel=1e-12)
+
+
+@pytest.mark.parametrize("text,unit,match", [
+    ("5 mw", "W", r"power: unit 'mw' in '5 mw' is ambiguous: write 'mW' \(milliwatt\) or 'MW' \(megawatt\)"),
+    ("5 mpa", "Pa", r"'MPa' \(megapascal\) or 'mPa' \(millipascal\)"),
+    ("3 kn", "N", r"'kN' \(kilonewton\) or 'knot'"),
+    ("3 kn/m", "N/m", r"unit 'kn' in '3 kn/m' is ambiguous"),
+])
+def test_ambiguous_spellings_refused_with_both_readings(text, unit, match):
+    from chaindrive.units import parse_quantity
+
+    with pytest.raises(InputError, match=match) as info:
+        parse_quantity(text, unit, field="power")
+    assert info.value.field == "power"
+
+
+def test_spellings_keep_pint_units_and_cli_accepts_rpm_in_capitals():
+    from chaindrive.cli import main
+    from chaindrive.units import parse_quantity
+
+    assert parse_quantity("5 MW", "W") == 5e6 and parse_quantity("5 mW", "W") == pytest.approx(5e-3)
+    assert parse_quantity("500 nm", "m") == pytest.approx(5e-7)      # a nanometre stays one
+    assert main(["kinematics", "--chain", "18x64", "--teeth", "8", "--speed", "48 RPM", "--points", "7"]) == 0

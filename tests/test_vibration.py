@@ -356,12 +356,16 @@ def test_reduced_tensioner_sliding_and_errors():
 
 # ----------------------------------------------------------------------- excitation, check
 def test_excitations():
-    assert excitation_multipliers(2.5, 17) == {"driving sprocket": 1.0, "driven sprocket": 0.4, "meshing": 17.0}
+    # the paper's three (driving, driven, unequal links) and the roller chain's polygon
+    assert excitation_multipliers(2.5, 17) == {"driving sprocket": 1.0, "driven sprocket": 0.4,
+                                               "unequal links (inner/outer)": 8.5}
+    assert excitation_multipliers(2.5, 17, polygon=True)["meshing"] == 17.0  # not the paper's: forced response
     k = excitation_multipliers(2.0, 8, link_chain=True)
-    assert k["link passing"] == 16.0 and k["link pair (t ± d)"] == 8.0
+    assert k["link pair (t ± d)"] == 8.0 and "link passing" not in k
+    assert excitation_multipliers(2.0, 8, link_chain=True, polygon=True)["link passing"] == 16.0
     assert "meshing" not in excitation_multipliers(3.0)
     e = excitation_frequencies(np.array([10.0, 20.0]), 2.0, 9)
-    np.testing.assert_allclose(e["meshing"], [90.0, 180.0])
+    np.testing.assert_allclose(e["unequal links (inner/outer)"], [45.0, 90.0])
     with pytest.raises(InputError, match="ratio must be positive"):
         excitation_multipliers(0.0)
     with pytest.raises(InputError, match="teeth must be a whole number >= 3"):
@@ -402,7 +406,8 @@ def test_span_object_campbell_map_proposal(tmp_path):
     assert not span.check(31.4159, ratio=2.5, teeth=17).passed
     cb = campbell(span, (10.0, 100.0), ratio=2.5, teeth=17, speeds=40, design_speed=31.4)
     assert cb.natural_frequencies.shape == (40, 3)
-    assert cb.to_dict()["excitation_names"] == ["driving sprocket", "driven sprocket", "meshing"]
+    assert cb.to_dict()["excitation_names"] == ["driving sprocket", "driven sprocket",
+                                                 "unequal links (inner/outer)"]
     cb2 = campbell(span, (10.0, 100.0), speeds=5, chain_speed_per_speed=0.05)
     assert np.all(np.diff(cb2.natural_frequencies[:, 0]) < 0)  # moving string: falls with speed
     rng = (25.0, 38.0)

@@ -206,7 +206,7 @@ def test_project_with_more_wheels_is_refused_with_a_reason():
     from chaindrive.drive.project import template
 
     with pytest.raises(InputError, match="two sprockets or pocket wheels"):
-        state_from_project(template("crawler"))
+        state_from_project(template("track"))
 
 
 def test_open_upload_and_bad_upload(client):
@@ -450,3 +450,32 @@ def test_loads_shown_with_units_from_the_report_table():
     assert "kN" in units
     imperial = studio_payload(normalise_state({"units": "imperial"}))
     assert "lbf" in {r[2] for r in imperial["loads"]["rows"]}
+
+
+def test_dxf_downloads_are_the_workshop_drawing_and_the_mining_example_is_the_file(client):
+    """The studio's and the pocket-wheel page's DXF is the workshop drawing that
+    ``chaindrive sprocket --dxf`` / ``pocket-wheel --dxf`` write (views, title block), not an
+    outline; the studio's mining example is examples/mining_conveyor.toml."""
+    import ezdxf
+
+    from chaindrive.geometry import Sprocket
+    from chaindrive.geometry.drawing import part_drawing
+    from chaindrive.geometry.part import sprocket_part
+    from chaindrive.web.design import design_from_state
+
+    res = client.get("/download/wheel.dxf?" + _query({}))
+    doc = ezdxf.read(io.StringIO(res.content.decode()))
+    design = design_from_state(normalise_state({}))[0]
+    reference = part_drawing(sprocket_part(Sprocket.from_chain(design.chain, design.teeth_driving)))
+    assert {layer.dxf.name for layer in doc.layers} == {layer.dxf.name for layer in reference.layers}
+    assert len(doc.modelspace()) == len(reference.modelspace()) > 50
+    pocket = client.get("/expert/pocket-wheel/outline.dxf?chain=18x64&teeth=8")
+    doc = ezdxf.read(io.StringIO(pocket.content.decode()))
+    assert len(doc.modelspace()) > 50 and not doc.audit().has_errors
+    page = client.get("/").text
+    from chaindrive._examples import example_path
+    from chaindrive.web.design import state_from_project
+
+    state = state_from_project(example_path("mining_conveyor.toml").read_text(encoding="utf-8"))
+    assert f"idler_offset={state['idler_offset'].replace(' ', '+')}" in page.replace("%20", "+")
+

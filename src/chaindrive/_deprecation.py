@@ -49,15 +49,18 @@ def alias(function: F, old: str) -> F:
     return wrapper  # type: ignore[return-value]
 
 
-def moved_module(old: str, new: str) -> Callable[[str], Any]:
-    """A module ``__getattr__`` forwarding every attribute of the moved module ``old`` to ``new``."""
+def moved_module(old: str, new: str, *more: str) -> Callable[[str], Any]:
+    """A module ``__getattr__`` forwarding every attribute of the moved module ``old`` to ``new``
+    (or, for a module split in parts, to the first of ``new, *more`` that has it)."""
 
     def __getattr__(name: str) -> Any:
-        module = importlib.import_module(new)
-        if name.startswith("__") or not hasattr(module, name):
-            raise AttributeError(f"module {old!r} has no attribute {name!r}")
-        warn_renamed(f"{old}.{name}", f"{new}.{name}")
-        return getattr(module, name)
+        if not name.startswith("__"):
+            for home in (new, *more):
+                module = importlib.import_module(home)
+                if hasattr(module, name):
+                    warn_renamed(f"{old}.{name}", f"{home}.{name}")
+                    return getattr(module, name)
+        raise AttributeError(f"module {old!r} has no attribute {name!r}")
 
     return __getattr__
 

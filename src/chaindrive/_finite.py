@@ -23,6 +23,7 @@ import dataclasses
 import functools
 import inspect
 import math
+import threading
 from collections.abc import Callable
 from typing import Any, TypeVar, cast, overload
 
@@ -35,6 +36,13 @@ __all__ = ["finite_guard", "first_nonfinite", "check_finite_fields"]
 F = TypeVar("F", bound=Callable[..., Any])
 
 _NUMERIC_SKIP = (str, bytes, bool, type(None))
+
+
+class _GuardState(threading.local):
+    depth = 0  # guarded calls on this thread's stack (numpy's error state is set by the outermost)
+
+
+_GUARD = _GuardState()
 
 
 def _nonfinite_number(value: Any) -> bool:
@@ -66,7 +74,9 @@ def first_nonfinite(obj: Any, _depth: int = 0) -> str | None:
     """
     if _depth > 12 or isinstance(obj, _NUMERIC_SKIP) or isinstance(obj, (int, np.integer)):
         return None
-    if isinstance(obj, (float, np.floating, complex, np.complexfloating)):
+    if isinstance(obj, (float, np.floating)):
+        return None if math.isfinite(obj) else ""
+    if isinstance(obj, (complex, np.complexfloating)):
         return None if np.isfinite(obj) else ""
     if isinstance(obj, np.ndarray):
         if obj.dtype.kind in "fc" and obj.size and not np.all(np.isfinite(obj)):
@@ -186,8 +196,19 @@ def finite_guard(function: F | None = None, *, check_result: bool = True,
             if _nonfinite_number(value):
                 _refuse(name, value, allow_infinite)
         try:
-            with np.errstate(all="ignore"):
-                result = function(*args, **kwargs)
+            if _GUARD.depth:  # an outer guard has set numpy's error state already
+                _GUARD.depth += 1
+                try:
+                    result = function(*args, **kwargs)
+                finally:
+                    _GUARD.depth -= 1
+            else:
+                _GUARD.depth = 1
+                try:
+                    with np.errstate(all="ignore"):
+                        result = function(*args, **kwargs)
+                finally:
+                    _GUARD.depth = 0
         except ChainDriveError:
             raise
         except np.linalg.LinAlgError as exc:

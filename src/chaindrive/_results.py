@@ -66,6 +66,11 @@ def quantity(unit: str, *, display: str | None = None, default: Any = dataclasse
 
 def jsonable(value: Any) -> Any:
     """Convert numpy arrays/scalars, dataclasses and containers to JSON-ready objects."""
+    kind = type(value)
+    if kind is float:
+        return value if value - value == 0.0 else None  # NaN and inf are not JSON numbers
+    if kind is int or kind is str or kind is bool or value is None:
+        return value
     if isinstance(value, Result):
         return value.to_dict()
     if dataclasses.is_dataclass(value) and not isinstance(value, type):
@@ -97,6 +102,13 @@ class Result:
 
     def to_json(self, **kwargs: Any) -> str:
         return json.dumps(self.to_dict(), **kwargs)
+
+    def _repr_html_(self) -> str:
+        """Notebook display: a table of the fields with their units (the presenter
+        :func:`chaindrive.workflows.notebook.html_of` formats it)."""
+        from .workflows.notebook import html_of
+
+        return html_of(self)
 
     @classmethod
     def _field(cls, name: str) -> dataclasses.Field[Any]:

@@ -6,6 +6,7 @@ Each check names the parameter and the valid range in its message and raises
 
 from __future__ import annotations
 
+import math
 import warnings
 
 import numpy as np
@@ -23,8 +24,23 @@ __all__ = [
 ]
 
 
+_SCALARS = (float, int, np.floating, np.integer)
+
+
+def _scalar(value: object) -> float | None:
+    """``value`` as a float when it is one plain number (the fast path of the checks)."""
+    if isinstance(value, _SCALARS) and not isinstance(value, bool):
+        return float(value)
+    return None
+
+
 def as_float_array(name: str, value: ArrayLike) -> np.ndarray:
     """Convert ``value`` to a float array, rejecting NaN and non-numbers."""
+    x = _scalar(value)
+    if x is not None:
+        if x != x:
+            raise InputError(f"{name} must not be NaN")
+        return np.asarray(x)
     try:
         arr = np.asarray(value, dtype=float)
     except (TypeError, ValueError) as exc:
@@ -36,6 +52,9 @@ def as_float_array(name: str, value: ArrayLike) -> np.ndarray:
 
 def check_positive(name: str, value: ArrayLike, unit: str = "") -> np.ndarray:
     """Require ``0 < value < inf``."""
+    x = _scalar(value)
+    if x is not None and 0.0 < x < math.inf:
+        return np.asarray(x)
     arr = as_float_array(name, value)
     if np.any(arr <= 0) or np.any(~np.isfinite(arr)):
         raise InputError(
@@ -47,6 +66,9 @@ def check_positive(name: str, value: ArrayLike, unit: str = "") -> np.ndarray:
 
 def check_nonnegative(name: str, value: ArrayLike, unit: str = "") -> np.ndarray:
     """Require ``0 <= value < inf``."""
+    x = _scalar(value)
+    if x is not None and 0.0 <= x < math.inf:
+        return np.asarray(x)
     arr = as_float_array(name, value)
     if np.any(arr < 0) or np.any(~np.isfinite(arr)):
         raise InputError(
@@ -67,6 +89,10 @@ def check_range(
     unit: str = "",
 ) -> np.ndarray:
     """Require ``low <(=) value <(=) high``."""
+    x = _scalar(value)
+    if (x is not None and (x >= low if low_inclusive else x > low)
+            and (x <= high if high_inclusive else x < high)):
+        return np.asarray(x)
     arr = as_float_array(name, value)
     lo_ok = arr >= low if low_inclusive else arr > low
     hi_ok = arr <= high if high_inclusive else arr < high
@@ -93,6 +119,9 @@ def check_teeth(name: str, value: ArrayLike, minimum: int = 3) -> np.ndarray:
 
 def warn_outside(name: str, value: ArrayLike, low: float, high: float, source: str, stacklevel: int = 3) -> None:
     """Warn (do not raise) when an empirical formula is used outside its range."""
+    x = _scalar(value)
+    if x is not None and low <= x <= high:
+        return
     arr = np.asarray(value, dtype=float)
     if np.any(arr < low) or np.any(arr > high):
         warnings.warn(

@@ -23,7 +23,7 @@ import numpy as np
 from numpy.typing import ArrayLike
 
 from ._finite import finite_guard
-from ._results import Result
+from ._results import Result, quantity
 from ._typing import FloatOrArray
 from ._validation import as_float_array, check_nonnegative, check_positive, check_teeth
 from .errors import ConvergenceError, InfeasibleError, InputError
@@ -428,7 +428,7 @@ def _hull_perimeters(vertices_1: np.ndarray, vertices_2: np.ndarray) -> np.ndarr
     return own[:, None] + np.sum(extra, axis=-1)
 
 
-@dataclass
+@dataclass(frozen=True)
 class PolygonLength(Result):
     """Chain length on the pitch polygons over the phases of the two wheels.
 
@@ -446,14 +446,14 @@ class PolygonLength(Result):
         Length for each phase pair [pitches].
     """
 
-    links_min: float
-    links_max: float
-    links_mean: float
-    links_circles: float
-    links_approx: float | None
-    phase_1: np.ndarray
-    phase_2: np.ndarray
-    links: np.ndarray
+    links_min: float = quantity("1")
+    links_max: float = quantity("1")
+    links_mean: float = quantity("1")
+    links_circles: float = quantity("1")
+    links_approx: float | None = quantity("1")
+    phase_1: np.ndarray = quantity("rad")
+    phase_2: np.ndarray = quantity("rad")
+    links: np.ndarray = quantity("1")
 
 
 def _polygon_links(p, z1, z2, a, d, n):
@@ -582,7 +582,7 @@ def chain_length_polygon(
     )
 
 
-@dataclass
+@dataclass(frozen=True)
 class PolygonCentreDistance(Result):
     """Centre distance for a whole number of links on the pitch polygons.
 
@@ -602,11 +602,11 @@ class PolygonCentreDistance(Result):
         From :func:`centre_distance_approx` (roller chains) [m].
     """
 
-    links: int
-    taut: float
-    loose: float
-    circles: float
-    approx: float | None
+    links: int = quantity("1")
+    taut: float = quantity("m")
+    loose: float = quantity("m")
+    circles: float = quantity("m")
+    approx: float | None = quantity("m")
 
 
 def _solve_increasing(fun, target, lo, hi, what):
@@ -784,7 +784,7 @@ def even_links(links: ArrayLike) -> np.ndarray:
 # --------------------------------------------------------------------------- many wheels
 
 
-@dataclass
+@dataclass(frozen=True)
 class WrapLayout(Result):
     """Chain path around two or more wheels (pitch circles, exact tangents).
 
@@ -811,16 +811,16 @@ class WrapLayout(Result):
         Total chain length on the pitch circles [m].
     """
 
-    centres: np.ndarray
-    radii: np.ndarray
-    sides: np.ndarray
-    span_start: np.ndarray
-    span_end: np.ndarray
-    span_length: np.ndarray
-    span_angle: np.ndarray
-    wrap_angle: np.ndarray
-    wrap_length: np.ndarray
-    length: float
+    centres: np.ndarray = quantity("m")
+    radii: np.ndarray = quantity("m")
+    sides: np.ndarray = quantity("1")
+    span_start: np.ndarray = quantity("m")
+    span_end: np.ndarray = quantity("m")
+    span_length: np.ndarray = quantity("m")
+    span_angle: np.ndarray = quantity("rad")
+    wrap_angle: np.ndarray = quantity("rad")
+    wrap_length: np.ndarray = quantity("m")
+    length: float = quantity("m")
 
 
 @finite_guard

@@ -37,6 +37,7 @@ import numbers
 import warnings
 
 from .errors import InputError, ValidityRangeWarning
+from .units import RAD_S_PER_RPM, rpm_to_angular_velocity
 
 __all__ = [
     "MAX_POINTS",
@@ -83,7 +84,7 @@ MAX_ARC_POINTS = 10_000
 #: Plausible range of a value typed at the boundary, by kind:
 #: (low, high, SI unit, display factor, display unit, why). Outside: a warning.
 PLAUSIBLE: dict[str, tuple[float, float, str, float, str, str]] = {
-    "angular_velocity": (1e-3, 10_000 * math.pi / 30, "rad/s", 30 / math.pi, "rpm",
+    "angular_velocity": (1e-3, rpm_to_angular_velocity(10_000), "rad/s", 1 / RAD_S_PER_RPM, "rpm",
                          "chain drives run between about 0.01 rpm and 10 000 rpm"),
     "chain_speed": (1e-4, 40.0, "m/s", 1.0, "m/s",
                     "no chain runs faster than about 40 m/s; scraper conveyors run at 0.5-2 m/s"),

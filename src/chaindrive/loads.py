@@ -6,6 +6,8 @@ All functions take and return SI units (N, N·m, W, m, rad/s, kg).
 
 from __future__ import annotations
 
+from typing import Any
+
 import numpy as np
 from numpy.typing import ArrayLike
 
@@ -18,6 +20,8 @@ __all__ = [
     "torque_from_power",
     "power_from_torque",
     "chain_speed",
+    "mean_chain_speed",
+    "sides_per_turn",
     "tight_side_tension",
     "centrifugal_tension",
     "free_entry_acceleration_peak",
@@ -27,6 +31,7 @@ __all__ = [
     "static_safety_factor",
     "service_factor",
     "SERVICE_FACTORS",
+    "REQUIRED_STATIC_SAFETY",
 ]
 
 
@@ -88,6 +93,28 @@ def power_from_torque(torque: ArrayLike, angular_velocity: ArrayLike) -> FloatOr
     return T * w
 
 
+def sides_per_turn(teeth: int, link_chain: bool) -> int:
+    """Chain links seated per turn of a wheel: ``z`` (sprocket, track wheel), ``2z`` (round
+    link chain on a pocket wheel: a horizontal and a vertical link per pocket; Dolipiński
+    et al., eq. (6): 2z sides of lengths t + d and t − d, 2 z t per turn).
+
+    >>> sides_per_turn(8, True), sides_per_turn(19, False)
+    (16, 19)
+    """
+    return 2 * int(teeth) if link_chain else int(teeth)
+
+
+def mean_chain_speed(sides: Any, pitch: Any, angular_velocity: Any) -> Any:
+    r"""``v = n p ω / 2π`` without input checks: the one chain-speed formula of the package
+    (:func:`chain_speed` is its checked public form; ``n`` from :func:`sides_per_turn`).
+    Scalars or numpy arrays (broadcast).
+
+    >>> round(float(mean_chain_speed(19, 0.0254, 100.0)), 6)
+    7.680818
+    """
+    return sides * pitch * angular_velocity / (2.0 * np.pi)
+
+
 def chain_speed(pitch: ArrayLike, teeth: ArrayLike, angular_velocity: ArrayLike) -> FloatOrArray:
     r"""Mean chain speed, one pitch per tooth passing.
 
@@ -125,7 +152,7 @@ def chain_speed(pitch: ArrayLike, teeth: ArrayLike, angular_velocity: ArrayLike)
     p = check_positive("pitch", pitch, "m")
     z = check_teeth("teeth", teeth, minimum=2)
     w = check_positive("angular_velocity", angular_velocity, "rad/s")
-    return z * p * w / (2.0 * np.pi)
+    return mean_chain_speed(z, p, w)
 
 
 def tight_side_tension(torque: ArrayLike, pitch_radius: ArrayLike) -> FloatOrArray:
@@ -348,6 +375,16 @@ def shaft_load(tensions: ArrayLike, directions: ArrayLike) -> tuple[FloatOrArray
     fx = np.sum(F * np.cos(a), axis=-1)
     fy = np.sum(F * np.sin(a), axis=-1)
     return np.hypot(fx, fy), np.arctan2(fy, fx)
+
+
+#: Required static safety ``F_B / F_max`` by chain kind, the one table of chaindrive (a
+#: project may set its own ``required_static_safety``): roller chains 7 (the project
+#: default since chaindrive's first release; stricter than Diamond Chain's "load in service
+#: should never exceed 1/6 of the ultimate strength", because ``F_max`` includes the slack,
+#: centrifugal and dynamic parts), round link chains 3.5 (mining scraper conveyors, the
+#: value of the Dolipiński et al. example drive). No standard table prescribing either was
+#: found (docs/design.md).
+REQUIRED_STATIC_SAFETY = {"roller": 7.0, "link": 3.5}
 
 
 def static_safety_factor(breaking_force: ArrayLike, tension: ArrayLike) -> FloatOrArray:

@@ -35,6 +35,28 @@ from typing import Any
 
 from .errors import InputError
 
+#: One revolution per minute in rad/s: the one rpm <-> rad/s conversion of the package
+#: (everything else calls :func:`rpm_to_angular_velocity` / :func:`angular_velocity_to_rpm`).
+RAD_S_PER_RPM = math.pi / 30.0
+
+
+def rpm_to_angular_velocity(rpm: Any) -> Any:
+    """Revolutions per minute to rad/s (scalars or arrays).
+
+    >>> round(rpm_to_angular_velocity(960.0), 4)
+    100.531
+    """
+    return rpm * RAD_S_PER_RPM
+
+
+def angular_velocity_to_rpm(angular_velocity: Any) -> Any:
+    """rad/s to revolutions per minute (scalars or arrays).
+
+    >>> round(angular_velocity_to_rpm(100.0), 3)
+    954.93
+    """
+    return angular_velocity / RAD_S_PER_RPM
+
 __all__ = [
     "parse_quantity",
     "SI_UNITS",
@@ -44,6 +66,10 @@ __all__ = [
     "MAX_TEXT_LENGTH",
     "chain_speed_to_angular_velocity",
     "parse_wheel_speed",
+    "normalise_unit",
+    "SPELLINGS",
+    "AMBIGUOUS",
+    "convert_from_si",
 ]
 
 #: The SI unit the core expects for each kind of quantity, as pint spells it.
@@ -77,6 +103,64 @@ _EXPONENT = r"(?:(?:\^|\*\*)[+-]?[1-4]|[²³])"
 _FACTOR = rf"{_NAME}{_EXPONENT}?"
 _UNIT = rf"(?:1\s*/\s*)?{_FACTOR}(?:\s*[*/·]\s*{_FACTOR}|\s+{_FACTOR})*"
 _GRAMMAR = re.compile(rf"^\s*(?P<number>{_NUMBER})\s*(?P<unit>{_UNIT})?\s*$")
+
+#: Spellings engineers type that pint does not know, each with one meaning: token -> unit.
+#: (Case matters to pint: "KW" is no unit there, but nobody means kelvin-watts by it.)
+SPELLINGS: dict[str, str] = {
+    "RPM": "rpm", "Rpm": "rpm", "rpms": "rpm", "RPMs": "rpm",
+    "kw": "kW", "KW": "kW", "Kw": "kW",
+    "KN": "kN", "Kn": "kN",
+    "KG": "kg", "Kg": "kg",
+    "HP": "hp", "Hp": "hp",
+    "MPA": "MPa", "Mpa": "MPa",
+    "GPA": "GPa", "Gpa": "GPa",
+    "MM": "mm", "Mm": "mm",
+    "Nm": "N*m", "kNm": "kN*m", "KNm": "kN*m",
+    "sec": "s", "secs": "s",
+}
+
+#: Whole unit texts with one meaning (a revolution per minute written out).
+WHOLE_SPELLINGS: dict[str, str] = {
+    "rev/min": "rpm", "revs/min": "rpm", "r/min": "rpm", "U/min": "rpm", "rev/mn": "rpm",
+    "r/s": "rev/s", "revs/s": "rev/s",
+}
+
+#: Spellings that mean two different things: refused with both readings.
+AMBIGUOUS: dict[str, str] = {
+    "mw": "'mW' (milliwatt) or 'MW' (megawatt)",
+    "mpa": "'MPa' (megapascal) or 'mPa' (millipascal)",
+    "kn": "'kN' (kilonewton) or 'knot' (a speed)",
+    "gpa": "'GPa' (gigapascal)",
+}
+
+_TOKEN = re.compile(r"[A-Za-zµμΩ_]+")
+
+
+def normalise_unit(given: str, *, field: str = "value", text: str | None = None) -> str:
+    """The unit text ``given`` with the usual engineering spellings made pint's.
+
+    "RPM", "rev/min", "r/min" are rpm; "kw", "KW" are kW; "KN" is kN; "Nm" is N*m. A
+    spelling with two readings ("mw": milliwatt or megawatt?) is refused naming both.
+
+    Examples
+    --------
+    >>> normalise_unit("RPM"), normalise_unit("rev/min"), normalise_unit("KW"), normalise_unit("kN/m")
+    ('rpm', 'rpm', 'kW', 'kN/m')
+    >>> normalise_unit("mw", field="power")
+    Traceback (most recent call last):
+    ...
+    chaindrive.errors.InputError: power: unit 'mw' is ambiguous: write 'mW' (milliwatt) or 'MW' (megawatt)
+    """
+    stripped = given.strip()
+    if stripped in WHOLE_SPELLINGS:
+        return WHOLE_SPELLINGS[stripped]
+    for token in _TOKEN.findall(stripped):
+        if token in AMBIGUOUS:
+            where = f" in {text!r}" if text is not None and text.strip() != stripped else ""
+            raise InputError(f"{field}: unit {token!r}{where} is ambiguous: write {AMBIGUOUS[token]}",
+                             field=field)
+    return _TOKEN.sub(lambda m: SPELLINGS.get(m.group(0), m.group(0)), stripped)
+
 
 #: Two example units for a bare number, by the target unit.
 _EXAMPLES: dict[str, tuple[str, str]] = {
@@ -143,6 +227,19 @@ def _unit_info(unit: str) -> tuple[Any, float, Any, int, bool]:
     radians = int(dict(root._units).get("radian", 0))
     hertz = any(name in ("hertz",) or name.endswith("hertz") for name in dict(parsed._units))
     return parsed, float(factor), ureg.Quantity(1.0, parsed).dimensionality, radians, hertz
+
+
+def convert_from_si(value: float, si_unit: str, unit: str) -> float:
+    """``value`` [``si_unit``] expressed in ``unit`` (presenters' display units).
+
+    >>> round(convert_from_si(10.0, "rad/s", "rpm"), 3), convert_from_si(0.5, "m", "mm")
+    (95.493, 500.0)
+    """
+    _, f_si, dims_si, _, _ = _unit_info(si_unit)
+    _, f_unit, dims_unit, _, _ = _unit_info(unit)
+    if dims_si != dims_unit:
+        raise InputError(f"cannot show a value in {si_unit} as {unit}", field="unit")
+    return float(value) * f_si / f_unit
 
 
 def is_dimensional(unit: str) -> bool:
@@ -265,7 +362,7 @@ def parse_quantity(text: Any, unit: str, *, field: str = "value", require_unit: 
     magnitude = float(number)
     if not math.isfinite(magnitude):
         raise InputError(f"{field}: {number} is too large (|value| < 1.8e308), got {text!r}")
-    given = (match.group("unit") or "").strip()
+    given = normalise_unit((match.group("unit") or "").strip(), field=field, text=text)
     try:
         _, target_factor, target_dims, target_rad, target_hz = _unit_info(unit)
     except Exception as exc:  # noqa: BLE001 - a bad target is a programming error, still no traceback
@@ -390,8 +487,9 @@ def chain_speed_to_angular_velocity(chain_speed: float, pitch: float, teeth: int
         raise InputError(f"pitch must be positive and finite (0 < pitch < inf m), got {pitch!r}")
     if isinstance(teeth, bool) or not isinstance(teeth, (int,)) and not float(teeth).is_integer() or teeth < 2:
         raise InputError(f"teeth must be a whole number >= 2, got {teeth!r}")
-    sides = (2 if link_chain else 1) * int(teeth)
-    return 2 * math.pi * float(chain_speed) / (sides * float(pitch))
+    from .loads import sides_per_turn
+
+    return 2 * math.pi * float(chain_speed) / (sides_per_turn(int(teeth), link_chain) * float(pitch))
 
 
 def parse_wheel_speed(text: Any, *, pitch: float, teeth: int, link_chain: bool = False,
@@ -458,7 +556,9 @@ def parse_wheel_speed(text: Any, *, pitch: float, teeth: int, link_chain: bool =
     valid = isinstance(teeth, int) and 2 <= teeth <= MAX_TEETH and math.isfinite(pitch) and pitch > 0
     if not warn_implausible(field, w, "angular_velocity", stacklevel=3) and w > 0 and valid:
         # a plausible wheel speed may still drive the chain faster than any chain runs
-        sides = (2 if link_chain else 1) * int(teeth)
-        warn_implausible(f"{field} (chain speed n p omega / 2 pi)", sides * float(pitch) * w / (2 * math.pi),
+        from .loads import mean_chain_speed, sides_per_turn
+
+        warn_implausible(f"{field} (chain speed n p omega / 2 pi)",
+                         mean_chain_speed(sides_per_turn(int(teeth), link_chain), float(pitch), w),
                          "chain_speed", stacklevel=3)
     return w

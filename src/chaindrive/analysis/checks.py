@@ -38,6 +38,9 @@ class Check(Result):
     note : str
         Detail for the reader.
     relation : {">=", "<=", "within", "info"}
+    part : str
+        The analysis part that made the check (set by :func:`~chaindrive.analysis.analyze_drive`
+        from the part's declaration, :mod:`chaindrive.analysis.parts`).
 
     Examples
     --------
@@ -54,6 +57,7 @@ class Check(Result):
     source: str
     note: str = ""
     relation: Literal[">=", "<=", "within", "info"] = ">="
+    part: str = ""
 
     @property
     def verdict(self) -> str:

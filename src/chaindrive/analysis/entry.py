@@ -9,6 +9,7 @@ from ..drive.model import Drive
 from ..kinematics import EntryKinematics, chain_entry
 from ._wheels import wheel_teeth
 from .checks import Check
+from .parts import Part, PartContext, register_part
 
 __all__ = ["EntryCase", "EntryAnalysis", "DriveEntry", "entry_cases", "drive_entry"]
 
@@ -117,3 +118,13 @@ def entry_checks(entry: DriveEntry) -> tuple[Check, ...]:
     return tuple(Check(f"speed non-uniformity, {c.label}", float(c.result.summary["nonuniformity"]), None, "-",
                        None, "Dolipiński et al.; exact rigid-link model", relation="info")
                  for c in entry.cases)
+
+
+# --------------------------------------------------------------------------- declared parts
+def _entry_part(ctx: PartContext) -> DriveEntry:
+    return drive_entry(ctx.drive, points=ctx.options.get("entry_points", 361))
+
+
+register_part(Part("entry", "Entry kinematics of the driving and the guided wheels", _entry_part,
+                   checks=lambda ctx, entry: entry_checks(entry), order=40,
+                   section="chaindrive.workflows.sections:entry_section"))

@@ -7,6 +7,7 @@ from typing import TYPE_CHECKING, Any
 
 from .._results import Result, quantity
 from ..drive.model import Drive, Wheel
+from .parts import Part, register_part
 
 if TYPE_CHECKING:
     from ..geometry.pocket_wheel import PocketWheel, PocketWheelDimensions
@@ -58,7 +59,8 @@ def wheel_geometry(drive: Drive, wheel: Wheel) -> WheelGeometry | None:
             return None
         link = drive.track.link if drive.track is not None else "built-up"
         return WheelGeometry(wheel.name, "track drive wheel", wheel.teeth, "Sharipov, p. 34",
-                             TrackDriveWheel(pitch=c.pitch, teeth=wheel.teeth, pin_radius=r, link=link, name=wheel.name))
+                             TrackDriveWheel(pitch=c.pitch, teeth=wheel.teeth, pin_radius=r, link=link, name=wheel.name,
+                                             elongation_limit=drive.elongation_limit))
     if wheel.teeth < ISO_MINIMUM_TEETH:
         return None
     return WheelGeometry(wheel.name, "sprocket", wheel.teeth, "ISO 606:2015 clause 5",
@@ -69,3 +71,9 @@ def drive_geometry(drive: Drive) -> tuple[WheelGeometry, ...]:
     """:func:`wheel_geometry` of every toothed wheel that has a form."""
     out = (wheel_geometry(drive, w) for w in drive.wheels)
     return tuple(g for g in out if g is not None)
+
+
+# --------------------------------------------------------------------------- declared parts
+register_part(Part("geometry", "Wheel geometry", lambda ctx: drive_geometry(ctx.drive), order=60,
+                   section="chaindrive.workflows.sections:geometry_section",
+                   json=lambda wheels: {g.wheel: g.to_dict() for g in wheels}))

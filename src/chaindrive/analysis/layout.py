@@ -13,6 +13,8 @@ from .._results import Result, quantity
 from ..drive.model import Drive
 from ..errors import InfeasibleError, ValidityRangeWarning
 from ._wheels import wheel_teeth
+from .checks import Check
+from .parts import Part, PartContext, register_part
 
 __all__ = ["DriveLayout", "drive_layout", "span_inclination", "slack_span_sag"]
 
@@ -66,10 +68,10 @@ class DriveLayout(Result):
     wheel_names: tuple[str, ...]
     pitch_radii: np.ndarray = quantity("m")
     teeth_in_mesh: tuple[int | None, ...] = quantity("1")
-    chain_length_circles: float = quantity("m")
+    chain_length_circles: float = quantity("m", display="m")
     links_required: float = quantity("1")
     links: int = quantity("1")
-    chain_length: float = quantity("m")
+    chain_length: float = quantity("m", display="m")
     chain_mass: float | None = quantity("kg")
     polygon: L.PolygonLength | None
     centre_distance: float | None = quantity("m")
@@ -199,3 +201,21 @@ def slack_span_sag(drive: Drive, layout: DriveLayout, tension: float) -> float:
     j = layout.slack_span
     return float(L.catenary_sag(layout.wrap.span_length[j], span_inclination(layout.wrap.span_angle[j]),
                                 tension, drive.mass_per_length))
+
+
+# --------------------------------------------------------------------------- declared parts
+def _layout_part(ctx: PartContext) -> DriveLayout:
+    lay = drive_layout(ctx.drive)
+    if lay.take_up is None:
+        ctx.note(f"take-up: {lay.take_up_kind}")
+    return lay
+
+
+def _layout_checks(ctx: PartContext, lay: DriveLayout) -> list[Check]:
+    from .loads import wrap_check
+
+    return [wrap_check(ctx.drive, lay)]
+
+
+register_part(Part("layout", "Layout: chain length, spans, wraps, take-up", _layout_part, checks=_layout_checks,
+                   order=10, section="chaindrive.workflows.sections:layout_section"))

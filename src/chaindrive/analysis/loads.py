@@ -10,17 +10,33 @@ import numpy as np
 from .. import layout as L
 from .. import loads as F
 from .._results import Result, quantity
+from ..chains import Chain
 from ..drive.model import Drive
-from ..errors import InputError
+from ..errors import ChainDriveError, InputError
 from ._wheels import wheel_teeth
 from .checks import Check
-from .layout import DriveLayout, drive_layout, span_inclination
+from .layout import DriveLayout, drive_layout, slack_span_sag, span_inclination
+from .parts import Part, PartContext, register_part
 
 __all__ = ["DriveLoads", "drive_loads", "free_entry_acceleration", "static_safety_check", "wrap_check",
-           "MINIMUM_WRAP"]
+           "MINIMUM_WRAP", "REQUIRED_STATIC_SAFETY", "required_static_safety"]
 
 #: Smallest wrap on the driving wheel [rad] (ISO 10823:2004 guidance: 120°).
 MINIMUM_WRAP = math.radians(120.0)
+#: The one table of required static safeties (:data:`chaindrive.loads.REQUIRED_STATIC_SAFETY`).
+REQUIRED_STATIC_SAFETY = F.REQUIRED_STATIC_SAFETY
+
+
+def required_static_safety(chain: Chain) -> float:
+    """The required static safety of :data:`REQUIRED_STATIC_SAFETY` for a chain (link or roller).
+
+    >>> from chaindrive.chains import get
+    >>> required_static_safety(get("18x64")), required_static_safety(get("16B-1"))
+    (3.5, 7.0)
+    """
+    return REQUIRED_STATIC_SAFETY["link" if chain.is_link_chain else "roller"]
+
+
 #: A slack span steeper than this hangs in its own weight (no sag to speak of) [rad].
 NEAR_VERTICAL = math.radians(80.0)
 
@@ -217,8 +233,8 @@ def static_safety_check(drive: Drive, loads: DriveLoads) -> Check:
     fb = drive.chain.breaking_force
     sf = None if fb is None else float(fb) / loads.maximum
     return Check(
-        name="static safety F_B / F_max", value=sf, limit=float(drive.required_static_safety), unit="-",
-        passed=None if sf is None else bool(sf >= drive.required_static_safety),
+        name="static safety F_B / F_max", value=sf, limit=drive.static_safety_required, unit="-",
+        passed=None if sf is None else bool(sf >= drive.static_safety_required),
         source="catalogue breaking force (ISO 606:2015 table 1 / ASME B29.1 / DIN 22252); "
                "F_max = K_s T/R + S_slack + q v² + m a_max",
         note="" if fb is not None else "breaking force unknown")
@@ -229,3 +245,33 @@ def wrap_check(drive: Drive, layout: DriveLayout) -> Check:
     wrap = float(layout.wrap.wrap_angle[drive.driving_index])
     return Check(name="wrap on the driving wheel", value=wrap, limit=MINIMUM_WRAP, unit="rad",
                  passed=bool(wrap >= MINIMUM_WRAP - 1e-12), source="ISO 10823:2004 guidance (at least 120°)")
+
+
+# --------------------------------------------------------------------------- declared parts
+def _loads_part(ctx: PartContext) -> DriveLoads:
+    entry = ctx["entry"]
+    return drive_loads(ctx.drive, ctx["layout"], acceleration_peak=entry.acceleration_peak,
+                       acceleration_source=f"chaindrive.kinematics.chain_entry ({entry.driving.case.entry} entry)")
+
+
+def _slack_sag_part(ctx: PartContext) -> float | None:
+    try:
+        return slack_span_sag(ctx.drive, ctx["layout"], ctx["loads"].slack)
+    except ChainDriveError as exc:
+        ctx.note(f"sag not computed: {exc}")
+        return None
+
+
+def _slack_sag_checks(ctx: PartContext, sag: float) -> list[Check]:
+    lay = ctx["layout"]
+    span = float(lay.wrap.span_length[lay.slack_span])
+    return [Check("sag of the slack span", float(sag), None, "m", None, "catenary, docs/drive.md",
+                  f"{sag / span * 100:.2f} % of the span at the slack tension", relation="info")]
+
+
+register_part(Part("loads", "Loads and safety", _loads_part, needs=("layout", "entry"),
+                   checks=lambda ctx, loads: [static_safety_check(ctx.drive, loads)], order=20,
+                   section="chaindrive.workflows.sections:loads_section"))
+register_part(Part("slack_sag", "Sag of the slack span", _slack_sag_part, needs=("layout", "loads"),
+                   checks=_slack_sag_checks, order=21, unit="m",
+                   section="chaindrive.workflows.sections:layout_section"))

@@ -8,6 +8,7 @@ from .._results import Result
 from ..drive.model import Drive
 from ..selection import ChainRating, chain_rating
 from .checks import Check
+from .parts import Part, PartContext, register_part
 
 __all__ = ["DriveRating", "drive_rating", "rating_checks"]
 
@@ -68,3 +69,15 @@ def rating_checks(drive: Drive, rating: DriveRating) -> tuple[Check, ...]:
               passed=not r.galling_exceeded, relation="<=", source="ACA galling limit; Shigley §17-5",
               note=f"lubrication {r.lubrication}: {r.lubrication_method}"),
     )
+
+
+# --------------------------------------------------------------------------- declared parts
+def _rating_part(ctx: PartContext) -> DriveRating | None:
+    rating = drive_rating(ctx.drive)
+    for text in () if rating is None else rating.rating.warnings:
+        ctx.note(text)
+    return rating
+
+
+register_part(Part("rating", "Power rating", _rating_part, checks=lambda ctx, r: rating_checks(ctx.drive, r),
+                   order=30, section="chaindrive.workflows.sections:loads_section"))

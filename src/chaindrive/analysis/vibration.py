@@ -18,15 +18,21 @@ from ..vibration import (
     TensionerSpan,
     excitation_frequencies,
     moving_string_frequencies,
-    propose_safe_tensioner,
     resonance_check,
     span_vibration,
+)
+from ..vibration.excitation import (
+    AMPLIFICATION_LIMIT,
+    DAMPING_RATIO,
+    ExcitationResponse,
+    span_excitations,
 )
 from .checks import Check
 from .layout import DriveLayout, span_inclination
 from .loads import DriveLoads
+from .parts import Part, PartContext, register_part
 
-__all__ = ["COUPLING_LIMIT_ANGLE", "FreeSpans", "DriveVibration", "tensioner_span", "drive_vibration"]
+__all__ = ["COUPLING_LIMIT_ANGLE", "CAMPBELL_RANGE", "PROPOSAL_RANGE", "excitation_kwargs", "FreeSpans", "DriveVibration", "tensioner_span", "drive_vibration"]
 
 #: Largest inclination of a span part to the normal of the tensioner's axis for which the
 #: tensioner paper's coupling is used [rad]. Beyond it the tensioner moves almost along the
@@ -73,6 +79,9 @@ class DriveVibration(Result):
 
     Exactly one of ``tensioner`` (the slack span with its tensioner, the tensioner
     paper's check) and ``free_spans`` (spans as free strings, information) is set.
+    ``severity``: every excitation of the slack span with its amplitude and forced
+    response (with a tensioner). The nearest design that passes when the check fails is
+    the part ``remedy`` (:mod:`chaindrive.analysis.vibration_remedy`).
     """
 
     excitations: dict[str, float] = quantity("rad/s", display="rad/s")
@@ -81,10 +90,13 @@ class DriveVibration(Result):
     proposal: SafeTensioner | None
     free_spans: FreeSpans | None
     notes: tuple[str, ...]
+    severity: tuple[ExcitationResponse, ...] = ()
 
     @property
     def passed(self) -> bool | None:
-        return None if self.tensioner is None else self.tensioner.passed
+        if self.tensioner is None:
+            return None
+        return bool(self.tensioner.passed) and all(s.passed is not False for s in self.severity)
 
 
 def tensioner_span(drive: Drive, layout: DriveLayout, loads: DriveLoads) -> TensionerSpan | None:
@@ -125,9 +137,32 @@ class _Excitation(TypedDict):
     link_chain: bool
 
 
-def _excitation_kwargs(drive: Drive) -> _Excitation:
+def excitation_kwargs(drive: Drive) -> _Excitation:
+    """The excitation arguments of a drive: speed ratio, driving teeth, link chain or not.
+
+    >>> from chaindrive.drive.project import parse_project, template
+    >>> excitation_kwargs(parse_project(template("roller")))["teeth"]
+    19
+    """
     return _Excitation(ratio=drive.speed_ratio(), teeth=drive.driving_wheel.teeth,
                        link_chain=bool(drive.chain.is_link_chain))
+
+
+#: Old private name of :func:`excitation_kwargs`.
+_excitation_kwargs = excitation_kwargs
+
+
+def _severity(drive: Drive, layout: DriveLayout, span: TensionerSpan) -> tuple[ExcitationResponse, ...]:
+    """Every excitation of the slack span with its amplitude and forced response."""
+    i = drive.driving_index
+    driven = [(j, w) for j, w in enumerate(drive.wheels) if w.teeth is not None and w.kind != "idler" and not w.driving]
+    j, wd = max(driven, key=lambda jw: jw[1].teeth or 0) if driven else (i, drive.driving_wheel)
+    radii = layout.pitch_radii
+    return span_excitations(span, float(drive.speed), ratio=drive.speed_ratio(),
+                            teeth_driving=int(drive.driving_wheel.teeth or 0), teeth_driven=int(wd.teeth or 0),
+                            radius_driving=float(radii[i]), radius_driven=float(radii[j]), pitch=drive.pitch,
+                            bar_diameter=drive.chain.bar_diameter if drive.chain.is_link_chain else None,
+                            damping_ratio=DAMPING_RATIO)
 
 
 def drive_vibration(drive: Drive, layout: DriveLayout, loads: DriveLoads) -> DriveVibration:
@@ -136,9 +171,13 @@ def drive_vibration(drive: Drive, layout: DriveLayout, loads: DriveLoads) -> Dri
     With a tensioner whose span parts lie within :data:`COUPLING_LIMIT_ANGLE` of the
     normal to its axis: natural frequencies of the re-derived frequency equation
     (tensioner paper eqs (1)–(12), docs/vibration.md), the check
-    :math:`0.7 \le P_i/\omega_j \le 1.4` forbidden against the excitations of the driving
-    and driven wheels and the link meshing, the Campbell data over 0.5…1.5 of the speed, and
-    when it fails the nearest resonance-free tensioner over ±10 % of the speed.
+    :math:`0.7 \le P_i/\omega_j \le 1.4` forbidden against the paper's three excitations
+    (driving wheel, driven wheel, unequal link lengths), the forced response to every
+    excitation with its published amplitude (``severity``; the polygon, which the paper
+    does not name, passes when amplified at most
+    :data:`~chaindrive.vibration.excitation.AMPLIFICATION_LIMIT` times), the Campbell data
+    over 0.5…1.5 of the speed (the nearest design that passes is the separate part
+    ``remedy``, :func:`~chaindrive.analysis.vibration_remedy.search_remedy`).
 
     Otherwise the tight and the slack span are axially moving strings (Wickert & Mote 1990)
     with the running tension: the tight tension (which holds ``q v²``) and the slack
@@ -148,7 +187,7 @@ def drive_vibration(drive: Drive, layout: DriveLayout, loads: DriveLoads) -> Dri
     drive).
     """
     omega = float(drive.speed)
-    kw = _excitation_kwargs(drive)
+    kw = excitation_kwargs(drive)
     exc = excitation_frequencies(omega, **kw)
     notes: list[str] = []
     span = tensioner_span(drive, layout, loads)
@@ -161,14 +200,7 @@ def drive_vibration(drive: Drive, layout: DriveLayout, loads: DriveLoads) -> Dri
     if span is not None:
         res = span_vibration(span, omega, modes=MODES,
                              speed_range=(CAMPBELL_RANGE[0] * omega, CAMPBELL_RANGE[1] * omega), **kw)
-        proposal = None
-        if res.check is not None and not res.check.passed and span.mass > 0 and span.stiffness > 0:
-            try:
-                proposal = propose_safe_tensioner(span, (PROPOSAL_RANGE[0] * omega, PROPOSAL_RANGE[1] * omega),
-                                                  modes=MODES, points=121, **kw)
-            except ChainDriveError as exc_:
-                notes.append(f"no resonance-free tensioner found near the design: {exc_}")
-        return DriveVibration(exc, span, res, proposal, None, tuple(notes))
+        return DriveVibration(exc, span, res, None, None, tuple(notes), _severity(drive, layout, span))
     q = drive.mass_per_length
     v = loads.chain_speed
     names: list[str] = []
@@ -198,16 +230,40 @@ def drive_vibration(drive: Drive, layout: DriveLayout, loads: DriveLoads) -> Dri
 
 
 def vibration_checks(vib: DriveVibration) -> tuple[Check, ...]:
-    """The resonance verdict (with a tensioner) or the count of free-span pairs in the band."""
+    """The resonance verdict and the polygon's response (with a tensioner), or the free-span count."""
     if vib.tensioner is not None and vib.tensioner.check is not None:
         rows = vib.tensioner.check.rows()
         worst = min(rows, key=lambda r: r["margin"])
-        return (Check("resonance margin of the slack span with tensioner, worst pair", worst["margin"], 0.0, "-",
-                      bool(vib.tensioner.check.passed),
-                      "tensioner paper, check 0.7 ≤ P/ω ≤ 1.4 forbidden; margin = max(r/1.4 − 1, 1 − r/0.7)",
-                      f"mode {worst['mode']} vs {worst['excitation']}: P/ω = {worst['ratio']:.3f}"),)
+        out = [Check("resonance margin of the slack span with tensioner, worst pair", worst["margin"], 0.0, "-",
+                     bool(vib.tensioner.check.passed),
+                     "tensioner paper, check 0.7 ≤ P/ω ≤ 1.4 forbidden for its three excitations; "
+                     "margin = max(r/1.4 − 1, 1 − r/0.7)",
+                     f"mode {worst['mode']} vs {worst['excitation']}: P/ω = {worst['ratio']:.3f}")]
+        for s in vib.severity:
+            if s.criterion == "response":
+                out.append(Check(f"amplification of the slack span's response to the {s.name} excitation",
+                                 s.amplification, AMPLIFICATION_LIMIT, "-", s.passed,
+                                 "forced response of the string model with structural damping ζ = "
+                                 f"{DAMPING_RATIO:g} (docs/vibration.md §6a); limit: one undamped mode at the "
+                                 "paper's band edge, 1/(1 − 1/1.4²)",
+                                 f"{s.frequency:.4g} rad/s, span-end amplitude {s.end_amplitude * 1e3:.3g} mm → "
+                                 f"{s.response * 1e3:.3g} mm", relation="<="))
+        return tuple(out)
     if vib.free_spans is not None:
         return (Check("free-span pairs inside the band 0.7 ≤ P/ω ≤ 1.4", float(len(vib.free_spans.pairs_in_band)),
                       None, "pairs", None, "tensioner paper criterion applied to free spans (information)",
                       relation="info"),)
     return ()
+
+
+# --------------------------------------------------------------------------- declared parts
+def _vibration_part(ctx: PartContext) -> DriveVibration:
+    vib = drive_vibration(ctx.drive, ctx["layout"], ctx["loads"])
+    for text in vib.notes:
+        ctx.note(text)
+    return vib
+
+
+register_part(Part("vibration", "Span vibration and the resonance check", _vibration_part, needs=("layout", "loads"),
+                   checks=lambda ctx, vib: vibration_checks(vib), order=50,
+                   section="chaindrive.workflows.sections:vibration_section"))

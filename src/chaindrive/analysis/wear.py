@@ -5,8 +5,10 @@ from __future__ import annotations
 from .. import wear as W
 from ..drive.model import Drive
 from ..errors import InputError
+from .checks import Check
 from .layout import DriveLayout
 from .loads import DriveLoads
+from .parts import Part, PartContext, register_part
 from .rating import DriveRating
 
 __all__ = ["drive_wear"]
@@ -45,3 +47,21 @@ def drive_wear(drive: Drive, layout: DriveLayout, loads: DriveLoads, rating: Dri
     return W.wear_life("archard", tension=loads.tight, bearing_area=area, joint_radius=radius, teeth=zmin,
                        chain_speed=loads.chain_speed, links=layout.links, pitch=drive.pitch,
                        wear_coefficient=drive.wear_coefficient, elongation_limit=drive.elongation_limit, wheels=nw)
+
+
+# --------------------------------------------------------------------------- declared parts
+def _wear_part(ctx: PartContext) -> W.WearLife | None:
+    life = drive_wear(ctx.drive, ctx["layout"], ctx["loads"], ctx["rating"])
+    if life is None:
+        ctx.note("wear life: no wear model applies (a link chain needs wear_coefficient in [drive])")
+    return life
+
+
+def _wear_checks(ctx: PartContext, life: W.WearLife) -> list[Check]:
+    return [Check("hours to the elongation limit", float(life.hours_to_limit), None, "h", None,
+                  "ANSI/ACA 15 000 h basis" if life.model == "rating" else "Archard wear of the joints",
+                  relation="info")]
+
+
+register_part(Part("wear", "Wear life", _wear_part, needs=("layout", "loads", "rating"), checks=_wear_checks,
+                   order=90, section="chaindrive.workflows.sections:wear_section"))

@@ -16,6 +16,8 @@ import sys
 from ..errors import ChainDriveError
 from .app import app
 
+__all__ = ["main", "TOPICS"]
+
 #: Topic modules that add subcommands; a missing optional one is skipped.
 TOPICS = (
     "demo",

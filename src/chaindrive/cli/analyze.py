@@ -58,6 +58,8 @@ def _run_claimed(project: Path, output: Path, pdf: bool, figures: bool, quiet: b
         out.print(f"  warning: {w}", markup=False)
     out.print(f"report: {outcome.files['html']}")
     out.print(f"results: {outcome.files['json']}")
+    if "proposal" in outcome.files:
+        out.print(f"proposal (a design that passes the resonance check): {outcome.files['proposal']}")
     if "pdf" in outcome.files:
         out.print(f"pdf: {outcome.files['pdf']}")
     return outcome.exit_code

@@ -39,9 +39,28 @@ app = typer.Typer(
 _PLAUSIBLE_KIND = {"rad/s": "angular_velocity", "W": "power", "N": "force"}
 
 
+def _print_version(value: bool) -> None:
+    if value:
+        from .. import __version__
+
+        print(f"chaindrive {__version__}")
+        raise typer.Exit()
+
+
 @app.callback()
-def _root() -> None:
+def _root(version: bool = typer.Option(False, "--version", callback=_print_version, is_eager=True,
+                                       help="Print the chaindrive version and exit.")) -> None:
     """chaindrive: design and analysis of chain drives."""
+
+
+#: One rule for every output file a command writes (--plot, --svg, --dxf, --step,
+#: --campbell, --map, --write, FILE): an existing file is refused unless --force is given.
+FORCE_OPTION_HELP = "Replace output files that exist (without it an existing file is refused before any work)."
+
+
+def force_option() -> Any:
+    """The ``--force`` option of a command that writes files."""
+    return typer.Option(False, "--force", help=FORCE_OPTION_HELP)
 
 
 #: Internal parameter names a command's errors may carry, by command, and the option the

@@ -73,10 +73,10 @@ def chains_command(
     title = "Chain catalogue" + (f" ({family})" if family else f" ({', '.join(FAMILIES)})")
     table = Table(title=title)
     table.add_column("name", no_wrap=True)
-    table.add_column("family")
+    table.add_column("family", overflow="fold")
     table.add_column("strands", justify="right")
     for header, *_ in _COLUMNS:
-        table.add_column(escape(header), justify="right")
+        table.add_column(escape(header), justify="right", overflow="fold")
     for chain in rows:
         table.add_row(
             escape(chain.name),
@@ -111,8 +111,8 @@ def chain_command(
     from rich.table import Table
 
     table = Table(title=f"{chain.name} ({chain.family})", show_header=True)
-    table.add_column("quantity")
-    table.add_column("value", justify="right")
+    table.add_column("quantity", overflow="fold")
+    table.add_column("value", justify="right", overflow="fold")
     table.add_row("strands", str(chain.strands))
     table.add_row("type", "round link chain" if chain.is_link_chain else "roller chain")
     for header, attr, factor, fmt in _COLUMNS:

@@ -91,9 +91,10 @@ def _write_outline(outline, title: str, dxf: Path | None, svg: Path | None, forc
         atomic_write_text(svg, svg_text(outline, title), force=force, option="--svg")
 
 
-def _write(wheel, dxf: Path | None, svg: Path | None, form=None) -> list[str]:
+def _write(wheel, dxf: Path | None, svg: Path | None, form=None, force: bool = False) -> list[str]:
     if dxf is not None or svg is not None:
-        _write_outline(wheel.outline() if form is None else wheel.outline(form), wheel.label(), dxf, svg)
+        _write_outline(wheel.outline() if form is None else wheel.outline(form), wheel.label(), dxf, svg,
+                       force=force)
     return [f"wrote {p}" for p in (dxf, svg) if p is not None]
 
 
@@ -289,8 +290,10 @@ def track_wheel_command(
     link: str = typer.Option("built-up", "--link", help="Track links: built-up (tip radius R_tip = R_0 + (0.2...0.5) r_pin) or cast (R_tip = R_0 + (0.8...1.2) r_pin), Sharipov p. 34."),
     root_factor: float | None = typer.Option(None, "--root-factor", help="r_seat / r_pin, dimensionless, in [1.1, 1.3] (Sharipov p. 34: root radius R_root = R_0 - r_seat); default 1.2."),
     tip_factor: float | None = typer.Option(None, "--tip-factor", help="(R_tip - R_0) / r_pin, dimensionless, inside Sharipov's range for --link; default its middle."),
+    elongation_limit: float | None = typer.Option(None, "--elongation-limit", help="Largest allowed wear elongation of the track pitch, dimensionless fraction in (0, 0.1] (0.03 = 3 %); adds the smallest tip radius that holds the worn chain, R_tip,min = t (1 + elongation) / (2 sin(pi/z)) (Sharipov p. 34: the tip radius follows from the largest pitch of the worn chain)."),
     dxf: Path | None = _TRACK_DXF,
     svg: Path | None = _TRACK_SVG,
+    force: bool = _FORCE,
     as_json: bool = typer.Option(False, "--json", help="Print every computed dimension and allowed range as JSON in SI units (m)."),
 ) -> None:
     """Drive wheel of a tracked vehicle engaging lantern pins (Sharipov p. 34):
@@ -298,12 +301,12 @@ def track_wheel_command(
     R_tip = R_0 + (0.2...0.5) r_pin (built-up links) or R_0 + (0.8...1.2) r_pin (cast links)."""
     from ..geometry.track_wheel import TrackDriveWheel
 
-    _check_paths(dxf, svg)
+    _check_paths(dxf, svg, force=force)
     w = TrackDriveWheel(pitch=quantity(pitch, "m", "pitch"), teeth=teeth,
                         pin_radius=quantity(pin_radius, "m", "pin_radius"), link=link,
-                        root_factor=root_factor, tip_factor=tip_factor)
+                        root_factor=root_factor, tip_factor=tip_factor, elongation_limit=elongation_limit)
     w.outline()
-    _write(w, dxf, svg)
+    _write(w, dxf, svg, force=force)
     d = w.dimensions()
     if as_json:
         echo_json(w.to_dict())
@@ -319,6 +322,10 @@ def track_wheel_command(
         ("flank radius", _mm(d.flank_radius), "t - r_seat about the next pin (drawing)"),
         ("tooth pointed below R_tip", "yes" if d.tooth_pointed else "no", ""),
     ]
+    if d.worn_tip_radius is not None and d.worn_tip_factor is not None:
+        holds = "holds" if d.tip_radius >= d.worn_tip_radius else "TOO LOW: the worn chain jumps the teeth"
+        rows.append(("smallest tip radius, worn chain", _mm(d.worn_tip_radius) + f" (k = {d.worn_tip_factor:.3g}; {holds})",
+                     "Sharipov p. 34: R_tip >= t (1 + elongation) / (2 sin(pi/z))"))
     _table(w.label(), rows)
     for line in _write_msgs(dxf, svg):
         print(line)

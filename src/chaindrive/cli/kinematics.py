@@ -7,14 +7,23 @@ free, chordal and tangential entry like Dolipiński et al.'s Figs 2 and 3.
 
 from __future__ import annotations
 
-import math
 from pathlib import Path
 
 import typer
 
 from ..errors import InputError
 from ..limits import MAX_POINTS, MAX_TEETH
-from .app import app, echo_json, motion_rows, print_rows, quantity, unit_help, wheel_speed
+from ..units import angular_velocity_to_rpm
+from .app import (
+    app,
+    echo_json,
+    force_option,
+    motion_rows,
+    print_rows,
+    quantity,
+    unit_help,
+    wheel_speed,
+)
 
 _PLOT = typer.Option(
     None, "--plot",
@@ -31,13 +40,14 @@ def kinematics_command(
     entry: str = typer.Option("free", "--entry", help="Entry type: free (no guide, Dolipiński et al. eqs 1-13), chordal (H = R cos(delta1/2), eqs 14-25), tangential (H = R, eqs 26-43)."),
     guide_end: str | None = typer.Option(None, "--guide-end", "-l", help=unit_help("Distance l of the guide end from the wheel axis along the guide line (Dolipiński et al. eqs 14-43); needed for guided entry.", "m", "256 mm")),
     guide_height: str | None = typer.Option(None, "--guide-height", help=unit_help("Custom guide height H >= 0 above the wheel axis; replaces --entry chordal/tangential.", "m", "160 mm")),
-    model: str = typer.Option("exact", "--model", help="exact: rigid links with a taut span to the guide end (general solver); paper: Dolipiński et al.'s rod mechanism, eqs 14-43 corrected."),
+    model: str = typer.Option("exact", "--model", help="exact: rigid links with a taut span to the guide end (general solver); paper: Dolipiński et al.'s rod mechanism, one for both guides (the rod shortens by a link when the next hinge seats; eqs 14-43 corrected); as_printed: the same, but the chordal rod switched at pi/z as printed (a reset: the speed jumps)."),
     points: int = typer.Option(361, "--points", "-n", help=f"Number of samples over one period 0 <= phi <= 2 pi/z, 2...{MAX_POINTS} (dimensionless count)."),
     pitch: str | None = typer.Option(None, "--pitch", help=unit_help("Chain pitch t (link chain) or p (roller chain) when no --chain is given.", "m", "64 mm")),
     bar_diameter: str | None = typer.Option(None, "--bar-diameter", help=unit_help("Bar diameter d of a round link chain (Dolipiński et al. eq. 6) when no --chain is given.", "m", "18 mm")),
     roller: bool = typer.Option(False, "--roller", help="Custom chain is a roller chain (regular polygon R = p / (2 sin(pi/z))) when no --chain is given."),
     as_json: bool = typer.Option(False, "--json", help="Print phi (rad), x (m), velocity (m/s), acceleration (m/s²) and the summary as JSON, SI units."),
     plot: Path | None = _PLOT,
+    force: bool = force_option(),
 ) -> None:
     """Velocity and acceleration of a chain running onto its wheel (polygonal effect).
 
@@ -53,7 +63,7 @@ def kinematics_command(
     if plot is not None:
         from .._io import FIGURE_SUFFIXES, check_output_path
 
-        check_output_path(plot, FIGURE_SUFFIXES, option="--plot")
+        check_output_path(plot, FIGURE_SUFFIXES, option="--plot", force=force)
     t, d = _chain_geometry(chain, pitch, bar_diameter, roller)
     w = wheel_speed(speed, pitch=t, teeth=teeth, link_chain=d is not None)
     l = quantity(guide_end, "m", "guide-end")
@@ -72,7 +82,7 @@ def kinematics_command(
         from ..plotting.kinematics import kinematics_plot
 
         fig = kinematics_plot(res)
-        save_figure(fig, plot, option="--plot", dpi=120)
+        save_figure(fig, plot, option="--plot", dpi=120, force=force)
         import matplotlib.pyplot as plt
 
         plt.close(fig)
@@ -86,7 +96,7 @@ def kinematics_command(
     if r.guide_end_distance is not None:
         what += f", l = {r.guide_end_distance * 1e3:.1f} mm"
     print_rows(f"chain entry kinematics ({r.chain_type} chain, z = {r.teeth}, R = {r.radius * 1e3:.3f} mm, "
-               f"omega = {r.angular_velocity:.6g} rad/s = {r.angular_velocity * 30 / math.pi:.6g} rpm, "
+               f"omega = {r.angular_velocity:.6g} rad/s = {angular_velocity_to_rpm(r.angular_velocity):.6g} rpm, "
                f"model {r.model}): {what}", motion_rows(r.summary))
     if plot is not None:
         print(f"wrote {plot}")

@@ -17,7 +17,8 @@ import typer
 
 from ..errors import InputError
 from ..limits import MAX_MODES
-from .app import app, echo_json, exit_code, print_rows, quantity, unit_help
+from ..units import angular_velocity_to_rpm
+from .app import app, echo_json, exit_code, force_option, print_rows, quantity, unit_help
 
 
 def _angle(text: str, field: str) -> float:
@@ -53,12 +54,13 @@ def vibration_command(
     speed: str | None = typer.Option(None, "--speed", help=unit_help("Driving sprocket speed omega1 > 0 for the resonance check (the tensioner paper, omega1 = omega).", "rpm or rad/s", "300 rpm")),
     ratio: float = typer.Option(1.0, "--ratio", help="Transmission ratio u > 0 (dimensionless): the driven sprocket excites omega2 = omega1/u (the tensioner paper)."),
     teeth: int | None = typer.Option(None, "--teeth", help="Teeth (pockets) z1 >= 3 of the driving wheel (dimensionless count): meshing excitation z1 omega1 (polygonal effect, Dolipiński et al.)."),
-    link_chain: bool = typer.Option(False, "--link-chain", help="Round link chain on a pocket wheel: excitations 2 z1 omega1 (link passing) and z1 omega1 (unequal links t + d, t - d, Dolipiński et al. eq. 6) instead of z1 omega1."),
+    link_chain: bool = typer.Option(False, "--link-chain", help="Round link chain on a pocket wheel: the excitation z1 omega1 of a pair of links (unequal lengths t + d, t - d, Dolipiński et al. eq. 6) instead of the roller chain's z1 omega1/2 (inner/outer links)."),
     model: str = typer.Option("projected", "--model", help="Coupling at the tensioner: projected (w_i = u cos beta_i, derived) or as_printed (w_i = u, the tensioner paper eq. 7 as printed)."),
-    speed_min: str | None = typer.Option(None, "--speed-min", help=unit_help("Lower end of the speed range of --campbell/--map; default 0.8 x --speed (operating range).", "rpm or rad/s", "100 rpm")),
-    speed_max: str | None = typer.Option(None, "--speed-max", help=unit_help("Upper end of the speed range of --campbell/--map; default 1.2 x --speed.", "rpm or rad/s", "400 rpm")),
+    speed_min: str | None = typer.Option(None, "--speed-min", help=unit_help("Lower end of the speed range of --campbell/--map; default 0.5 x --speed (the analysis's Campbell range).", "rpm or rad/s", "100 rpm")),
+    speed_max: str | None = typer.Option(None, "--speed-max", help=unit_help("Upper end of the speed range of --campbell/--map; default 1.5 x --speed (the analysis's Campbell range).", "rpm or rad/s", "400 rpm")),
     as_json: bool = typer.Option(False, "--json", help="Print frequencies_rad_s, frequencies_hz, static_rod_force_n (N) and resonance rows as JSON, SI units."),
-    campbell_file: Path | None = typer.Option(None, "--campbell", help="Write a PNG Campbell diagram (frequencies [Hz] vs speed [rpm], forbidden bands shaded); needs --speed or --speed-max."),
+    campbell_file: Path | None = typer.Option(None, "--campbell", help="Write a PNG Campbell diagram (frequencies against the driving speed, both in rad/s, rpm on a second axis; forbidden bands shaded); needs --speed or --speed-max."),
+    force: bool = force_option(),
     map_file: Path | None = typer.Option(None, "--map", help="Write a PNG resonance map over tensioner mass and stiffness (±1.5 decades) with the safe region and the nearest safe design; needs --speed or --speed-max."),
 ) -> None:
     """Natural frequencies of the slack span with a tensioner and the resonance check.
@@ -77,7 +79,7 @@ def vibration_command(
 
     for _file, _option in ((campbell_file, "--campbell"), (map_file, "--map")):
         if _file is not None:
-            check_output_path(_file, FIGURE_SUFFIXES, option=_option)
+            check_output_path(_file, FIGURE_SUFFIXES, option=_option, force=force)
     s = _positive(quantity(tension, "N", "tension"), "tension", "N")
     q = _positive(quantity(mass_per_length, "kg/m", "mass-per-length"), "mass-per-length", "kg/m")
     l1 = _positive(quantity(span1, "m", "span1"), "span1", "m")
@@ -101,14 +103,16 @@ def vibration_command(
         check = resonance_check(p, excitation_frequencies(w, ratio, teeth, link_chain=link_chain))
 
     if campbell_file is not None or map_file is not None:
+        from ..analysis.vibration import CAMPBELL_RANGE
+
         wmax = quantity(speed_max, "rad/s", "speed-max")
         if wmax is None:
             if w is None:
                 raise InputError("--campbell/--map need a speed range: give --speed or --speed-max (rad/s or rpm)")
-            wmax = 1.2 * w
+            wmax = CAMPBELL_RANGE[1] * w
         wmin = quantity(speed_min, "rad/s", "speed-min")
         if wmin is None:
-            wmin = 0.8 * w if w is not None else 0.5 * wmax
+            wmin = CAMPBELL_RANGE[0] * (w if w is not None else wmax / CAMPBELL_RANGE[1])
         _positive(wmin, "speed-min", "rad/s")
         if not wmax > wmin:
             raise InputError(f"speed-max must exceed speed-min ({wmin:g} rad/s), got {wmax:g} rad/s")
@@ -117,7 +121,7 @@ def vibration_command(
         common: dict[str, Any] = dict(ratio=ratio, teeth=teeth, link_chain=link_chain, modes=modes)
         if campbell_file is not None:
             fig = campbell(span, (wmin, wmax), speeds=300, design_speed=w, **common).plot()
-            save_figure(fig, campbell_file, option="--campbell", dpi=120)
+            save_figure(fig, campbell_file, option="--campbell", dpi=120, force=force)
             plt.close(fig)
         if map_file is not None:
             import numpy as np
@@ -133,7 +137,7 @@ def vibration_command(
             except Exception:  # noqa: BLE001 - nothing safe in the window: map without a proposal
                 pass
             fig = rm.plot()
-            save_figure(fig, map_file, option="--map", dpi=120)
+            save_figure(fig, map_file, option="--map", dpi=120, force=force)
             plt.close(fig)
 
     if as_json:
@@ -153,7 +157,7 @@ def vibration_command(
                    f"q = {q:g} kg/m, l1 = {l1:g} m, l2 = {l2:g} m, beta1 = {math.degrees(b1):g} deg, "
                    f"beta2 = {math.degrees(b2):g} deg, m = {m:g} kg, C = {c:g} N/m", rows)
         if check is not None and w is not None:
-            print(f"resonance check at ω1 = {w:g} rad/s ({w * 30 / math.pi:g} rpm): band 0.7 <= P/ω <= 1.4")
+            print(f"resonance check at ω1 = {w:g} rad/s ({angular_velocity_to_rpm(w):g} rpm): band 0.7 <= P/ω <= 1.4")
             print(f"  {'mode':>4}  {'excitation':<20} {'P [rad/s]':>10} {'omega [rad/s]':>13} "
                   f"{'P/omega [-]':>11} {'margin [-]':>10}  ok")
             for r in check.rows():

@@ -20,10 +20,21 @@ Examples
 
 from typing import Any
 
-from .model import ContactSpec, Drive, Guide, Load, Tensioner, TrackSpec, Wheel
+from .model import (
+    ContactSpec,
+    CrawlerSpec,
+    Drive,
+    FrettingSpec,
+    Guide,
+    Load,
+    RimBoltsSpec,
+    Tensioner,
+    TrackSpec,
+    Wheel,
+)
 
 __all__ = [
-    "Drive", "Wheel", "Tensioner", "Guide", "Load", "ContactSpec", "TrackSpec",
+    "Drive", "Wheel", "Tensioner", "Guide", "Load", "ContactSpec", "TrackSpec", "CrawlerSpec", "FrettingSpec", "RimBoltsSpec",
     "load_project", "Project",
 ]
 

@@ -30,26 +30,24 @@ import numpy as np
 from .. import layout as L
 from .. import loads as F
 from ..errors import InputError
+from ..loads import mean_chain_speed, sides_per_turn
 
 if TYPE_CHECKING:
     from ..chains import Chain
 
-__all__ = ["WHEEL_KINDS", "sides_per_turn", "Wheel", "Tensioner", "Guide", "Load", "ContactSpec", "TrackSpec",
-           "Drive"]
+__all__ = ["WHEEL_KINDS", "TENSIONER_PARTS", "sides_per_turn", "Wheel", "Tensioner", "Guide", "Load", "ContactSpec",
+           "TrackSpec", "RimBoltsSpec", "CrawlerSpec", "FrettingSpec", "Drive"]
 
 WHEEL_KINDS = ("sprocket", "pocket_wheel", "track_wheel", "idler")
 TENSIONER_KINDS = ("spring", "weight", "screw", "hydraulic")
+#: The parts of a tensioner described by its mechanism (:meth:`Tensioner.from_parts`), with their SI units.
+TENSIONER_PARTS: dict[str, dict[str, str]] = {
+    "lever": {"arm_length": "m", "arm_inertia": "kg*m**2", "arm_mass": "kg", "wheel_mass": "kg",
+              "spring_stiffness": "N/m", "spring_lever": "m", "spring_angle": "rad", "torsion_stiffness": "N*m/rad"},
+    "sliding": {"carriage_mass": "kg", "wheel_mass": "kg", "spring_stiffness": "N/m", "spring_mass": "kg",
+                "spring_angle": "rad"},
+}
 GUIDE_KINDS = ("tangential", "chordal", "guided")
-
-
-def sides_per_turn(teeth: int, link_chain: bool) -> int:
-    """Chain links seated per turn of a wheel: ``z`` (roller chain), ``2z`` (round link chain
-    on a pocket wheel: a horizontal and a vertical link per pocket, Dolipiński et al.).
-
-    >>> sides_per_turn(8, True), sides_per_turn(19, False)
-    (16, 19)
-    """
-    return 2 * int(teeth) if link_chain else int(teeth)
 
 
 def _finite(value: Any, what: str, *, positive: bool = False, nonnegative: bool = False) -> float:
@@ -155,6 +153,11 @@ class Tensioner:
         Direction in which the tensioner travels to take up slack (non-zero).
     force : float, optional
         Force of the tensioner on the chain [N]; sets the slack tension.
+    mechanism : {"lever", "sliding"}, optional
+        The tensioner described by its parts (:meth:`from_parts`); ``mass`` and
+        ``stiffness`` are then its reduction to the axis.
+    parts : tuple of (str, float)
+        The parts' values in SI units (:data:`TENSIONER_PARTS`), with ``mechanism``.
     """
 
     wheel: str
@@ -163,6 +166,74 @@ class Tensioner:
     kind: str = "spring"
     direction: tuple[float, float] = (0.0, 1.0)
     force: float | None = None
+    mechanism: str | None = None
+    parts: tuple[tuple[str, float], ...] = ()
+
+    @classmethod
+    def from_parts(cls, wheel: str, mechanism: str, parts: Mapping[str, float], **options: Any) -> Tensioner:
+        """A tensioner described by its parts, reduced to its axis by the energy balance.
+
+        Parameters
+        ----------
+        wheel : str
+            The idler it carries.
+        mechanism : {"lever", "sliding"}
+            Pivoted arm or straight slide.
+        parts : mapping
+            SI values of :data:`TENSIONER_PARTS` ``[mechanism]``; ``lever``: arm_length [m],
+            arm_inertia [kg m²] about the pivot (or arm_mass [kg] of a uniform arm, J = m L²/3),
+            wheel_mass [kg], spring_stiffness [N/m], spring_lever [m], spring_angle [rad],
+            torsion_stiffness [N m/rad]; ``sliding``: carriage_mass [kg], wheel_mass [kg],
+            spring_stiffness [N/m], spring_mass [kg], spring_angle [rad].
+        **options
+            kind, direction, force as for the class.
+
+        Returns
+        -------
+        Tensioner
+            ``mass`` and ``stiffness`` from :func:`chaindrive.vibration.reduced_tensioner`.
+
+        Examples
+        --------
+        >>> t = Tensioner.from_parts("idler", "lever", {"arm_length": 0.25, "arm_inertia": 0.05,
+        ...     "wheel_mass": 2.0, "spring_stiffness": 2e5, "spring_lever": 0.1})
+        >>> round(t.mass, 3), round(t.stiffness, 1)
+        (2.8, 32000.0)
+        """
+        from ..vibration import reduced_tensioner
+
+        if mechanism not in TENSIONER_PARTS:
+            raise InputError(f"tensioner.mechanism must be one of {', '.join(TENSIONER_PARTS)}, got {mechanism!r}",
+                             field="tensioner.mechanism")
+        allowed = TENSIONER_PARTS[mechanism]
+        values = {k: _finite(v, f"tensioner.{k}", nonnegative=True) for k, v in parts.items()}
+        for k in values:
+            if k not in allowed:
+                raise InputError(f"tensioner.{k} is not a part of a {mechanism} tensioner (parts: "
+                                 f"{', '.join(allowed)})", field=f"tensioner.{k}")
+        if mechanism == "lever":
+            if "arm_inertia" in values and "arm_mass" in values:
+                raise InputError("tensioner: give arm_inertia or arm_mass (a uniform arm), not both",
+                                 field="tensioner.arm_mass")
+            for k in ("arm_length", "spring_stiffness", "spring_lever"):
+                if k not in values:
+                    raise InputError(f"tensioner.{k} is required for a lever tensioner", field=f"tensioner.{k}")
+            length = values["arm_length"]
+            inertia = values.get("arm_inertia", values.get("arm_mass", 0.0) * length**2 / 3.0)
+            r = reduced_tensioner("pivot_arm", arm_inertia=inertia, sprocket_mass=values.get("wheel_mass", 0.0),
+                                  arm_length=length, spring_stiffness=values["spring_stiffness"],
+                                  spring_lever=values["spring_lever"], spring_angle=values.get("spring_angle", 0.0),
+                                  torsion_stiffness=values.get("torsion_stiffness", 0.0))
+        else:
+            if "spring_stiffness" not in values:
+                raise InputError("tensioner.spring_stiffness is required for a sliding tensioner",
+                                 field="tensioner.spring_stiffness")
+            r = reduced_tensioner("sliding", carriage_mass=values.get("carriage_mass", 0.0),
+                                  sprocket_mass=values.get("wheel_mass", 0.0),
+                                  spring_stiffness=values["spring_stiffness"],
+                                  spring_mass=values.get("spring_mass", 0.0),
+                                  spring_angle=values.get("spring_angle", 0.0))
+        return cls(wheel, r.mass, r.stiffness, mechanism=mechanism, parts=tuple(sorted(values.items())), **options)
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "mass", _finite(self.mass, "tensioner.mass", nonnegative=True))
@@ -276,6 +347,64 @@ class ContactSpec:
 
 
 @dataclass(frozen=True)
+class RimBoltsSpec:
+    """Bolts fastening a toothed rim to the hub (Sharipov, Fig. 14), ``[track.bolts]``.
+
+    Parameters
+    ----------
+    count : int
+        Bolts per rim ``n``.
+    circle_radius : float
+        Bolt circle radius ``R_b`` [m].
+    diameter : float
+        Fitted shank diameter ``d`` (``joint = "fitted"``) or nominal thread diameter
+        (``joint = "friction"``) [m].
+    joint : {"fitted", "friction"}
+        Fitted bolts in shear, or a friction (slip-resistant) joint.
+    shear_planes : int
+        Shear planes ``m`` of a fitted bolt.
+    plate_thickness : float, optional
+        Thinnest clamped part for the bearing check [m].
+    allowable_shear, allowable_bearing : float, optional
+        [Pa] (fitted joint).
+    friction : float
+        Friction coefficient ``μ`` (friction joint).
+    friction_faces : int
+        Friction interfaces ``q``.
+    slip_safety : float
+        ``S >= 1`` (friction joint).
+    thread_pitch : float, optional
+        Thread pitch [m] for the stress area (friction joint).
+    yield_strength : float, optional
+        ``R_p0.2`` [Pa] (friction joint).
+    """
+
+    count: int
+    circle_radius: float
+    diameter: float
+    joint: str = "fitted"
+    shear_planes: int = 1
+    plate_thickness: float | None = None
+    allowable_shear: float | None = None
+    allowable_bearing: float | None = None
+    friction: float = 0.15
+    friction_faces: int = 1
+    slip_safety: float = 1.25
+    thread_pitch: float | None = None
+    yield_strength: float | None = None
+
+    def __post_init__(self) -> None:
+        if self.joint not in ("fitted", "friction"):
+            raise InputError(f"track.bolts.joint must be 'fitted' or 'friction', got {self.joint!r}",
+                             field="track.bolts.joint")
+        if isinstance(self.count, bool) or int(self.count) != self.count or not 1 <= self.count <= 1000:
+            raise InputError(f"track.bolts.count must be a whole number in [1, 1000], got {self.count!r}",
+                             field="track.bolts.count")
+        _finite(self.circle_radius, "track.bolts.circle_radius", positive=True)
+        _finite(self.diameter, "track.bolts.diameter", positive=True)
+
+
+@dataclass(frozen=True)
 class TrackSpec:
     """Track drive wheel strength inputs (Sharipov, p. 34).
 
@@ -296,6 +425,8 @@ class TrackSpec:
         Surface hardness [HRC].
     allowable_bending, allowable_contact : float, optional
         [Pa].
+    bolts : RimBoltsSpec, optional
+        The rim's bolts (Sharipov, Fig. 14); a mapping of its fields is accepted.
     """
 
     tractor_weight: float
@@ -307,6 +438,89 @@ class TrackSpec:
     hardness: float | None = None
     allowable_bending: float | None = None
     allowable_contact: float | None = None
+    bolts: RimBoltsSpec | None = None
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "bolts", _spec(self.bolts, RimBoltsSpec, "track.bolts"))
+
+
+@dataclass(frozen=True)
+class CrawlerSpec:
+    """The conveyor crawler drive (the crawler drive text), ``[crawler]``.
+
+    The drive's two toothed wheels are the driving and the tensioning sprocket of the drive
+    chain (same tooth count, a whole number of pitches apart); the cams on the drive chain
+    push the hinges of the conveyor's traction chain.
+
+    Parameters
+    ----------
+    stiffness : float
+        Reduced stiffness ``E_П`` of the drive chain as axial rigidity ``EA`` [N].
+    guide : {"tangent", "none"}
+        Guide holding the chain axis tangent to the pitch circles, or none.
+    cam_distance : float, optional
+        Distance ``l`` of the engaged cam's hinge from the tensioning sprocket [m]; or give
+        ``engagement_distance`` (``l1``), ``cam_pitch`` (``t_K``) and ``cam_index`` (``k``):
+        ``l = l1 + k t_K``.
+    cam_face_angle : float
+        Pressure angle ``α`` of the cam's working face [rad] (the pushing-off force
+        ``P tan α`` on the guide); ``0 <= α < π/2``.
+    return_guide : {"none", "tangent"}
+        Guide of the return span (for the elastic-loop check).
+    """
+
+    stiffness: float
+    guide: str = "tangent"
+    cam_distance: float | None = None
+    engagement_distance: float | None = None
+    cam_pitch: float | None = None
+    cam_index: int = 0
+    cam_face_angle: float = 0.0
+    return_guide: str = "none"
+
+    def __post_init__(self) -> None:
+        _finite(self.stiffness, "crawler.stiffness", positive=True)
+        for name in ("guide", "return_guide"):
+            if getattr(self, name) not in ("tangent", "none"):
+                raise InputError(f"crawler.{name} must be 'tangent' or 'none', got {getattr(self, name)!r}",
+                                 field=f"crawler.{name}")
+        if self.cam_distance is None:
+            if self.engagement_distance is None:
+                raise InputError("crawler: give cam_distance (l > 0 m), or engagement_distance (l1 > 0 m) with "
+                                 "cam_pitch and cam_index (l = l1 + k t_K)", field="crawler.cam_distance")
+            l1 = _finite(self.engagement_distance, "crawler.engagement_distance", positive=True)
+            k = self.cam_index
+            if isinstance(k, bool) or int(k) != k or k < 0:
+                raise InputError(f"crawler.cam_index must be a whole number >= 0, got {k!r}", field="crawler.cam_index")
+            tk = 0.0 if k == 0 else _finite(self.cam_pitch, "crawler.cam_pitch", positive=True)
+            object.__setattr__(self, "cam_distance", l1 + int(k) * tk)
+        object.__setattr__(self, "cam_distance", _finite(self.cam_distance, "crawler.cam_distance", positive=True))
+        a = _finite(self.cam_face_angle, "crawler.cam_face_angle", nonnegative=True)
+        if not a < math.pi / 2:
+            raise InputError(f"crawler.cam_face_angle must lie in [0, 90) deg, got {math.degrees(a):g} deg",
+                             field="crawler.cam_face_angle")
+
+
+@dataclass(frozen=True)
+class FrettingSpec:
+    """Fretting of a multi-strand roller chain (Vikulov), ``[fretting]``.
+
+    Parameters
+    ----------
+    roughness : float
+        ``Ra`` of the pin and bushing surfaces [m].
+    latent_coefficient : float
+        ``K1`` of ``τ = K1 Ra exp(−k2 A N f / Ra)`` [s/m].
+    decay_coefficient : float
+        ``k2 = −K2 > 0`` [s/N].
+    frequency : float, optional
+        Load frequency ``f`` [Hz]; default the tooth frequency of the driving wheel.
+    """
+
+    roughness: float
+    latent_coefficient: float
+    decay_coefficient: float
+    frequency: float | None = None
 
 
 def _spec(value: Any, cls: type, what: str) -> Any:
@@ -359,9 +573,13 @@ class Drive:
         Roller–tooth contact with skew (a mapping of its fields is accepted).
     track : TrackSpec, optional
         Track drive wheel strength (a mapping of its fields is accepted).
+    crawler : CrawlerSpec, optional
+        The conveyor crawler drive: cams, guide and drive-chain stiffness.
+    fretting : FrettingSpec, optional
+        Empirical constants of the fretting latent period (multi-strand chains).
     self_regulating : object, optional
         Self-regulating drive inputs
-        (:class:`chaindrive.drive.self_regulating.SelfRegulatingSpec`).
+        (:class:`chaindrive.drive.carrier.SelfRegulatingSpec`).
 
     Examples
     --------
@@ -388,7 +606,7 @@ class Drive:
     links: int | None = None
     slack_tension: float | None = None
     slack_sag_ratio: float = 0.02
-    required_static_safety: float = 7.0
+    required_static_safety: float | None = None
     elongation_limit: float = 0.03
     wear_coefficient: float | None = None
     name: str = "chain drive"
@@ -397,12 +615,16 @@ class Drive:
     contact: ContactSpec | None = None
     track: TrackSpec | None = None
     self_regulating: Any = field(default=None)
+    crawler: CrawlerSpec | None = None
+    fretting: FrettingSpec | None = None
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "wheels", tuple(self.wheels))
         object.__setattr__(self, "guides", tuple(self.guides))
         object.__setattr__(self, "contact", _spec(self.contact, ContactSpec, "contact"))
         object.__setattr__(self, "track", _spec(self.track, TrackSpec, "track"))
+        object.__setattr__(self, "crawler", _spec(self.crawler, CrawlerSpec, "crawler"))
+        object.__setattr__(self, "fretting", _spec(self.fretting, FrettingSpec, "fretting"))
         if self.travel not in ("ccw", "cw"):
             raise InputError(f"travel must be 'ccw' or 'cw', got {self.travel!r}", field="drive.travel")
         if len(self.wheels) < 2:
@@ -438,7 +660,8 @@ class Drive:
         if not 0 < limit <= 0.1:
             raise InputError(f"drive.elongation_limit must lie in (0, 0.1], got {limit:g}",
                              field="drive.elongation_limit")
-        _finite(self.required_static_safety, "drive.required_static_safety", positive=True)
+        if self.required_static_safety is not None:
+            _finite(self.required_static_safety, "drive.required_static_safety", positive=True)
         if self.wear_coefficient is not None:
             _finite(self.wear_coefficient, "drive.wear_coefficient", positive=True)
 
@@ -497,6 +720,16 @@ class Drive:
                              "[chain] table of the project", field="chain.mass_per_length")
         return float(q)
 
+    @property
+    def static_safety_required(self) -> float:
+        """Required ``F_B / F_max``: the drive's ``required_static_safety``, or the one table's
+        value for its chain kind (:data:`chaindrive.loads.REQUIRED_STATIC_SAFETY`: 7 roller, 3.5 link)."""
+        if self.required_static_safety is not None:
+            return float(self.required_static_safety)
+        from ..loads import REQUIRED_STATIC_SAFETY
+
+        return REQUIRED_STATIC_SAFETY["link" if self.chain.is_link_chain else "roller"]
+
     def pitch_radii(self) -> np.ndarray:
         """Pitch radius of every wheel in chain order [m]."""
         return np.array([w.pitch_radius(self.chain) for w in self.wheels])
@@ -504,7 +737,7 @@ class Drive:
     def chain_speed(self) -> float:
         """Mean chain speed [m/s]: sides per turn × pitch × ω / 2π."""
         w = self.driving_wheel
-        return w.sides_per_turn(self.chain) * self.pitch * self.speed / (2 * math.pi)
+        return float(mean_chain_speed(w.sides_per_turn(self.chain), self.pitch, self.speed))
 
     def angular_velocities(self) -> np.ndarray:
         """Mean angular velocity of every wheel [rad/s]."""
@@ -544,6 +777,13 @@ class Drive:
         """Power times service factor [W]."""
         return self.power() * self.load.service_factor
 
+    def _repr_html_(self) -> str:
+        """Notebook display: the drive's data with units and its drawing to scale
+        (formatted by :func:`chaindrive.workflows.notebook.html_of`)."""
+        from ..workflows.notebook import html_of
+
+        return html_of(self)
+
     def is_two_wheel(self) -> bool:
         """Two toothed wheels and nothing else (the exact polygon length applies)."""
         return len(self.wheels) == 2 and all(w.teeth is not None for w in self.wheels)
@@ -565,11 +805,13 @@ class Drive:
             "links": self.links,
             "slack_tension": self.slack_tension,
             "slack_sag_ratio": self.slack_sag_ratio,
-            "required_static_safety": self.required_static_safety,
+            "required_static_safety": self.static_safety_required,
             "elongation_limit": self.elongation_limit,
             "wear_coefficient": self.wear_coefficient,
             "contact": None if self.contact is None else dataclasses.asdict(self.contact),
             "track": None if self.track is None else dataclasses.asdict(self.track),
+            "crawler": None if self.crawler is None else dataclasses.asdict(self.crawler),
+            "fretting": None if self.fretting is None else dataclasses.asdict(self.fretting),
             "self_regulating": (None if self.self_regulating is None
                                 else jsonable(self.self_regulating)),
         }

@@ -17,7 +17,6 @@ in the file, e.g. ``drive.toml:14: wheels[1].teeth: must be a whole number >= 3`
 from __future__ import annotations
 
 import dataclasses
-import math
 import os
 import re
 import tomllib  # noqa: F401 - used by the doctests (Python >= 3.11)
@@ -36,9 +35,11 @@ from pydantic import (
 
 from ..errors import ChainDriveError, InputError, UnknownNameError
 from ..limits import MAX_LINKS, MAX_TEETH, warn_implausible
+from ..loads import mean_chain_speed
 from ..units import chain_speed_to_angular_velocity, is_dimensional, parse_quantity, unit_example
 from . import model as _model
 from .model import Drive, Guide, Load, Tensioner, Wheel
+from .templates import TEMPLATES, template  # the templates of `chaindrive new`
 
 __all__ = ["Project", "load_project", "parse_project", "project_from_mapping", "line_index", "template", "TEMPLATES"]
 
@@ -50,7 +51,7 @@ __all__ = ["Project", "load_project", "parse_project", "project_from_mapping", "
 _PLAUSIBLE_KIND = {"rad/s": "angular_velocity", "W": "power", "N": "force"}
 
 
-def _parse_quantity_field(value: Any, unit: str, name: str) -> float:
+def _parse_quantity_field(value: Any, unit: str, name: str, plausible: bool = True) -> float:
     """A project-file quantity in ``unit``: a string with its unit; a bare number only when
     ``unit`` is dimensionless (a TOML number for a length or a speed is refused)."""
     if isinstance(value, bool):
@@ -64,15 +65,16 @@ def _parse_quantity_field(value: Any, unit: str, name: str) -> float:
     except InputError as exc:
         raise ValueError(str(exc).removeprefix(f"{name}: ")) from None
     kind = "pitch" if unit == "m" and name == "pitch" else _PLAUSIBLE_KIND.get(unit)
-    if kind is not None:
+    if kind is not None and plausible:
         warn_implausible(name, x, kind, stacklevel=2)
     return x
 
 
-def _quantity(unit: str, *, positive: bool = True, allow_zero: bool = False, signed: bool = False):
+def _quantity(unit: str, *, positive: bool = True, allow_zero: bool = False, signed: bool = False,
+              plausible: bool = True):
     def parse(value: Any, info: ValidationInfo) -> float:
         name = info.field_name or "value"
-        x = _parse_quantity_field(value, unit, name)
+        x = _parse_quantity_field(value, unit, name, plausible)
         if not signed:
             if positive and not allow_zero and not x > 0:
                 raise ValueError(f"{name} must be positive (0 < {name} < inf {unit}), got {x:g}")
@@ -164,7 +166,7 @@ class DriveSpec(_Model):
     links: int | None = Field(default=None, gt=0, le=MAX_LINKS)
     slack_tension: Force | None = None
     slack_sag_ratio: Ratio = 0.02
-    required_static_safety: Ratio = 7.0
+    required_static_safety: Ratio | None = None
     elongation_limit: Ratio = 0.03
     wear_coefficient: WearCoefficient | None = None
     travel: Literal["ccw", "cw"] = "ccw"
@@ -215,15 +217,61 @@ class WheelSpec(_Model):
     side: Literal[1, -1] = 1
 
 
+LengthOrZero = Annotated[float, _quantity("m", allow_zero=True)]
+MassOrZero = Annotated[float, _quantity("kg", allow_zero=True)]
+Inertia = Annotated[float, _quantity("kg*m**2", allow_zero=True)]
+StiffnessOrZero = Annotated[float, _quantity("N/m", allow_zero=True)]
+TorsionStiffness = Annotated[float, _quantity("N*m/rad", allow_zero=True)]
+
+
 class TensionerSpec(_Model):
-    """``[tensioner]``."""
+    """``[tensioner]``: mass and stiffness reduced to the axis, or the parts of a ``mechanism``."""
 
     wheel: str
-    mass: Mass
-    stiffness: Stiffness
+    mass: Mass | None = None
+    stiffness: Stiffness | None = None
     kind: Literal["spring", "weight", "screw", "hydraulic"] = "spring"
     direction: tuple[float, float] = (0.0, 1.0)
     force: ForceOrZero | None = None
+    mechanism: Literal["lever", "sliding"] | None = None
+    arm_length: Length | None = None
+    arm_inertia: Inertia | None = None
+    arm_mass: MassOrZero | None = None
+    wheel_mass: MassOrZero | None = None
+    carriage_mass: MassOrZero | None = None
+    spring_stiffness: StiffnessOrZero | None = None
+    spring_lever: LengthOrZero | None = None
+    spring_angle: Angle | None = None
+    spring_mass: MassOrZero | None = None
+    torsion_stiffness: TorsionStiffness | None = None
+
+    def model_post_init(self, _context: Any) -> None:
+        parts = [k for k in _model.TENSIONER_PARTS["lever"] | _model.TENSIONER_PARTS["sliding"]
+                 if getattr(self, k) is not None]
+        if self.mechanism is None:
+            if self.mass is None or self.stiffness is None:
+                raise ValueError("give mass and stiffness (reduced to the tensioner axis), or mechanism = "
+                                 '"lever" or "sliding" with its parts (see docs/vibration.md §5)')
+            if parts:
+                raise ValueError(f"{', '.join(parts)}: parts need mechanism = \"lever\" or \"sliding\"")
+        elif self.mass is not None or self.stiffness is not None:
+            raise ValueError(f"mechanism = {self.mechanism!r} computes mass and stiffness from the parts; "
+                             "give one or the other")
+        else:
+            foreign = [k for k in parts if k not in _model.TENSIONER_PARTS[self.mechanism]]
+            if foreign:
+                raise ValueError(f"{', '.join(foreign)}: not a part of a {self.mechanism} tensioner (parts: "
+                                 f"{', '.join(_model.TENSIONER_PARTS[self.mechanism])})")
+
+    def to_tensioner(self) -> Tensioner:
+        """The model's tensioner (its parts reduced to the axis when a mechanism is given)."""
+        if self.mechanism is None:
+            assert self.mass is not None and self.stiffness is not None
+            return Tensioner(self.wheel, self.mass, self.stiffness, kind=self.kind, direction=self.direction,
+                             force=self.force)
+        parts = {k: getattr(self, k) for k in _model.TENSIONER_PARTS[self.mechanism] if getattr(self, k) is not None}
+        return Tensioner.from_parts(self.wheel, self.mechanism, parts, kind=self.kind, direction=self.direction,
+                                    force=self.force)
 
 
 class GuideSpec(_Model):
@@ -252,6 +300,46 @@ class ContactSpec(_Model):
             raise ValueError("give skew or the measurement (skew_height_difference, skew_base), not both")
 
 
+class RimBoltsSpec(_Model):
+    """``[track.bolts]``: the bolts of a toothed rim (Sharipov, Fig. 14)."""
+
+    count: int = Field(ge=1, le=1000)
+    circle_radius: Length
+    diameter: Length
+    joint: Literal["fitted", "friction"] = "fitted"
+    shear_planes: int = Field(default=1, ge=1, le=10)
+    plate_thickness: Length | None = None
+    allowable_shear: Stress | None = None
+    allowable_bearing: Stress | None = None
+    friction: Ratio = 0.15
+    friction_faces: int = Field(default=1, ge=1, le=10)
+    slip_safety: Ratio = 1.25
+    thread_pitch: Length | None = None
+    yield_strength: Stress | None = None
+
+
+class CrawlerSpec(_Model):
+    """``[crawler]``: the conveyor crawler drive (cams on the drive chain, guide, stiffness)."""
+
+    stiffness: Annotated[float, _quantity("N", plausible=False)]  # axial rigidity EA, not a force
+    guide: Literal["tangent", "none"] = "tangent"
+    cam_distance: Length | None = None
+    engagement_distance: Length | None = None
+    cam_pitch: Length | None = None
+    cam_index: int = Field(default=0, ge=0, le=10_000)
+    cam_face_angle: Angle = 0.0
+    return_guide: Literal["tangent", "none"] = "none"
+
+
+class FrettingSpec(_Model):
+    """``[fretting]``: empirical constants of the fretting latent period (Vikulov)."""
+
+    roughness: Length
+    latent_coefficient: Annotated[float, _quantity("s/m")]
+    decay_coefficient: Annotated[float, _quantity("s/N")]
+    frequency: Annotated[float, _quantity("Hz")] | None = None
+
+
 class TrackSpec(_Model):
     """``[track]``: tracked-tractor drive wheel strength (Sharipov)."""
 
@@ -264,6 +352,7 @@ class TrackSpec(_Model):
     hardness: float | None = Field(default=None, gt=0, le=70)
     allowable_bending: Stress | None = None
     allowable_contact: Stress | None = None
+    bolts: RimBoltsSpec | None = None
 
 
 class Project(_Model):
@@ -278,6 +367,8 @@ class Project(_Model):
     contact: ContactSpec | None = None
     track: TrackSpec | None = None
     self_regulating: dict[str, Any] | None = None
+    crawler: CrawlerSpec | None = None
+    fretting: FrettingSpec | None = None
 
 
 # --------------------------------------------------------------------------- line numbers
@@ -467,7 +558,7 @@ def project_from_mapping(data: dict[str, Any], filename: str = "<project>", *,
             speed=_speed_of(proj.drive.speed, chain, wheels, filename, index),
             load=Load(power=proj.load.power, torque=proj.load.torque,
                       service_factor=proj.load.service_factor),
-            tensioner=None if proj.tensioner is None else Tensioner(**proj.tensioner.model_dump()),
+            tensioner=None if proj.tensioner is None else proj.tensioner.to_tensioner(),
             guides=tuple(Guide(**g.model_dump()) for g in proj.guides),
             links=proj.drive.links, slack_tension=proj.drive.slack_tension,
             slack_sag_ratio=proj.drive.slack_sag_ratio,
@@ -477,6 +568,8 @@ def project_from_mapping(data: dict[str, Any], filename: str = "<project>", *,
             name=proj.drive.name, description=proj.drive.description, travel=proj.drive.travel,
             contact=None if proj.contact is None else _model.ContactSpec(**proj.contact.model_dump()),
             track=None if proj.track is None else _model.TrackSpec(**proj.track.model_dump()),
+            crawler=None if proj.crawler is None else _model.CrawlerSpec(**proj.crawler.model_dump()),
+            fretting=None if proj.fretting is None else _model.FrettingSpec(**proj.fretting.model_dump()),
             self_regulating=_self_regulating(proj.self_regulating, filename, index),
         )
     except ChainDriveError as exc:
@@ -490,7 +583,7 @@ def _speed_of(speed: float | ChainSpeedSpec, chain, wheels, filename: str, index
     if not isinstance(speed, ChainSpeedSpec):
         if len(driving) == 1 and driving[0].teeth is not None and not warn_implausible(
                 "drive.speed", speed, "angular_velocity", stacklevel=3):
-            v = driving[0].sides_per_turn(chain) * chain.pitch * speed / (2 * math.pi)
+            v = mean_chain_speed(driving[0].sides_per_turn(chain), chain.pitch, speed)
             warn_implausible("drive.speed (chain speed n p omega / 2 pi)", v, "chain_speed", stacklevel=3)
         return speed
     where = _where(filename, _line_for(("drive", "speed"), index))
@@ -504,10 +597,10 @@ def _speed_of(speed: float | ChainSpeedSpec, chain, wheels, filename: str, index
 
 
 def _self_regulating(table: dict[str, Any] | None, filename: str, index: dict) -> Any:
-    """The ``[self_regulating]`` table as a :class:`~chaindrive.drive.self_regulating.SelfRegulatingSpec`."""
+    """The ``[self_regulating]`` table as a :class:`~chaindrive.drive.carrier.SelfRegulatingSpec`."""
     if table is None:
         return None
-    from .self_regulating import SelfRegulatingSpec
+    from .carrier import SelfRegulatingSpec
 
     for key in ("pivot", "weight", "weight_offset", "stiffness", "preload"):
         values = table.get(key)
@@ -568,169 +661,3 @@ def load_project(path: str | os.PathLike[str]) -> Drive:
     p = Path(path)
     text = read_text_file(p, what="project file")  # one line for missing/folder/binary/non-UTF-8/> 1 MiB
     return parse_project(text, filename=p.name)
-
-
-# --------------------------------------------------------------------------- templates
-
-_HEAD = """\
-# chaindrive project file (TOML). Physical quantities are written with their unit:
-# "64 mm", "300 rpm", "15 kW", "2 kN" (a bare number is refused for them); counts and
-# ratios (teeth, service factor) are bare numbers. speed may be the chain speed, "1.2 m/s".
-# Wheels are listed counter-clockwise round the loop (the chain runs that way unless
-# travel = "cw"); side = -1 marks an idler pressing on the outside of the chain.
-# Check it with:  chaindrive layout {file}
-"""
-
-TEMPLATES: dict[str, str] = {
-    "roller": _HEAD + """
-[drive]
-name = "Industrial roller chain drive"
-description = "16B simplex, 19/57 teeth, fan drive from a 960 rpm motor"
-speed = "960 rpm"               # driving wheel
-# links = 122                   # chain length in pitches (default: required, rounded up to even)
-slack_sag_ratio = 0.02          # slack-span sag / span (ISO 10823 guidance: about 2 %)
-travel = "ccw"                  # the chain runs along the wheel list ("cw": against it)
-required_static_safety = 7      # F_B / F_max
-elongation_limit = 0.03         # wear limit (3 %)
-
-[chain]
-name = "16B"                    # catalogue name (see `chaindrive chains`)
-
-[load]
-power = "15 kW"                 # or torque = "150 N*m" (on the driving wheel)
-service_factor = 1.0            # ANSI/ACA service factor (smooth load, electric motor)
-
-[[wheels]]
-name = "motor"
-kind = "sprocket"
-teeth = 19
-position = ["0 mm", "0 mm"]
-driving = true
-
-[[wheels]]
-name = "fan"
-kind = "sprocket"
-teeth = 57
-position = ["1050 mm", "0 mm"]
-""",
-    "mining": _HEAD + """
-[drive]
-name = "Mining scraper conveyor drive (Dolipiński et al.)"
-description = "Round link chain 18x64 on two 8-pocket wheels, tangential guide at the entry, tensioner on the slack span"
-speed = "5 rad/s"               # Dolipiński et al. worked case; or the chain speed, "0.815 m/s"
-required_static_safety = 3.5    # mining link chains run at lower static safety than roller chains
-elongation_limit = 0.02         # DIN 22252 chains are replaced at about 2 % elongation
-wear_coefficient = "2e-16 m**2/N"   # Archard coefficient, illustrative (calibrate from tests)
-
-[chain]
-name = "18x64"                  # DIN 22252, t = 64 mm, d = 18 mm
-
-[load]
-power = "25 kW"
-service_factor = 1.5            # heavy shock
-
-[[wheels]]
-name = "drive"
-kind = "pocket_wheel"
-teeth = 8                       # pockets
-position = ["0 m", "0 m"]
-driving = true
-
-[[wheels]]
-name = "tensioner"
-kind = "idler"
-teeth = 6                       # pocket idler inside the loop, pressing the slack span down
-position = ["1.2 m", "-0.4 m"]
-
-[[wheels]]
-name = "return"
-kind = "pocket_wheel"
-teeth = 8
-position = ["4.05 m", "0 m"]
-
-[tensioner]
-wheel = "tensioner"
-mass = "60 kg"                  # reduced to the tensioner axis (the tensioner paper)
-stiffness = "200 kN/m"
-kind = "spring"
-direction = [0, -1]             # travel that takes up slack
-force = "5 kN"
-
-[[guides]]
-wheel = "drive"
-kind = "tangential"             # guide line tangent to the pitch circle, H = R (Dolipiński et al.)
-end_distance = "0.256 m"        # l, Dolipiński et al. worked case
-""",
-    "crawler": _HEAD + """
-[drive]
-name = "Tracked tractor drive wheel (Sharipov)"
-description = "Track of a 70 kN tractor, lantern-pin pitch 170 mm, 13-tooth drive wheel"
-speed = "40 rpm"
-travel = "cw"                   # forward: the chain runs clockwise, the drive wheel pulls the ground run
-required_static_safety = 5
-elongation_limit = 0.03
-wear_coefficient = "1e-15 m**2/N"   # dry, abrasive: illustrative Archard coefficient
-
-[chain]
-name = "track 170"              # a custom chain: give its fields
-pitch = "170 mm"
-roller_diameter = "45 mm"       # lantern pin (engaging element)
-pin_diameter = "30 mm"
-inner_width = "100 mm"
-breaking_force = "900 kN"
-mass_per_length = "90 kg/m"     # track links with shoes
-source = "illustrative tracked-tractor track"
-
-[load]
-# P = 0.65 G_T phi / i (Sharipov): G_T = 70 kN, phi = 1.0, two tracks -> 22.75 kN per
-# track; torque = 22.75 kN x R_0 (R_0 = 0.355 m)
-torque = "8.08 kN*m"
-service_factor = 1.0
-
-[[wheels]]
-name = "drive"
-kind = "track_wheel"
-teeth = 13
-position = ["0 m", "0.5 m"]
-driving = true
-
-[[wheels]]
-name = "rear road wheel"
-kind = "idler"
-diameter = "400 mm"
-position = ["0.55 m", "0.2 m"]
-
-[[wheels]]
-name = "front road wheel"
-kind = "idler"
-diameter = "400 mm"
-position = ["1.9 m", "0.2 m"]
-
-[[wheels]]
-name = "front idler"
-kind = "idler"
-diameter = "600 mm"
-position = ["2.52 m", "0.35 m"]
-
-[tensioner]
-wheel = "front idler"
-mass = "120 kg"
-stiffness = "1.5 MN/m"
-kind = "spring"
-direction = [1, 0]
-""",
-}
-
-
-def template(kind: str = "roller") -> str:
-    """Commented project template: ``"roller"``, ``"mining"`` or ``"crawler"``.
-
-    Examples
-    --------
-    >>> "[[wheels]]" in template("crawler")
-    True
-    """
-    try:
-        return TEMPLATES[kind]
-    except KeyError:
-        raise UnknownNameError(f"unknown template kind {kind!r}; valid: {', '.join(TEMPLATES)}") from None

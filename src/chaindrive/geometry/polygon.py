@@ -5,7 +5,7 @@ in the pitch circle. A roller chain (pitch ``p``, ``z`` teeth) gives a regular
 ``z``-gon. A round link chain (inner link length ``t``, bar diameter ``d``) on a pocket
 wheel with ``z`` pockets gives a *bi-regular* ``2z``-gon whose sides alternate
 ``t + d`` (horizontal link, centre line of the bar to centre line) and ``t - d``
-(vertical link) [1]_. Both are the same function of the two side lengths: the roller
+(vertical link) (Dolipiński et al., eq. 6). Both are the same function of the two side lengths: the roller
 chain is the case ``d -> 0`` with ``z/2`` pairs of equal sides.
 """
 

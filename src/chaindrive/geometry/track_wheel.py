@@ -34,7 +34,7 @@ from .._validation import check_positive, check_range, check_teeth
 from ..errors import InfeasibleError, InputError
 from .outline import Arc, Outline, Primitive, _drop_short, _pair, _repeat
 from .polygon import roller_chain_pitch_radius
-from .sprocket import _convex_flank_to_tip, _tip_half
+from .tooth_form import _convex_flank_to_tip, _tip_half
 
 if TYPE_CHECKING:
     from ezdxf.document import Drawing
@@ -48,6 +48,7 @@ __all__ = [
     "root_radius_range",
     "tip_radius_range",
     "tip_radius",
+    "worn_tip_radius",
     "TrackDriveWheel",
     "TrackDriveWheelDimensions",
 ]
@@ -240,6 +241,59 @@ def tip_radius(
     return r0 + k * r
 
 
+@finite_guard
+def worn_tip_radius(pitch: ArrayLike, teeth: ArrayLike, elongation_limit: ArrayLike) -> FloatOrArray:
+    r"""Smallest tip radius that still holds the pins of the chain at its largest allowed pitch [m].
+
+    .. math:: R_{Г,min} = \frac{t\,(1 + Δ)}{2\sin(π/z)} = R_о\,(1 + Δ),\qquad
+              k_{min} = \frac{R_{Г,min} - R_о}{r_ц} = \frac{Δ\,R_о}{r_ц}
+
+    Parameters
+    ----------
+    pitch : float or array_like
+        New track pitch ``t`` [m].
+    teeth : int or array_like
+        ``z >= 3``.
+    elongation_limit : float or array_like
+        Largest allowed wear elongation of the pitch ``Δ``, ``0 < Δ <= 0.1`` [-]
+        (the drive's ``elongation_limit``).
+
+    Returns
+    -------
+    ndarray or float
+        ``R_Г,min`` [m].
+
+    Notes
+    -----
+    Sharipov: «Исходя из допустимого максимального шага цепи при изнашивании шарниров,
+    определяют радиус R_Г окружности головок зубьев» (the tip radius follows from the
+    largest allowed pitch of the chain with worn joints); the page prints only the
+    resulting ranges ``R_Г = R_о + (0.2…0.5) r_ц`` (built-up links) and ``(0.8…1.2) r_ц``
+    (cast links). Derivation: a worn chain of pitch ``t (1 + Δ)`` wraps the wheel with
+    its pins on the circle on which that pitch is the side of a regular ``z``-gon,
+    radius ``R_о (1 + Δ)``; a pin whose centre rises above the tooth tip is no longer
+    pushed along the chain by the flank and the chain jumps the teeth, so the tips must
+    reach at least that circle. With ``R_о = 355 mm, r_ц = 22.5 mm`` the printed
+    built-up range ``0.2…0.5`` corresponds to ``Δ = 1.3…3.2 %``, the cast range
+    ``0.8…1.2`` to ``Δ = 5…7.6 %``.
+
+    References
+    ----------
+    Sharipov, *Design of tractor running systems*, p. 34 (the rule; the formula derived here).
+
+    Examples
+    --------
+    >>> round(float(worn_tip_radius(0.17, 13, 0.03)), 6)
+    0.365835
+    """
+    t = check_positive("pitch", pitch, "m")
+    z = check_teeth("teeth", teeth)
+    d = np.asarray(elongation_limit, dtype=float)
+    if np.any(~np.isfinite(d)) or np.any(d <= 0) or np.any(d > 0.1):
+        raise InputError(f"elongation_limit must lie in (0, 0.1], got {d}", field="elongation_limit")
+    return roller_chain_pitch_radius(t * (1.0 + d), z)
+
+
 def _factor(name: str, value: ArrayLike, lo: float, hi: float, what: str) -> np.ndarray:
     try:
         return check_range(name, value, lo, hi)
@@ -277,6 +331,9 @@ class TrackDriveWheelDimensions(Result):
     pointed_tip_radius: float = quantity("m")
     tooth_pointed: bool
     sources: dict[str, str]
+    elongation_limit: float | None = quantity("1", default=None)
+    worn_tip_radius: float | None = quantity("m", default=None)
+    worn_tip_factor: float | None = quantity("1", default=None)
 
 
 @dataclass
@@ -297,6 +354,9 @@ class TrackDriveWheel:
         ``r_цо / r_ц`` in [1.1, 1.3]; default the middle, 1.2.
     tip_factor : float, optional
         ``(R_Г − R_о) / r_ц`` inside the range for ``link``; default its middle.
+    elongation_limit : float, optional
+        Largest allowed wear elongation ``Δ`` of the track pitch [-]; adds the smallest
+        tip radius that holds the worn chain (:func:`worn_tip_radius`) to the dimensions.
 
     Examples
     --------
@@ -313,6 +373,7 @@ class TrackDriveWheel:
     root_factor: float | None = None
     tip_factor: float | None = None
     name: str = ""
+    elongation_limit: float | None = None
 
     def __post_init__(self) -> None:
         check_positive("pitch", self.pitch, "m")
@@ -354,6 +415,7 @@ class TrackDriveWheel:
         rf = t - rs
         pointed_r = r0 * np.cos(np.pi / z) + np.sqrt(max(rf**2 - (t / 2) ** 2, 0.0))
         tip = float(tip_radius(r0, r, tip_factor, self.link))
+        worn = None if self.elongation_limit is None else float(worn_tip_radius(t, z, self.elongation_limit))
         return TrackDriveWheelDimensions(
             pitch=t, teeth=z, pin_radius=r, link=self.link, pitch_radius=r0,
             root_factor=root_factor, root_factor_range=PIN_SEAT_FACTOR_RANGE,
@@ -367,7 +429,10 @@ class TrackDriveWheel:
                 "root_radius": "Sharipov: R_В = R_о − r_цо, r_цо = (1.1...1.3) r_ц",
                 "tip_radius": "Sharipov: R_Г = R_о + (0.2...0.5) r_ц built-up, (0.8...1.2) r_ц cast links",
                 "flank_radius": "drawing construction: circle of radius t − r_цо about the neighbouring pin",
+                "worn_tip_radius": "R_Г,min = t (1 + Δ) / (2 sin(π/z)): pins of the worn chain (Sharipov's rule)",
             },
+            elongation_limit=None if self.elongation_limit is None else float(self.elongation_limit),
+            worn_tip_radius=worn, worn_tip_factor=None if worn is None else (worn - r0) / r,
         )
 
     def outline(self, form: str | None = None) -> Outline:

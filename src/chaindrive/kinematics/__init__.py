@@ -4,10 +4,13 @@ Public API:
 
 * :func:`chain_entry` - free, chordal, tangential or custom-height guided entry of a
   round link chain (bi-regular polygon) or a roller chain (regular polygon), with
-  ``model="exact"`` (general rigid-link solver) or ``model="paper"`` (Dolipiński et al.'s
+  ``model="exact"`` (general rigid-link solver), ``model="paper"`` (Dolipiński et al.'s rod
+  mechanism, the same for both guides) or ``model="as_printed"`` (the chordal rod switched at
+  ``π/z`` as printed; Dolipiński et al.'s
   corrected closed forms); returns :class:`EntryKinematics`.
 * :func:`dolipinski_worked_case` - the three entries of Dolipiński et al.'s worked case.
-* :mod:`.paper` - the closed forms, :mod:`.solver` - the general vectorised solver.
+* :mod:`.paper` - the closed forms, :mod:`.solver` - the general vectorised solver; both
+  return :mod:`.histories` result classes (:class:`PaperEntry`, :class:`TautEntry`, :class:`RodEntry`).
 
 See ``docs/kinematics.md``.
 """
@@ -22,6 +25,7 @@ from .entry import (
     chain_entry_for,
     dolipinski_worked_case,
 )
+from .histories import EntryHistory, PaperEntry, RodEntry, TautEntry
 from .paper import (
     paper_chordal_entry,
     paper_free_entry,
@@ -35,6 +39,10 @@ __all__ = [
     "MODELS",
     "SUMMARY_KEYS",
     "EntryKinematics",
+    "EntryHistory",
+    "PaperEntry",
+    "RodEntry",
+    "TautEntry",
     "WheelPolygon",
     "chain_entry",
     "chain_entry_for",

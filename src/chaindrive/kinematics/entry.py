@@ -42,14 +42,26 @@ Models (``model=``):
     the span then shortens by exactly the seated link, so ``x`` and ``v`` are
     continuous. Free entry is the same mechanism with ``G`` at infinity.
 ``"paper"``
-    Dolipiński et al.'s own simplified mechanism: a rigid rod of fixed length from the seated
-    hinge to a point sliding on the guide line, closed forms (14)-(43) with the
-    printed errors corrected (list in :mod:`chaindrive.kinematics.paper`).
+    Dolipiński et al.'s own simplified mechanism, one mechanism for both guides: a rigid
+    rod of fixed length from the seated hinge to a point sliding on the guide line,
+    shortened by exactly one link when the next hinge seats (the rod collinear with
+    the chord to it). Tangential entry: the closed forms (26)-(43) with the printed
+    errors corrected (their switches are the seatings, eqs 29 and 34). Chordal entry:
+    the same rod mechanism solved by :func:`~chaindrive.kinematics.solver.rod_seating_schedule`
+    and :func:`~chaindrive.kinematics.solver.rod_entry` (in the worked case the second
+    hinge seats at ``φ = 0.3741950302`` rad, not at ``π/z``); ``x`` and ``v`` are
+    continuous and the chain advances ``2t`` per period. Free entry: eqs (1)-(13).
+``"as_printed"``
+    The mechanisms as the paper prints them: the chordal entry's closed forms (14)-(25),
+    corrected, with the rod switched at ``π/z`` (a reset, not a seating: ``x`` is made
+    continuous by a constant, ``v`` jumps by 3.7 mm/s in the worked case and the chain
+    advances 2.3 µm more than ``2t`` per period); free and tangential entry as ``"paper"``.
 """
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+import dataclasses
+from dataclasses import dataclass
 from functools import lru_cache
 from typing import TYPE_CHECKING, Any
 
@@ -59,12 +71,20 @@ from numpy.typing import ArrayLike
 from .._deprecation import renamed_attributes as _renamed_attributes
 from .._finite import finite_guard
 from .._registry import Registry
-from .._results import Result
+from .._results import Result, quantity
 from .._validation import as_float_array, check_nonnegative, check_positive, check_teeth
 from ..errors import InfeasibleError, InputError
 from ..geometry.polygon import bi_regular_polygon, roller_chain_pitch_radius
 from . import paper as _paper
-from .solver import GuideEnd, WheelPolygon, taut_entry, taut_seating_angles
+from .histories import PaperEntry
+from .solver import (
+    GuideEnd,
+    WheelPolygon,
+    rod_entry,
+    rod_seating_schedule,
+    taut_entry,
+    taut_seating_angles,
+)
 
 if TYPE_CHECKING:
     from ..chains import Chain
@@ -77,6 +97,7 @@ __all__ = [
     "ENTRIES",
     "MODELS",
     "SUMMARY_KEYS",
+    "SUMMARY_QUANTITIES",
 ]
 
 #: Named entry types.
@@ -99,8 +120,38 @@ SUMMARY_KEYS = (
     "transverse_throw",
 )
 
+#: Every key of :attr:`EntryKinematics.summary` (and of the crawler's): its label and SI
+#: unit ("1": a ratio or a count; "": a yes/no), declared where the summary is made, for
+#: presenters (the studio's expert pages, the command line).
+SUMMARY_QUANTITIES: dict[str, tuple[str, str]] = {
+    "v_mean": ("mean chain speed", "m/s"),
+    "v_min": ("minimum chain speed", "m/s"),
+    "v_max": ("maximum chain speed", "m/s"),
+    "nonuniformity": ("speed non-uniformity (vmax − vmin)/vmean", "1"),
+    "a_min": ("minimum acceleration", "m/s^2"),
+    "a_max": ("maximum acceleration", "m/s^2"),
+    "a_abs_max": ("largest |acceleration|", "m/s^2"),
+    "sign_change_at_period_end": ("acceleration changes sign at the period end", ""),
+    "transverse_throw": ("transverse throw of the span", "m"),
+    "advance_per_period": ("chain advance per tooth period", "m"),
+    "a_end_left": ("acceleration just before the period end", "m/s^2"),
+    "a_end_right": ("acceleration just after the period start", "m/s^2"),
+    "a_jump_at_period_end": ("acceleration jump at the period end", "m/s^2"),
+    "a_jump_max": ("largest acceleration jump (seatings)", "m/s^2"),
+    "sign_changing_jumps": ("acceleration jumps that change sign", "1"),
+    "psi_v_min": ("sprocket angle of the minimum speed", "rad"),
+    "peak_deviation": ("largest deviation from the mean speed", "m/s"),
+    "cam_stiffness": ("stiffness at the cam", "N/m"),
+    "force_min": ("cam force minimum (about the mean)", "N"),
+    "force_max": ("cam force maximum (about the mean)", "N"),
+    "force_range": ("cam force range", "N"),
+    "cam_force_max": ("cam force maximum (with the traction force)", "N"),
+    "cam_pushing_off_max": ("pushing-off force on the guide at the cam, P tan α", "N"),
+    "guide_reaction_max": ("largest guide reaction at the guide end, T tan φ1", "N"),
+}
 
-@dataclass
+
+@dataclass(frozen=True)
 class EntryKinematics(Result):
     """Kinematics of the chain over the requested wheel angles.
 
@@ -150,28 +201,28 @@ class EntryKinematics(Result):
         paper model ``φ_g1, φ_g2``) [rad].
     """
 
-    phi: np.ndarray
-    x: np.ndarray
-    velocity: np.ndarray
-    acceleration: np.ndarray
-    transverse_position: np.ndarray | None
-    transverse_velocity: np.ndarray | None
-    transverse_acceleration: np.ndarray | None
+    phi: np.ndarray = quantity("rad")
+    x: np.ndarray = quantity("m")
+    velocity: np.ndarray = quantity("m/s")
+    acceleration: np.ndarray = quantity("m/s^2")
+    transverse_position: np.ndarray | None = quantity("m")
+    transverse_velocity: np.ndarray | None = quantity("m/s")
+    transverse_acceleration: np.ndarray | None = quantity("m/s^2")
     summary: dict
     entry: str
     model: str
     chain_type: str
-    pitch: float
-    bar_diameter: float
-    teeth: int
-    angular_velocity: float
-    radius: float
-    delta1: float
-    delta2: float
-    guide_height: float | None
-    guide_end_distance: float | None
-    period: float
-    seating_angles: np.ndarray = field(default_factory=lambda: np.zeros(0))
+    pitch: float = quantity("m")
+    bar_diameter: float = quantity("m")
+    teeth: int = quantity("1")
+    angular_velocity: float = quantity("rad/s")
+    radius: float = quantity("m")
+    delta1: float = quantity("rad")
+    delta2: float = quantity("rad")
+    guide_height: float | None = quantity("m")
+    guide_end_distance: float | None = quantity("m")
+    period: float = quantity("rad")
+    seating_angles: np.ndarray = quantity("rad", default_factory=lambda: np.zeros(0))
 
 
 @dataclass(frozen=True)
@@ -227,9 +278,8 @@ def _exact(case: _Case, phi):
     r = taut_entry(poly, phi, case.w, guide, seats)
     T = case.period
     s = np.mod(seats[:-1], T)
-    r["seats"] = np.sort(np.where(np.isclose(s, T, rtol=0, atol=1e-12), 0.0, s))
-    r["advance"] = poly.advance
-    return r
+    return dataclasses.replace(r, seats=np.sort(np.where(np.isclose(s, T, rtol=0, atol=1e-12), 0.0, s)),
+                               advance=poly.advance)
 
 
 @lru_cache(maxsize=64)
@@ -252,7 +302,7 @@ def _checked_seats(case: _Case) -> np.ndarray:
 def _check_reach(case, poly, seats):
     """At every instant the free span must hold at least one whole (longest) link."""
     grid = np.linspace(seats[0], seats[-1], 721)
-    span = taut_entry(poly, grid, case.w, case.guide(), seats)["span"]
+    span = taut_entry(poly, grid, case.w, case.guide(), seats).span
     longest = max(poly.links)
     if np.min(span) < longest:
         raise InfeasibleError(
@@ -261,28 +311,59 @@ def _check_reach(case, poly, seats):
         )
 
 
+@lru_cache(maxsize=64)
+def _chordal_rod_schedule(case: _Case) -> tuple[tuple[float, int, float], ...]:
+    """The consistent rod schedule of the chordal entry (seatings, not the printed reset)."""
+    return tuple(rod_seating_schedule(case.polygon(), _guide_end(case)))
+
+
+def _guide_end(case: _Case) -> GuideEnd:
+    return (case.guide_end_distance(), case.guide_height())
+
+
+def _chordal_rod(case: _Case, phi):
+    sched = list(_chordal_rod_schedule(case))
+    r = rod_entry(case.polygon(), phi, case.w, _guide_end(case), sched, continuous=False)
+    return PaperEntry(x=r.x, velocity=r.velocity, acceleration=r.acceleration, advance=r.advance,
+                      seats=np.array([p for p, _, _ in sched]))
+
+
 @MODELS.register("paper")
 def _paper_model(case: _Case, phi):
+    if case.entry == "chordal":
+        r = _chordal_rod(case, phi)
+        for key in ("x", "velocity", "acceleration"):
+            if not np.all(np.isfinite(r[key])):
+                raise InfeasibleError("the rod of the paper's mechanism cannot reach the guide line")
+        return r
+    return _as_printed_model(case, phi)
+
+
+@MODELS.register("as_printed")
+def _as_printed_model(case: _Case, phi):
     t, d = (case.t, 0.0) if case.roller else (case.t, case.d)
     d1, d2 = case.d1, (case.d1 if case.roller else case.d2)
     with np.errstate(invalid="ignore"):
         if case.entry == "free":
             r = _paper.paper_free_entry(phi, case.R, d1, d2, case.w, roller=case.roller)
-            r["seats"] = np.array([0.0]) if case.roller else np.array([0.0, 0.5 * (d1 + d2)])
+            r = dataclasses.replace(r, seats=np.array([0.0]) if case.roller else np.array([0.0, 0.5 * (d1 + d2)]))
         elif case.entry == "chordal":
             r = _paper.paper_chordal_entry(phi, t, d, case.R, d1, d2, case.guide_end_distance(), case.w,
                                            roller=case.roller)
-            r["seats"] = np.array([0.0]) if case.roller else np.array([0.0, 0.5 * (d1 + d2)])
+            r = dataclasses.replace(r, seats=np.array([0.0]) if case.roller else np.array([0.0, 0.5 * (d1 + d2)]))
         elif case.entry == "tangential":
             r = _paper.paper_tangential_entry(phi, t, d, case.R, d1, d2, case.guide_end_distance(), case.w,
                                               roller=case.roller)
-            g1, g2 = r["limit_angles"]
-            r["seats"] = np.array([g1]) if case.roller else np.array([g1, g2])
-            if not case.roller and not (g1 < d1 < g2 < d1 + d2):
+            g1, g2 = r.limit_angles or (0.0, None)
+            if case.roller or g2 is None:
+                r = dataclasses.replace(r, seats=np.array([g1]))
+            elif not (g1 < d1 < g2 < d1 + d2):
                 raise InfeasibleError("limit angles out of order")
+            else:
+                r = dataclasses.replace(r, seats=np.array([g1, g2]))
         else:
             raise InputError(
-                "model='paper' covers entry 'free', 'chordal' and 'tangential' only "
+                "model='paper' and 'as_printed' cover entry 'free', 'chordal' and 'tangential' only "
                 "(the paper gives no closed form for another guide_height); use model='exact'"
             )
     for key in ("x", "velocity", "acceleration"):
@@ -390,8 +471,8 @@ def _summary(case: _Case, model: str, seats) -> dict:
     extra = extra[(extra > 0) & (extra < T)]
     grid = np.sort(np.concatenate([base[:-1], extra]))
     r = _run(case, model, grid)
-    v, a = r["velocity"], r["acceleration"]
-    advance = float(r["advance"])
+    v, a = r.velocity, r.acceleration
+    advance = float(r.advance)
     v_mean = advance / (T / case.w)
     # one-sided limits of the acceleration at the period end (left) and start (right)
     a_left = float(_run(case, model, np.array([T - 1e-12 * T]))["acceleration"][0])
@@ -409,7 +490,7 @@ def _summary(case: _Case, model: str, seats) -> dict:
         jump_list += list(hi - lo)
     jumps = np.asarray(jump_list)
     if case.entry == "free":
-        y = r["y"]
+        y = r.y
         throw = float(case.R - case.R * np.cos(0.5 * max(case.d1, case.d2)))
         throw = max(throw, float(np.max(y) - np.min(y)))
     else:
@@ -480,7 +561,7 @@ def chain_entry(
         required for guided entry.
     guide_height : float, optional
         Height ``H >= 0`` of the guide line above the wheel axis [m] (custom guide).
-    model : {"exact", "paper"}
+    model : {"exact", "paper", "as_printed"}
         Mechanism (see module docstring).
     points : int
         Number of samples over ``0 <= φ <= 2π/z`` (ignored if ``phi`` is given).
@@ -510,8 +591,8 @@ def chain_entry(
     Valid for a rigid, inextensible chain at constant ``ω``; ``H >= 0``. At a seating
     the acceleration jumps; ``phi`` exactly at the period end takes the limit from the
     left. Mean speed over a period is exactly ``(chain per period) z ω / 2π`` for the
-    exact model and the paper's free and tangential entry; the paper's chordal entry
-    resets its rod at ``π/z`` and advances slightly more (see ``summary``).
+    exact model and the ``"paper"`` model; the ``"as_printed"`` chordal entry resets
+    its rod at ``π/z`` and advances slightly more (see ``summary``).
 
     References
     ----------
@@ -554,11 +635,12 @@ def chain_entry(
         if case.entry == "free":
             raise
         _explain_infeasible(case, model, exc)
-    summary = _summary(case, model, np.asarray(r["seats"], dtype=float))
+    summary = _summary(case, model, np.asarray(r.seats, dtype=float))
     shape = np.shape(phi_arr)
 
     def out(key):
-        return None if key not in r else np.reshape(r[key], shape)
+        value = getattr(r, key, None)
+        return None if value is None else np.reshape(value, shape)
 
     free = case.entry == "free"
     return EntryKinematics(
@@ -583,7 +665,7 @@ def chain_entry(
         guide_height=case.H,
         guide_end_distance=case.l,
         period=T,
-        seating_angles=np.asarray(r["seats"], dtype=float),
+        seating_angles=np.asarray(r.seats, dtype=float),
     )
 
 
@@ -629,7 +711,7 @@ def dolipinski_worked_case(model: str = "exact", points: int = 361) -> dict[str,
 
     Parameters
     ----------
-    model : {"exact", "paper"}
+    model : {"exact", "paper", "as_printed"}
         Mechanism.
     points : int
         Samples per period.

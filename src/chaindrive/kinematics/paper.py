@@ -80,12 +80,11 @@ Dolipiński et al. (Dolipiński, Reich, Adamowicz, Ziegler), eqs (1)-(43), Figs 
 
 from __future__ import annotations
 
-from typing import Any
-
 import numpy as np
 from numpy.typing import ArrayLike
 
 from .._finite import finite_guard
+from .histories import PaperEntry
 
 __all__ = [
     "paper_free_entry",
@@ -110,7 +109,7 @@ def paper_free_entry(
     angular_velocity: float,
     *,
     roller: bool = False,
-) -> dict[str, Any]:
+) -> PaperEntry:
     r"""Free entry, Dolipiński et al. eqs (1)-(4), (10)-(13) with ``ω`` restored.
 
     .. math::
@@ -159,15 +158,8 @@ def paper_free_entry(
     base = np.where(first, R * np.sin(0.5 * d1), R * (np.sin(0.5 * d1) + 2 * np.sin(0.5 * d2)))
     advance = 2 * R * np.sin(0.5 * d1) if roller else 2 * R * (np.sin(0.5 * d1) + np.sin(0.5 * d2))
     sb, cb = np.sin(beta), np.cos(beta)
-    return {
-        "x": base - R * sb + q * advance,
-        "velocity": w * R * cb,
-        "acceleration": w * w * R * sb,
-        "y": R * cb,
-        "vy": w * R * sb,
-        "ay": -w * w * R * cb,
-        "advance": float(advance),
-    }
+    return PaperEntry(x=base - R * sb + q * advance, velocity=w * R * cb, acceleration=w * w * R * sb,
+                      y=R * cb, vy=w * R * sb, ay=-w * w * R * cb, advance=float(advance))
 
 
 def _rod_pieces(gamma, L, c, R, w, decreasing):
@@ -194,7 +186,7 @@ def paper_chordal_entry(
     angular_velocity: float,
     *,
     roller: bool = False,
-) -> dict[str, Any]:
+) -> PaperEntry:
     r"""Chordal entry ``H = R cos(δ1/2)``, Dolipiński et al. eqs (14)-(25), corrected.
 
     .. math::
@@ -266,7 +258,7 @@ def paper_chordal_entry(
     q, r = _wrap(phi, T)
     x, v, a = piece(r)
     xc = x - x0 + np.where(r >= half, jump, 0.0) + q * advance
-    return {"x": xc, "velocity": v, "acceleration": a, "advance": advance, "x_printed": x}
+    return PaperEntry(x=xc, velocity=v, acceleration=a, advance=advance, x_printed=x)
 
 
 @finite_guard
@@ -334,7 +326,7 @@ def paper_tangential_entry(
     angular_velocity: float,
     *,
     roller: bool = False,
-) -> dict[str, Any]:
+) -> PaperEntry:
     r"""Tangential entry ``H = R``, Dolipiński et al. eqs (26)-(43), corrected.
 
     .. math::
@@ -388,5 +380,5 @@ def paper_tangential_entry(
     dec = p30 | (~p26 & ~p31)
     x, v, a = _rod_pieces(gamma, L, 1.0, R, w, dec)
     advance = (t + d) if roller else 2 * t
-    return {"x": l + x + q * advance, "velocity": v, "acceleration": a, "advance": float(advance),
-            "limit_angles": (g1, None if roller else g2)}
+    return PaperEntry(x=l + x + q * advance, velocity=v, acceleration=a, advance=float(advance),
+                      limit_angles=(g1, None if roller else g2))

@@ -66,6 +66,7 @@ from numpy.typing import ArrayLike
 from .._roots import brentq  # scipy.optimize.brentq, bit for bit, without importing scipy.optimize
 from .._typing import FloatOrArray
 from ..errors import InfeasibleError
+from .histories import RodEntry, TautEntry
 
 __all__ = [
     "GuideEnd",
@@ -276,7 +277,7 @@ def taut_entry(
     angular_velocity: float,
     guide: GuideEnd | None = None,
     seats: np.ndarray | None = None,
-) -> dict[str, Any]:
+) -> TautEntry:
     r"""Position, velocity and acceleration of the chain for the taut-span mechanism.
 
     .. math::
@@ -346,17 +347,8 @@ def taut_entry(
         dm = -us
         ddm = (R * R - us * us) / D + (ux * sx + uy * sy)
     span = None if guide is None else D
-    return {
-        "span": span,
-        "x": m - m0,
-        "velocity": w * dm,
-        "acceleration": w * w * ddm,
-        "y": sy,
-        "vy": w * spy,
-        "ay": -w * w * sy,
-        "k": k,
-        "seats": seats,
-    }
+    return TautEntry(x=m - m0, velocity=w * dm, acceleration=w * w * ddm, span=span, y=sy, vy=w * spy,
+                     ay=-w * w * sy, k=k, seats=seats)
 
 
 def _free_m0(poly: WheelPolygon, seats: np.ndarray) -> float:
@@ -439,7 +431,7 @@ def rod_entry(
     guide: GuideEnd,
     schedule: RodSchedule,
     continuous: bool = True,
-) -> dict[str, Any]:
+) -> RodEntry:
     r"""Position, velocity and acceleration for the rod (slider) mechanism.
 
     Closure ``F(X, φ) = (X - S_x)^2 + (H - S_y)^2 - L^2 = 0`` solved for the slider
@@ -525,10 +517,5 @@ def rod_entry(
     e2 = (h * sppy - spy * spy - e1 * e1) / e
     x = gx - (sx + e) + offs[interval] - x_start + q * advance
     w = angular_velocity
-    return {
-        "x": x,
-        "velocity": -w * (spx + e1),
-        "acceleration": -w * w * (sppx + e2),
-        "advance": advance,
-        "k": ks[interval],
-    }
+    return RodEntry(x=x, velocity=-w * (spx + e1), acceleration=-w * w * (sppx + e2), advance=advance,
+                    k=ks[interval])

@@ -6,6 +6,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
+from ..units import angular_velocity_to_rpm, rpm_to_angular_velocity
 from ._axes import figure_of
 
 if TYPE_CHECKING:
@@ -222,13 +223,12 @@ def rating_plot(result: ChainRating | float, teeth: int | None = None, *, strand
     else:
         fig = figure_of(ax)
     k2 = S.multi_strand_factor(strands)
-    rpm_to_w = 2 * np.pi / 60
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", ValidityRangeWarning)
-        n0 = float(S.galling_speed(pitch, teeth, 0.0)) / rpm_to_w
+        n0 = angular_velocity_to_rpm(float(S.galling_speed(pitch, teeth, 0.0)))
         lo, hi = speed_range if speed_range is not None else (10.0, min(max(1.05 * n0, 100.0), 20000.0))
         rpm = np.geomspace(lo, hi, 400)
-        w = rpm * rpm_to_w
+        w = rpm_to_angular_velocity(rpm)
         h1 = k2 * S.ansi_link_plate_power(teeth, w, pitch, plate_constant) / 1e3
         h2 = k2 * S.ansi_roller_bushing_power(teeth, w, pitch, roller_constant) / 1e3
         hg = k2 * S.galling_power(pitch, teeth, w) / 1e3
@@ -263,7 +263,7 @@ def rating_plot(result: ChainRating | float, teeth: int | None = None, *, strand
         ax.fill_between(rpm, bottom, top, where=shown, facecolor="none", hatch="///",
                         edgecolor="tab:red", lw=0, alpha=0.35, label="galling region (C')")
     if operating is not None:
-        ax.loglog(operating[0] / rpm_to_w, operating[1] / 1e3, "o", color="tab:red", mec="k", ms=8,
+        ax.loglog(angular_velocity_to_rpm(operating[0]), operating[1] / 1e3, "o", color="tab:red", mec="k", ms=8,
                   label="operating point", zorder=5)
     ax.set_xlim(lo, hi)
     ax.set_ylim(ymin, ymax)

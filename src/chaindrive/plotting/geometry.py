@@ -112,10 +112,16 @@ def geometry_plot(
     r = outline.pitch_radius * mm
     ax.plot(r * np.cos(t), r * np.sin(t), "r-.", lw=0.8, label=f"pitch circle Ø{2 * r:.2f} mm", zorder=2)
     styles = ["--", ":", (0, (5, 1, 1, 1))]
+    nominal_root = None  # a sprocket's ISO 606 df = d − d1, against the drawn gap bottom d − 2 ri
+    if not isinstance(wheel, Outline) and hasattr(wheel, "dimensions"):
+        nominal_root = getattr(wheel.dimensions(), "root_diameter", None)
     for i, (name, rad) in enumerate(outline.circles.items()):
         rr = float(rad) * mm
-        ax.plot(rr * np.cos(t), rr * np.sin(t), color="grey", ls=styles[i % 3], lw=0.7,
-                label=f"{name.lower()} circle Ø{2 * rr:.2f} mm", zorder=2)
+        label = f"{name.lower()} circle Ø{2 * rr:.2f} mm"
+        if name == "ROOT" and nominal_root is not None and abs(2 * rr - nominal_root * mm) > 0.005:
+            label = (f"gap bottom of the drawn form Ø{2 * rr:.2f} mm "
+                     f"(ISO 606 root diameter df = {nominal_root * mm:.2f} mm)")
+        ax.plot(rr * np.cos(t), rr * np.sin(t), color="grey", ls=styles[i % 3], lw=0.7, label=label, zorder=2)
     c = np.asarray(outline.centres) * mm
     ax.plot(c[:, 0], c[:, 1], "g+", ms=8, label="seat / pin / pocket centres", zorder=4)
     if chain and not isinstance(wheel, Outline):
@@ -130,5 +136,8 @@ def geometry_plot(
         span = 2.2 * np.pi * rmax / max(len(c), 1)
         ax.set_xlim(-span, span)
         ax.set_ylim(r - span, r + 0.8 * span)
-    ax.legend(loc="lower right" if not detail else "lower center", fontsize=8)
+    # below the drawing, never over the teeth
+    ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.09), ncol=2, fontsize=8, frameon=False)
+    if fig.get_layout_engine() is None and ax is fig.axes[0] and len(fig.axes) == 1:
+        fig.tight_layout()
     return fig

@@ -11,7 +11,7 @@ if TYPE_CHECKING:  # matplotlib is an optional extra
     from matplotlib.axes import Axes
     from matplotlib.figure import Figure
 
-    from ..drive.self_regulating import SelfRegulatingDriveResult
+    from ..self_regulating import SelfRegulatingDriveResult
 
 __all__ = ["self_regulating_plot"]
 
@@ -21,7 +21,7 @@ def self_regulating_plot(result: SelfRegulatingDriveResult, *, ax: Sequence[Axes
 
     Parameters
     ----------
-    result : chaindrive.drive.self_regulating.SelfRegulatingDriveResult
+    result : chaindrive.self_regulating.SelfRegulatingDriveResult
     ax : sequence of four or six matplotlib Axes, optional
         A new figure if omitted: 2 × 2, or 2 × 3 when the result has the carrier's
         natural frequency.
@@ -43,7 +43,7 @@ def self_regulating_plot(result: SelfRegulatingDriveResult, *, ax: Sequence[Axes
 
     Examples
     --------
-    >>> from chaindrive.drive.self_regulating import self_regulating_drive
+    >>> from chaindrive.self_regulating import self_regulating_drive
     >>> r = self_regulating_drive(pitch=0.0254, teeth_carrier=19, teeth_fixed=38,
     ...     carrier_centre=(0.6, 0.0), fixed_centre=(0.0, 0.0), links=76, torque=300.0,
     ...     carrier_driving=True, mass_per_length=2.7, pivot=(0.66, -0.045), weight=400.0,

@@ -134,6 +134,6 @@ def pin_bending_plot(result: Iterable[PinBendingResult], *, ax: Axes | None = No
         a.legend(fontsize=8, loc="best")
         a.grid(True, alpha=0.3)
     axes[-1].set_xlabel("position along the pin [mm] (row centres at 0, pt, 2pt …)")
-    axes[0].set_title(f"Multi-row chain pin under {load / 1e3:g} kN (Euler–Bernoulli beam, Garshniev & Maksymovych paper 3)")
+    axes[0].set_title(f"Multi-row chain pin under {load / 1e3:g} kN (Euler–Bernoulli beam, Vikulov)")
     fig.tight_layout()
     return fig

@@ -6,6 +6,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
+from ..units import angular_velocity_to_rpm, rpm_to_angular_velocity
 from ._axes import figure_of
 
 if TYPE_CHECKING:
@@ -16,8 +17,6 @@ if TYPE_CHECKING:
 
 __all__ = ["campbell_plot", "resonance_map_plot"]
 
-_RPM = 60.0 / (2.0 * np.pi)  # rad/s -> rpm
-_HZ = 1.0 / (2.0 * np.pi)  # rad/s -> Hz
 
 
 def _runs(mask: np.ndarray) -> list[tuple[int, int]]:
@@ -40,21 +39,25 @@ def campbell_plot(result: CampbellResult, *, ax: Axes | None = None) -> Figure:
     Returns
     -------
     matplotlib.figure.Figure
-        Speed in rpm on the horizontal axis, frequency in Hz on the vertical one, fitted
-        to the natural frequencies (30 % headroom; an excitation band lying wholly above
-        is named in the legend with its range); the forbidden band
-        0.7 ω_j <= P <= 1.4 ω_j of every excitation shaded; the speeds where a natural
-        frequency lies in a band shaded as red vertical bands over the whole height;
-        the legend outside the data, right of the axes.
+        The driving sprocket's speed ω₁ in rad/s on the horizontal axis (rpm on a second
+        axis above), the frequencies in rad/s on the vertical one, so that an excitation
+        ``k·ω₁`` is a line of slope ``k`` and the check compares the numbers plotted (the
+        tensioner paper states its criterion P/ω in rad/s). The plot is fitted to the
+        natural frequencies (30 % headroom; an excitation band lying wholly above is named
+        in the legend with its range); the forbidden band 0.7 ω_j <= P <= 1.4 ω_j of every
+        excitation lightly shaded in the excitation's colour; the speeds where a natural
+        frequency lies in a band tinted red over the whole height (named in the legend);
+        each natural frequency labelled with its value, or its range when it varies with
+        speed; the legend outside the data, right of the axes.
 
     Examples
     --------
     >>> from chaindrive.vibration import TensionerSpan, campbell
     >>> s = TensionerSpan(2000.0, 2.6, 0.8, 0.8, 0.35, 0.35, 3.0, 5e4)
     >>> fig = campbell_plot(campbell(s, (5.0, 60.0), ratio=2.5, teeth=17, speeds=50))
-    >>> fig.axes[0].get_xlabel()
-    'driving sprocket speed n₁ [rpm]'
-    >>> bool(fig.axes[0].get_ylim()[1] < 40.0)  # fitted to P1...P3 (15-23 Hz), not the meshing band
+    >>> fig.axes[0].get_xlabel(), fig.axes[0].get_ylabel()
+    ('driving sprocket speed ω₁ [rad/s]', 'frequency [rad/s]')
+    >>> bool(fig.axes[0].get_ylim()[1] < 250.0)  # fitted to P1...P3 (94-145 rad/s), not the meshing band
     True
 
     References
@@ -68,42 +71,45 @@ def campbell_plot(result: CampbellResult, *, ax: Axes | None = None) -> Figure:
     else:
         fig = figure_of(ax)
     w = np.asarray(result.speed, dtype=float)
-    x = w * _RPM
+    x = w
     p = np.asarray(result.natural_frequencies, dtype=float)
     if p.ndim == 1:
         p = p[:, None]
     lo, hi = result.band
     colors = plt.rcParams["axes.prop_cycle"].by_key()["color"]
-    ymax = 1.3 * float(np.max(p)) * _HZ
+    ymax = 1.3 * float(np.max(p))
     for j, (name, k) in enumerate(zip(result.excitation_names, result.excitation_multipliers, strict=True)):
         col = colors[(1, 4, 5, 9, 8, 6)[j % 6] % len(colors)]  # red is kept for the forbidden speeds
-        f = k * w * _HZ
+        f = k * w
         above = lo * float(f.min()) > ymax
-        where = f" (above the plot: {lo * f.min():.3g}–{hi * f.max():.3g} Hz)" if above else ""
-        ax.fill_between(x, lo * f, hi * f, color=col, alpha=0.18, lw=0)
-        ax.plot(x, f, color=col, lw=1.4, ls="--", label=f"excitation: {name} ({k:g}·ω₁){where}")
+        where = f" (above the plot: {lo * f.min():.3g}–{hi * f.max():.3g} rad/s)" if above else ""
+        ax.fill_between(x, lo * f, hi * f, color=col, alpha=0.12, lw=0)
+        ax.plot(x, f, color=col, lw=1.4, ls="--", label=f"excitation {name}: {k:g}·ω₁{where}")
     mode_colors = ["black", "navy", "darkgreen", "purple", "saddlebrown", "teal"]
     for i in range(p.shape[1]):
         col = mode_colors[i % len(mode_colors)]
-        ax.plot(x, p[:, i] * _HZ, color=col, lw=2.0, ls=["-", "-.", ":"][i] if i < 3 else "-",
-                label=f"natural frequency P{i + 1} ({p[0, i] * _HZ:.3g} Hz at {x[0]:.0f} rpm)")
+        low, high = float(np.min(p[:, i])), float(np.max(p[:, i]))
+        value = f"{low:.3g} rad/s" if high - low <= 1e-3 * high else f"{low:.3g}…{high:.3g} rad/s over the speeds"
+        ax.plot(x, p[:, i], color=col, lw=2.0, ls=["-", "-.", ":"][i] if i < 3 else "-",
+                label=f"natural frequency P{i + 1} = {value}")
     bad = np.asarray(result.min_margin) <= 0
     step = float(x[1] - x[0]) if x.size > 1 else 0.0
     for n, (a, b) in enumerate(_runs(bad)):
         x0, x1 = max(x[0], x[a] - step / 2), min(x[-1], x[b] + step / 2)
-        ax.axvspan(x0, x1, facecolor="red", alpha=0.05, lw=0, zorder=0)
-        ax.axvspan(x0, x1, facecolor="none", edgecolor="red", hatch="//", lw=0, alpha=0.22, zorder=0,
-                   label="forbidden speeds: some P_i in a band" if n == 0 else None)
-        ax.axvspan(x0, x1, ymin=0.0, ymax=0.025, color="red", lw=0, zorder=4)  # on the speed axis
+        ax.axvspan(x0, x1, facecolor="red", alpha=0.07, lw=0, zorder=0,
+                   label="forbidden speeds: a P_i inside a band" if n == 0 else None)
     if result.design_speed is not None:
-        ax.axvline(result.design_speed * _RPM, color="0.3", lw=1, ls=":",
-                   label=f"design speed {result.design_speed * _RPM:.0f} rpm")
+        ax.axvline(result.design_speed, color="0.3", lw=1, ls=":",
+                   label=f"design speed {result.design_speed:.3g} rad/s "
+                         f"({angular_velocity_to_rpm(result.design_speed):.0f} rpm)")
     ax.set_xlim(x[0], x[-1])
     ax.set_ylim(0, ymax)
-    ax.set_xlabel("driving sprocket speed n₁ [rpm]")
-    ax.set_ylabel("frequency [Hz]")
+    ax.set_xlabel("driving sprocket speed ω₁ [rad/s]")
+    ax.set_ylabel("frequency [rad/s]")
+    top = ax.secondary_xaxis("top", functions=(angular_velocity_to_rpm, rpm_to_angular_velocity))
+    top.set_xlabel("n₁ [rpm]")
     ax.set_title("Campbell diagram: slack span with tensioner (the tensioner paper)\n"
-                 f"shaded round each excitation: forbidden {lo:g} ≤ P/ω ≤ {hi:g}", fontsize=11)
+                 f"shaded round each excitation: forbidden {lo:g} ≤ P/ω ≤ {hi:g}", fontsize=10)
     ax.grid(True, alpha=0.3)
     ax.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), borderaxespad=0.0, fontsize=8, framealpha=0.9)
     if fig.get_layout_engine() is None:
@@ -169,10 +175,10 @@ def resonance_map_plot(result: ResonanceMapResult, *, ax: Axes | None = None) ->
     ax.set_xlabel("tensioner stiffness C reduced to its axis [kN/m]")
     ax.set_ylabel("tensioner mass m reduced to its axis [kg]")
     lo, hi = result.speed_range
-    ax.set_title("Resonance map (the tensioner paper): first natural frequencies vs "
-                 f"{', '.join(result.excitation_names)}\n"
-                 f"over n₁ = {lo * 60 / (2 * np.pi):.0f}…{hi * 60 / (2 * np.pi):.0f} rpm "
-                 f"({result.speeds} speeds)", fontsize=10)
+    ax.set_title("Resonance map (the tensioner paper)\n"
+                 f"natural frequencies against {len(result.excitation_names)} excitations over "
+                 f"ω₁ = {lo:.3g}…{hi:.3g} rad/s ({angular_velocity_to_rpm(lo):.0f}…"
+                 f"{angular_velocity_to_rpm(hi):.0f} rpm, {result.speeds} speeds)", fontsize=10)
     ax.legend(loc="lower left", fontsize=8, framealpha=0.9)
     fig.tight_layout()
     return fig

@@ -42,7 +42,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 from numpy.typing import ArrayLike
 
-from .._results import Result
+from .._results import Result, quantity
 from ..errors import ConvergenceError, InfeasibleError, UnknownNameError
 from . import _kernel as K
 from .model import SimulationModel, iso_flank
@@ -777,7 +777,7 @@ def _lead_the_loaded_wheel(model, wheel, torque, wp, theta, solve):
 
 
 # ---------------------------------------------------------------------------- results
-@dataclass
+@dataclass(frozen=True)
 class SimulationResult(Result):
     """Time histories of a simulation (SI units), sampled every ``record_every`` steps.
 
@@ -819,29 +819,29 @@ class SimulationResult(Result):
         Start and end points of the guides' roller surfaces [m].
     """
 
-    time: np.ndarray
-    probe_points: np.ndarray
-    chain_velocity: np.ndarray
-    tension: np.ndarray
-    contact_force: np.ndarray
-    wheel_angle: np.ndarray
-    wheel_speed: np.ndarray
-    wheel_torque: np.ndarray
-    tensioner_position: np.ndarray
-    positions: np.ndarray
-    energy: np.ndarray
-    wheel_centres: np.ndarray
-    pitch_radii: np.ndarray
-    teeth: np.ndarray
-    tight_span: np.ndarray
-    slack_span: np.ndarray
-    pitch: float
-    roller_radius: float
-    dt: float
-    steps: int
-    wall_time: float
-    assembly_time: float
-    guide_segments: np.ndarray = field(default_factory=lambda: np.zeros((0, 2, 2)))
+    time: np.ndarray = quantity("s")
+    probe_points: np.ndarray = quantity("m")
+    chain_velocity: np.ndarray = quantity("m/s")
+    tension: np.ndarray = quantity("N")
+    contact_force: np.ndarray = quantity("N")
+    wheel_angle: np.ndarray = quantity("rad")
+    wheel_speed: np.ndarray = quantity("rad/s")
+    wheel_torque: np.ndarray = quantity("N*m")
+    tensioner_position: np.ndarray = quantity("m")
+    positions: np.ndarray = quantity("m")
+    energy: np.ndarray = quantity("J")
+    wheel_centres: np.ndarray = quantity("m")
+    pitch_radii: np.ndarray = quantity("m")
+    teeth: np.ndarray = quantity("1")
+    tight_span: np.ndarray = quantity("m")
+    slack_span: np.ndarray = quantity("m")
+    pitch: float = quantity("m")
+    roller_radius: float = quantity("m")
+    dt: float = quantity("s")
+    steps: int = quantity("1")
+    wall_time: float = quantity("s")
+    assembly_time: float = quantity("s")
+    guide_segments: np.ndarray = quantity("m", default_factory=lambda: np.zeros((0, 2, 2)))
     summary: dict = field(default_factory=dict)
     if TYPE_CHECKING:  # set by simulate(); at run time not a dataclass field (not saved)
         final_state: State = field(init=False)
@@ -882,6 +882,28 @@ class SimulationResult(Result):
         from ..plotting.simulation import simulation_plot
 
         return simulation_plot(self, ax=ax)
+
+
+#: Every key of :attr:`SimulationResult.summary`: its label and SI unit ("1": a count or
+#: a ratio), for presenters (the studio's simulation page).
+SUMMARY_QUANTITIES: dict[str, tuple[str, str]] = {
+    "duration": ("simulated time", "s"),
+    "dt": ("time step", "s"),
+    "steps": ("time steps", "1"),
+    "wall_time": ("computing time", "s"),
+    "link_steps_per_second": ("link-steps per second of computing", "1/s"),
+    "wall_seconds_per_simulated_second": ("computing seconds per simulated second", "1"),
+    "steady_from": ("averages taken from", "s"),
+    "tight_side_tension_mean": ("tight-side tension, mean", "N"),
+    "tight_side_tension_max": ("tight-side tension, maximum", "N"),
+    "slack_side_tension_mean": ("slack-side tension, mean", "N"),
+    "max_link_tension": ("largest link tension", "N"),
+    "max_contact_force": ("largest contact force", "N"),
+    "wheel_speed_mean": ("wheel speeds, mean", "rad/s"),
+    "chain_velocity_mean": ("chain speed at the probes, mean", "m/s"),
+    "chain_velocity_max": ("chain speed at the probes, maximum", "m/s"),
+    "chain_velocity_min": ("chain speed at the probes, minimum", "m/s"),
+}
 
 
 def _summary(res: SimulationResult, settle: float) -> dict:
@@ -1031,10 +1053,10 @@ def simulate(model: SimulationModel, duration: float, *, dt: float | None = None
         tight_span=np.array([p1, p2]), slack_span=np.array(slack_span(model, state)), pitch=model.pitch, roller_radius=model.roller_radius,
         dt=dt, steps=nsteps, wall_time=wall, assembly_time=state.relax_time,
         guide_segments=np.array([[g.start, g.end] for g in model.guides], float).reshape(-1, 2, 2))
-    res.summary = _summary(res, state.time + 0.5 * duration if settle is None else settle)
+    object.__setattr__(res, "summary", _summary(res, state.time + 0.5 * duration if settle is None else settle))  # frozen
     #: state at the end of the run (not a dataclass field: not saved)
-    res.final_state = State(pos, vel, ws, wp, state.gd, par, state.relax_time,
-                            state.relax_steps, state.time + nsteps * dt)  # (set after construction: not a field)
+    object.__setattr__(res, "final_state", State(pos, vel, ws, wp, state.gd, par, state.relax_time,
+                                                 state.relax_steps, state.time + nsteps * dt))  # not a field
     return res
 
 

@@ -7,7 +7,7 @@ hertz
 skew
     Roller–tooth contact with skew of the roller axis (Garshniev & Maksymovych, paper 2), life vs skew.
 fretting
-    Fretting latent period (Garshniev & Maksymovych, paper 3) and the multi-row pin as a beam.
+    Fretting latent period (Vikulov, Penza) and the multi-row pin as a beam.
 track_tooth
     Tooth of a track drive wheel in bending and contact (Sharipov).
 bolts

@@ -1,4 +1,4 @@
-"""Fretting of multi-row roller chains: latent period and pin bending (Vikulov, paper 3).
+"""Fretting of multi-row roller chains: latent period and pin bending (Vikulov).
 
 Vikulov (Vikulov, Penza) takes the latent period of fretting as the criterion of
 fretting resistance,
@@ -71,7 +71,7 @@ def _out(x: ArrayLike) -> FloatOrArray:
 @finite_guard
 def fretting_latent_period(roughness: ArrayLike, slip_amplitude: ArrayLike, normal_load: ArrayLike, frequency: ArrayLike,
                            latent_coefficient: ArrayLike, decay_coefficient: ArrayLike) -> FloatOrArray:
-    r"""Latent period of fretting, Vikulov paper 3 eq. (1), with the sign made explicit.
+    r"""Latent period of fretting, Vikulov eq. (1), with the sign made explicit.
 
     .. math:: \tau = K_1 R_a \exp\left(-\frac{k_2 A N f}{R_a}\right),\qquad k_2 = -K_2 > 0
 
@@ -104,7 +104,7 @@ def fretting_latent_period(roughness: ArrayLike, slip_amplitude: ArrayLike, norm
 
     References
     ----------
-    Vikulov, paper 3, eq. (1) (Vikulov, after his refs. [1, 3]); sign corrected as
+    Vikulov, eq. (1) (after his refs. [1, 3]); sign corrected as
     described in the module docstring.
 
     Examples
@@ -434,7 +434,7 @@ def fretting_comparison(pin: MultiRowPin, load_amplitude: ArrayLike, roughness: 
 
     References
     ----------
-    Vikulov, paper 3, eq. (1) and conclusions.
+    Vikulov, eq. (1) and conclusions.
 
     Examples
     --------

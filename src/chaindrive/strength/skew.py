@@ -369,7 +369,7 @@ def roller_contact_stress(
     *,
     contact: str = "concave",
     max_skew: ArrayLike = 0.0,
-    wear_factor: float = 0.65,
+    wear_factor: ArrayLike = 0.65,
     pitch: float | None = None,
     gamma: float | None = None,
     elastic_modulus: float = STEEL_ELASTIC_MODULUS,
@@ -402,7 +402,7 @@ def roller_contact_stress(
         Roller in the concave seat (default) or on a convex flank.
     max_skew : float or array_like
         Largest measured skew ``φ_p,max`` [rad] (:func:`skew_from_measurement`).
-    wear_factor : float
+    wear_factor : float or array_like
         ``K_φ`` [-], the paper's range 0.6…0.7.
     pitch : float, optional
         Chain pitch [m], used for ``γ`` (:func:`skew_gamma`) when ``gamma`` is None.
@@ -551,7 +551,7 @@ class RollerToothContact:
                 raise InputError("length (roller length > 0 m) is needed: the chain has no inner width")
         return cls(chain.pitch, d1, seat_radius, length, contact)
 
-    def stress(self, load: ArrayLike, *, max_skew: ArrayLike = 0.0, wear_factor: float = 0.65,
+    def stress(self, load: ArrayLike, *, max_skew: ArrayLike = 0.0, wear_factor: ArrayLike = 0.65,
                outside: str = "warn") -> RollerContactResult:
         """Contact stress for ``load`` [N] and ``max_skew`` [rad]; see :func:`roller_contact_stress`."""
         return roller_contact_stress(

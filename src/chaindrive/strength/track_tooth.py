@@ -71,7 +71,18 @@ def _out(x: ArrayLike) -> FloatOrArray:
 def track_design_force(weight: ArrayLike, adhesion: ArrayLike = 1.0, rims: int = 1) -> FloatOrArray:
     r"""Design force on one tooth of a track drive wheel (Sharipov).
 
-    .. math:: P_Р = \frac{0.65\, G_T\, \varphi}{i}
+    .. math:: P_Р = \frac{P}{i},\qquad P = 0.65\, G_T\, \varphi
+
+    The text (p. 34): «Расчетное усилие определяется из условия максимального
+    сцепления гусеницы с грунтом и передачи всего усилия одним зубом: P_Р = P / i,
+    где P = 0,65 G_T φ; i — число зубчатых венцов у ведущего колеса (i = 1 у
+    одновенцового колеса и i = 2 у двухвенцового). Здесь φ = 1,0.» — the design force
+    follows from the largest adhesion of *the track* with the ground, the whole force
+    passed by one tooth (of each rim). So ``P`` is the force of one track (0.65 of the
+    tractor's weight: the share one track can carry when the load shifts to it) and
+    ``i`` counts the toothed rims of *one* drive wheel, not the tracks: a double-rim
+    wheel shares ``P`` between two teeth, one per rim. The drive wheel's design torque is
+    ``P R_о`` whatever ``i`` is.
 
     Parameters
     ----------
@@ -276,7 +287,11 @@ class TrackToothResult(Result):
     ``design_force`` P_Р [N], ``root_thickness`` s [m], ``lever_arm`` h [m],
     ``bending_stress`` [Pa], ``contact_stress`` [Pa], ``reduced_radius`` ρ [m],
     ``bending_safety`` and ``contact_safety`` allowable/actual [-] (None without an
-    allowable), ``passes`` all safety factors >= 1, ``hardness`` [HRC], ``sources``.
+    allowable), ``passes`` all safety factors >= 1, ``hardness`` [HRC], ``sources``;
+    ``wheel_force`` ``P = 0.65 G_T φ``, the adhesion force of the track the wheel
+    drives [N]; ``rims`` ``i``; ``pitch_radius`` ``R_о`` [m]; ``design_torque``
+    ``P R_о``, the torque on the drive wheel at full adhesion [N·m]; ``rim_torque``
+    ``P_Р R_о``, the torque one rim passes to the hub (its bolts) [N·m].
     """
 
     design_force: float = quantity("N")
@@ -290,6 +305,11 @@ class TrackToothResult(Result):
     hardness: float | None = quantity("HRC")
     passes: bool
     sources: dict[str, str]
+    wheel_force: float = quantity("N", default=0.0)
+    rims: int = quantity("1", default=1)
+    pitch_radius: float = quantity("m", default=0.0)
+    design_torque: float = quantity("N*m", default=0.0)
+    rim_torque: float = quantity("N*m", default=0.0)
 
 
 @finite_guard
@@ -338,11 +358,15 @@ def track_tooth_check(wheel: TrackDriveWheel, weight: float, tooth_width: float,
     fb = None if allowable_bending is None else float(check_positive("allowable_bending", allowable_bending, "Pa")) / sb
     fc = None if allowable_contact is None else float(check_positive("allowable_contact", allowable_contact, "Pa")) / sh
     passes = all(f is None or f >= 1.0 for f in (fb, fc))
+    r0 = float(d.pitch_radius)
     return TrackToothResult(
         design_force=p, root_thickness=s, lever_arm=h, bending_stress=sb, contact_stress=sh,
         reduced_radius=rho, bending_safety=fb, contact_safety=fc, hardness=hrc, passes=passes,
+        wheel_force=p * int(rims), rims=int(rims), pitch_radius=r0, design_torque=p * int(rims) * r0,
+        rim_torque=p * r0,
         sources={
-            "design_force": "Sharipov p. 34: P_P = 0.65 G_T phi / i",
+            "design_force": "Sharipov p. 34: P_P = P / i, P = 0.65 G_T phi, i the toothed rims of the wheel",
+            "design_torque": "P R_o: the whole track's adhesion force on the drive wheel (all its rims)",
             "bending_stress": "cantilever (Lewis-type) sigma = K_t 6 P h / (b s^2), Shigley 9th ed. 14-1",
             "section": "s = t - 2 r_seat on the pin-centre line, h = R_tip - R_o cos(pi/z)",
             "contact_stress": "Hertz line contact, Johnson 1985 4.3 eq. (4.45)",

@@ -11,13 +11,13 @@ from .plan import MAXIMUM_VARIANTS, Variable, full_grid, latin_hypercube, monte_
 from .spec import Study, load_study, parse_study
 
 __all__ = ["MAXIMUM_VARIANTS", "Variable", "full_grid", "latin_hypercube", "monte_carlo",
-           "plan_rows", "Study", "load_study", "parse_study", "run_study", "read_results",
+           "plan_rows", "Study", "load_study", "parse_study", "run_study", "read_results", "read_dataframe",
            "summarize"]
 
 
 def __getattr__(name: str):
     # the runner and the summary import dask / pyarrow / matplotlib only when used
-    if name in ("run_study", "read_results"):
+    if name in ("run_study", "read_results", "read_dataframe"):
         from . import run
 
         return getattr(run, name)

@@ -45,7 +45,7 @@ __all__ = ["Variable", "PLANS", "MAXIMUM_VARIANTS", "full_grid", "latin_hypercub
 
 #: Largest number of variants one study may have (a bigger design space is split into
 #: several studies, each with its own output folder).
-MAXIMUM_VARIANTS = 200_000
+MAXIMUM_VARIANTS = 2_000_000
 
 #: Plan kinds, by name.
 PLANS = Registry("plan")

@@ -33,15 +33,18 @@ from ..errors import InfeasibleError, InputError
 from .spec import MAXIMUM_BATCH_SIZE, Study, set_path
 
 if TYPE_CHECKING:
+    import pandas as pd
     import pyarrow as pa
 
     from ..drive.model import Drive
 
-__all__ = ["analysis_result", "lookup", "evaluate_variant", "run_batch", "run_study",
+__all__ = ["analysis_result", "lookup", "evaluate_variant", "run_batch", "run_study", "read_dataframe",
            "read_results", "existing_keys", "StudyRun", "DEFAULT_BATCH_SIZE"]
 
-#: Largest default batch: a batch is the unit of progress and of what a lost worker loses.
-DEFAULT_BATCH_SIZE = 50
+#: Largest default batch: a batch is the unit of progress and of what a lost worker loses, and
+#: its variants are evaluated together (chaindrive.study.batch: the fixed cost of a batch is a
+#: few project reads and one analysis of the base drive, about 20 ms).
+DEFAULT_BATCH_SIZE = 5000
 
 _META_KEY = b"chaindrive.study"
 
@@ -86,12 +89,35 @@ def analysis_result(drive: Drive, parts: Sequence[str] = ()) -> dict[str, Any]:
     >>> round(r["loads"]["effective_pull"]), r["contact"]
     (1934, None)
     """
-    from ..analysis import PARTS, analyze_drive
+    from ..analysis import analyze_drive
+    from ..analysis.parts import part_names
 
     include = None
     if parts and not set(parts) & {"passed", "checks", "warnings"}:
-        include = [p for p in parts if p in PARTS] or None
+        names = part_names()
+        include = [p for p in parts if p in names] or None
     return analyze_drive(drive, include=include).to_dict()
+
+
+def design_outputs(duty: Any, **options: Any) -> dict[str, Any]:
+    """The design procedure's recommended drive for a duty, as a study row (SI units).
+
+    A study over duties (power, speed, driven machine, ...) evaluates each through
+    :func:`chaindrive.design.design_drive`, the function ``chaindrive select`` and the
+    studio call, so a study gives the same chain, teeth, links and centre distance.
+
+    Examples
+    --------
+    >>> import math
+    >>> from chaindrive.design import Duty
+    >>> row = design_outputs(Duty(11e3, 1460 * math.pi / 30, driven_speed=480 * math.pi / 30,
+    ...                           driven_machine="varying_conveyor", centre_distance=0.6))
+    >>> row["chain"], row["links"]
+    ('12A-1', 104)
+    """
+    from ..design import design_drive
+
+    return design_drive(duty, **options).recommended.summary()
 
 
 def lookup(result: Any, path: str) -> Any:
@@ -223,6 +249,13 @@ def run_batch(batch: Sequence[tuple[int, str, dict]], *, base: dict, outputs: Se
     [(0, 'k0', True), (1, 'k1', False)]
     """
     worker = f"{socket.gethostname()}:{os.getpid()}"
+    if simulation is None:  # the analysis parts of many variants together (chaindrive.study.batch)
+        from .batch import evaluate_batch
+
+        rows = evaluate_batch(base, [inputs for _, _, inputs in batch], outputs, parts=parts)
+        for (number, key, _), row in zip(batch, rows, strict=True):
+            row.update(key=key, variant=number, worker=worker)
+        return rows
     rows = []
     for number, key, inputs in batch:
         row = evaluate_variant(base, inputs, outputs, parts=parts, simulation=simulation)
@@ -399,6 +432,44 @@ class _PartWriter:
 
 
 # --------------------------------------------------------------------------- the runner
+
+
+def read_dataframe(directory: str | Path) -> pd.DataFrame:
+    """All rows of a study folder as a :class:`pandas.DataFrame` with the unit of each column.
+
+    ``df.attrs["units"]`` maps each column to its unit: the inputs in the units of the
+    study file (as stored with the column), the analysis outputs in SI units
+    (:func:`chaindrive.study.summary.output_unit`), the timings in seconds; ``""`` for a
+    count, a ratio, a flag or text. ``df.attrs["study"]`` holds the study's name, inputs
+    and outputs.
+
+    Raises
+    ------
+    InputError
+        No results in the folder.
+    """
+    import pandas
+
+    from .summary import output_unit
+
+    table = read_results(directory)
+    frame = table.to_pandas()
+    units: dict[str, str] = {}
+    meta = json.loads((table.schema.metadata or {}).get(_META_KEY, b"{}").decode("utf-8"))
+    for f in table.schema:
+        stored = (f.metadata or {}).get(b"unit")
+        if stored is not None:
+            units[f.name] = stored.decode("utf-8")
+        elif f.name in ("seconds", "cpu_seconds"):
+            units[f.name] = "s"
+        elif f.name in meta.get("outputs", ()):
+            units[f.name] = output_unit(f.name)
+        else:
+            units[f.name] = ""
+    frame.attrs["units"] = units
+    frame.attrs["study"] = {k: meta[k] for k in ("name", "inputs", "outputs") if k in meta}
+    assert isinstance(frame, pandas.DataFrame)
+    return frame
 
 
 @dataclass

@@ -50,16 +50,28 @@ from pydantic import BaseModel, ConfigDict, Field, ValidationError, field_valida
 from ..errors import InputError
 from .plan import MAXIMUM_VARIANTS, Variable, format_value, plan_rows
 
-__all__ = ["Study", "load_study", "parse_study", "RESULT_PARTS", "MAXIMUM_BATCH_SIZE",
+__all__ = ["Study", "load_study", "parse_study", "RESULT_KEYS", "result_heads", "MAXIMUM_BATCH_SIZE",
            "MAXIMUM_SIMULATION_DURATION", "set_path", "remove_path", "canonical_hash"]
 
-#: Top-level names of the analysis result an output path may start with.
-RESULT_PARTS = ("inputs", "layout", "loads", "slack_sag", "rating", "entry", "vibration",
-                "geometry", "contact", "track_tooth", "wear", "self_regulating", "checks",
-                "warnings", "passed", "simulation")
+#: Top-level names of an analysis result that are not analysis parts.
+RESULT_KEYS = ("inputs", "checks", "warnings", "passed", "simulation")
+
+
+def result_heads() -> tuple[str, ...]:
+    """Top-level names an output path may start with: every declared analysis part
+    (:func:`chaindrive.analysis.parts.part_names`) and :data:`RESULT_KEYS`."""
+    from ..analysis.parts import part_names
+
+    return (RESULT_KEYS[0], *part_names(), *RESULT_KEYS[1:])
+
+
+def __getattr__(name: str) -> Any:
+    if name == "RESULT_PARTS":  # kept for callers of the former constant: a live view
+        return result_heads()
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
 
 #: Largest number of variants sent to a worker as one task.
-MAXIMUM_BATCH_SIZE = 1000
+MAXIMUM_BATCH_SIZE = 20_000
 
 #: Longest simulated time per variant for ``simulation.*`` outputs [s].
 MAXIMUM_SIMULATION_DURATION = 10.0
@@ -84,8 +96,9 @@ class StudySection(_Model):
     def _outputs(cls, value: list[str]) -> list[str]:
         for out in value:
             head = out.split(".", 1)[0]
-            if head not in RESULT_PARTS:
-                raise ValueError(f"output {out!r} must start with one of {', '.join(RESULT_PARTS)}")
+            heads = result_heads()
+            if head not in heads:
+                raise ValueError(f"output {out!r} must start with one of {', '.join(heads)}")
         if len(set(value)) != len(value):
             raise ValueError("outputs must not repeat a path")
         return value

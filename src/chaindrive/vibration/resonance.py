@@ -33,6 +33,7 @@ __all__ = [
     "ReducedTensioner",
     "ResonanceCheck",
     "reduced_tensioner",
+    "POLYGON_EXCITATIONS",
     "excitation_multipliers",
     "excitation_frequencies",
     "resonance_margin",
@@ -137,9 +138,14 @@ def reduced_tensioner(method: str = "sliding", **parameters: float) -> ReducedTe
 
 
 # --------------------------------------------------------------------------- excitation
+#: Excitations of the chain's polygon (chordal action): not among the tensioner paper's
+#: three; judged by the forced response (chaindrive.vibration.excitation), not by the band.
+POLYGON_EXCITATIONS = ("meshing", "link passing")
+
+
 @finite_guard
 def excitation_multipliers(ratio: float = 1.0, teeth: int | None = None, *,
-                           link_chain: bool = False) -> dict[str, float]:
+                           link_chain: bool = False, polygon: bool = False) -> dict[str, float]:
     r"""Exciting frequencies as multiples of the driving sprocket speed ω1.
 
     Parameters
@@ -147,46 +153,61 @@ def excitation_multipliers(ratio: float = 1.0, teeth: int | None = None, *,
     ratio : float
         Transmission ratio u = ω1/ω2 (> 0).
     teeth : int, optional
-        Teeth (pockets) z1 of the driving wheel; adds the meshing excitation.
+        Teeth (pockets) z1 of the driving wheel; adds the unequal-link excitation.
     link_chain : bool
-        Round link chain on a pocket wheel: links pass at 2 z1 ω1, and the unequal
-        link lengths t ± d repeat with the pair of links, at z1 ω1 (half of it).
+        Round link chain on a pocket wheel.
+    polygon : bool
+        Also the polygonal (chordal) action, not in the paper: "meshing" z1 ω1 of a
+        roller chain, "link passing" 2 z1 ω1 of a round link chain (see Notes).
 
     Returns
     -------
     dict
         name -> multiplier k (ω_j = k ω1).
 
-    .. math:: \omega_1,\ \omega_2 = \omega_1/u,\ z_1\omega_1\ (\text{roller}),\
-              2z_1\omega_1 \text{ and } z_1\omega_1\ (\text{round link})
+    .. math:: \omega_1,\ \omega_1/u,\ z_1\omega_1/2\ (\text{roller}) \text{ or } z_1\omega_1\
+              (\text{round link})\ [+\ z_1\omega_1 \text{ or } 2z_1\omega_1]
 
     Notes
     -----
-    Roller chain: the pitch polygon has period 2π/z1 → meshing at z1 ω1. Round link
-    chain with z1 pockets: the bi-regular polygon has 2 z1 sides (t + d, t − d) and
-    period 2π/z1 for a *pair* of links (Dolipiński et al., δ1 + δ2 = 2π/z): each link passes
-    at 2 z1 ω1, the length difference of the two links excites half of that, z1 ω1.
+    The tensioner paper names three sources, and its band 0.7 ≤ P_i/ω_j ≤ 1.4 is stated
+    for them (j = 1, 2, 3): the eccentricity of the driving sprocket (ω1), of the driven
+    sprocket (ω1/u) and the unequal lengths of the links. Roller chain: inner and outer
+    links alternate, so a difference of their pitches (within the length tolerance of
+    ISO 606:2015, 3.4.4) repeats every two pitches, at z1 ω1/2. Round link chain with z1
+    pockets: its hinges form a bi-regular polygon of chords t + d and t − d (Dolipiński
+    et al., eq. 6), unequal lengths repeating every pair of links, at z1 ω1.
+
+    The polygon itself (each chord passing: z1 ω1 for a roller chain, 2 z1 ω1 for a round
+    link chain) is the strongest excitation of a chain span, but the paper does not name
+    it and states no band for it; with the paper's band around both z1 ω1 and 2 z1 ω1 every
+    frequency from 0.7 z1 ω1 to 2.8 z1 ω1 would fail. It is judged by its forced response
+    (:func:`chaindrive.vibration.excitation.span_excitations`).
 
     Examples
     --------
     >>> excitation_multipliers(2.5, 17)
-    {'driving sprocket': 1.0, 'driven sprocket': 0.4, 'meshing': 17.0}
-    >>> excitation_multipliers(2.0, 8, link_chain=True)["link pair (t ± d)"]
-    8.0
+    {'driving sprocket': 1.0, 'driven sprocket': 0.4, 'unequal links (inner/outer)': 8.5}
+    >>> excitation_multipliers(2.0, 8, link_chain=True, polygon=True)
+    {'driving sprocket': 1.0, 'driven sprocket': 0.5, 'link pair (t ± d)': 8.0, 'link passing': 16.0}
 
     References
     ----------
-    the tensioner paper (ω1 = ω, ω2 = ω/u_n, unequal link lengths); Dolipiński et al., eq. (6).
+    the tensioner paper (ω1 = ω, ω2 = ω/u_n, unequal link lengths, the band); Dolipiński et al.,
+    eq. (6); ISO 606:2015, 3.4.4 (chain length tolerance).
     """
     u = float(check_positive("ratio", ratio))
     out = {"driving sprocket": 1.0, "driven sprocket": 1.0 / u}
     if teeth is not None:
         z = int(check_teeth("teeth", teeth))
         if link_chain:
-            out["link passing"] = 2.0 * z
             out["link pair (t ± d)"] = float(z)
+            if polygon:
+                out["link passing"] = 2.0 * z
         else:
-            out["meshing"] = float(z)
+            out["unequal links (inner/outer)"] = z / 2.0
+            if polygon:
+                out["meshing"] = float(z)
     return out
 
 
@@ -226,7 +247,7 @@ def excitation_frequencies(speed: ArrayLike, ratio: float = 1.0, teeth: int | No
     Examples
     --------
     >>> {k: round(v, 3) for k, v in excitation_frequencies(10.0, 2.5, 17).items()}
-    {'driving sprocket': 10.0, 'driven sprocket': 4.0, 'meshing': 170.0}
+    {'driving sprocket': 10.0, 'driven sprocket': 4.0, 'unequal links (inner/outer)': 85.0}
 
     References
     ----------

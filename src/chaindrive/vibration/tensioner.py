@@ -27,6 +27,7 @@ from .._typing import FloatOrArray
 from .._validation import check_nonnegative, check_positive, check_range
 from ..errors import InfeasibleError, InputError
 from ..limits import MAX_MODES
+from .string import transverse_wave_speed
 
 __all__ = [
     "COUPLING_MODELS",
@@ -122,7 +123,7 @@ def span_parameters(
     q = np.asarray(mass_per_length, dtype=float)
     b = np.asarray(angle, dtype=float)
     t = s / np.cos(b)
-    c = np.sqrt(t / q)
+    c = transverse_wave_speed(s, q, b)
     v = np.asarray(chain_speed, dtype=float)
     if np.any(v < 0) or np.any(v >= c):
         raise InfeasibleError("chain_speed must satisfy 0 <= v < c = sqrt(S/(q cos β)) m/s")
@@ -669,7 +670,7 @@ def heavy_tensioner_validity(
     """
     p1 = np.asarray(heavy_tensioner_frequency(tension, mass_per_length, length_1, length_2,
                                               angle_1, angle_2, mass, stiffness, model=model))
-    c1 = np.sqrt(np.asarray(tension) / (np.asarray(mass_per_length) * np.cos(angle_1)))
-    c2 = np.sqrt(np.asarray(tension) / (np.asarray(mass_per_length) * np.cos(angle_2)))
+    c1 = transverse_wave_speed(tension, mass_per_length, angle_1)
+    c2 = transverse_wave_speed(tension, mass_per_length, angle_2)
     out = np.maximum(p1 * np.asarray(length_1) / c1, p1 * np.asarray(length_2) / c2)
     return out if out.ndim else float(out)

@@ -19,7 +19,8 @@ from fastapi.responses import HTMLResponse, JSONResponse, Response
 from ..errors import ChainDriveError
 from .fields import FieldError, FieldSpec, parse_field, parse_integer
 
-__all__ = ["router", "kinematics_result", "crawler_result", "wheel_result", "MAX_POINTS"]
+__all__ = ["router", "kinematics_result", "crawler_result", "wheel_result", "summary_table", "dimension_rows",
+           "workshop_drawing", "simulation_rows", "MAX_POINTS"]
 
 #: Samples per period on the expert pages and in ``/api/kinematics``.
 MAX_POINTS = 5001
@@ -34,12 +35,19 @@ PAGES = {
 
 _SPEED = FieldSpec("rad/s", 0.0, 1000.0, example="5 rad/s")
 _LENGTH = FieldSpec("m", 0.0, 10.0, example="256 mm")
+_ELONGATION = FieldSpec("", 0.0, 0.1, example="0.03")
+_FORCE = FieldSpec("N", 0.0, 1e8, open_minimum=False, example="10 kN")
+_STIFFNESS = FieldSpec("N", 0.0, 1e11, example="5 MN")
+_ANGLE = FieldSpec("rad", 0.0, 1.5707, open_minimum=False, example="15 deg")
 
 DEFAULTS = {
     "kinematics": {"chain": "18x64", "teeth": "8", "speed": "5 rad/s", "guide_end": "256 mm", "model": "exact"},
-    "crawler": {"chain": "", "pitch": "100 mm", "teeth": "8", "speed": "30 rpm"},
+    "crawler": {"chain": "", "pitch": "100 mm", "teeth": "8", "speed": "30 rpm", "stiffness": "",
+                "sprocket_distance": "", "cam_distance": "", "traction_force": "0 N", "tension": "",
+                "cam_face_angle": "0 deg"},
     "pocket-wheel": {"chain": "18x64", "teeth": "8"},
-    "track-wheel": {"pitch": "170 mm", "teeth": "13", "pin_radius": "25 mm", "link": "cast"},
+    "track-wheel": {"pitch": "170 mm", "teeth": "13", "pin_radius": "25 mm", "link": "cast",
+                    "elongation_limit": "0.03"},
     "simulation": {"example": "link", "speed": "5 rad/s", "load": "2000 N*m", "duration": "0.5 s",
                    "frames": "30", "design": ""},
 }
@@ -65,6 +73,141 @@ def _chain(name: str, field: str = "chain"):
         raise FieldError(field, str(exc)) from None
 
 
+_UNIT_TEXT = {"m/s^2": "m/s²", "m^2": "mm²", "1": "", "-": ""}
+
+
+def _unit_text(unit: str) -> str:
+    return _UNIT_TEXT.get(unit, unit)
+
+
+def _shown(value: Any, unit: str, display: str | None = None, scale: float | None = None) -> tuple[str, str]:
+    """A value in its display unit, rounding noise shown as 0 (``scale``: the largest value
+    it is shown with), and the unit's text."""
+    from ..workflows.display import convert, fmt
+    from ..workflows.notebook import tidy
+
+    if value is None:
+        return "—", ""
+    if isinstance(value, (bool, np.bool_)):
+        return ("yes" if value else "no"), ""
+    if unit == "":
+        return fmt(value), ""
+    shown_value, shown_unit = convert(float(value), unit, display)
+    if scale is not None:
+        shown_scale = abs(convert(float(scale), unit, display)[0] or 0.0)
+        shown_value = tidy(shown_value or 0.0, shown_scale)
+    else:
+        shown_value = tidy(shown_value or 0.0)
+    if isinstance(value, (int, np.integer)) and unit == "1":
+        return str(int(value)), ""
+    return fmt(shown_value), _unit_text(shown_unit)
+
+
+def summary_table(summaries: dict[str, dict[str, Any]]) -> dict[str, Any]:
+    """The summaries of several cases as one table: a row per quantity (label and unit from
+    :data:`chaindrive.kinematics.entry.SUMMARY_QUANTITIES`), a column per case.
+
+    Examples
+    --------
+    >>> t = summary_table({"free": {"v_mean": 0.8149, "a_end_left": 7.694e-12, "a_max": 1.025}})
+    >>> t["columns"], t["rows"][0]
+    (['free'], ('mean chain speed', 'm/s', ['0.8149']))
+    >>> [r for r in t["rows"] if r[0].startswith("acceleration just before")][0][2]
+    ['0']
+    """
+    from ..kinematics.entry import SUMMARY_QUANTITIES
+
+    columns = list(summaries)
+    keys = [k for k in SUMMARY_QUANTITIES if any(k in s for s in summaries.values())]
+    # acceleration-like values are compared with the largest acceleration of the case
+    rows = []
+    for key in keys:
+        label, unit = SUMMARY_QUANTITIES[key]
+        cells, shown_unit = [], ""
+        for case in columns:
+            s = summaries[case]
+            value = s.get(key)
+            scale = None
+            if unit == "m/s^2":
+                scale = max(abs(float(s.get(k, 0.0) or 0.0)) for k in ("a_min", "a_max", "a_abs_max") if k in s) or None
+            elif unit == "m/s":
+                scale = abs(float(s.get("v_mean", 0.0) or 0.0)) or None
+            text, u = _shown(value, unit, scale=scale)
+            cells.append(text)
+            shown_unit = u or shown_unit
+        rows.append((label, shown_unit, cells))
+    return {"columns": columns, "rows": rows}
+
+
+def dimension_rows(result: Any) -> list[tuple[str, str, str]]:
+    """(label, value, unit) of every scalar or range field of a dimensions result, in its
+    display unit (labels and units from the result class: :meth:`Result.unit_of`)."""
+    import dataclasses
+
+    rows = []
+    cls = type(result)
+    for f in dataclasses.fields(result):
+        value = getattr(result, f.name)
+        unit = f.metadata.get("unit")
+        label = f.name.replace("_", " ")
+        if isinstance(value, (str, bool, np.bool_)) and unit is None:
+            rows.append((label, _shown(value, "")[0] if not isinstance(value, str) else value, ""))
+            continue
+        if unit is None:
+            continue
+        display = cls.display_unit_of(f.name)
+        if isinstance(value, (tuple, list)) and len(value) == 2:
+            lo, u = _shown(value[0], unit, display)
+            hi, _ = _shown(value[1], unit, display)
+            rows.append((label, f"{lo} … {hi}", u))
+        elif isinstance(value, (int, float, np.integer, np.floating)):
+            text, u = _shown(value, unit, display)
+            rows.append((label, text, u))
+    return rows
+
+
+def _wheel_speed(text: str, *, pitch: float, teeth: int, link_chain: bool) -> float:
+    """The speed field: an angular speed ("5 rad/s", "48 rpm") or the mean chain speed
+    ("0.8 m/s"), as at the command line (:func:`chaindrive.units.parse_wheel_speed`)."""
+    from ..errors import InputError
+    from ..units import parse_wheel_speed
+
+    parse_field("speed", text, FieldSpec("", 0.0, math.inf, example="5 rad/s")) if not text.strip() else None
+    try:
+        omega = parse_wheel_speed(text.strip(), pitch=pitch, teeth=teeth, link_chain=link_chain, field="speed")
+    except InputError as exc:
+        raise FieldError("speed", str(exc).removeprefix("speed: ")) from None
+    return parse_field("speed", f"{omega!r} rad/s", _SPEED)
+
+
+def simulation_rows(summary: dict[str, Any]) -> list[tuple[str, str, str]]:
+    """(label, value, unit) of a simulation summary (labels and units declared with the
+    summary: :data:`chaindrive.simulation.run.SUMMARY_QUANTITIES`); a list of values (one
+    per wheel or probe) is shown as a list; a speed in rad/s with its rpm.
+
+    Examples
+    --------
+    >>> simulation_rows({"tight_side_tension_mean": 12500.0, "wheel_speed_mean": [5.0, 5.0]})
+    [('tight-side tension, mean', '12.5', 'kN'), ('wheel speeds, mean', '5, 5 (47.75, 47.75 rpm)', 'rad/s')]
+    """
+    from ..simulation.run import SUMMARY_QUANTITIES
+
+    rows = []
+    for key, (label, unit) in SUMMARY_QUANTITIES.items():
+        if key not in summary or summary[key] is None:
+            continue
+        value = summary[key]
+        values = value if isinstance(value, list) else [value]
+        if unit == "rad/s":
+            text = ", ".join(_shown(v, "rad/s", "rad/s")[0] for v in values)
+            rpm = ", ".join(_shown(v, "rad/s", "rpm")[0] for v in values)
+            rows.append((label, f"{text} ({rpm} rpm)", "rad/s"))
+            continue
+        cells = [_shown(v, unit) for v in values]
+        rows.append((label, ", ".join(c[0] for c in cells), cells[0][1] if cells else ""))
+    return rows
+
+
 def _line(x: Any, ys: dict[str, np.ndarray], xtitle: str, ytitle: str, title: str) -> dict[str, Any]:
     return {"data": [{"type": "scatter", "mode": "lines", "name": k, "x": np.asarray(x).tolist(),
                       "y": np.asarray(v).tolist(),
@@ -88,7 +231,7 @@ def kinematics_result(state: dict[str, str], points: int = 361) -> dict[str, Any
 
     chain = _chain(state["chain"])
     teeth = parse_integer("teeth", state["teeth"], 3, 150)
-    omega = parse_field("speed", state["speed"], _SPEED)
+    omega = _wheel_speed(state["speed"], pitch=chain.pitch, teeth=teeth, link_chain=chain.is_link_chain)
     l_end = parse_field("guide_end", state["guide_end"], _LENGTH)
     results = {}
     for entry in ("free", "chordal", "tangential"):
@@ -102,6 +245,7 @@ def kinematics_result(state: dict[str, str], points: int = 361) -> dict[str, Any
     phi = np.degrees(next(iter(results.values())).phi)
     return {
         "summaries": {k: r.summary for k, r in results.items()},
+        "table": summary_table({f"{k} entry": r.summary for k, r in results.items()}),
         "plots": [
             _line(phi, {k: r.velocity for k, r in results.items()}, "wheel angle φ [°]",
                   "chain velocity [m/s]", f"{chain.name}, z = {teeth}: chain velocity at the entry"),
@@ -124,15 +268,25 @@ def crawler_result(state: dict[str, str], points: int = 361) -> dict[str, Any]:
 
     pitch = _chain(state["chain"]).pitch if state["chain"].strip() else parse_field("pitch", state["pitch"], _LENGTH)
     teeth = parse_integer("teeth", state["teeth"], 3, 150)
-    omega = parse_field("speed", state["speed"], _SPEED)
+    omega = _wheel_speed(state["speed"], pitch=pitch, teeth=teeth, link_chain=False)
+    cam: dict[str, Any] = {}  # the cam force and the guide reaction, when their inputs are given
+    for key, spec in (("stiffness", _STIFFNESS), ("sprocket_distance", _LENGTH), ("cam_distance", _LENGTH),
+                      ("tension", _FORCE)):
+        if state.get(key, "").strip():
+            cam[key] = parse_field(key, state[key], spec)
+    cam["traction_force"] = parse_field("traction_force", state.get("traction_force") or "0 N", _FORCE)
+    cam["cam_face_angle"] = parse_field("cam_face_angle", state.get("cam_face_angle") or "0 deg", _ANGLE)
     res = {}
-    for name, guide in (("no guide", False), ("tangent guide", True)):
+    for name, guide in (("tangent guide", True), ("no guide", False)):
         try:
-            res[name] = crawler_drive(pitch, teeth, omega, with_guide=guide, points=points)
+            res[name] = crawler_drive(pitch, teeth, omega, with_guide=guide, points=points, **cam)
         except ChainDriveError as exc:
-            raise FieldError("teeth", str(exc)) from None
+            named = [k for k in ("sprocket_distance", "cam_distance", "stiffness", "tension", "traction_force",
+                                 "cam_face_angle") if str(exc).startswith(k) or f" {k} " in str(exc)]
+            raise FieldError(named[0] if named else "teeth", str(exc)) from None
     psi = np.degrees(res["no guide"].psi)
     return {"summaries": {k: r.summary for k, r in res.items()},
+            "table": summary_table({k: r.summary for k, r in res.items()}),
             "plots": [_line(psi, {k: r.velocity for k, r in res.items()}, "sprocket angle ψ [°]",
                             "chain velocity [m/s]", f"Crawler drive chain, t = {pitch * 1e3:g} mm, z = {teeth}")]}
 
@@ -150,15 +304,31 @@ def wheel_result(page: str, state: dict[str, str]) -> dict[str, Any]:
 
     wheel, outline = _wheel(page, state)
     svg = svg_text(outline, title=wheel.label())
-    dims = wheel.dimensions().to_dict()
-    rows = [(k, v) for k, v in dims.items() if isinstance(v, (int, float, str, bool)) or
-            (isinstance(v, list) and len(v) <= 2 and all(isinstance(x, (int, float)) for x in v))]
+    dims = wheel.dimensions()
+    sources = getattr(dims, "sources", None) or {}
     return {"image": "data:image/svg+xml;base64," + base64.b64encode(svg.encode()).decode("ascii"),
-            "dimensions": rows, "label": wheel.label()}
+            "dimensions": dimension_rows(dims), "label": wheel.label(),
+            "sources": list(sources.values()), "drawing": page == "pocket-wheel"}
+
+
+def workshop_drawing(wheel: Any) -> bytes:
+    """The workshop drawing of a sprocket or a pocket wheel as DXF (what ``chaindrive
+    sprocket --dxf`` / ``pocket-wheel --dxf`` write: views, bore, keyway, tables, title block)."""
+    import io
+
+    from ..geometry import PocketWheel
+    from ..geometry.drawing import part_drawing
+    from ..geometry.part import pocket_wheel_part, sprocket_part
+
+    part = pocket_wheel_part(wheel) if isinstance(wheel, PocketWheel) else sprocket_part(wheel)
+    buf = io.StringIO()
+    part_drawing(part).write(buf)
+    return buf.getvalue().encode("utf-8")
 
 
 def wheel_file(page: str, state: dict[str, str], kind: str) -> bytes:
-    """The outline of the wheel of an expert page as DXF (mm, passes ezdxf's audit) or SVG."""
+    """The wheel of an expert page: the workshop drawing (pocket wheel) or the outline
+    (track wheel) as DXF in mm, or the outline as SVG."""
     import io
 
     from ..geometry.export import dxf_document, svg_text
@@ -166,6 +336,8 @@ def wheel_file(page: str, state: dict[str, str], kind: str) -> bytes:
     wheel, outline = _wheel(page, state)
     if kind == "svg":
         return svg_text(outline, title=wheel.label()).encode("utf-8")
+    if page == "pocket-wheel":
+        return workshop_drawing(wheel)
     buf = io.StringIO()
     dxf_document(outline, wheel.label()).write(buf)
     return buf.getvalue().encode("utf-8")
@@ -184,7 +356,10 @@ def _wheel(page: str, state: dict[str, str]):
             wheel = TrackDriveWheel(pitch=parse_field("pitch", state["pitch"], _LENGTH),
                                     teeth=parse_integer("teeth", state["teeth"], 3, 60),
                                     pin_radius=parse_field("pin_radius", state["pin_radius"], _LENGTH),
-                                    link=state["link"])
+                                    link=state["link"],
+                                    elongation_limit=parse_field("elongation_limit",
+                                                                 state.get("elongation_limit") or "0.03",
+                                                                 _ELONGATION))
         outline = wheel.outline()
     except FieldError:
         raise
@@ -201,13 +376,12 @@ def router(ctx: Any) -> APIRouter:
         state = _state(page, dict(request.query_params))
         errors: dict[str, str] = {}
         result = None
-        if request.query_params:
-            try:
-                result = compute(state)
-            except FieldError as exc:
-                errors[exc.field] = exc.message
-            except ChainDriveError as exc:
-                errors[next(iter(state))] = str(exc)
+        try:  # computed when the page opens (the defaults) and at each submission
+            result = compute(state)
+        except FieldError as exc:
+            errors[exc.field] = exc.message
+        except ChainDriveError as exc:
+            errors[next(iter(state))] = str(exc)
         from urllib.parse import urlencode
 
         return ctx.render(request, "expert.html", page=page, pages=PAGES, state=state, errors=errors,

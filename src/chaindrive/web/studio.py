@@ -11,7 +11,6 @@ Routes (the page state is the query string, so a link reproduces a design):
 
 from __future__ import annotations
 
-import io
 import json
 import time
 from pathlib import Path
@@ -23,11 +22,12 @@ from fastapi.responses import HTMLResponse, JSONResponse, RedirectResponse, Resp
 from starlette.datastructures import UploadFile as StarletteUpload
 
 from .._results import jsonable
+from ..analysis.loads import REQUIRED_STATIC_SAFETY
 from ..errors import ChainDriveError, InputError
+from ..units import angular_velocity_to_rpm
 from .design import (
     DEFAULTS,
     FIELDS,
-    MINING_EXAMPLE,
     design_from_state,
     normalise_state,
     service_factor_table,
@@ -42,7 +42,7 @@ DOWNLOADS = {
     "report.html": "Calculation report (HTML, figures inside)",
     "report.pdf": "Calculation report (PDF)",
     "results.json": "Every number of the analysis (JSON, SI units)",
-    "wheel.dxf": "Driving wheel outline (DXF, mm)",
+    "wheel.dxf": "Driving wheel workshop drawing (DXF, mm)",
     "wheel.svg": "Driving wheel outline (SVG, mm)",
 }
 
@@ -111,7 +111,7 @@ def studio_payload(state: dict[str, str]) -> dict[str, Any]:
     lay = layout_summary(drive, analysis.layout)
     out["duty"] = {
         "power": show(design.power, "W", units), "design_power": show(design.design_power, "W", units),
-        "speed_rpm": fmt(design.speed * 60 / (2 * 3.141592653589793)), "ratio": fmt(design.ratio),
+        "speed_rpm": fmt(angular_velocity_to_rpm(design.speed)), "ratio": fmt(design.ratio),
         "service_factor": fmt(design.service_factor), "service_factor_source": design.service_factor_source,
         "load_character": table["characters"][design.load_character],
         "hours_per_day": fmt(design.hours_per_day),
@@ -123,6 +123,7 @@ def studio_payload(state: dict[str, str]) -> dict[str, Any]:
          "safety_text": fmt(c["static_safety"], 3), "chosen": c["chain"] == design.chain.name}
         for c in design.candidates]
     out["candidate_note"] = design.candidate_note
+    out["advice"] = list(design.advice)  # the design procedure's advice, with sources
     out["chain"] = {"name": design.chain.name, "family": design.chain.family,
                     "pitch": " ".join(show(design.chain.pitch, "m", units)),
                     "breaking_force": " ".join(show(design.chain.breaking_force, "N", units)),
@@ -150,6 +151,14 @@ def studio_payload(state: dict[str, str]) -> dict[str, Any]:
             value_text, unit_text = show(value, unit, units)
             rows.append([str(name), value_text, unit_text, " ".join(str(x) for x in rest)])
         out["loads"] = {"caption": loads.caption, "rows": rows}
+    fretting = None if analysis.analysis is None else getattr(analysis.analysis, "fretting", None)
+    if fretting is not None:  # a multi-strand chain: Vikulov's pin slip with and without intermediate plates
+        rows = []
+        for name, unit in type(fretting).field_units().items():
+            value = getattr(fretting, name)
+            if value is not None:
+                rows.append([name.replace("_", " "), *show(value, "-" if unit == "1" else unit, units)])
+        out["fretting"] = {"caption": "Fretting and pin slip of the multi-strand chain (Vikulov)", "rows": rows}
     life = next((c for c in analysis.checks if "hours" in c["name"] and isinstance(c["value"], (int, float))), None)
     if life is not None and design.hours_per_day > 0:
         out["life_years"] = fmt(life["value"] / (design.hours_per_day * 365.0), 3)
@@ -217,21 +226,27 @@ def _results_json(design: Any) -> str:
                                 "results": analysis.results()}), indent=2)
 
 
+def _example_query(name: str) -> str:
+    """The studio's state of the example project file ``name`` of ``examples/`` (the same
+    file ``chaindrive analyze`` reads), as a query string."""
+    from .._examples import example_path
+
+    return state_query(normalise_state(state_from_project(example_path(name).read_text(encoding="utf-8"), name)))
+
+
 def _wheel_file(design: Any, kind: str) -> bytes:
+    """The driving wheel: its workshop drawing as DXF (what ``chaindrive sprocket --dxf``
+    writes), or its outline as SVG."""
     from ..geometry import PocketWheel, Sprocket
-    from ..geometry.export import dxf_document, svg_text
+    from ..geometry.export import svg_text
+    from .expert import workshop_drawing
 
     chain = design.chain
     z = design.teeth_driving
     wheel = PocketWheel.from_chain(chain, z) if chain.is_link_chain else Sprocket.from_chain(chain, z)
-    outline = wheel.outline()
-    title = wheel.label()
     if kind == "svg":
-        return svg_text(outline, title=title).encode("utf-8")
-    doc = dxf_document(outline, title)
-    buf = io.StringIO()
-    doc.write(buf)
-    return buf.getvalue().encode("utf-8")
+        return svg_text(wheel.outline(), title=wheel.label()).encode("utf-8")
+    return workshop_drawing(wheel)
 
 
 def router(ctx: Any) -> APIRouter:
@@ -247,9 +262,9 @@ def router(ctx: Any) -> APIRouter:
         table = service_factor_table()
         driven_options = [(k, v[0]) for k, v in table["driven_machines"].items()]
         return ctx.render(request, "studio.html", state=state, table=table, fields=FIELDS,
-                          driven_options=driven_options,
+                          driven_options=driven_options, required_safety=REQUIRED_STATIC_SAFETY,
                           downloads=DOWNLOADS, open_error=request.query_params.get("open_error", "")[:500],
-                          mining_query=state_query(normalise_state(MINING_EXAMPLE)),
+                          mining_query=_example_query("mining_conveyor.toml"),
                           query=state_query(state))
 
     @r.get("/api/design")

@@ -78,7 +78,9 @@ def _simulate(send: Any, payload: dict[str, Any], folder: Path) -> tuple[dict, d
     summary = jsonable(res.summary)
     (folder / "simulation.json").write_text(json.dumps(summary, indent=2), encoding="utf-8")
     files["simulation.json"] = str(folder / "simulation.json")
-    return files, {"summary": summary}
+    from .expert import simulation_rows
+
+    return files, {"summary": summary, "rows": simulation_rows(summary)}
 
 
 TASKS = {"report": _report, "simulate": _simulate}

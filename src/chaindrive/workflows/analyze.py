@@ -55,6 +55,23 @@ def report_from_analysis(analysis: DriveAnalysis, *, title: str | None = None, s
     return report, timings
 
 
+def _proposal_text(analysis: DriveAnalysis) -> str | None:
+    """The project file of the analysis' passing remedy (None when there is none)."""
+    remedy = analysis["remedy"]
+    if remedy is None or not remedy.found:
+        return None
+    from ..drive.writer import drive_to_toml
+    from ..errors import InputError
+
+    header = ("chaindrive proposal: the nearest design that passes the resonance check of the slack span\n"
+              f"with its tensioner, for {analysis.drive.name!r}. Changes:\n"
+              + "\n".join(f"  - {c}" for c in remedy.changes))
+    try:
+        return drive_to_toml(remedy.drive, header=header)
+    except InputError:  # a drive the writer cannot write yet (e.g. [self_regulating]): the report has the changes
+        return None
+
+
 def analyze(
     drive: Drive,
     output: str | Path | None = None,
@@ -72,7 +89,9 @@ def analyze(
     ----------
     drive : chaindrive.drive.Drive
     output : path, optional
-        Folder for ``report.html``, ``results.json``, PNG figures (and ``report.pdf``);
+        Folder for ``report.html``, ``results.json``, PNG figures (and ``report.pdf``),
+        and ``proposal.toml`` when the resonance check fails and a design within the
+        searched ranges passes (:mod:`chaindrive.analysis.vibration_remedy`);
         nothing is written when ``None``. The caller chooses the folder: the command line
         builds it in a temporary folder and moves it into place when complete.
     pdf : bool
@@ -109,6 +128,10 @@ def analyze(
         files["json"].write_text(json.dumps(jsonable(data), indent=2), encoding="utf-8")
         for p in report.write_figures(out):
             files[p.name] = p
+        proposal = _proposal_text(analysis)
+        if proposal is not None:
+            files["proposal"] = out / "proposal.toml"
+            files["proposal"].write_text(proposal, encoding="utf-8")
         if pdf:
             files["pdf"] = report.write_pdf(out / "report.pdf")
     return AnalysisOutcome(analysis=analysis, report=report, files=files, timings=timings)

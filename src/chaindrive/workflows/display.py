@@ -15,6 +15,8 @@ from __future__ import annotations
 import math
 from typing import TYPE_CHECKING, Any
 
+from ..units import RAD_S_PER_RPM
+
 if TYPE_CHECKING:
     from ..analysis.checks import Check
 
@@ -27,7 +29,7 @@ DISPLAY: dict[str, tuple[str, float]] = {
     "Pa": ("MPa", 1e-6),
     "rad": ("°", 180.0 / math.pi),
     "m": ("mm", 1e3),
-    "rad/s": ("rpm", 30.0 / math.pi),
+    "rad/s": ("rpm", 1.0 / RAD_S_PER_RPM),
     "N*m": ("N·m", 1.0),
 }
 
@@ -47,6 +49,8 @@ CONVERSIONS: dict[tuple[str, str], float] = {
     ("m^2", "mm^2"): 1e6,
     ("m^3", "cm^3"): 1e6,
     ("1", "%"): 100.0,
+    ("rad", "arcmin"): math.degrees(1.0) * 60.0,
+    ("N/m", "kN/m"): 1e-3,
 }
 
 

@@ -23,7 +23,7 @@ if TYPE_CHECKING:
 __all__ = ["Table", "Figure", "Section", "Report"]
 
 
-@dataclasses.dataclass
+@dataclasses.dataclass(frozen=True)
 class Table(Result):
     """A table with a caption, headers and rows of plain values."""
 

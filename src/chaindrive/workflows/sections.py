@@ -8,24 +8,49 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING, Any, cast
 
 from ..analysis import DriveAnalysis
-from ..analysis.checks import Check
+from ..analysis.parts import Part, all_parts
+from ..analysis.vibration_remedy import REQUIRED_MARGIN
 from ..drive.model import Wheel
 from ..errors import InputError
+from ..vibration.excitation import AMPLIFICATION_LIMIT, DAMPING_RATIO
+from .display import convert, display_of
 from .report import Figure, Section, Table
 
 if TYPE_CHECKING:
     from matplotlib.figure import Figure as MatplotlibFigure
 
-__all__ = ["SECTIONS", "build_sections"]
+__all__ = ["report_sections", "build_sections", "generic_section"]
 
-RPM = 60.0 / (2.0 * math.pi)
+def _si(value: Any, unit: str, shown: str | None = None) -> list[Any]:
+    """``[value, unit]`` cells of an SI ``value`` in its display unit (:mod:`.display`)."""
+    v, u = convert(None if value is None else float(value), unit, shown)
+    return [v, u]
 
 
-def _mm(x: float | None) -> float | None:
-    return None if x is None else float(x) * 1e3
+def _val(value: Any, unit: str, shown: str | None = None) -> float | None:
+    """An SI ``value`` in its display unit (the unit in a column header: :func:`_unit`)."""
+    return convert(None if value is None else float(value), unit, shown)[0]
+
+
+def _unit(unit: str, shown: str | None = None) -> str:
+    """The display unit of an SI ``unit``."""
+    return convert(None, unit, shown)[1]
+
+
+def _q(result: Any, name: str, index: int | None = None) -> list[Any]:
+    """``[value, unit]`` cells of field ``name`` of a result (its declared unit, in display units)."""
+    value = getattr(result, name)
+    if index is not None:
+        value = value[index]
+    return _si(value, type(result).unit_of(name) or "1", type(result).display_unit_of(name))
+
+
+def _col(result: Any, name: str) -> str:
+    """The display unit of field ``name`` of a result, for a column header."""
+    return _unit(type(result).unit_of(name) or "1", type(result).display_unit_of(name))
 
 
 class _Figures:
@@ -40,6 +65,21 @@ class _Figures:
         section.figures.append(Figure.from_matplotlib(make(), caption, filename))
 
 
+def wheel_description(drive: Any, name: str) -> str:
+    """A wheel as every table of the report names it: its type and its role in the drive
+    (``"pocket wheel, tensioner idler"``, ``"sprocket, driving"``)."""
+    wheel = next(w for w in drive.wheels if w.name == name)
+    link = drive.chain.is_link_chain
+    if wheel.kind == "idler":
+        kind = ("pocket wheel" if link else "sprocket") if wheel.teeth is not None else "plain wheel"
+    else:
+        kind = wheel.kind.replace("_", " ")
+    tensioner = drive.tensioner is not None and drive.tensioner.wheel == name
+    role = ("driving" if wheel.driving else "tensioner idler" if tensioner else
+            "idler" if wheel.kind == "idler" else "driven")
+    return f"{kind}, {role}"
+
+
 def _teeth_cell(wheel: Wheel) -> int | str:
     """Teeth of a wheel, or the diameter of a toothless idler, for the input table."""
     if wheel.teeth is not None:
@@ -47,11 +87,12 @@ def _teeth_cell(wheel: Wheel) -> int | str:
     if wheel.diameter is None:  # Wheel() refuses this; the check narrows the type
         raise InputError(f"wheel {wheel.name!r}: give teeth (a whole number >= 3) or, for a toothless idler, "
                          "diameter (> 0 m)", field="teeth")
-    return f"Ø{wheel.diameter * 1e3:.0f} mm"
+    return f"Ø{_val(wheel.diameter, 'm'):.0f} {_unit('m')}"
 
 
-def _checks(section: Section, a: DriveAnalysis, names: tuple[str, ...]) -> None:
-    section.checks.extend(c for c in a.checks if any(c.name.startswith(n) for n in names))
+def _checks(section: Section, a: DriveAnalysis, parts: tuple[str, ...]) -> None:
+    """The checks of the named analysis parts (each check knows its part)."""
+    section.checks.extend(a.checks_of(*parts))
 
 
 # --------------------------------------------------------------------------- inputs
@@ -61,37 +102,37 @@ def inputs_section(a: DriveAnalysis, fig: _Figures) -> Section | None:
     rows: list[list[Any]] = [
         ["drive", d.name, ""],
         ["chain", f"{c.name} ({c.family}, {c.strands} strand{'s' if c.strands > 1 else ''})", ""],
-        ["pitch", _mm(c.pitch), "mm"],
+        ["pitch", *_si(c.pitch, "m")],
     ]
     if c.is_link_chain:
-        rows.append(["bar diameter", _mm(c.bar_diameter), "mm"])
+        rows.append(["bar diameter", *_si(c.bar_diameter, "m")])
     else:
-        rows.append(["roller diameter", _mm(c.roller_diameter), "mm"])
+        rows.append(["roller diameter", *_si(c.roller_diameter, "m")])
     rows += [
-        ["minimum breaking force", None if c.breaking_force is None else c.breaking_force / 1e3, "kN"],
+        ["minimum breaking force", *_si(c.breaking_force, "N")],
         ["mass per length", c.mass_per_length, "kg/m"],
-        ["driving wheel speed", d.speed, "rad/s"],
-        ["driving wheel speed", d.speed * RPM, "rpm"],
-        ["power (without service factor)", d.power() / 1e3, "kW"],
-        ["torque on the driving wheel", d.torque(), "N·m"],
+        ["driving wheel speed", *_si(d.speed, "rad/s", "rad/s")],
+        ["driving wheel speed", *_si(d.speed, "rad/s")],
+        ["power (without service factor)", *_si(d.power(), "W")],
+        ["torque on the driving wheel", *_si(d.torque(), "N*m")],
         ["service factor", d.load.service_factor, "-"],
-        ["required static safety", d.required_static_safety, "-"],
-        ["wear elongation limit", d.elongation_limit * 100, "%"],
+        ["required static safety", d.static_safety_required, "-"],
+        ["wear elongation limit", *_si(d.elongation_limit, "1", "%")],
     ]
     tables = [Table("Input data", ["quantity", "value", "unit"], [[n, "—" if v is None else v, u] for n, v, u in rows]),
               Table("Wheels (in the order the chain passes them)",
-                    ["name", "kind", "teeth", "x [mm]", "y [mm]", "driving", "side"],
-                    [[w.name, w.kind, _teeth_cell(w),
-                      w.position[0] * 1e3, w.position[1] * 1e3, w.driving, w.side] for w in d.wheels])]
+                    ["name", "wheel", "teeth", f"x [{_unit('m')}]", f"y [{_unit('m')}]", "driving", "side"],
+                    [[w.name, wheel_description(d, w.name), _teeth_cell(w),
+                      _val(w.position[0], "m"), _val(w.position[1], "m"), w.driving, w.side] for w in d.wheels])]
     if d.tensioner is not None:
         t = d.tensioner
         tables.append(Table("Tensioner (reduced to its axis, tensioner paper eq. (7))",
-                            ["wheel", "mass [kg]", "stiffness [kN/m]", "force [kN]", "kind"],
-                            [[t.wheel, t.mass, t.stiffness / 1e3, None if t.force is None else t.force / 1e3, t.kind]]))
+                            ["wheel", "mass [kg]", f"stiffness [{_unit('N/m', 'kN/m')}]", f"force [{_unit('N')}]", "kind"],
+                            [[t.wheel, t.mass, _val(t.stiffness, "N/m", "kN/m"), _val(t.force, "N"), t.kind]]))
     if d.guides:
         tables.append(Table("Guides at wheel entries (Dolipiński et al.)",
-                            ["wheel", "kind", "end distance l [mm]", "height H [mm]"],
-                            [[g.wheel, g.kind, g.end_distance * 1e3, "—" if g.height is None else g.height * 1e3]
+                            ["wheel", "kind", f"end distance l [{_unit('m')}]", f"height H [{_unit('m')}]"],
+                            [[g.wheel, g.kind, _val(g.end_distance, "m"), "—" if g.height is None else _val(g.height, "m")]
                              for g in d.guides]))
     sec = Section("Input data", tables=tables, results={"inputs": d.inputs()})
     if d.description:
@@ -110,41 +151,40 @@ def layout_section(a: DriveAnalysis, fig: _Figures) -> Section | None:
     rows: list[list[Any]] = [
         ["chain length required", lay.links_required, "pitches"],
         ["chain length used", lay.links, "pitches"],
-        ["chain length", lay.chain_length, "m"],
-        ["length on the pitch circles", lay.chain_length_circles, "m"],
-        ["mean chain speed", lay.chain_speed, "m/s"],
+        ["chain length", *_q(lay, "chain_length")],
+        ["length on the pitch circles", *_q(lay, "chain_length_circles")],
+        ["mean chain speed", *_q(lay, "chain_speed")],
     ]
     if lay.centre_distance is not None:
-        rows.append(["centre distance given", lay.centre_distance * 1e3, "mm"])
+        rows.append(["centre distance given", *_q(lay, "centre_distance")])
     if lay.centre_distance_for_links is not None:
         cd = lay.centre_distance_for_links
-        rows.append([f"centre distance for {lay.links} links (taut)", cd.taut * 1e3, "mm"])
-        rows.append([f"centre distance for {lay.links} links (loosest fit)", cd.loose * 1e3, "mm"])
+        rows.append([f"centre distance for {lay.links} links (taut)", *_q(cd, "taut")])
+        rows.append([f"centre distance for {lay.links} links (loosest fit)", *_q(cd, "loose")])
     if lay.chain_mass is not None:
-        rows.append(["chain mass", lay.chain_mass, "kg"])
+        rows.append(["chain mass", *_q(lay, "chain_mass")])
     sec.tables.append(Table("Chain length and centre distance (exact polygon model for two wheels; docs/drive.md)",
                             ["quantity", "value", "unit"], rows))
     sec.tables.append(Table(
-        "Wheels on the chain", ["wheel", "pitch radius [mm]", "speed [rpm]", "wrap [°]", "teeth in mesh"],
-        [[n, r * 1e3, o * RPM, math.degrees(ang), "—" if t is None else t]
+        "Wheels on the chain", ["wheel", f"pitch radius [{_col(lay, 'pitch_radii')}]",
+                                f"speed [{_col(lay, 'angular_velocities')}]", f"wrap [{_col(w, 'wrap_angle')}]",
+                                "teeth in mesh"],
+        [[n, _val(r, "m"), _val(o, "rad/s"), _val(ang, "rad"), "—" if t is None else t]
          for n, r, o, ang, t in zip(lay.wheel_names, lay.pitch_radii, lay.angular_velocities, w.wrap_angle,
                                     lay.teeth_in_mesh, strict=True)]))
     n = len(lay.wheel_names)
     sec.tables.append(Table(
-        "Spans (tangent lines between pitch circles)", ["span", "from → to", "length [mm]", "direction [°]", "role"],
-        [[i, f"{lay.wheel_names[i]} → {lay.wheel_names[(i + 1) % n]}", w.span_length[i] * 1e3,
-          math.degrees(w.span_angle[i]),
+        "Spans (tangent lines between pitch circles)",
+        ["span", "from → to", f"length [{_col(w, 'span_length')}]", f"direction [{_col(w, 'span_angle')}]", "role"],
+        [[i, f"{lay.wheel_names[i]} → {lay.wheel_names[(i + 1) % n]}", _q(w, "span_length", i)[0],
+          _q(w, "span_angle", i)[0],
           "tight" if i == lay.tight_span else ("slack" if i == lay.slack_span else "")] for i in range(n)]))
     if lay.take_up is not None:
         sec.tables.append(Table(f"Take-up needed for wear elongation: {lay.take_up_kind}",
-                                ["elongation [%]", "take-up [mm]"],
-                                [[e * 100, t * 1e3] for e, t in zip(lay.elongations, lay.take_up, strict=True)]))
-    if a.slack_sag is not None:
-        j = lay.slack_span
-        sec.checks.append(Check("sag of the slack span", a.slack_sag, None, "m", None, "catenary, docs/drive.md",
-                                f"{a.slack_sag / w.span_length[j] * 100:.2f} % of the span at the slack tension",
-                                relation="info"))
-    _checks(sec, a, ("wrap on the driving wheel",))
+                                ["elongation [%]", f"take-up [{_col(lay, 'take_up')}]"],
+                                [[_val(e, "1", "%"), _val(t, "m")]
+                                 for e, t in zip(lay.elongations, lay.take_up, strict=True)]))
+    _checks(sec, a, ("layout", "slack_sag"))
     from ..plotting.drive import layout_plot
 
     fig(sec, lambda: layout_plot(a), "Layout of the drive: pitch circles, spans (tight span marked), wheel names",
@@ -162,31 +202,31 @@ def loads_section(a: DriveAnalysis, fig: _Figures) -> Section | None:
     sec = Section("Loads and safety")
     sec.tables.append(Table(
         "Chain tensions (F_max = K_s T / R + S_slack + q v² + m a_max)", ["quantity", "value", "unit", "basis"],
-        [["effective pull K_s T / R", t.effective_pull / 1e3, "kN", "torque over the pitch radius of the driving wheel"],
-         ["slack-side tension", t.slack / 1e3, "kN", t.slack_source],
-         ["centrifugal tension q v²", t.centrifugal / 1e3, "kN", "q v²"],
-         ["tight-side tension", t.tight / 1e3, "kN", "sum of the above"],
+        [["effective pull K_s T / R", *_q(t, "effective_pull"), "torque over the pitch radius of the driving wheel"],
+         ["slack-side tension", *_q(t, "slack"), t.slack_source],
+         ["centrifugal tension q v²", *_q(t, "centrifugal"), "q v²"],
+         ["tight-side tension", *_q(t, "tight"), "sum of the above"],
          ["peak chain acceleration", t.acceleration_peak, "m/s²", t.acceleration_source],
-         ["moving mass", t.moving_mass, "kg", "whole chain"],
-         ["inertia force m a_max", t.dynamic / 1e3, "kN", "polygonal effect (Dolipiński et al.)"],
-         ["maximum tension", t.maximum / 1e3, "kN", "tight + inertia"],
+         ["moving mass", *_q(t, "moving_mass"), "whole chain"],
+         ["inertia force m a_max", *_q(t, "dynamic"), "polygonal effect (Dolipiński et al.)"],
+         ["maximum tension", *_q(t, "maximum"), "tight + inertia"],
          ["dynamic factor", t.dynamic_factor, "-", "maximum / tight"]]))
     sec.tables.append(Table(
         "Shaft loads (vector sum of the span tensions, without centrifugal part)",
-        ["wheel", "load [kN]", "direction [°]"],
-        [[n, f / 1e3, math.degrees(ang)] for n, f, ang in zip(t.wheel_names, t.shaft_loads, t.shaft_load_angles,
-                                                                strict=True)]))
-    _checks(sec, a, ("static safety", "ANSI/ACA rated power", "speed below the galling"))
+        ["wheel", f"load [{_col(t, 'shaft_loads')}]", f"direction [{_col(t, 'shaft_load_angles')}]"],
+        [[n, _val(f, "N"), _val(ang, "rad")] for n, f, ang in zip(t.wheel_names, t.shaft_loads, t.shaft_load_angles,
+                                                                   strict=True)]))
+    _checks(sec, a, ("loads", "rating"))
     rating = a.rating
     if rating is not None:
         r = rating.rating
         sec.tables.append(Table(
             "ANSI/ACA power rating on the smallest wheel (Shigley eqs (17-32), (17-33); galling §17-5)",
             ["quantity", "value", "unit"],
-            [["wheel", rating.wheel, ""], ["teeth", r.teeth, "-"], ["speed", r.angular_velocity * RPM, "rpm"],
-             ["link-plate limit", r.link_plate / 1e3, "kW"], ["roller-bushing limit", r.roller_bushing / 1e3, "kW"],
-             ["rated power", r.rated_power / 1e3, "kW"], ["design power", d.design_power() / 1e3, "kW"],
-             ["galling starts at", r.galling_speed * RPM, "rpm"],
+            [["wheel", rating.wheel, ""], ["teeth", r.teeth, "-"], ["speed", *_q(r, "angular_velocity")],
+             ["link-plate limit", *_q(r, "link_plate")], ["roller-bushing limit", *_q(r, "roller_bushing")],
+             ["rated power", *_q(r, "rated_power")], ["design power", *_si(d.design_power(), "W")],
+             ["galling starts at", *_q(r, "galling_speed")],
              ["lubrication", f"{r.lubrication}: {r.lubrication_method}", ""]]))
 
         def rating_figure() -> MatplotlibFigure:
@@ -214,14 +254,14 @@ def entry_section(a: DriveAnalysis, fig: _Figures) -> Section | None:
         for label, entry, res in pairs:
             s = res.summary
             results[label] = res
-            rows.append([c.case.wheel, entry, s["v_mean"], s["v_min"], s["v_max"], s["nonuniformity"] * 100,
+            rows.append([c.case.wheel, entry, s["v_mean"], s["v_min"], s["v_max"], _val(s["nonuniformity"], "1", "%"),
                          s["a_min"], s["a_max"], s["sign_change_at_period_end"]])
     sec.tables.append(Table(
         "Chain velocity and acceleration over one tooth period (exact rigid-link model, Dolipiński et al. "
         "eqs (1)–(43) corrected; docs/kinematics.md)",
         ["wheel", "entry", "v mean [m/s]", "v min [m/s]", "v max [m/s]", "non-uniformity [%]", "a min [m/s²]",
          "a max [m/s²]", "sign change at period end"], rows))
-    _checks(sec, a, ("speed non-uniformity",))
+    _checks(sec, a, ("entry",))
     sec.paragraphs.append(
         "The chain entering a wheel follows the polygon of seated hinges. With a straight guide the chain in the "
         "guide is driven through the free span from the last seated hinge to the guide end. The peak acceleration "
@@ -235,12 +275,18 @@ def entry_section(a: DriveAnalysis, fig: _Figures) -> Section | None:
 
 
 # --------------------------------------------------------------------------- vibration
-def _check_table(sec: Section, rows: list[dict], names: tuple[str, ...] | None = None) -> None:
+def _check_table(sec: Section, rows: list[dict], names: tuple[str, ...] | None = None,
+                 response: dict[str, float | None] | None = None) -> None:
+    headers = ["mode", "excitation", "P [rad/s]", "ω [rad/s]", "ratio P/ω", "margin", "ok"]
+    if response is not None:
+        headers.append("forced response [mm]")
     sec.tables.append(Table(
-        "Resonance check 0.7 ≤ P_i/ω_j ≤ 1.4 forbidden (tensioner paper); margin = max(r/1.4 − 1, 1 − r/0.7)",
-        ["mode", "excitation", "P [rad/s]", "ω [rad/s]", "ratio P/ω", "margin", "ok"],
+        "Resonance check 0.7 ≤ P_i/ω_j ≤ 1.4 forbidden (tensioner paper); margin = max(r/1.4 − 1, 1 − r/0.7)"
+        + ("; beside it the largest span amplitude that excitation drives (severity table)" if response else ""),
+        headers,
         [[names[r["mode"] - 1] if names else r["mode"], r["excitation"], r["natural_frequency"],
-          r["exciting_frequency"], r["ratio"], r["margin"], r["ok"]] for r in rows]))
+          r["exciting_frequency"], r["ratio"], r["margin"], r["ok"],
+          *([response.get(r["excitation"])] if response is not None else [])] for r in rows]))
 
 
 def vibration_section(a: DriveAnalysis, fig: _Figures) -> Section | None:
@@ -254,26 +300,50 @@ def vibration_section(a: DriveAnalysis, fig: _Figures) -> Section | None:
                                     res.heavy_tensioner_frequency, "rad/s"]]
                                   if res.heavy_tensioner_frequency is not None else [])
         quantities: list[list[Any]] = [
-            ["part 1 length ℓ1", sp.length_1, "m"], ["part 2 length ℓ2", sp.length_2, "m"],
-             ["inclination β1 to the normal of the tensioner axis", math.degrees(sp.angle_1), "°"],
-             ["inclination β2", math.degrees(sp.angle_2), "°"],
-             ["S2 (tension across the tensioner axis)", sp.tension / 1e3, "kN"],
-             ["tensioner mass m / stiffness C", f"{sp.mass:.4g} kg / {sp.stiffness / 1e3:.4g} kN/m", ""],
-             ["static rod force F_n = S2 (tan β1 + tan β2), eq. (8)", res.static_rod_force / 1e3, "kN"]]
+            ["part 1 length ℓ1", *_si(sp.length_1, "m", "m")], ["part 2 length ℓ2", *_si(sp.length_2, "m", "m")],
+             ["inclination β1 to the normal of the tensioner axis", *_q(sp, "angle_1")],
+             ["inclination β2", *_q(sp, "angle_2")],
+             ["S2 (tension across the tensioner axis)", *_q(sp, "tension")],
+             ["tensioner mass m / stiffness C",
+              f"{sp.mass:.4g} kg / {_val(sp.stiffness, 'N/m', 'kN/m'):.4g} {_unit('N/m', 'kN/m')}", ""],
+             ["static rod force F_n = S2 (tan β1 + tan β2), eq. (8)", *_q(res, "static_rod_force")]]
         quantities += [[f"natural frequency P{i + 1}", float(f), "rad/s"] for i, f in enumerate(res.frequencies_rad_s)]
         quantities += heavy
         sec.tables.append(Table(
             "Slack span with the tensioner (tensioner paper, frequency equation re-derived; docs/vibration.md)",
             ["quantity", "value", "unit"], quantities))
         if res.check is not None:  # span_vibration had the driving speed: always checked
-            _check_table(sec, res.check.rows())
-        if v.proposal is not None:
-            p = v.proposal
-            sec.paragraphs.append(
-                f"Nearest tensioner that is free of resonance over ±10 % of the speed (tensioner paper check, "
-                f"margin ≥ 0.05): m = {p.mass:.4g} kg, C = {p.stiffness / 1e3:.4g} kN/m "
-                f"({p.distance:.2f} decades from the design).")
-            sec.results["proposal"] = p.to_dict()
+            response = {e.name: display_of(e, "response")[0] for e in v.severity}
+            _check_table(sec, res.check.rows(), response=response)
+        if v.severity:
+            sec.tables.append(Table(
+                "Severity: forced response of the slack span to each excitation (string model, structural damping "
+                f"ζ = {DAMPING_RATIO:g}; both span ends excited with the amplitude shown, responses added; docs/vibration.md §6a). "
+                "The paper's three excitations are judged by the band above; the polygon by its amplification",
+                ["excitation", "ω [rad/s]", "span-end amplitude [mm]", "largest span amplitude [mm]",
+                 "tensioner amplitude [mm]", "amplification", "criterion", "verdict", "source of the amplitude"],
+                [[e.name, e.frequency, display_of(e, "end_amplitude")[0], display_of(e, "response")[0],
+                  display_of(e, "tensioner_amplitude")[0], e.amplification,
+                  "band 0.7…1.4 (paper)" if e.criterion == "band" else f"amplification ≤ {AMPLIFICATION_LIMIT:.3g}",
+                  "see band" if e.passed is None else ("pass" if e.passed else "FAIL"), e.source]
+                 for e in v.severity]))
+        rm = a["remedy"]
+        if rm is not None:
+            if rm.found:
+                sec.paragraphs.append(
+                    "A design that passes the resonance check (nearest within the searched ranges: "
+                    f"{rm.ranges}; band margin {rm.margin:.3f} ≥ {REQUIRED_MARGIN:g}, polygon amplification {rm.amplification:.3g}); "
+                    "written as proposal.toml next to this report:")
+            else:
+                sec.paragraphs.append(
+                    f"No design within the searched ranges ({rm.ranges}) passes the resonance check. The nearest "
+                    f"design found (band margin {rm.margin:.3f}, polygon amplification {rm.amplification:.3g}) "
+                    f"still fails because {rm.reason}. Guides or supports that shorten the free span were not "
+                    "searched. The nearest design:")
+            sec.tables.append(Table("Proposed changes" if rm.found else "Nearest design (fails)", ["change"],
+                                    [[c] for c in rm.changes]))
+            sec.results["remedy"] = {"found": rm.found, "changes": list(rm.changes), "margin": rm.margin,
+                                     "amplification": rm.amplification, "reason": rm.reason}
         campbell = res.campbell
         if campbell is not None:
             from ..plotting.vibration import campbell_plot
@@ -292,13 +362,13 @@ def vibration_section(a: DriveAnalysis, fig: _Figures) -> Section | None:
             n = sum(1 for name in fs.names if name.startswith(role))
             for i in range(n):
                 rows.append([f"{role} span P{i + 1} (L = {fs.lengths[role]:.3f} m, running tension "
-                             f"{fs.running_tensions[role] / 1e3:.3g} kN)", float(fs.frequencies[k]), "rad/s"])
+                             f"{_val(fs.running_tensions[role], 'N'):.3g} {_unit('N')})", float(fs.frequencies[k]), "rad/s"])
                 k += 1
         sec.tables.append(Table("Free spans as axially moving strings: ω_n = nπc/L (1 − v²/c²), c² = S/(q cos β) "
                                 "(Wickert & Mote 1990; tensioner paper eq. (1))", ["quantity", "value", "unit"], rows))
         _check_table(sec, fs.check.rows(), fs.names)
         sec.results["free_spans"] = {"frequencies": fs.frequencies, "modes": list(fs.names), "check": fs.check.rows()}
-    _checks(sec, a, ("resonance margin", "free-span pairs"))
+    _checks(sec, a, ("vibration",))
     return sec
 
 
@@ -315,17 +385,21 @@ def geometry_section(a: DriveAnalysis, fig: _Figures) -> Section | None:
         dim = g.dimensions()
         dd = dim.to_dict()
         if isinstance(dim, PocketWheelDimensions):  # kind "pocket wheel"
-            rows.append([g.wheel, g.kind, g.teeth, dim.pitch_radius * 2e3, dim.tip_radius * 2e3, "—", g.basis])
+            rows.append([g.wheel, g.kind, g.teeth, _val(2 * dim.pitch_radius, "m"), _val(2 * dim.tip_radius, "m"), "—",
+                         g.basis])
         elif isinstance(dim, TrackDriveWheelDimensions):  # kind "track drive wheel"
-            rows.append([g.wheel, g.kind, g.teeth, dd["pitch_radius"] * 2e3, dd["tip_radius"] * 2e3,
-                         dd["root_radius"] * 2e3, g.basis])
+            rows.append([g.wheel, g.kind, g.teeth, _val(2 * dim.pitch_radius, "m"), _val(2 * dim.tip_radius, "m"),
+                         _val(2 * dim.root_radius, "m"), g.basis])
         else:
-            rows.append([g.wheel, g.kind, g.teeth, dim.pitch_diameter * 1e3,
-                         f"{dim.tip_diameter_min * 1e3:.2f} … {dim.tip_diameter_max * 1e3:.2f}",
-                         dim.root_diameter * 1e3, g.basis])
+            rows.append([g.wheel, g.kind, g.teeth, _val(dim.pitch_diameter, "m"),
+                         f"{_val(dim.tip_diameter_min, 'm'):.2f} … {_val(dim.tip_diameter_max, 'm'):.2f}",
+                         _val(dim.root_diameter, "m"), g.basis])
         sec.results[g.wheel] = dd
-    sec.tables.append(Table("Main diameters", ["wheel", "kind", "teeth", "pitch Ø [mm]", "tip Ø [mm]", "root Ø [mm]",
-                                               "basis"], rows))
+    for row in rows:  # the wheel named as in the input table (type and role), e.g. "pocket wheel, tensioner idler"
+        row[1] = wheel_description(a.drive, row[0])
+    mm = _unit("m")
+    sec.tables.append(Table("Main diameters", ["name", "wheel", "teeth", f"pitch Ø [{mm}]", f"tip Ø [{mm}]",
+                                               f"root Ø [{mm}]", "basis"], rows))
     drv = a.drive.driving_wheel.name
     driving = next((g for g in a.geometry if g.wheel == drv), None)
     if driving is not None:
@@ -348,15 +422,15 @@ def strength_section(a: DriveAnalysis, fig: _Figures) -> Section | None:
         sec.tables.append(Table(
             "Roller–tooth contact with skew (Garshniev & Maksymovych eqs (1)–(3); Hertz line contact, Johnson 1985 §4.3)",
             ["quantity", "value", "unit"],
-            [["roller load Q_nom (tight-side tension on the first tooth)", con.load / 1e3, "kN"],
-             ["measured skew φ_p,max", math.degrees(con.skew) * 60, "arcmin"],
-             ["design skew φ_p = K_φ φ_p,max", math.degrees(float(res.design_skew)) * 60, "arcmin"],
+            [["roller load Q_nom (tight-side tension on the first tooth)", *_q(con, "load")],
+             ["measured skew φ_p,max", *_si(con.skew, "rad", "arcmin")],
+             ["design skew φ_p = K_φ φ_p,max", *_si(res.design_skew, "rad", "arcmin")],
              ["γ (Garshniev & Maksymovych table)", float(res.gamma), "1/arcmin²"],
              ["load factor Q_n / Q_nom", float(res.load_factor), "-"],
-             ["contact stress without skew", float(res.stress_unskewed) / 1e6, "MPa"],
-             ["contact stress with skew", float(res.stress) / 1e6, "MPa"],
+             ["contact stress without skew", *_q(res, "stress_unskewed")],
+             ["contact stress with skew", *_q(res, "stress")],
              ["relative life (wear law)", float(res.relative_life_wear), "-"]]))
-        _checks(sec, a, ("contact stress with skew", "life with skew"))
+        _checks(sec, a, ("contact",))
 
         def skew_figure() -> MatplotlibFigure:
             import numpy as np
@@ -369,14 +443,107 @@ def strength_section(a: DriveAnalysis, fig: _Figures) -> Section | None:
         fig(sec, skew_figure, "Contact stress and relative life against skew", "skew.png")
         sec.results["contact"] = res.to_dict()
     if a.track_tooth is not None:
-        rd = a.track_tooth.to_dict()
+        tt = a.track_tooth
+        rd = tt.to_dict()
+        sec.paragraphs.append(
+            "Sharipov, p. 34: «Расчетное усилие определяется из условия максимального сцепления гусеницы с "
+            "грунтом и передачи всего усилия одним зубом: P_Р = P / i, где P = 0,65 G_T φ; i — число зубчатых "
+            "венцов у ведущего колеса (i = 1 у одновенцового колеса и i = 2 у двухвенцового). Здесь φ = 1,0.» "
+            "(The design force follows from the largest adhesion of the track with the ground, the whole force "
+            "passed by one tooth; i is the number of toothed rims of the drive wheel.) Read here: P is the "
+            "adhesion force of one track, carried by its drive wheel (design torque P R_0); i counts the rims of "
+            "that wheel, not the tracks, so each rim's tooth carries P_P = P / i and each rim's bolts the torque "
+            "P_P R_0.")
         sec.tables.append(Table(
-            "Track drive wheel tooth (Sharipov, p. 34: P = 0.65 G_T φ / i)", ["quantity", "value", "unit"],
-            [["design force P", rd["design_force"] / 1e3, "kN"],
-             ["bending stress at the root (force at the tip)", rd["bending_stress"] / 1e6, "MPa"],
-             ["pin–tooth contact stress", rd["contact_stress"] / 1e6, "MPa"]]))
-        _checks(sec, a, ("tooth bending", "pin–tooth contact", "surface hardness"))
+            "Track drive wheel tooth (Sharipov, p. 34: P_P = P / i, P = 0.65 G_T φ)", ["quantity", "value", "unit"],
+            [["adhesion force of the track P = 0.65 G_T φ", *_q(tt, "wheel_force")],
+             ["toothed rims i", *_q(tt, "rims")],
+             ["design force on one tooth P_P = P / i", *_q(tt, "design_force")],
+             ["design torque of the drive wheel P R_0", *_q(tt, "design_torque")],
+             ["torque of one rim P_P R_0 (on its bolts)", *_q(tt, "rim_torque")],
+             ["bending stress at the root (force at the tip)", *_q(tt, "bending_stress")],
+             ["pin–tooth contact stress", *_q(tt, "contact_stress")]]))
+        _checks(sec, a, ("track_tooth",))
         sec.results["track_tooth"] = rd
+    bolts = getattr(a, "rim_bolts", None)
+    if bolts is not None:
+        rows = [["joint", bolts.joint, ""]]
+        for label, name in (("bolts per rim", "count"), ("bolt circle radius", "circle_radius"),
+                            ("rim torque P_P R_0", "rim_torque"), ("force per bolt T / (n R_b)", "bolt_force"),
+                            ("shear stress", "shear_stress"), ("bearing stress", "bearing_stress"),
+                            ("required preload per bolt", "required_preload"), ("preload stress", "preload_stress")):
+            if getattr(bolts, name) is not None:
+                rows.append([label, *_q(bolts, name)])
+        sec.tables.append(Table("Rim bolts (Sharipov, Fig. 14; fitted bolts: Shigley §8-12, friction joint: "
+                                "VDI 2230-1)", ["quantity", "value", "unit"], rows))
+        _checks(sec, a, ("rim_bolts",))
+        sec.results["rim_bolts"] = bolts.to_dict()
+    return sec
+
+
+# --------------------------------------------------------------------------- crawler conveyor
+#: Rows of the crawler table: field of the part's result, label (units from the result class).
+_CRAWLER_ROWS = (
+    ("guide", "guide"),
+    ("teeth", "teeth of both sprockets"),
+    ("pitch_radius", "pitch radius R"),
+    ("sprocket_distance", "sprocket distance A"),
+    ("cam_distance", "cam distance l from the tensioning sprocket"),
+    ("mean_speed", "mean chain speed z t ω / 2π"),
+    ("speed_nonuniformity", "speed non-uniformity (v_max − v_min)/v_mean"),
+    ("acceleration_min", "smallest acceleration"),
+    ("acceleration_max", "largest acceleration"),
+    ("transverse_throw", "transverse throw of the span"),
+    ("cam_stiffness", "stiffness at the cam E_П A / (l (A − l))"),
+    ("traction_force", "traction force (mean cam force = effective pull)"),
+    ("pretension", "pre-tension (slack tension)"),
+    ("cam_force_min", "cam force, smallest"),
+    ("cam_force_max", "cam force, largest"),
+    ("cam_force_range", "cam force fluctuation (rigid return span)"),
+    ("cam_force_range_elastic", "cam force fluctuation (elastic return span, free tensioning sprocket)"),
+    ("tensioning_sprocket_lag", "largest lag of the free tensioning sprocket"),
+    ("tensioning_side_tension_min", "smallest tension, tensioning sprocket – cam"),
+    ("driving_side_tension_max", "largest tension, cam – driving sprocket"),
+    ("guide_reaction_driving", "guide reaction at the driving sprocket end, T tan φ1"),
+    ("guide_reaction_tensioning", "guide reaction at the tensioning sprocket end, T tan φ1"),
+    ("cam_face_angle", "pressure angle of the cam face α"),
+    ("cam_pushing_off", "pushing-off force at the cam, P tan α"),
+)
+
+
+def crawler_section(a: DriveAnalysis, fig: _Figures) -> Section | None:
+    """The conveyor crawler drive: kinematics, cam force, guide reactions (the crawler drive text)."""
+    r = getattr(a, "crawler_conveyor", None)
+    if r is None:
+        return None
+    sec = Section("Conveyor crawler drive: cam force and guide reaction")
+    sec.paragraphs.append(
+        "The drive chain carries cams that push the hinges of the conveyor's traction chain; it runs round the "
+        "driving and the tensioning sprocket, in phase (the crawler drive text, eqs 6.7, 6.14–6.16). The force on "
+        "the cam is the rebuilt formula P = E_П [(u_З − u_П)/(A − l) + (u_1 − u_П)/l] with the cam moved at the "
+        "mean speed; its mean is the traction force. It assumes a rigid return span and a tensioning sprocket "
+        "that turns in phase and imposes its own displacement; the second fluctuation drops both (elastic return "
+        "span, free tensioning sprocket) as a check. The guide takes the text's pushing-off forces: T tan φ1 at "
+        "each end of the guide and P tan α at the cam (docs/crawler.md).")
+    rows: list[list[Any]] = []
+    for name, label in _CRAWLER_ROWS:
+        value = getattr(r, name)
+        if value is None:
+            continue
+        rows.append([label, value, ""] if isinstance(value, str) else [label, *_q(r, name)])
+    sec.tables.append(Table("Conveyor crawler drive (the crawler drive text; cam force rebuilt, docs/crawler.md)",
+                            ["quantity", "value", "unit"], rows))
+    _checks(sec, a, ("crawler_conveyor",))
+    kin = r.kinematics
+    if kin is not None:
+        def crawler_figure() -> MatplotlibFigure:
+            from ..plotting.crawler import crawler_plot
+
+            return crawler_plot([kin])
+
+        fig(sec, crawler_figure, "Drive-chain speed, acceleration and cam force (about its mean) over one tooth "
+            "period", "crawler.png")
+    sec.results["crawler_conveyor"] = {k: v for k, v in r.to_dict().items() if k != "kinematics"}
     return sec
 
 
@@ -389,9 +556,9 @@ def wear_section(a: DriveAnalysis, fig: _Figures) -> Section | None:
         return Section("Wear life", skipped="no wear model applies (a link chain needs wear_coefficient in [drive])")
     sec = Section("Wear life")
     sec.tables.append(Table(f"Chain elongation (model: {res.model}; docs/drive.md)", ["quantity", "value", "unit"],
-                            [["elongation limit", res.elongation_limit * 100, "%"],
+                            [["elongation limit", *_si(res.elongation_limit, "1", "%")],
                              ["hours to the limit", res.hours_to_limit, "h"]]))
-    _checks(sec, a, ("hours to the elongation limit",))
+    _checks(sec, a, ("wear",))
     from ..plotting.drive import wear_plot
 
     fig(sec, lambda: wear_plot(res), "Chain elongation over operating hours", "wear.png")
@@ -403,8 +570,6 @@ def wear_section(a: DriveAnalysis, fig: _Figures) -> Section | None:
 def self_regulating_section(a: DriveAnalysis, fig: _Figures) -> Section | None:
     if a.self_regulating is None:
         return None
-    from ..drive.self_regulating import self_regulating_checks
-
     sec = Section("Self-regulating drive: tension against load and wear")
     res = a.self_regulating
     sec.tables.append(Table(
@@ -412,10 +577,13 @@ def self_regulating_section(a: DriveAnalysis, fig: _Figures) -> Section | None:
         "docs/self_regulating.md)", ["quantity", "value", "unit"],
         [["regulation coefficient ψ = S2/F_t, range over load and wear", f"{res.psi.min():.4g} … {res.psi.max():.4g}", "-"],
          ["rational ψ* (slack tension for the allowed sag at rated load)", res.psi_rational, "-"],
-         ["slack tension S2, range", f"{res.slack_tension.min() / 1e3:.4g} … {res.slack_tension.max() / 1e3:.4g}", "kN"],
-         ["centre distance, range", f"{res.centre_distance.min() * 1e3:.5g} … {res.centre_distance.max() * 1e3:.5g}", "mm"],
+         ["slack tension S2, range", f"{_val(res.slack_tension.min(), 'N'):.4g} … {_val(res.slack_tension.max(), 'N'):.4g}",
+          _col(res, "slack_tension")],
+         ["centre distance, range",
+          f"{_val(res.centre_distance.min(), 'm'):.5g} … {_val(res.centre_distance.max(), 'm'):.5g}",
+          _col(res, "centre_distance")],
          ["carrier travel over the wear range", res.carrier_travel, res.coordinate_unit]]))
-    sec.checks.extend(self_regulating_checks(res))
+    _checks(sec, a, ("self_regulating",))
     sec.results = {"self_regulating": res.to_dict()}
     try:
         from ..plotting.self_regulating import self_regulating_plot
@@ -427,18 +595,86 @@ def self_regulating_section(a: DriveAnalysis, fig: _Figures) -> Section | None:
     return sec
 
 
-#: The report's sections, in order: (key, title, function(analysis, figures) -> Section or None).
-SECTIONS: tuple[tuple[str, str, Callable[[DriveAnalysis, _Figures], Section | None]], ...] = (
-    ("inputs", "Input data", inputs_section),
-    ("layout", "Layout", layout_section),
-    ("loads", "Loads and safety", loads_section),
-    ("kinematics", "Entry kinematics", entry_section),
-    ("vibration", "Span vibration", vibration_section),
-    ("geometry", "Wheel geometry", geometry_section),
-    ("strength", "Strength", strength_section),
-    ("life", "Wear life", wear_section),
-    ("self_regulating", "Self-regulating drive", self_regulating_section),
-)
+# --------------------------------------------------------------------------- generic
+def _field_rows(result: Any, prefix: str = "") -> list[list[Any]]:
+    """Rows (quantity, value, unit) of a result's unit-declared scalar fields, in display units."""
+    import dataclasses
+
+    from .._results import Result
+    from .display import display
+
+    rows: list[list[Any]] = []
+    if not (isinstance(result, Result) and dataclasses.is_dataclass(result)):
+        return rows
+    units = type(result).field_units()
+    for f in dataclasses.fields(result):
+        value = getattr(result, f.name)
+        label = f"{prefix}{f.name.replace('_', ' ')}"
+        if isinstance(value, Result):
+            rows += _field_rows(value, prefix=f"{label}: ")
+        elif f.name in units and isinstance(value, (int, float)) and not isinstance(value, bool):
+            unit = type(result).display_unit_of(f.name)
+            shown, shown_unit = display(float(value), units[f.name])
+            if unit is not None and unit != shown_unit:
+                from ..units import convert_from_si
+
+                shown, shown_unit = convert_from_si(float(value), units[f.name], unit), unit
+            rows.append([label, shown if units[f.name] != "1" or not isinstance(value, int) else value,
+                         "" if shown_unit == "1" else shown_unit])
+    return rows
+
+
+def generic_section(part: Part) -> Callable[[DriveAnalysis, _Figures], Section | None]:
+    """The section of a part that declares none: its result's fields with their units, and its checks."""
+
+    def section(a: DriveAnalysis, fig: _Figures) -> Section | None:
+        res = a.results.get(part.name)
+        if res is None:
+            return None
+        sec = Section(part.title)
+        if isinstance(res, (int, float)) and part.unit is not None:
+            from .display import display
+
+            shown, unit = display(float(res), part.unit)
+            rows = [[part.title, shown, unit]]
+        else:
+            rows = _field_rows(res)
+        if rows:
+            sec.tables.append(Table(part.title, ["quantity", "value", "unit"], rows))
+        _checks(sec, a, (part.name,))
+        sec.results = {part.name: part.to_json(res)}
+        return sec
+
+    section.__name__ = f"{part.name}_section"
+    return section
+
+
+def _section_function(part: Part) -> Callable[[DriveAnalysis, _Figures], Section | None]:
+    if part.section is None:
+        return generic_section(part)
+    import importlib
+
+    module, _, name = part.section.partition(":")
+    return cast("Callable[[DriveAnalysis, _Figures], Section | None]", getattr(importlib.import_module(module), name))
+
+
+def report_sections() -> tuple[tuple[str, str, Callable[[DriveAnalysis, _Figures], Section | None]], ...]:
+    """The report's sections, in order: (key, title, function(analysis, figures) -> Section or None).
+
+    The input data first, then one section per declared analysis part in report order
+    (parts that share a section function appear once, under the first part's name).
+    """
+    out: list[tuple[str, str, Callable[[DriveAnalysis, _Figures], Section | None]]] = [
+        ("inputs", "Input data", inputs_section)]
+    seen: set[Any] = set()
+    for part in all_parts():
+        fn = _section_function(part)
+        key = part.section if part.section is not None else part.name
+        if key in seen:
+            continue
+        seen.add(key)
+        out.append((part.name, part.title, fn))
+    return tuple(out)
 
 
 def build_sections(analysis: DriveAnalysis, *, figures: bool = True,
@@ -448,9 +684,10 @@ def build_sections(analysis: DriveAnalysis, *, figures: bool = True,
 
     fig = _Figures(figures)
     out, timings = [], {}
-    for i, (key, title, fn) in enumerate(SECTIONS):
+    sections = report_sections()
+    for i, (key, title, fn) in enumerate(sections):
         if progress is not None:
-            progress(title, i, len(SECTIONS))
+            progress(title, i, len(sections))
         t0 = time.perf_counter()
         sec = fn(analysis, fig)
         timings[key] = time.perf_counter() - t0

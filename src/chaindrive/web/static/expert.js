@@ -9,6 +9,16 @@
     figs.forEach((f, i) => window.Plotly.newPlot($("plot-" + (i + 1)), f.data, f.layout, cfg));
   }
   const form = $("expert-form");
+  // results shown for other inputs than those in the form are marked stale at once
+  const result = $("result");
+  if (form && result) {
+    const initial = new URLSearchParams(new FormData(form)).toString();
+    form.addEventListener("input", () => {
+      const stale = new URLSearchParams(new FormData(form)).toString() !== initial;
+      result.classList.toggle("stale", stale);
+      $("stale").hidden = !stale;
+    });
+  }
   if (!form || !form.action.endsWith("/expert/simulation")) return;
   function text(el, v) { el.textContent = v == null ? "" : String(v); }
   form.addEventListener("submit", async (e) => {
@@ -49,16 +59,16 @@
       fig.append(img, cap);
       out.appendChild(fig);
     }
-    const s = j.result && j.result.summary;
-    if (s) {
+    const rows = j.result && j.result.rows;
+    if (rows) {
       const t = document.createElement("table");
       t.className = "kv";
       t.id = "sim-summary";
-      for (const [k, v] of Object.entries(s)) {
-        if (typeof v === "object") continue;
+      for (const [label, value, unit] of rows) {
         const tr = t.insertRow();
-        const th = document.createElement("th"); text(th, k); tr.appendChild(th);
-        const td = tr.insertCell(); text(td, typeof v === "number" ? v.toPrecision(5) : v);
+        const th = document.createElement("th"); th.scope = "row"; text(th, label); tr.appendChild(th);
+        const td = tr.insertCell(); td.className = "numcell"; text(td, value);
+        const tu = tr.insertCell(); text(tu, unit);
       }
       out.appendChild(t);
     }

@@ -48,6 +48,14 @@
       if (f) f.classList.add("invalid");
     }
   }
+  // after an invalid input the results on screen are those of the last valid inputs: say so
+  function markStale(stale) {
+    document.body.classList.toggle("has-errors", stale);
+    const banner = $("stale-banner");
+    if (banner) banner.hidden = !stale;
+    const ov = $("overall");
+    if (ov && stale) { text(ov, "stale: fix the marked field"); ov.className = "verdict stale-verdict"; }
+  }
   function toggleTensioner() {
     $("tensioner-fields").hidden = $("tensioner").value !== "on";
     $("field-guide_end").hidden = $("guide").value === "";
@@ -56,7 +64,7 @@
   function render(d) {
     showErrors(d.errors);
     const ok = !d.errors || Object.keys(d.errors).length === 0;
-    document.body.classList.toggle("has-errors", !ok);
+    markStale(!ok);
     if (d.query !== undefined) history.replaceState(null, "", "/" + (d.query ? "?" + d.query : ""));
     const ks = d.service_factor_table;
     if (ks) text($("ks-source"), "Service factor table: " + ks.driver + " × " + ks.character + " → K_s = " + ks.value + ". Source: " + ks.source);
@@ -86,7 +94,8 @@
       body.appendChild(tr);
     }
     text($("candidate-note"), "Chosen: " + d.chain.name + " (" + d.chain.family + "), pitch " + d.chain.pitch +
-      ", breaking force " + d.chain.breaking_force + ". " + (d.candidate_note || ""));
+      ", breaking force " + d.chain.breaking_force + ". " + (d.candidate_note || "") +
+      (d.advice || []).map((a) => " Advice, " + a.name + ": " + a.note + " [" + a.source + "].").join(""));
     const L = d.layout;
     const rows = [
       ["teeth z1 / z2", L.teeth_driving + " / " + L.teeth_driven],
@@ -111,6 +120,18 @@
       }
     }
     $("loads").hidden = !d.loads;
+    const fb = $("fretting").querySelector("tbody");
+    fb.replaceChildren();
+    if (d.fretting) {
+      text($("fretting-caption"), d.fretting.caption);
+      for (const [name, value, unit] of d.fretting.rows) {
+        const tr = document.createElement("tr");
+        cell(tr, name);
+        cell(tr, value + " " + unit);
+        fb.appendChild(tr);
+      }
+    }
+    $("fretting").hidden = !d.fretting;
     const cb = $("checks").querySelector("tbody");
     cb.replaceChildren();
     for (const c of d.checks || []) {
@@ -149,7 +170,7 @@
       const r = await fetch("/api/design?" + params().toString(), { signal: liveCtl.signal, headers: { Accept: "application/json" } });
       const d = await r.json();
       if (r.status === 503) { text($("status"), d.error); setTimeout(schedule, 1000); return; }
-      if (!r.ok) { showErrors(d.field ? { [d.field]: d.error } : {}); text($("status"), d.error || ("error " + r.status)); return; }
+      if (!r.ok) { showErrors(d.field ? { [d.field]: d.error } : {}); markStale(true); text($("status"), d.error || ("error " + r.status)); return; }
       render(d);
       document.body.dataset.ready = "live";
       document.body.dataset.updates = String((parseInt(document.body.dataset.updates || "0", 10)) + 1);

@@ -1,0 +1,253 @@
+"""A batch of study variants evaluated together (what a Dask task carries).
+
+:func:`evaluate_batch` gives the same rows as :func:`~chaindrive.study.run.evaluate_variant`
+called once per variant, faster:
+
+1. each varied project path is probed once per batch: when the project loader maps its
+   number linearly onto one field of the :class:`~chaindrive.drive.Drive` (a skew in
+   arcmin onto ``contact.skew`` in rad, a mass, a stiffness, a speed), the variants set
+   that field directly (the drive validates it again) instead of reading a whole
+   project file each;
+2. the variants that agree on every other varied path share one project read and go
+   to :func:`chaindrive.analysis.batch.analyze_variants`, which computes the parts that
+   do not read a varied field once;
+3. each output is read from the part's JSON, computed once per distinct result object.
+
+Rows equal those of the per-variant evaluation (tests compare every output to 1e-12).
+"""
+
+from __future__ import annotations
+
+import copy
+import dataclasses
+import math
+import re
+import time
+import warnings
+from collections.abc import Sequence
+from typing import Any
+
+from .spec import set_path
+
+__all__ = ["evaluate_batch", "probe_path"]
+
+_NUMBER = re.compile(r"^\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*(.*?)\s*$")
+
+#: Relative step of the probes and the tolerance of their linearity test.
+_PROBE_STEP = 1e-3
+_LINEAR_TOLERANCE = 1e-12
+
+
+def _number(value: Any) -> tuple[float, str] | None:
+    """(number, unit text) of a study value, or None for a value that is not a float
+    quantity (whole numbers are counts: teeth, links, indices)."""
+    if isinstance(value, bool) or isinstance(value, int):
+        return None
+    if isinstance(value, float):
+        return (value, "") if math.isfinite(value) else None
+    if isinstance(value, str):
+        m = _NUMBER.match(value)
+        if m is None:
+            return None
+        x = float(m.group(1))
+        return (x, m.group(2)) if math.isfinite(x) else None
+    return None
+
+
+def _with(value: Any, x: float, unit: str) -> Any:
+    return f"{x!r} {unit}".strip() if isinstance(value, str) else x
+
+
+def _leaves(obj: Any, path: tuple[Any, ...] = ()) -> dict[tuple[Any, ...], Any]:
+    """Every leaf of a drive (through dataclasses and tuples), by field path."""
+    from ..chains import Chain
+
+    if dataclasses.is_dataclass(obj) and not isinstance(obj, (type, Chain)):
+        out: dict[tuple[Any, ...], Any] = {}
+        for f in dataclasses.fields(obj):
+            out.update(_leaves(getattr(obj, f.name), (*path, f.name)))
+        return out
+    if isinstance(obj, tuple) and obj and any(dataclasses.is_dataclass(v) for v in obj):
+        out = {}
+        for i, v in enumerate(obj):
+            out.update(_leaves(v, (*path, i)))
+        return out
+    return {path: obj}
+
+
+def probe_path(base: dict, inputs: dict[str, Any], path: str) -> tuple[tuple[Any, ...], float] | None:
+    """``(field path, factor)`` when the project value at ``path`` maps linearly onto one
+    field of the drive (field = factor × number), else ``None``.
+
+    Three drives are read with the number at x, x(1 + 1e-3) and x(1 − 1e-3); exactly one
+    leaf must change, and proportionally to 1e-12.
+    """
+    from ..drive.project import project_from_mapping
+
+    parsed = _number(inputs[path])
+    if parsed is None or parsed[0] == 0.0:
+        return None
+    x, unit = parsed
+    drives = []
+    for xi in (x, x * (1 + _PROBE_STEP), x * (1 - _PROBE_STEP)):
+        data = copy.deepcopy(base)
+        for p, v in inputs.items():
+            set_path(data, p, _with(v, xi, unit) if p == path else v)
+        try:
+            with warnings.catch_warnings():
+                warnings.simplefilter("ignore")
+                drives.append(_leaves(project_from_mapping(data, filename="probe")))
+        except Exception:  # noqa: BLE001 - a probe outside the valid range: evaluate per variant
+            return None
+    first, second, third = drives
+    changed = [k for k in first if first[k] is not second.get(k) and first[k] != second.get(k)]
+    if len(changed) != 1 or set(first) != set(second) or set(first) != set(third):
+        return None
+    leaf = changed[0]
+    values = (first[leaf], second[leaf], third[leaf])
+    if not all(isinstance(v, float) and math.isfinite(v) for v in values):
+        return None
+    factor = values[0] / x
+    for xi, v in zip((x * (1 + _PROBE_STEP), x * (1 - _PROBE_STEP)), values[1:], strict=True):
+        if abs(v - factor * xi) > _LINEAR_TOLERANCE * max(abs(v), 1e-300):
+            return None
+    if any(first[k] != third[k] for k in first if k != leaf):
+        return None
+    return leaf, factor
+
+
+class _Outputs:
+    """The JSON of each result head, computed once per distinct result object."""
+
+    def __init__(self) -> None:
+        self._cache: dict[int, tuple[Any, Any]] = {}
+
+    def part_json(self, part: Any, result: Any) -> Any:
+        if result is None:
+            return None
+        hit = self._cache.get(id(result))
+        if hit is None or hit[0] is not result:
+            hit = (result, part.to_json(result))
+            self._cache[id(result)] = hit
+        return hit[1]
+
+    def view(self, analysis: Any, heads: set[str]) -> dict[str, Any]:
+        from ..analysis.parts import get_part
+
+        out: dict[str, Any] = {}
+        for head in heads:
+            if head == "passed":
+                out[head] = analysis.passed
+            elif head == "checks":
+                out[head] = [c.to_dict() for c in analysis.checks]
+            elif head == "warnings":
+                out[head] = list(analysis.warnings)
+            elif head == "inputs":
+                out[head] = analysis.drive.inputs()
+            else:
+                try:
+                    part = get_part(head)
+                except Exception:  # noqa: BLE001 - the study file's outputs were checked
+                    continue
+                out[head] = self.part_json(part, analysis.results.get(head))
+        return out
+
+
+def evaluate_batch(base: dict, variants: Sequence[dict[str, Any]], outputs: Sequence[str], *,
+                   parts: Sequence[str] = ()) -> list[dict[str, Any]]:
+    """Rows of ``variants`` (each ``{project path: value}``), equal to
+    ``[evaluate_variant(base, v, outputs, parts=parts) for v in variants]``.
+
+    Examples
+    --------
+    >>> import tomllib
+    >>> from chaindrive.drive.project import template
+    >>> base = tomllib.loads(template("roller"))
+    >>> rows = evaluate_batch(base, [{"drive.speed": "1450 rpm"}, {"drive.speed": "960 rpm"}],
+    ...                       ["loads.chain_speed"])
+    >>> [round(r["loads.chain_speed"], 3) for r in rows]
+    [11.663, 7.722]
+    """
+    from ..analysis.batch import analyze_variants
+    from ..drive.project import project_from_mapping
+    from .run import _one_line, lookup
+
+    if not variants:
+        return []
+    t0, c0 = time.perf_counter(), time.process_time()
+    include = _include(outputs, parts)
+    heads = {o.split(".", 1)[0] for o in outputs} | {"warnings"}
+    paths = list(variants[0])
+    uniform = all(list(v) == paths for v in variants)
+    fast: dict[str, tuple[tuple[Any, ...], float]] = {}
+    if uniform and len(variants) > 1:
+        for path in paths:
+            found = probe_path(base, variants[0], path)
+            if found is not None and all(_number(v[path]) is not None
+                                         and _number(v[path])[1] == _number(variants[0][path])[1]  # type: ignore[index]
+                                         for v in variants):
+                fast[path] = found
+    groups: dict[str, list[int]] = {}
+    for i, v in enumerate(variants):
+        key = repr(sorted((p, repr(x)) for p, x in v.items() if p not in fast)) if uniform else str(i)
+        groups.setdefault(key, []).append(i)
+    rows: list[dict[str, Any] | None] = [None] * len(variants)
+    outs = _Outputs()
+    for members in groups.values():
+        first = variants[members[0]]
+        rows_of_group: list[tuple[int, Any]] = []
+        try:
+            data = copy.deepcopy(base)
+            for path, value in first.items():
+                set_path(data, path, value)
+            with warnings.catch_warnings(record=True) as caught:
+                warnings.simplefilter("always")
+                drive = project_from_mapping(data, filename="variant")
+            read_warnings = [str(w.message) for w in caught]
+            changes = [{fast[p][0]: fast[p][1] * _number(variants[i][p])[0]  # type: ignore[index]
+                        for p in fast} for i in members]
+            with warnings.catch_warnings(record=True) as caught:
+                warnings.simplefilter("always")
+                analyses = analyze_variants(drive, changes, include=include, errors="return")
+            extra = read_warnings + [str(w.message) for w in caught]
+            rows_of_group = list(zip(members, analyses, strict=True))
+        except Exception as exc:  # noqa: BLE001 - the group's project fails: per variant, as before
+            extra = []
+            rows_of_group = [(i, exc) for i in members]
+        for i, analysis in rows_of_group:
+            row: dict[str, Any] = dict.fromkeys(outputs)
+            row["error"] = None
+            row["warnings"] = None
+            if isinstance(analysis, BaseException):
+                if len(members) > 1 or fast:
+                    from .run import evaluate_variant
+
+                    row = evaluate_variant(base, variants[i], outputs, parts=parts)  # the exact message
+                else:
+                    row["error"] = _one_line(analysis)
+                rows[i] = row
+                continue
+            view = outs.view(analysis, heads)
+            for out in outputs:
+                row[out] = lookup(view, out)
+            messages = list(dict.fromkeys([*analysis.warnings, *extra]))
+            if messages:
+                row["warnings"] = " | ".join(messages)[:2000]
+            rows[i] = row
+    seconds = (time.perf_counter() - t0) / len(variants)
+    cpu = (time.process_time() - c0) / len(variants)
+    done = [r for r in rows if r is not None]
+    for r in done:
+        r.setdefault("seconds", seconds)
+        r.setdefault("cpu_seconds", cpu)
+    return done
+
+
+def _include(outputs: Sequence[str], parts: Sequence[str]) -> list[str] | None:
+    """The parts to compute: as :func:`chaindrive.study.run.analysis_result` chooses them."""
+    from ..analysis.parts import part_names
+
+    if not parts or set(parts) & {"passed", "checks", "warnings"}:
+        return None
+    names = part_names()
+    return [p for p in parts if p in names] or None
