@@ -26,4 +26,5 @@ def test_schemathesis_over_the_web_api():
     # no worker processes in the test suite: the job routes are left to `make fuzz`
     tally = fuzz.fuzz_openapi(120, random.Random(20261125), progress=False, include_jobs=False)
     assert tally.inputs >= 100
+    # timing is measured by `make fuzz` (calls over 30 s), never asserted in tests
     assert not (tally.tracebacks or tally.bad_exit or tally.nonfinite), tally.examples
