@@ -276,11 +276,11 @@ def test_cli_new_layout_select(tmp_path, capsys):
     assert out["layout"]["links"] == 122 and out["passed"] is True
     assert main(["layout", str(f)]) == 0
     assert "centre distance for 122 links" in capsys.readouterr().out
-    assert main(["select", "--power", "15 kW", "--speed", "1450 rpm", "--ratio", "3", "--json"]) == 0
+    assert main(["select", "--power", "15 kW", "--speed", "1450 rpm", "--ratio", "3", "-K", "1", "--json"]) == 0
     found = json.loads(capsys.readouterr().out)
-    assert found[0]["rated_power"] >= 15e3
-    assert main(["select", "--power", "15 kW", "--speed", "1450 rpm", "--ratio", "3"]) == 0
-    assert main(["select", "--power", "15 kg", "--speed", "1450 rpm", "--ratio", "3"]) == 2
+    assert found["recommended"]["rated_power"] >= 15e3
+    assert main(["select", "--power", "15 kW", "--speed", "1450 rpm", "--ratio", "3", "-K", "1"]) == 0
+    assert main(["select", "--power", "15 kg", "--speed", "1450 rpm", "--ratio", "3", "-K", "1"]) == 2
     assert "power" in capsys.readouterr().err
 
 

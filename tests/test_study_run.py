@@ -85,7 +85,9 @@ def test_local_cluster_two_workers(local_run, study_file):
     assert [r["wheels.0.teeth"] for r in failed] == [2, 2]
     assert all("wheels[0].teeth" in r["error"] and r["contact.stress"] is None for r in failed)
     ok = [r for r in rows if not r["error"]]
-    assert all(r["contact.stress"] > 0 and r["passed"] is True for r in ok)
+    # passed counts every check: at 206' the life with skew (about 1900 h) falls below the life at the
+    # rated power (18 300 h), the service-life check fails (issue 19: passed ignored the skew)
+    assert all(r["contact.stress"] > 0 and r["passed"] is (r["contact.skew"] < 100) for r in ok)
     # more skew, more stress (Garshniev & Maksymovych eq. (2)); the 206' rows come after the 42' rows
     assert ok[-1]["contact.stress"] > 2 * ok[0]["contact.stress"]
     assert len({r["worker"] for r in rows}) >= 1

@@ -56,8 +56,8 @@ def vibration_command(
     teeth: int | None = typer.Option(None, "--teeth", help="Teeth (pockets) z1 >= 3 of the driving wheel (dimensionless count): meshing excitation z1 omega1 (polygonal effect, Dolipiński et al.)."),
     link_chain: bool = typer.Option(False, "--link-chain", help="Round link chain on a pocket wheel: the excitation z1 omega1 of a pair of links (unequal lengths t + d, t - d, Dolipiński et al. eq. 6) instead of the roller chain's z1 omega1/2 (inner/outer links)."),
     model: str = typer.Option("projected", "--model", help="Coupling at the tensioner: projected (w_i = u cos beta_i, derived) or as_printed (w_i = u, the tensioner paper eq. 7 as printed)."),
-    speed_min: str | None = typer.Option(None, "--speed-min", help=unit_help("Lower end of the speed range of --campbell/--map; default 0.8 x --speed (operating range).", "rpm or rad/s", "100 rpm")),
-    speed_max: str | None = typer.Option(None, "--speed-max", help=unit_help("Upper end of the speed range of --campbell/--map; default 1.2 x --speed.", "rpm or rad/s", "400 rpm")),
+    speed_min: str | None = typer.Option(None, "--speed-min", help=unit_help("Lower end of the speed range of --campbell/--map; default 0.5 x --speed (the analysis's Campbell range).", "rpm or rad/s", "100 rpm")),
+    speed_max: str | None = typer.Option(None, "--speed-max", help=unit_help("Upper end of the speed range of --campbell/--map; default 1.5 x --speed (the analysis's Campbell range).", "rpm or rad/s", "400 rpm")),
     as_json: bool = typer.Option(False, "--json", help="Print frequencies_rad_s, frequencies_hz, static_rod_force_n (N) and resonance rows as JSON, SI units."),
     campbell_file: Path | None = typer.Option(None, "--campbell", help="Write a PNG Campbell diagram (frequencies against the driving speed, both in rad/s, rpm on a second axis; forbidden bands shaded); needs --speed or --speed-max."),
     force: bool = force_option(),
@@ -103,14 +103,16 @@ def vibration_command(
         check = resonance_check(p, excitation_frequencies(w, ratio, teeth, link_chain=link_chain))
 
     if campbell_file is not None or map_file is not None:
+        from ..analysis.vibration import CAMPBELL_RANGE
+
         wmax = quantity(speed_max, "rad/s", "speed-max")
         if wmax is None:
             if w is None:
                 raise InputError("--campbell/--map need a speed range: give --speed or --speed-max (rad/s or rpm)")
-            wmax = 1.2 * w
+            wmax = CAMPBELL_RANGE[1] * w
         wmin = quantity(speed_min, "rad/s", "speed-min")
         if wmin is None:
-            wmin = 0.8 * w if w is not None else 0.5 * wmax
+            wmin = CAMPBELL_RANGE[0] * (w if w is not None else wmax / CAMPBELL_RANGE[1])
         _positive(wmin, "speed-min", "rad/s")
         if not wmax > wmin:
             raise InputError(f"speed-max must exceed speed-min ({wmin:g} rad/s), got {wmax:g} rad/s")
