@@ -61,6 +61,7 @@ def test_crawler_part_kinematics_and_forces(crawler, crawler_analysis):
     assert r.guide_reaction_driving == pytest.approx(7318.29, rel=1e-5)
 
 
+@pytest.mark.slow
 def test_crawler_part_checks_and_report(crawler_analysis, tmp_path):
     checks = {c.name: c for c in crawler_analysis.checks}
     assert checks["cam stays on the traction-chain hinge (smallest cam force)"].passed is True

@@ -103,6 +103,7 @@ def test_cli_analyze_exit_codes(tmp_path, capsys):
     assert "speed" in err and "worse.toml:" in err
 
 
+@pytest.mark.slow
 def test_report_pdf(tmp_path):
     pytest.importorskip("weasyprint")
     ex = next(e for e in EXAMPLES if e.stem == "roller_industrial")

@@ -1,6 +1,8 @@
 """The CLI's shell: help, demo, error handling."""
 
 
+import pytest
+
 from chaindrive.cli import main
 
 
@@ -10,6 +12,7 @@ def test_help_lists_commands(capsys):
     assert "demo" in out
 
 
+@pytest.mark.slow
 def test_demo_writes_output(tmp_path, capsys):
     assert main(["demo", "--output", str(tmp_path)]) == 0
     assert "results written to" in capsys.readouterr().out

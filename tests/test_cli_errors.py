@@ -116,6 +116,7 @@ def test_not_utf8_missing_and_directory(capsys, tmp_path):
     one_line(capsys, ["layout", tmp_path], r"is a folder; give a TOML file")
 
 
+@pytest.mark.slow
 def test_too_many_errors_capped(capsys, tmp_path):
     from chaindrive.drive.project import template
 

@@ -108,6 +108,7 @@ def test_part_solid_is_one_piece_without_hub():
     assert solid.volume * 1e-9 == pytest.approx(part_volume(part), rel=VOLUME_RTOL)
 
 
+@pytest.mark.slow
 def test_cli_acceptance_sprocket(tmp_path, capsys):
     # the acceptance command of the issue
     step, dxf = tmp_path / "s.step", tmp_path / "s.dxf"

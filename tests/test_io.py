@@ -111,6 +111,7 @@ def test_unwritable_folder(tmp_path):
         os.chmod(ro, 0o700)
 
 
+@pytest.mark.slow
 def test_save_figure_formats(tmp_path):
     import matplotlib
 

@@ -18,7 +18,6 @@ from chaindrive.chains import get  # noqa: E402
 from chaindrive.drive import Drive, Guide, Load, Tensioner, Wheel  # noqa: E402
 from chaindrive.drive.project import load_project, parse_project  # noqa: E402
 from chaindrive.drive.writer import candidate_drive, drive_to_toml, project_text  # noqa: E402
-from chaindrive.errors import InputError  # noqa: E402
 
 positive = st.floats(1e-3, 1e4, allow_nan=False, allow_infinity=False)
 coordinate = st.floats(-20.0, 20.0, allow_nan=False, allow_infinity=False)
@@ -80,9 +79,9 @@ def test_candidate_drive_is_the_selected_row() -> None:
     assert d.links == row.links and d.wheels[1].position[0] == row.centre_distance
 
 
-def test_self_regulating_refused(examples_dir) -> None:
-    with pytest.raises(InputError, match="self_regulating"):
-        drive_to_toml(load_project(examples_dir / "self_regulating.toml"))
+def test_self_regulating_round_trip(examples_dir) -> None:
+    drive = load_project(examples_dir / "self_regulating.toml")
+    assert parse_project(drive_to_toml(drive)) == drive
 
 
 def test_control_characters_in_names_round_trip(roller_drive) -> None:

@@ -519,6 +519,7 @@ def test_analysis_power_load_links_from_layout_and_frozen_copy():
     assert r2.links == 80 and r2.centre_distance[0, 0] > r.centre_distance[0, 0]
 
 
+@pytest.mark.slow
 def test_plot(example, tmp_path):
     from chaindrive.plotting.self_regulating import self_regulating_plot
 

@@ -10,6 +10,7 @@ import pytest
 from chaindrive.cli import main
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize(("example", "links"), [("roller", 100), ("link", 60)])
 def test_cli_example(tmp_path, capsys, example, links):
     out = tmp_path / "out"
@@ -64,6 +65,7 @@ def test_model_from_drive_load_and_speed():
     assert m.links == drive_layout(d).links
 
 
+@pytest.mark.slow
 def test_cli_conveyor_example(tmp_path, capsys):
     # the 100 m conveyor (2,194 links): assembled statically by Newton, a short run
     out = tmp_path / "conv"

@@ -63,6 +63,7 @@ def _guided_run(entry, *, flare=0.0, periods=5):
     return err, dist, k
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("entry", ["chordal", "tangential"])
 def test_guided_entry_speed_matches_kinematics(entry):
     err, dist, k = _guided_run(entry)
@@ -80,6 +81,7 @@ def test_guided_entry_speed_matches_kinematics(entry):
         {"chordal": 0.00182, "tangential": 0.00268}[entry], abs=5e-4)
 
 
+@pytest.mark.slow
 def test_flared_guide_mouth_also_follows_the_law():
     # a lead-in arc of 0.1 m radius at the channel's mouth (a polyline of 10 segments:
     # the segment ends act as corners, so the surface has no gaps): chordal entry
@@ -151,6 +153,7 @@ def test_project_guides_become_channels():
     assert low.start[1] == pytest.approx(cy + radius * np.cos(d1 / 2) - bar)
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("entry", ["chordal", "tangential"])
 def test_guided_entry_of_round_link_chain_matches_kinematics(entry):
     # Dolipiński et al.'s case: 18x64 on 8 pockets, guide end l = 0.256 m, ω = 0.5 rad/s (rigid

@@ -186,6 +186,7 @@ def test_longitudinal_wave_speed_is_sqrt_ea_over_q():
     assert speed == pytest.approx(c, rel=5e-3)
 
 
+@pytest.mark.slow
 def test_plucked_span_of_a_thousand_links_rings_at_the_string_frequency():
     from chaindrive.vibration import moving_string_frequencies
 

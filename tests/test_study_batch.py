@@ -125,6 +125,7 @@ def test_run_batch_carries_batches():
     assert [r["variant"] for r in rows] == list(range(5)) and [r["key"] for r in rows] == [f"k{i}" for i in range(5)]
 
 
+@pytest.mark.slow
 @settings(max_examples=6, deadline=None)
 @given(skews=st.lists(st.floats(0.0, 0.05), min_size=2, max_size=6), power=st.floats(2e3, 30e3),
        mass=st.floats(1.0, 500.0))

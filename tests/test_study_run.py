@@ -117,6 +117,7 @@ def _stop(proc: subprocess.Popen) -> None:
             proc.wait(timeout=5)
 
 
+@pytest.mark.slow
 def test_separate_scheduler_and_worker_give_the_same_rows(local_run, study_file, tmp_path):
     port = free_port()
     address = f"tcp://127.0.0.1:{port}"
@@ -151,6 +152,7 @@ def test_separate_scheduler_and_worker_give_the_same_rows(local_run, study_file,
             _stop(p)
 
 
+@pytest.mark.slow
 def test_summary_page(local_run, capsys):
     pytest.importorskip("matplotlib")
     out, _ = local_run

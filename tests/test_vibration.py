@@ -110,6 +110,7 @@ def test_moving_string_scalar_vs_array_and_errors():
 
 
 # ----------------------------------------------------------------------- frequency equation
+@pytest.mark.slow
 @pytest.mark.parametrize("par", [BASE, ASYM], ids=["symmetric", "asymmetric"])
 @pytest.mark.parametrize("model", ["projected", "as_printed"])
 @pytest.mark.parametrize("m,c", [(3.0, 5e4), (0.0, 0.0), (25.0, 2e3), (0.5, 2e6)])

@@ -24,6 +24,7 @@ def _bench():
     return mod
 
 
+@pytest.mark.slow
 def test_planar_model_converges_to_projected_and_not_to_as_printed():
     # independent reference: the planar bead chain (no coupling factor assumed), 100 and 200
     # links per part extrapolated; at 50° the printed eq. (7) is 6 % off, the derived one 1e-4

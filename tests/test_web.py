@@ -371,6 +371,7 @@ def test_gate_refuses_when_full():
         asyncio.run(g.run(lambda: 1))
 
 
+@pytest.mark.slow
 def test_simulation_job_of_the_studio_design(client):
     import time
 
@@ -411,6 +412,7 @@ def test_expert_wheel_outline_downloads(client, page):
     assert bad.status_code == 422 and "teeth" in bad.json()["error"]
 
 
+@pytest.mark.slow
 @settings(max_examples=12, deadline=None)
 @given(st.integers(min_value=9, max_value=40), st.floats(min_value=1.0, max_value=4.0),
        st.floats(min_value=0.3, max_value=2.0), st.sampled_from(["", "on"]))
@@ -452,6 +454,7 @@ def test_loads_shown_with_units_from_the_report_table():
     assert "lbf" in {r[2] for r in imperial["loads"]["rows"]}
 
 
+@pytest.mark.slow
 def test_dxf_downloads_are_the_workshop_drawing_and_the_mining_example_is_the_file(client):
     """The studio's and the pocket-wheel page's DXF is the workshop drawing that
     ``chaindrive sprocket --dxf`` / ``pocket-wheel --dxf`` write (views, title block), not an

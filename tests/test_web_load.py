@@ -41,6 +41,7 @@ def server(web_server):
         yield base
 
 
+@pytest.mark.slow
 def test_fifty_parallel_mixed_requests(server):
     from chaindrive.drive.project import template
 

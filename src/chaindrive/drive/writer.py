@@ -42,7 +42,9 @@ __all__ = ["project_text", "drive_to_toml", "candidate_drive", "candidate_projec
 
 def toml_string(text: str) -> str:
     """A TOML basic string (JSON escapes are valid TOML)."""
-    return json.dumps(str(text), ensure_ascii=False)
+    # JSON escapes are TOML escapes; DEL (U+007F), a control character TOML refuses raw, is
+    # the one JSON leaves as it is
+    return json.dumps(str(text), ensure_ascii=False).replace("\x7f", "\\u007f")
 
 
 def quantity_text(value: float, unit: str) -> str:

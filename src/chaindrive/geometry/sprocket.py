@@ -29,7 +29,7 @@ from typing import TYPE_CHECKING, Any
 
 from .._results import Result, quantity
 from ..errors import InputError
-from .iso606 import (
+from .iso606 import (  # noqa: F401 - importable from here as before
     MAX_TEETH_TABULATED,
     MIN_TEETH,
     _roller,
@@ -67,27 +67,9 @@ if TYPE_CHECKING:
 
     from ..chains import Chain
 
+# the formulas (iso606) and tooth forms (tooth_form) import from here as before; this
+# module documents only its own objects
 __all__ = [
-    "MIN_TEETH",
-    "MAX_TEETH_TABULATED",
-    "pitch_diameter",
-    "root_diameter",
-    "tip_diameter_limits",
-    "seating_radius_limits",
-    "seating_angle_limits",
-    "flank_radius_limits",
-    "tooth_height_limits",
-    "tooth_width",
-    "tooth_side_radius",
-    "tooth_side_relief_limits",
-    "measurement_over_pins",
-    "max_hub_diameter",
-    "ansi_tooth_form",
-    "AnsiToothForm",
-    "iso_tooth_form",
-    "IsoToothForm",
-    "sprocket_outline",
-    "TOOTH_FORMS",
     "SprocketDimensions",
     "Sprocket",
 ]
