@@ -38,16 +38,9 @@ FORBIDDEN = {
 }
 
 MAX_LINES = 800
-#: Modules allowed over MAX_LINES: the numba kernel (one jitted unit), and modules being split
-#: by their owners in this release (remove a name when its split lands).
+#: Modules allowed over MAX_LINES: the numba kernel (one jitted unit) only.
 OVERSIZE_ALLOWED = {
-    "chaindrive.simulation._kernel",
-    "chaindrive.layout",            # being split (drive layout formulas)
-    "chaindrive.kinematics.crawler",  # being split
-    "chaindrive.selection",         # moving to chaindrive.rating / chaindrive.design
-    "chaindrive.simulation.run",    # being split
-    "chaindrive.simulation.model",  # being split
-    "chaindrive.drive.model",       # 807 lines since the tensioner mechanisms: to split
+    "chaindrive.simulation._kernel",  # one jitted unit (689 lines today: under the limit too)
 }
 
 
@@ -188,8 +181,8 @@ def test_no_upward_import() -> None:
 @pytest.mark.parametrize("module", sorted(MODULES))
 def test_module_size(module: str) -> None:
     lines = MODULES[module].read_text(encoding="utf-8").count("\n")
-    if module in OVERSIZE_ALLOWED:
-        pytest.skip(f"{module}: {lines} lines, allowed while it is being split")
+    if module in OVERSIZE_ALLOWED and lines > MAX_LINES:
+        pytest.skip(f"{module}: {lines} lines, allowed (one jitted unit)")
     assert lines <= MAX_LINES, f"{module} has {lines} lines (> {MAX_LINES}): split it by topic"
 
 
