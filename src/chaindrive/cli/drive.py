@@ -265,10 +265,10 @@ def rating_command(
     as_json: bool = typer.Option(False, "--json", help="JSON in SI units: rated_power [W], method, limited_by."),
 ) -> None:
     """Rated power of one roller chain on its small sprocket (ANSI/ACA or the chain family's method)."""
-    from ..rating import chain_rating
+    from ..design.rating import rate_chain
 
-    r = chain_rating(chain, teeth, quantity(speed, "rad/s", "speed"), power=quantity(power, "W", "power"),
-                     method=method)
+    r = rate_chain(chain, teeth, quantity(speed, "rad/s", "speed"), power=quantity(power, "W", "power"),
+                   method=method)
     if as_json:
         echo_json({"chain": r.chain, "teeth": r.teeth, "angular_velocity": r.angular_velocity,
                    "rated_power": r.rated_power, "method": r.method, "limited_by": r.limited_by,

@@ -19,6 +19,7 @@ Examples
 from .advice import drive_advice
 from .duty import Duty, Factor, duty_factors, service_factor_table, service_factor_text
 from .procedure import DesignCandidate, DesignResult, design_drive, project_text
+from .rating import rate_chain
 
 __all__ = ["Duty", "Factor", "DesignCandidate", "DesignResult", "design_drive", "duty_factors",
-           "service_factor_table", "service_factor_text", "drive_advice", "project_text"]
+           "service_factor_table", "service_factor_text", "drive_advice", "project_text", "rate_chain"]
