@@ -11,7 +11,7 @@ def test_select_table_never_truncates_a_word(capsys, monkeypatch):
 
     monkeypatch.setattr(drive_cli, "_console", lambda: Console(width=100))
     assert main(["select", "--power", "7.5 kW", "--speed", "1450 rpm", "--ratio", "3",
-                 "--centre-distance", "500 mm"]) == 0
+                 "--centre-distance", "500 mm", "--service-factor", "1.0"]) == 0
     out = capsys.readouterr().out
     assert "…" not in out
-    assert "roller-bushing" in out                      # the governing limit, whole
+    assert "link-plate" in out                          # the governing limit, whole

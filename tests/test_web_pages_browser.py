@@ -58,7 +58,7 @@ def test_wheel_pages_show_dimensions_with_units(page, name):
     assert not ATTRIBUTE.search(text) and not RESIDUE.search(text)
     for label, value, unit in rows:
         if NUMBER.match(value) and not any(w in label for w in ("teeth", "factor")):
-            assert unit in ("mm", "°"), (label, value, unit)
+            assert unit in ("mm", "°", "%"), (label, value, unit)
     _shot(page, name)
 
 

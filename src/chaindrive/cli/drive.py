@@ -229,16 +229,27 @@ def select_command(
                      f"{duty.speed_ratio:.4g}, {duty.hours_per_day:g} h/day, {duty.environment}"))
     for f in rec.factors:
         con.print(escape(f"  {f.name} {f.symbol} = {f.value:.4g}  [{f.source}]" + (f" ({f.note})" if f.note else "")))
-    t = Table(title=f"Candidates (design power {rec.design_power / 1e3:.4g} kW)")
-    for h in ("#", "chain", "teeth", "links", "centre distance [mm]", "rated [kW]", "margin", "limited by",
-              "method", "v [m/s]", "lubrication", "static safety"):
-        t.add_column(escape(h), no_wrap=h in ("chain", "teeth", "rated [kW]"), overflow="fold")
-    for k, c in enumerate(found, 1):
-        t.add_row(str(k), " / ".join(c.names), f"{c.driving_teeth}/{c.driven_teeth}", str(c.links),
+    # two tables, each no wider than needed: a column is at least as wide as its longest
+    # cell (no number or word is broken); headers wrap between their words
+    rank_rows = [[str(k), " / ".join(c.names), f"{c.driving_teeth}/{c.driven_teeth}", str(c.links),
                   f"{c.centre_distance * 1e3:.2f}", f"{c.rated_power / 1e3:.2f}", f"{c.power_margin:.2f}",
-                  c.limited_by.replace("_", "-"), c.method, f"{c.chain_speed:.2f}", c.lubrication,
-                  "-" if c.static_safety is None else f"{c.static_safety:.2f} (>= {c.required_static_safety:g})")
-    con.print(t)
+                  c.limited_by.replace("_", "-")] for k, c in enumerate(found, 1)]
+    more_rows = [[str(k), c.method, f"{c.chain_speed:.2f}", c.lubrication,
+                  "-" if c.static_safety is None else f"{c.static_safety:.2f} (>= {c.required_static_safety:g})"]
+                 for k, c in enumerate(found, 1)]
+    tables = ((f"Candidates (design power {rec.design_power / 1e3:.4g} kW)",
+               ("#", "chain", "teeth", "links", "centre distance [mm]", "rated [kW]", "margin", "limited by"),
+               rank_rows),
+              ("Candidates: chain speed, lubrication, static safety",
+               ("#", "rating method", "v [m/s]", "lubrication region", "static safety (required)"), more_rows))
+    for title, headers, rows in tables:
+        table = Table(title=title)
+        for i, h in enumerate(headers):
+            words = [len(w) for w in h.split()] + [len(r[i]) for r in rows]
+            table.add_column(escape(h), min_width=max(words), overflow="fold")
+        for r in rows:
+            table.add_row(*r)
+        con.print(table)
     for note in dict.fromkeys(n for c in found for n in c.notes):
         con.print(escape(f"note: {note}"))
     con.print(escape(f"Recommended: {rec.chain}, {rec.driving_teeth}/{rec.driven_teeth} teeth, {rec.links} links, "

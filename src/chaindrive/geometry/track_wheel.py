@@ -331,7 +331,7 @@ class TrackDriveWheelDimensions(Result):
     pointed_tip_radius: float = quantity("m")
     tooth_pointed: bool
     sources: dict[str, str]
-    elongation_limit: float | None = quantity("1", default=None)
+    elongation_limit: float | None = quantity("1", display="%", default=None)
     worn_tip_radius: float | None = quantity("m", default=None)
     worn_tip_factor: float | None = quantity("1", default=None)
 
