@@ -174,7 +174,7 @@ def _walk(drive: Drive, layout: DriveLayout) -> list[tuple[str, int]]:
 
 def _axial_stiffness(drive: Drive) -> float:
     """``EA`` [N] of the chain, the simulation's value (round link chains: 0.854e11 d²)."""
-    from ..simulation.model import AXIAL_STIFFNESS_16B, link_chain_axial_stiffness
+    from ..chains.stiffness import AXIAL_STIFFNESS_16B, link_chain_axial_stiffness
 
     if drive.chain.bar_diameter is not None:
         return float(link_chain_axial_stiffness(float(drive.chain.bar_diameter)))

@@ -12,8 +12,8 @@ wheel. Two resonances besides the transverse span vibration (:mod:`chaindrive.an
 Each is compared with the tooth frequency through the forbidden band of the tensioner
 paper, ``0.7 <= ω/(z1 ω1) <= 1.4`` (:data:`chaindrive.vibration.resonance.BAND`), as the
 transverse check. The chain's axial stiffness ``EA`` is the simulation's estimate
-(:data:`chaindrive.simulation.model.AXIAL_STIFFNESS_16B` scaled with pitch², or
-:func:`~chaindrive.simulation.model.link_chain_axial_stiffness`), an order of magnitude,
+(:data:`chaindrive.chains.stiffness.AXIAL_STIFFNESS_16B` scaled with pitch², or
+:func:`~chaindrive.chains.stiffness.link_chain_axial_stiffness`), an order of magnitude,
 and the wheels' inertia is not part of the drive description: a steel disc 20 mm thick at
 the pitch radius is assumed, as in the simulation. Both checks are therefore reported for
 information (relation ``"info"``), with the verdict in words in the note.
@@ -54,7 +54,7 @@ class CriticalSpeeds(Result):
 
 
 def _axial_stiffness(drive: Drive) -> float:
-    from ..simulation.model import AXIAL_STIFFNESS_16B, link_chain_axial_stiffness
+    from ..chains.stiffness import AXIAL_STIFFNESS_16B, link_chain_axial_stiffness
 
     if drive.chain.bar_diameter is not None:
         return float(link_chain_axial_stiffness(drive.chain.bar_diameter))

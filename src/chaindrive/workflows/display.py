@@ -40,7 +40,6 @@ CONVERSIONS: dict[tuple[str, str], float] = {
     **{(si, shown): factor for si, (shown, factor) in DISPLAY.items()},
     ("m", "m"): 1.0,
     ("m", "µm"): 1e6,
-    ("1", "%"): 100.0,
     ("N", "N"): 1.0,
     ("W", "W"): 1.0,
     ("Pa", "GPa"): 1e-9,
