@@ -43,6 +43,7 @@ autosummary_ignore_module_all = True  # a package page lists what it defines, th
 # moved modules kept as deprecated aliases for one release (CHANGELOG.md): not documented twice
 autosummary_context = {"skip_modules": ["chaindrive.drive.layout", "chaindrive.drive.loads",
                                         "chaindrive.drive.selection", "chaindrive.drive.wear",
+                                        "chaindrive.drive.self_regulating",
                                         # internal: the typer application (chaindrive.cli.app is its object)
                                         "chaindrive.cli.app"]}
 autodoc_default_options = {"members": True, "show-inheritance": False}

@@ -165,14 +165,14 @@ def _drive_rows(drive: Any) -> str:
         rows.append(("design power", fmt(power), unit))
     except Exception:  # noqa: BLE001 - a drive given by its torque alone may have no power yet
         pass
+    from .sections import wheel_description
+
     for w in drive.wheels:
         teeth = "plain" if w.teeth is None else f"{w.teeth} teeth"
-        role = " (driving)" if w.driving else ""
         x, _ = convert(w.position[0], "m")
         y, _ = convert(w.position[1], "m")
-        rows.append((f"wheel {escape(w.name)}{role}", f"{escape(w.kind)}, {teeth}, at ({fmt(x)}, {fmt(y)})", "mm"))
-    if drive.tensioner is not None:
-        rows.append(("tensioner", escape(type(drive.tensioner).__name__), ""))
+        rows.append((f"wheel {escape(w.name)}", f"{escape(wheel_description(drive, w.name))}, {teeth}, "
+                                                 f"at ({fmt(x)}, {fmt(y)})", "mm"))
     body = "".join(f"<tr><td>{a}</td><td>{b}</td><td>{c}</td></tr>" for a, b, c in rows)
     return "<table class='cd-table'><tr><th>quantity</th><th>value</th><th>unit</th></tr>" + body + "</table>"
 
