@@ -7,7 +7,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from ..units import angular_velocity_to_rpm, rpm_to_angular_velocity
-from ._axes import figure_of
+from ._axes import figure_of, subplots
 
 if TYPE_CHECKING:
     from matplotlib.axes import Axes
@@ -41,7 +41,6 @@ def layout_plot(result: DriveAnalysis | DriveLayout | Drive, *, ax: Axes | None 
     -------
     matplotlib.figure.Figure
     """
-    import matplotlib.pyplot as plt
     from matplotlib.patches import Circle
 
     from ..analysis import DriveAnalysis, analyze_drive
@@ -75,7 +74,7 @@ def layout_plot(result: DriveAnalysis | DriveLayout | Drive, *, ax: Axes | None 
     own_figure = ax is None
     if ax is None:
         aspect = float((hi[1] - lo[1]) / (hi[0] - lo[0]))
-        fig, ax = plt.subplots(figsize=(10.0, float(np.clip(8.6 * aspect + 1.6, 3.4, 9.5))), layout="constrained")
+        fig, ax = subplots(figsize=(10.0, float(np.clip(8.6 * aspect + 1.6, 3.4, 9.5))), layout="constrained")
     else:
         fig = figure_of(ax)
     for i, name in enumerate(layout.wheel_names):
@@ -140,10 +139,9 @@ def wear_plot(result: WearLife, *, ax: Axes | None = None) -> Figure:
     -------
     matplotlib.figure.Figure
     """
-    import matplotlib.pyplot as plt
 
     if ax is None:
-        fig, ax = plt.subplots(figsize=(7, 4))
+        fig, ax = subplots(figsize=(7, 4))
     else:
         fig = figure_of(ax)
     ax.plot(result.hours, 100 * result.elongation, label=f"elongation ({result.model} model)")
@@ -202,7 +200,6 @@ def rating_plot(result: ChainRating | float, teeth: int | None = None, *, strand
     """
     import warnings
 
-    import matplotlib.pyplot as plt
 
     from .. import selection as S
     from ..errors import ValidityRangeWarning
@@ -219,7 +216,7 @@ def rating_plot(result: ChainRating | float, teeth: int | None = None, *, strand
         if teeth is None:
             raise TypeError("rating_plot needs teeth when given a pitch")
     if ax is None:
-        fig, ax = plt.subplots(figsize=(8, 5))
+        fig, ax = subplots(figsize=(8, 5))
     else:
         fig = figure_of(ax)
     k2 = S.multi_strand_factor(strands)

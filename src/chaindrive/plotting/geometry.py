@@ -6,7 +6,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from ._axes import figure_of
+from ._axes import figure_of, subplots
 
 if TYPE_CHECKING:
     from matplotlib.axes import Axes
@@ -84,7 +84,6 @@ def geometry_plot(
     -------
     matplotlib.figure.Figure
     """
-    import matplotlib.pyplot as plt
 
     from ..geometry.outline import Outline
 
@@ -97,7 +96,7 @@ def geometry_plot(
             outline = wheel.outline()
         title = wheel.label() if hasattr(wheel, "label") else type(wheel).__name__
     if ax is None:
-        fig, ax = plt.subplots(figsize=(7, 7))
+        fig, ax = subplots(figsize=(7.8, 7.4))  # room for the legend of long labels below
     else:
         fig = figure_of(ax)
     mm = 1e3

@@ -10,6 +10,7 @@ import base64
 import dataclasses
 import datetime as _dt
 import io
+import sys
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
@@ -43,21 +44,15 @@ class Figure:
     @classmethod
     def from_matplotlib(cls, fig: MatplotlibFigure, caption: str, filename: str, dpi: int = 100) -> Figure:
         buf = io.BytesIO()
-        if any(ax.get_aspect() == 1.0 for ax in fig.axes):
-            # equal-aspect drawings (layouts, outlines): crop the white space the fixed
-            # aspect leaves, at the price of a second draw
-            fig.savefig(buf, format="png", dpi=dpi, bbox_inches="tight")
-        else:
-            # plots: constrained layout, solved inside the one draw of savefig
-            # (bbox_inches="tight" needs an extra draw per figure)
-            try:
-                fig.set_layout_engine("constrained")
-            except RuntimeError:  # an engine the figure's colorbars cannot switch from
-                pass
-            fig.savefig(buf, format="png", dpi=dpi)
-        import matplotlib.pyplot as plt
-
-        plt.close(fig)
+        if fig.get_layout_engine() is None:
+            # one pass of the tight layout inside savefig's single draw (constrained layout
+            # iterates and bbox_inches="tight" draws twice); a plot that needs another
+            # engine (a legend outside its axes) sets it where it is made
+            fig.set_layout_engine("tight", pad=0.6)
+        fig.savefig(buf, format="png", dpi=dpi)
+        plt = sys.modules.get("matplotlib.pyplot")  # imported only by a program that uses it
+        if plt is not None:
+            plt.close(fig)
         return cls(caption=caption, png=buf.getvalue(), filename=filename)
 
     @property
