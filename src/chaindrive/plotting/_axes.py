@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING, Any, Literal
 
 from ..errors import InputError
 
@@ -45,7 +45,8 @@ def figure_of(ax: Axes) -> Figure:
     return fig
 
 
-def subplots(nrows: int = 1, ncols: int = 1, *, figsize: tuple[float, float], layout: str | None = None,
+def subplots(nrows: int = 1, ncols: int = 1, *, figsize: tuple[float, float],
+             layout: Literal["constrained", "compressed", "tight"] | None = None,
              **kwargs: Any) -> tuple[Figure, Any]:
     """A new figure and its axes, as ``plt.subplots`` gives them.
 

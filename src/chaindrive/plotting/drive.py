@@ -73,8 +73,13 @@ def layout_plot(result: DriveAnalysis | DriveLayout | Drive, *, ax: Axes | None 
     lo, hi = lo - margin, hi + margin
     own_figure = ax is None
     if ax is None:
+        # fixed margins [in] (tick labels and axis labels; the legend below the x label), and
+        # the figure's height fitted to the drawing's aspect: no layout pass when drawn
+        left, right, bottom, top, width = 0.85, 0.25, 0.85, 0.45, 10.0
         aspect = float((hi[1] - lo[1]) / (hi[0] - lo[0]))
-        fig, ax = subplots(figsize=(10.0, float(np.clip(8.6 * aspect + 1.6, 3.4, 9.5))), layout="constrained")
+        height = float(np.clip((width - left - right) * aspect + bottom + top, 3.4, 9.5))
+        fig, ax = subplots(figsize=(width, height))
+        fig.subplots_adjust(left=left / width, right=1 - right / width, bottom=bottom / height, top=1 - top / height)
     else:
         fig = figure_of(ax)
     for i, name in enumerate(layout.wheel_names):
@@ -84,7 +89,9 @@ def layout_plot(result: DriveAnalysis | DriveLayout | Drive, *, ax: Axes | None 
         txt = name
         if layout.teeth_in_mesh[i] is not None:
             txt += f"\nwrap {np.degrees(w.wrap_angle[i]):.0f}°, {layout.teeth_in_mesh[i]} in mesh"
-        ax.annotate(txt, c, xytext=(4, 4), textcoords="offset points", fontsize=8)
+        right = c[0] > lo[0] + 0.75 * (hi[0] - lo[0])  # names near the right edge read leftwards, inside the figure
+        ax.annotate(txt, c, xytext=(-4 if right else 4, 4), textcoords="offset points", fontsize=8,
+                    ha="right" if right else "left")
         # wrapped arc
         a0 = np.arctan2(*(w.span_end[(i - 1) % n] - w.centres[i])[::-1])
         th = a0 + w.sides[i] * np.linspace(0, w.wrap_angle[i], 60)
@@ -120,7 +127,11 @@ def layout_plot(result: DriveAnalysis | DriveLayout | Drive, *, ax: Axes | None 
     ax.plot([], [], color="tab:blue", lw=2, label="wrapped chain, other spans")
     ax.plot([], [], color="0.4", ls="--", lw=0.8, label="pitch circle")
     if own_figure:  # legend outside the drawing, below it
-        fig.legend(*ax.get_legend_handles_labels(), loc="outside lower center", ncol=5, fontsize=8, frameon=False)
+        fig.legend(*ax.get_legend_handles_labels(), loc="lower center", ncol=5, fontsize=8, frameon=False)
+        from matplotlib.layout_engine import PlaceHolderLayoutEngine
+
+        # laid out here: a report keeps these margins (an engine that moves nothing)
+        fig.set_layout_engine(PlaceHolderLayoutEngine(adjust_compatible=True, colorbar_gridspec=True))
     else:
         ax.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), borderaxespad=0.0, fontsize=8, frameon=False)
     ax.grid(True, lw=0.3)
@@ -199,7 +210,6 @@ def rating_plot(result: ChainRating | float, teeth: int | None = None, *, strand
     :func:`~chaindrive.selection.lubrication_limits` converted to sprocket speed.
     """
     import warnings
-
 
     from .. import selection as S
     from ..errors import ValidityRangeWarning
