@@ -5,7 +5,7 @@ VENV := .venv
 PY := $(VENV)/bin/python
 OUT ?= out
 
-.PHONY: demo test bench lint clean venv fuzz docs test-dist
+.PHONY: demo test test-fast bench lint clean venv fuzz docs test-dist
 
 $(VENV)/bin/python:
 	$(PYTHON) -m venv $(VENV)
@@ -35,6 +35,10 @@ demo: $(VENV)/.installed-all
 
 test: $(VENV)/.installed-test
 	MPLBACKEND=Agg $(PY) -m pytest -n 2 -q
+
+# everything but the slow (> ~5 s), browser and fuzz tests: under a minute on 2 cores
+test-fast: $(VENV)/.installed-test
+	MPLBACKEND=Agg $(PY) -m pytest -n 2 -q -m "not slow and not browser and not fuzz"
 
 # the documentation site, offline, warnings as errors: docs/_build/html/index.html
 # (the API pages and the gallery are generated anew each time)

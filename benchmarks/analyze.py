@@ -18,11 +18,9 @@ import subprocess
 import sys
 import tempfile
 import time
-from contextlib import nullcontext
 from pathlib import Path
-from unittest import mock
 
-from chaindrive.analysis import analyze_drive, part_names
+from chaindrive.analysis import analyze_drive
 from chaindrive.drive.project import load_project
 from chaindrive.workflows.analyze import analyze
 
@@ -42,21 +40,11 @@ def median_ms(fn, repeat: int = 15) -> tuple[float, float]:
     return statistics.median(walls) * 1e3, statistics.median(cpus) * 1e3
 
 
-def without_remedy():
-    """The analysis without the resonance remedy search: its own part where it is one,
-    else the search switched off inside the vibration part."""
-    if "remedy" in part_names():
-        return {"exclude": ["remedy"]}, nullcontext()
-    return {}, mock.patch("chaindrive.analysis.vibration.search_remedy", return_value=None)
-
-
 def main() -> None:
     print(f"load average {' '.join(f'{x:.2f}' for x in os.getloadavg())} (2 cores shared: CPU time is the steadier figure)")
-    kwargs, switched_off = without_remedy()
     for name in NAMES:
         drive = load_project(ROOT / "examples" / f"{name}.toml")
-        with switched_off:
-            wall, cpu = median_ms(lambda d=drive: analyze_drive(d, **kwargs))
+        wall, cpu = median_ms(lambda d=drive: analyze_drive(d, exclude=["remedy"]))
         print(f"analysis without plots, without the remedy search: {name} {wall:.1f} ms wall, {cpu:.1f} ms CPU "
               "(aim <= 3 ms)")
         wall, cpu = median_ms(lambda d=drive: analyze_drive(d), repeat=5 if name == "mining_conveyor" else 15)

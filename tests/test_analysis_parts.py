@@ -6,10 +6,10 @@ from __future__ import annotations
 import json
 import tomllib
 from dataclasses import dataclass
-from pathlib import Path
 
 import pytest
 
+from _shared import EXAMPLES
 from chaindrive._results import Result, quantity
 from chaindrive.analysis import Check, analyze_drive
 from chaindrive.analysis.parts import (
@@ -22,8 +22,6 @@ from chaindrive.analysis.parts import (
 )
 from chaindrive.drive.project import load_project
 from chaindrive.errors import ChainDriveError, InputError
-
-EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
 
 
 @dataclass(frozen=True)

@@ -2,15 +2,15 @@
 
 import json
 import math
-from pathlib import Path
 
 import pytest
 
+from _shared import EXAMPLES as _EXAMPLES_DIR
 from chaindrive.cli import main
 from chaindrive.drive.project import load_project
 from chaindrive.workflows.analyze import analyze
 
-EXAMPLES = sorted(p for p in (Path(__file__).parents[1] / "examples").glob("*.toml") if "study" not in p.name)
+EXAMPLES = sorted(p for p in _EXAMPLES_DIR.glob("*.toml") if "study" not in p.name)
 
 
 @pytest.fixture(scope="module")

@@ -4,13 +4,11 @@ traceback); run folders are never overwritten silently or left looking current."
 
 from __future__ import annotations
 
-from pathlib import Path
-
 import pytest
 
+from _shared import EXAMPLES
 from chaindrive.cli import main
 
-EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
 ROLLER = EXAMPLES / "roller_industrial.toml"
 
 

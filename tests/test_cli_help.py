@@ -15,6 +15,7 @@ NOT_QUANTITIES = {
     "end_fixity", "joint", "family", "example", "kind", "host", "name", "file", "project",
     "output", "plan", "format", "study", "summary", "template", "sections", "include",
     "exclude", "material", "bore_standard", "keyway", "units", "preset", "scheduler", "write", "strands",
+    "driver", "driven_machine", "load_character", "environment", "lubrication",
 }
 
 

@@ -49,6 +49,9 @@ def test_from_import_of_a_former_name_works():
     ("chaindrive.drive.loads", "chaindrive.loads", None),
     ("chaindrive.drive.selection", "chaindrive.selection", "select"),
     ("chaindrive.drive.wear", "chaindrive.wear", None),
+    ("chaindrive.drive.self_regulating", "chaindrive.self_regulating", "self_regulating_drive"),
+    ("chaindrive.drive.self_regulating", "chaindrive.drive.carrier", "SelfRegulatingSpec"),
+    ("chaindrive.drive.self_regulating", "chaindrive.analysis.self_regulating", "self_regulating_analysis"),
 ])
 def test_moved_modules_warn_and_forward(old, new, name):
     target = importlib.import_module(new)
@@ -69,3 +72,12 @@ def test_unknown_names_still_raise():
         chaindrive.strength.nothing_here  # noqa: B018
     with pytest.raises(AttributeError):
         chaindrive.kinematics.nothing_here  # noqa: B018
+
+
+def test_split_modules_keep_their_names():
+    # vibration.resonance and geometry.sprocket were split by topic; every name still imports
+    from chaindrive.geometry import sprocket, tooth_form
+    from chaindrive.vibration import resonance, tensioner_design
+
+    assert resonance.campbell is tensioner_design.campbell
+    assert sprocket.sprocket_outline is tooth_form.sprocket_outline

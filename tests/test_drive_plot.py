@@ -2,18 +2,15 @@
 
 from __future__ import annotations
 
-from pathlib import Path
-
 import pytest
 
 from chaindrive.analysis import analyze_drive, drive_layout
 
 pytest.importorskip("matplotlib")
 
+from _shared import EXAMPLES
 from chaindrive.drive import load_project  # noqa: E402
 from chaindrive.plotting.drive import layout_plot, rating_plot, wear_plot  # noqa: E402
-
-EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
 
 
 @pytest.mark.parametrize("name", ["mining_conveyor", "roller_industrial", "tractor_track"])

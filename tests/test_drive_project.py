@@ -12,6 +12,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
+from _shared import EXAMPLES, roller_drive
 from chaindrive.analysis import (
     analyze_drive,
     drive_entry,
@@ -30,14 +31,11 @@ from chaindrive.drive import Drive, Guide, Load, Tensioner, Wheel, load_project
 from chaindrive.drive.project import line_index, parse_project, template
 from chaindrive.errors import InputError, UnknownNameError
 
-EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
 RPM = 2 * math.pi / 60
 
 
 def _roller():
-    return Drive(chain=get("16B"), speed=960 * RPM, load=Load(power=15e3),
-                 wheels=[Wheel("motor", "sprocket", 19, (0, 0), driving=True),
-                         Wheel("fan", "sprocket", 57, (1.05, 0))])
+    return roller_drive(speed=960 * RPM)
 
 
 # ---------------------------------------------------------------- objects
@@ -278,11 +276,11 @@ def test_cli_new_layout_select(tmp_path, capsys):
     assert out["layout"]["links"] == 122 and out["passed"] is True
     assert main(["layout", str(f)]) == 0
     assert "centre distance for 122 links" in capsys.readouterr().out
-    assert main(["select", "--power", "15 kW", "--speed", "1450 rpm", "--ratio", "3", "--json"]) == 0
+    assert main(["select", "--power", "15 kW", "--speed", "1450 rpm", "--ratio", "3", "-K", "1", "--json"]) == 0
     found = json.loads(capsys.readouterr().out)
-    assert found[0]["rated_power"] >= 15e3
-    assert main(["select", "--power", "15 kW", "--speed", "1450 rpm", "--ratio", "3"]) == 0
-    assert main(["select", "--power", "15 kg", "--speed", "1450 rpm", "--ratio", "3"]) == 2
+    assert found["recommended"]["rated_power"] >= 15e3
+    assert main(["select", "--power", "15 kW", "--speed", "1450 rpm", "--ratio", "3", "-K", "1"]) == 0
+    assert main(["select", "--power", "15 kg", "--speed", "1450 rpm", "--ratio", "3", "-K", "1"]) == 2
     assert "power" in capsys.readouterr().err
 
 

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import dataclasses
+import math
 from pathlib import Path
 
 import pytest
@@ -36,10 +37,13 @@ def test_changed_tensioner_and_custom_chain_are_written():
     assert parse_project(text) == d2
 
 
-def test_self_regulating_refused():
+def test_self_regulating_round_trips_and_non_finite_refused():
     d = load_project(EXAMPLES / "self_regulating.toml")
-    with pytest.raises(InputError, match="self_regulating"):
-        drive_to_toml(d)
+    assert parse_project(drive_to_toml(d)) == d
+    with pytest.raises(InputError, match="non-finite"):
+        from chaindrive.drive.writer import quantity_text
+
+        quantity_text(math.nan, "m")
 
 
 def test_crawler_fretting_and_rim_bolts_tables_are_written():

@@ -15,6 +15,8 @@ from _fuzz_loader import load_fuzz
 from chaindrive._finite import check_finite_fields, finite_guard, first_nonfinite
 from chaindrive.errors import ConvergenceError, InfeasibleError, InputError
 
+pytestmark = pytest.mark.fuzz
+
 fuzz = load_fuzz()
 
 

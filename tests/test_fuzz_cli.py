@@ -13,6 +13,8 @@ from hypothesis import strategies as st
 
 from _fuzz_loader import load_fuzz
 
+pytestmark = pytest.mark.fuzz
+
 fuzz = load_fuzz()
 COMMANDS = fuzz.cli_commands()
 FAST = {k: v for k, v in COMMANDS.items() if k not in ("analyze", "report", "simulate", "demo", "study")}

@@ -10,6 +10,8 @@ import pytest
 
 from _fuzz_loader import load_fuzz
 
+pytestmark = pytest.mark.fuzz
+
 pytest.importorskip("fastapi")
 pytest.importorskip("schemathesis")
 fuzz = load_fuzz()

@@ -8,10 +8,13 @@ import random
 import tempfile
 from pathlib import Path
 
+import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from _fuzz_loader import load_fuzz
+
+pytestmark = pytest.mark.fuzz
 
 fuzz = load_fuzz()
 TEXTS = fuzz.project_texts()

@@ -12,6 +12,8 @@ from hypothesis import strategies as st
 
 from _fuzz_loader import load_fuzz
 
+pytestmark = pytest.mark.fuzz
+
 pytest.importorskip("fastapi")
 pytest.importorskip("httpx")
 fuzz = load_fuzz()

@@ -14,6 +14,7 @@ import scipy.stats as st
 from hypothesis import given, settings
 from hypothesis import strategies as hs
 
+from _shared import EXAMPLES
 from chaindrive.errors import InputError, UnknownNameError
 from chaindrive.study.plan import (
     MAXIMUM_VARIANTS,
@@ -29,9 +30,6 @@ from chaindrive.study.plan import (
 from chaindrive.study.run import evaluate_variant, lookup
 from chaindrive.study.spec import canonical_hash, load_study, parse_study, remove_path, set_path
 from chaindrive.study.summary import column_statistics, output_unit
-
-EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
-
 
 # --------------------------------------------------------------------------- plans
 

@@ -124,3 +124,28 @@ def test_errors_name_the_field(edit, match):
 def test_reduced_mass_and_stiffness_still_accepted():
     d = parse_project(TEMPLATES["mining"])
     assert d.tensioner.mechanism is None and d.tensioner.parts == ()
+
+
+def test_studio_field_describes_the_tensioner_by_its_parts():
+    from chaindrive.web.design import (
+        MINING_EXAMPLE,
+        design_from_state,
+        normalise_state,
+        state_from_project,
+    )
+
+    state = normalise_state({**MINING_EXAMPLE, "tensioner_mechanism": "lever", "tensioner_arm_length": "400 mm",
+                             "tensioner_arm_mass": "30 kg", "tensioner_wheel_mass": "40 kg",
+                             "tensioner_spring_stiffness": "600 kN/m", "tensioner_spring_lever": "250 mm",
+                             "tensioner_spring_angle": "10 deg"})
+    d, errors = design_from_state(state)
+    assert errors == {} and d.drive.tensioner.mechanism == "lever"
+    assert d.drive.tensioner.mass == pytest.approx(50.0)
+    assert d.drive.tensioner.stiffness == pytest.approx(parse_project(_with(LEVER)).tensioner.stiffness)
+    assert 'mechanism = "lever"' in d.project_text
+    back = state_from_project(d.project_text)
+    assert back["tensioner_mechanism"] == "lever" and back["tensioner_arm_length"] == "0.4 m"
+    # a missing part is reported on its field
+    bad = dict(state, tensioner_spring_stiffness="")
+    d, errors = design_from_state(normalise_state(bad))
+    assert d is None and "tensioner_spring_stiffness" in errors

@@ -93,7 +93,7 @@ def test_bad_input_exit_2(opt, value, match, capsys):
     (["--speed", "300 rpm", "--ratio", "0"], "ratio must be positive"),
     (["--speed", "300 rpm", "--teeth", "2"], "teeth must be a whole number >= 3"),
     (["--campbell", "x.png"], "need a speed range"),
-    (["--speed", "300 rpm", "--speed-min", "400 rpm", "--campbell", "x.png"], "speed-max must exceed"),
+    (["--speed", "300 rpm", "--speed-min", "500 rpm", "--campbell", "x.png"], "speed-max must exceed"),
     (["--model", "exact"], "unknown model 'exact'"),
 ])
 def test_bad_options_exit_2(extra, match, capsys):

@@ -26,8 +26,8 @@ def mining(tmp_path_factory):
 
 def test_mining_conveyor_fails_and_gets_a_passing_proposal(mining):
     outcome, out = mining
-    vib = outcome.analysis.vibration
-    assert vib.passed is False and vib.remedy is not None and vib.remedy.found
+    vib, remedy = outcome.analysis.vibration, outcome.analysis.remedy
+    assert vib.passed is False and remedy is not None and remedy.found
     assert (out / "proposal.toml").exists()
     proposal = load_project(out / "proposal.toml")
     again = analyze_drive(proposal, include=["vibration"])
@@ -53,11 +53,15 @@ def test_no_remedy_within_the_ranges_says_why(monkeypatch):
                                               "shift": (-0.01, 0.01)})
     layout = drive_layout(drive)
     vib = drive_vibration(drive, layout, drive_loads(drive, layout))
-    assert vib.remedy is not None and not vib.remedy.found
-    assert "mode 1" in vib.remedy.reason and "link pair" in vib.remedy.reason
-    assert any("no design within the searched ranges" in n for n in vib.notes)
+    remedy = vr.search_remedy(drive, vib)
+    assert remedy is not None and not remedy.found
+    assert "mode 1" in remedy.reason and "link pair" in remedy.reason
+    a = analyze_drive(drive, include=["remedy"])
+    assert any("no design within the searched ranges" in w for w in a.warnings)
 
 
-def test_passing_drive_has_no_remedy():
-    a = analyze_drive(load_project(EXAMPLES / "roller_industrial.toml"), include=["vibration"])
-    assert a.vibration.remedy is None
+def test_passing_drive_has_no_remedy_and_the_part_can_be_left_out():
+    a = analyze_drive(load_project(EXAMPLES / "roller_industrial.toml"), include=["remedy"])
+    assert a.remedy is None
+    b = analyze_drive(load_project(EXAMPLES / "mining_conveyor.toml"), exclude=["remedy"])
+    assert b.vibration.passed is False and b.remedy is None

@@ -13,14 +13,11 @@ import json
 import os
 import re
 import shutil
-import socket
-import subprocess
-import sys
-import time
-import urllib.request
 from pathlib import Path
 
 import pytest
+
+pytestmark = pytest.mark.browser
 
 ARTIFACTS = Path(__file__).parent / "artifacts" / "web"
 CHROMIUM = next((p for p in (os.environ.get("CHROMIUM"), shutil.which("chromium"), "/usr/bin/chromium")
@@ -39,39 +36,13 @@ ARGS = ["--no-sandbox", "--disable-gpu", "--disable-background-networking", "--d
 TIMEOUT = 90_000  # generous: CI runs these beside the rest of the suite on 2 cores
 
 
-def _free_port() -> int:
-    with socket.socket() as s:
-        s.bind(("127.0.0.1", 0))
-        return s.getsockname()[1]
-
-
 @pytest.fixture(scope="module")
-def server():
-    port = _free_port()
-    code = ("import uvicorn; from chaindrive.web import create_app; "
-            f"uvicorn.run(create_app(job_time_limit=120), host='127.0.0.1', port={port}, log_level='warning')")
+def server(web_server):
     # the workers at the suite's priority: niced below a busy test suite on 2 cores they
     # can take tens of seconds for their first (import-heavy) request
-    env = {**os.environ, "MPLBACKEND": "Agg", "CHAINDRIVE_WEB_NICENESS": "0"}
-    proc = subprocess.Popen([sys.executable, "-c", code], env=env)
-    base = f"http://127.0.0.1:{port}"
-    deadline = time.monotonic() + 60
-    while True:
-        try:
-            with urllib.request.urlopen(base + "/health", timeout=1) as r:
-                if r.read() == b"ok":
-                    break
-        except OSError:
-            if time.monotonic() > deadline or proc.poll() is not None:
-                proc.kill()
-                pytest.fail("the web server did not start")
-            time.sleep(0.2)
-    yield base
-    proc.terminate()
-    try:
-        proc.wait(timeout=10)
-    except subprocess.TimeoutExpired:
-        proc.kill()
+    with web_server("job_time_limit=120", env={"CHAINDRIVE_WEB_NICENESS": "0"}, log_level="warning",
+                    stop_timeout=10) as base:
+        yield base
 
 
 @pytest.fixture(scope="module")

@@ -11,10 +11,6 @@ from __future__ import annotations
 
 import concurrent.futures as cf
 import json
-import os
-import socket
-import subprocess
-import sys
 import time
 import urllib.error
 import urllib.parse
@@ -24,12 +20,6 @@ import pytest
 
 pytest.importorskip("fastapi")
 pytest.importorskip("uvicorn")
-
-
-def _free_port() -> int:
-    with socket.socket() as s:
-        s.bind(("127.0.0.1", 0))
-        return s.getsockname()[1]
 
 
 def _get(url: str, data: bytes | None = None, timeout: float = 120.0) -> tuple[int, float, bytes]:
@@ -44,26 +34,11 @@ def _get(url: str, data: bytes | None = None, timeout: float = 120.0) -> tuple[i
 
 
 @pytest.fixture(scope="module")
-def server():
-    port = _free_port()
-    code = ("import uvicorn; from chaindrive.web import create_app; "
-            f"uvicorn.run(create_app(max_jobs=2), host='127.0.0.1', port={port}, log_level='error')")
-    proc = subprocess.Popen([sys.executable, "-c", code], env={**os.environ, "MPLBACKEND": "Agg"})
-    base = f"http://127.0.0.1:{port}"
-    deadline = time.monotonic() + 60
-    while _get(base + "/health", timeout=1)[0] != 200:
-        if time.monotonic() > deadline or proc.poll() is not None:
-            proc.kill()
-            pytest.fail("the web server did not start")
-        time.sleep(0.2)
-    _get(base + "/api/design")  # warm the analysis workers
-    _get(base + "/")  # and the page template
-    yield base
-    proc.terminate()  # uvicorn exits cleanly and multiprocessing ends the job processes
-    try:
-        proc.wait(timeout=20)
-    except subprocess.TimeoutExpired:
-        proc.kill()
+def server(web_server):
+    with web_server("max_jobs=2") as base:
+        _get(base + "/api/design")  # warm the analysis workers
+        _get(base + "/")  # and the page template
+        yield base
 
 
 def test_fifty_parallel_mixed_requests(server):

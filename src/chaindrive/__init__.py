@@ -1,13 +1,20 @@
 """chaindrive: design and analysis of chain drives.
 
-Layers
-------
-1. Pure vectorised functions, one published formula each (``chaindrive.geometry``,
-   ``chaindrive.kinematics``, ``chaindrive.vibration``, ``chaindrive.strength``, ...).
-2. Thin objects (``Chain``, ``Sprocket``, ``Drive``) passing their attributes to them.
-3. Workflows: analysis pipeline, CLI, reports, web page.
+Layers (docs/architecture.md; tests/test_architecture.py keeps them apart)
+--------------------------------------------------------------------------
+1. Formulas: pure vectorised functions, one published formula each
+   (``chaindrive.kinematics``, ``.vibration``, ``.strength``, ``.geometry``, ``.layout``,
+   ``.loads``, ``.selection``, ``.wear``, ``.chains``, ``.self_regulating``,
+   ``.simulation``), with ``chaindrive.units`` and ``chaindrive.limits``.
+2. The description: the immutable ``Drive`` and its parts, project files
+   (``chaindrive.drive``).
+3. The analysis: declared parts, each drive-level decision once, typed results with
+   units (``chaindrive.analysis``).
+4. Presenters that only format: report (``chaindrive.workflows``), CLI
+   (``chaindrive.cli``), web studio (``chaindrive.web``), studies (``chaindrive.study``),
+   plots (``chaindrive.plotting``).
 
-All quantities are SI (m, N, s, rad, kg, Pa).
+All quantities are SI (m, N, s, rad, kg, Pa, W) inside.
 """
 
 from .errors import (

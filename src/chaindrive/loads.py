@@ -31,6 +31,7 @@ __all__ = [
     "static_safety_factor",
     "service_factor",
     "SERVICE_FACTORS",
+    "REQUIRED_STATIC_SAFETY",
 ]
 
 
@@ -374,6 +375,16 @@ def shaft_load(tensions: ArrayLike, directions: ArrayLike) -> tuple[FloatOrArray
     fx = np.sum(F * np.cos(a), axis=-1)
     fy = np.sum(F * np.sin(a), axis=-1)
     return np.hypot(fx, fy), np.arctan2(fy, fx)
+
+
+#: Required static safety ``F_B / F_max`` by chain kind, the one table of chaindrive (a
+#: project may set its own ``required_static_safety``): roller chains 7 (the project
+#: default since chaindrive's first release; stricter than Diamond Chain's "load in service
+#: should never exceed 1/6 of the ultimate strength", because ``F_max`` includes the slack,
+#: centrifugal and dynamic parts), round link chains 3.5 (mining scraper conveyors, the
+#: value of the Dolipiński et al. example drive). No standard table prescribing either was
+#: found (docs/design.md).
+REQUIRED_STATIC_SAFETY = {"roller": 7.0, "link": 3.5}
 
 
 def static_safety_factor(breaking_force: ArrayLike, tension: ArrayLike) -> FloatOrArray:

@@ -10,6 +10,7 @@ import numpy as np
 from .. import layout as L
 from .. import loads as F
 from .._results import Result, quantity
+from ..chains import Chain
 from ..drive.model import Drive
 from ..errors import ChainDriveError, InputError
 from ._wheels import wheel_teeth
@@ -18,10 +19,24 @@ from .layout import DriveLayout, drive_layout, slack_span_sag, span_inclination
 from .parts import Part, PartContext, register_part
 
 __all__ = ["DriveLoads", "drive_loads", "free_entry_acceleration", "static_safety_check", "wrap_check",
-           "MINIMUM_WRAP"]
+           "MINIMUM_WRAP", "REQUIRED_STATIC_SAFETY", "required_static_safety"]
 
 #: Smallest wrap on the driving wheel [rad] (ISO 10823:2004 guidance: 120°).
 MINIMUM_WRAP = math.radians(120.0)
+#: The one table of required static safeties (:data:`chaindrive.loads.REQUIRED_STATIC_SAFETY`).
+REQUIRED_STATIC_SAFETY = F.REQUIRED_STATIC_SAFETY
+
+
+def required_static_safety(chain: Chain) -> float:
+    """The required static safety of :data:`REQUIRED_STATIC_SAFETY` for a chain (link or roller).
+
+    >>> from chaindrive.chains import get
+    >>> required_static_safety(get("18x64")), required_static_safety(get("16B-1"))
+    (3.5, 7.0)
+    """
+    return REQUIRED_STATIC_SAFETY["link" if chain.is_link_chain else "roller"]
+
+
 #: A slack span steeper than this hangs in its own weight (no sag to speak of) [rad].
 NEAR_VERTICAL = math.radians(80.0)
 
@@ -218,8 +233,8 @@ def static_safety_check(drive: Drive, loads: DriveLoads) -> Check:
     fb = drive.chain.breaking_force
     sf = None if fb is None else float(fb) / loads.maximum
     return Check(
-        name="static safety F_B / F_max", value=sf, limit=float(drive.required_static_safety), unit="-",
-        passed=None if sf is None else bool(sf >= drive.required_static_safety),
+        name="static safety F_B / F_max", value=sf, limit=drive.static_safety_required, unit="-",
+        passed=None if sf is None else bool(sf >= drive.static_safety_required),
         source="catalogue breaking force (ISO 606:2015 table 1 / ASME B29.1 / DIN 22252); "
                "F_max = K_s T/R + S_slack + q v² + m a_max",
         note="" if fb is not None else "breaking force unknown")

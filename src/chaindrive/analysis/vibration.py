@@ -31,9 +31,8 @@ from .checks import Check
 from .layout import DriveLayout, span_inclination
 from .loads import DriveLoads
 from .parts import Part, PartContext, register_part
-from .vibration_remedy import Remedy, search_remedy
 
-__all__ = ["COUPLING_LIMIT_ANGLE", "FreeSpans", "DriveVibration", "tensioner_span", "drive_vibration"]
+__all__ = ["COUPLING_LIMIT_ANGLE", "CAMPBELL_RANGE", "PROPOSAL_RANGE", "excitation_kwargs", "FreeSpans", "DriveVibration", "tensioner_span", "drive_vibration"]
 
 #: Largest inclination of a span part to the normal of the tensioner's axis for which the
 #: tensioner paper's coupling is used [rad]. Beyond it the tensioner moves almost along the
@@ -81,8 +80,8 @@ class DriveVibration(Result):
     Exactly one of ``tensioner`` (the slack span with its tensioner, the tensioner
     paper's check) and ``free_spans`` (spans as free strings, information) is set.
     ``severity``: every excitation of the slack span with its amplitude and forced
-    response (with a tensioner); ``remedy``: the nearest design that passes when the
-    check fails (:mod:`chaindrive.analysis.vibration_remedy`).
+    response (with a tensioner). The nearest design that passes when the check fails is
+    the part ``remedy`` (:mod:`chaindrive.analysis.vibration_remedy`).
     """
 
     excitations: dict[str, float] = quantity("rad/s", display="rad/s")
@@ -92,7 +91,6 @@ class DriveVibration(Result):
     free_spans: FreeSpans | None
     notes: tuple[str, ...]
     severity: tuple[ExcitationResponse, ...] = ()
-    remedy: Remedy | None = None
 
     @property
     def passed(self) -> bool | None:
@@ -139,9 +137,19 @@ class _Excitation(TypedDict):
     link_chain: bool
 
 
-def _excitation_kwargs(drive: Drive) -> _Excitation:
+def excitation_kwargs(drive: Drive) -> _Excitation:
+    """The excitation arguments of a drive: speed ratio, driving teeth, link chain or not.
+
+    >>> from chaindrive.drive.project import parse_project, template
+    >>> excitation_kwargs(parse_project(template("roller")))["teeth"]
+    19
+    """
     return _Excitation(ratio=drive.speed_ratio(), teeth=drive.driving_wheel.teeth,
                        link_chain=bool(drive.chain.is_link_chain))
+
+
+#: Old private name of :func:`excitation_kwargs`.
+_excitation_kwargs = excitation_kwargs
 
 
 def _severity(drive: Drive, layout: DriveLayout, span: TensionerSpan) -> tuple[ExcitationResponse, ...]:
@@ -157,7 +165,7 @@ def _severity(drive: Drive, layout: DriveLayout, span: TensionerSpan) -> tuple[E
                             damping_ratio=DAMPING_RATIO)
 
 
-def drive_vibration(drive: Drive, layout: DriveLayout, loads: DriveLoads, *, remedy: bool = True) -> DriveVibration:
+def drive_vibration(drive: Drive, layout: DriveLayout, loads: DriveLoads) -> DriveVibration:
     r"""The tensioner paper's check on the slack span with its tensioner; free spans otherwise.
 
     With a tensioner whose span parts lie within :data:`COUPLING_LIMIT_ANGLE` of the
@@ -168,9 +176,8 @@ def drive_vibration(drive: Drive, layout: DriveLayout, loads: DriveLoads, *, rem
     excitation with its published amplitude (``severity``; the polygon, which the paper
     does not name, passes when amplified at most
     :data:`~chaindrive.vibration.excitation.AMPLIFICATION_LIMIT` times), the Campbell data
-    over 0.5…1.5 of the speed, and when it fails the nearest design that passes
-    (``remedy``, :func:`~chaindrive.analysis.vibration_remedy.search_remedy`; not searched
-    with ``remedy=False``).
+    over 0.5…1.5 of the speed (the nearest design that passes is the separate part
+    ``remedy``, :func:`~chaindrive.analysis.vibration_remedy.search_remedy`).
 
     Otherwise the tight and the slack span are axially moving strings (Wickert & Mote 1990)
     with the running tension: the tight tension (which holds ``q v²``) and the slack
@@ -180,7 +187,7 @@ def drive_vibration(drive: Drive, layout: DriveLayout, loads: DriveLoads, *, rem
     drive).
     """
     omega = float(drive.speed)
-    kw = _excitation_kwargs(drive)
+    kw = excitation_kwargs(drive)
     exc = excitation_frequencies(omega, **kw)
     notes: list[str] = []
     span = tensioner_span(drive, layout, loads)
@@ -193,15 +200,7 @@ def drive_vibration(drive: Drive, layout: DriveLayout, loads: DriveLoads, *, rem
     if span is not None:
         res = span_vibration(span, omega, modes=MODES,
                              speed_range=(CAMPBELL_RANGE[0] * omega, CAMPBELL_RANGE[1] * omega), **kw)
-        severity = _severity(drive, layout, span)
-        vib = DriveVibration(exc, span, res, None, None, tuple(notes), severity)
-        if remedy and vib.passed is False:
-            found = search_remedy(drive, vib)
-            if found is not None and not found.found:
-                notes.append(f"no design within the searched ranges ({found.ranges}) passes the resonance check: "
-                             f"{found.reason}")
-            vib = DriveVibration(exc, span, res, None, None, tuple(notes), severity, found)
-        return vib
+        return DriveVibration(exc, span, res, None, None, tuple(notes), _severity(drive, layout, span))
     q = drive.mass_per_length
     v = loads.chain_speed
     names: list[str] = []

@@ -15,21 +15,25 @@ verified by the full vibration analysis of the changed drive and returned as a
 with the reason.
 
 Guides or supports in the span (which shorten the free length) are not searched.
+
+The declared part ``remedy`` (needs ``vibration``; about 1.5 s when the check fails, so a
+per-keystroke caller may ``exclude=["remedy"]``) is shown in the vibration section.
 """
 
 from __future__ import annotations
 
 import dataclasses
 import math
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
 from .._results import Result, quantity
 from ..drive.model import Drive
 from ..errors import ChainDriveError
-from ..vibration import excitation_multipliers, tensioner_frequencies
+from ..vibration import TensionerSpan, excitation_multipliers, tensioner_frequencies
 from ..vibration.excitation import AMPLIFICATION_LIMIT
+from .parts import Part, PartContext, register_part
 
 if TYPE_CHECKING:
     from .vibration import DriveVibration
@@ -102,26 +106,45 @@ def _moved(drive: Drive, shift: float, force_factor: float) -> Drive:
     return dataclasses.replace(drive, wheels=tuple(wheels), tensioner=dataclasses.replace(t, force=force))
 
 
-def _evaluate(drive: Drive) -> DriveVibration | None:
+def _span(drive: Drive, layout_cache: dict[float, Any], shift: float) -> TensionerSpan | None:
+    """The slack span of a moved drive (its layout cached by shift; None where the tensioner
+    paper's coupling does not apply or the layout fails)."""
     from .layout import drive_layout
     from .loads import drive_loads
-    from .vibration import drive_vibration
+    from .vibration import COUPLING_LIMIT_ANGLE, tensioner_span
 
     try:
-        layout = drive_layout(drive)
-        return drive_vibration(drive, layout, drive_loads(drive, layout), remedy=False)
+        if shift not in layout_cache:
+            layout_cache[shift] = drive_layout(drive)
+        layout = layout_cache[shift]
+        span = tensioner_span(drive, layout, drive_loads(drive, layout))
     except ChainDriveError:
         return None
+    if span is None or max(span.angle_1, span.angle_2) > COUPLING_LIMIT_ANGLE:
+        return None
+    return span
 
 
-def _verdict(vib: DriveVibration) -> tuple[bool, float, float]:
-    """(passes, worst band margin, worst polygon amplification) of an evaluated design."""
-    if vib.tensioner is None or vib.tensioner.check is None:
-        return False, -math.inf, math.inf
-    margin = float(np.min(vib.tensioner.check.margin))
-    amp = max((s.amplification for s in vib.severity if s.criterion == "response"), default=0.0)
-    ok = margin > REQUIRED_MARGIN and all(s.passed is not False for s in vib.severity)
-    return ok, margin, amp
+def _verdict(drive: Drive, layout: Any, span: TensionerSpan) -> tuple[bool, float, float, str]:
+    """(passes, worst band margin, worst polygon amplification, why not) of one design."""
+    from .vibration import MODES, _severity, excitation_kwargs
+
+    check = span.check(float(drive.speed), modes=MODES, **excitation_kwargs(drive))
+    severity = _severity(drive, layout, span)
+    margin = float(np.min(check.margin))
+    amp = max((s.amplification for s in severity if s.criterion == "response"), default=0.0)
+    ok = margin > REQUIRED_MARGIN and all(s.passed is not False for s in severity)
+    why = []
+    worst = min(check.rows(), key=lambda r: r["margin"])
+    if worst["margin"] <= REQUIRED_MARGIN:
+        why.append(f"mode {worst['mode']} ({worst['natural_frequency']:.4g} rad/s) stays within "
+                   f"{100 * REQUIRED_MARGIN:.0f} % of the band of the {worst['excitation']} excitation "
+                   f"({worst['exciting_frequency']:.4g} rad/s, P/ω = {worst['ratio']:.3f})")
+    for s in severity:
+        if s.passed is False:
+            why.append(f"the {s.name} excitation ({s.frequency:.4g} rad/s) is amplified {s.amplification:.3g}× "
+                       f"(limit {AMPLIFICATION_LIMIT:.3g}×)")
+    return ok, margin, amp, "; ".join(why)
 
 
 def search_remedy(drive: Drive, vib: DriveVibration) -> Remedy | None:
@@ -151,7 +174,7 @@ def search_remedy(drive: Drive, vib: DriveVibration) -> Remedy | None:
     """
     if drive.tensioner is None or vib.span is None:
         return None
-    from .vibration import MODES, _excitation_kwargs
+    from .vibration import MODES, excitation_kwargs
 
     t0 = drive.tensioner
     m0, c0 = float(t0.mass), float(t0.stiffness)
@@ -160,18 +183,19 @@ def search_remedy(drive: Drive, vib: DriveVibration) -> Remedy | None:
     fc = np.geomspace(*rng["stiffness"], _GRID["stiffness"]) if 0 < c0 < math.inf else np.array([1.0])
     ff = np.geomspace(*rng["force"], _GRID["force"]) if t0.force else np.array([1.0])
     fs = np.linspace(*rng["shift"], _GRID["shift"])
-    kw = _excitation_kwargs(drive)
+    kw = excitation_kwargs(drive)
     mult = np.array(list(excitation_multipliers(kw["ratio"], kw["teeth"], link_chain=kw["link_chain"]).values()))
     omega = float(drive.speed)
     lo, hi = 0.7, 1.4
+    layouts: dict[float, Any] = {}
+    spans: dict[tuple[float, float], TensionerSpan] = {}
     candidates = []
     for force in ff:
         for shift in fs:
-            base = _moved(drive, float(shift), float(force))
-            ev = _evaluate(base)
-            if ev is None or ev.span is None:
+            sp = _span(_moved(drive, float(shift), float(force)), layouts, float(shift))
+            if sp is None:
                 continue
-            sp = ev.span
+            spans[float(force), float(shift)] = sp
             p = tensioner_frequencies(sp.tension, sp.mass_per_length, sp.length_1, sp.length_2, sp.angle_1,
                                       sp.angle_2, m0 * fm[:, None], c0 * fc[None, :], modes=MODES, model=sp.model)
             r = p[..., None] / (mult * omega)
@@ -185,55 +209,36 @@ def search_remedy(drive: Drive, vib: DriveVibration) -> Remedy | None:
                     candidates.append((d, float(margin[i, j]), float(a), float(c), float(force), float(shift)))
     if not candidates:
         return None
-    best: tuple[Drive, DriveVibration, tuple] | None = None
+
+    def design(cand: tuple) -> tuple[Drive, TensionerSpan]:
+        _, _, a, c, force, shift = cand
+        new = _moved(drive, shift, force)
+        assert new.tensioner is not None
+        new = dataclasses.replace(new, tensioner=dataclasses.replace(new.tensioner, mass=m0 * a, stiffness=c0 * c))
+        return new, dataclasses.replace(spans[force, shift], mass=m0 * a, stiffness=c0 * c)
+
+    best: tuple | None = None
     best_score = -math.inf
     tried = 0
     for cand in sorted(candidates, key=lambda x: x[0]):
-        d, margin, a, c, force, shift = cand
-        if margin <= REQUIRED_MARGIN or tried >= 40:
+        if cand[1] <= REQUIRED_MARGIN or tried >= 40:
             continue
         tried += 1
-        new = _moved(drive, shift, force)
-        assert new.tensioner is not None
-        new = dataclasses.replace(new, tensioner=dataclasses.replace(new.tensioner, mass=m0 * a, stiffness=c0 * c))
-        ev = _evaluate(new)
-        if ev is None:
-            continue
-        ok, mg, amp = _verdict(ev)
+        new, span = design(cand)
+        ok, mg, amp, why = _verdict(new, layouts[cand[5]], span)
         if ok:
-            return Remedy(True, new, _changes(drive, new, shift), mg, amp, d, "", _ranges_text())
+            return Remedy(True, new, _changes(drive, new, cand[5]), mg, amp, cand[0], "", _ranges_text())
         score = min(mg, 1.0 - amp / 2.0)
         if score > best_score:
-            best, best_score = (new, ev, cand), score
+            best, best_score = (cand, new, mg, amp, why), score
     if best is None:  # nothing even clears the band: the candidate with the best band margin
-        d, margin, a, c, force, shift = max(candidates, key=lambda x: x[1])
-        new = _moved(drive, shift, force)
-        assert new.tensioner is not None
-        new = dataclasses.replace(new, tensioner=dataclasses.replace(new.tensioner, mass=m0 * a, stiffness=c0 * c))
-        ev = _evaluate(new)
-        if ev is None:
-            return None
-        best = (new, ev, (d, margin, a, c, force, shift))
-    new, ev, (d, _, _, _, _, shift) = best
-    ok, mg, amp = _verdict(ev)
-    return Remedy(False, new, _changes(drive, new, shift), mg, amp, d, _why(ev), _ranges_text())
-
-
-def _why(vib: DriveVibration) -> str:
-    """Why the nearest design still fails: its worst pair and its polygon response."""
-    parts = []
-    if vib.tensioner is not None and vib.tensioner.check is not None:
-        rows = vib.tensioner.check.rows()
-        worst = min(rows, key=lambda r: r["margin"])
-        if worst["margin"] <= REQUIRED_MARGIN:
-            parts.append(f"mode {worst['mode']} ({worst['natural_frequency']:.4g} rad/s) stays within "
-                         f"{100 * REQUIRED_MARGIN:.0f} % of the band of the {worst['excitation']} excitation "
-                         f"({worst['exciting_frequency']:.4g} rad/s, P/ω = {worst['ratio']:.3f})")
-    for s in vib.severity:
-        if s.passed is False:
-            parts.append(f"the {s.name} excitation ({s.frequency:.4g} rad/s) is amplified {s.amplification:.3g}× "
-                         f"(limit {AMPLIFICATION_LIMIT:.3g}×)")
-    return "; ".join(parts) or "no candidate could be analysed"
+        cand = max(candidates, key=lambda x: x[1])
+        new, span = design(cand)
+        ok, mg, amp, why = _verdict(new, layouts[cand[5]], span)
+        best = (cand, new, mg, amp, why)
+    cand, new, mg, amp, why = best
+    return Remedy(False, new, _changes(drive, new, cand[5]), mg, amp, cand[0], why or "no candidate could be analysed",
+                  _ranges_text())
 
 
 def _changes(old: Drive, new: Drive, shift: float) -> tuple[str, ...]:
@@ -252,3 +257,18 @@ def _changes(old: Drive, new: Drive, shift: float) -> tuple[str, ...]:
         out.append(f"tensioner wheel {t0.wheel!r} moved along the span from ({x0 * 1e3:.0f}, {y0 * 1e3:.0f}) mm "
                    f"to ({x1 * 1e3:.0f}, {y1 * 1e3:.0f}) mm ({100 * shift:+.0f} % of the chord)")
     return tuple(out)
+
+
+# --------------------------------------------------------------------------- declared part
+def _remedy_part(ctx: PartContext) -> Remedy | None:
+    vib = ctx["vibration"]
+    if vib is None or vib.passed is not False:
+        return None
+    found = search_remedy(ctx.drive, vib)
+    if found is not None and not found.found:
+        ctx.note(f"no design within the searched ranges ({found.ranges}) passes the resonance check: {found.reason}")
+    return found
+
+
+register_part(Part("remedy", "A design that passes the resonance check", _remedy_part, needs=("vibration",),
+                   order=51, section="chaindrive.workflows.sections:vibration_section"))

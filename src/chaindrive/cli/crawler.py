@@ -7,7 +7,6 @@ Text output gives the summary; ``--json`` prints ``psi``, ``displacement``, ``ve
 
 from __future__ import annotations
 
-import math
 from pathlib import Path
 from typing import Any
 
@@ -15,6 +14,7 @@ import typer
 
 from ..errors import InputError
 from ..limits import MAX_POINTS, MAX_TEETH
+from ..units import angular_velocity_to_rpm
 from .app import (
     app,
     echo_json,
@@ -130,6 +130,6 @@ def crawler_command(
     if "guide_reaction_max" in s:
         rows.append(("largest guide reaction at the guide end, T tan(phi1)", f"{s['guide_reaction_max']:.6g} N"))
     print_rows(f"crawler drive chain (t = {r.pitch * 1e3:g} mm, z = {r.teeth}, R = {r.radius * 1e3:.3f} mm, "
-               f"omega = {r.angular_velocity:.6g} rad/s = {r.angular_velocity * 30 / math.pi:.6g} rpm): {what}", rows)
+               f"omega = {r.angular_velocity:.6g} rad/s = {angular_velocity_to_rpm(r.angular_velocity):.6g} rpm): {what}", rows)
     if plot is not None:
         print(f"wrote {plot}")

@@ -1,8 +1,9 @@
-"""``chaindrive new``, ``chaindrive layout`` and ``chaindrive select``: drive projects.
+"""``chaindrive new``, ``layout``, ``select`` and ``rating``: drive projects.
 
 ``new`` writes a commented TOML project template; ``layout`` reads a project and
 prints chain length, centre distance for whole links, wraps, spans, tensions and
-take-up; ``select`` lists roller chains that carry a power (ANSI/ACA rating).
+take-up; ``select`` designs a drive for a duty (:func:`chaindrive.design.design_drive`);
+``rating`` rates one chain.
 ``--json`` prints SI units.
 """
 
@@ -82,7 +83,7 @@ def layout_command(
 
     con = _console()
     con.print(f"[bold]{escape(drive.name)}[/bold]  chain {escape(drive.chain.name)}, pitch "
-              f"{drive.pitch * 1e3:.3f} mm, speed {drive.speed:.4g} rad/s = {drive.speed * 30 / math.pi:.4g} rpm, "
+              f"{drive.pitch * 1e3:.3f} mm, speed {drive.speed:.4g} rad/s = {angular_velocity_to_rpm(drive.speed):.4g} rpm, "
               f"v = {ten.chain_speed:.3f} m/s")
     con.print(f"links required {lay.links_required:.3f}, chosen {lay.links}")
     cd = lay.centre_distance_for_links
@@ -126,104 +127,161 @@ def layout_command(
         con.print(f"warning: {w}", markup=False)
 
 
-OPTION_ALIASES["select"] = {"teeth_driving": "--teeth", "service_factor": "--service-factor"}
+OPTION_ALIASES["select"] = {"teeth_driving": "--teeth", "service_factor": "--service-factor",
+                            "load_character": "--load", "hours_per_day": "--hours-per-day"}
 
 
 @app.command("select")
 def select_command(
     power: str = typer.Option(..., "--power", "-P", help=unit_help(
-        "Transmitted power (before the service factor).", "W", "7.5 kW")),
+        "Transmitted power (before the service factor).", "W", "11 kW")),
     speed: str = typer.Option(..., "--speed", "-n", help=unit_help(
-        "Speed of the small (driving) sprocket.", "rad/s", "1450 rpm")),
-    ratio: float = typer.Option(..., "--ratio", "-i", help="Speed ratio n1/n2 >= 1, a bare number "
-                                "(driven teeth = round(z1 · ratio))."),
+        "Speed of the driving (small) sprocket.", "rad/s", "1460 rpm")),
+    ratio: float | None = typer.Option(None, "--ratio", "-i", help="Speed ratio n1/n2 >= 1, a bare number "
+                                       "(or give --driven-speed)."),
+    driven_speed: str | None = typer.Option(None, "--driven-speed", help=unit_help(
+        "Speed of the driven shaft (instead of --ratio).", "rad/s", "480 rpm")),
+    driver: str = typer.Option("electric_motor", "--driver", help="Driving machine: electric_motor, "
+                               "ic_hydraulic or ic_mechanical (service-factor table)."),
+    driven_machine: str | None = typer.Option(None, "--driven-machine", help="Driven machine of the "
+                                              "service-factor table, e.g. varying_conveyor (moderate shock)."),
+    load_character: str | None = typer.Option(None, "--load", help="Load character instead of a driven machine: "
+                                    "smooth, moderate or heavy."),
+    service_factor: float | None = typer.Option(None, "--service-factor", "-K", help="Explicit service "
+                                                "factor K_s >= 1, a bare number (instead of the duty class)."),
+    hours: float = typer.Option(8.0, "--hours-per-day", help="Operating hours per day, a number in (0, 24]."),
+    environment: str = typer.Option("clean", "--environment", help="clean, dusty or abrasive."),
+    lubrication: str | None = typer.Option(None, "--lubrication", help="Best lubrication the site provides: "
+                                           "A (manual/drip), B (bath/disc) or C (oil stream)."),
     centre_distance: str | None = typer.Option(None, "--centre-distance", "-a", help=unit_help(
         "Wanted centre distance; default 40 pitches of each chain (ISO 10823: 30-50 pitches). "
-        "Gives the link count (ISO 10823 chain length, rounded up to even) and the centre "
-        "distance for it.", "m", "650 mm")),
-    service_factor: float = typer.Option(1.0, "--service-factor", "-K", help="ANSI/ACA service factor "
-                                         "K_s >= 1, a bare number (Shigley Table 17-15)."),
-    teeth: int = typer.Option(17, "--teeth", "-z", help="Teeth of the small sprocket, a dimensionless count (ANSI tables: 17)."),
+        "The link count is the chain length rounded up to even; the centre distance printed is "
+        "the exact one for that count.", "m", "600 mm")),
+    teeth: int | None = typer.Option(None, "--teeth", "-z", help="Teeth of the small sprocket, a count "
+                                     "(default: the tooth-count policy, 19 or more, odd; docs/design.md)."),
     family: str | None = typer.Option(None, "--family", "-f", help="ansi or iso606 (default both: an "
                                       "ANSI number and its ISO 606 twin are one row with both names)."),
     strands: str = typer.Option("1,2,3", "--strands", help="Strand counts admitted, e.g. '1,2' (1 to 4)."),
-    min_static_safety: float = typer.Option(6.0, "--min-static-safety", help="Required breaking force / "
-                                            "working tension, dimensionless (Diamond Chain: working load <= 1/6 UTS)."),
+    method: str | None = typer.Option(None, "--method", help="Rating method for every chain (default: the "
+                                      "method of each chain's family), e.g. ansi."),
+    required_static_safety: float | None = typer.Option(
+        None, "--required-static-safety", help="Required F_B / F_max, dimensionless (default: the "
+        "analysis's value for the chain, docs/design.md)."),
     all_sizes: bool = typer.Option(False, "--all-sizes", help="List every adequate chain, not only the "
                                    "smallest adequate pitch per series (ISO B, ISO A = ANSI) and strand count."),
     limit: int = typer.Option(10, "--limit", help="Show at most this many chains (a count)."),
     write: str | None = typer.Option(None, "--write", "-w", help="Write a complete project file (TOML) "
                                      "for the chosen row, e.g. drive.toml; check it with `chaindrive "
-                                     "layout drive.toml`."),
-    choose: int = typer.Option(1, "--choose", help="Row written by --write (1 = the first)."),
+                                     "analyze drive.toml`."),
+    choose: int = typer.Option(1, "--choose", help="Row written by --write (1 = the recommended one)."),
     force: bool = typer.Option(False, "--force", help="Overwrite the --write file if it exists."),
-    as_json: bool = typer.Option(False, "--json", help="JSON in SI units (W, m, m/s, N, rad/s)."),
+    as_json: bool = typer.Option(False, "--json", help="JSON in SI units (W, m, m/s, N, rad/s): "
+                                 "recommended and candidates."),
 ) -> None:
-    """Roller chains that carry POWER at SPEED by the ANSI/ACA rating: link-plate and
-    roller-bushing limits (Shigley eqs 17-32, 17-33; multi-strand factors 1/1.7/2.5/3.3),
-    galling check (Shigley §17-5) and lubrication region (A manual/drip, B bath/disc,
-    C oil stream, C' galling region). One row per chain (ANSI number and ISO twin
-    together), simplex before multi-strand, smallest adequate pitch first; margin =
-    rated / design power; links and centre distance for the wanted centre distance."""
+    """Design a roller chain drive for a duty: the procedure of docs/design.md (service
+    factor from the driver and the driven machine, tooth-count policy, rating by the method
+    of each chain's family, even link count and exact centre distance, the analysis's
+    static safety, advice). Needs a duty class (--driven-machine or --load) or an explicit
+    --service-factor; prints every factor with its source."""
+    from ..design import Duty, design_drive
     from ..errors import InputError
-    from ..selection import candidate_project, select
 
     out_file = None
     if write is not None:
         from .._io import check_output_path
 
         out_file = check_output_path(write, (".toml",), option="--write", force=force)
-    P = quantity(power, "W", "power")
-    w = quantity(speed, "rad/s", "speed")
-    a = quantity(centre_distance, "m", "centre_distance")
-    counts = _strand_counts(strands)
-    from ..limits import MAX_TEETH, check_size
-
-    check_size("--teeth", teeth, MAX_TEETH, minimum=3)
-    if not (math.isfinite(ratio) and 1.0 <= ratio <= MAX_TEETH / max(teeth, 1)):
-        # the driven wheel has round(z1 ratio) teeth, at most chaindrive.limits.MAX_TEETH
-        raise InputError(f"--ratio must lie in [1, {MAX_TEETH / max(teeth, 1):.6g}] (driven teeth = "
-                         f"round({teeth} x ratio) <= {MAX_TEETH}), got {ratio:.6g}")
     if limit < 1:
-        raise InputError(f"--limit must be a whole number >= 1, got {limit}")
-    found = select(P, w, ratio, service_factor=service_factor, teeth_driving=teeth, family=family,
-                   centre_distance=a, strands=counts, min_static_safety=min_static_safety,
-                   all_sizes=all_sizes, limit=limit)
+        raise InputError(f"--limit must be a whole number >= 1, got {limit}", field="--limit")
+    if teeth is not None:
+        from ..limits import MAX_TEETH, check_size
+
+        check_size("--teeth", teeth, MAX_TEETH, minimum=3)
+    duty = Duty(power=quantity(power, "W", "power"), speed=quantity(speed, "rad/s", "speed"), ratio=ratio,
+                driven_speed=quantity(driven_speed, "rad/s", "driven_speed"), driver=driver,
+                driven_machine=driven_machine, load_character=load_character, service_factor=service_factor,
+                hours_per_day=hours, centre_distance=quantity(centre_distance, "m", "centre_distance"),
+                environment=environment, lubrication=lubrication)
+    result = design_drive(duty, teeth_driving=teeth, family=family, strands=_strand_counts(strands),
+                          method=method, required_static_safety=required_static_safety,
+                          all_sizes=all_sizes, limit=limit)
+    found = result.candidates
     if not 1 <= choose <= len(found):
-        raise InputError(f"--choose must lie in [1, {len(found)}] (the rows listed), got {choose}")
+        raise InputError(f"--choose must lie in [1, {len(found)}] (the rows listed), got {choose}", field="--choose")
     if out_file is not None:
         from .._io import atomic_write_text
 
-        atomic_write_text(out_file, candidate_project(found[choose - 1]), force=force, option="--write")
-    if as_json:  # the rows, as a list; the written file is reported on stderr
-        echo_json(found)
+        atomic_write_text(out_file, found[choose - 1].project_text, force=force, option="--write")
+    if as_json:  # the written file is reported on stderr
+        echo_json(result.to_dict())
         if out_file is not None:
             typer.echo(f"wrote {out_file} (row {choose}: {found[choose - 1].chain})", err=True)
         return
+    from rich.markup import escape
     from rich.table import Table
 
-    first = found[0]
-    where = ("centre distance 40 pitches (default)" if a is None
-             else f"centre distance about {a * 1e3:g} mm")
-    t = Table(title=f"Chains for {P / 1e3:g} kW × {service_factor:g} at {angular_velocity_to_rpm(w):g} rpm, "
-                    f"{first.teeth_driving}/{first.teeth_driven} teeth, {where}")
-    from rich.markup import escape
+    from ..workflows.display import check_limit_text, check_value_text
 
-    for h in ("#", "chain", "pitch [mm]", "strands", "rated [kW]", "margin", "limit", "links",
-              "centre distance [mm]", "v [m/s]", "static safety", "lubrication", "notes"):
-        # cells wrap (long words fold) rather than end in "…": every word is read in full
-        t.add_column(escape(h), no_wrap=h in ("chain", "pitch [mm]", "rated [kW]", "limit"), overflow="fold")
-    for k, c in enumerate(found, 1):
-        t.add_row(str(k), " / ".join(c.names), f"{c.pitch * 1e3:.3f}", str(c.strands),
-                  f"{c.rated_power / 1e3:.2f}", f"{c.power_margin:.2f}", c.governing_limit.replace("_", "-"),
-                  str(c.links), f"{c.centre_distance * 1e3:.1f}", f"{c.chain_speed:.2f}",
-                  "-" if c.static_safety is None else f"{c.static_safety:.1f}",
-                  f"{c.lubrication} ({c.lubrication_method.split(';')[0]})", "; ".join(c.notes))
     con = _console()
+    rec = result.recommended
+    con.print(escape(f"Duty: {duty.power / 1e3:g} kW at {angular_velocity_to_rpm(duty.speed):g} rpm, ratio "
+                     f"{duty.speed_ratio:.4g}, {duty.hours_per_day:g} h/day, {duty.environment}"))
+    for f in rec.factors:
+        con.print(escape(f"  {f.name} {f.symbol} = {f.value:.4g}  [{f.source}]" + (f" ({f.note})" if f.note else "")))
+    t = Table(title=f"Candidates (design power {rec.design_power / 1e3:.4g} kW)")
+    for h in ("#", "chain", "teeth", "links", "centre distance [mm]", "rated [kW]", "margin", "limited by",
+              "method", "v [m/s]", "lubrication", "static safety"):
+        t.add_column(escape(h), no_wrap=h in ("chain", "teeth", "rated [kW]"), overflow="fold")
+    for k, c in enumerate(found, 1):
+        t.add_row(str(k), " / ".join(c.names), f"{c.driving_teeth}/{c.driven_teeth}", str(c.links),
+                  f"{c.centre_distance * 1e3:.2f}", f"{c.rated_power / 1e3:.2f}", f"{c.power_margin:.2f}",
+                  c.limited_by.replace("_", "-"), c.method, f"{c.chain_speed:.2f}", c.lubrication,
+                  "-" if c.static_safety is None else f"{c.static_safety:.2f} (>= {c.required_static_safety:g})")
     con.print(t)
+    for note in dict.fromkeys(n for c in found for n in c.notes):
+        con.print(escape(f"note: {note}"))
+    con.print(escape(f"Recommended: {rec.chain}, {rec.driving_teeth}/{rec.driven_teeth} teeth, {rec.links} links, "
+                     f"centre distance {rec.centre_distance * 1e3:.2f} mm"))
+    for a in rec.advice:
+        con.print(escape(f"  advice: {a.name}: {a.note} [{a.source}]"))
+    for c in rec.checks:
+        con.print(escape(f"  {c.verdict}: {c.name}: {check_value_text(c)} (limit {check_limit_text(c)}) [{c.source}]"))
     if out_file is not None:
         typer.echo(f"wrote {out_file} (row {choose}: {found[choose - 1].chain}); check it with "
-                   f"`chaindrive layout {out_file}`")
+                   f"`chaindrive analyze {out_file}`")
+
+
+@app.command("rating")
+def rating_command(
+    chain: str = typer.Option(..., "--chain", "-c", help="Roller chain name, e.g. 08B-1 or 'ANSI 40'."),
+    teeth: int = typer.Option(..., "--teeth", "-z", help="Teeth of the small sprocket, a count."),
+    speed: str = typer.Option(..., "--speed", "-n", help=unit_help("Speed of the small sprocket.", "rad/s",
+                                                                   "1000 rpm")),
+    method: str | None = typer.Option(None, "--method", help="Rating method (default: the method of the "
+                                      "chain's family): ansi or iso10823 when available."),
+    power: str | None = typer.Option(None, "--power", "-P", help=unit_help(
+        "Design power, for the galling check (optional).", "W", "5 kW")),
+    as_json: bool = typer.Option(False, "--json", help="JSON in SI units: rated_power [W], method, limited_by."),
+) -> None:
+    """Rated power of one roller chain on its small sprocket (ANSI/ACA or the chain family's method)."""
+    from ..rating import chain_rating
+
+    r = chain_rating(chain, teeth, quantity(speed, "rad/s", "speed"), power=quantity(power, "W", "power"),
+                     method=method)
+    if as_json:
+        echo_json({"chain": r.chain, "teeth": r.teeth, "angular_velocity": r.angular_velocity,
+                   "rated_power": r.rated_power, "method": r.method, "limited_by": r.limited_by,
+                   "link_plate": r.link_plate, "roller_bushing": r.roller_bushing, "chain_speed": r.chain_speed,
+                   "lubrication": r.lubrication, "galling_speed": r.galling_speed, "source": r.source,
+                   "warnings": list(r.warnings)})
+        return
+    typer.echo(f"{r.chain} on {r.teeth} teeth at {angular_velocity_to_rpm(r.angular_velocity):.6g} rpm: rated "
+               f"{r.rated_power / 1e3:.4g} kW ({r.method}; limited by {r.limited_by.replace('_', '-')}); "
+               f"link plate {r.link_plate / 1e3:.4g} kW, roller-bushing {r.roller_bushing / 1e3:.4g} kW; "
+               f"chain speed {r.chain_speed:.3g} m/s, lubrication {r.lubrication} ({r.lubrication_method}) "
+               f"[{r.source}]")
+    for w in r.warnings:
+        typer.echo(f"note: {w}")
 
 
 def _strand_counts(text: str) -> tuple[int, ...]:

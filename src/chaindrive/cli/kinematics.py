@@ -7,13 +7,13 @@ free, chordal and tangential entry like Dolipiński et al.'s Figs 2 and 3.
 
 from __future__ import annotations
 
-import math
 from pathlib import Path
 
 import typer
 
 from ..errors import InputError
 from ..limits import MAX_POINTS, MAX_TEETH
+from ..units import angular_velocity_to_rpm
 from .app import (
     app,
     echo_json,
@@ -96,7 +96,7 @@ def kinematics_command(
     if r.guide_end_distance is not None:
         what += f", l = {r.guide_end_distance * 1e3:.1f} mm"
     print_rows(f"chain entry kinematics ({r.chain_type} chain, z = {r.teeth}, R = {r.radius * 1e3:.3f} mm, "
-               f"omega = {r.angular_velocity:.6g} rad/s = {r.angular_velocity * 30 / math.pi:.6g} rpm, "
+               f"omega = {r.angular_velocity:.6g} rad/s = {angular_velocity_to_rpm(r.angular_velocity):.6g} rpm, "
                f"model {r.model}): {what}", motion_rows(r.summary))
     if plot is not None:
         print(f"wrote {plot}")

@@ -17,6 +17,7 @@ import typer
 
 from ..errors import InputError
 from ..limits import MAX_MODES
+from ..units import angular_velocity_to_rpm
 from .app import app, echo_json, exit_code, force_option, print_rows, quantity, unit_help
 
 
@@ -55,8 +56,8 @@ def vibration_command(
     teeth: int | None = typer.Option(None, "--teeth", help="Teeth (pockets) z1 >= 3 of the driving wheel (dimensionless count): meshing excitation z1 omega1 (polygonal effect, Dolipiński et al.)."),
     link_chain: bool = typer.Option(False, "--link-chain", help="Round link chain on a pocket wheel: the excitation z1 omega1 of a pair of links (unequal lengths t + d, t - d, Dolipiński et al. eq. 6) instead of the roller chain's z1 omega1/2 (inner/outer links)."),
     model: str = typer.Option("projected", "--model", help="Coupling at the tensioner: projected (w_i = u cos beta_i, derived) or as_printed (w_i = u, the tensioner paper eq. 7 as printed)."),
-    speed_min: str | None = typer.Option(None, "--speed-min", help=unit_help("Lower end of the speed range of --campbell/--map; default 0.8 x --speed (operating range).", "rpm or rad/s", "100 rpm")),
-    speed_max: str | None = typer.Option(None, "--speed-max", help=unit_help("Upper end of the speed range of --campbell/--map; default 1.2 x --speed.", "rpm or rad/s", "400 rpm")),
+    speed_min: str | None = typer.Option(None, "--speed-min", help=unit_help("Lower end of the speed range of --campbell/--map; default 0.5 x --speed (the analysis's Campbell range).", "rpm or rad/s", "100 rpm")),
+    speed_max: str | None = typer.Option(None, "--speed-max", help=unit_help("Upper end of the speed range of --campbell/--map; default 1.5 x --speed (the analysis's Campbell range).", "rpm or rad/s", "400 rpm")),
     as_json: bool = typer.Option(False, "--json", help="Print frequencies_rad_s, frequencies_hz, static_rod_force_n (N) and resonance rows as JSON, SI units."),
     campbell_file: Path | None = typer.Option(None, "--campbell", help="Write a PNG Campbell diagram (frequencies against the driving speed, both in rad/s, rpm on a second axis; forbidden bands shaded); needs --speed or --speed-max."),
     force: bool = force_option(),
@@ -102,14 +103,16 @@ def vibration_command(
         check = resonance_check(p, excitation_frequencies(w, ratio, teeth, link_chain=link_chain))
 
     if campbell_file is not None or map_file is not None:
+        from ..analysis.vibration import CAMPBELL_RANGE
+
         wmax = quantity(speed_max, "rad/s", "speed-max")
         if wmax is None:
             if w is None:
                 raise InputError("--campbell/--map need a speed range: give --speed or --speed-max (rad/s or rpm)")
-            wmax = 1.2 * w
+            wmax = CAMPBELL_RANGE[1] * w
         wmin = quantity(speed_min, "rad/s", "speed-min")
         if wmin is None:
-            wmin = 0.8 * w if w is not None else 0.5 * wmax
+            wmin = CAMPBELL_RANGE[0] * (w if w is not None else wmax / CAMPBELL_RANGE[1])
         _positive(wmin, "speed-min", "rad/s")
         if not wmax > wmin:
             raise InputError(f"speed-max must exceed speed-min ({wmin:g} rad/s), got {wmax:g} rad/s")
@@ -154,7 +157,7 @@ def vibration_command(
                    f"q = {q:g} kg/m, l1 = {l1:g} m, l2 = {l2:g} m, beta1 = {math.degrees(b1):g} deg, "
                    f"beta2 = {math.degrees(b2):g} deg, m = {m:g} kg, C = {c:g} N/m", rows)
         if check is not None and w is not None:
-            print(f"resonance check at ω1 = {w:g} rad/s ({w * 30 / math.pi:g} rpm): band 0.7 <= P/ω <= 1.4")
+            print(f"resonance check at ω1 = {w:g} rad/s ({angular_velocity_to_rpm(w):g} rpm): band 0.7 <= P/ω <= 1.4")
             print(f"  {'mode':>4}  {'excitation':<20} {'P [rad/s]':>10} {'omega [rad/s]':>13} "
                   f"{'P/omega [-]':>11} {'margin [-]':>10}  ok")
             for r in check.rows():

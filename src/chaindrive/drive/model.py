@@ -606,7 +606,7 @@ class Drive:
     links: int | None = None
     slack_tension: float | None = None
     slack_sag_ratio: float = 0.02
-    required_static_safety: float = 7.0
+    required_static_safety: float | None = None
     elongation_limit: float = 0.03
     wear_coefficient: float | None = None
     name: str = "chain drive"
@@ -660,7 +660,8 @@ class Drive:
         if not 0 < limit <= 0.1:
             raise InputError(f"drive.elongation_limit must lie in (0, 0.1], got {limit:g}",
                              field="drive.elongation_limit")
-        _finite(self.required_static_safety, "drive.required_static_safety", positive=True)
+        if self.required_static_safety is not None:
+            _finite(self.required_static_safety, "drive.required_static_safety", positive=True)
         if self.wear_coefficient is not None:
             _finite(self.wear_coefficient, "drive.wear_coefficient", positive=True)
 
@@ -718,6 +719,16 @@ class Drive:
             raise InputError(f"chain {self.chain.name!r} has no mass_per_length; give it in the "
                              "[chain] table of the project", field="chain.mass_per_length")
         return float(q)
+
+    @property
+    def static_safety_required(self) -> float:
+        """Required ``F_B / F_max``: the drive's ``required_static_safety``, or the one table's
+        value for its chain kind (:data:`chaindrive.loads.REQUIRED_STATIC_SAFETY`: 7 roller, 3.5 link)."""
+        if self.required_static_safety is not None:
+            return float(self.required_static_safety)
+        from ..loads import REQUIRED_STATIC_SAFETY
+
+        return REQUIRED_STATIC_SAFETY["link" if self.chain.is_link_chain else "roller"]
 
     def pitch_radii(self) -> np.ndarray:
         """Pitch radius of every wheel in chain order [m]."""
@@ -794,7 +805,7 @@ class Drive:
             "links": self.links,
             "slack_tension": self.slack_tension,
             "slack_sag_ratio": self.slack_sag_ratio,
-            "required_static_safety": self.required_static_safety,
+            "required_static_safety": self.static_safety_required,
             "elongation_limit": self.elongation_limit,
             "wear_coefficient": self.wear_coefficient,
             "contact": None if self.contact is None else dataclasses.asdict(self.contact),

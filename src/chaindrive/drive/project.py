@@ -166,7 +166,7 @@ class DriveSpec(_Model):
     links: int | None = Field(default=None, gt=0, le=MAX_LINKS)
     slack_tension: Force | None = None
     slack_sag_ratio: Ratio = 0.02
-    required_static_safety: Ratio = 7.0
+    required_static_safety: Ratio | None = None
     elongation_limit: Ratio = 0.03
     wear_coefficient: WearCoefficient | None = None
     travel: Literal["ccw", "cw"] = "ccw"
@@ -265,12 +265,13 @@ class TensionerSpec(_Model):
 
     def to_tensioner(self) -> Tensioner:
         """The model's tensioner (its parts reduced to the axis when a mechanism is given)."""
-        common = {"kind": self.kind, "direction": self.direction, "force": self.force}
         if self.mechanism is None:
             assert self.mass is not None and self.stiffness is not None
-            return Tensioner(self.wheel, self.mass, self.stiffness, **common)
+            return Tensioner(self.wheel, self.mass, self.stiffness, kind=self.kind, direction=self.direction,
+                             force=self.force)
         parts = {k: getattr(self, k) for k in _model.TENSIONER_PARTS[self.mechanism] if getattr(self, k) is not None}
-        return Tensioner.from_parts(self.wheel, self.mechanism, parts, **common)
+        return Tensioner.from_parts(self.wheel, self.mechanism, parts, kind=self.kind, direction=self.direction,
+                                    force=self.force)
 
 
 class GuideSpec(_Model):

@@ -1,9 +1,25 @@
-"""A :class:`~chaindrive.drive.model.Drive` written back as a project file (TOML).
+"""The one project-file writer: a :class:`~chaindrive.drive.model.Drive` (plus comments) as
+TOML text that :func:`chaindrive.drive.project.parse_project` reads back to an equal Drive.
 
-:func:`drive_to_toml` writes every field of a drive with its unit, so that
-:func:`chaindrive.drive.project.parse_project` reads back an equal drive (tested on every
-example). Used for the proposals of the analysis (``analyze -o DIR`` writes
-``DIR/proposal.toml``).
+``chaindrive new`` (:func:`chaindrive.drive.project.template`), ``chaindrive select --write``
+(:func:`chaindrive.selection.candidate_project`) write through it. Every quantity is written in
+its SI unit with the shortest text that reads back to the same float (``repr``), so the
+round trip is exact; a comment may follow any key (``comments={"drive.speed": "driving
+wheel"}``) and a header may open the file.
+
+Examples
+--------
+>>> from chaindrive.chains import get
+>>> from chaindrive.drive import Drive, Load, Wheel
+>>> d = Drive(chain=get("16B"), speed=100.0, load=Load(power=15e3),
+...           wheels=(Wheel("motor", "sprocket", 19, (0.0, 0.0), driving=True),
+...                   Wheel("fan", "sprocket", 57, (1.05, 0.0))))
+>>> text = project_text(d, comments={"drive.speed": "driving wheel"})
+>>> 'speed = "100.0 rad/s"  # driving wheel' in text
+True
+>>> from chaindrive.drive.project import parse_project
+>>> parse_project(text) == d
+True
 """
 
 from __future__ import annotations
@@ -11,138 +27,285 @@ from __future__ import annotations
 import dataclasses
 import json
 import math
-from typing import Any
+from collections.abc import Mapping
+from typing import TYPE_CHECKING, Any
 
 from ..errors import InputError
-from .model import TENSIONER_PARTS, Drive
+from .model import TENSIONER_PARTS, Drive, Load, Wheel
 
-__all__ = ["drive_to_toml"]
+if TYPE_CHECKING:
+    from ..selection import Candidate
 
-#: The unit of each physical field of the project file's tables (SI, as the drive holds it).
-_UNITS: dict[str, dict[str, str]] = {
-    "drive": {"slack_tension": "N"},
-    "chain": {"pitch": "m", "roller_diameter": "m", "bar_diameter": "m", "inner_width": "m",
-              "pin_diameter": "m", "plate_height": "m", "breaking_force": "N", "mass_per_length": "kg/m"},
-    "contact": {"skew": "rad", "skew_height_difference": "m", "skew_base": "m", "seat_radius": "m",
-                "contact_length": "m"},
-    "track": {"tractor_weight": "N", "tooth_width": "m", "pin_radius": "m", "allowable_bending": "Pa",
-              "allowable_contact": "Pa"},
-    "tensioner": {"mass": "kg", "stiffness": "N/m", "force": "N", **TENSIONER_PARTS["lever"],
-                  **TENSIONER_PARTS["sliding"]},
-    "guides": {"end_distance": "m", "height": "m"},
+__all__ = ["project_text", "drive_to_toml", "candidate_drive", "candidate_project_text", "toml_string",
+           "quantity_text"]
+
+
+def toml_string(text: str) -> str:
+    """A TOML basic string (JSON escapes are valid TOML)."""
+    return json.dumps(str(text), ensure_ascii=False)
+
+
+def quantity_text(value: float, unit: str) -> str:
+    """``"<value> <unit>"`` as a TOML string, the value exact (``repr``).
+
+    >>> quantity_text(0.0254, "m")
+    '"0.0254 m"'
+    """
+    v = float(value)
+    if not math.isfinite(v):
+        raise InputError(f"cannot write a non-finite quantity ({value!r} {unit}) to a project file")
+    return toml_string(f"{v!r} {unit}")
+
+
+def _number(value: float | int) -> str:
+    if isinstance(value, bool):
+        return "true" if value else "false"
+    if isinstance(value, int):
+        return str(value)
+    return repr(float(value))
+
+
+class _Lines:
+    def __init__(self, comments: Mapping[str, str]) -> None:
+        self.lines: list[str] = []
+        self.comments = comments
+        self.used: set[str] = set()
+
+    def table(self, name: str, array: bool = False) -> None:
+        if self.lines and self.lines[-1] != "":
+            self.lines.append("")
+        self.lines.append(f"[[{name}]]" if array else f"[{name}]")
+
+    def key(self, where: str, key: str, text: str) -> None:
+        path = f"{where}.{key}"
+        note = self.comments.get(path)
+        self.used.add(path)
+        self.lines.append(f"{key} = {text}" + (f"  # {note}" if note else ""))
+
+
+_CHAIN_FIELDS = {"pitch": "m", "roller_diameter": "m", "bar_diameter": "m", "strands": None, "inner_width": "m",
+                 "pin_diameter": "m", "plate_height": "m", "breaking_force": "N", "mass_per_length": "kg/m",
+                 "source": ""}
+
+
+def _chain(out: _Lines, chain: Any) -> None:
+    from ..chains import get
+    from ..errors import UnknownNameError
+
+    out.table("chain")
+    out.key("chain", "name", toml_string(chain.name))
+    try:
+        base = get(chain.name)
+    except UnknownNameError:
+        base = None
+    for key, unit in _CHAIN_FIELDS.items():
+        value = getattr(chain, key)
+        if value is None or (base is not None and getattr(base, key) == value):
+            continue
+        if unit is None:
+            out.key("chain", key, str(int(value)))
+        elif unit == "":
+            out.key("chain", key, toml_string(value))
+        else:
+            out.key("chain", key, quantity_text(value, unit))
+
+
+def _pair(values: tuple[float, float], unit: str) -> str:
+    return "[" + ", ".join(quantity_text(v, unit) if unit else _number(float(v)) for v in values) + "]"
+
+
+def _optional_fields(out: _Lines, table: str, obj: Any, units: Mapping[str, str | None]) -> None:
+    """The fields of ``obj`` that differ from their defaults (required ones always)."""
+    for f in dataclasses.fields(obj):
+        if f.name not in units:
+            continue
+        value = getattr(obj, f.name)
+        default = f.default
+        if f.default is not dataclasses.MISSING and value == default:
+            continue
+        if value is None:
+            continue
+        unit = units[f.name]
+        if isinstance(value, tuple):
+            out.key(table, f.name, _pair(value, unit or ""))
+        elif isinstance(value, str):
+            out.key(table, f.name, toml_string(value))
+        elif unit:
+            out.key(table, f.name, quantity_text(value, unit))
+        else:
+            out.key(table, f.name, _number(value))
+
+
+#: The SI unit of the physical fields of the tables written generically (the others are numbers or text).
+_SPEC_UNITS: dict[str, dict[str, str]] = {
     "track.bolts": {"circle_radius": "m", "diameter": "m", "plate_thickness": "m", "allowable_shear": "Pa",
                     "allowable_bearing": "Pa", "thread_pitch": "m", "yield_strength": "Pa"},
     "crawler": {"stiffness": "N", "cam_distance": "m", "engagement_distance": "m", "cam_pitch": "m",
                 "cam_face_angle": "rad"},
     "fretting": {"roughness": "m", "latent_coefficient": "s/m", "decay_coefficient": "s/N", "frequency": "Hz"},
-    "wheels": {"diameter": "m"},
 }
 
 
-def _s(text: str) -> str:
-    return json.dumps(text, ensure_ascii=False)
+def _all_fields(spec: Any, units: Mapping[str, str]) -> dict[str, str | None]:
+    """Every field of a spec with its unit (``None``: a number, a flag or text)."""
+    return {f.name: units.get(f.name) for f in dataclasses.fields(spec)}
 
 
-def _q(value: float, unit: str) -> str:
-    return _s(f"{float(value)!r} {unit}")
-
-
-def _value(table: str, key: str, value: Any) -> str:
-    unit = _UNITS.get(table, {}).get(key)
-    if isinstance(value, bool):
-        return "true" if value else "false"
-    if isinstance(value, str):
-        return _s(value)
-    if isinstance(value, (tuple, list)):
-        return "[" + ", ".join(_value(table, key, v) for v in value) + "]"
-    if unit is not None:
-        return _q(value, unit)
-    if isinstance(value, float) and not math.isfinite(value):
-        raise InputError(f"{table}.{key}: cannot write {value!r} to a project file", field=f"{table}.{key}")
-    return repr(value)
-
-
-def _table(name: str, values: dict[str, Any], *, array: bool = False) -> list[str]:
-    lines = [f"[[{name}]]" if array else f"[{name}]"]
-    lines += [f"{k} = {_value(name, k, v)}" for k, v in values.items() if v is not None]
-    return [*lines, ""]
-
-
-def drive_to_toml(drive: Drive, *, header: str = "") -> str:
-    """The project file (TOML) of a drive: every quantity with its unit.
+def project_text(drive: Drive, *, header: str | None = None, comments: Mapping[str, str] | None = None) -> str:
+    """The project file (TOML) of ``drive``: :func:`~chaindrive.drive.project.parse_project`
+    reads it back to an equal :class:`Drive`.
 
     Parameters
     ----------
     drive : Drive
-        The drive.
-    header : str
-        Comment lines put first (each line gets a leading ``#``).
+        The drive to write.
+    header : str, optional
+        Comment lines for the top of the file (``#`` added where missing).
+    comments : mapping, optional
+        ``{"table.key": "comment"}`` written after that key (``"wheels.0.teeth"`` for the
+        first wheel, ``"guides.0.kind"`` ...).
 
     Returns
     -------
     str
-        TOML text that :func:`~chaindrive.drive.project.parse_project` reads back as an
-        equal drive. The chain is written by name when it is the catalogue chain of that
-        name, otherwise with all its fields.
+        TOML text, quantities as strings with SI units.
 
     Raises
     ------
     InputError
-        A ``[self_regulating]`` table (not written yet) or a non-finite value.
+        A non-finite quantity.
+    """
+    out = _Lines(comments or {})
+    if header:
+        out.lines += [ln if ln.startswith("#") or not ln else f"# {ln}" for ln in header.strip("\n").splitlines()]
+    d = drive
+    out.table("drive")
+    out.key("drive", "name", toml_string(d.name))
+    if d.description:
+        out.key("drive", "description", toml_string(d.description))
+    out.key("drive", "speed", quantity_text(d.speed, "rad/s"))
+    if d.links is not None:
+        out.key("drive", "links", str(int(d.links)))
+    if d.slack_tension is not None:
+        out.key("drive", "slack_tension", quantity_text(d.slack_tension, "N"))
+    defaults = {f.name: f.default for f in dataclasses.fields(Drive)}
+    for key in ("slack_sag_ratio", "required_static_safety", "elongation_limit"):
+        if getattr(d, key) != defaults[key] or f"drive.{key}" in out.comments:
+            out.key("drive", key, _number(getattr(d, key)))
+    if d.wear_coefficient is not None:
+        out.key("drive", "wear_coefficient", quantity_text(d.wear_coefficient, "m**2/N"))
+    if d.travel != "ccw" or "drive.travel" in out.comments:
+        out.key("drive", "travel", toml_string(d.travel))
+    _chain(out, d.chain)
+    out.table("load")
+    if d.load.power is not None:
+        out.key("load", "power", quantity_text(d.load.power, "W"))
+    if d.load.torque is not None:
+        out.key("load", "torque", quantity_text(d.load.torque, "N*m"))
+    out.key("load", "service_factor", _number(d.load.service_factor))
+    for i, w in enumerate(d.wheels):
+        out.table("wheels", array=True)
+        where = f"wheels.{i}"
+        out.key(where, "name", toml_string(w.name))
+        out.key(where, "kind", toml_string(w.kind))
+        if w.teeth is not None:
+            out.key(where, "teeth", str(int(w.teeth)))
+        if w.diameter is not None:
+            out.key(where, "diameter", quantity_text(w.diameter, "m"))
+        out.key(where, "position", _pair(w.position, "m"))
+        if w.driving:
+            out.key(where, "driving", "true")
+        if w.side != 1:
+            out.key(where, "side", str(int(w.side)))
+    if d.tensioner is not None:
+        t = d.tensioner
+        out.table("tensioner")
+        if t.mechanism is None:
+            _optional_fields(out, "tensioner", t, {"wheel": None, "mass": "kg", "stiffness": "N/m",
+                                                  "kind": None, "direction": "", "force": "N"})
+        else:  # described by its parts: the reader reduces them to mass and stiffness again
+            _optional_fields(out, "tensioner", t, {"wheel": None, "kind": None, "direction": "", "force": "N",
+                                                  "mechanism": None})
+            units = TENSIONER_PARTS[t.mechanism]
+            for key, value in t.parts:
+                out.key("tensioner", key, quantity_text(value, units[key]))
+    for i, g in enumerate(d.guides):
+        out.table("guides", array=True)
+        out.key(f"guides.{i}", "wheel", toml_string(g.wheel))
+        out.key(f"guides.{i}", "kind", toml_string(g.kind))
+        out.key(f"guides.{i}", "end_distance", quantity_text(g.end_distance, "m"))
+        if g.height is not None:
+            out.key(f"guides.{i}", "height", quantity_text(g.height, "m"))
+    if d.contact is not None:
+        out.table("contact")
+        _optional_fields(out, "contact", d.contact, {"skew": "rad", "skew_height_difference": "m", "skew_base": "m",
+                                                      "wear_factor": None, "seat_radius": "m", "contact_length": "m"})
+    if d.track is not None:
+        out.table("track")
+        _optional_fields(out, "track", d.track, {"tractor_weight": "N", "tooth_width": "m", "pin_radius": "m",
+                                                  "adhesion": None, "rims": None, "link": None, "hardness": None,
+                                                  "allowable_bending": "Pa", "allowable_contact": "Pa"})
+    bolts = getattr(d.track, "bolts", None) if d.track is not None else None
+    if bolts is not None:
+        out.table("track.bolts")
+        _optional_fields(out, "track.bolts", bolts, _all_fields(bolts, _SPEC_UNITS["track.bolts"]))
+    for name in ("crawler", "fretting"):
+        spec = getattr(d, name, None)
+        if spec is not None:
+            out.table(name)
+            _optional_fields(out, name, spec, _all_fields(spec, _SPEC_UNITS[name]))
+    if d.self_regulating is not None:
+        sr = d.self_regulating
+        pivot = sr.kind == "pivot"
+        out.table("self_regulating")
+        _optional_fields(out, "self_regulating", sr, {
+            "wheel": None, "kind": None, "pivot": "m", "direction": "", "torque_reaction": None,
+            "weight": "N", "weight_offset": "m", "stiffness": "N*m/rad" if pivot else "N/m",
+            "preload": "N*m" if pivot else "N", "load_max_factor": None, "load_steps": None,
+            "elongation_steps": None, "sag_allowance": None, "psi_tolerance": None, "numerical": None,
+            "inertia": "kg*m^2" if pivot else "kg", "axial_stiffness": "N"})
+    return "\n".join(out.lines) + "\n"
+
+
+def drive_to_toml(drive: Drive, *, header: str = "") -> str:
+    """:func:`project_text` with a header (the analysis' proposal files; kept for its callers)."""
+    return project_text(drive, header=header or None)
+
+
+def candidate_drive(candidate: Candidate, *, name: str | None = None) -> Drive:
+    """The two-sprocket :class:`Drive` of a row of :func:`chaindrive.selection.select`: the
+    sprockets on a horizontal line at the row's centre distance, its chain, speed, power,
+    service factor and chain length."""
+    from ..chains import get
+
+    c = candidate
+    also = f" (= {', '.join(c.names[1:])})" if len(c.names) > 1 else ""
+    return Drive(
+        chain=get(c.chain), speed=float(c.speed), links=int(c.links),
+        load=Load(power=float(c.power), service_factor=float(c.service_factor)),
+        wheels=(Wheel("driving", "sprocket", int(c.teeth_driving), (0.0, 0.0), driving=True),
+                Wheel("driven", "sprocket", int(c.teeth_driven), (float(c.centre_distance), 0.0))),
+        name=name or f"{c.chain} chain drive, {c.teeth_driving}/{c.teeth_driven} teeth",
+        description=(f"{c.chain}{also}: rated {c.rated_power / 1e3:.4g} kW for a design power of "
+                     f"{c.design_power / 1e3:.4g} kW (margin {c.power_margin:.2f}), lubrication "
+                     f"{c.lubrication} ({c.lubrication_method})"))
+
+
+def candidate_project_text(candidate: Candidate, *, name: str | None = None) -> str:
+    """The project file of a row of :func:`chaindrive.selection.select` (``chaindrive select --write``).
 
     Examples
     --------
-    >>> from chaindrive.drive.project import TEMPLATES, parse_project
-    >>> d = parse_project(TEMPLATES["roller"])
-    >>> parse_project(drive_to_toml(d)) == d
+    >>> import numpy as np
+    >>> from chaindrive.selection import select
+    >>> text = candidate_project_text(select(7.5e3, 1450 * np.pi / 30, 3.0)[0])
+    >>> 'name = "10B-1"' in text and "links = 116" in text
     True
     """
-    from ..chains import get
-    from ..errors import UnknownNameError
-
-    if drive.self_regulating is not None:
-        raise InputError("drive_to_toml: a drive with a [self_regulating] table cannot be written yet",
-                         field="self_regulating")
-    lines = [f"# {line}".rstrip() for line in header.splitlines()]
-    if lines:
-        lines.append("")
-    lines += _table("drive", {
-        "name": drive.name, "description": drive.description, "speed": _q(drive.speed, "rad/s")[1:-1],
-        "links": drive.links, "slack_tension": drive.slack_tension, "slack_sag_ratio": drive.slack_sag_ratio,
-        "required_static_safety": drive.required_static_safety, "elongation_limit": drive.elongation_limit,
-        "wear_coefficient": None if drive.wear_coefficient is None else f"{drive.wear_coefficient!r} m**2/N",
-        "travel": drive.travel})
-    chain = drive.chain
-    try:
-        same = get(chain.name) == chain
-    except UnknownNameError:
-        same = False
-    fields = ("pitch", "roller_diameter", "bar_diameter", "strands", "inner_width", "pin_diameter",
-              "plate_height", "breaking_force", "mass_per_length", "source")
-    lines += _table("chain", {"name": chain.name} if same else
-                    {"name": chain.name, **{f: getattr(chain, f) for f in fields}})
-    lines += _table("load", {"power": None if drive.load.power is None else _q(drive.load.power, "W")[1:-1],
-                             "torque": None if drive.load.torque is None else _q(drive.load.torque, "N m")[1:-1],
-                             "service_factor": drive.load.service_factor})
-    for w in drive.wheels:
-        lines += _table("wheels", {"name": w.name, "kind": w.kind, "teeth": w.teeth, "diameter": w.diameter,
-                                   "position": tuple(_q(v, "m")[1:-1] for v in w.position),
-                                   "driving": w.driving, "side": w.side}, array=True)
-    if drive.tensioner is not None:
-        t = drive.tensioner
-        reduced = {"mechanism": t.mechanism, **dict(t.parts)} if t.mechanism else {"mass": t.mass,
-                                                                                      "stiffness": t.stiffness}
-        lines += _table("tensioner", {"wheel": t.wheel, **reduced, "kind": t.kind,
-                                      "direction": [float(v) for v in t.direction], "force": t.force})
-    for g in drive.guides:
-        lines += _table("guides", {"wheel": g.wheel, "end_distance": g.end_distance, "kind": g.kind,
-                                   "height": g.height}, array=True)
-    for name in ("contact", "track", "crawler", "fretting"):
-        spec = getattr(drive, name)
-        if spec is not None:
-            values = dataclasses.asdict(spec)
-            bolts = values.pop("bolts", None)
-            lines += _table(name, values)
-            if bolts is not None:  # [track.bolts]
-                lines += _table(f"{name}.bolts", bolts)
-    return "\n".join(lines)
+    c = candidate
+    return project_text(
+        candidate_drive(candidate, name=name),
+        header="chaindrive project file written by `chaindrive select` (TOML). Quantities carry units\n"
+               "(SI, exact); a bare number is refused for them. Check it with:  chaindrive layout <this file>",
+        comments={"drive.speed": "driving (small) sprocket", "drive.links": "even number of pitches",
+                  "wheels.1.position": f"centre distance for {c.links} links (ISO 10823)"})

@@ -34,7 +34,7 @@ from .._validation import check_positive, check_range, check_teeth
 from ..errors import InfeasibleError, InputError
 from .outline import Arc, Outline, Primitive, _drop_short, _pair, _repeat
 from .polygon import roller_chain_pitch_radius
-from .sprocket import _convex_flank_to_tip, _tip_half
+from .tooth_form import _convex_flank_to_tip, _tip_half
 
 if TYPE_CHECKING:
     from ezdxf.document import Drawing

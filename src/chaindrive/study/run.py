@@ -99,6 +99,27 @@ def analysis_result(drive: Drive, parts: Sequence[str] = ()) -> dict[str, Any]:
     return analyze_drive(drive, include=include).to_dict()
 
 
+def design_outputs(duty: Any, **options: Any) -> dict[str, Any]:
+    """The design procedure's recommended drive for a duty, as a study row (SI units).
+
+    A study over duties (power, speed, driven machine, ...) evaluates each through
+    :func:`chaindrive.design.design_drive`, the function ``chaindrive select`` and the
+    studio call, so a study gives the same chain, teeth, links and centre distance.
+
+    Examples
+    --------
+    >>> import math
+    >>> from chaindrive.design import Duty
+    >>> row = design_outputs(Duty(11e3, 1460 * math.pi / 30, driven_speed=480 * math.pi / 30,
+    ...                           driven_machine="varying_conveyor", centre_distance=0.6))
+    >>> row["chain"], row["links"]
+    ('12A-1', 104)
+    """
+    from ..design import design_drive
+
+    return design_drive(duty, **options).recommended.summary()
+
+
 def lookup(result: Any, path: str) -> Any:
     """The value at a dotted ``path`` of a result dict (``None`` where there is none).
 

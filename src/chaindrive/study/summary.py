@@ -33,7 +33,7 @@ _UNITS = {
     "stress": "Pa", "stress_unskewed": "Pa", "effective_modulus": "Pa", "hours_to_limit": "h",
     "maximum": "N", "tight": "N", "slack": "N", "effective_pull": "N", "dynamic": "N",
     "centrifugal": "N", "nominal_load": "N", "equivalent_load": "N", "load": "N",
-    "chain_speed": "m/s", "torque": "N·m", "frequencies_rad_s": "rad/s", "frequencies_hz": "Hz",
+    "chain_speed": "m/s", "torque": "N*m", "frequencies_rad_s": "rad/s", "frequencies_hz": "Hz",
     "static_rod_force": "N", "heavy_tensioner_frequency": "rad/s", "rated_power": "W",
     "design_power": "W", "acceleration_peak": "m/s²", "skew": "rad", "max_skew": "rad",
     "design_skew": "rad", "half_width": "m", "centre_distance": "m", "slack_sag": "m",

@@ -393,7 +393,7 @@ def span_excitations(span: TensionerSpan, speed: float, *, ratio: float, teeth_d
     link = bar_diameter is not None
     ks = excitation_multipliers(ratio, teeth_driving, link_chain=link, polygon=True)
     z_small, r_small = min((teeth_driving, radius_driving), (teeth_driven, radius_driven))
-    if link:
+    if bar_diameter is not None:
         d = float(check_positive("bar_diameter", bar_diameter, "m"))
         rad = r_small
         d1 = 2 * np.arcsin(min(1.0, (pitch + d) / (2 * rad)))
@@ -413,10 +413,10 @@ def span_excitations(span: TensionerSpan, speed: float, *, ratio: float, teeth_d
         a = amplitude[name]
         w, u = forced_span_response(span, np.array([k * w1, 1e-6 * w1]), a, a, damping_ratio=damping_ratio)
         amp = float(w[0] / w[1]) if a > 0 else 0.0
-        polygon = name in POLYGON_EXCITATIONS
+        by_response = name in POLYGON_EXCITATIONS
         rows.append(ExcitationResponse(name=name, frequency=k * w1, end_amplitude=a, response=float(w[0]),
                                        tensioner_amplitude=float(u[0]), amplification=amp,
-                                       criterion="response" if polygon else "band",
-                                       passed=bool(amp <= AMPLIFICATION_LIMIT) if polygon else None,
+                                       criterion="response" if by_response else "band",
+                                       passed=bool(amp <= AMPLIFICATION_LIMIT) if by_response else None,
                                        source=_SOURCES[name]))
     return tuple(rows)

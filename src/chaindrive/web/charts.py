@@ -7,14 +7,11 @@ which the app serves from the installed ``plotly`` package (nothing from the int
 
 from __future__ import annotations
 
-import math
-import warnings
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from ..errors import ChainDriveError, ValidityRangeWarning
-from ..loads import mean_chain_speed, sides_per_turn
+from ..errors import ChainDriveError
 from ..units import angular_velocity_to_rpm, rpm_to_angular_velocity
 
 if TYPE_CHECKING:
@@ -51,7 +48,8 @@ def rating_chart(design: Design, *, units: str = "metric") -> dict[str, Any]:
     'operating point'
     """
     from ..chains import get
-    from ..selection import ansi_constants, ansi_rated_power
+    from ..design.link import power_at_safety
+    from ..rating import rated_power_curve
 
     label, factor = _power_unit(units)
     speeds = rpm_to_angular_velocity(np.geomspace(10, 6000, 120))
@@ -62,17 +60,12 @@ def rating_chart(design: Design, *, units: str = "metric") -> dict[str, Any]:
     for name in names:
         ch = get(name)
         if ch.is_link_chain:
-            required = design.drive.required_static_safety if design.drive is not None else 3.5
-            v = mean_chain_speed(sides_per_turn(design.teeth_driving, True), ch.pitch, speeds)
             if ch.breaking_force is None:
                 continue
-            power = ch.breaking_force / required * v
+            required = design.drive.static_safety_required if design.drive is not None else None
+            power = power_at_safety(ch, design.teeth_driving, speeds, required)
         else:
-            kp, kr = ansi_constants(ch.name)
-            with warnings.catch_warnings():
-                warnings.simplefilter("ignore", ValidityRangeWarning)
-                power = np.asarray(ansi_rated_power(ch.pitch, design.teeth_driving, speeds, strands=ch.strands,
-                                                    plate_constant=kp, roller_constant=kr), dtype=float)
+            power = rated_power_curve(ch, design.teeth_driving, speeds)
         ok = np.isfinite(power) & (power > 0)
         traces.append({"type": "scatter", "mode": "lines", "name": name,
                        "x": angular_velocity_to_rpm(speeds[ok]).round(3).tolist(), "y": (power[ok] * factor).round(5).tolist(),
@@ -93,12 +86,14 @@ def tensioner_span_of(drive: Drive) -> tuple[TensionerSpan, _Excitation] | None:
     """The ``TensionerSpan`` of a drive and the excitation keywords, or ``None``.
 
     ``None`` also when the tensioner moves almost along the chain (span parts inclined
-    more than 60° to the normal of its axis), where the tensioner paper's coupling vanishes.
+    more than :data:`chaindrive.analysis.vibration.COUPLING_LIMIT_ANGLE` to the normal of its
+    axis), where the tensioner paper's coupling vanishes.
     """
+    from ..analysis.vibration import COUPLING_LIMIT_ANGLE
     from .engine import tensioner_span
 
     got = tensioner_span(drive)
-    if got is None or max(got[0].angle_1, got[0].angle_2) > math.radians(60):
+    if got is None or max(got[0].angle_1, got[0].angle_2) > COUPLING_LIMIT_ANGLE:
         return None
     return got
 
@@ -106,9 +101,12 @@ def tensioner_span_of(drive: Drive) -> tuple[TensionerSpan, _Excitation] | None:
 def campbell_chart(drive: Drive) -> dict[str, Any] | None:
     """Campbell diagram of the slack span with its tensioner (the tensioner paper), or ``None``.
 
+    Over the speed range of the analysis (:data:`chaindrive.analysis.vibration.CAMPBELL_RANGE`).
+
     Natural frequencies ``P_i`` against the driving speed, the excitations ``k_j ω`` and
     their forbidden bands ``0.7 k_j ω <= P <= 1.4 k_j ω``.
     """
+    from ..analysis.vibration import CAMPBELL_RANGE
     from ..vibration import campbell
 
     got = tensioner_span_of(drive)
@@ -116,7 +114,7 @@ def campbell_chart(drive: Drive) -> dict[str, Any] | None:
         return None
     span, exc = got
     omega = float(drive.speed)
-    res = campbell(span, (0.2 * omega, 2.0 * omega), speeds=120, design_speed=omega, **exc)
+    res = campbell(span, (CAMPBELL_RANGE[0] * omega, CAMPBELL_RANGE[1] * omega), speeds=120, design_speed=omega, **exc)
     x = res.speed
     traces = []
     palette = ["#e67e22", "#16a085", "#8e44ad", "#2c3e50", "#d35400"]
@@ -157,6 +155,7 @@ def resonance_map_chart(drive: Drive, *, points: int = 31) -> dict[str, Any] | N
     (:func:`chaindrive.vibration.resonance_map`, the tensioner paper's criterion); the
     region ``margin >= 0`` is free of resonance. The design is marked.
     """
+    from ..analysis.vibration import PROPOSAL_RANGE
     from ..vibration import resonance_map
 
     got = tensioner_span_of(drive)
@@ -168,7 +167,7 @@ def resonance_map_chart(drive: Drive, *, points: int = 31) -> dict[str, Any] | N
     masses = np.geomspace(m0 / 31.6, m0 * 31.6, points)
     stiff = np.geomspace(c0 / 31.6, c0 * 31.6, points)
     try:
-        res = resonance_map(span, masses, stiff, (0.9 * omega, 1.1 * omega), speeds=7, **exc)
+        res = resonance_map(span, masses, stiff, (PROPOSAL_RANGE[0] * omega, PROPOSAL_RANGE[1] * omega), speeds=7, **exc)
     except ChainDriveError:
         return None
     z = np.clip(np.asarray(res.min_margin, dtype=float), -1.0, 1.0)

@@ -14,11 +14,13 @@ import math
 import warnings
 from dataclasses import dataclass, field
 from functools import lru_cache
-from pathlib import Path
 from typing import Any
 
+from ..analysis.loads import REQUIRED_STATIC_SAFETY, required_static_safety
+from ..design.duty import service_factor_table
+from ..design.link import link_candidates
+from ..design.policy import BASE_TEETH
 from ..errors import ChainDriveError, InputError, ValidityRangeWarning
-from ..loads import mean_chain_speed, sides_per_turn
 from ..units import angular_velocity_to_rpm
 from .fields import FieldError, FieldSpec, parse_field, parse_integer
 
@@ -40,7 +42,7 @@ DEFAULTS: dict[str, str] = {
     "service_factor": "",
     "hours_per_day": "8",
     "chain": "",
-    "teeth_driving": "19",
+    "teeth_driving": "",
     "teeth_driven": "",
     "centre_distance": "500 mm",
     "tensioner": "",
@@ -50,6 +52,9 @@ DEFAULTS: dict[str, str] = {
     "tensioner_mass": "2 kg",
     "tensioner_stiffness": "20 kN/m",
     "tensioner_force": "200 N",
+    "tensioner_mechanism": "",
+    **{f"tensioner_{k}": "" for k in ("arm_length", "arm_mass", "wheel_mass", "carriage_mass", "spring_stiffness",
+                                      "spring_lever", "spring_angle")},
     "guide": "",
     "guide_end": "100 mm",
     "skew": "",
@@ -65,7 +70,8 @@ MINING_EXAMPLE: dict[str, str] = {
     "chain": "18x64", "teeth_driving": "8", "teeth_driven": "8", "centre_distance": "4.05 m",
     "tensioner": "on", "idler_teeth": "6", "idler_position": "0.3", "idler_offset": "400 mm",
     "tensioner_mass": "60 kg", "tensioner_stiffness": "200 kN/m", "tensioner_force": "5 kN",
-    "guide": "tangential", "guide_end": "256 mm", "required_static_safety": "3.5",
+    "guide": "tangential", "guide_end": "256 mm",
+    "required_static_safety": f"{REQUIRED_STATIC_SAFETY['link']:g}",
     "wear_coefficient": "2e-16 m**2/N",
 }
 
@@ -76,6 +82,7 @@ CHOICES: dict[str, tuple[str, ...]] = {
     "units": ("metric", "imperial"),
     "kind": ("roller", "link"),
     "tensioner": ("", "on"),
+    "tensioner_mechanism": ("", "lever", "sliding"),
     "guide": ("", "tangential", "chordal"),
 }
 
@@ -93,6 +100,14 @@ FIELDS: dict[str, FieldSpec] = {
     "tensioner_mass": FieldSpec("kg", 0.0, 1e5, example="2 kg"),
     "tensioner_stiffness": FieldSpec("N/m", 0.0, 1e10, example="20 kN/m"),
     "tensioner_force": FieldSpec("N", 0.0, 1e7, open_minimum=False, example="200 N"),
+    # a tensioner described by its parts (chaindrive.drive.model.Tensioner.from_parts)
+    "tensioner_arm_length": FieldSpec("m", 0.0, 10.0, example="400 mm"),
+    "tensioner_arm_mass": FieldSpec("kg", 0.0, 1e5, open_minimum=False, example="30 kg"),
+    "tensioner_wheel_mass": FieldSpec("kg", 0.0, 1e5, open_minimum=False, example="40 kg"),
+    "tensioner_carriage_mass": FieldSpec("kg", 0.0, 1e5, open_minimum=False, example="25 kg"),
+    "tensioner_spring_stiffness": FieldSpec("N/m", 0.0, 1e10, example="600 kN/m"),
+    "tensioner_spring_lever": FieldSpec("m", 0.0, 10.0, open_minimum=False, example="250 mm"),
+    "tensioner_spring_angle": FieldSpec("rad", 0.0, 1.5, open_minimum=False, example="10 deg"),
     "guide_end": FieldSpec("m", 0.0, 10.0, example="100 mm"),
     "skew": FieldSpec("rad", 0.0, 0.2, open_minimum=False, example="50 arcmin"),
     "required_static_safety": FieldSpec("", 1.0, 50.0, open_minimum=False, example="7"),
@@ -100,31 +115,6 @@ FIELDS: dict[str, FieldSpec] = {
 }
 
 TEETH_RANGE = (6, 150)
-
-
-@lru_cache(maxsize=1)
-def service_factor_table() -> dict[str, Any]:
-    """The published service-factor table (driving machine x driven machine), with its source.
-
-    Returns
-    -------
-    dict
-        ``source``, ``drivers``, ``characters``, ``factors[character][driver]`` and
-        ``driven_machines[key] = [label, character]``.
-
-    References
-    ----------
-    U.S. Tsubaki, *The Complete Guide to Chain*, Table 4.2; ACA table in Shigley's
-    Mechanical Engineering Design, 9th ed., Table 17-15.
-
-    Examples
-    --------
-    >>> t = service_factor_table()
-    >>> t["factors"]["heavy"]["electric_motor"]
-    1.5
-    """
-    path = Path(__file__).with_name("data") / "service_factors.json"
-    return json.loads(path.read_text(encoding="utf-8"))
 
 
 def normalise_state(params: dict[str, Any]) -> dict[str, str]:
@@ -180,6 +170,7 @@ class Design:
     links: int | None = None
     centre_distance: float | None = None
     exact_centre_distance: float | None = None
+    advice: tuple = ()
 
 
 def _number(state: dict[str, str], name: str, errors: dict[str, str]) -> float | None:
@@ -219,6 +210,8 @@ def _teeth(state: dict[str, str], errors: dict[str, str], ratio: float | None,
            kind: str) -> tuple[int | None, int | None]:
     lo = 3 if kind == "link" else TEETH_RANGE[0]
     z1 = z2 = None
+    if kind == "roller" and not state["teeth_driving"].strip():
+        return None, None  # the tooth-count policy of the design procedure decides
     try:
         z1 = parse_integer("teeth_driving", state["teeth_driving"], lo, TEETH_RANGE[1])
     except FieldError as exc:
@@ -238,46 +231,36 @@ def _teeth(state: dict[str, str], errors: dict[str, str], ratio: float | None,
 
 
 @lru_cache(maxsize=128)
-def _roller_candidates(power: float, speed: float, ratio: float, ks: float, z1: int) -> tuple:
-    from ..selection import select
+def _roller_design(power: float, speed: float, ratio: float, service_factor: float | None, driver: str,
+                   driven: str, hours: float, centre: float, teeth: int | None) -> Any:
+    """The design procedure's answer for the form's duty (cached by the duty)."""
+    from ..design import Duty, design_drive
 
+    duty = Duty(power, speed, ratio=ratio, driver=driver, driven_machine=driven, service_factor=service_factor,
+                hours_per_day=hours, centre_distance=centre)
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", ValidityRangeWarning)
-        found = select(power, speed, max(ratio, 1.0), service_factor=ks, teeth_driving=z1)
-    out = []
-    for c in found[:8]:
-        out.append({"chain": c.chain, "strands": c.strands, "pitch": c.pitch,
-                    "rated_power": c.rated_power, "design_power": c.design_power,
-                    "margin": c.power_margin, "static_safety": c.static_safety,
-                    "lubrication": c.lubrication, "governing_limit": c.governing_limit,
-                    "notes": tuple(c.notes)})
-    return tuple(out)
+        return design_drive(duty, teeth_driving=teeth, limit=8)
 
 
-def _link_candidates(power: float, speed: float, ks: float, z1: int, required: float) -> list[dict]:
-    """DIN 22252 chains ranked by static safety F_B / (K_s P / v + q v²) >= required."""
-    from ..chains import catalogue
-
-    out = []
-    for ch in catalogue("din22252"):
-        if ch.breaking_force is None:
-            continue
-        v = mean_chain_speed(sides_per_turn(z1, True), ch.pitch, speed)
-        q = ch.mass_per_length or 0.0
-        pull = ks * power / v + q * v * v
-        safety = ch.breaking_force / pull
-        if safety < required:
-            continue
-        out.append({"chain": ch.name, "strands": ch.strands, "pitch": ch.pitch,
-                    "rated_power": ch.breaking_force / required * v, "design_power": ks * power,
-                    "margin": safety / required, "static_safety": safety, "lubrication": None,
-                    "governing_limit": "static safety", "notes": []})
-    out.sort(key=lambda c: (c["pitch"], c["rated_power"]))
-    return out[:8]
+def _candidate_rows(result: Any) -> list[dict]:
+    return [{"chain": c.chain, "strands": c.strands, "pitch": c.pitch, "rated_power": c.rated_power,
+             "design_power": c.design_power, "margin": c.power_margin, "static_safety": c.static_safety,
+             "lubrication": c.lubrication, "governing_limit": c.limited_by, "notes": tuple(c.notes),
+             "teeth_driving": c.driving_teeth, "teeth_driven": c.driven_teeth, "links": c.links,
+             "centre_distance": c.centre_distance,
+             "advice": tuple({"name": a.name, "note": a.note, "source": a.source} for a in c.advice)}
+            for c in result.candidates]
 
 
 def _toml_string(text: str) -> str:
     return json.dumps(text, ensure_ascii=False)
+
+
+#: The parts of each tensioner mechanism the studio offers (a subset of chaindrive.drive.model.TENSIONER_PARTS).
+_TENSIONER_PARTS = {"lever": ("arm_length", "arm_mass", "wheel_mass", "spring_stiffness", "spring_lever",
+                              "spring_angle"),
+                    "sliding": ("carriage_mass", "wheel_mass", "spring_stiffness", "spring_angle")}
 
 
 def _project_text(d: Design, state: dict[str, str], positions: list, idler: tuple | None,
@@ -297,7 +280,7 @@ def _project_text(d: Design, state: dict[str, str], positions: list, idler: tupl
     if state["required_static_safety"].strip():
         lines.append(f"required_static_safety = {_toml_string(state['required_static_safety'].strip())}")
     elif d.chain.is_link_chain:
-        lines.append("required_static_safety = 3.5")
+        lines.append(f"required_static_safety = {required_static_safety(d.chain):g}")
     if state["wear_coefficient"].strip():
         lines.append(f"wear_coefficient = {_toml_string(state['wear_coefficient'].strip())}")
     if d.chain.is_link_chain:
@@ -318,9 +301,15 @@ def _project_text(d: Design, state: dict[str, str], positions: list, idler: tupl
             lines.append("driving = true")
         lines.append("")
     if idler is not None:
-        lines += ["[tensioner]", 'wheel = "tensioner"',
-                  f"mass = {_toml_string(state['tensioner_mass'].strip())}",
-                  f"stiffness = {_toml_string(state['tensioner_stiffness'].strip())}",
+        mechanism = state["tensioner_mechanism"]
+        if mechanism:  # described by its parts: the project file reduces them to the axis
+            reduced = [f"mechanism = {_toml_string(mechanism)}"] + [
+                f"{k} = {_toml_string(state['tensioner_' + k].strip())}" for k in _TENSIONER_PARTS[mechanism]
+                if state["tensioner_" + k].strip()]
+        else:
+            reduced = [f"mass = {_toml_string(state['tensioner_mass'].strip())}",
+                       f"stiffness = {_toml_string(state['tensioner_stiffness'].strip())}"]
+        lines += ["[tensioner]", 'wheel = "tensioner"', *reduced,
                   'kind = "spring"', "direction = [0, -1]",
                   f"force = {_toml_string(state['tensioner_force'].strip())}", ""]
     if state["guide"]:
@@ -356,23 +345,44 @@ def design_from_state(state: dict[str, str]) -> tuple[Design | None, dict[str, s
     required = None
     if state["required_static_safety"].strip():
         required = _number(state, "required_static_safety", errors)
-    if (power is None or speed is None or ratio is None or ks is None or hours is None or z1 is None
-            or z2 is None or errors):
+    centre = _number(state, "centre_distance", errors)
+    if (power is None or speed is None or ratio is None or ks is None or hours is None or centre is None
+            or (kind == "link" and (z1 is None or z2 is None)) or errors):
         return None, errors
-    candidates, note = [], ""
+    candidates: list[dict] = []
+    note = ""
     try:
         if kind == "roller":
-            candidates = [dict(c) for c in _roller_candidates(power, speed, ratio, ks, z1)]
+            if ratio < 1:
+                note = "the design procedure covers speed-reducing drives (ratio >= 1): give a chain"
+            else:
+                given_ks = ks if state["service_factor"].strip() else None
+                result = _roller_design(power, speed, ratio, given_ks, state["driver"], state["driven"], hours,
+                                        centre, z1)
+                candidates = _candidate_rows(result)
         else:
-            candidates = _link_candidates(power, speed, ks, z1, required or 3.5)
+            assert z1 is not None
+            candidates = link_candidates(power, speed, ks, z1, required)
     except ChainDriveError as exc:
         note = str(exc)
     chain_name = state["chain"].strip()
     if not chain_name:
         if not candidates:
-            errors["chain"] = note or "no catalogue chain carries this duty; give a chain name"
+            if "too large for the centre distance" in note:
+                errors["centre_distance"] = f"{centre * 1e3:.1f} mm is too short: {note}"
+            else:
+                errors["chain"] = note or "no catalogue chain carries this duty; give a chain name"
             return None, errors
         chain_name = candidates[0]["chain"]
+    chosen = next((c for c in candidates if c["chain"] == chain_name and "links" in c), None)
+    if z1 is None:
+        z1 = chosen["teeth_driving"] if chosen is not None else BASE_TEETH
+    if z2 is None:
+        z2 = chosen["teeth_driven"] if chosen is not None and chosen["teeth_driving"] == z1 else int(round(z1 * ratio))
+        if not TEETH_RANGE[0] <= z2 <= TEETH_RANGE[1]:
+            errors["teeth_driven"] = (f"ratio x teeth_driving gives {z2} teeth, outside "
+                                      f"{TEETH_RANGE[0]} <= teeth_driven <= {TEETH_RANGE[1]}")
+            return None, errors
     try:
         chain = get(chain_name)
     except ChainDriveError as exc:
@@ -384,13 +394,15 @@ def design_from_state(state: dict[str, str]) -> tuple[Design | None, dict[str, s
     if kind == "roller" and chain.is_link_chain:
         errors["chain"] = f"{chain.name} is a round link chain; switch the chain type to link"
         return None, errors
-    centre = _number(state, "centre_distance", errors)
     tensioner = state["tensioner"] == "on"
     idler = None
     if tensioner:
         pos = _number(state, "idler_position", errors)
         off = _number(state, "idler_offset", errors)
-        for name in ("tensioner_mass", "tensioner_stiffness", "tensioner_force"):
+        mech = state["tensioner_mechanism"]
+        reduced = ("tensioner_mass", "tensioner_stiffness") if not mech else tuple(
+            "tensioner_" + k for k in _TENSIONER_PARTS[mech] if state["tensioner_" + k].strip())
+        for name in (*reduced, "tensioner_force"):
             _number(state, name, errors)
         try:
             zi = parse_integer("idler_teeth", state["idler_teeth"], 3 if kind == "link" else 6, TEETH_RANGE[1])
@@ -424,7 +436,10 @@ def design_from_state(state: dict[str, str]) -> tuple[Design | None, dict[str, s
     try:
         text = _project_text(d, state, positions, idler, None)
         geometry = (chain.name, z1, z2, centre, idler, state["guide"], state["guide_end"])
-        links, exact = _links_and_centre(geometry, text, idler is None)
+        if (chosen is not None and idler is None and (chosen["teeth_driving"], chosen["teeth_driven"]) == (z1, z2)):
+            links, exact = chosen["links"], chosen["centre_distance"]  # the design procedure's layout
+        else:
+            links, exact = _links_and_centre(geometry, text, idler is None)
         if exact is not None:
             positions = [(0.0, 0.0), (exact, 0.0)]
         text = _project_text(d, state, positions, idler, links)
@@ -433,6 +448,8 @@ def design_from_state(state: dict[str, str]) -> tuple[Design | None, dict[str, s
         errors[_field_of(str(exc))] = str(exc).removeprefix("studio.toml: ")
         return None, errors
     d.project_text, d.drive, d.links, d.exact_centre_distance = text, drive, links, exact
+    if chosen is not None:
+        d.advice = chosen["advice"]
     return d, errors
 
 
@@ -460,6 +477,10 @@ def _links_and_centre(geometry: tuple, text: str, exact: bool) -> tuple[int, flo
 
 def _field_of(message: str) -> str:
     """The form field an engine message is about (the drawing area when unknown)."""
+    for part in ("arm_length", "arm_mass", "wheel_mass", "carriage_mass", "spring_stiffness", "spring_lever",
+                 "spring_angle"):
+        if f"tensioner.{part}" in message or f"tensioner: {part}" in message:
+            return "tensioner_" + part
     for key in ("tensioner", "guide", "skew", "teeth", "centre", "chain", "speed", "power"):
         if key in message:
             return {"tensioner": "tensioner_force", "guide": "guide_end", "teeth": "teeth_driving",
@@ -527,7 +548,7 @@ def state_from_project(text: str, filename: str = "project.toml") -> dict[str, s
         "teeth_driven": str(other.teeth),
         "centre_distance": f"{centre * 1e3:.6g} mm",
         "service_factor": f"{load.service_factor:g}",
-        "required_static_safety": f"{drive.required_static_safety:g}",
+        "required_static_safety": "" if drive.required_static_safety is None else f"{drive.required_static_safety:g}",
         "wear_coefficient": "" if drive.wear_coefficient is None else f"{drive.wear_coefficient:g} m**2/N",
         "tensioner": "", "guide": "", "skew": "",
     })
@@ -550,6 +571,12 @@ def state_from_project(text: str, filename: str = "project.toml") -> dict[str, s
             "tensioner_mass": f"{t.mass:g} kg", "tensioner_stiffness": f"{t.stiffness / 1e3:g} kN/m",
             "tensioner_force": f"{(t.force or 0.0):g} N",
         })
+        if t.mechanism in _TENSIONER_PARTS:
+            parts = dict(t.parts)
+            state["tensioner_mechanism"] = t.mechanism
+            for k in _TENSIONER_PARTS[t.mechanism]:
+                if k in parts:
+                    state["tensioner_" + k] = f"{parts[k]:g} {FIELDS['tensioner_' + k].unit}"
     elif idlers:
         raise InputError(f"{filename}: an idler without a [tensioner] table is not edited by the studio; "
                          "use `chaindrive analyze`")

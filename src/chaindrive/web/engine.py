@@ -99,7 +99,7 @@ def light_analysis(drive: Drive) -> LightAnalysis:
     """
     from ..analysis import analyze_drive  # the typed analysis layer
 
-    res = analyze_drive(drive)
+    res = analyze_drive(drive, exclude=["remedy"])  # the remedy search (~1.5 s) belongs to the full report
     checks = [_check_dict(_group(c), c) for c in res.checks]
     return LightAnalysis(checks=checks, warnings=[str(w) for w in res.warnings],
                          passed=bool(res.passed), analysis=res, layout=res.layout)
@@ -183,14 +183,14 @@ def tensioner_span(drive: Drive) -> tuple[TensionerSpan, _Excitation] | None:
     if drive.tensioner is None:
         return None
     from ..analysis.loads import drive_loads
-    from ..analysis.vibration import _excitation_kwargs
+    from ..analysis.vibration import excitation_kwargs
     from ..analysis.vibration import tensioner_span as _span
 
     lay = _layout(drive)
     span = _span(drive, lay, drive_loads(drive, lay))
     if span is None:
         return None
-    return span, _excitation_kwargs(drive)
+    return span, excitation_kwargs(drive)
 
 
 def full_report(drive: Drive, output: str | Path, *, pdf: bool = False) -> dict[str, str]:

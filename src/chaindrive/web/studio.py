@@ -22,6 +22,7 @@ from fastapi.responses import HTMLResponse, JSONResponse, RedirectResponse, Resp
 from starlette.datastructures import UploadFile as StarletteUpload
 
 from .._results import jsonable
+from ..analysis.loads import REQUIRED_STATIC_SAFETY
 from ..errors import ChainDriveError, InputError
 from ..units import angular_velocity_to_rpm
 from .design import (
@@ -122,6 +123,7 @@ def studio_payload(state: dict[str, str]) -> dict[str, Any]:
          "safety_text": fmt(c["static_safety"], 3), "chosen": c["chain"] == design.chain.name}
         for c in design.candidates]
     out["candidate_note"] = design.candidate_note
+    out["advice"] = list(design.advice)  # the design procedure's advice, with sources
     out["chain"] = {"name": design.chain.name, "family": design.chain.family,
                     "pitch": " ".join(show(design.chain.pitch, "m", units)),
                     "breaking_force": " ".join(show(design.chain.breaking_force, "N", units)),
@@ -260,7 +262,7 @@ def router(ctx: Any) -> APIRouter:
         table = service_factor_table()
         driven_options = [(k, v[0]) for k, v in table["driven_machines"].items()]
         return ctx.render(request, "studio.html", state=state, table=table, fields=FIELDS,
-                          driven_options=driven_options,
+                          driven_options=driven_options, required_safety=REQUIRED_STATIC_SAFETY,
                           downloads=DOWNLOADS, open_error=request.query_params.get("open_error", "")[:500],
                           mining_query=_example_query("mining_conveyor.toml"),
                           query=state_query(state))

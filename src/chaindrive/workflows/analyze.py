@@ -57,17 +57,17 @@ def report_from_analysis(analysis: DriveAnalysis, *, title: str | None = None, s
 
 def _proposal_text(analysis: DriveAnalysis) -> str | None:
     """The project file of the analysis' passing remedy (None when there is none)."""
-    vib = analysis.vibration
-    if vib is None or vib.remedy is None or not vib.remedy.found:
+    remedy = analysis["remedy"]
+    if remedy is None or not remedy.found:
         return None
     from ..drive.writer import drive_to_toml
     from ..errors import InputError
 
     header = ("chaindrive proposal: the nearest design that passes the resonance check of the slack span\n"
               f"with its tensioner, for {analysis.drive.name!r}. Changes:\n"
-              + "\n".join(f"  - {c}" for c in vib.remedy.changes))
+              + "\n".join(f"  - {c}" for c in remedy.changes))
     try:
-        return drive_to_toml(vib.remedy.drive, header=header)
+        return drive_to_toml(remedy.drive, header=header)
     except InputError:  # a drive the writer cannot write yet (e.g. [self_regulating]): the report has the changes
         return None
 

@@ -49,7 +49,7 @@ CONVERSIONS: dict[tuple[str, str], float] = {
     ("m^2", "mm^2"): 1e6,
     ("m^3", "cm^3"): 1e6,
     ("1", "%"): 100.0,
-    ("rad", "arcmin"): 180.0 * 60.0 / math.pi,
+    ("rad", "arcmin"): math.degrees(1.0) * 60.0,
     ("N/m", "kN/m"): 1e-3,
 }
 

@@ -116,7 +116,7 @@ def inputs_section(a: DriveAnalysis, fig: _Figures) -> Section | None:
         ["power (without service factor)", *_si(d.power(), "W")],
         ["torque on the driving wheel", *_si(d.torque(), "N*m")],
         ["service factor", d.load.service_factor, "-"],
-        ["required static safety", d.required_static_safety, "-"],
+        ["required static safety", d.static_safety_required, "-"],
         ["wear elongation limit", *_si(d.elongation_limit, "1", "%")],
     ]
     tables = [Table("Input data", ["quantity", "value", "unit"], [[n, "—" if v is None else v, u] for n, v, u in rows]),
@@ -327,8 +327,8 @@ def vibration_section(a: DriveAnalysis, fig: _Figures) -> Section | None:
                   "band 0.7…1.4 (paper)" if e.criterion == "band" else f"amplification ≤ {AMPLIFICATION_LIMIT:.3g}",
                   "see band" if e.passed is None else ("pass" if e.passed else "FAIL"), e.source]
                  for e in v.severity]))
-        if v.remedy is not None:
-            rm = v.remedy
+        rm = a["remedy"]
+        if rm is not None:
             if rm.found:
                 sec.paragraphs.append(
                     "A design that passes the resonance check (nearest within the searched ranges: "

@@ -94,7 +94,8 @@
       body.appendChild(tr);
     }
     text($("candidate-note"), "Chosen: " + d.chain.name + " (" + d.chain.family + "), pitch " + d.chain.pitch +
-      ", breaking force " + d.chain.breaking_force + ". " + (d.candidate_note || ""));
+      ", breaking force " + d.chain.breaking_force + ". " + (d.candidate_note || "") +
+      (d.advice || []).map((a) => " Advice, " + a.name + ": " + a.note + " [" + a.source + "].").join(""));
     const L = d.layout;
     const rows = [
       ["teeth z1 / z2", L.teeth_driving + " / " + L.teeth_driven],

@@ -1,0 +1,399 @@
+r"""The design procedure of a roller chain drive, once: duty -> chain -> drive -> checks -> advice.
+
+:func:`design_drive` is the one function the Python API, ``chaindrive select``, the
+design studio and studies call. The steps and the source of each (docs/design.md):
+
+1. **duty -> service factor** (:func:`chaindrive.design.duty.duty_factors`; ACA / U.S.
+   Tsubaki table); the design power ``K_s P``.
+2. **tooth-count policy** per chain (:mod:`chaindrive.design.policy`): 19 teeth (ISO
+   10823 basis), at least the minimum for the chain speed's lubrication region (Diamond
+   Chain), odd, the large wheel at most 120 teeth (U.S. Tsubaki).
+3. **rating by the method of the chain's family** (:func:`chaindrive.rating.chain_rating`,
+   ``method=`` registry; tooth and strand factors of that method); the chain is adequate
+   when its rating carries the design power.
+4. **layout**: the wanted centre distance (default 40 pitches, ISO 10823: 30-50) gives the
+   chain length rounded up to an even number of links (Shigley eq. (17-34),
+   :func:`chaindrive.layout.even_links`); the exact polygon centre distance for those
+   links (:func:`chaindrive.layout.centre_distance_polygon`, taut).
+5. **the drive is written as a project file and analysed** (layout, loads, rating:
+   :func:`chaindrive.analysis.analyze_drive`): the static safety is the analysis's one
+   definition (:func:`chaindrive.analysis.loads.static_safety_check`) against the required
+   safety of the drive; chains below it are dropped.
+6. **ranking**: outside the galling region first, fewer strands, smaller pitch, larger
+   static safety; per proportion series (ISO B; ISO A = ANSI) and strand count only the
+   smallest adequate pitch unless ``all_sizes``.
+7. **advice** (:mod:`chaindrive.design.advice`) for every candidate.
+"""
+
+from __future__ import annotations
+
+import math
+import warnings
+from dataclasses import dataclass, field
+from typing import TYPE_CHECKING, Any
+
+from .._results import Result, quantity
+from ..analysis.checks import Check
+from ..errors import (
+    ChainDriveError,
+    InfeasibleError,
+    InputError,
+    UnknownNameError,
+    ValidityRangeWarning,
+)
+from ..loads import mean_chain_speed
+from ..units import angular_velocity_to_rpm
+from .duty import Duty, Factor, duty_factors
+
+if TYPE_CHECKING:
+    from ..chains import Chain
+    from ..drive.model import Drive
+
+__all__ = ["DesignCandidate", "DesignResult", "design_drive", "project_text", "DEFAULT_CENTRE_PITCHES"]
+
+#: Default centre distance [pitches] (ISO 10823:2004: 30 ... 50 pitches).
+DEFAULT_CENTRE_PITCHES = 40
+
+
+@dataclass(frozen=True)
+class DesignCandidate(Result):
+    """One chain that carries the duty, laid out and analysed (a row of :func:`design_drive`)."""
+
+    chain: str
+    names: tuple[str, ...]
+    family: str
+    method: str
+    limited_by: str
+    pitch: float = quantity("m", display="mm")
+    strands: int = quantity("1")
+    driving_teeth: int = quantity("1")
+    driven_teeth: int = quantity("1")
+    links: int = quantity("1")
+    centre_distance: float = quantity("m", display="mm")
+    speed: float = quantity("rad/s", display="rpm")
+    power: float = quantity("W")
+    service_factor: float = quantity("1")
+    design_power: float = quantity("W")
+    rated_power: float = quantity("W")
+    power_margin: float = quantity("1")
+    chain_speed: float = quantity("m/s")
+    lubrication: str = ""
+    lubrication_method: str = ""
+    static_safety: float | None = quantity("1", default=None)
+    required_static_safety: float = quantity("1", default=7.0)
+    maximum_tension: float = quantity("N", default=0.0)
+    teeth_rule: str = ""
+    factors: tuple[Factor, ...] = ()
+    checks: tuple[Any, ...] = ()
+    advice: tuple[Any, ...] = ()
+    notes: tuple[str, ...] = ()
+    project_text: str = field(default="", repr=False)
+
+    def summary(self) -> dict[str, Any]:
+        """The row as JSON data in SI units (the shape of ``select --json``)."""
+        return {
+            "chain": self.chain, "names": list(self.names), "strands": self.strands, "pitch": self.pitch,
+            "driving_teeth": self.driving_teeth, "driven_teeth": self.driven_teeth, "links": self.links,
+            "centre_distance": self.centre_distance, "service_factor": self.service_factor,
+            "rated_power": self.rated_power, "design_power": self.design_power,
+            "power_margin": self.power_margin, "method": self.method, "limited_by": self.limited_by,
+            "chain_speed": self.chain_speed, "lubrication": self.lubrication,
+            "static_safety": self.static_safety, "required_static_safety": self.required_static_safety,
+            "maximum_tension": self.maximum_tension, "teeth_rule": self.teeth_rule,
+            "factors": [f.to_dict() for f in self.factors],
+            "advice": [a.to_dict() for a in self.advice], "notes": list(self.notes),
+        }
+
+    def drive(self) -> Drive:
+        """The candidate's drive (parsed from its project file)."""
+        from ..drive.project import parse_project
+
+        return parse_project(self.project_text, filename="design.toml")
+
+
+@dataclass(frozen=True)
+class DesignResult(Result):
+    """The result of :func:`design_drive`: the duty, its factors, the recommended drive and the candidates."""
+
+    duty: Duty
+    factors: tuple[Factor, ...]
+    recommended: DesignCandidate
+    candidates: tuple[DesignCandidate, ...]
+
+    @property
+    def advice(self) -> tuple[Check, ...]:
+        """The advice for the recommended drive."""
+        return tuple(self.recommended.advice)
+
+    def to_dict(self) -> dict[str, Any]:
+        return {"duty": self.duty.to_dict(), "factors": [f.to_dict() for f in self.factors],
+                "recommended": self.recommended.summary(),
+                "candidates": [c.summary() for c in self.candidates]}
+
+
+def _toml_string(text: str) -> str:
+    return '"' + text.replace("\\", "\\\\").replace('"', '\\"') + '"'
+
+
+def project_text(chain: str, teeth: tuple[int, int], centre_distance: float, links: int, speed: float,
+                 power: float, service_factor: float, *, name: str = "", description: str = "") -> str:
+    """A complete project file (TOML) for a two-sprocket drive on a horizontal line.
+
+    Examples
+    --------
+    >>> text = project_text("16B-1", (19, 58), 0.6, 84, 152.89, 11e3, 1.3)
+    >>> "links = 84" in text and 'position = ["600.000000 mm", "0 mm"]' in text
+    True
+    """
+    title = name or f"{chain} chain drive, {teeth[0]}/{teeth[1]} teeth"
+    lines = [
+        "# chaindrive project file written by the design procedure (TOML). Quantities carry units;",
+        "# a bare number is refused for them. Check it with:  chaindrive analyze <this file>",
+        "",
+        "[drive]",
+        f"name = {_toml_string(title)}",
+    ]
+    if description:
+        lines.append(f"description = {_toml_string(description)}")
+    lines += [
+        f'speed = "{angular_velocity_to_rpm(speed):.12g} rpm"     # driving (small) sprocket',
+        f"links = {int(links)}                      # even number of pitches",
+        "",
+        "[chain]",
+        f"name = {_toml_string(chain)}",
+        "",
+        "[load]",
+        f'power = "{power / 1e3:.12g} kW"',
+        f"service_factor = {service_factor:.12g}",
+        "",
+        "[[wheels]]",
+        'name = "driving"',
+        'kind = "sprocket"',
+        f"teeth = {int(teeth[0])}",
+        'position = ["0 mm", "0 mm"]',
+        "driving = true",
+        "",
+        "[[wheels]]",
+        'name = "driven"',
+        'kind = "sprocket"',
+        f"teeth = {int(teeth[1])}",
+        f'position = ["{centre_distance * 1e3:.6f} mm", "0 mm"]   # exact centre distance for {links} links',
+        "",
+    ]
+    return "\n".join(lines)
+
+
+def _outside_diameter(pitch: float, teeth: int) -> float:
+    # ANSI B29.1 sprocket outside diameter, OD = p (0.6 + cot(180°/N))
+    return pitch * (0.6 + 1.0 / math.tan(math.pi / teeth))
+
+
+def _series(chain: Chain) -> str:
+    return "B" if chain.family == "iso606" and "B" in chain.name else "A"
+
+
+def _teeth_for(chain: Chain, duty: Duty, given: int | None) -> tuple[int, str]:
+    from ..rating.ansi import lubrication_region
+    from .policy import driving_teeth
+
+    z, why = driving_teeth("A", duty.character, duty.speed_ratio, given=given)
+    for _ in range(3):  # the region depends on the teeth through the chain speed
+        v = float(mean_chain_speed(z, chain.pitch, duty.speed))
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", ValidityRangeWarning)
+            region = str(lubrication_region(v, chain.pitch))
+        z_new, why = driving_teeth(region, duty.character, duty.speed_ratio, given=given)
+        if z_new == z:
+            break
+        z = z_new
+    return z, why
+
+
+def _candidate(chain: Chain, twins: tuple[str, ...], duty: Duty, factors: tuple[Factor, ...], ks: float,
+               given_teeth: int | None, method: str | None, required: float | None) -> DesignCandidate | str | None:
+    """One chain through steps 2-5 (``None``: does not carry the load; a string: why it was left out)."""
+    from ..analysis import analyze_drive
+    from ..analysis.loads import static_safety_check
+    from ..layout import (
+        centre_distance_approx,
+        centre_distance_polygon,
+        chain_length_approx,
+        even_links,
+    )
+    from ..rating import chain_rating
+    from .advice import drive_advice
+    from .policy import driven_teeth
+
+    z1, why = _teeth_for(chain, duty, given_teeth)
+    z2 = driven_teeth(z1, duty.speed_ratio)
+    design = duty.power * ks
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", ValidityRangeWarning)
+        r = chain_rating(chain, z1, duty.speed, power=design, method=method)
+    if r.rated_power < design:
+        return None
+    a = DEFAULT_CENTRE_PITCHES * chain.pitch if duty.centre_distance is None else duty.centre_distance
+    clearance = (_outside_diameter(chain.pitch, z1) + _outside_diameter(chain.pitch, z2)) / 2
+    if a <= clearance:
+        return f"{chain.name} (needs > {clearance * 1e3:.0f} mm)"
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", ValidityRangeWarning)
+        links = int(even_links(chain_length_approx(chain.pitch, z1, z2, a)))
+        try:
+            exact = float(centre_distance_polygon(chain.pitch, z1, z2, links).taut)
+        except InputError:
+            exact = float(centre_distance_approx(chain.pitch, z1, z2, links))
+    text = project_text(chain.name, (z1, z2), exact, links, duty.speed, duty.power, ks,
+                        description=f"{chain.name}: rated {r.rated_power / 1e3:.4g} kW ({r.method}) for a "
+                                    f"design power of {design / 1e3:.4g} kW")
+    if required is not None:
+        text = text.replace("[chain]", f"required_static_safety = {required:g}\n\n[chain]", 1)
+    from ..drive.project import parse_project
+
+    drive = parse_project(text, filename="design.toml")
+    notes = list(r.warnings)
+    checks: tuple[Check, ...] = ()
+    static_value, maximum = None, float("nan")
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        try:
+            analysis = analyze_drive(drive, include=["layout", "loads", "rating"])
+        except ChainDriveError as exc:  # e.g. a chain without a mass per length: no loads
+            notes.append(f"static safety not computed: {exc}")
+        else:
+            assert analysis.loads is not None
+            static = static_safety_check(drive, analysis.loads)
+            if static.value is not None and static.passed is False:
+                return None
+            static_value, maximum, checks = static.value, analysis.loads.maximum, analysis.checks
+    if duty.centre_distance is not None and not 30 <= a / chain.pitch <= 80:
+        notes.append(f"centre distance {a / chain.pitch:.0f} pitches (ISO 10823: 30-50, at most 80)")
+    from ..rating.ansi import multi_strand_factor
+
+    cand_factors = factors + (
+        Factor("multi-strand factor", "K_2", multi_strand_factor(chain.strands),
+               "ACA; Shigley, 10th ed., Table 17-23 (ISO 10823:2004: the same 1, 1.7, 2.5)"),
+        Factor("tooth factor", "K_1", (z1 / 17.0) ** (1.5 if r.governing_limit == "roller_bushing" else 1.08),
+               "Shigley, 10th ed., Table 17-22 (relative to the 17-tooth column of the ANSI tables)",
+               note=f"{z1} teeth: {why}"),
+    )
+    return DesignCandidate(
+        chain=chain.name, names=(chain.name, *twins), family=chain.family, pitch=chain.pitch,
+        strands=chain.strands, driving_teeth=z1, driven_teeth=z2, links=links, centre_distance=exact,
+        speed=duty.speed, power=duty.power, service_factor=ks, design_power=design, rated_power=r.rated_power,
+        power_margin=r.rated_power / design, method=r.method, limited_by=r.limited_by,
+        chain_speed=r.chain_speed, lubrication=r.lubrication, lubrication_method=r.lubrication_method,
+        static_safety=static_value, required_static_safety=drive.static_safety_required,
+        maximum_tension=maximum, teeth_rule=why, factors=cand_factors,
+        checks=checks, advice=drive_advice(duty, r), notes=tuple(notes), project_text=text)
+
+
+def design_drive(duty: Duty, *, teeth_driving: int | None = None, family: str | None = None,
+                 strands: tuple[int, ...] = (1, 2, 3), method: str | None = None,
+                 required_static_safety: float | None = None, all_sizes: bool = False,
+                 limit: int | None = None) -> DesignResult:
+    r"""Design a two-sprocket roller chain drive for ``duty``: the recommended drive and the candidates.
+
+    .. math:: K_2 P_{r,1}(z_1, n_1) \ge K_s P,\qquad
+              \frac{F_B}{F_{max}} \ge S_{req},\qquad X\ \text{even},\ a = a(X)\ \text{exact}
+
+    Parameters
+    ----------
+    duty : Duty
+    teeth_driving : int, optional
+        Small-sprocket teeth; default the tooth-count policy per chain.
+    family : {None, "ansi", "iso606"}
+        Catalogue family (``None``: both; an ANSI chain and its ISO 606 twin are one row).
+    strands : tuple of int
+        Strand counts admitted (1 ... 4).
+    method : str, optional
+        Rating method for every chain (default: the method of each chain's family,
+        :func:`chaindrive.rating.default_method`).
+    required_static_safety : float, optional
+        Required ``F_B / F_max`` (default the drive's, :data:`chaindrive.drive.model.Drive`).
+    all_sizes : bool
+        Every adequate chain, not only the smallest adequate pitch per series and strands.
+    limit : int, optional
+        At most this many candidates.
+
+    Returns
+    -------
+    DesignResult
+        ``recommended`` (the first candidate) and ``candidates``.
+
+    Raises
+    ------
+    InputError
+        No duty class (the table is in the message), bad strands or teeth.
+    UnknownNameError
+        Unknown family or method.
+    InfeasibleError
+        No catalogue chain carries the duty.
+
+    References
+    ----------
+    docs/design.md (the flow and the source of every step).
+
+    Examples
+    --------
+    >>> duty = Duty(11e3, 1460 * math.pi / 30, driven_speed=480 * math.pi / 30,
+    ...             driven_machine="varying_conveyor", centre_distance=0.6)
+    >>> r = design_drive(duty)
+    >>> c = r.recommended
+    >>> c.chain, c.driving_teeth, c.driven_teeth, c.links, round(c.centre_distance * 1e3, 1)
+    ('12A-1', 19, 58, 104, 612.4)
+    """
+    from ..chains import catalogue, equivalent_names
+    from ..rating import RATING_METHODS
+
+    if not isinstance(duty, Duty):
+        raise InputError(f"duty must be a chaindrive.design.Duty, got {type(duty).__name__}", field="duty")
+    factors = duty_factors(duty)
+    ks = float(factors[0].value)
+    if family not in (None, "ansi", "iso606"):
+        raise UnknownNameError(f"unknown roller-chain family {family!r}; valid: None, 'ansi', 'iso606'")
+    if method is not None:
+        RATING_METHODS.get(method)
+    allowed = tuple(strands)
+    if not allowed or any(isinstance(k, bool) or k not in (1, 2, 3, 4) for k in allowed):
+        raise InputError(f"strands must be a non-empty selection of 1, 2, 3, 4, got {strands!r}", field="strands")
+    if required_static_safety is not None and not (math.isfinite(required_static_safety)
+                                                   and required_static_safety >= 1):
+        raise InputError(f"required_static_safety must be a number >= 1, got {required_static_safety!r}",
+                         field="required_static_safety")
+    fams = ("iso606", "ansi") if family is None else (family,)
+    found: list[DesignCandidate] = []
+    too_close: list[str] = []
+    for fam in fams:
+        for ch in catalogue(fam):
+            if ch.strands not in allowed:
+                continue
+            twins = tuple(equivalent_names(ch))
+            if family is None and ch.family == "ansi" and twins:
+                continue  # one row per chain: the ISO 606 twin carries both names
+            got = _candidate(ch, twins, duty, factors, ks, teeth_driving, method, required_static_safety)
+            if isinstance(got, str):
+                too_close.append(got)
+            elif got is not None:
+                found.append(got)
+    if not found:
+        extra = f"; sprockets too large for the centre distance: {', '.join(too_close[:4])}" if too_close else ""
+        raise InfeasibleError(
+            f"no catalogue roller chain carries {duty.power * ks / 1e3:g} kW (design power) at "
+            f"{angular_velocity_to_rpm(duty.speed):g} rpm with the required static safety{extra}; try more strands, "
+            "a lower speed or a longer centre distance")
+    rows = sorted(found, key=lambda c: (c.lubrication == "C'", c.strands, c.pitch, -(c.static_safety or 0.0),
+                                        c.chain))
+    if not all_sizes:
+        from ..chains import get
+
+        def key(c: DesignCandidate) -> tuple[str, int]:
+            return _series(get(c.chain)), c.strands
+
+        smallest: dict[tuple[str, int], tuple[bool, float]] = {}
+        for c in rows:
+            smallest.setdefault(key(c), (c.lubrication == "C'", c.pitch))
+        rows = [c for c in rows if smallest[key(c)] == (c.lubrication == "C'", c.pitch)]
+    rows = rows[:limit] if limit else rows
+    return DesignResult(duty=duty, factors=factors, recommended=rows[0], candidates=tuple(rows))
+

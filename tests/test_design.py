@@ -1,0 +1,171 @@
+"""The design procedure (chaindrive.design): one answer at every door.
+
+The duty of issue 19: an 11 kW electric motor at 1460 rpm drives a belt conveyor with
+moderate shocks (load fluctuation) at about 480 rpm, centre distance about 600 mm,
+8 h/day. The API, ``chaindrive select``, the design studio and a study give the same
+chain, teeth, links and centre distance; ``select --write`` then ``analyze`` gives the
+static safety of ``select --json``.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+
+import pytest
+
+from chaindrive.cli import main
+from chaindrive.design import Duty, design_drive, service_factor_table
+from chaindrive.design.policy import driving_teeth
+from chaindrive.errors import InputError, UnknownNameError
+
+RPM = math.pi / 30
+DUTY = Duty(11e3, 1460 * RPM, driven_speed=480 * RPM, driven_machine="varying_conveyor",
+            hours_per_day=8, centre_distance=0.6)
+SELECT = ["select", "--power", "11 kW", "--speed", "1460 rpm", "--driven-speed", "480 rpm",
+          "--driven-machine", "varying_conveyor", "--hours-per-day", "8", "--centre-distance", "600 mm"]
+
+
+@pytest.fixture(scope="module")
+def api():
+    return design_drive(DUTY)
+
+
+def _key(c) -> tuple:
+    return (c["chain"], c["driving_teeth"], c["driven_teeth"], c["links"], round(c["centre_distance"], 9))
+
+
+def test_api_answer(api):
+    c = api.recommended
+    # regression of the procedure (docs/design.md compares it with a catalogue done by hand)
+    assert (c.chain, c.driving_teeth, c.driven_teeth, c.links) == ("12A-1", 19, 58, 104)
+    assert c.service_factor == 1.3 and c.design_power == pytest.approx(14.3e3)
+    assert c.rated_power >= c.design_power and c.static_safety >= c.required_static_safety
+    assert c.links % 2 == 0 and c.driving_teeth % 2 == 1
+    assert api.candidates[0] is c
+    assert any(a.relation == "info" for a in api.advice)
+    assert {f.symbol for f in c.factors} == {"K_s", "K_1", "K_2"} and all(f.source for f in c.factors)
+
+
+def test_select_json_and_write_then_analyze(api, tmp_path, capsys):
+    f = tmp_path / "drive.toml"
+    assert main([*SELECT, "--json", "--write", str(f)]) == 0
+    data = json.loads(capsys.readouterr().out)
+    rec = data["recommended"]
+    for key in ("chain", "driving_teeth", "driven_teeth", "links", "centre_distance", "service_factor",
+                "rated_power", "design_power", "static_safety"):
+        assert key in rec and all(key in c for c in data["candidates"])
+    assert _key(rec) == _key(api.recommended.summary())
+    out = tmp_path / "out"
+    assert main(["analyze", str(f), "--output", str(out), "--no-figures", "--quiet"]) in (0, 1)
+    results = json.loads((out / "results.json").read_text())
+    static = next(c for c in results["analysis"]["checks"] if c["name"].startswith("static safety"))
+    assert static["value"] == pytest.approx(rec["static_safety"], rel=1e-12)
+
+
+def test_studio_answer(api):
+    from chaindrive.web.design import design_from_state, normalise_state
+
+    d, errors = design_from_state(normalise_state({
+        "power": "11 kW", "speed": "1460 rpm", "driven_speed": "480 rpm", "driver": "electric_motor",
+        "driven": "varying_conveyor", "hours_per_day": "8", "centre_distance": "600 mm", "teeth_driving": ""}))
+    assert errors == {}
+    c = api.recommended
+    assert (d.chain.name, d.teeth_driving, d.teeth_driven, d.links) == (c.chain, c.driving_teeth, c.driven_teeth,
+                                                                        c.links)
+    assert d.exact_centre_distance == pytest.approx(c.centre_distance, abs=1e-9)
+
+
+def test_study_answer(api, tmp_path):
+    from chaindrive.study.run import design_outputs
+
+    row = design_outputs(DUTY)
+    assert _key(row) == _key(api.recommended.summary())
+
+
+def test_no_duty_class_is_refused_with_the_table(capsys):
+    with pytest.raises(InputError, match="no duty class") as err:
+        design_drive(Duty(11e3, 1460 * RPM, ratio=3.0))
+    assert "varying_conveyor (moderate)" in str(err.value) and err.value.field == "service_factor"
+    assert main(["select", "--power", "11 kW", "--speed", "1460 rpm", "--ratio", "3"]) == 2
+    assert "moderate                     1.3" in capsys.readouterr().err
+
+
+@pytest.mark.parametrize(("kwargs", "match"), [
+    ({"ratio": 0.5}, "must reduce the speed"),
+    ({"ratio": 3.0, "driven_speed": 50.0}, "exactly one of ratio and driven_speed"),
+    ({"ratio": 3.0, "driver": "steam"}, "unknown driver"),
+    ({"ratio": 3.0, "driven_machine": "rocket"}, "unknown driven machine"),
+    ({"ratio": 3.0, "load_character": "wild"}, "unknown load character"),
+    ({"ratio": 3.0, "service_factor": 0.9}, "service_factor must be >= 1"),
+    ({"ratio": 3.0, "hours_per_day": 25.0}, "hours_per_day"),
+    ({"ratio": 3.0, "lubrication": "D"}, "unknown lubrication"),
+    ({"ratio": 3.0, "environment": "moon"}, "unknown environment"),
+])
+def test_duty_errors(kwargs, match):
+    with pytest.raises(InputError, match=match):
+        Duty(11e3, 150.0, **kwargs)
+
+
+def test_design_errors():
+    duty = Duty(11e3, 150.0, ratio=3.0, service_factor=1.0)
+    with pytest.raises(UnknownNameError, match="family"):
+        design_drive(duty, family="zz")
+    with pytest.raises(InputError, match="strands"):
+        design_drive(duty, strands=(5,))
+    with pytest.raises(UnknownNameError, match="rating method"):
+        design_drive(duty, method="nope")
+
+
+def test_tooth_policy_sources():
+    # Diamond Chain: 12 (drip), 17 (bath), 25 (pumped); 19 the ISO 10823 basis; odd counts
+    assert driving_teeth("A", None, 2.0)[0] == 19
+    assert driving_teeth("C", None, 2.0)[0] == 25
+    assert driving_teeth("B", None, 8.0)[0] == 15     # 120 / 8 = 15 teeth at most (U.S. Tsubaki)
+    assert driving_teeth("B", None, 3.0, given=16) == (16, "given")
+
+
+def test_service_factor_table_is_the_loads_table():
+    from chaindrive.loads import service_factor
+
+    t = service_factor_table()
+    for character, row in t["factors"].items():
+        for driver, value in row.items():
+            assert service_factor(character, driver) == value
+
+
+def test_presenters_hold_no_rating_formula():
+    """web/ and cli/ call no rating formula; the web also no chain_rating or select (issue 18)."""
+    import pathlib
+    import re
+
+    import chaindrive
+
+    root = pathlib.Path(chaindrive.__file__).parent
+    formulas = re.compile(r"\b(ansi_rated_power|ansi_link_plate_power|ansi_roller_bushing_power|galling_power|"
+                          r"galling_speed|galling_tension|multi_strand_factor|tooth_correction_factor|"
+                          r"lubrication_region|ansi_constants)\(")
+    for folder in ("web", "cli"):
+        for path in (root / folder).rglob("*.py"):
+            text = path.read_text(encoding="utf-8")
+            assert not formulas.search(text), f"{path} calls a rating formula"
+            if folder == "web":
+                assert not re.search(r"\bchain_rating\b|\bselect\(", text), f"{path} rates or selects chains"
+            assert not re.search(r"math\.radians\(60|0\.2 \* omega|2\.0 \* omega|= 3\.5\b", text), path
+            assert "_excitation_kwargs" not in text, path
+
+
+def test_advice_at_every_door(api, capsys):
+    from chaindrive.web.design import normalise_state
+    from chaindrive.web.studio import studio_payload
+
+    names = [a.name for a in api.advice]
+    assert "roller-bushing impact limit governs" in names and all(a.source for a in api.advice)
+    assert main([*SELECT]) == 0
+    assert "advice: roller-bushing impact limit governs" in capsys.readouterr().out
+    assert main([*SELECT, "--json"]) == 0
+    assert [a["name"] for a in json.loads(capsys.readouterr().out)["recommended"]["advice"]] == names
+    p = studio_payload(normalise_state({
+        "power": "11 kW", "speed": "1460 rpm", "driven_speed": "480 rpm", "driven": "varying_conveyor",
+        "centre_distance": "600 mm"}))
+    assert [a["name"] for a in p["advice"]] == names
