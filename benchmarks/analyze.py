@@ -6,7 +6,7 @@ the process), first without the resonance remedy search (aim <= 3 ms; the remedy
 search over designs, ~0.4 s, run only when the resonance check fails: the mining conveyor),
 then the whole analysis with it, then
 the whole ``chaindrive analyze examples/roller_industrial.toml -o DIR`` process (a new
-Python process each time, imports, five figures and the files included; aim < 2 s,
+Python process each time, imports, six figures and the files included; aim < 1.2 s on a quiet machine,
 median of 5), and the report's time per section.
 """
 
