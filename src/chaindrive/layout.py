@@ -1316,8 +1316,6 @@ def tensioner_travel(
     >>> np.round(s, 4)
     array([0.184 , 0.3517])
     """
-    from ._roots import brentq
-
     c = as_float_array("centres", centres)
     lay0 = wrap_layout(c, radii, sides)
     u = as_float_array("direction", direction)
@@ -1330,8 +1328,20 @@ def tensioner_travel(
     e = check_nonnegative("elongation", elongation)
     extra = float(check_nonnegative("extra_length", extra_length, "m"))
     Lch = lay0.length if chain_length is None else float(check_positive("chain_length", chain_length, "m"))
+    r, sd = np.asarray(lay0.radii, dtype=float), np.asarray(lay0.sides, dtype=float)
+    key = tuple((a.shape, a.tobytes()) for a in (np.asarray(c, dtype=float), r, sd, u, np.asarray(e, dtype=float)))
+    # a copy of the cached travels: the caller may change its own
+    return _tensioner_travel(key, k, extra, float(Lch)).copy()
 
-    r, sd = lay0.radii, lay0.sides
+
+@functools.lru_cache(maxsize=128)
+def _tensioner_travel(key: tuple, k: int, extra: float, Lch: float) -> np.ndarray:
+    # tensioner_travel on checked arrays (as shapes and bytes, hashable); cached because an
+    # analysis asks for the same layout's travels again
+    from ._roots import brentq
+
+    c, r, sd, u, e = (np.frombuffer(data, dtype=float).reshape(shape) for shape, data in key)
+    lay0 = wrap_layout(c, r, sd)
 
     def positions(s):  # centres with the tensioner moved by s (array of travels)
         cc = np.broadcast_to(c, np.shape(s) + c.shape).copy()
