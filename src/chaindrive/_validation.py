@@ -109,6 +109,9 @@ def check_teeth(name: str, value: ArrayLike, minimum: int = 3) -> np.ndarray:
     """Require an integer tooth count ``>= minimum`` and ``<= chaindrive.limits.MAX_TEETH``."""
     from .limits import MAX_TEETH
 
+    x = _scalar(value)
+    if x is not None and minimum <= x <= MAX_TEETH and x == int(x):  # the range first: NaN, inf fail it
+        return np.asarray(int(x))
     arr = as_float_array(name, value)
     if np.any(arr != np.round(arr)) or np.any(arr < minimum):
         raise InputError(f"{name} must be a whole number >= {minimum}, got {_show(arr)}")

@@ -3,8 +3,9 @@ pitch polygons (convex hull of the two polygons, over the phases of the wheels).
 
 from __future__ import annotations
 
+import functools
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 from numpy.typing import ArrayLike
@@ -409,7 +410,17 @@ def chain_length_polygon(
     z2 = int(check_teeth("teeth_2", teeth_2, minimum=2))
     a = float(check_positive("centre_distance", centre_distance, "m"))
     _check_phases(phases, z1, z2)
-    ph1, ph2, X = _polygon_links(p, z1, z2, a, bar_diameter, int(phases))
+    found = _chain_length_polygon(p, z1, z2, a, None if bar_diameter is None else float(bar_diameter), int(phases))
+    # a copy of the cached arrays: the caller may change its own
+    return replace(found, phase_1=found.phase_1.copy(), phase_2=found.phase_2.copy(), links=found.links.copy())
+
+
+@functools.lru_cache(maxsize=256)
+def _chain_length_polygon(p: float, z1: int, z2: int, a: float, bar_diameter: float | None,
+                          phases: int) -> PolygonLength:
+    # chain_length_polygon on checked scalars; cached because it depends on them only and
+    # an analysis asks for the same pair of wheels again (the results are plain numbers)
+    ph1, ph2, X = _polygon_links(p, z1, z2, a, bar_diameter, phases)
     circles = float(chain_length_circles(p, z1, z2, a, bar_diameter)) if a > abs(
         float(pitch_radius(p, z2, bar_diameter)) - float(pitch_radius(p, z1, bar_diameter))
     ) else float("nan")
@@ -571,7 +582,13 @@ def centre_distance_polygon(
         raise InputError(f"links must be a whole number > 0, got {links!r}")
     N = int(links_array)
     _check_phases(phases, z1, z2)
-    n = int(phases)
+    return _centre_distance_polygon(p, z1, z2, N, None if bar_diameter is None else float(bar_diameter), int(phases))
+
+
+@functools.lru_cache(maxsize=256)
+def _centre_distance_polygon(p: float, z1: int, z2: int, N: int, bar_diameter: float | None,
+                             n: int) -> PolygonCentreDistance:
+    # centre_distance_polygon on checked scalars; cached (a frozen result of plain numbers)
     r1 = float(pitch_radius(p, z1, bar_diameter))
     r2 = float(pitch_radius(p, z2, bar_diameter))
     lo = abs(r2 - r1) + 1e-6 * p

@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any, Literal
 
 from ..errors import InputError
 
@@ -10,7 +10,7 @@ if TYPE_CHECKING:
     from matplotlib.axes import Axes
     from matplotlib.figure import Figure
 
-__all__ = ["figure_of"]
+__all__ = ["figure_of", "subplots"]
 
 
 def figure_of(ax: Axes) -> Figure:
@@ -43,3 +43,32 @@ def figure_of(ax: Axes) -> Figure:
     if fig is None:
         raise InputError("ax must be a matplotlib Axes placed in a figure (plt.subplots() gives one)")
     return fig
+
+
+def subplots(nrows: int = 1, ncols: int = 1, *, figsize: tuple[float, float],
+             layout: Literal["constrained", "compressed", "tight"] | None = None,
+             **kwargs: Any) -> tuple[Figure, Any]:
+    """A new figure and its axes, as ``plt.subplots`` gives them.
+
+    Through pyplot when a program has imported it (its figures are then managed and shown
+    by ``plt.show()``); otherwise a bare :class:`matplotlib.figure.Figure` on the Agg
+    canvas, without importing pyplot and its backend machinery (a report that only writes
+    PNGs saves about 0.3 s a process).
+
+    Examples
+    --------
+    >>> fig, ax = subplots(figsize=(4.0, 3.0))
+    >>> fig.get_size_inches().tolist()
+    [4.0, 3.0]
+    """
+    import sys
+
+    plt = sys.modules.get("matplotlib.pyplot")
+    if plt is not None:
+        return plt.subplots(nrows, ncols, figsize=figsize, layout=layout, **kwargs)
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+    from matplotlib.figure import Figure as MatplotlibFigure
+
+    fig = MatplotlibFigure(figsize=figsize, layout=layout)
+    FigureCanvasAgg(fig)
+    return fig, fig.subplots(nrows, ncols, **kwargs)

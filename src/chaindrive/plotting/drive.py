@@ -7,7 +7,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from ..units import angular_velocity_to_rpm, rpm_to_angular_velocity
-from ._axes import figure_of
+from ._axes import figure_of, subplots
 
 if TYPE_CHECKING:
     from matplotlib.axes import Axes
@@ -41,7 +41,6 @@ def layout_plot(result: DriveAnalysis | DriveLayout | Drive, *, ax: Axes | None 
     -------
     matplotlib.figure.Figure
     """
-    import matplotlib.pyplot as plt
     from matplotlib.patches import Circle
 
     from ..analysis import DriveAnalysis, analyze_drive
@@ -74,8 +73,13 @@ def layout_plot(result: DriveAnalysis | DriveLayout | Drive, *, ax: Axes | None 
     lo, hi = lo - margin, hi + margin
     own_figure = ax is None
     if ax is None:
+        # fixed margins [in] (tick labels and axis labels; the legend below the x label), and
+        # the figure's height fitted to the drawing's aspect: no layout pass when drawn
+        left, right, bottom, top, width = 0.85, 0.25, 0.85, 0.45, 10.0
         aspect = float((hi[1] - lo[1]) / (hi[0] - lo[0]))
-        fig, ax = plt.subplots(figsize=(10.0, float(np.clip(8.6 * aspect + 1.6, 3.4, 9.5))), layout="constrained")
+        height = float(np.clip((width - left - right) * aspect + bottom + top, 3.4, 9.5))
+        fig, ax = subplots(figsize=(width, height))
+        fig.subplots_adjust(left=left / width, right=1 - right / width, bottom=bottom / height, top=1 - top / height)
     else:
         fig = figure_of(ax)
     for i, name in enumerate(layout.wheel_names):
@@ -85,7 +89,9 @@ def layout_plot(result: DriveAnalysis | DriveLayout | Drive, *, ax: Axes | None 
         txt = name
         if layout.teeth_in_mesh[i] is not None:
             txt += f"\nwrap {np.degrees(w.wrap_angle[i]):.0f}°, {layout.teeth_in_mesh[i]} in mesh"
-        ax.annotate(txt, c, xytext=(4, 4), textcoords="offset points", fontsize=8)
+        right = c[0] > lo[0] + 0.75 * (hi[0] - lo[0])  # names near the right edge read leftwards, inside the figure
+        ax.annotate(txt, c, xytext=(-4 if right else 4, 4), textcoords="offset points", fontsize=8,
+                    ha="right" if right else "left")
         # wrapped arc
         a0 = np.arctan2(*(w.span_end[(i - 1) % n] - w.centres[i])[::-1])
         th = a0 + w.sides[i] * np.linspace(0, w.wrap_angle[i], 60)
@@ -121,7 +127,11 @@ def layout_plot(result: DriveAnalysis | DriveLayout | Drive, *, ax: Axes | None 
     ax.plot([], [], color="tab:blue", lw=2, label="wrapped chain, other spans")
     ax.plot([], [], color="0.4", ls="--", lw=0.8, label="pitch circle")
     if own_figure:  # legend outside the drawing, below it
-        fig.legend(*ax.get_legend_handles_labels(), loc="outside lower center", ncol=5, fontsize=8, frameon=False)
+        fig.legend(*ax.get_legend_handles_labels(), loc="lower center", ncol=5, fontsize=8, frameon=False)
+        from matplotlib.layout_engine import PlaceHolderLayoutEngine
+
+        # laid out here: a report keeps these margins (an engine that moves nothing)
+        fig.set_layout_engine(PlaceHolderLayoutEngine(adjust_compatible=True, colorbar_gridspec=True))
     else:
         ax.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), borderaxespad=0.0, fontsize=8, frameon=False)
     ax.grid(True, lw=0.3)
@@ -140,10 +150,9 @@ def wear_plot(result: WearLife, *, ax: Axes | None = None) -> Figure:
     -------
     matplotlib.figure.Figure
     """
-    import matplotlib.pyplot as plt
 
     if ax is None:
-        fig, ax = plt.subplots(figsize=(7, 4))
+        fig, ax = subplots(figsize=(7, 4))
     else:
         fig = figure_of(ax)
     ax.plot(result.hours, 100 * result.elongation, label=f"elongation ({result.model} model)")
@@ -202,8 +211,6 @@ def rating_plot(result: ChainRating | float, teeth: int | None = None, *, strand
     """
     import warnings
 
-    import matplotlib.pyplot as plt
-
     from .. import selection as S
     from ..errors import ValidityRangeWarning
 
@@ -219,7 +226,7 @@ def rating_plot(result: ChainRating | float, teeth: int | None = None, *, strand
         if teeth is None:
             raise TypeError("rating_plot needs teeth when given a pitch")
     if ax is None:
-        fig, ax = plt.subplots(figsize=(8, 5))
+        fig, ax = subplots(figsize=(8, 5))
     else:
         fig = figure_of(ax)
     k2 = S.multi_strand_factor(strands)

@@ -6,7 +6,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from ._axes import figure_of
+from ._axes import figure_of, subplots
 
 if TYPE_CHECKING:
     from matplotlib.axes import Axes
@@ -84,7 +84,6 @@ def geometry_plot(
     -------
     matplotlib.figure.Figure
     """
-    import matplotlib.pyplot as plt
 
     from ..geometry.outline import Outline
 
@@ -96,8 +95,11 @@ def geometry_plot(
         except TypeError:
             outline = wheel.outline()
         title = wheel.label() if hasattr(wheel, "label") else type(wheel).__name__
+    own_figure = ax is None
     if ax is None:
-        fig, ax = plt.subplots(figsize=(7, 7))
+        fig, ax = subplots(figsize=(7.8, 7.4))  # room for the legend of long labels below
+        # fixed margins [in]: tick and axis labels, the title, the legend's rows below
+        fig.subplots_adjust(left=0.7 / 7.8, right=1 - 0.5 / 7.8, bottom=1.3 / 7.4, top=1 - 0.4 / 7.4)
     else:
         fig = figure_of(ax)
     mm = 1e3
@@ -138,6 +140,11 @@ def geometry_plot(
         ax.set_ylim(r - span, r + 0.8 * span)
     # below the drawing, never over the teeth
     ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.09), ncol=2, fontsize=8, frameon=False)
-    if fig.get_layout_engine() is None and ax is fig.axes[0] and len(fig.axes) == 1:
+    if own_figure:
+        from matplotlib.layout_engine import PlaceHolderLayoutEngine
+
+        # laid out here: a report keeps these margins (an engine that moves nothing)
+        fig.set_layout_engine(PlaceHolderLayoutEngine(adjust_compatible=True, colorbar_gridspec=True))
+    elif fig.get_layout_engine() is None and ax is fig.axes[0] and len(fig.axes) == 1:
         fig.tight_layout()
     return fig

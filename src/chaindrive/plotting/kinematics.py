@@ -7,7 +7,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from ._axes import figure_of
+from ._axes import figure_of, subplots
 
 if TYPE_CHECKING:
     from matplotlib.axes import Axes
@@ -55,7 +55,6 @@ def kinematics_plot(
     >>> len(fig.axes)
     2
     """
-    import matplotlib.pyplot as plt
 
     from ..kinematics.entry import EntryKinematics
 
@@ -67,7 +66,7 @@ def kinematics_plot(
     else:
         items = list(results)
     if ax is None:
-        fig, axes = plt.subplots(2, 1, sharex=True, figsize=(7.5, 7.0))
+        fig, axes = subplots(2, 1, sharex=True, figsize=(7.5, 7.0))
     else:
         axes = list(ax)
         if len(axes) != 2:

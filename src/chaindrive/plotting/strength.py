@@ -10,7 +10,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from ._axes import figure_of
+from ._axes import figure_of, subplots
 
 if TYPE_CHECKING:
     from matplotlib.axes import Axes
@@ -47,13 +47,12 @@ def skew_plot(result: RollerContactResult, *, ax: Axes | None = None) -> Figure:
     >>> len(fig.axes)
     2
     """
-    import matplotlib.pyplot as plt
 
     from ..strength.skew import ARCMIN, MEASURED_SKEW_RANGE
 
     if ax is None:
         # laid out when drawn, so that a report's own layout engine replaces it (one layout, not two)
-        fig, ax = plt.subplots(figsize=(7.5, 5.5), layout="tight")
+        fig, ax = subplots(figsize=(7.5, 5.5), layout="tight")
     else:
         fig = figure_of(ax)
     skew = np.atleast_1d(result.max_skew) / ARCMIN
@@ -108,12 +107,11 @@ def pin_bending_plot(result: Iterable[PinBendingResult], *, ax: Axes | None = No
     >>> len(fig.axes)
     2
     """
-    import matplotlib.pyplot as plt
 
     results = list(result)
     axes: list[Axes]
     if ax is None:
-        fig, grid = plt.subplots(len(results), 1, figsize=(7.5, 2.6 * len(results) + 0.6), sharex=True,
+        fig, grid = subplots(len(results), 1, figsize=(7.5, 2.6 * len(results) + 0.6), sharex=True,
                                  squeeze=False)
         axes = list(grid[:, 0])
     else:

@@ -10,6 +10,7 @@ import base64
 import dataclasses
 import datetime as _dt
 import io
+import sys
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
@@ -32,6 +33,40 @@ class Table(Result):
     rows: list[list[Any]]
 
 
+#: Margins of a plain plot [in]: left (y tick labels and label), right, bottom (x tick
+#: labels and label), top (a title), and the gap between stacked axes with titles.
+_MARGINS = {"left": 0.95, "right": 0.2, "bottom": 0.6, "top": 0.42, "gap": 0.5}
+
+
+def _fixed_margins(fig: MatplotlibFigure) -> bool:
+    """Place the axes of a plain plot (one column of axes, legends inside them, no twin
+    axes or colorbars) with fixed margins, without measuring the text (no layout pass).
+    Returns False, changing nothing, for any other figure."""
+    axes = fig.axes
+    if not axes or fig.legends or any(ax.get_aspect() != "auto" for ax in axes):
+        return False
+    for ax in axes:
+        spec = ax.get_subplotspec()
+        if spec is None or spec.get_gridspec().ncols != 1 or ax.yaxis.get_label_position() != "left":
+            return False  # not a grid axes, several columns, a twin or a colorbar axes
+        legend = ax.get_legend()
+        if legend is not None and legend.get_bbox_to_anchor() is not ax.bbox:
+            return False  # a legend placed outside its axes
+    if len({spec.get_gridspec() for ax in axes if (spec := ax.get_subplotspec()) is not None}) != 1:
+        return False
+    width, height = fig.get_size_inches()
+    rows = len(axes)
+    m = _MARGINS
+    top = m["top"] if axes[0].get_title() else m["right"]
+    free = height - m["bottom"] - top - (rows - 1) * m["gap"]
+    if free <= 1.0 or width <= m["left"] + m["right"] + 1.0:
+        return False
+    fig.set_layout_engine("none")
+    fig.subplots_adjust(left=m["left"] / width, right=1 - m["right"] / width, bottom=m["bottom"] / height,
+                        top=1 - top / height, hspace=m["gap"] / (free / rows))
+    return True
+
+
 @dataclasses.dataclass
 class Figure:
     """A figure: caption plus PNG bytes (and the file name it is saved under)."""
@@ -43,21 +78,20 @@ class Figure:
     @classmethod
     def from_matplotlib(cls, fig: MatplotlibFigure, caption: str, filename: str, dpi: int = 100) -> Figure:
         buf = io.BytesIO()
-        if any(ax.get_aspect() == 1.0 for ax in fig.axes):
-            # equal-aspect drawings (layouts, outlines): crop the white space the fixed
-            # aspect leaves, at the price of a second draw
-            fig.savefig(buf, format="png", dpi=dpi, bbox_inches="tight")
-        else:
-            # plots: constrained layout, solved inside the one draw of savefig
-            # (bbox_inches="tight" needs an extra draw per figure)
-            try:
-                fig.set_layout_engine("constrained")
-            except RuntimeError:  # an engine the figure's colorbars cannot switch from
-                pass
-            fig.savefig(buf, format="png", dpi=dpi)
-        import matplotlib.pyplot as plt
+        from matplotlib.layout_engine import TightLayoutEngine
 
-        plt.close(fig)
+        engine = fig.get_layout_engine()
+        # a plain plot: fixed margins (no layout pass); else one pass of the tight layout
+        # inside savefig's single draw (constrained layout iterates and bbox_inches="tight"
+        # draws twice); a plot that needs another engine (a legend outside the figure's
+        # axes) sets it where it is made
+        if (engine is None or isinstance(engine, TightLayoutEngine)) and not _fixed_margins(fig) and engine is None:
+            fig.set_layout_engine("tight", pad=0.6)
+        # zlib level 3: a quarter less encoding time than the default 6, files ~8 % larger
+        fig.savefig(buf, format="png", dpi=dpi, pil_kwargs={"compress_level": 3})
+        plt = sys.modules.get("matplotlib.pyplot")  # imported only by a program that uses it
+        if plt is not None:
+            plt.close(fig)
         return cls(caption=caption, png=buf.getvalue(), filename=filename)
 
     @property
