@@ -32,7 +32,7 @@ from .. import loads as F
 from ..errors import InputError
 from ..loads import mean_chain_speed, sides_per_turn
 from ._fields import _direction, _finite
-from .specs import (
+from .specs import (  # noqa: F401 - the optional tables, importable from here as before
     RETURN_STRANDS,
     ContactSpec,
     Conveyor,
@@ -47,8 +47,9 @@ if TYPE_CHECKING:
     from ..chains import Chain
 
 __all__ = ["WHEEL_KINDS", "TENSIONER_PARTS", "sides_per_turn", "Wheel", "Tensioner", "Adjustable", "Guide", "Load",
-           "ContactSpec", "TrackSpec", "RimBoltsSpec", "CrawlerSpec", "FrettingSpec", "Conveyor", "RETURN_STRANDS",
            "Drive"]
+# the optional tables (ContactSpec, TrackSpec, RimBoltsSpec, CrawlerSpec, FrettingSpec, Conveyor,
+# RETURN_STRANDS) are defined in chaindrive.drive.specs and importable from here as before
 
 WHEEL_KINDS = ("sprocket", "pocket_wheel", "track_wheel", "idler")
 TENSIONER_KINDS = ("spring", "weight", "screw", "hydraulic")
