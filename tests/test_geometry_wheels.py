@@ -197,3 +197,15 @@ def test_property_pocket_wheel(z, ratio):
     except InfeasibleError:
         return
     assert o.closure_gap() < 1e-12
+
+
+def test_track_wheel_refuses_a_non_finite_elongation_limit():
+    # found by `make fuzz` (API surface): a NaN elongation limit was kept in the dimensions
+    import math
+
+    from chaindrive.errors import InputError
+    from chaindrive.geometry import TrackDriveWheel
+
+    for bad in (float("nan"), math.inf, 0.0, 0.2):
+        with pytest.raises(InputError, match=r"elongation_limit must (lie in \(0, 0.1\]|not be NaN)"):
+            TrackDriveWheel(pitch=0.1, teeth=12, pin_radius=0.02, elongation_limit=bad)

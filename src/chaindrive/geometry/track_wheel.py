@@ -379,6 +379,9 @@ class TrackDriveWheel:
         check_positive("pitch", self.pitch, "m")
         check_positive("pin_radius", self.pin_radius, "m")
         self.teeth = int(check_teeth("teeth", self.teeth))
+        if self.elongation_limit is not None:  # as worn_tip_radius checks it (a NaN or inf is refused)
+            self.elongation_limit = float(check_range("elongation_limit", self.elongation_limit, 0.0, 0.1,
+                                                      low_inclusive=False))
         k_lo, k_hi = TIP_FACTOR_RANGES.get(self.link)
         if self.root_factor is None:
             self.root_factor = 0.5 * sum(PIN_SEAT_FACTOR_RANGE)
