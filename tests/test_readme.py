@@ -61,14 +61,17 @@ def _env() -> dict:
     return dict(os.environ, MPLBACKEND="Agg", PYTHONPATH=str(ROOT / "src"))
 
 
-@pytest.mark.parametrize("command", readme_commands())
-def test_readme_command_runs(command, workdir):
-    words = shlex.split(command)
+# the commands build on each other (new, then analyze; a study, then its summary): one test runs
+# them all, in the README's order (parametrized, xdist could split them between workers)
+@pytest.mark.slow
+def test_readme_commands_run_in_order(workdir):
     exe = [sys.executable, "-c", "import sys; from chaindrive.cli import main; sys.exit(main())"]
-    r = subprocess.run(exe + words[1:], cwd=workdir, capture_output=True, text=True, env=_env(), timeout=900)
-    # 0: done; 1: a check fails (the demo conveyor's resonance, a vibration check)
-    assert r.returncode in (0, 1), f"{command}\nexit {r.returncode}\n{r.stderr[-2000:]}"
-    assert "error" not in r.stderr.lower(), r.stderr[-2000:]
+    for command in readme_commands():
+        words = shlex.split(command)
+        r = subprocess.run(exe + words[1:], cwd=workdir, capture_output=True, text=True, env=_env(), timeout=900)
+        # 0: done; 1: a check fails (the demo conveyor's resonance, a vibration check)
+        assert r.returncode in (0, 1), f"{command}\nexit {r.returncode}\n{r.stderr[-2000:]}"
+        assert "error" not in r.stderr.lower(), f"{command}\n{r.stderr[-2000:]}"
 
 
 def test_readme_python_block_runs(workdir):
