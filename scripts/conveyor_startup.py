@@ -99,6 +99,9 @@ def main() -> None:
     print(f"90 % of the final speed ({v_end:.4g} m/s) at {reach:.4g} s; largest drive torque "
           f"{float(np.max(su.drive_torque)):.4g} N m = pull {float(np.max(su.drive_torque)) / radius:.4g} N "
           f"at {float(t[np.argmax(su.drive_torque)]):.4g} s")
+    win = (t >= 0.5) & (t <= 1.5)
+    print(f"head speed at 0.1 s {float(np.interp(0.1, res.time, res.wheel_speed[:, 0])):.4g} rad/s; tension arriving at the head between 0.5 and 1.5 s: "
+          f"{float(np.min(tt[win])):.4g} to {float(np.max(tt[win])):.4g} N")
     if coupling is not None:
         print(f"motor speed at the head: {su.motor_speed[np.searchsorted(t, 0.1)]:.4g} rad/s at 0.1 s, "
               f"{su.motor_speed[np.searchsorted(t, 0.3)]:.4g} at 0.3 s, {su.motor_speed[-1]:.4g} at the end")

@@ -161,6 +161,10 @@ def test_cli_coupling_errors(tmp_path, capsys):
          r"--coupling-slip must lie in \[0.005, 0.2\]"),
         (["--motor", "--coupling", "--motor-inertia", "10 kg*m**2", "--coupling-stall", "9"],
          r"--coupling-stall must lie in \[1.1, 6\]"),
+        (["--motor", "--secondary-inertia", "10 kg*m**2"], "--secondary-inertia needs --coupling"),
+        (["--motor", "--coupling", "--motor-inertia", "0 kg*m**2"], "motor_inertia"),
+        (["--motor", "--coupling", "--motor-inertia", "10 kg*m**2", "--secondary-inertia", "-1 kg*m**2"],
+         "secondary_inertia"),
     ]
     for i, (args, match) in enumerate(cases):
         assert main(["simulate", proj, *args, "-o", str(tmp_path / f"o{i}")]) == 2

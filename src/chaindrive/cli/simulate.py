@@ -42,6 +42,7 @@ def simulate_command(
     coupling: bool = typer.Option(False, "--coupling", help="With --motor: the motor drives through a constant-fill fluid coupling sized on its rated point (nominal torque = [load] power over the drive speed, at the drive speed; chaindrive.coupling); the motor rotor and coupling primary (--motor-inertia, then required) turn at their own speed."),
     coupling_slip: float = typer.Option(0.03, "--coupling-slip", help="With --coupling: its nominal slip s_n, 0.005 <= s_n <= 0.2 (dimensionless; default 0.03)."),
     coupling_stall: float = typer.Option(1.5, "--coupling-stall", help="With --coupling: its stall-torque ratio k = T(s = 1)/T_n, 1.1 <= k <= 6 and k s_n < 1 (dimensionless; default 1.5)."),
+    secondary_inertia: str | None = typer.Option(None, "--secondary-inertia", help=unit_help("With --coupling: coupling secondary and gearbox reduced to the driving wheel's shaft, added to the wheel's, >= 0 (default 0).", "kg*m**2", "209 kg*m**2")),
     force: bool = typer.Option(False, "--force", help="Replace an earlier run in the output directory (the results are built in a temporary folder and moved into place when complete; a failed run leaves an earlier one unchanged)."),
 ) -> None:
     """Simulate the drive: point-mass pins, elastic links (EA), penalty contact of rollers
@@ -56,7 +57,7 @@ def simulate_command(
     with claim_output_dir(output, force=force):
         _simulate(project, example, duration, output, speed, load, ramp, frames, no_plots, as_json, force,
                   DriveProfile(motor, motor_inertia, stop, stop_ramp, ripple, ripple_frequency, coupling,
-                               coupling_slip, coupling_stall))
+                               coupling_slip, coupling_stall, secondary_inertia))
 
 
 @dataclass(frozen=True)
@@ -72,6 +73,7 @@ class DriveProfile:
     coupling: bool = False
     coupling_slip: float = 0.03
     coupling_stall: float = 1.5
+    secondary_inertia: str | None = None
 
 
 def _simulate(project: Path | None, example: str | None, duration: str | None, output: Path,
@@ -147,8 +149,12 @@ def _simulate(project: Path | None, example: str | None, duration: str | None, o
         elif motor_inertia is not None:
             raise InputError("--motor-inertia needs --motor")
         coupling_spec = _coupling(profile, drive, motor_spec)
+        if profile.secondary_inertia is not None and coupling_spec is None:
+            raise InputError("--secondary-inertia needs --coupling")
         model = with_drive_profile(
             model, motor=motor_spec, coupling=coupling_spec,
+            secondary_inertia=quantity(profile.secondary_inertia, "kg*m**2", "secondary-inertia")
+            if profile.secondary_inertia else 0.0,
             motor_inertia=quantity(motor_inertia, "kg*m**2", "motor-inertia") if motor_inertia else 0.0,
             stop_time=quantity(stop, "s", "stop") if stop else 0.0,
             stop_ramp=quantity(stop_ramp, "s", "stop-ramp") if stop_ramp else 0.0,
