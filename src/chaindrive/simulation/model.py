@@ -577,3 +577,10 @@ class SimulationModel:
         om = self.omega_max()
         zeta = max(self.link_damping_ratio, self.contact_damping_ratio)
         return safety * 2.0 / om * (math.sqrt(1.0 + zeta * zeta) - zeta)
+
+    def accurate_time_step(self) -> float:
+        """Default step of the linearly implicit integrator [s] (``method="implicit"``).
+
+        PLACEHOLDER
+        """
+        return 50.0e-6

@@ -45,6 +45,7 @@ from numpy.typing import ArrayLike
 
 from ..errors import ConvergenceError, UnknownNameError
 from . import _kernel as K
+from ._implicit import integrate_implicit
 from .model import SimulationModel, iso_flank
 from .placement import _path, _place, _tangent  # noqa: F401 - _path, _tangent: also imported from here
 from .results import (
@@ -167,6 +168,8 @@ class State:
 
 
 ASSEMBLY_METHODS = ("newton", "relaxation")
+#: time integrators of :func:`simulate` (same arguments, same records)
+INTEGRATORS = {"explicit": K.integrate, "implicit": integrate_implicit}
 
 
 def assemble(model: SimulationModel, *, dt: float | None = None, method: str = "newton",
@@ -495,7 +498,8 @@ def _lead_the_loaded_wheel(model, wheel, torque, wp, theta, solve):
 def simulate(model: SimulationModel, duration: float, *, dt: float | None = None,
              record_every: int | None = None, samples: int = 2000, probes: ArrayLike | None = None,
              state: State | None = None, settle: float | None = None,
-             progress: Callable[[int, int], object] | None = None, chunks: int = 50) -> SimulationResult:
+             progress: Callable[[int, int], object] | None = None, chunks: int = 50,
+             method: str = "explicit") -> SimulationResult:
     """Assemble ``model`` in static equilibrium and integrate it for ``duration`` [s].
 
     Parameters
@@ -518,6 +522,12 @@ def simulate(model: SimulationModel, duration: float, *, dt: float | None = None
         through this run.
     progress : callable, optional
         Called as ``progress(done_steps, total_steps)`` between chunks.
+    method : {"explicit", "implicit"}
+        ``"explicit"`` (default): symplectic Euler, ``dt`` by default the stable step
+        :meth:`SimulationModel.stable_time_step`; ``"implicit"``: the linearly implicit
+        step (link springs, contact springs and sticking friction implicit), ``dt`` by
+        default :meth:`SimulationModel.accurate_time_step` (see docs/simulation.md,
+        "Integrator").
 
     Returns
     -------
@@ -537,6 +547,13 @@ def simulate(model: SimulationModel, duration: float, *, dt: float | None = None
     from ..limits import check_duration
 
     check_duration("duration", duration)  # at most chaindrive.limits.MAX_DURATION, before any work
+    if method not in INTEGRATORS:
+        raise UnknownNameError(f"method must be one of {', '.join(INTEGRATORS)}, got {method!r}")
+    integrate = INTEGRATORS[method]
+    if dt is None and method == "implicit":
+        dt = model.accurate_time_step()
+    if dt is not None:
+        check_positive("dt", dt)
     if state is None:
         state = assemble(model, dt=dt)
     par = state.par.copy()
@@ -569,7 +586,7 @@ def simulate(model: SimulationModel, duration: float, *, dt: float | None = None
     while done < nsteps:
         m = min(per, nsteps - done)
         t0 = time.perf_counter()
-        written = K.integrate(pos, vel, force, np.zeros_like(pos), tension, contact, ws, wp, state.gd, tab, par,
+        written = integrate(pos, vel, force, np.zeros_like(pos), tension, contact, ws, wp, state.gd, tab, par,
                               state.time + done * dt, m, record_every, probes, *recs, written)
         wall += time.perf_counter() - t0
         done += m
