@@ -331,10 +331,12 @@ def integrate_implicit(pos, vel, force, work, tension, contact, ws, wp, gd, tab,
     twopi = 2.0 * math.pi
     inv_m = 1.0 / m
     mh = m / h
-    ak = h * k + c
+    th = par[K.P_THETA]
+    ak = th * (h * k + c)
     inv_ak = 1.0 / ak
-    betac = h * kc + cc
-    betag = h * kg + cg
+    betac = th * (h * kc + cc)
+    betag = th * (h * kg + cg)
+    thh = th * h
     margin = 0.25 * rr
     # separate coordinate arrays; rest lengths per link (no odd/even branch)
     x = pos[:, 0].copy()
@@ -403,7 +405,7 @@ def integrate_implicit(pos, vel, force, work, tension, contact, ws, wp, gd, tab,
             ldot = (vx[i + 1] - vx[i]) * ex + (vy[i + 1] - vy[i]) * ey
             tt = k * (ll - rest[i]) + c * ldot
             tension[i] = tt
-            tstar[i] = tt + h * k * ldot
+            tstar[i] = tt + thh * k * ldot
             ux[i] = ex
             uy[i] = ey
         dx = x[0] - x[n - 1]
@@ -414,7 +416,7 @@ def integrate_implicit(pos, vel, force, work, tension, contact, ws, wp, gd, tab,
         ldot = (vx[0] - vx[n - 1]) * ex + (vy[0] - vy[n - 1]) * ey
         tt = k * (ll - rest[n - 1]) + c * ldot
         tension[n - 1] = tt
-        tstar[n - 1] = tt + h * k * ldot
+        tstar[n - 1] = tt + thh * k * ldot
         ux[n - 1] = ex
         uy[n - 1] = ey
         # wheel speeds used in the contacts: the prescribed ones at the end of the step
@@ -526,7 +528,7 @@ def integrate_implicit(pos, vel, force, work, tension, contact, ws, wp, gd, tab,
                 # linearised normal force at the end of the step without the implicit
                 # increment: a contact that opens within the step carries no force, a
                 # gap that closes within it (pen < 0) is a contact of this step
-                fn0 = kc * (pen + h * vn) + cc * vn
+                fn0 = kc * (pen + thh * vn) + cc * vn
                 if fn0 <= 0.0 and pen <= 0.0:
                     continue
                 fn = kc * pen + cc * vn if pen > 0.0 else 0.0
@@ -545,8 +547,9 @@ def integrate_implicit(pos, vel, force, work, tension, contact, ws, wp, gd, tab,
                     # stiffness fn/d (d = distance from the seat's centre, ~r_s - r):
                     # implicit like the sticking friction (Δx_t = h Δv_t)
                     kt = fn * curv
-                    ft0 -= h * kt * vt
+                    ft0 -= thh * kt * vt
                     s += h * kt
+                s *= th
                 # force on the pin: -(fn0 + β Δvn) n + (ft0 - s Δvt) t, t = (-ny, nx)
                 fx[i] += -fn0 * nx - ft0 * ny
                 fy[i] += -fn0 * ny + ft0 * nx
@@ -599,7 +602,7 @@ def integrate_implicit(pos, vel, force, work, tension, contact, ws, wp, gd, tab,
                 if pen <= -margin:
                     continue
                 vn = vx[i] * mx + vy[i] * my
-                fn0 = kg * (pen - h * vn) - cg * vn
+                fn0 = kg * (pen - thh * vn) - cg * vn
                 if fn0 <= 0.0:
                     continue
                 fn = kg * pen - cg * vn if pen > 0.0 else 0.0
@@ -628,6 +631,7 @@ def integrate_implicit(pos, vel, force, work, tension, contact, ws, wp, gd, tab,
                     if abs(vt) < vem:
                         s += fm / vem
                     _add_pin_matrix(mxx, mxy, myy, i, mmat / h, my, -mx)
+                s *= th
                 fx[i] += fn0 * mx + ft0 * my
                 fy[i] += fn0 * my - ft0 * mx
                 _add_pin_matrix(mxx, mxy, myy, i, betag, mx, my)

@@ -46,8 +46,10 @@ NWP = 39
 S_THETA, S_OMEGA, S_S, S_SDOT, S_TORQUE, S_SFORCE = range(6)
 # parameter vector
 P_MASS, P_K, P_C, P_PITCH, P_RROLLER, P_KC, P_CC, P_MU, P_VEPS, P_GX, P_GY, P_DT, P_CGLOB, \
-    P_KG, P_CG, P_DTREF, P_PITCH2 = range(17)
-NPAR = 17
+    P_KG, P_CG, P_DTREF, P_PITCH2, P_THETA = range(18)
+NPAR = 18
+# P_THETA: implicitness θ of the linearly implicit integrator (forces evaluated at
+# x + θ h v⁺); unused by the explicit kernel
 # P_PITCH: rest length of the even links (i = 0, 2, ...); P_PITCH2: of the odd links
 # (equal for a roller chain; t + d and t - d for a round link chain)
 # wheel modes

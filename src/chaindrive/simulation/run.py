@@ -78,6 +78,7 @@ def kernel_arrays(model: SimulationModel, dt: float | None = None) -> tuple[np.n
     par[K.P_VEPS] = model.friction_velocity
     par[K.P_GX], par[K.P_GY] = model.gravity
     par[K.P_DT] = dt
+    par[K.P_THETA] = 1.0
     # friction slope cap m / dt_ref (see the kernel), dt_ref = 2 dt_stable: the cap
     # m / dt makes the friction dead-beat on its own, and with the link springs and
     # large seat forces the alternating mode of the seated pins then grows (period 2:
