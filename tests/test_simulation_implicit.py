@@ -70,6 +70,7 @@ def _free_loop(n=60, omega=30.0, drift=(0.3, -0.2), steps=4000, dt=2e-5, damping
     par[K.P_DT] = dt
     par[K.P_DTREF] = 6e-6
     par[K.P_VEPS] = 1e-3
+    par[K.P_THETA] = 1.0
     ws = np.zeros((0, 6))
     wp = np.zeros((0, K.NWP))
     gd = np.zeros((0, K.NGD))
