@@ -51,8 +51,10 @@ S_THETA, S_OMEGA, S_S, S_SDOT, S_TORQUE, S_SFORCE, S_MOTOR = range(7)
 NWS = 7
 # parameter vector
 P_MASS, P_K, P_C, P_PITCH, P_RROLLER, P_KC, P_CC, P_MU, P_VEPS, P_GX, P_GY, P_DT, P_CGLOB, \
-    P_KG, P_CG, P_DTREF, P_PITCH2 = range(17)
-NPAR = 17
+    P_KG, P_CG, P_DTREF, P_PITCH2, P_THETA = range(18)
+NPAR = 18
+# P_THETA: implicitness θ of the linearly implicit integrator (forces evaluated at
+# x + θ h v⁺); unused by the explicit kernel
 # P_PITCH: rest length of the even links (i = 0, 2, ...); P_PITCH2: of the odd links
 # (equal for a roller chain; t + d and t - d for a round link chain)
 # wheel modes
@@ -159,7 +161,7 @@ def nearest_seat(tab, w, g, iz, qxw, qyw):
 
 @njit(cache=True, fastmath=False, inline="always")
 def seat_penetration(a, b, rr, delta, cps, sps, re, arcflank, cea, ceb, dta, dtb, tca, tcb,
-                     stip):
+                     stip, reach=0.0):
     """Penetration ``pen`` [m] of a roller at ``(a, b)`` in its gap frame, outward normal.
 
     Returns ``(pen, na, nb, curvature)``; no contact when ``pen <= 0`` (the other values
@@ -167,6 +169,8 @@ def seat_penetration(a, b, rr, delta, cps, sps, re, arcflank, cea, ceb, dta, dtb
     force on the roller is ``−k_c pen n``); ``curvature`` [1/m] is that of the gap
     function along the tangent (``+1/d`` on the concave seat arc, ``−1/d`` on the convex
     flank arc and the tooth corner, 0 on a straight flank), for the static solver.
+    ``reach`` > 0: the normal also for a gap ``0 <= −pen < reach`` (the implicit
+    integrator's contacts that close within a step).
     """
     ab = abs(b)
     sb = 1.0 if b >= 0.0 else -1.0
@@ -184,45 +188,47 @@ def seat_penetration(a, b, rr, delta, cps, sps, re, arcflank, cea, ceb, dta, dtb
         tb = ab - tcb
         d = math.sqrt(ta * ta + tb * tb)
         pen = rr - d
-        if pen <= 0.0:
+        if pen <= -reach:
             return pen, 0.0, 0.0, 0.0
         return pen, -ta / d, -sb * tb / d, -1.0 / d
     if ab * cps + a * sps <= 0.0:
         d = math.sqrt(a * a + b * b)
         pen = d - delta
-        if pen <= 0.0:
+        if pen <= -reach or d == 0.0:
             return pen, 0.0, 0.0, 0.0
         return pen, a / d, b / d, 1.0 / d
     if arcflank:
         # outside the convex ISO flank arc (radius r_e about C_e)
         dv = math.sqrt(va * va + vb * vb)
         pen = re + rr - dv
-        if pen <= 0.0:
+        if pen <= -reach:
             return pen, 0.0, 0.0, 0.0
         return pen, -va / dv, -sb * vb / dv, -1.0 / dv
     pen = -a * cps + ab * sps - delta
-    if pen <= 0.0:
+    if pen <= -reach:
         return pen, 0.0, 0.0, 0.0
     return pen, -cps, sb * sps, 0.0
 
 
 @njit(cache=True, fastmath=False, inline="always")
-def guide_penetration(px, py, gd, g, rr):
+def guide_penetration(px, py, gd, g, rr, reach=0.0):
     """Penetration ``pen`` [m] of a roller at ``(px, py)`` into guide ``g``, and the normal.
 
     The distance is taken to the segment clamped to its ends (a guide's end is a corner
     the roller rolls round). Returns ``(pen, mx, my)``: the force on the roller is
-    ``k_g pen m``; no contact when ``pen <= 0``.
+    ``k_g pen m``; no contact when ``pen <= 0``. ``reach`` > 0: the normal also for a gap
+    ``0 <= −pen < reach`` (the implicit integrator).
     """
     h, s = _segment_frame(px - gd[g, 0], py - gd[g, 1], gd[g, 2], gd[g, 3], gd[g, 4], gd[g, 5])
-    if h < -rr or h >= rr:
-        return -1.0, 0.0, 0.0
+    rmax = rr + reach
+    if h < -rr or h >= rmax:
+        return -1.0 - reach, 0.0, 0.0
     length = gd[g, 6]
     if s < 0.0 or s > length:
         es = s if s < 0.0 else s - length
         d2 = es * es + h * h
-        if d2 >= rr * rr or d2 < 1e-24:
-            return -1.0, 0.0, 0.0
+        if d2 >= rmax * rmax or d2 < 1e-24:
+            return -1.0 - reach, 0.0, 0.0
         d = math.sqrt(d2)
         return rr - d, (es * gd[g, 2] + h * gd[g, 4]) / d, (es * gd[g, 3] + h * gd[g, 5]) / d
     return rr - h, gd[g, 4], gd[g, 5]

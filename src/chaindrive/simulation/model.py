@@ -593,3 +593,37 @@ class SimulationModel:
         om = self.omega_max()
         zeta = max(self.link_damping_ratio, self.contact_damping_ratio)
         return safety * 2.0 / om * (math.sqrt(1.0 + zeta * zeta) - zeta)
+
+    def accurate_time_step(self, per_seat: int = 200, stable_steps: float = 15.0) -> float:
+        """Default step of the linearly implicit integrator [s] (``method="implicit"``).
+
+        .. math:: Δt = \\min\\left(\\frac{2π}{n_{per}\\, s\\, ω},\\; n_s Δt_{stable}\\right)
+
+        ``per_seat`` steps per seat period ``2π/(s ω)`` (``s`` seats per turn of a driving
+        wheel, ``ω`` its prescribed speed or its motor's synchronous speed): the seating
+        of each roller, which sets the accuracy of the mean tension and speed, spread
+        over ``per_seat`` steps; at most ``stable_steps`` explicit stable steps
+        (:meth:`stable_time_step`), which keeps the explicit parts (the links' transverse
+        stiffness ``S/p``, the bearings) inside their own stability limit. The rule is
+        empirical: on the benchmark drive (16B, z = 17, 20 rad/s) the seat rule alone
+        gives 92 µs, where the mean tight-side tension changes by 0.7 % against the halved
+        step; the 100 m conveyor (108 kN) runs within 0.1 % of the explicit integrator
+        at 500 µs (16 stable steps) and is off by 15 % at 1 ms (32), where the transverse
+        stiffness of its links reaches its explicit limit ``2/ω``.
+
+        Examples
+        --------
+        >>> from chaindrive.simulation import roller_example
+        >>> m = roller_example(links=100, teeth=17, angular_velocity=20.0)
+        >>> round(m.accurate_time_step() / m.stable_time_step(), 6)
+        15.0
+        """
+        rates = [self.seats_per_turn(w.teeth) * abs(w.angular_velocity) for w in self.wheels
+                 if w.mode == "speed" and w.plain_radius is None]
+        rates += [self.seats_per_turn(w.teeth) * abs(w.motor.synchronous_speed) for w in self.wheels
+                  if w.mode == "motor" and w.motor is not None and w.plain_radius is None]
+        dt = stable_steps * self.stable_time_step()
+        rate = max(rates, default=0.0)
+        if rate > 0.0:
+            dt = min(dt, 2.0 * math.pi / (per_seat * rate))
+        return dt

@@ -45,6 +45,7 @@ from numpy.typing import ArrayLike
 
 from ..errors import ConvergenceError, UnknownNameError
 from . import _kernel as K
+from ._implicit import integrate_implicit
 from .model import SimulationModel, iso_flank
 from .placement import _path, _place, _tangent  # noqa: F401 - _path, _tangent: also imported from here
 from .results import (
@@ -77,6 +78,7 @@ def kernel_arrays(model: SimulationModel, dt: float | None = None) -> tuple[np.n
     par[K.P_VEPS] = model.friction_velocity
     par[K.P_GX], par[K.P_GY] = model.gravity
     par[K.P_DT] = dt
+    par[K.P_THETA] = 1.0
     # friction slope cap m / dt_ref (see the kernel), dt_ref = 2 dt_stable: the cap
     # m / dt makes the friction dead-beat on its own, and with the link springs and
     # large seat forces the alternating mode of the seated pins then grows (period 2:
@@ -170,6 +172,8 @@ class State:
 
 
 ASSEMBLY_METHODS = ("newton", "relaxation")
+#: time integrators of :func:`simulate` (same arguments, same records)
+INTEGRATORS = {"explicit": K.integrate, "implicit": integrate_implicit}
 
 
 def assemble(model: SimulationModel, *, dt: float | None = None, method: str = "newton",
@@ -224,7 +228,10 @@ def assemble(model: SimulationModel, *, dt: float | None = None, method: str = "
     run_wp = wp.copy()
     spans = [x[2] for x in pieces if x[0] == "span"]
     if method == "newton":
-        return _assemble_newton(model, pos, ws, wp, run_wp, gd, par, adj, d, pieces, s0)
+        # one BLAS thread: the Newton iteration's products are of 2N-vectors, for which a
+        # threaded BLAS only adds start-up cost (32 % of a 5,000-link assembly measured)
+        with _one_blas_thread():
+            return _assemble_newton(model, pos, ws, wp, run_wp, gd, par, adj, d, pieces, s0)
     # relaxation set-up
     lspan = max(min(spans), 5 * model.pitch)
     kspan = model.axial_stiffness / lspan
@@ -313,6 +320,17 @@ def assemble(model: SimulationModel, *, dt: float | None = None, method: str = "
     par[K.P_CGLOB] = 0.0
     st = State(pos, vel, ws, run_wp, gd, par, t, steps)
     return st
+
+
+def _one_blas_thread():
+    """Context limiting BLAS to one thread (``threadpoolctl``; no-op without it)."""
+    try:
+        from threadpoolctl import threadpool_limits
+    except ImportError:  # pragma: no cover - threadpoolctl ships with the fast extra
+        from contextlib import nullcontext
+
+        return nullcontext()
+    return threadpool_limits(limits=1, user_api="blas")
 
 
 def _slide_mass(model: SimulationModel, adj: int) -> float:
@@ -498,7 +516,8 @@ def _lead_the_loaded_wheel(model, wheel, torque, wp, theta, solve):
 def simulate(model: SimulationModel, duration: float, *, dt: float | None = None,
              record_every: int | None = None, samples: int = 2000, probes: ArrayLike | None = None,
              state: State | None = None, settle: float | None = None,
-             progress: Callable[[int, int], object] | None = None, chunks: int = 50) -> SimulationResult:
+             progress: Callable[[int, int], object] | None = None, chunks: int = 50,
+             method: str = "explicit") -> SimulationResult:
     """Assemble ``model`` in static equilibrium and integrate it for ``duration`` [s].
 
     Parameters
@@ -521,6 +540,12 @@ def simulate(model: SimulationModel, duration: float, *, dt: float | None = None
         through this run.
     progress : callable, optional
         Called as ``progress(done_steps, total_steps)`` between chunks.
+    method : {"explicit", "implicit"}
+        ``"explicit"`` (default): symplectic Euler, ``dt`` by default the stable step
+        :meth:`SimulationModel.stable_time_step`; ``"implicit"``: the linearly implicit
+        step (link springs, contact springs and sticking friction implicit), ``dt`` by
+        default :meth:`SimulationModel.accurate_time_step` (see docs/simulation.md,
+        "Integrator").
 
     Returns
     -------
@@ -540,6 +565,13 @@ def simulate(model: SimulationModel, duration: float, *, dt: float | None = None
     from ..limits import check_duration
 
     check_duration("duration", duration)  # at most chaindrive.limits.MAX_DURATION, before any work
+    if method not in INTEGRATORS:
+        raise UnknownNameError(f"method must be one of {', '.join(INTEGRATORS)}, got {method!r}")
+    integrate = INTEGRATORS[method]
+    if dt is None and method == "implicit":
+        dt = model.accurate_time_step()
+    if dt is not None:
+        check_positive("dt", dt)
     if state is None:
         state = assemble(model, dt=dt)
     par = state.par.copy()
@@ -572,7 +604,7 @@ def simulate(model: SimulationModel, duration: float, *, dt: float | None = None
     while done < nsteps:
         m = min(per, nsteps - done)
         t0 = time.perf_counter()
-        written = K.integrate(pos, vel, force, np.zeros_like(pos), tension, contact, ws, wp, state.gd, tab, par,
+        written = integrate(pos, vel, force, np.zeros_like(pos), tension, contact, ws, wp, state.gd, tab, par,
                               state.time + done * dt, m, record_every, probes, *recs, written)
         wall += time.perf_counter() - t0
         done += m
