@@ -185,3 +185,14 @@ def test_the_documented_coupling_is_softer_than_the_motor_direct():
     assert float(cpl.torque(4.0, 0.0)) / 1e4 == pytest.approx(1.5, rel=1e-12)
     assert float(cpl.torque(2.0, 0.0)) == pytest.approx(0.25 * float(cpl.torque(4.0, 0.0)), rel=1e-12)
     assert math.isclose(float(cpl.torque(0.0, 0.0)), 0.0)
+
+
+def test_start_through_a_coupling_with_the_implicit_integrator():
+    # the linearly implicit integrator (simulate(method="implicit")) drives the wheel
+    # through the same coupling step: the same two-inertia solution
+    coupling = FluidCoupling.sized(100.0, W0, nominal_slip=0.04, stall_ratio=2.0)
+    model = _two_wheels(coupling)
+    r = simulate(model, 0.45, samples=90, method="implicit")
+    wm, w = _rigid(coupling, model, r.time)
+    assert np.max(np.abs(r.motor_speed[:, 0] - wm)) < 0.01 * W0
+    assert np.max(np.abs(r.wheel_speed[:, 1] - w)) < 0.015 * W0

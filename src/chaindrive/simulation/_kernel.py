@@ -47,8 +47,10 @@ NWP = 43
 # W_NSEAT: number of seats per turn (z for a sprocket, 2z for a pocket wheel); W_DA, W_DB:
 # central angles [rad] spanned by an even link (pins 2k, 2k+1) and an odd link when seated
 # wheel state columns
-S_THETA, S_OMEGA, S_S, S_SDOT, S_TORQUE, S_SFORCE, S_MOTOR = range(7)
-NWS = 7
+S_THETA, S_OMEGA, S_S, S_SDOT, S_TORQUE, S_SFORCE, S_MOTOR, S_COUPLING = range(8)
+NWS = 8
+# S_MOTOR: speed of the motor behind a fluid coupling; S_COUPLING: the coupling's torque
+# on the wheel in the last step (both 0 without a coupling)
 # parameter vector
 P_MASS, P_K, P_C, P_PITCH, P_RROLLER, P_KC, P_CC, P_MU, P_VEPS, P_GX, P_GY, P_DT, P_CGLOB, \
     P_KG, P_CG, P_DTREF, P_PITCH2, P_THETA = range(18)
@@ -282,6 +284,28 @@ def fluid_coupling_step(wp, w, om_m, om, t, tload, dt):
     tm = drive_torque(wp, w, om_m, t)
     delta = dt * ((tm - tc) / jm - (tload + tc) / jw) / (1.0 + dt * b * (1.0 / jm + 1.0 / jw))
     return tc + b * delta
+
+
+@njit(cache=True, fastmath=False, inline="always")
+def wheel_drive_torque(wp, ws, w, om, t, tload, dt):
+    """Torque [N m] driving wheel ``w`` (mode motor) in the step from ``t``: the motor's
+    at the wheel's speed ``om``, or through a fluid coupling the coupling's
+    (:func:`fluid_coupling_step`, kept in ``ws[w, S_COUPLING]`` for
+    :func:`advance_motor`); ``tload`` the other torques on the wheel."""
+    if wp[w, W_FCJ] > 0.0:
+        tc = fluid_coupling_step(wp, w, ws[w, S_MOTOR], om, t, tload, dt)
+        ws[w, S_COUPLING] = tc
+        return tc
+    return drive_torque(wp, w, om, t)
+
+
+@njit(cache=True, fastmath=False, inline="always")
+def advance_motor(wp, ws, w, t, dt):
+    """The motor behind a fluid coupling over the step: ``J_m ω̇_m = T_m(ω_m) − T_c`` with
+    the coupling torque of :func:`wheel_drive_torque` (once per step, after it)."""
+    if wp[w, W_FCJ] > 0.0:
+        om_m = ws[w, S_MOTOR]
+        ws[w, S_MOTOR] = om_m + (drive_torque(wp, w, om_m, t) - ws[w, S_COUPLING]) / wp[w, W_FCJ] * dt
 
 
 @njit(cache=True, fastmath=False, inline="always")
@@ -660,12 +684,8 @@ def integrate(pos, vel, force, work, tension, contact, ws, wp, gd, tab, par, t0,
                 ws[w, S_OMEGA] = wp[w, W_OMEGA0] * speed_factor(wp, w, tn)
             elif mode == MODE_MOTOR:
                 tload = ws[w, S_TORQUE] + wp[w, W_TORQUE] - wp[w, W_DAMP] * ws[w, S_OMEGA]
-                if wp[w, W_FCJ] > 0.0:
-                    # motor -> fluid coupling -> wheel: the motor is its own degree of freedom
-                    tc = fluid_coupling_step(wp, w, ws[w, S_MOTOR], ws[w, S_OMEGA], t, tload, dt)
-                    ws[w, S_MOTOR] += (drive_torque(wp, w, ws[w, S_MOTOR], t) - tc) / wp[w, W_FCJ] * dt
-                else:
-                    tc = drive_torque(wp, w, ws[w, S_OMEGA], t)
+                tc = wheel_drive_torque(wp, ws, w, ws[w, S_OMEGA], t, tload, dt)
+                advance_motor(wp, ws, w, t, dt)
                 ws[w, S_OMEGA] += (tload + tc) / wp[w, W_INERTIA] * dt
             elif mode == MODE_FREE:
                 acc = (ws[w, S_TORQUE] + wp[w, W_TORQUE] - wp[w, W_DAMP] * ws[w, S_OMEGA]) \
