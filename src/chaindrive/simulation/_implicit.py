@@ -232,10 +232,8 @@ def _solve(n, nw, yx, yy, wxx, wxy, wyy, ux, uy, dg, of, dd, ff, lam, inv_ak, dv
         if wp[w, K.W_SLIDE] > 0.0 and ncand[w] > 0:
             qsl[w] = nq
             nq += 1
+    # the rows of B are zero off their wheel's pins (cleared after use below)
     for q in range(nq):
-        for i in range(n):
-            bx[q, i] = 0.0
-            by[q, i] = 0.0
         for q2 in range(nq):
             sq[q, q2] = 0.0
         fq[q] = 0.0
@@ -283,16 +281,23 @@ def _solve(n, nw, yx, yy, wxx, wxy, wyy, ux, uy, dg, of, dd, ff, lam, inv_ak, dv
         for q in range(nq):
             _apply_inverse(bx[q], by[q], zx[q], zy[q], wxx, wxy, wyy, ux, uy, of, dd, ff,
                            dlast, lam)
-        for q in range(nq):
-            acc = fq[q]
-            for i in range(n):
-                acc -= bx[q, i] * dvx[i] + by[q, i] * dvy[i]
-            fq[q] = acc
-            for q2 in range(nq):
-                acc = sq[q, q2]
-                for i in range(n):
-                    acc -= bx[q, i] * zx[q2, i] + by[q, i] * zy[q2, i]
-                sq[q, q2] = acc
+        # Schur complement S = Q − Bᵀ P⁻¹ B, right-hand side F_q − Bᵀ P⁻¹ F; B is
+        # sparse (its rows live on their wheel's candidate pins)
+        for w in range(nw):
+            for q in (qrot[w], qsl[w]):
+                if q < 0:
+                    continue
+                for ic in range(ncand[w]):
+                    i = cand[w, ic]
+                    bxq = bx[q, i]
+                    byq = by[q, i]
+                    if bxq == 0.0 and byq == 0.0:
+                        continue
+                    fq[q] -= bxq * dvx[i] + byq * dvy[i]
+                    for q2 in range(nq):
+                        sq[q, q2] -= bxq * zx[q2, i] + byq * zy[q2, i]
+                    bx[q, i] = 0.0
+                    by[q, i] = 0.0
         _small_solve(sq, fq, nq)
         for q in range(nq):
             dq = fq[q]

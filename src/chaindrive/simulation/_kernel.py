@@ -365,39 +365,60 @@ def integrate(pos, vel, force, work, tension, contact, ws, wp, gd, tab, par, t0,
     gcand = np.empty((ng, n), np.int64)
     ngcand = np.zeros(ng, np.int64)
     # material carried by a pin this step: mass [kg] and the pan's unit tangent
-    extra = np.zeros((n, 3))
+    extra = np.zeros((n, 5))
     countdown = 0
     vmax_s = 0.0
     fgx = m * gx
     fgy = m * gy
     cm = cglob * m
-    # `force` holds the contact forces only (zero between steps); link, gravity and
-    # damping forces are added in the update loop
+    # separate coordinate arrays (the caller's (N, 2) arrays copied in and out), rest
+    # lengths per link; (fx, fy) hold the contact forces only (zero between steps); link,
+    # gravity and damping forces are added in the update loop; `force`, `work` unused
+    x = pos[:, 0].copy()
+    y = pos[:, 1].copy()
+    vx = vel[:, 0].copy()
+    vy = vel[:, 1].copy()
+    rest = np.empty(n)
     for i in range(n):
-        force[i, 0] = 0.0
-        force[i, 1] = 0.0
+        rest[i] = p if i % 2 == 0 else p2
+    fx = np.zeros(n)
+    fy = np.zeros(n)
+    wkx = np.zeros(n + 1)
+    wky = np.zeros(n + 1)
+    carrying = False
+    for i in range(n):
         contact[i] = 0.0
     for step in range(nsteps):
         t = t0 + step * dt
         epot = 0.0
         # links: axial spring-damper between consecutive pins (closed loop); first the
-        # link forces (independent iterations), then the pin forces
-        for i in range(n):
-            j = i + 1
-            if j == n:
-                j = 0
-            dx = pos[j, 0] - pos[i, 0]
-            dy = pos[j, 1] - pos[i, 1]
+        # link forces (independent iterations, vectorised: separate x/y arrays, rest
+        # lengths per link), then the pin forces
+        for i in range(n - 1):
+            dx = x[i + 1] - x[i]
+            dy = y[i + 1] - y[i]
             ll = math.sqrt(dx * dx + dy * dy)
             il = 1.0 / ll
             ux = dx * il
             uy = dy * il
-            dl = ll - (p if (i & 1) == 0 else p2)
-            ldot = (vel[j, 0] - vel[i, 0]) * ux + (vel[j, 1] - vel[i, 1]) * uy
-            tt = k * dl + c * ldot
+            ldot = (vx[i + 1] - vx[i]) * ux + (vy[i + 1] - vy[i]) * uy
+            tt = k * (ll - rest[i]) + c * ldot
             tension[i] = tt
-            work[i, 0] = tt * ux
-            work[i, 1] = tt * uy
+            wkx[i + 1] = tt * ux
+            wky[i + 1] = tt * uy
+        dx = x[0] - x[n - 1]
+        dy = y[0] - y[n - 1]
+        ll = math.sqrt(dx * dx + dy * dy)
+        il = 1.0 / ll
+        ux = dx * il
+        uy = dy * il
+        ldot = (vx[0] - vx[n - 1]) * ux + (vy[0] - vy[n - 1]) * uy
+        tt = k * (ll - rest[n - 1]) + c * ldot
+        tension[n - 1] = tt
+        wkx[n] = tt * ux
+        wky[n] = tt * uy
+        wkx[0] = wkx[n]
+        wky[0] = wky[n]
         # wheels: penalty contact of each roller with the nearest tooth gap; the pins
         # near each wheel are listed every `countdown` steps, often enough that no pin
         # can cover the margin in between (4 x the fastest relative speed)
@@ -405,7 +426,7 @@ def integrate(pos, vel, force, work, tension, contact, ws, wp, gd, tab, par, t0,
         if rebuild:
             vmax = 0.0
             for i in range(n):
-                v2 = vel[i, 0] * vel[i, 0] + vel[i, 1] * vel[i, 1]
+                v2 = vx[i] * vx[i] + vy[i] * vy[i]
                 if v2 > vmax:
                     vmax = v2
             vmax = math.sqrt(vmax)
@@ -449,16 +470,16 @@ def integrate(pos, vel, force, work, tension, contact, ws, wp, gd, tab, par, t0,
                 for i in range(n):
                     gcache[w, i] = -1
                 for i in range(n):
-                    qx = pos[i, 0] - cx
-                    qy = pos[i, 1] - cy
+                    qx = x[i] - cx
+                    qy = y[i] - cy
                     if qx * qx + qy * qy <= rc2:
                         cand[w, nc] = i
                         nc += 1
                 ncand[w] = nc
             for ic in range(ncand[w]):
                 i = cand[w, ic]
-                qx = pos[i, 0] - cx
-                qy = pos[i, 1] - cy
+                qx = x[i] - cx
+                qy = y[i] - cy
                 r2 = qx * qx + qy * qy
                 if r2 > rout2 or r2 < rin2:
                     continue
@@ -500,8 +521,8 @@ def integrate(pos, vel, force, work, tension, contact, ws, wp, gd, tab, par, t0,
                         continue
                     nx = na * erx - nb * ery
                     ny = na * ery + nb * erx
-                rvx = vel[i, 0] - (-om * qy + sd * wp[w, W_DX])
-                rvy = vel[i, 1] - (om * qx + sd * wp[w, W_DY])
+                rvx = vx[i] - (-om * qy + sd * wp[w, W_DX])
+                rvy = vy[i] - (om * qx + sd * wp[w, W_DY])
                 vn = rvx * nx + rvy * ny
                 fn = kc * pen + cc * vn
                 if fn < 0.0:
@@ -515,14 +536,14 @@ def integrate(pos, vel, force, work, tension, contact, ws, wp, gd, tab, par, t0,
                 if ve < veps:
                     ve = veps
                 ft = -mu * fn * _sat(vt / ve)
-                fx = -fn * nx - ft * ny
-                fy = -fn * ny + ft * nx
-                force[i, 0] += fx
-                force[i, 1] += fy
+                cfx = -fn * nx - ft * ny
+                cfy = -fn * ny + ft * nx
+                fx[i] += cfx
+                fy[i] += cfy
                 contact[i] += fn
-                tq -= qx * fy - qy * fx
-                fwx -= fx
-                fwy -= fy
+                tq -= qx * cfy - qy * cfx
+                fwx -= cfx
+                fwy -= cfy
             ws[w, S_TORQUE] = tq
             ws[w, S_SFORCE] = fwx * wp[w, W_DX] + fwy * wp[w, W_DY]
         # guides: one-sided penalty contact of the roller with a line segment whose end
@@ -542,7 +563,7 @@ def integrate(pos, vel, force, work, tension, contact, ws, wp, gd, tab, par, t0,
                 reach = rr + margin
                 nc = 0
                 for i in range(n):
-                    h, s = _segment_frame(pos[i, 0] - ax, pos[i, 1] - ay, ux, uy, nx, ny)
+                    h, s = _segment_frame(x[i] - ax, y[i] - ay, ux, uy, nx, ny)
                     if h < -reach or h >= reach or s < -reach or s > length + reach:
                         continue
                     gcand[g, nc] = i
@@ -550,16 +571,16 @@ def integrate(pos, vel, force, work, tension, contact, ws, wp, gd, tab, par, t0,
                 ngcand[g] = nc
             for ic in range(ngcand[g]):
                 i = gcand[g, ic]
-                pen, mx, my = guide_penetration(pos[i, 0], pos[i, 1], gd, g, rr)
+                pen, mx, my = guide_penetration(x[i], y[i], gd, g, rr)
                 if pen <= 0.0:
                     continue
-                vn = vel[i, 0] * mx + vel[i, 1] * my
+                vn = vx[i] * mx + vy[i] * my
                 fn = kg * pen - cg * vn
                 if fn < 0.0:
                     fn = 0.0
                 epot += 0.5 * kg * pen * pen
                 # tangent (my, -mx): the segment direction on its face
-                vt = vel[i, 0] * my - vel[i, 1] * mx
+                vt = vx[i] * my - vy[i] * mx
                 mug = gd[g, G_MU] if gd[g, G_MU] >= 0.0 else mu
                 ve = mug * fn * dtref * inv_m
                 if ve < veps:
@@ -578,19 +599,21 @@ def integrate(pos, vel, force, work, tension, contact, ws, wp, gd, tab, par, t0,
                         vem = veps
                     ft += mmat * gt - fm * _sat(vt / vem)
                     extra[i, 0] = mmat
+                    extra[i, 3] = vx[i]
+                    extra[i, 4] = vy[i]
+                    carrying = True
                     extra[i, 1] = my
                     extra[i, 2] = -mx
-                force[i, 0] += fn * mx + ft * my
-                force[i, 1] += fn * my - ft * mx
+                fx[i] += fn * mx + ft * my
+                fy[i] += fn * my - ft * mx
                 contact[i] += fn
         # record (state at time t, forces of this step)
         assembled = False
         if step % record_every == 0 and nrec < rec_t.shape[0]:
             assembled = True
             for i in range(n):
-                im = n - 1 if i == 0 else i - 1
-                force[i, 0] += fgx - cm * vel[i, 0] + work[i, 0] - work[im, 0]
-                force[i, 1] += fgy - cm * vel[i, 1] + work[i, 1] - work[im, 1]
+                fx[i] += fgx - cm * vx[i] + wkx[i + 1] - wkx[i]
+                fy[i] += fgy - cm * vy[i] + wky[i + 1] - wky[i]
             # velocities at time t (mid-point of the two half-step velocities), so that
             # the energy estimate is second order
             hm = 0.5 * dt / m
@@ -598,18 +621,18 @@ def integrate(pos, vel, force, work, tension, contact, ws, wp, gd, tab, par, t0,
             egrav = 0.0
             for i in range(n):
                 j = i + 1 if i + 1 < n else 0
-                ddx = pos[j, 0] - pos[i, 0]
-                ddy = pos[j, 1] - pos[i, 1]
-                dl = math.sqrt(ddx * ddx + ddy * ddy) - (p if (i & 1) == 0 else p2)
+                ddx = x[j] - x[i]
+                ddy = y[j] - y[i]
+                dl = math.sqrt(ddx * ddx + ddy * ddy) - rest[i]
                 epot += 0.5 * k * dl * dl
-                vx = vel[i, 0] + hm * force[i, 0]
-                vy = vel[i, 1] + hm * force[i, 1]
-                ekin += 0.5 * m * (vx * vx + vy * vy)
-                egrav -= m * (gx * pos[i, 0] + gy * pos[i, 1])
+                hvx = vx[i] + hm * fx[i]
+                hvy = vy[i] + hm * fy[i]
+                ekin += 0.5 * m * (hvx * hvx + hvy * hvy)
+                egrav -= m * (gx * x[i] + gy * y[i])
                 rec_tension[nrec, i] = tension[i]
                 rec_contact[nrec, i] = contact[i]
-                rec_pos[nrec, i, 0] = pos[i, 0]
-                rec_pos[nrec, i, 1] = pos[i, 1]
+                rec_pos[nrec, i, 0] = x[i]
+                rec_pos[nrec, i, 1] = y[i]
             for w in range(nw):
                 om = ws[w, S_OMEGA]
                 if wp[w, W_MODE] == MODE_FREE:
@@ -633,49 +656,38 @@ def integrate(pos, vel, force, work, tension, contact, ws, wp, gd, tab, par, t0,
                 best = 1e300
                 ib = 0
                 for i in range(n):
-                    ddx = pos[i, 0] - probes[q, 0]
-                    ddy = pos[i, 1] - probes[q, 1]
+                    ddx = x[i] - probes[q, 0]
+                    ddy = y[i] - probes[q, 1]
                     dd = ddx * ddx + ddy * ddy
                     if dd < best:
                         best = dd
                         ib = i
-                rec_probe[nrec, q] = (vel[ib, 0] + hm * force[ib, 0]) * probes[q, 2] \
-                    + (vel[ib, 1] + hm * force[ib, 1]) * probes[q, 3]
+                rec_probe[nrec, q] = (vx[ib] + hm * fx[ib]) * probes[q, 2] \
+                    + (vy[ib] + hm * fy[ib]) * probes[q, 3]
             nrec += 1
-        # integrate pins: semi-implicit (symplectic) Euler
+        # integrate pins: semi-implicit (symplectic) Euler; the force of link i is
+        # (wkx, wky)[i + 1] (index 0 repeats the closing link's), so pin i gets
+        # wk[i + 1] - wk[i] without a branch; the material's inertia in a second pass
         hdt = inv_m * dt
         if assembled:
             for i in range(n):
-                vx0 = vel[i, 0]
-                vy0 = vel[i, 1]
-                vel[i, 0] += force[i, 0] * hdt
-                vel[i, 1] += force[i, 1] * hdt
-                if extra[i, 0] > 0.0:
-                    _carry(vel, extra, i, vx0, vy0, m)
-                pos[i, 0] += vel[i, 0] * dt
-                pos[i, 1] += vel[i, 1] * dt
-                force[i, 0] = 0.0
-                force[i, 1] = 0.0
-                contact[i] = 0.0
+                vx[i] += fx[i] * hdt
+                vy[i] += fy[i] * hdt
         else:
-            wx0 = work[n - 1, 0]
-            wy0 = work[n - 1, 1]
             for i in range(n):
-                wx1 = work[i, 0]
-                wy1 = work[i, 1]
-                vx0 = vel[i, 0]
-                vy0 = vel[i, 1]
-                vel[i, 0] += (force[i, 0] + fgx - cm * vel[i, 0] + wx1 - wx0) * hdt
-                vel[i, 1] += (force[i, 1] + fgy - cm * vel[i, 1] + wy1 - wy0) * hdt
+                vx[i] += (fx[i] + fgx - cm * vx[i] + wkx[i + 1] - wkx[i]) * hdt
+                vy[i] += (fy[i] + fgy - cm * vy[i] + wky[i + 1] - wky[i]) * hdt
+        if carrying:
+            for i in range(n):
                 if extra[i, 0] > 0.0:
-                    _carry(vel, extra, i, vx0, vy0, m)
-                pos[i, 0] += vel[i, 0] * dt
-                pos[i, 1] += vel[i, 1] * dt
-                force[i, 0] = 0.0
-                force[i, 1] = 0.0
-                contact[i] = 0.0
-                wx0 = wx1
-                wy0 = wy1
+                    _carry(vx, vy, extra, i, m)
+            carrying = False
+        for i in range(n):
+            x[i] += vx[i] * dt
+            y[i] += vy[i] * dt
+            fx[i] = 0.0
+            fy[i] = 0.0
+            contact[i] = 0.0
         # wheels
         tn = t + dt
         for w in range(nw):
@@ -701,19 +713,25 @@ def integrate(pos, vel, force, work, tension, contact, ws, wp, gd, tab, par, t0,
                     - wp[w, W_SC] * ws[w, S_SDOT] + wp[w, W_SMASS] * (gx * dxw + gy * dyw)
                 ws[w, S_SDOT] += fs / wp[w, W_SMASS] * dt
                 ws[w, S_S] += ws[w, S_SDOT] * dt
+    for i in range(n):
+        pos[i, 0] = x[i]
+        pos[i, 1] = y[i]
+        vel[i, 0] = vx[i]
+        vel[i, 1] = vy[i]
     return nrec
 
 
 @njit(cache=True, fastmath=False, inline="always")
-def _carry(vel, extra, i, vx0, vy0, m):
+def _carry(vx, vy, extra, i, m):
     """Pin ``i`` carries material of mass ``extra[i, 0]`` along the pan tangent
-    ``extra[i, 1:]``: its velocity change along the pan is that of ``m + m_material``."""
+    ``extra[i, 1:3]``: its velocity change along the pan this step is that of
+    ``m + m_material`` (``extra[i, 3:5]``: its velocity before the step)."""
     tx = extra[i, 1]
     ty = extra[i, 2]
-    dvt = (vel[i, 0] - vx0) * tx + (vel[i, 1] - vy0) * ty
+    dvt = (vx[i] - extra[i, 3]) * tx + (vy[i] - extra[i, 4]) * ty
     corr = dvt * extra[i, 0] / (m + extra[i, 0])
-    vel[i, 0] -= corr * tx
-    vel[i, 1] -= corr * ty
+    vx[i] -= corr * tx
+    vy[i] -= corr * ty
     extra[i, 0] = 0.0
 
 

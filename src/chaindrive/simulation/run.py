@@ -25,12 +25,16 @@ Assembly
 
 Integration
 -----------
-Semi-implicit (symplectic) Euler, ``v ← v + Δt F/m``, ``x ← x + Δt v``: explicit,
-one force evaluation per step, no energy drift for the conservative part (it conserves
-a shadow Hamiltonian), stable for ``Δt < 2/ω_max`` (:meth:`SimulationModel.stable_time_step`).
-The joints are stiff but the system is small per step (N pins): an implicit scheme
-would need a banded solve each step and would damp the very high-frequency content
-(impacts) we want to see; at ``Δt ≈ 2 µs`` the explicit step costs ~10 ns per link.
+``method="explicit"`` (default): semi-implicit (symplectic) Euler, ``v ← v + Δt F/m``,
+``x ← x + Δt v``: one force evaluation per step, no energy drift for the conservative
+part (it conserves a shadow Hamiltonian), stable for ``Δt < 2/ω_max``
+(:meth:`SimulationModel.stable_time_step`, ~3 µs for a 16B chain: the step is set by the
+stiff links, not by accuracy).
+
+``method="implicit"``: the linearly implicit step of :mod:`._implicit` (link springs,
+contact springs, sticking friction implicit; a cyclic tridiagonal solve per step, linear
+in the links), at a step set by accuracy (:meth:`SimulationModel.accurate_time_step`,
+first order: check it against its half). docs/simulation.md, "Integrator".
 """
 
 from __future__ import annotations
