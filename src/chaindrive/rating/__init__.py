@@ -337,7 +337,7 @@ def _iso10823_rating(chain: Chain | str, teeth: int, angular_velocity: float, *,
     --------
     >>> r = chain_rating("12B-1", 17, 1400 * np.pi / 30, method="iso10823")
     >>> round(r.rated_power / 1e3, 2), r.governing_limit, r.method
-    (18.16, 'roller_bushing', 'iso10823')
+    (18.15, 'roller_bushing', 'iso10823')
     """
     from ..chains import get
     from .iso10823 import B_SERIES_NOTE, ISO10823_SOURCE, is_b_series, iso10823_constants
