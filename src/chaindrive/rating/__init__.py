@@ -51,7 +51,7 @@ _GOVERNING = ("link_plate", "roller_bushing")
 
 @dataclass(frozen=True)
 class ChainRating(Result):
-    """ANSI/ACA rating of one roller chain on one small sprocket (:func:`chain_rating`).
+    """Rating of one roller chain on one small sprocket by one method (:func:`chain_rating`).
 
     Attributes
     ----------
@@ -75,8 +75,8 @@ class ChainRating(Result):
         (:func:`galling_power` × ``K_2``); informative, the galling check is
         ``galling_exceeded``.
     rated_power : float
-        The smaller of ``link_plate`` and ``roller_bushing`` [W]: the ANSI table value,
-        which the tables also print in the galling region (type C').
+        The smaller of ``link_plate`` and ``roller_bushing`` [W]: the table (chart) value,
+        which the ANSI tables also print in the galling region (type C').
     governing_limit : str
         ``"link_plate"`` or ``"roller_bushing"``.
     tension : float
@@ -96,6 +96,10 @@ class ChainRating(Result):
         Where the region boundaries come from.
     warnings : tuple of str
         Validity-range and method notes (nothing is emitted as a Python warning).
+    method : str
+        ``"ansi"`` or ``"iso10823"`` (:data:`RATING_METHODS`).
+    source : str
+        Where the method's formulas and constants come from.
     """
 
     chain: str
@@ -248,7 +252,7 @@ def chain_rating(chain: Chain | str, teeth: int, angular_velocity: float, *,
                  power: float | None = None, method: str | None = None) -> ChainRating:
     r"""Rating of a roller chain on its small sprocket by the method of its family (or ``method``).
 
-    .. math:: P_r = K_2 \min(H_1, H_2)\ \text{(ANSI/ACA)}
+    .. math:: P_r = K_2 \min(H_1, H_2)\ \text{(ANSI/ACA; ISO 10823 with the series' constants)}
 
     Parameters
     ----------
@@ -276,7 +280,8 @@ def chain_rating(chain: Chain | str, teeth: int, angular_velocity: float, *,
 
     References
     ----------
-    See the methods (:mod:`chaindrive.rating.ansi`; docs/rating.md).
+    See the methods (:mod:`chaindrive.rating.ansi`, :mod:`chaindrive.rating.iso10823`;
+    docs/rating.md).
 
     Examples
     --------
