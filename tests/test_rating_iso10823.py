@@ -6,10 +6,10 @@ Published data used (provenance):
          worked examples transcribed in FOSSEE's Scilab Textbook Companion
          (https://github.com/FOSSEE/Scilab-TBC-Uploads, folder 764/CH14):
            Ex. 14.7 data14_7.sci      10B, 1400 rpm: 11.67 kW   (B series)
-           Ex. 14.4 (as used in tests/test_rating.py)  12B, 1400 rpm: 18.15 kW   (B series)
+           Ex. 14.4 result14_4.txt    12B, 1400 rpm: 18.15 kW   (B series; "we choose chain 12B (18.15 kW rating)")
            Ex. 14.3 result14_3.txt     8A, 1400 rpm:  5.28 kW   (A series)
            Ex. 14.1 data14_1.sci      12A, 1000 rpm: 14.32 kW   (A series)
-           Ex. 14.2 (tests/test_rating.py)            16A,  300 rpm: 11.63 kW   (A series)
+           Ex. 14.2 solution14_2.sce  16A,  300 rpm: 11.63 kW   (A series)
   No chain maker's B-series kW table (Renold, Tsubaki, iwis, Rexnord, SKF, Donghua, ...) could be
   read in the accessible sources (the catalogues found print the ISO 10823 ratings as charts, or
   their text copies hold no rating numbers); a second, independent table is therefore missing and
