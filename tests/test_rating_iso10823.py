@@ -230,3 +230,22 @@ def test_cli_rating_iso10823(capsys):
     assert main(["rating", "--chain", "12B-1", "--teeth", "17", "--speed", "1400 rpm"]) == 0
     text = capsys.readouterr().out
     assert "iso10823" in text and "provisional" in text
+
+
+def test_rating_constants_and_chart_follow_the_method():
+    import matplotlib
+
+    matplotlib.use("Agg")
+    from chaindrive.plotting.drive import rating_plot
+    from chaindrive.rating import rating_constants
+
+    assert rating_constants("16B-1", "iso10823") == (0.004, 22.9)
+    assert rating_constants("16B-1", "ansi") == (0.004, 17.0)
+    with pytest.raises(UnknownNameError, match="unknown rating method 'iso'"):
+        rating_constants("16B-1", "iso")
+    r = _rate("16B-1", 19, 1400)
+    fig = rating_plot(r, speed_range=(100.0, 1000.0))
+    line = next(ln for ln in fig.axes[0].lines if str(ln.get_label()).startswith("roller"))
+    x, y = line.get_data()
+    assert float(x[0]) == pytest.approx(100.0)
+    assert float(y[0]) == pytest.approx(_rate("16B-1", 19, 100).roller_bushing / 1e3, rel=1e-9)

@@ -42,7 +42,8 @@ from .ansi import (
 if TYPE_CHECKING:
     from ..chains import Chain
 
-__all__ = ["ChainRating", "chain_rating", "RATING_METHODS", "RATING_CURVES", "default_method", "rated_power_curve", "HP"]
+__all__ = ["ChainRating", "chain_rating", "RATING_METHODS", "RATING_CURVES", "default_method", "rated_power_curve", "HP",
+           "rating_constants"]
 
 # --------------------------------------------------------------------------- one chain
 
@@ -374,6 +375,43 @@ def default_method(chain: Chain) -> str:
     if chain.family == "iso606" and is_b_series(chain.name) and "iso10823" in RATING_METHODS:
         return "iso10823"
     return "ansi"
+
+
+def rating_constants(name: str, method: str = "ansi") -> tuple[float, float]:
+    r"""Branch constants ``(K_p, K_r)`` a method uses for a chain name (both methods share the ACA form).
+
+    .. math:: H_1 \propto K_p,\qquad H_2 \propto K_r
+
+    Parameters
+    ----------
+    name : str
+        Chain name.
+    method : str
+        ``"ansi"`` or ``"iso10823"``.
+
+    Returns
+    -------
+    tuple of float
+
+    Raises
+    ------
+    UnknownNameError
+        An unknown method.
+
+    References
+    ----------
+    :func:`~chaindrive.rating.ansi.ansi_constants`,
+    :func:`~chaindrive.rating.iso10823.iso10823_constants`.
+
+    Examples
+    --------
+    >>> rating_constants("16B-1", "iso10823"), rating_constants("16B-1", "ansi")
+    ((0.004, 22.9), (0.004, 17.0))
+    """
+    from .iso10823 import iso10823_constants
+
+    RATING_METHODS.get(method)
+    return iso10823_constants(name) if method == "iso10823" else ansi_constants(name)
 
 
 def _ansi_curve(chain: Chain, teeth: int, angular_velocity: np.ndarray) -> np.ndarray:
