@@ -196,3 +196,32 @@ def test_start_through_a_coupling_with_the_implicit_integrator():
     wm, w = _rigid(coupling, model, r.time)
     assert np.max(np.abs(r.motor_speed[:, 0] - wm)) < 0.01 * W0
     assert np.max(np.abs(r.wheel_speed[:, 1] - w)) < 0.015 * W0
+
+
+def test_conveyor_start_up_through_a_coupling_runs_at_the_couplings_slip():
+    # start_up(..., coupling=...) on an 8 m conveyor: at the end the coupling carries the
+    # head's pull (T = F R) with the motor ahead of the head by the coupling's slip
+    from chaindrive.analysis.conveyor import conveyor_pull
+    from chaindrive.simulation.conveyor import start_up
+    from test_simulation_conveyor import _short
+
+    d = _short(length=8.0)
+    motor = Motor.rated(30e3, 5.0, rated_slip=0.05, breakdown_ratio=2.8)
+    cpl = FluidCoupling.sized(30e3 / 5.0, 5.0, nominal_slip=0.03, stall_ratio=1.5)
+    su, res, model = start_up(d, 1.5, motor=motor, motor_inertia=40.0, coupling=cpl, secondary_inertia=10.0,
+                              samples=600)
+    assert model.wheels[0].coupling is cpl and model.wheels[0].motor_inertia == 40.0
+    pull = conveyor_pull(d)
+    radius = float(model.pitch_radii()[0])
+    tail = su.time > 1.0
+    torque = float(np.mean(su.drive_torque[tail]))
+    assert torque == pytest.approx(pull.head_force * radius, rel=0.1)
+    head = res.wheel_speed[tail, 0]
+    slip = 1.0 - float(np.mean(head)) / float(np.mean(su.motor_speed[tail]))
+    # the slip the coupling's characteristic gives for that torque at that primary speed
+    wm = float(np.mean(su.motor_speed[tail]))
+    phi = torque / (cpl.nominal_torque * (wm / cpl.nominal_speed) ** 2)
+    c = cpl.shape_constant
+    s_expected = cpl.nominal_slip * phi / (1 + c - c * phi)
+    assert slip == pytest.approx(s_expected, rel=0.15)
+    assert 0.0 < slip < cpl.nominal_slip
