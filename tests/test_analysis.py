@@ -41,7 +41,11 @@ def _leaves(x, path=""):
 #: judged by its forced response, docs/vibration.md §6); the Campbell lines and the free
 #: spans' information pairs follow the same excitations (a roller chain's meshing left them,
 #: its unequal links z1 ω1/2 came in).
-MOVED = ("safety.checks", "Span vibration and resonance check.tensioner.check",
+#: The dynamic load (issue 19): a roller chain's dynamic tension is the spring-mass model's, so the
+#: roller example's dynamic load, F_max, dynamic factor, moving mass and static safety moved
+#: (docs/design.md, "The dynamic load and the simulation").
+MOVED = ("safety.checks", "Loads and safety.tensions.dynamic", "Loads and safety.tensions.maximum",
+         "Loads and safety.tensions.moving_mass", "Loads and safety.safety.static_safety", "Span vibration and resonance check.tensioner.check",
          "Span vibration and resonance check.check", "Span vibration and resonance check.tensioner.campbell",
          "Span vibration and resonance check.free_spans.check")
 
