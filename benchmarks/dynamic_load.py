@@ -1,7 +1,7 @@
 """The analysis's dynamic load of the polygonal action against the simulation's peak tension.
 
 For roller-chain drives (the roller example, the ``chaindrive new`` roller template and the
-design procedure's drive of issue 19, and its former answer 12A-1) it prints, like with like, the analysis at the
+design procedure's drive of issue 19 (12A-1) and its duplex candidate 10B-2) it prints, like with like, the analysis at the
 *nominal* torque (``K_s = 1``: the simulation runs the nominal torque): the tight-side
 tension ``F_tight = T/R + S + q v²``, the dynamic tension ``F_d`` of the polygonal action
 (:func:`chaindrive.analysis.loads.polygonal_spring_mass` +
@@ -48,10 +48,10 @@ def drives() -> Iterator[tuple[str, Drive]]:
                 centre_distance=0.6)
     drive = design_drive(duty).recommended.drive()
     yield f"issue 19 duty (design_drive, {drive.chain.name})", drive
-    # the procedure's answer before the spring-mass dynamic load (12A-1, 19/58, 104 links)
+    # the procedure's duplex candidate (10B-2, 19/58, 116 links)
     from chaindrive.chains import get
 
-    yield "issue 19 duty, 12A-1 104 links", drive.replace(chain=get("12A-1"), links=104)
+    yield "issue 19 duty, 10B-2 116 links", drive.replace(chain=get("10B-2"), links=116)
 
 
 def sweep() -> Iterator[tuple[str, Drive]]:

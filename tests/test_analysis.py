@@ -54,7 +54,10 @@ MOVED = ("safety.checks", "Loads and safety.tensions.dynamic", "Loads and safety
          # the B-series link-plate constant 0.00434 (docs/rating.md, "ISO 10823"): the 16B-1 rating of
          # roller_industrial and the wear life that scales with it rise by 0.00434/0.004
          "Loads and safety.rating.link_plate", "Loads and safety.rating.rated_power",
-         "Loads and safety.safety.rated_power", "Wear life.life.hours")
+         "Loads and safety.safety.rated_power", "Wear life.life.hours",
+         # the required static safety of roller chains 7 -> 6 (Diamond Chain's 1/6 rule on F_max,
+         # docs/design.md "One static safety"); the roller example's project file states it
+         "Input data.inputs.required_static_safety", "Loads and safety.safety.required_static_safety")
 
 
 @pytest.mark.parametrize("name", NAMES)

@@ -537,13 +537,17 @@ def shaft_load(tensions: ArrayLike, directions: ArrayLike) -> tuple[FloatOrArray
 
 
 #: Required static safety ``F_B / F_max`` by chain kind, the one table of chaindrive (a
-#: project may set its own ``required_static_safety``): roller chains 7 (the project
-#: default since chaindrive's first release; stricter than Diamond Chain's "load in service
-#: should never exceed 1/6 of the ultimate strength", because ``F_max`` includes the slack,
-#: centrifugal and dynamic parts), round link chains 3.5 (mining scraper conveyors, the
-#: value of the Dolipiński et al. example drive). No standard table prescribing either was
-#: found (docs/design.md).
-REQUIRED_STATIC_SAFETY = {"roller": 7.0, "link": 3.5}
+#: project may set its own ``required_static_safety``). Roller chains 6: Diamond Chain
+#: Company, "What is working load and what role does it play in selecting roller chain?"
+#: (engineering FAQ, diamondchain.com): the chain pull should not exceed 1/6 of the ultimate
+#: tensile strength with press-fit connecting links or non-offset links, 1/9 with slip-fit
+#: connecting links or offset links (a project with those sets ``required_static_safety =
+#: 9``); the rule guards against link-plate fatigue of a continuously running chain, so it
+#: is applied to the largest tension in service, ``F_max``, which includes the slack,
+#: centrifugal and the polygonal action's dynamic tension (:func:`polygonal_dynamic_tension`).
+#: Round link chains 3.5 (mining scraper conveyors, the value of the Dolipiński et al.
+#: example drive; no standard prescribing it was found). docs/design.md.
+REQUIRED_STATIC_SAFETY = {"roller": 6.0, "link": 3.5}
 
 
 def static_safety_factor(breaking_force: ArrayLike, tension: ArrayLike) -> FloatOrArray:

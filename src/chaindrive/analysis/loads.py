@@ -36,7 +36,7 @@ def required_static_safety(chain: Chain) -> float:
 
     >>> from chaindrive.chains import get
     >>> required_static_safety(get("18x64")), required_static_safety(get("16B-1"))
-    (3.5, 7.0)
+    (3.5, 6.0)
     """
     return REQUIRED_STATIC_SAFETY["link" if chain.is_link_chain else "roller"]
 

@@ -80,7 +80,7 @@ class DesignCandidate(Result):
     lubrication: str = ""
     lubrication_method: str = ""
     static_safety: float | None = quantity("1", default=None)
-    required_static_safety: float = quantity("1", default=7.0)
+    required_static_safety: float = quantity("1", default=6.0)
     maximum_tension: float = quantity("N", default=0.0)
     teeth_rule: str = ""
     factors: tuple[Factor, ...] = ()
@@ -341,7 +341,7 @@ def design_drive(duty: Duty, *, teeth_driving: int | None = None, family: str | 
     >>> r = design_drive(duty)
     >>> c = r.recommended
     >>> c.chain, c.driving_teeth, c.driven_teeth, c.links, round(c.centre_distance * 1e3, 1)
-    ('10B-2', 19, 58, 116, 607.1)
+    ('12A-1', 19, 58, 104, 612.4)
     """
     from ..chains import catalogue, equivalent_names
     from ..rating import RATING_METHODS
