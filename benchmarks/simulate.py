@@ -532,14 +532,14 @@ def scaling(lengths=(100, 500, 1000, 2000, 5000), link_steps=1.5e8):
 def pick_converged(rows, ref=None):
     """The largest step whose run is converged against its halved step and (``ref``) within
     ``TOL_REF`` of the reference in mean speed and mean tight-side tension; else the
-    finest converged one, else the finest. Returns (row, converged, within the reference)."""
+    largest converged one, else the finest. Returns (row, converged, within the reference)."""
     converged(rows)
     conv = [x for x in rows if x.get("conv")]
     for x in conv:
         if ref is None or (abs(_rel(x, ref, "v_mean")) <= TOL_REF
                            and abs(_rel(x, ref, "tight_mean")) <= TOL_REF):
             return x, True, True
-    return (conv[-1], True, False) if conv else (rows[-1], False, False)
+    return (conv[0], True, False) if conv else (rows[-1], False, False)
 
 
 def main():
