@@ -47,7 +47,7 @@ C_BETA, C_S, C_NX, C_NY, C_L, C_LT, C_DN, C_DT, C_FN0, C_FT0, C_FN = range(11)
 
 
 @njit(cache=True, fastmath=False)
-def cyclic_tridiagonal_factor(d, e, idd, ff):
+def cyclic_tridiagonal_factor(d: np.ndarray, e: np.ndarray, idd: np.ndarray, ff: np.ndarray) -> float:
     """Factor the symmetric cyclic tridiagonal matrix ``A`` (n >= 3); return the last pivot.
 
     ``A[l, l] = d[l]``, ``A[l, l+1] = A[l+1, l] = e[l]`` (``l + 1`` modulo n: ``e[n-1]``
@@ -72,7 +72,8 @@ def cyclic_tridiagonal_factor(d, e, idd, ff):
 
 
 @njit(cache=True, fastmath=False)
-def cyclic_tridiagonal_substitute(e, idd, ff, dlast, b, x):
+def cyclic_tridiagonal_substitute(e: np.ndarray, idd: np.ndarray, ff: np.ndarray, dlast: float,
+                                  b: np.ndarray, x: np.ndarray) -> None:
     """Solve ``A x = b`` with the factors of :func:`cyclic_tridiagonal_factor` (``x`` may be ``b``)."""
     n = b.shape[0]
     # forward: x holds the eliminated right-hand side
@@ -95,7 +96,7 @@ def cyclic_tridiagonal_substitute(e, idd, ff, dlast, b, x):
 
 
 @njit(cache=True, fastmath=False)
-def cyclic_tridiagonal_solve(d, e, b, x):
+def cyclic_tridiagonal_solve(d: np.ndarray, e: np.ndarray, b: np.ndarray, x: np.ndarray) -> None:
     """``A x = b`` for the symmetric cyclic tridiagonal ``A`` (:func:`cyclic_tridiagonal_factor`)."""
     n = d.shape[0]
     idd = np.empty(n)
@@ -307,9 +308,13 @@ def _solve(n, nw, yx, yy, wxx, wxy, wyy, ux, uy, dg, of, dd, ff, lam, inv_ak, dv
 
 
 @njit(cache=True, fastmath=False)
-def integrate_implicit(pos, vel, force, work, tension, contact, ws, wp, gd, tab, par, t0, nsteps,
-                       record_every, probes, rec_t, rec_probe, rec_tension, rec_contact, rec_ws,
-                       rec_pos, rec_energy, rec_start):
+def integrate_implicit(pos: np.ndarray, vel: np.ndarray, force: np.ndarray, work: np.ndarray,
+                       tension: np.ndarray, contact: np.ndarray, ws: np.ndarray, wp: np.ndarray,
+                       gd: np.ndarray, tab: np.ndarray, par: np.ndarray, t0: float, nsteps: int,
+                       record_every: int, probes: np.ndarray, rec_t: np.ndarray,
+                       rec_probe: np.ndarray, rec_tension: np.ndarray, rec_contact: np.ndarray,
+                       rec_ws: np.ndarray, rec_pos: np.ndarray, rec_energy: np.ndarray,
+                       rec_start: int) -> int:
     """Advance ``nsteps`` linearly implicit steps from ``t0``; return the records written.
 
     Same arguments as :func:`._kernel.integrate` (``force`` and ``work`` unused).
