@@ -106,8 +106,8 @@ def cyclic_tridiagonal_solve(d: np.ndarray, e: np.ndarray, b: np.ndarray, x: np.
 
 
 @njit(cache=True, fastmath=False)
-def _apply_inverse(gx, gy, ox, oy, wxx, wxy, wyy, ux, uy, of, idd, ff, dlast, lam):
-    """``o = P⁻¹ g`` for ``P = W⁻¹ + Gᵀ a G`` (Woodbury, factored link system)."""
+def _link_rhs(gx, gy, ox, oy, wxx, wxy, wyy, ux, uy, lam):
+    """``o = W g`` and the link system's right-hand side ``λ = G o``."""
     n = gx.shape[0]
     for i in range(n):
         ox[i] = wxx[i] * gx[i] + wxy[i] * gy[i]
@@ -115,13 +115,79 @@ def _apply_inverse(gx, gy, ox, oy, wxx, wxy, wyy, ux, uy, of, idd, ff, dlast, la
     for li in range(n - 1):
         lam[li] = ux[li] * (ox[li + 1] - ox[li]) + uy[li] * (oy[li + 1] - oy[li])
     lam[n - 1] = ux[n - 1] * (ox[0] - ox[n - 1]) + uy[n - 1] * (oy[0] - oy[n - 1])
-    cyclic_tridiagonal_substitute(of, idd, ff, dlast, lam, lam)
+
+
+@njit(cache=True, fastmath=False)
+def _link_back(ox, oy, wxx, wxy, wyy, ux, uy, lam):
+    """``o ← o − W Gᵀ λ``, ``(Gᵀ λ)_i = λ_{i−1} u_{i−1} − λ_i u_i``."""
+    n = ox.shape[0]
     for i in range(n):
         im = i - 1 if i > 0 else n - 1
         gtx = lam[im] * ux[im] - lam[i] * ux[i]
         gty = lam[im] * uy[im] - lam[i] * uy[i]
         ox[i] -= wxx[i] * gtx + wxy[i] * gty
         oy[i] -= wxy[i] * gtx + wyy[i] * gty
+
+
+@njit(cache=True, fastmath=False)
+def _apply_inverse(gx, gy, ox, oy, wxx, wxy, wyy, ux, uy, of, idd, ff, dlast, lam):
+    """``o = P⁻¹ g`` for ``P = W⁻¹ + Gᵀ a G`` (Woodbury, factored link system)."""
+    _link_rhs(gx, gy, ox, oy, wxx, wxy, wyy, ux, uy, lam)
+    cyclic_tridiagonal_substitute(of, idd, ff, dlast, lam, lam)
+    _link_back(ox, oy, wxx, wxy, wyy, ux, uy, lam)
+
+
+@njit(cache=True, fastmath=False)
+def _factor_solve2(d, e, idd, ff, b0, b1):
+    """:func:`cyclic_tridiagonal_factor` fused with the solution of two right-hand sides
+    (in place): the division recurrence of the factorisation and the multiply–add
+    recurrences of the substitutions run in one loop, so that they overlap."""
+    n = d.shape[0]
+    dcur = d[0]
+    ff[0] = e[n - 1]
+    dlast = d[n - 1]
+    bl0 = b0[n - 1]
+    bl1 = b1[n - 1]
+    p0 = b0[0]
+    p1 = b1[0]
+    for ll in range(n - 2):
+        ip = 1.0 / dcur
+        idd[ll] = ip
+        el = e[ll]
+        fl = ff[ll]
+        dcur = d[ll + 1] - el * el * ip
+        ff[ll + 1] = -el * ip * fl
+        dlast -= fl * fl * ip
+        q0 = p0 * ip
+        q1 = p1 * ip
+        bl0 -= fl * q0
+        bl1 -= fl * q1
+        p0 = b0[ll + 1] - el * q0
+        p1 = b1[ll + 1] - el * q1
+        b0[ll + 1] = p0
+        b1[ll + 1] = p1
+    ip = 1.0 / dcur
+    idd[n - 2] = ip
+    fl = ff[n - 2] + e[n - 2]
+    ff[n - 2] = fl
+    dlast -= fl * fl * ip
+    xl0 = (bl0 - fl * p0 * ip) / dlast
+    xl1 = (bl1 - fl * p1 * ip) / dlast
+    b0[n - 1] = xl0
+    b1[n - 1] = xl1
+    n0 = (p0 - fl * xl0) * ip
+    n1 = (p1 - fl * xl1) * ip
+    b0[n - 2] = n0
+    b1[n - 2] = n1
+    for ll in range(n - 3, -1, -1):
+        el = e[ll]
+        fl = ff[ll]
+        ip = idd[ll]
+        n0 = (b0[ll] - el * n0 - fl * xl0) * ip
+        n1 = (b1[ll] - el * n1 - fl * xl1) * ip
+        b0[ll] = n0
+        b1[ll] = n1
+    return dlast
 
 
 @njit(cache=True, fastmath=False)
@@ -204,8 +270,8 @@ def _drop_tensile(cinfo, ncand, cand, qrot, qsl, dq, dvx, dvy, yx, yy, mxx, mxy,
 
 
 @njit(cache=True, fastmath=False)
-def _solve(n, nw, yx, yy, wxx, wxy, wyy, ux, uy, dg, of, dd, ff, lam, inv_ak, dvx, dvy, ws, wp,
-           ncand, cand, cinfo, qrot, qsl, bx, by, zx, zy, sq, fq, wtq, wsf, h, t, gx, gy):
+def _solve(n, nw, yx, yy, wxx, wxy, wyy, ux, uy, dg, of, dd, ff, lam, lam1, inv_ak, dvx, dvy, ws,
+           wp, ncand, cand, cinfo, qrot, qsl, bx, by, zx, zy, sq, fq, wtq, wsf, h, t, gx, gy):
     """Velocity changes of the pins (``dvx``, ``dvy``) and of the wheels' rotations and
     slides in contact (``fq[qrot[w]]``, ``fq[qsl[w]]``) of one linearly implicit step."""
     # links: P = W⁻¹ + Gᵀ a G; by Woodbury P⁻¹ g = W g − W Gᵀ λ with
@@ -217,8 +283,6 @@ def _solve(n, nw, yx, yy, wxx, wxy, wyy, ux, uy, dg, of, dd, ff, lam, inv_ak, dv
         dg[li] = inv_ak + ex * ((wxx[li] + wxx[j]) * ex + (wxy[li] + wxy[j]) * ey) \
             + ey * ((wxy[li] + wxy[j]) * ex + (wyy[li] + wyy[j]) * ey)
         of[li] = -(ex * (wxx[j] * ux[j] + wxy[j] * uy[j]) + ey * (wxy[j] * ux[j] + wyy[j] * uy[j]))
-    dlast = cyclic_tridiagonal_factor(dg, of, dd, ff)
-    _apply_inverse(yx, yy, dvx, dvy, wxx, wxy, wyy, ux, uy, of, dd, ff, dlast, lam)
     # the wheels' rotations and slides in contact with pins: bordered system
     # [[P, B], [Bᵀ, Q]] [Δv, Δq] = [F, F_q], solved by its Schur complement
     nq = 0
@@ -277,10 +341,17 @@ def _solve(n, nw, yx, yy, wxx, wxy, wyy, ux, uy, dg, of, dd, ff, lam, inv_ak, dv
             if qr >= 0 and qs >= 0:
                 sq[qr, qs] += be * lev * dn + s * levt * dtt
                 sq[qs, qr] += be * lev * dn + s * levt * dtt
+    # P⁻¹ F and P⁻¹ B_0 with the factorisation in one pass, further border columns after
+    _link_rhs(yx, yy, dvx, dvy, wxx, wxy, wyy, ux, uy, lam)
     if nq > 0:
-        for q in range(nq):
+        _link_rhs(bx[0], by[0], zx[0], zy[0], wxx, wxy, wyy, ux, uy, lam1)
+    dlast = _factor_solve2(dg, of, dd, ff, lam, lam1)
+    _link_back(dvx, dvy, wxx, wxy, wyy, ux, uy, lam)
+    if nq > 0:
+        _link_back(zx[0], zy[0], wxx, wxy, wyy, ux, uy, lam1)
+        for q in range(1, nq):
             _apply_inverse(bx[q], by[q], zx[q], zy[q], wxx, wxy, wyy, ux, uy, of, dd, ff,
-                           dlast, lam)
+                           dlast, lam1)
         # Schur complement S = Q − Bᵀ P⁻¹ B, right-hand side F_q − Bᵀ P⁻¹ F; B is
         # sparse (its rows live on their wheel's candidate pins)
         for w in range(nw):
@@ -372,6 +443,7 @@ def integrate_implicit(pos: np.ndarray, vel: np.ndarray, force: np.ndarray, work
     dg = np.empty(n)
     of = np.empty(n)
     lam = np.empty(n)
+    lam1 = np.zeros(n)
     dd = np.empty(n)
     ff = np.empty(n)
     dvx = np.empty(n)
@@ -698,8 +770,9 @@ def integrate_implicit(pos: np.ndarray, vel: np.ndarray, force: np.ndarray, work
         # active set of the wheel contacts: a contact whose normal force at the end of
         # the step comes out tensile is dropped and the step solved again
         for it in range(4):
-            _solve(n, nw, yx, yy, wxx, wxy, wyy, ux, uy, dg, of, dd, ff, lam, inv_ak, dvx, dvy, ws,
-                   wp, ncand, cand, cinfo, qrot, qsl, bx, by, zx, zy, sq, fq, wtq, wsf, h, t, gx, gy)
+            _solve(n, nw, yx, yy, wxx, wxy, wyy, ux, uy, dg, of, dd, ff, lam, lam1, inv_ak, dvx,
+                   dvy, ws, wp, ncand, cand, cinfo, qrot, qsl, bx, by, zx, zy, sq, fq, wtq, wsf, h,
+                   t, gx, gy)
             if it == 3 or not _drop_tensile(cinfo, ncand, cand, qrot, qsl, fq, dvx, dvy, yx, yy,
                                             mxx, mxy, myy, wtq, wsf, contact):
                 break
