@@ -121,12 +121,17 @@ def _link_rhs(gx, gy, ox, oy, wxx, wxy, wyy, ux, uy, lam):
 def _link_back(ox, oy, wxx, wxy, wyy, ux, uy, lam):
     """``o ← o − W Gᵀ λ``, ``(Gᵀ λ)_i = λ_{i−1} u_{i−1} − λ_i u_i``."""
     n = ox.shape[0]
-    for i in range(n):
-        im = i - 1 if i > 0 else n - 1
-        gtx = lam[im] * ux[im] - lam[i] * ux[i]
-        gty = lam[im] * uy[im] - lam[i] * uy[i]
-        ox[i] -= wxx[i] * gtx + wxy[i] * gty
-        oy[i] -= wxy[i] * gtx + wyy[i] * gty
+    _link_back_pin(ox, oy, wxx, wxy, wyy, ux, uy, lam, 0, n - 1)
+    for i in range(1, n):
+        _link_back_pin(ox, oy, wxx, wxy, wyy, ux, uy, lam, i, i - 1)
+
+
+@njit(cache=True, fastmath=False, inline="always")
+def _link_back_pin(ox, oy, wxx, wxy, wyy, ux, uy, lam, i, im):
+    gtx = lam[im] * ux[im] - lam[i] * ux[i]
+    gty = lam[im] * uy[im] - lam[i] * uy[i]
+    ox[i] -= wxx[i] * gtx + wxy[i] * gty
+    oy[i] -= wxy[i] * gtx + wyy[i] * gty
 
 
 @njit(cache=True, fastmath=False)
@@ -269,6 +274,16 @@ def _drop_tensile(cinfo, ncand, cand, qrot, qsl, dq, dvx, dvy, yx, yy, mxx, mxy,
     return changed
 
 
+@njit(cache=True, fastmath=False, inline="always")
+def _link_entries(dg, of, wxx, wxy, wyy, ux, uy, inv_ak, li, j):
+    """Diagonal and off-diagonal entry of link ``li`` (pins ``li``, ``j``) in ``1/a + G W Gᵀ``."""
+    ex = ux[li]
+    ey = uy[li]
+    dg[li] = inv_ak + ex * ((wxx[li] + wxx[j]) * ex + (wxy[li] + wxy[j]) * ey) \
+        + ey * ((wxy[li] + wxy[j]) * ex + (wyy[li] + wyy[j]) * ey)
+    of[li] = -(ex * (wxx[j] * ux[j] + wxy[j] * uy[j]) + ey * (wxy[j] * ux[j] + wyy[j] * uy[j]))
+
+
 @njit(cache=True, fastmath=False)
 def _solve(n, nw, yx, yy, wxx, wxy, wyy, ux, uy, dg, of, dd, ff, lam, lam1, inv_ak, dvx, dvy, ws,
            wp, ncand, cand, cinfo, qrot, qsl, bx, by, zx, zy, sq, fq, wtq, wsf, h, t, gx, gy):
@@ -276,13 +291,9 @@ def _solve(n, nw, yx, yy, wxx, wxy, wyy, ux, uy, dg, of, dd, ff, lam, lam1, inv_
     slides in contact (``fq[qrot[w]]``, ``fq[qsl[w]]``) of one linearly implicit step."""
     # links: P = W⁻¹ + Gᵀ a G; by Woodbury P⁻¹ g = W g − W Gᵀ λ with
     # (1/a + G W Gᵀ) λ = G W g, a cyclic tridiagonal system factored once per step
-    for li in range(n):
-        j = li + 1 if li + 1 < n else 0
-        ex = ux[li]
-        ey = uy[li]
-        dg[li] = inv_ak + ex * ((wxx[li] + wxx[j]) * ex + (wxy[li] + wxy[j]) * ey) \
-            + ey * ((wxy[li] + wxy[j]) * ex + (wyy[li] + wyy[j]) * ey)
-        of[li] = -(ex * (wxx[j] * ux[j] + wxy[j] * uy[j]) + ey * (wxy[j] * ux[j] + wyy[j] * uy[j]))
+    for li in range(n - 1):
+        _link_entries(dg, of, wxx, wxy, wyy, ux, uy, inv_ak, li, li + 1)
+    _link_entries(dg, of, wxx, wxy, wyy, ux, uy, inv_ak, n - 1, 0)
     # the wheels' rotations and slides in contact with pins: bordered system
     # [[P, B], [Bᵀ, Q]] [Δv, Δq] = [F, F_q], solved by its Schur complement
     nq = 0
@@ -555,8 +566,8 @@ def integrate_implicit(pos: np.ndarray, vel: np.ndarray, force: np.ndarray, work
                 rc = rout + margin
                 rc2 = rc * rc
                 nc = 0
-                for i in range(n):
-                    gcache[w, i] = -1
+                for ic in range(ncand[w]):
+                    gcache[w, cand[w, ic]] = -1
                 for i in range(n):
                     qx = x[i] - cx
                     qy = y[i] - cy
@@ -762,10 +773,12 @@ def integrate_implicit(pos: np.ndarray, vel: np.ndarray, force: np.ndarray, work
             nrec += 1
         # pins: forces F_i (explicit forces, gravity and the links' T*) and the
         # inverse W_i of the 2 x 2 matrix M_i/h + contact terms
+        yx[0] = fx[0] + fgx - cm * vx[0] + tstar[0] * ux[0] - tstar[n - 1] * ux[n - 1]
+        yy[0] = fy[0] + fgy - cm * vy[0] + tstar[0] * uy[0] - tstar[n - 1] * uy[n - 1]
+        for i in range(1, n):
+            yx[i] = fx[i] + fgx - cm * vx[i] + tstar[i] * ux[i] - tstar[i - 1] * ux[i - 1]
+            yy[i] = fy[i] + fgy - cm * vy[i] + tstar[i] * uy[i] - tstar[i - 1] * uy[i - 1]
         for i in range(n):
-            im = i - 1 if i > 0 else n - 1
-            yx[i] = fx[i] + fgx - cm * vx[i] + tstar[i] * ux[i] - tstar[im] * ux[im]
-            yy[i] = fy[i] + fgy - cm * vy[i] + tstar[i] * uy[i] - tstar[im] * uy[im]
             _pin_inverse(i, mh, mxx, mxy, myy, wxx, wxy, wyy)
         # active set of the wheel contacts: a contact whose normal force at the end of
         # the step comes out tensile is dropped and the step solved again
