@@ -34,11 +34,12 @@ from ._kernel import (
     _fast_atan2,
     _sat,
     _segment_frame,
-    drive_torque,
+    advance_motor,
     guide_penetration,
     nearest_seat,
     seat_penetration,
     speed_factor,
+    wheel_drive_torque,
     wheel_profile,
 )
 
@@ -320,7 +321,7 @@ def _solve(n, nw, yx, yy, wxx, wxy, wyy, ux, uy, dg, of, dd, ff, lam, lam1, inv_
             sq[qr, qr] = wp[w, K.W_INERTIA] / h
             fq[qr] = wtq[w] + wp[w, K.W_TORQUE] - wp[w, K.W_DAMP] * om
             if wp[w, K.W_MODE] == K.MODE_MOTOR:
-                fq[qr] += drive_torque(wp, w, om, t)
+                fq[qr] += wheel_drive_torque(wp, ws, w, om, t, fq[qr], h)
         if qs >= 0:
             sq[qs, qs] = wp[w, K.W_SMASS] / h
             fq[qs] = wsf[w] + wp[w, K.W_SF] - wp[w, K.W_SK] * ws[w, K.S_S] \
@@ -755,7 +756,7 @@ def integrate_implicit(pos: np.ndarray, vel: np.ndarray, force: np.ndarray, work
                     epot += 0.5 * wp[w, K.W_SK] * ws[w, K.S_S] ** 2 - wp[w, K.W_SF] * ws[w, K.S_S]
                     egrav -= wp[w, K.W_SMASS] * (gx * wp[w, K.W_DX] + gy * wp[w, K.W_DY]) \
                         * ws[w, K.S_S]
-                for col in range(6):
+                for col in range(ws.shape[1]):
                     rec_ws[nrec, w, col] = ws[w, col]
             rec_energy[nrec] = ekin + epot + egrav
             rec_t[nrec] = t
@@ -804,6 +805,8 @@ def integrate_implicit(pos: np.ndarray, vel: np.ndarray, force: np.ndarray, work
             x[i] += h * vx[i]
             y[i] += h * vy[i]
         for w in range(nw):
+            if wp[w, K.W_MODE] == K.MODE_MOTOR and qrot[w] >= 0:
+                advance_motor(wp, ws, w, t, h)   # the motor behind a fluid coupling
             if qrot[w] >= 0:
                 ws[w, K.S_OMEGA] += fq[qrot[w]]
             elif wp[w, K.W_MODE] == K.MODE_FREE or wp[w, K.W_MODE] == K.MODE_MOTOR:
@@ -811,7 +814,8 @@ def integrate_implicit(pos: np.ndarray, vel: np.ndarray, force: np.ndarray, work
                 om = ws[w, K.S_OMEGA]
                 tq = wp[w, K.W_TORQUE] - wp[w, K.W_DAMP] * om
                 if wp[w, K.W_MODE] == K.MODE_MOTOR:
-                    tq += drive_torque(wp, w, om, t)
+                    tq += wheel_drive_torque(wp, ws, w, om, t, tq, h)
+                    advance_motor(wp, ws, w, t, h)
                 ws[w, K.S_OMEGA] = om + h * tq / wp[w, K.W_INERTIA]
             else:
                 ws[w, K.S_OMEGA] = omu[w]

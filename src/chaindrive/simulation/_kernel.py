@@ -10,7 +10,8 @@ pos, vel : (N, 2) pin (hinge-centre) positions [m] and velocities [m/s].
 force, work : (N, 2) work arrays.
 tension : (N,) link forces of the last step [N] (link i joins pin i and i+1).
 contact : (N,) total normal contact force on each pin of the last step [N].
-ws : (W, 6) wheel state: theta, omega, slide s, slide sdot, contact torque, slide force.
+ws : (W, 7) wheel state: theta, omega, slide s, slide sdot, contact torque, slide force,
+    speed of the motor behind a fluid coupling (0 without one).
 wp : (W, NWP) wheel parameters (column indices ``W_*`` below).
 gd : (G, 7) guides: ax, ay, ux, uy, nx, ny, length.
 tab : (W, smax, 6) seat (gap) directions in the wheel frame and the cos/sin of the half
@@ -29,13 +30,16 @@ from numba import njit
 W_CX, W_CY, W_R, W_Z, W_RS, W_CPSI, W_SPSI, W_HTIP, W_INERTIA, W_MODE, W_OMEGA0, W_RAMP, \
     W_TORQUE, W_DAMP, W_SLIDE, W_DX, W_DY, W_SMASS, W_SK, W_SC, W_SF, W_NSEAT, W_DA, W_DB, \
     W_PLAIN, W_RE, W_CEA, W_CEB, W_TCA, W_TCB, W_DTA, W_DTB, W_MSYNC, W_MTK, W_MSK, W_RIPA, W_RIPW, \
-    W_TSTOP, W_TDOWN = range(39)
-NWP = 39
+    W_TSTOP, W_TDOWN, W_FCK, W_FCSN, W_FCC, W_FCJ = range(43)
+NWP = 43
 # time-varying drive: W_MSYNC, W_MTK, W_MSK synchronous speed [rad/s], breakdown torque [N m]
 # and breakdown slip of a motor on the Kloss curve (MODE_MOTOR, reduced to the wheel);
 # W_RIPA, W_RIPW relative amplitude and angular frequency [rad/s] of a torque ripple;
 # W_TSTOP, W_TDOWN: from W_TSTOP [s] the motor is off (MODE_MOTOR) or the prescribed
 # speed falls linearly to 0 over W_TDOWN [s] (MODE_SPEED); W_TSTOP <= 0: never
+# W_FCJ > 0: the motor drives through a constant-fill fluid coupling (chaindrive.coupling):
+# the motor rotor and coupling primary (inertia W_FCJ [kg m²], speed S_MOTOR) are their own
+# degree of freedom; W_FCK = T_n (1 + c)/ω_n², W_FCSN = s_n, W_FCC = c (coupling_torque)
 # W_RE > 0: ISO 606 convex flank arc of radius r_e (sprockets): its centre (W_CEA, W_CEB)
 # and the tooth corner (W_TCA, W_TCB) in gap coordinates (a, |b|), the unit direction
 # (W_DTA, W_DTB) from the flank centre to the corner; W_RE = 0: straight flank (pockets)
@@ -43,7 +47,10 @@ NWP = 39
 # W_NSEAT: number of seats per turn (z for a sprocket, 2z for a pocket wheel); W_DA, W_DB:
 # central angles [rad] spanned by an even link (pins 2k, 2k+1) and an odd link when seated
 # wheel state columns
-S_THETA, S_OMEGA, S_S, S_SDOT, S_TORQUE, S_SFORCE = range(6)
+S_THETA, S_OMEGA, S_S, S_SDOT, S_TORQUE, S_SFORCE, S_MOTOR, S_COUPLING = range(8)
+NWS = 8
+# S_MOTOR: speed of the motor behind a fluid coupling; S_COUPLING: the coupling's torque
+# on the wheel in the last step (both 0 without a coupling)
 # parameter vector
 P_MASS, P_K, P_C, P_PITCH, P_RROLLER, P_KC, P_CC, P_MU, P_VEPS, P_GX, P_GY, P_DT, P_CGLOB, \
     P_KG, P_CG, P_DTREF, P_PITCH2, P_THETA = range(18)
@@ -246,6 +253,59 @@ def drive_torque(wp, w, om, t):
     if wp[w, W_RIPA] != 0.0:
         tq *= 1.0 + wp[w, W_RIPA] * math.sin(wp[w, W_RIPW] * t)
     return tq
+
+
+@njit(cache=True, fastmath=False, inline="always")
+def fluid_coupling_torque(wp, w, om_p, om_t):
+    """Torque [N m] of a constant-fill fluid coupling, primary at ``om_p``, secondary at
+    ``om_t`` (:func:`chaindrive.coupling.coupling_torque`, its regular form), and its
+    slope ``∂T/∂(om_p − om_t)`` [N m s] at constant ``om_p``."""
+    d = om_p - om_t
+    sp = wp[w, W_FCSN] * abs(om_p)
+    den = sp + wp[w, W_FCC] * abs(d)
+    if den <= 0.0:
+        return 0.0, 0.0
+    k = wp[w, W_FCK] * om_p * om_p
+    return k * d / den, k * sp / (den * den)
+
+
+@njit(cache=True, fastmath=False, inline="always")
+def fluid_coupling_step(wp, w, om_m, om, t, tload, dt):
+    """Coupling torque [N m] for the step ``t -> t + dt``: implicit in the slip.
+
+    The coupling is a stiff damper between the motor (inertia ``J_m``) and the wheel
+    (``J``); with its slope ``b`` the slip rate of the step solves
+    ``δ = dt [(T_m − T_c − b δ)/J_m − (T_load + T_c + b δ)/J]``, and ``T_c + b δ`` is
+    returned (backward Euler of the linearised coupling: stable for any ``dt``).
+    """
+    tc, b = fluid_coupling_torque(wp, w, om_m, om)
+    jm = wp[w, W_FCJ]
+    jw = wp[w, W_INERTIA]
+    tm = drive_torque(wp, w, om_m, t)
+    delta = dt * ((tm - tc) / jm - (tload + tc) / jw) / (1.0 + dt * b * (1.0 / jm + 1.0 / jw))
+    return tc + b * delta
+
+
+@njit(cache=True, fastmath=False, inline="always")
+def wheel_drive_torque(wp, ws, w, om, t, tload, dt):
+    """Torque [N m] driving wheel ``w`` (mode motor) in the step from ``t``: the motor's
+    at the wheel's speed ``om``, or through a fluid coupling the coupling's
+    (:func:`fluid_coupling_step`, kept in ``ws[w, S_COUPLING]`` for
+    :func:`advance_motor`); ``tload`` the other torques on the wheel."""
+    if wp[w, W_FCJ] > 0.0:
+        tc = fluid_coupling_step(wp, w, ws[w, S_MOTOR], om, t, tload, dt)
+        ws[w, S_COUPLING] = tc
+        return tc
+    return drive_torque(wp, w, om, t)
+
+
+@njit(cache=True, fastmath=False, inline="always")
+def advance_motor(wp, ws, w, t, dt):
+    """The motor behind a fluid coupling over the step: ``J_m ω̇_m = T_m(ω_m) − T_c`` with
+    the coupling torque of :func:`wheel_drive_torque` (once per step, after it)."""
+    if wp[w, W_FCJ] > 0.0:
+        om_m = ws[w, S_MOTOR]
+        ws[w, S_MOTOR] = om_m + (drive_torque(wp, w, om_m, t) - ws[w, S_COUPLING]) / wp[w, W_FCJ] * dt
 
 
 @njit(cache=True, fastmath=False, inline="always")
@@ -588,7 +648,7 @@ def integrate(pos, vel, force, work, tension, contact, ws, wp, gd, tab, par, t0,
                     ekin += 0.5 * wp[w, W_SMASS] * sv * sv
                     epot += 0.5 * wp[w, W_SK] * ws[w, S_S] ** 2 - wp[w, W_SF] * ws[w, S_S]
                     egrav -= wp[w, W_SMASS] * (gx * dxw + gy * dyw) * ws[w, S_S]
-                for col in range(6):
+                for col in range(ws.shape[1]):
                     rec_ws[nrec, w, col] = ws[w, col]
             rec_energy[nrec] = ekin + epot + egrav
             rec_t[nrec] = t
@@ -635,9 +695,10 @@ def integrate(pos, vel, force, work, tension, contact, ws, wp, gd, tab, par, t0,
             if mode == MODE_SPEED:
                 ws[w, S_OMEGA] = wp[w, W_OMEGA0] * speed_factor(wp, w, tn)
             elif mode == MODE_MOTOR:
-                acc = (ws[w, S_TORQUE] + drive_torque(wp, w, ws[w, S_OMEGA], t) + wp[w, W_TORQUE]
-                       - wp[w, W_DAMP] * ws[w, S_OMEGA]) / wp[w, W_INERTIA]
-                ws[w, S_OMEGA] += acc * dt
+                tload = ws[w, S_TORQUE] + wp[w, W_TORQUE] - wp[w, W_DAMP] * ws[w, S_OMEGA]
+                tc = wheel_drive_torque(wp, ws, w, ws[w, S_OMEGA], t, tload, dt)
+                advance_motor(wp, ws, w, t, dt)
+                ws[w, S_OMEGA] += (tload + tc) / wp[w, W_INERTIA] * dt
             elif mode == MODE_FREE:
                 acc = (ws[w, S_TORQUE] + wp[w, W_TORQUE] - wp[w, W_DAMP] * ws[w, S_OMEGA]) \
                     / wp[w, W_INERTIA]
@@ -709,5 +770,5 @@ def seat_table(wp):
 def empty_records(n_records, n_pins, n_wheels, n_probes):
     """Preallocated record arrays for :func:`integrate`."""
     return (np.zeros(n_records), np.zeros((n_records, n_probes)), np.zeros((n_records, n_pins)),
-            np.zeros((n_records, n_pins)), np.zeros((n_records, n_wheels, 6)),
+            np.zeros((n_records, n_pins)), np.zeros((n_records, n_wheels, NWS)),
             np.zeros((n_records, n_pins, 2)), np.zeros(n_records))

@@ -57,6 +57,7 @@ from ..drive.model import Tensioner, Wheel, sides_per_turn
 from ..errors import InputError
 
 if TYPE_CHECKING:
+    from ..coupling import FluidCoupling
     from ..geometry.sprocket import IsoToothForm
     from ..motor import Motor
 
@@ -122,6 +123,13 @@ class SimWheel:
         ripple ``1 + a sin(Ω t)``, ``|a| < 1``.
     ripple_frequency : float
         ``Ω`` [rad/s].
+    coupling : chaindrive.coupling.FluidCoupling, optional
+        Mode ``"motor"``: the motor drives the wheel through this constant-fill fluid
+        coupling (reduced to the wheel); the motor rotor and the coupling's primary are
+        then their own degree of freedom of inertia ``motor_inertia`` (not in
+        ``inertia``).
+    motor_inertia : float
+        With ``coupling``: motor rotor and coupling primary reduced to the wheel [kg m²], > 0.
 
     Notes
     -----
@@ -143,11 +151,19 @@ class SimWheel:
     stop_ramp: float = 0.0
     ripple: float = 0.0
     ripple_frequency: float = 0.0
+    coupling: FluidCoupling | None = None
+    motor_inertia: float = 0.0
 
     def __post_init__(self) -> None:
         if (self.mode == "motor") != (self.motor is not None):
             raise InputError("a wheel in mode 'motor' needs its motor (and a motor needs mode 'motor')",
                              field="motor")
+        if self.coupling is not None:
+            if self.motor is None:
+                raise InputError("a fluid coupling needs a motor (mode 'motor') in front of it", field="coupling")
+            check_positive("motor_inertia", self.motor_inertia, "kg m^2")
+        else:
+            check_nonnegative("motor_inertia", self.motor_inertia, "kg m^2")
         check_nonnegative("stop_time", self.stop_time, "s")
         check_nonnegative("stop_ramp", self.stop_ramp, "s")
         if not abs(float(self.ripple)) < 1:

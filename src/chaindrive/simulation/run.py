@@ -123,6 +123,9 @@ def kernel_arrays(model: SimulationModel, dt: float | None = None) -> tuple[np.n
             wp[i, K.W_MSYNC] = w.motor.synchronous_speed
             wp[i, K.W_MTK] = w.motor.breakdown_torque
             wp[i, K.W_MSK] = w.motor.breakdown_slip
+        if w.coupling is not None:
+            wp[i, K.W_FCK], wp[i, K.W_FCSN], wp[i, K.W_FCC] = w.coupling.kernel_constants()
+            wp[i, K.W_FCJ] = w.motor_inertia
         wp[i, K.W_RIPA] = w.ripple
         wp[i, K.W_RIPW] = w.ripple_frequency
         wp[i, K.W_TSTOP] = w.stop_time
@@ -225,7 +228,7 @@ def assemble(model: SimulationModel, *, dt: float | None = None, method: str = "
     nw = len(model.wheels)
     wp[:, K.W_CX] = centres[:, 0]
     wp[:, K.W_CY] = centres[:, 1]
-    ws = np.zeros((nw, 6))
+    ws = np.zeros((nw, K.NWS))
     ws[:, K.S_THETA] = theta
     run_wp = wp.copy()
     spans = [x[2] for x in pieces if x[0] == "span"]
@@ -618,6 +621,7 @@ def simulate(model: SimulationModel, duration: float, *, dt: float | None = None
         time=rt, probe_points=probes, chain_velocity=rprobe, tension=rten, contact_force=rcon,
         wheel_angle=rws[:, :, K.S_THETA], wheel_speed=rws[:, :, K.S_OMEGA],
         wheel_torque=rws[:, :, K.S_TORQUE], tensioner_position=rws[:, :, K.S_S],
+        motor_speed=rws[:, :, K.S_MOTOR],
         positions=rpos, energy=ren,
         wheel_centres=np.column_stack([wp[:, K.W_CX], wp[:, K.W_CY]]),
         pitch_radii=wp[:, K.W_R].copy(), teeth=wp[:, K.W_Z].astype(int),
