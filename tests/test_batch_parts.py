@@ -18,19 +18,10 @@ from chaindrive.analysis.batch import analyze_variants, replace_paths
 from chaindrive.analysis.parts import get_part, temporary_part
 from chaindrive.drive.project import load_project
 from chaindrive.errors import ChainDriveError, InputError
+from test_study_batch import _same
 
 EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
 ARCMIN = math.pi / 180 / 60
-
-
-def _same(a, b) -> bool:
-    if isinstance(a, float) and isinstance(b, float):
-        return math.isclose(a, b, rel_tol=1e-12, abs_tol=1e-300)
-    if isinstance(a, dict) and isinstance(b, dict):
-        return a.keys() == b.keys() and all(_same(a[k], b[k]) for k in a)
-    if isinstance(a, list) and isinstance(b, list):
-        return len(a) == len(b) and all(_same(x, y) for x, y in zip(a, b, strict=True))
-    return a == b
 
 
 def _roller(skew: float = 60 * ARCMIN):
