@@ -117,40 +117,53 @@ def probe_path(base: dict, inputs: dict[str, Any], path: str) -> tuple[tuple[Any
 
 
 class _Outputs:
-    """The JSON of each result head, computed once per distinct result object."""
+    """The outputs of a row, each read with :func:`~chaindrive.study.run.lookup` from its
+    head's JSON; a part's JSON and the outputs read from it once per distinct result
+    object (the parts computed once serve every variant)."""
 
-    def __init__(self) -> None:
-        self._cache: dict[int, tuple[Any, Any]] = {}
+    def __init__(self, outputs: Sequence[str]) -> None:
+        from ..analysis.parts import get_part, part_names
 
-    def part_json(self, part: Any, result: Any) -> Any:
-        if result is None:
-            return None
-        hit = self._cache.get(id(result))
-        if hit is None or hit[0] is not result:
-            hit = (result, part.to_json(result))
-            self._cache[id(result)] = hit
-        return hit[1]
+        names = set(part_names())
+        self.plan = [(out, out.split(".", 1)[0], out.split(".", 1)[1] if "." in out else None) for out in outputs]
+        self.parts = {head: get_part(head) for _, head, _ in self.plan if head in names}
+        self._cache: dict[int, tuple[Any, Any, dict[str, Any]]] = {}
 
-    def view(self, analysis: Any, heads: set[str]) -> dict[str, Any]:
-        from ..analysis.parts import get_part
+    def fill(self, row: dict[str, Any], analysis: Any) -> None:
+        from .run import lookup
 
-        out: dict[str, Any] = {}
-        for head in heads:
-            if head == "passed":
-                out[head] = analysis.passed
-            elif head == "checks":
-                out[head] = [c.to_dict() for c in analysis.checks]
-            elif head == "warnings":
-                out[head] = list(analysis.warnings)
-            elif head == "inputs":
-                out[head] = analysis.drive.inputs()
-            else:
-                try:
-                    part = get_part(head)
-                except Exception:  # noqa: BLE001 - the study file's outputs were checked
-                    continue
-                out[head] = self.part_json(part, analysis.results.get(head))
-        return out
+        special: dict[str, Any] = {}
+        for out, head, rest in self.plan:
+            part = self.parts.get(head)
+            if part is not None:
+                result = analysis.results.get(head)
+                hit = self._cache.get(id(result))
+                if hit is None or hit[0] is not result:
+                    hit = (result, part.to_json(result), {})
+                    self._cache[id(result)] = hit
+                data, values = hit[1], hit[2]
+                if isinstance(data, dict) and rest in data:  # what lookup finds first
+                    row[out] = data[rest]
+                elif out in values:
+                    row[out] = values[out]
+                else:
+                    row[out] = values[out] = lookup({head: data}, out)
+                continue
+            if out == "passed":
+                row[out] = analysis.passed
+                continue
+            if head not in special:
+                if head == "passed":
+                    special[head] = analysis.passed
+                elif head == "checks":
+                    special[head] = [c.to_dict() for c in analysis.checks]
+                elif head == "warnings":
+                    special[head] = list(analysis.warnings)
+                elif head == "inputs":
+                    special[head] = analysis.drive.inputs()
+                else:  # not a head of the analysis' dict
+                    special[head] = None
+            row[out] = lookup({head: special[head]}, out)
 
 
 def evaluate_batch(base: dict, variants: Sequence[dict[str, Any]], outputs: Sequence[str], *,
@@ -170,29 +183,32 @@ def evaluate_batch(base: dict, variants: Sequence[dict[str, Any]], outputs: Sequ
     """
     from ..analysis.batch import analyze_variants
     from ..drive.project import project_from_mapping
-    from .run import _one_line, lookup
+    from .run import _one_line
 
     if not variants:
         return []
     t0, c0 = time.perf_counter(), time.process_time()
     include = _include(outputs, parts)
-    heads = {o.split(".", 1)[0] for o in outputs} | {"warnings"}
     paths = list(variants[0])
     uniform = all(list(v) == paths for v in variants)
     fast: dict[str, tuple[tuple[Any, ...], float]] = {}
+    numbers: dict[str, list[float]] = {}
     if uniform and len(variants) > 1:
         for path in paths:
             found = probe_path(base, variants[0], path)
-            if found is not None and all(_number(v[path]) is not None
-                                         and _number(v[path])[1] == _number(variants[0][path])[1]  # type: ignore[index]
-                                         for v in variants):
+            if found is None:
+                continue
+            parsed = [_number(v[path]) for v in variants]
+            unit = parsed[0][1] if parsed[0] is not None else None
+            if all(x is not None and x[1] == unit for x in parsed):
                 fast[path] = found
+                numbers[path] = [x[0] for x in parsed]  # type: ignore[index]
     groups: dict[str, list[int]] = {}
     for i, v in enumerate(variants):
         key = repr(sorted((p, repr(x)) for p, x in v.items() if p not in fast)) if uniform else str(i)
         groups.setdefault(key, []).append(i)
     rows: list[dict[str, Any] | None] = [None] * len(variants)
-    outs = _Outputs()
+    outs = _Outputs(outputs)
     for members in groups.values():
         first = variants[members[0]]
         rows_of_group: list[tuple[int, Any]] = []
@@ -204,8 +220,7 @@ def evaluate_batch(base: dict, variants: Sequence[dict[str, Any]], outputs: Sequ
                 warnings.simplefilter("always")
                 drive = project_from_mapping(data, filename="variant")
             read_warnings = [str(w.message) for w in caught]
-            changes = [{fast[p][0]: fast[p][1] * _number(variants[i][p])[0]  # type: ignore[index]
-                        for p in fast} for i in members]
+            changes = [{fast[p][0]: fast[p][1] * numbers[p][i] for p in fast} for i in members]
             with warnings.catch_warnings(record=True) as caught:
                 warnings.simplefilter("always")
                 analyses = analyze_variants(drive, changes, include=include, errors="return")
@@ -214,6 +229,7 @@ def evaluate_batch(base: dict, variants: Sequence[dict[str, Any]], outputs: Sequ
         except Exception as exc:  # noqa: BLE001 - the group's project fails: per variant, as before
             extra = []
             rows_of_group = [(i, exc) for i in members]
+        joined: dict[tuple[str, ...], str | None] = {}  # the warnings column, per distinct tuple
         for i, analysis in rows_of_group:
             row: dict[str, Any] = dict.fromkeys(outputs)
             row["error"] = None
@@ -227,12 +243,12 @@ def evaluate_batch(base: dict, variants: Sequence[dict[str, Any]], outputs: Sequ
                     row["error"] = _one_line(analysis)
                 rows[i] = row
                 continue
-            view = outs.view(analysis, heads)
-            for out in outputs:
-                row[out] = lookup(view, out)
-            messages = list(dict.fromkeys([*analysis.warnings, *extra]))
-            if messages:
-                row["warnings"] = " | ".join(messages)[:2000]
+            outs.fill(row, analysis)
+            own = analysis.warnings
+            if own not in joined:
+                messages = list(dict.fromkeys([*own, *extra]))
+                joined[own] = " | ".join(messages)[:2000] if messages else None
+            row["warnings"] = joined[own]
             rows[i] = row
     seconds = (time.perf_counter() - t0) / len(variants)
     cpu = (time.process_time() - c0) / len(variants)
