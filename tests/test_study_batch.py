@@ -115,6 +115,31 @@ def test_the_skew_path_is_probed_as_linear():
     leaf, factor = probe_path(study.base, v, "contact.skew")
     assert leaf == ("contact", "skew") and factor == pytest.approx(math.pi / 180 / 60, rel=1e-12)
     assert probe_path(study.base, {**v, "wheels.0.teeth": 21}, "wheels.0.teeth") is None  # a count
+    # one number of a wheel's position (a tuple): that item is the leaf
+    leaf, factor = probe_path(study.base, {**v, "wheels.1.position.0": "1000 mm"}, "wheels.1.position.0")
+    assert leaf == ("wheels", 1, "position", 0) and factor == pytest.approx(1e-3, rel=1e-12)
+
+
+def test_varying_centre_distance_batched_equals_per_variant():
+    # the position is set directly in the variants' drives; each group (one per number of
+    # teeth) is analysed from one project read
+    vary = """
+[[vary]]
+path = "wheels.0.teeth"
+values = [19, 21]
+[[vary]]
+path = "wheels.1.position.0"
+unit = "mm"
+low = 900
+high = 1200
+count = 4
+[[vary]]
+path = "contact.skew"
+unit = "arcmin"
+values = [50, 150]
+"""
+    text = STUDY.format(vary=vary).replace('kind = "latin_hypercube"\nsamples = 12\nseed = 5', 'kind = "grid"')
+    _compare(parse_study(text, filename="s.toml", folder=EXAMPLES), 16)
 
 
 def test_run_batch_carries_batches():
@@ -162,3 +187,13 @@ def test_batch_errors():
     assert isinstance(out[0], InputError) and out[1].passed
     with pytest.raises(InputError):
         analyze_variants(drive, [{("load", "power"): -1.0}])
+
+
+def test_variant_key_is_the_canonical_hash():
+    from chaindrive.study.spec import canonical_hash
+
+    text = (EXAMPLES / "skew_study.toml").read_text()
+    study = parse_study(text, filename="skew_study.toml", folder=EXAMPLES)
+    for inputs in [study.variant_inputs(r) for r in study.rows()[:3]] + [{"wheels.0.teeth": 19, "x": "ü \"q\""}]:
+        assert study.key(inputs) == canonical_hash({"base": study.base_hash, "inputs": inputs,
+                                                    "outputs": list(study.outputs), "simulation": None})

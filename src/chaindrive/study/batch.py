@@ -80,7 +80,8 @@ def probe_path(base: dict, inputs: dict[str, Any], path: str) -> tuple[tuple[Any
     field of the drive (field = factor × number), else ``None``.
 
     Three drives are read with the number at x, x(1 + 1e-3) and x(1 − 1e-3); exactly one
-    leaf must change, and proportionally to 1e-12.
+    leaf must change (or one number of a tuple of numbers, such as a wheel's position),
+    and proportionally to 1e-12.
     """
     from ..drive.project import project_from_mapping
 
@@ -103,15 +104,22 @@ def probe_path(base: dict, inputs: dict[str, Any], path: str) -> tuple[tuple[Any
     changed = [k for k in first if first[k] is not second.get(k) and first[k] != second.get(k)]
     if len(changed) != 1 or set(first) != set(second) or set(first) != set(third):
         return None
-    leaf = changed[0]
+    leaf = key = changed[0]
     values = (first[leaf], second[leaf], third[leaf])
+    if all(isinstance(v, tuple) for v in values) and len({len(v) for v in values}) == 1:
+        # a number inside a tuple of numbers (a wheel's position): that item is the leaf
+        items = [j for j in range(len(values[0])) if values[0][j] != values[1][j]]
+        if len(items) != 1 or any(values[0][j] != values[2][j] for j in range(len(values[0])) if j != items[0]):
+            return None
+        leaf = (*leaf, items[0])
+        values = tuple(v[items[0]] for v in values)
     if not all(isinstance(v, float) and math.isfinite(v) for v in values):
         return None
     factor = values[0] / x
     for xi, v in zip((x * (1 + _PROBE_STEP), x * (1 - _PROBE_STEP)), values[1:], strict=True):
         if abs(v - factor * xi) > _LINEAR_TOLERANCE * max(abs(v), 1e-300):
             return None
-    if any(first[k] != third[k] for k in first if k != leaf):
+    if any(first[k] != third[k] for k in first if k != key):
         return None
     return leaf, factor
 
@@ -220,7 +228,9 @@ def evaluate_batch(base: dict, variants: Sequence[dict[str, Any]], outputs: Sequ
                 warnings.simplefilter("always")
                 drive = project_from_mapping(data, filename="variant")
             read_warnings = [str(w.message) for w in caught]
-            changes = [{fast[p][0]: fast[p][1] * numbers[p][i] for p in fast} for i in members]
+            # a group of one is its own base (its project read holds every value)
+            changes = [{fast[p][0]: fast[p][1] * numbers[p][i] for p in fast} for i in members] \
+                if len(members) > 1 else [{}]
             with warnings.catch_warnings(record=True) as caught:
                 warnings.simplefilter("always")
                 analyses = analyze_variants(drive, changes, include=include, errors="return")

@@ -371,6 +371,22 @@ def _convert(value: Any, type_, pa) -> Any:
     return None
 
 
+def _array(values: list[Any], type_, pa) -> Any:
+    """``values`` as a pyarrow array of ``type_``, each converted as :func:`_convert` does;
+    a column of plain floats (or bools, or strings) in one call (non-finite floats null)."""
+    kind = {float: pa.types.is_floating, bool: pa.types.is_boolean, str: pa.types.is_string}
+    for cls, test in kind.items():
+        if test(type_) and all(type(v) is cls for v in values):
+            if cls is float:
+                import numpy as np
+
+                arr = np.array(values, dtype=float)
+                bad = ~np.isfinite(arr)
+                return pa.array(arr, type=type_, mask=bad if bad.any() else None)
+            return pa.array(values, type=type_)
+    return pa.array([_convert(v, type_, pa) for v in values], type=type_)
+
+
 class _PartWriter:
     """Writes each finished batch as one Parquet part file (atomic rename)."""
 
@@ -405,23 +421,23 @@ class _PartWriter:
     def write(self, rows: list[dict], values: dict[str, tuple]) -> Path:
         pa, pq = self.pa, self.pq
         fields = [pa.field("key", pa.string()), pa.field("variant", pa.int64())]
-        data: dict[str, list] = {"key": [r["key"] for r in rows],
+        data: dict[str, Any] = {"key": [r["key"] for r in rows],
                                  "variant": [int(r["variant"]) for r in rows]}
         for j, v in enumerate(self.study.variables):
             t = self.input_types[v.path]
             fields.append(pa.field(v.path, t, metadata={b"unit": v.unit.encode()}))
-            data[v.path] = [_convert(values[r["key"]][j], t, pa) for r in rows]
+            data[v.path] = _array([values[r["key"]][j] for r in rows], t, pa)
         for name in self.study.outputs:
             col = [r.get(name) for r in rows]
             t = _column_type(col, self.output_types.get(name), pa)
             if not pa.types.is_null(t):
                 self.output_types[name] = t
             fields.append(pa.field(name, t))
-            data[name] = [_convert(x, t, pa) for x in col]
+            data[name] = _array(col, t, pa)
         for name, t in (("error", pa.string()), ("warnings", pa.string()), ("seconds", pa.float64()),
                         ("cpu_seconds", pa.float64()), ("worker", pa.string())):
             fields.append(pa.field(name, t))
-            data[name] = [_convert(r.get(name), t, pa) for r in rows]
+            data[name] = _array([r.get(name) for r in rows], t, pa)
         schema = pa.schema(fields, metadata=self.metadata)
         table = pa.table(data, schema=schema)
         self.count += 1
