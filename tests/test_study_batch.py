@@ -17,7 +17,7 @@ from chaindrive.analysis.batch import analyze_variants, replace_path, replace_pa
 from chaindrive.drive.project import load_project
 from chaindrive.errors import InputError
 from chaindrive.study.batch import evaluate_batch, probe_path
-from chaindrive.study.run import evaluate_variant, run_batch
+from chaindrive.study.run import evaluate_variant, run_batch, run_batch_columns
 from chaindrive.study.spec import parse_study
 
 EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
@@ -148,6 +148,9 @@ def test_run_batch_carries_batches():
     batch = [(i, f"k{i}", study.variant_inputs(r)) for i, r in enumerate(study.rows()[:5])]
     rows = run_batch(batch, base=study.base, outputs=study.outputs, parts=study.parts)
     assert [r["variant"] for r in rows] == list(range(5)) and [r["key"] for r in rows] == [f"k{i}" for i in range(5)]
+    columns = run_batch_columns(batch, base=study.base, outputs=study.outputs, parts=study.parts)
+    for name in [*study.outputs, "error", "warnings", "key", "variant", "worker"]:
+        assert columns[name] == [r[name] for r in rows], name
 
 
 @pytest.mark.slow

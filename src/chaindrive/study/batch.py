@@ -29,7 +29,7 @@ from typing import Any
 
 from .spec import set_path
 
-__all__ = ["evaluate_batch", "probe_path"]
+__all__ = ["evaluate_batch", "evaluate_columns", "probe_path"]
 
 _NUMBER = re.compile(r"^\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*(.*?)\s*$")
 
@@ -137,7 +137,8 @@ class _Outputs:
         self.parts = {head: get_part(head) for _, head, _ in self.plan if head in names}
         self._cache: dict[int, tuple[Any, Any, dict[str, Any]]] = {}
 
-    def fill(self, row: dict[str, Any], analysis: Any) -> None:
+    def fill(self, columns: dict[str, list[Any]], i: int, analysis: Any) -> None:
+        """Put the outputs of ``analysis`` at row ``i`` of ``columns``."""
         from .run import lookup
 
         special: dict[str, Any] = {}
@@ -151,14 +152,14 @@ class _Outputs:
                     self._cache[id(result)] = hit
                 data, values = hit[1], hit[2]
                 if isinstance(data, dict) and rest in data:  # what lookup finds first
-                    row[out] = data[rest]
+                    columns[out][i] = data[rest]
                 elif out in values:
-                    row[out] = values[out]
+                    columns[out][i] = values[out]
                 else:
-                    row[out] = values[out] = lookup({head: data}, out)
+                    columns[out][i] = values[out] = lookup({head: data}, out)
                 continue
             if out == "passed":
-                row[out] = analysis.passed
+                columns[out][i] = analysis.passed
                 continue
             if head not in special:
                 if head == "passed":
@@ -171,13 +172,14 @@ class _Outputs:
                     special[head] = analysis.drive.inputs()
                 else:  # not a head of the analysis' dict
                     special[head] = None
-            row[out] = lookup({head: special[head]}, out)
+            columns[out][i] = lookup({head: special[head]}, out)
 
 
 def evaluate_batch(base: dict, variants: Sequence[dict[str, Any]], outputs: Sequence[str], *,
                    parts: Sequence[str] = ()) -> list[dict[str, Any]]:
     """Rows of ``variants`` (each ``{project path: value}``), equal to
-    ``[evaluate_variant(base, v, outputs, parts=parts) for v in variants]``.
+    ``[evaluate_variant(base, v, outputs, parts=parts) for v in variants]``
+    (:func:`evaluate_columns`, one dict per variant).
 
     Examples
     --------
@@ -189,12 +191,26 @@ def evaluate_batch(base: dict, variants: Sequence[dict[str, Any]], outputs: Sequ
     >>> [round(r["loads.chain_speed"], 3) for r in rows]
     [11.663, 7.722]
     """
+    columns = evaluate_columns(base, variants, outputs, parts=parts)
+    names = list(columns)
+    return [dict(zip(names, values, strict=True)) for values in zip(*columns.values(), strict=True)]
+
+
+def evaluate_columns(base: dict, variants: Sequence[dict[str, Any]], outputs: Sequence[str], *,
+                     parts: Sequence[str] = ()) -> dict[str, list[Any]]:
+    """The rows of :func:`evaluate_batch` as columns: ``{output: [value per variant], "error":
+    [...], "warnings": [...], "seconds": [...], "cpu_seconds": [...]}`` (what a study's
+    Parquet part file stores; no dict per variant)."""
     from ..analysis.batch import analyze_variants
     from ..drive.project import project_from_mapping
     from .run import _one_line
 
+    n = len(variants)
+    columns: dict[str, list[Any]] = {name: [None] * n for name in [*outputs, "error", "warnings"]}
     if not variants:
-        return []
+        columns.update(seconds=[], cpu_seconds=[])
+        return columns
+    timed: dict[int, tuple[float, float]] = {}  # variants evaluated on their own: their own times
     t0, c0 = time.perf_counter(), time.process_time()
     include = _include(outputs, parts)
     paths = list(variants[0])
@@ -215,7 +231,6 @@ def evaluate_batch(base: dict, variants: Sequence[dict[str, Any]], outputs: Sequ
     for i, v in enumerate(variants):
         key = repr(sorted((p, repr(x)) for p, x in v.items() if p not in fast)) if uniform else str(i)
         groups.setdefault(key, []).append(i)
-    rows: list[dict[str, Any] | None] = [None] * len(variants)
     outs = _Outputs(outputs)
     for members in groups.values():
         first = variants[members[0]]
@@ -241,32 +256,30 @@ def evaluate_batch(base: dict, variants: Sequence[dict[str, Any]], outputs: Sequ
             rows_of_group = [(i, exc) for i in members]
         joined: dict[tuple[str, ...], str | None] = {}  # the warnings column, per distinct tuple
         for i, analysis in rows_of_group:
-            row: dict[str, Any] = dict.fromkeys(outputs)
-            row["error"] = None
-            row["warnings"] = None
             if isinstance(analysis, BaseException):
                 if len(members) > 1 or fast:
                     from .run import evaluate_variant
 
                     row = evaluate_variant(base, variants[i], outputs, parts=parts)  # the exact message
+                    for name in [*outputs, "error", "warnings"]:
+                        columns[name][i] = row[name]
+                    timed[i] = (row["seconds"], row["cpu_seconds"])
                 else:
-                    row["error"] = _one_line(analysis)
-                rows[i] = row
+                    columns["error"][i] = _one_line(analysis)
                 continue
-            outs.fill(row, analysis)
+            outs.fill(columns, i, analysis)
             own = analysis.warnings
             if own not in joined:
                 messages = list(dict.fromkeys([*own, *extra]))
                 joined[own] = " | ".join(messages)[:2000] if messages else None
-            row["warnings"] = joined[own]
-            rows[i] = row
-    seconds = (time.perf_counter() - t0) / len(variants)
-    cpu = (time.process_time() - c0) / len(variants)
-    done = [r for r in rows if r is not None]
-    for r in done:
-        r.setdefault("seconds", seconds)
-        r.setdefault("cpu_seconds", cpu)
-    return done
+            columns["warnings"][i] = joined[own]
+    seconds = (time.perf_counter() - t0) / n
+    cpu = (time.process_time() - c0) / n
+    columns["seconds"] = [seconds] * n
+    columns["cpu_seconds"] = [cpu] * n
+    for i, (wall, spent) in timed.items():
+        columns["seconds"][i], columns["cpu_seconds"][i] = wall, spent
+    return columns
 
 
 def _include(outputs: Sequence[str], parts: Sequence[str]) -> list[str] | None:

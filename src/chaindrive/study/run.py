@@ -1,6 +1,6 @@
 """Running a design study on ``dask.distributed``.
 
-Variants go to the workers in batches (one task per batch, :func:`run_batch`); each
+Variants go to the workers in batches (one task per batch, :func:`run_batch_columns`); each
 finished batch is appended to the output folder as a new Parquet part file
 (``results/part-*.parquet``, written to a temporary name and renamed, so a part is
 either whole or absent). A row is keyed by the SHA-256 of the canonical JSON of the
@@ -38,7 +38,7 @@ if TYPE_CHECKING:
 
     from ..drive.model import Drive
 
-__all__ = ["analysis_result", "lookup", "evaluate_variant", "run_batch", "run_study", "read_dataframe",
+__all__ = ["analysis_result", "lookup", "evaluate_variant", "run_batch", "run_batch_columns", "run_study", "read_dataframe",
            "read_results", "existing_keys", "StudyRun", "DEFAULT_BATCH_SIZE"]
 
 #: Largest default batch: a batch is the unit of progress and of what a lost worker loses, and
@@ -264,6 +264,34 @@ def run_batch(batch: Sequence[tuple[int, str, dict]], *, base: dict, outputs: Se
     return rows
 
 
+def run_batch_columns(batch: Sequence[tuple[int, str, dict]], *, base: dict, outputs: Sequence[str],
+                      parts: Sequence[str] = (), simulation: dict | None = None) -> dict[str, list]:
+    """:func:`run_batch` as columns (``{"key": [...], "variant": [...], output: [...], ...}``):
+    what the study runner's tasks return and its Parquet part files store.
+
+    Examples
+    --------
+    >>> import tomllib
+    >>> from chaindrive.drive.project import template
+    >>> cols = run_batch_columns([(0, "k0", {"drive.speed": "1450 rpm"}), (1, "k1", {"drive.speed": "0 rpm"})],
+    ...                          base=tomllib.loads(template("roller")), outputs=["loads.chain_speed"])
+    >>> cols["key"], [e is None for e in cols["error"]]
+    (['k0', 'k1'], [True, False])
+    """
+    worker = f"{socket.gethostname()}:{os.getpid()}"
+    if simulation is None:
+        from .batch import evaluate_columns
+
+        columns = evaluate_columns(base, [inputs for _, _, inputs in batch], outputs, parts=parts)
+    else:
+        rows = run_batch(batch, base=base, outputs=outputs, parts=parts, simulation=simulation)
+        columns = {name: [r.get(name) for r in rows] for name in rows[0]} if rows else {}
+    columns["key"] = [key for _, key, _ in batch]
+    columns["variant"] = [number for number, _, _ in batch]
+    columns["worker"] = [worker] * len(batch)
+    return columns
+
+
 # --------------------------------------------------------------------------- Parquet
 
 
@@ -418,17 +446,20 @@ class _PartWriter:
                 "inputs": [v.path for v in study.variables], "outputs": list(study.outputs)}
         self.metadata = {_META_KEY: json.dumps(meta).encode("utf-8")}
 
-    def write(self, rows: list[dict], values: dict[str, tuple]) -> Path:
+    def write(self, columns: dict[str, list], values: dict[str, tuple]) -> Path:
+        """One part file of a finished batch (``columns`` as :func:`run_batch_columns` gives
+        them; a column missing is null)."""
         pa, pq = self.pa, self.pq
+        keys = list(columns["key"])
+        n = len(keys)
         fields = [pa.field("key", pa.string()), pa.field("variant", pa.int64())]
-        data: dict[str, Any] = {"key": [r["key"] for r in rows],
-                                 "variant": [int(r["variant"]) for r in rows]}
+        data: dict[str, Any] = {"key": keys, "variant": [int(v) for v in columns["variant"]]}
         for j, v in enumerate(self.study.variables):
             t = self.input_types[v.path]
             fields.append(pa.field(v.path, t, metadata={b"unit": v.unit.encode()}))
-            data[v.path] = _array([values[r["key"]][j] for r in rows], t, pa)
+            data[v.path] = _array([values[k][j] for k in keys], t, pa)
         for name in self.study.outputs:
-            col = [r.get(name) for r in rows]
+            col = columns.get(name) or [None] * n
             t = _column_type(col, self.output_types.get(name), pa)
             if not pa.types.is_null(t):
                 self.output_types[name] = t
@@ -437,7 +468,7 @@ class _PartWriter:
         for name, t in (("error", pa.string()), ("warnings", pa.string()), ("seconds", pa.float64()),
                         ("cpu_seconds", pa.float64()), ("worker", pa.string())):
             fields.append(pa.field(name, t))
-            data[name] = _array([r.get(name) for r in rows], t, pa)
+            data[name] = _array(columns.get(name) or [None] * n, t, pa)
         schema = pa.schema(fields, metadata=self.metadata)
         table = pa.table(data, schema=schema)
         self.count += 1
@@ -714,18 +745,19 @@ def _run_study(study: Study, directory: Path, t_start: float, *, scheduler: str 
         t0 = time.perf_counter()
         if bar is not None:
             bar.update(task, description=f"study, {nworkers} worker{'s' if nworkers != 1 else ''}")
-        futures = client.map(run_batch, batches, pure=False, **payload)
+        futures = client.map(run_batch_columns, batches, pure=False, **payload)
         index = {f.key: b for f, b in zip(futures, batches, strict=True)}
         for future in as_completed(futures):
             try:
                 result = future.result()
             except Exception as exc:  # noqa: BLE001 - a lost batch is recorded, the study goes on
                 msg = f"{CLUSTER_FAILURE}: {_one_line(exc)}"
-                result = [{"key": k, "variant": n, "error": msg} for n, k, _ in index[future.key]]
+                lost = index[future.key]
+                result = {"key": [k for _, k, _ in lost], "variant": [n for n, _, _ in lost], "error": [msg] * len(lost)}
             future.release()
             run.files.append(writer.write(result, values))
-            run.computed += len(result)
-            run.failed += sum(1 for r in result if r.get("error"))
+            run.computed += len(result["key"])
+            run.failed += sum(1 for e in result.get("error") or () if e)
             run.compute_seconds = time.perf_counter() - t0
             if bar is not None:
                 bar.update(task, completed=run.computed, rate=f"{run.rate:.1f} variants/s")
