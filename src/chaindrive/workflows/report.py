@@ -72,7 +72,8 @@ def _fixed_titles(fig: MatplotlibFigure) -> None:
     would not move it (no x ticks or label on top, no offset text beside the title):
     that placement measures every y tick label at each draw, a third of a plain figure's
     drawing time. The picture is the same."""
-    for ax in fig.axes:
+    axes: list[Any] = list(fig.axes)  # matplotlib's own (private) title state is read and set
+    for ax in axes:
         if not getattr(ax, "_autotitlepos", False) or not any(
                 t.get_text() for t in (ax.title, ax._left_title, ax._right_title)):
             continue
@@ -108,14 +109,15 @@ def _save_png(fig: MatplotlibFigure, buf: io.BytesIO, dpi: int) -> None:
 
     pil_kwargs = {"compress_level": 3}
     rc = mpl.rcParams
-    direct = (isinstance(fig.canvas, FigureCanvasAgg) and fig.dpi == dpi and rc["savefig.bbox"] is None
+    canvas = fig.canvas
+    direct = (isinstance(canvas, FigureCanvasAgg) and fig.dpi == dpi and rc["savefig.bbox"] is None
               and rc["savefig.facecolor"] == "auto" and rc["savefig.edgecolor"] == "auto"
               and not rc["savefig.transparent"] and getattr(fig.canvas, "_device_pixel_ratio", 1) == 1)
-    if not direct:
+    if not direct or not isinstance(canvas, FigureCanvasAgg):
         fig.savefig(buf, format="png", dpi=dpi, pil_kwargs=pil_kwargs)
         return
-    FigureCanvasAgg.draw(fig.canvas)
-    mpl.image.imsave(buf, fig.canvas.buffer_rgba(), format="png", origin="upper", dpi=fig.dpi,
+    FigureCanvasAgg.draw(canvas)
+    mpl.image.imsave(buf, canvas.buffer_rgba(), format="png", origin="upper", dpi=fig.dpi,
                      pil_kwargs=pil_kwargs)
 
 
