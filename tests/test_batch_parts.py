@@ -130,3 +130,25 @@ def test_variant_drives_equal_replace_paths():
 def test_batched_contact_and_service_life_equal_analyze_drive(variants):
     changes = [{("contact", "skew"): s, ("contact", "wear_factor"): k} for s, k in variants]
     _equal_to_analyze_drive(_roller(), changes)
+
+
+def test_entry_batch_solves_each_distinct_entry_once():
+    # positions change the layout, not the entry kinematics: one solution per tooth count
+    drive = _roller()
+    changes = [{("wheels", 0, "teeth"): z, ("wheels", 1, "position"): (x, 0.0)}
+               for z in (19, 21) for x in (0.95, 1.0, 1.1)]
+    out = _equal_to_analyze_drive(drive, changes)
+    assert "entry" in out.per_variant
+    assert out[0].entry is out[1].entry is out[2].entry and out[3].entry is out[5].entry
+    assert out[0].entry is not out[3].entry
+    # a conveyor with a guided (tangential) entry on its driving wheel
+    mining = load_project(EXAMPLES / "mining_conveyor.toml")
+    x, y = mining.wheels[1].position
+    _equal_to_analyze_drive(mining, [{("wheels", 1, "position"): (x * f, y)} for f in (0.98, 1.0, 1.02)],
+                            include=["entry", "loads"])
+
+
+def test_entry_batch_errors_fall_back_to_each_variant():
+    drive = _roller()
+    out = _equal_to_analyze_drive(drive, [{("wheels", 0, "teeth"): z} for z in (19, 2, 21)], include=["entry"])
+    assert isinstance(out[1], InputError)

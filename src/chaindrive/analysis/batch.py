@@ -417,8 +417,8 @@ def _compute_for_variants(part: Part, live: list[int], drives: list[Drive | None
             with warnings.catch_warnings(record=True) as caught:
                 warnings.simplefilter("always")
                 results = part.batch(contexts)
-        except ChainDriveError:
-            results = None  # a variant is refused: find which, one by one
+        except Exception:  # noqa: BLE001 - a variant is refused: find which, one by one
+            results = None
         if results is not None and not caught and len(results) == len(live):
             for i, res in zip(live, results, strict=True):
                 entries[i].result = res

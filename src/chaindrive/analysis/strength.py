@@ -208,8 +208,8 @@ def _track_tooth_part(ctx: PartContext) -> TrackToothResult | None:
 
 def _contact_batch(contexts: Sequence[PartContext]) -> list[ContactAnalysis] | None:
     """The contact of many variants in one vectorised call of
-    :meth:`~chaindrive.strength.RollerToothContact.stress` (same chain, seat, length and
-    tight-side tension; skews and wear factors vary); ``None`` where they differ."""
+    :meth:`~chaindrive.strength.RollerToothContact.stress` (same chain, seat and length;
+    tight-side tensions, skews and wear factors vary); ``None`` where they differ."""
     import dataclasses
     import warnings
 
@@ -225,24 +225,25 @@ def _contact_batch(contexts: Sequence[PartContext]) -> list[ContactAnalysis] | N
     )
 
     first = contexts[0].drive
-    loads = contexts[0]["loads"]
     con0, c = first.contact, first.chain
     if con0 is None or not c.is_roller_chain or c.roller_diameter is None:
         return None
-    skews, factors = [], []
+    skews, factors, tights = [], [], []
     for ctx in contexts:
         con = ctx.drive.contact
-        if (ctx.drive.chain is not c or con is None or con.skew is None or ctx["loads"] is not loads
+        if (ctx.drive.chain is not c or con is None or con.skew is None
                 or con.seat_radius != con0.seat_radius or con.contact_length != con0.contact_length):
             return None
         skews.append(float(con.skew))
         factors.append(float(con.wear_factor))
+        tights.append(float(ctx["loads"].tight))
     with warnings.catch_warnings(record=True) as shared:
         warnings.simplefilter("always")
         obj = RollerToothContact.from_chain(c, seat_radius=con0.seat_radius, length=con0.contact_length)
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")  # replayed per variant below
-        res = obj.stress(loads.tight, max_skew=np.array(skews), wear_factor=np.array(factors))
+        res = obj.stress(tights[0] if len(set(tights)) == 1 else np.array(tights), max_skew=np.array(skews),
+                         wear_factor=np.array(factors))
     # each variant's warnings, as its own call of RollerToothContact.stress raises them
     # (roller_contact_stress: design_skew, then skew_gamma, then warn_conformal)
     with warnings.catch_warnings(record=True) as gamma_warnings:
@@ -261,7 +262,6 @@ def _contact_batch(contexts: Sequence[PartContext]) -> list[ContactAnalysis] | N
     common = [str(w.message) for w in (*shared, *gamma_warnings)]
     conformal_messages: dict[str, list[str]] = {}
     half_width = np.broadcast_to(columns["half_width"], phi.shape).tolist()
-    load = float(loads.tight)
     cls = RollerContactResult
     scalar = {name: v for name, v in columns.items() if not (isinstance(v, np.ndarray) and v.ndim)}
     arrays = {name: v.tolist() for name, v in columns.items() if isinstance(v, np.ndarray) and v.ndim}
@@ -293,7 +293,7 @@ def _contact_batch(contexts: Sequence[PartContext]) -> list[ContactAnalysis] | N
         row = dict(scalar)
         for name, v in arrays.items():
             row[name] = v[i]
-        out.append(ContactAnalysis(load, skew, factor, obj, cls(**row)))
+        out.append(ContactAnalysis(tights[i], skew, factor, obj, cls(**row)))
     return out
 
 
