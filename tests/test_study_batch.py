@@ -200,3 +200,25 @@ def test_variant_key_is_the_canonical_hash():
     for inputs in [study.variant_inputs(r) for r in study.rows()[:3]] + [{"wheels.0.teeth": 19, "x": "ü \"q\""}]:
         assert study.key(inputs) == canonical_hash({"base": study.base_hash, "inputs": inputs,
                                                     "outputs": list(study.outputs), "simulation": None})
+
+
+def test_values_the_project_loader_refuses_give_its_message():
+    # negative skews are refused by the project file's reader: their rows carry its message
+    # (the batch sets numbers directly only where the reader takes the smallest and the
+    # largest of them; else the variants' projects are read)
+    vary = """
+[[vary]]
+path = "contact.skew"
+unit = "arcmin"
+low = -40
+high = 100
+[[vary]]
+path = "contact.wear_factor"
+low = 0.6
+high = 0.7
+"""
+    study = parse_study(STUDY.format(vary=vary), filename="s.toml", folder=EXAMPLES)
+    variants = [study.variant_inputs(r) for r in study.rows()]
+    rows = evaluate_batch(study.base, variants, study.outputs, parts=study.parts)
+    assert any(r["error"] for r in rows) and any(r["error"] is None for r in rows)
+    _compare(study, 12)

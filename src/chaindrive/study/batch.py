@@ -124,6 +124,22 @@ def probe_path(base: dict, inputs: dict[str, Any], path: str) -> tuple[tuple[Any
     return leaf, factor
 
 
+def _reads(base: dict, inputs: dict[str, Any], path: str, x: float, unit: str | None) -> bool:
+    """The project reads with the number ``x`` at ``path`` (the other inputs as given)."""
+    from ..drive.project import project_from_mapping
+
+    data = copy.deepcopy(base)
+    for p, v in inputs.items():
+        set_path(data, p, _with(v, x, unit or "") if p == path else v)
+    try:
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            project_from_mapping(data, filename="probe")
+    except Exception:  # noqa: BLE001 - refused: those variants are read one by one
+        return False
+    return True
+
+
 class _Outputs:
     """The outputs of a row, each read with :func:`~chaindrive.study.run.lookup` from its
     head's JSON; a part's JSON and the outputs read from it once per distinct result
@@ -225,8 +241,11 @@ def evaluate_columns(base: dict, variants: Sequence[dict[str, Any]], outputs: Se
             parsed = [_number(v[path]) for v in variants]
             unit = parsed[0][1] if parsed[0] is not None else None
             if all(x is not None and x[1] == unit for x in parsed):
-                fast[path] = found
-                numbers[path] = [x[0] for x in parsed]  # type: ignore[index]
+                xs = [x[0] for x in parsed]  # type: ignore[index]
+                # the project loader's range checks (intervals) hold at the extremes
+                if _reads(base, variants[0], path, min(xs), unit) and _reads(base, variants[0], path, max(xs), unit):
+                    fast[path] = found
+                    numbers[path] = xs
     groups: dict[str, list[int]] = {}
     for i, v in enumerate(variants):
         key = repr(sorted((p, repr(x)) for p, x in v.items() if p not in fast)) if uniform else str(i)
