@@ -233,6 +233,7 @@ def evaluate_columns(base: dict, variants: Sequence[dict[str, Any]], outputs: Se
     uniform = all(list(v) == paths for v in variants)
     fast: dict[str, tuple[tuple[Any, ...], float]] = {}
     numbers: dict[str, list[float]] = {}
+    refused: set[int] = set()
     if uniform and len(variants) > 1:
         for path in paths:
             found = probe_path(base, variants[0], path)
@@ -242,13 +243,22 @@ def evaluate_columns(base: dict, variants: Sequence[dict[str, Any]], outputs: Se
             unit = parsed[0][1] if parsed[0] is not None else None
             if all(x is not None and x[1] == unit for x in parsed):
                 xs = [x[0] for x in parsed]  # type: ignore[index]
-                # the project loader's range checks (intervals) hold at the extremes
-                if _reads(base, variants[0], path, min(xs), unit) and _reads(base, variants[0], path, max(xs), unit):
-                    fast[path] = found
-                    numbers[path] = xs
+                # the project reader's checks: its ranges hold between the extremes it takes;
+                # else each value is tried, and a variant it refuses is read on its own
+                if not (_reads(base, variants[0], path, min(xs), unit)
+                        and _reads(base, variants[0], path, max(xs), unit)):
+                    taken: dict[float, bool] = {}
+                    for i, x in enumerate(xs):
+                        if x not in taken:
+                            taken[x] = _reads(base, variants[0], path, x, unit)
+                        if not taken[x]:
+                            refused.add(i)
+                fast[path] = found
+                numbers[path] = xs
     groups: dict[str, list[int]] = {}
     for i, v in enumerate(variants):
-        key = repr(sorted((p, repr(x)) for p, x in v.items() if p not in fast)) if uniform else str(i)
+        key = repr(sorted((p, repr(x)) for p, x in v.items() if p not in fast)) \
+            if uniform and i not in refused else str(i)
         groups.setdefault(key, []).append(i)
     outs = _Outputs(outputs)
     for members in groups.values():
