@@ -43,7 +43,11 @@ def _leaves(x, path=""):
 #: its unequal links z1 ω1/2 came in). The roller-bushing limit of a B-series chain (issue
 #: 19): rated by its family's method, ISO 10823, whose B-series roller constant is 22.9, not
 #: the ANSI 17 (docs/rating.md); the rated power (link plate) is unchanged.
-MOVED = ("safety.checks", "Span vibration and resonance check.tensioner.check",
+#: The dynamic load (issue 19): a roller chain's dynamic tension is the spring-mass model's, so the
+#: roller example's dynamic load, F_max, dynamic factor, moving mass and static safety moved
+#: (docs/design.md, "The dynamic load and the simulation").
+MOVED = ("safety.checks", "Loads and safety.tensions.dynamic", "Loads and safety.tensions.maximum",
+         "Loads and safety.tensions.moving_mass", "Loads and safety.safety.static_safety", "Span vibration and resonance check.tensioner.check",
          "Span vibration and resonance check.check", "Span vibration and resonance check.tensioner.campbell",
          "Span vibration and resonance check.free_spans.check", "Loads and safety.rating.roller_bushing")
 

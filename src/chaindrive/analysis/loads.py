@@ -162,9 +162,10 @@ def polygonal_spring_mass(drive: Drive, layout: DriveLayout) -> tuple[int, float
     .. math:: m = \frac{J_j}{R_j^2} + q R_j θ_j + \frac{q (l_{j-1} + l_j)}{3}, \qquad
               k = EA \left(\frac{1}{l_{j-1}} + \frac{1}{l_j}\right)
 
-    ``None`` where the model does not apply: round link chains and conveyors (the whole
-    chain moved, ``m a_max``), a guide on the driving wheel (not free entry), a chain
-    without mass per length.
+    ``None`` where the model does not apply (then ``m a_max`` with the whole chain): round
+    link chains and conveyors, a guide on the driving wheel (not free entry), a chain
+    without mass per length, a load not taken off at the wheel the tight span leaves (an
+    idler, the tensioner's wheel, a track's road wheel, a crawler drive's cams).
 
     >>> from chaindrive.drive.project import load_project
     >>> from chaindrive.analysis.layout import drive_layout
@@ -183,6 +184,11 @@ def polygonal_spring_mass(drive: Drive, layout: DriveLayout) -> tuple[int, float
     n = len(drive.wheels)
     t = layout.tight_span
     j = t if (t + 1) % n == k0 else (t + 1) % n
+    far = drive.wheels[j]
+    tensioner = drive.tensioner.wheel if drive.tensioner is not None else None
+    if (far.teeth is None or far.kind == "idler" or far.name == tensioner or drive.track is not None
+            or drive.crawler is not None):
+        return None  # the load is not on the wheel the tight span leaves (idler, tensioner, track, crawler's cams)
     spans = layout.wrap.span_length
     l_in, l_out = float(spans[(j - 1) % n]), float(spans[j])
     R = float(layout.pitch_radii[j])

@@ -13,7 +13,7 @@ Examples
 >>> duty = Duty(11e3, 1460 * math.pi / 30, driven_speed=480 * math.pi / 30,
 ...             driven_machine="varying_conveyor", centre_distance=0.6)
 >>> design_drive(duty).recommended.chain
-'12A-1'
+'10B-2'
 """
 
 from .advice import drive_advice

@@ -341,7 +341,7 @@ def design_drive(duty: Duty, *, teeth_driving: int | None = None, family: str | 
     >>> r = design_drive(duty)
     >>> c = r.recommended
     >>> c.chain, c.driving_teeth, c.driven_teeth, c.links, round(c.centre_distance * 1e3, 1)
-    ('12A-1', 19, 58, 104, 612.4)
+    ('10B-2', 19, 58, 116, 607.1)
     """
     from ..chains import catalogue, equivalent_names
     from ..rating import RATING_METHODS

@@ -113,7 +113,7 @@ def design_outputs(duty: Any, **options: Any) -> dict[str, Any]:
     >>> row = design_outputs(Duty(11e3, 1460 * math.pi / 30, driven_speed=480 * math.pi / 30,
     ...                           driven_machine="varying_conveyor", centre_distance=0.6))
     >>> row["chain"], row["links"]
-    ('12A-1', 104)
+    ('10B-2', 116)
     """
     from ..design import design_drive
 
