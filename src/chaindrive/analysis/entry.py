@@ -9,6 +9,7 @@ from typing import Any
 from .._results import Result
 from ..drive.model import Drive
 from ..kinematics import EntryKinematics, chain_entry
+from ._memo import memo
 from ._wheels import wheel_teeth
 from .checks import Check
 from .parts import Part, PartContext, register_part
@@ -30,13 +31,24 @@ class EntryCase:
     guide_height: float | None = None
 
     def solve(self, *, points: int = 361, free: bool = False) -> EntryKinematics:
-        """The entry kinematics (exact rigid-link model); ``free=True``: the same wheel without guide."""
-        if free or self.entry == "free":
+        """The entry kinematics (exact rigid-link model); ``free=True``: the same wheel without guide.
+
+        Kept for reuse by its case (:mod:`chaindrive.analysis._memo`): a drive whose other
+        fields changed has the same entries."""
+        return _solve(self, int(points), bool(free or self.entry == "free"))
+
+    def _solve(self, points: int, free: bool) -> EntryKinematics:
+        if free:
             return chain_entry(self.pitch, self.teeth, self.angular_velocity, bar_diameter=self.bar_diameter,
                                entry="free", points=points)
         return chain_entry(self.pitch, self.teeth, self.angular_velocity, bar_diameter=self.bar_diameter,
                            entry=self.entry, guide_end_distance=self.guide_end_distance,
                            guide_height=self.guide_height, points=points)
+
+
+@memo(maxsize=64)
+def _solve(case: EntryCase, points: int, free: bool) -> EntryKinematics:
+    return case._solve(points, free)
 
 
 @dataclass(frozen=True)

@@ -18,15 +18,15 @@ from ..analysis.vibration_remedy import REQUIRED_MARGIN
 from ..drive.model import Wheel
 from ..errors import InputError
 from ..vibration.excitation import AMPLIFICATION_LIMIT, DAMPING_RATIO
+from ._figures import Figures, FigureShare
 from ._figures import Figures as _Figures
-from ._figures import FigureShare
 from .display import convert, display_of
 from .report import Section, Table
 
 if TYPE_CHECKING:
     from matplotlib.figure import Figure as MatplotlibFigure
 
-__all__ = ["report_sections", "build_sections", "generic_section"]
+__all__ = ["report_sections", "build_sections", "generic_section", "section_function", "Figures"]
 
 
 def _si(value: Any, unit: str, shown: str | None = None) -> list[Any]:
@@ -669,7 +669,8 @@ def generic_section(part: Part) -> Callable[[DriveAnalysis, _Figures], Section |
     return section
 
 
-def _section_function(part: Part) -> Callable[[DriveAnalysis, _Figures], Section | None]:
+def section_function(part: Part) -> Callable[[DriveAnalysis, _Figures], Section | None]:
+    """The report section function of an analysis part (its declared one, or the generic one)."""
     if part.section is None:
         return generic_section(part)
     import importlib
@@ -688,7 +689,7 @@ def report_sections() -> tuple[tuple[str, str, Callable[[DriveAnalysis, _Figures
         ("inputs", "Input data", inputs_section)]
     seen: set[Any] = set()
     for part in all_parts():
-        fn = _section_function(part)
+        fn = section_function(part)
         key = part.section if part.section is not None else part.name
         if key in seen:
             continue
