@@ -705,24 +705,30 @@ def _run_study(study: Study, directory: Path, t_start: float, *, scheduler: str 
         rows = study.rows()
         _prepare(directory, study)
         done = existing_keys(directory)
-        pending, values = [], {}
-        for number, row in enumerate(rows):
-            inputs = study.variant_inputs(row)
-            key = study.key(inputs)
-            if key in done or key in values:
-                continue
-            values[key] = row
-            pending.append((number, key, inputs))
-        skipped = len(rows) - len(pending)
-        run = StudyRun(directory=directory, variants=len(rows), skipped=skipped, computed=0,
+        values: dict[str, tuple] = {}
+
+        def pending():  # the variants not yet in the folder, each once (keys made as they go)
+            for number, row in enumerate(rows):
+                inputs = study.variant_inputs(row)
+                key = study.key(inputs)
+                if key in done or key in values:
+                    continue
+                values[key] = row
+                yield number, key, inputs
+
+        plan = pending()
+        first = next(plan, None)
+        run = StudyRun(directory=directory, variants=len(rows), skipped=0, computed=0,
                        failed=0, seconds=0.0, compute_seconds=0.0, workers=0)
-        if not pending:
+        if first is None:
+            run.skipped = len(rows)
             if bar is not None:
                 bar.update(task, description="nothing to do", total=1, completed=1)
             run.seconds = time.perf_counter() - t_start
             return run
+        estimate = len(rows) - len(done)  # at most this many to compute (known when planned)
         if bar is not None:
-            bar.update(task, description="starting the cluster", total=len(pending), completed=0)
+            bar.update(task, description="starting the cluster", total=estimate, completed=0)
         client, cluster = _client(scheduler, workers, timeout=min(10.0, max(3.0, wait_for_workers)))
         try:
             client.wait_for_workers(1, timeout=wait_for_workers)
@@ -735,8 +741,7 @@ def _run_study(study: Study, directory: Path, t_start: float, *, scheduler: str 
         except Exception:  # noqa: BLE001 - a broken worker shows in the variants' errors
             pass
         run.workers = nworkers
-        size = batch_size or max(1, min(DEFAULT_BATCH_SIZE, math.ceil(len(pending) / (8 * nworkers))))
-        batches = [pending[i:i + size] for i in range(0, len(pending), size)]
+        size = batch_size or max(1, min(DEFAULT_BATCH_SIZE, math.ceil(estimate / (8 * nworkers))))
         writer = _PartWriter(directory, study)
         payload = {"base": study.base, "outputs": list(study.outputs), "parts": list(study.parts),
                    "simulation": study.simulation}
@@ -745,22 +750,47 @@ def _run_study(study: Study, directory: Path, t_start: float, *, scheduler: str 
         t0 = time.perf_counter()
         if bar is not None:
             bar.update(task, description=f"study, {nworkers} worker{'s' if nworkers != 1 else ''}")
-        futures = client.map(run_batch_columns, batches, pure=False, **payload)
-        index = {f.key: b for f, b in zip(futures, batches, strict=True)}
-        for future in as_completed(futures):
+        index: dict[str, list] = {}
+        finished = as_completed()
+
+        def collect(future) -> None:
             try:
                 result = future.result()
             except Exception as exc:  # noqa: BLE001 - a lost batch is recorded, the study goes on
                 msg = f"{CLUSTER_FAILURE}: {_one_line(exc)}"
                 lost = index[future.key]
-                result = {"key": [k for _, k, _ in lost], "variant": [n for n, _, _ in lost], "error": [msg] * len(lost)}
+                result = {"key": [k for _, k, _ in lost], "variant": [n for n, _, _ in lost],
+                          "error": [msg] * len(lost)}
             future.release()
+            del index[future.key]
             run.files.append(writer.write(result, values))
             run.computed += len(result["key"])
             run.failed += sum(1 for e in result.get("error") or () if e)
             run.compute_seconds = time.perf_counter() - t0
             if bar is not None:
                 bar.update(task, completed=run.computed, rate=f"{run.rate:.1f} variants/s")
+
+        # batches go to the cluster as they are planned (the workers start on the first
+        # while the client makes the keys of the next); finished ones are written meanwhile
+        batch = [first]
+        for item in plan:
+            batch.append(item)
+            if len(batch) == size:
+                future = client.submit(run_batch_columns, batch, pure=False, **payload)
+                index[future.key] = batch
+                finished.add(future)
+                batch = []
+                while finished.has_ready():
+                    collect(next(finished))
+        if batch:
+            future = client.submit(run_batch_columns, batch, pure=False, **payload)
+            index[future.key] = batch
+            finished.add(future)
+        run.skipped = len(rows) - len(values)
+        if bar is not None:
+            bar.update(task, total=len(values))
+        for future in finished:
+            collect(future)
         run.seconds = time.perf_counter() - t_start
         return run
     finally:
