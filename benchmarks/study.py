@@ -1,7 +1,8 @@
 """Design studies: batched evaluation per core, then on dask with 1 and with 2 workers.
 
 First, in one process and one thread, the variants per second of CPU time of
-(a) batched evaluation with fixed geometry (the skew Monte Carlo of
+(a) batched evaluation (what a dask task does with its batch:
+:func:`~chaindrive.study.batch.evaluate_columns`, 5,000 variants a call) with fixed geometry (the skew Monte Carlo of
 ``examples/skew_study.toml``: skew and wear factor vary), (b) batched evaluation with
 varying geometry (driving teeth 17...25 and centre distance 0.9...1.2 m vary with the
 skew, so every variant needs its own layout), (c) the per-variant loop
@@ -19,7 +20,7 @@ in-process rate of the same variants without dask. The study: the 16B roller dri
 ``examples/roller_industrial.toml``, Latin hypercube over speed 300...1500 rpm, power
 5...25 kW and skew 42...206 arcmin (Garshniev & Maksymovych's measured range); outputs contact
 stress, maximum chain force, wear life, verdict.
-Usage: ``python benchmarks/study.py [--variants N]``.
+Usage: ``python benchmarks/study.py [--variants N] [--million]``.
 """
 
 from __future__ import annotations
@@ -92,13 +93,13 @@ high = 206
 
 
 def _per_core(study, count: int, batched: bool) -> float:
-    from chaindrive.study.batch import evaluate_batch
+    from chaindrive.study.batch import evaluate_columns
 
     variants = [study.variant_inputs(r) for r in study.rows()[:count]]
     c0 = time.process_time()
-    if batched:
+    if batched:  # what a dask task does with its batch (run_batch_columns)
         for i in range(0, len(variants), 5000):
-            evaluate_batch(study.base, variants[i:i + 5000], study.outputs, parts=study.parts)
+            evaluate_columns(study.base, variants[i:i + 5000], study.outputs, parts=study.parts)
     else:
         for v in variants:
             evaluate_variant(study.base, v, study.outputs, parts=study.parts)
