@@ -152,3 +152,25 @@ def test_entry_batch_errors_fall_back_to_each_variant():
     drive = _roller()
     out = _equal_to_analyze_drive(drive, [{("wheels", 0, "teeth"): z} for z in (19, 2, 21)], include=["entry"])
     assert isinstance(out[1], InputError)
+
+
+def test_variant_drives_inside_a_field_skip_only_the_drives_own_checks():
+    from chaindrive.analysis.batch import _rebuild_plan, _shell
+
+    drive = _roller()
+    paths = [("contact", "skew"), ("contact", "wear_factor"), ("load", "power")]
+    # the drive's __post_init__ reads none of the contact's and load's fields: the variants'
+    # drives are the base's fields with their own (checked) contact and load
+    assert _shell(drive, _rebuild_plan(drive, paths))[0] == "shell"
+    assert _shell(drive, _rebuild_plan(drive, [("wheels", 0, "teeth")]))[0] == "object"
+    changes = [dict(zip(paths, v, strict=True)) for v in ((0.01, 0.6, 5e3), (0.02, 0.7, 20e3), (0.03, 0.65, -1.0))]
+    changes.append({("contact", "skew"): 0.01, ("contact", "skew_height_difference"): 1e-3})
+    out = analyze_variants(drive, changes[:3], include=["loads"], errors="return")
+    assert [a.drive for a in out[:2]] == [replace_paths(drive, c) for c in changes[:2]]
+    with pytest.raises(InputError) as ref:
+        replace_paths(drive, changes[2])
+    assert isinstance(out[2], InputError) and str(out[2]) == str(ref.value)
+    twice = analyze_variants(drive, [changes[3], changes[3]], include=["loads"], errors="return")
+    with pytest.raises(InputError, match="not both"):
+        replace_paths(drive, changes[3])
+    assert all(isinstance(e, InputError) and "not both" in str(e) for e in twice)

@@ -58,8 +58,8 @@ def _recording_getattribute(self: Any, name: str) -> Any:
     return object.__getattribute__(self, name)
 
 
-def _recording(drive: Drive) -> Drive:
-    """``drive`` as an instance of a subclass that records the fields read (while a
+def _recording(drive: Any) -> Any:
+    """``drive`` (any dataclass instance) as an instance of a subclass that records the fields read (while a
     recording set is active)."""
     cls = type(drive)
     sub = _RECORDING_CLASSES.get(cls)
@@ -241,7 +241,7 @@ def _variant_drives(drive: Drive, changes: Sequence[Mapping[FieldPath, Any]], fa
             if paths not in plans or plans[paths] is None:  # the first variant of these paths: the checked way
                 drives[i] = replace_paths(drive, dict(zip(paths, change.values(), strict=True)))
                 if paths not in plans:
-                    plans[paths] = _rebuild_plan(drive, paths)
+                    plans[paths] = _shell(drive, _rebuild_plan(drive, paths))
                 continue
             drives[i] = _rebuild(plans[paths], iter(change.values()))
         except Exception as exc:
@@ -300,7 +300,45 @@ def _rebuild(plan: Any, values: Any) -> Any:
     kwargs = dict(init)
     for head, sub in subs.items():
         kwargs[head] = _rebuild(sub, iter(per_head[head]))
+    if kind == "shell":  # the fields as validated on the base; the changed objects built by their classes
+        new = object.__new__(base)
+        new.__dict__.update(kwargs)
+        return new
     return base(**kwargs)
+
+
+def _shell(drive: Drive, plan: Any) -> Any:
+    """``plan`` with the drive's own construction skipped where that is exact: every change
+    lies inside a dataclass field of the drive, and the drive's ``__post_init__``, run on
+    the base with those objects recording, reads none of their fields and keeps them as
+    they are (its checks then pass and normalise alike for every variant; the changed
+    objects are still built, and checked, by their own classes)."""
+    if plan is None or plan[0] != "object" or any(isinstance(h, int) for h in plan[3]):
+        return plan
+    cls = type(drive)
+    post = getattr(cls, "__post_init__", None)
+    reads: set[str] = set()
+    recorders = {}
+    token = _READS.set(reads)
+    try:
+        probe = object.__new__(cls)
+        probe.__dict__.update(drive.__dict__)
+        for head in plan[3]:
+            value = drive.__dict__.get(str(head))
+            if value is None or not dataclasses.is_dataclass(value) or isinstance(value, type) \
+                    or plan[3][head][0] != "object":
+                return plan
+            recorders[head] = probe.__dict__[head] = _recording(value)
+        if post is not None:
+            post(probe)
+    except Exception:  # noqa: BLE001 - not a plain dataclass, or the base is refused: construct each variant
+        return plan
+    finally:
+        _READS.reset(token)
+    if reads or any(probe.__dict__[h] is not r for h, r in recorders.items()):
+        return plan
+    kind, base, _, subs, order = plan
+    return ("shell", base, dict(drive.__dict__), subs, order)
 
 
 def _with_part(check: Check, name: str) -> Check:
