@@ -22,7 +22,7 @@ import socket
 import time
 import uuid
 import warnings
-from collections.abc import Iterable, Sequence
+from collections.abc import Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
@@ -30,6 +30,8 @@ from typing import TYPE_CHECKING, Any
 from .._io import atomic_write_bytes, atomic_write_text, folder_lock
 from .._results import jsonable
 from ..errors import InfeasibleError, InputError
+from ._columns import array as _array
+from ._columns import column_type as _column_type
 from .spec import MAXIMUM_BATCH_SIZE, Study, set_path
 
 if TYPE_CHECKING:
@@ -357,62 +359,6 @@ def read_results(directory: str | Path) -> pa.Table:
     import pyarrow.compute as pc
 
     return table.take(pc.sort_indices(table, sort_keys=[("variant", "ascending")]))
-
-
-def _kind(value: Any) -> str:
-    if value is None:
-        return "null"
-    if isinstance(value, bool):
-        return "bool"
-    if isinstance(value, (int, float)):
-        return "float"
-    return "string"
-
-
-def _column_type(values: Iterable[Any], established: Any, pa) -> Any:
-    if established is not None and not pa.types.is_null(established):
-        return established
-    kinds = {_kind(v) for v in values} - {"null"}
-    if not kinds:
-        return pa.null()
-    if "string" in kinds:
-        return pa.string()
-    if kinds == {"bool"}:
-        return pa.bool_()
-    return pa.float64()
-
-
-def _convert(value: Any, type_, pa) -> Any:
-    if value is None:
-        return None
-    if pa.types.is_string(type_):
-        return value if isinstance(value, str) else json.dumps(value)
-    if pa.types.is_boolean(type_):
-        return bool(value) if isinstance(value, bool) else None
-    if pa.types.is_floating(type_):
-        if isinstance(value, (bool, int, float)):
-            x = float(value)
-            return x if math.isfinite(x) else None
-        return None
-    if pa.types.is_integer(type_):
-        return int(value) if isinstance(value, (int, float)) and not isinstance(value, bool) else None
-    return None
-
-
-def _array(values: list[Any], type_, pa) -> Any:
-    """``values`` as a pyarrow array of ``type_``, each converted as :func:`_convert` does;
-    a column of plain floats (or bools, or strings) in one call (non-finite floats null)."""
-    kind = {float: pa.types.is_floating, bool: pa.types.is_boolean, str: pa.types.is_string}
-    for cls, test in kind.items():
-        if test(type_) and all(type(v) is cls for v in values):
-            if cls is float:
-                import numpy as np
-
-                arr = np.array(values, dtype=float)
-                bad = ~np.isfinite(arr)
-                return pa.array(arr, type=type_, mask=bad if bad.any() else None)
-            return pa.array(values, type=type_)
-    return pa.array([_convert(v, type_, pa) for v in values], type=type_)
 
 
 class _PartWriter:
