@@ -140,6 +140,9 @@ def _reads(base: dict, inputs: dict[str, Any], path: str, x: float, unit: str | 
     return True
 
 
+_MISSING = object()
+
+
 class _Outputs:
     """The outputs of a row, each read with :func:`~chaindrive.study.run.lookup` from its
     head's JSON; a part's JSON and the outputs read from it once per distinct result
@@ -151,7 +154,27 @@ class _Outputs:
         names = set(part_names())
         self.plan = [(out, out.split(".", 1)[0], out.split(".", 1)[1] if "." in out else None) for out in outputs]
         self.parts = {head: get_part(head) for _, head, _ in self.plan if head in names}
-        self._cache: dict[int, tuple[Any, Any, dict[str, Any]]] = {}
+        self._cache: dict[int, list[Any]] = {}  # id -> [result, its JSON or _MISSING, {output: value}]
+        self._names: dict[type, frozenset[str]] = {}
+
+    def _field(self, part: Any, result: Any, head: str, rest: str | None, out: str) -> Any:
+        """The output read from the JSON of the one field it starts with, where the part's
+        JSON is :meth:`Result.to_dict` (a dict of the fields' JSON, names without dots, so
+        :func:`~chaindrive.study.run.lookup` finds nothing else); else ``_MISSING``."""
+        from .._results import Result, jsonable
+        from .run import lookup
+
+        cls = type(result)
+        if rest is None or part.json is not None or not isinstance(result, Result) or cls.to_dict is not Result.to_dict:
+            return _MISSING
+        names = self._names.get(cls)
+        if names is None:
+            names = self._names[cls] = frozenset(f.name for f in dataclasses.fields(result))  # type: ignore[arg-type]
+        first = rest.split(".", 1)[0]
+        if first not in names:
+            return _MISSING
+        sub = jsonable(getattr(result, first))
+        return sub if first == rest else lookup({head: {first: sub}}, out)
 
     def fill(self, columns: dict[str, list[Any]], i: int, analysis: Any) -> None:
         """Put the outputs of ``analysis`` at row ``i`` of ``columns``."""
@@ -164,15 +187,18 @@ class _Outputs:
                 result = analysis.results.get(head)
                 hit = self._cache.get(id(result))
                 if hit is None or hit[0] is not result:
-                    hit = (result, part.to_json(result), {})
+                    hit = [result, _MISSING, {}]
                     self._cache[id(result)] = hit
-                data, values = hit[1], hit[2]
-                if isinstance(data, dict) and rest in data:  # what lookup finds first
-                    columns[out][i] = data[rest]
-                elif out in values:
-                    columns[out][i] = values[out]
-                else:
-                    columns[out][i] = values[out] = lookup({head: data}, out)
+                values = hit[2]
+                if out not in values:
+                    value = self._field(part, result, head, rest, out)
+                    if value is _MISSING:
+                        if hit[1] is _MISSING:
+                            hit[1] = part.to_json(result)
+                        data = hit[1]
+                        value = data[rest] if isinstance(data, dict) and rest in data else lookup({head: data}, out)
+                    values[out] = value
+                columns[out][i] = values[out]
                 continue
             if out == "passed":
                 columns[out][i] = analysis.passed
