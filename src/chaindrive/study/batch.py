@@ -27,6 +27,7 @@ import warnings
 from collections.abc import Sequence
 from typing import Any
 
+from .._results import Result, jsonable
 from .spec import set_path
 
 __all__ = ["evaluate_batch", "evaluate_columns", "probe_path"]
@@ -150,7 +151,9 @@ class _Outputs:
 
     def __init__(self, outputs: Sequence[str]) -> None:
         from ..analysis.parts import get_part, part_names
+        from .run import lookup
 
+        self.lookup = lookup
         names = set(part_names())
         self.plan = [(out, out.split(".", 1)[0], out.split(".", 1)[1] if "." in out else None) for out in outputs]
         self.parts = {head: get_part(head) for _, head, _ in self.plan if head in names}
@@ -161,9 +164,6 @@ class _Outputs:
         """The output read from the JSON of the one field it starts with, where the part's
         JSON is :meth:`Result.to_dict` (a dict of the fields' JSON, names without dots, so
         :func:`~chaindrive.study.run.lookup` finds nothing else); else ``_MISSING``."""
-        from .._results import Result, jsonable
-        from .run import lookup
-
         cls = type(result)
         if rest is None or part.json is not None or not isinstance(result, Result) or cls.to_dict is not Result.to_dict:
             return _MISSING
@@ -174,12 +174,10 @@ class _Outputs:
         if first not in names:
             return _MISSING
         sub = jsonable(getattr(result, first))
-        return sub if first == rest else lookup({head: {first: sub}}, out)
+        return sub if first == rest else self.lookup({head: {first: sub}}, out)
 
     def fill(self, columns: dict[str, list[Any]], i: int, analysis: Any) -> None:
         """Put the outputs of ``analysis`` at row ``i`` of ``columns``."""
-        from .run import lookup
-
         special: dict[str, Any] = {}
         for out, head, rest in self.plan:
             part = self.parts.get(head)
@@ -196,7 +194,7 @@ class _Outputs:
                         if hit[1] is _MISSING:
                             hit[1] = part.to_json(result)
                         data = hit[1]
-                        value = data[rest] if isinstance(data, dict) and rest in data else lookup({head: data}, out)
+                        value = data[rest] if isinstance(data, dict) and rest in data else self.lookup({head: data}, out)
                     values[out] = value
                 columns[out][i] = values[out]
                 continue
@@ -214,7 +212,7 @@ class _Outputs:
                     special[head] = analysis.drive.inputs()
                 else:  # not a head of the analysis' dict
                     special[head] = None
-            columns[out][i] = lookup({head: special[head]}, out)
+            columns[out][i] = self.lookup({head: special[head]}, out)
 
 
 def evaluate_batch(base: dict, variants: Sequence[dict[str, Any]], outputs: Sequence[str], *,
