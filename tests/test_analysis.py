@@ -47,7 +47,8 @@ def _leaves(x, path=""):
 #: roller example's dynamic load, F_max, dynamic factor, moving mass and static safety moved
 #: (docs/design.md, "The dynamic load and the simulation").
 MOVED = ("safety.checks", "Loads and safety.tensions.dynamic", "Loads and safety.tensions.maximum",
-         "Loads and safety.tensions.moving_mass", "Loads and safety.safety.static_safety", "Span vibration and resonance check.tensioner.check",
+         "Loads and safety.tensions.moving_mass", "Loads and safety.safety.static_safety",
+         "Span vibration and resonance check.tensioner.check",
          "Span vibration and resonance check.check", "Span vibration and resonance check.tensioner.campbell",
          "Span vibration and resonance check.free_spans.check", "Loads and safety.rating.roller_bushing")
 
