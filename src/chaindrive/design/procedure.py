@@ -209,19 +209,33 @@ def _teeth_for(chain: Chain, duty: Duty, given: int | None) -> tuple[int, str]:
     return z, why
 
 
+@dataclass(frozen=True)
+class _Rated:
+    """A chain past steps 2-3 (teeth, rating, room between the sprockets): the rest of
+    :func:`_candidate` is its layout and loads."""
+
+    chain: Chain
+    twins: tuple[str, ...]
+    z1: int
+    z2: int
+    why: str
+    rating: Any
+    centre: float
+
+
 def _candidate(chain: Chain, twins: tuple[str, ...], duty: Duty, factors: tuple[Factor, ...], ks: float,
                given_teeth: int | None, method: str | None, required: float | None) -> DesignCandidate | str | None:
     """One chain through steps 2-5 (``None``: does not carry the load; a string: why it was left out)."""
-    from ..analysis import analyze_drive
-    from ..analysis.loads import static_safety_check
-    from ..layout import (
-        centre_distance_approx,
-        centre_distance_polygon,
-        chain_length_approx,
-        even_links,
-    )
+    rated = _rated(chain, twins, duty, ks, given_teeth, method)
+    if rated is None or isinstance(rated, str):
+        return rated
+    return _laid_out(rated, duty, factors, ks, required)
+
+
+def _rated(chain: Chain, twins: tuple[str, ...], duty: Duty, ks: float, given_teeth: int | None,
+           method: str | None) -> _Rated | str | None:
+    """Steps 2-3 of :func:`_candidate`: teeth, rating, room (``None``: does not carry the load)."""
     from ..rating import chain_rating
-    from .advice import drive_advice
     from .policy import driven_teeth
 
     z1, why = _teeth_for(chain, duty, given_teeth)
@@ -236,6 +250,25 @@ def _candidate(chain: Chain, twins: tuple[str, ...], duty: Duty, factors: tuple[
     clearance = (_outside_diameter(chain.pitch, z1) + _outside_diameter(chain.pitch, z2)) / 2
     if a <= clearance:
         return f"{chain.name} (needs > {clearance * 1e3:.0f} mm)"
+    return _Rated(chain, twins, z1, z2, why, r, a)
+
+
+def _laid_out(rated: _Rated, duty: Duty, factors: tuple[Factor, ...], ks: float,
+              required: float | None) -> DesignCandidate | None:
+    """Steps 4-5 of :func:`_candidate`: links, exact centre distance, loads, static safety."""
+    from ..analysis import analyze_drive
+    from ..analysis.loads import static_safety_check
+    from ..layout import (
+        centre_distance_approx,
+        centre_distance_polygon,
+        chain_length_approx,
+        even_links,
+    )
+    from .advice import drive_advice
+
+    chain, twins, z1, z2, why, r, a = (rated.chain, rated.twins, rated.z1, rated.z2, rated.why, rated.rating,
+                                       rated.centre)
+    design = duty.power * ks
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", ValidityRangeWarning)
         links = int(even_links(chain_length_approx(chain.pitch, z1, z2, a)))
@@ -286,6 +319,32 @@ def _candidate(chain: Chain, twins: tuple[str, ...], duty: Duty, factors: tuple[
         static_safety=static_value, required_static_safety=drive.static_safety_required,
         maximum_tension=maximum, teeth_rule=why, factors=cand_factors,
         checks=checks, advice=drive_advice(duty, r), notes=tuple(notes), project_text=text)
+
+
+def _lay_out(rated: list[_Rated], duty: Duty, factors: tuple[Factor, ...], ks: float, required: float | None,
+             all_sizes: bool) -> list[DesignCandidate]:
+    """The rated chains laid out and loaded (steps 4-5). Unless ``all_sizes``, only the chains
+    that can be kept: per series and strand count, design_drive keeps the adequate chains of
+    the smallest (galling region, pitch); they are laid out in that order until one passes
+    the static safety, and those of its (galling, pitch) with it. The candidates are those
+    laying out every chain and filtering afterwards would give."""
+    if all_sizes:
+        return [c for r in rated if (c := _laid_out(r, duty, factors, ks, required)) is not None]
+    groups: dict[tuple[str, int], list[_Rated]] = {}
+    for r in rated:
+        groups.setdefault((_series(r.chain), r.chain.strands), []).append(r)
+    found: list[DesignCandidate] = []
+    for group in groups.values():
+        kept = None
+        for r in sorted(group, key=lambda r: (r.rating.lubrication == "C'", r.chain.pitch)):
+            order = (r.rating.lubrication == "C'", r.chain.pitch)
+            if kept is not None and order != kept:
+                break
+            c = _laid_out(r, duty, factors, ks, required)
+            if c is not None:
+                found.append(c)
+                kept = order
+    return found
 
 
 def design_drive(duty: Duty, *, teeth_driving: int | None = None, family: str | None = None,
@@ -362,7 +421,7 @@ def design_drive(duty: Duty, *, teeth_driving: int | None = None, family: str | 
         raise InputError(f"required_static_safety must be a number >= 1, got {required_static_safety!r}",
                          field="required_static_safety")
     fams = ("iso606", "ansi") if family is None else (family,)
-    found: list[DesignCandidate] = []
+    rated: list[_Rated] = []
     too_close: list[str] = []
     for fam in fams:
         for ch in catalogue(fam):
@@ -371,11 +430,12 @@ def design_drive(duty: Duty, *, teeth_driving: int | None = None, family: str | 
             twins = tuple(equivalent_names(ch))
             if family is None and ch.family == "ansi" and twins:
                 continue  # one row per chain: the ISO 606 twin carries both names
-            got = _candidate(ch, twins, duty, factors, ks, teeth_driving, method, required_static_safety)
+            got = _rated(ch, twins, duty, ks, teeth_driving, method)
             if isinstance(got, str):
                 too_close.append(got)
             elif got is not None:
-                found.append(got)
+                rated.append(got)
+    found = _lay_out(rated, duty, factors, ks, required_static_safety, all_sizes)
     if not found:
         extra = f"; sprockets too large for the centre distance: {', '.join(too_close[:4])}" if too_close else ""
         raise InfeasibleError(
