@@ -6,7 +6,10 @@ driven wheel (tight side ~3.1 kN), gravity. Both start from the same statically
 assembled state (chaindrive's static solve).
 
 chaindrive: point-mass pins, axial spring-dampers (EA = 1e8 N), penalty contact of each
-roller with the ISO 606 seat/flank profile, symplectic Euler at its largest stable step.
+roller with the ISO 606 seat/flank profile; two integrators: symplectic Euler at its
+largest stable step (``method="explicit"``, 3 µs) and the linearly implicit step
+(``method="implicit"``: link springs, contact springs, sticking friction implicit; a
+cyclic tridiagonal solve per step) on the ladder 200, 100, 50, 25 µs.
 
 MuJoCo (the peer), the same model:
 
@@ -42,6 +45,13 @@ MuJoCo (the peer), the same model:
   tendon stiffness explicit, which sets MuJoCo's stable step to ~2/sqrt(4k/m), as the
   link stiffness does for chaindrive).
 
+MuJoCo with rigid links (``rigid=True``): the same bodies, geoms and wheels, the links as
+spatial tendons whose length is held by an equality constraint (``<equality><tendon>``,
+the length at the assembled state); contacts and length constraints soft with MuJoCo's
+standard ``solref = (2e-4 s, 1)`` and ``solimp`` 0.99 (the direct contact stiffness of the
+stiff model is unstable above ~5 µs); its ladder 100, 50, 25 µs (``timeconst >= 2 dt``).
+The link tension is read from the equality constraint's force.
+
 MuJoCo first settles from chaindrive's assembled state with the driver held and the load
 on (velocities quenched, 0.02 s, not timed), then runs the same duration. Its step is the
 largest of a ladder at which the run stays finite, raises no divergence warning and the
@@ -50,8 +60,12 @@ driven wheel follows the driver; then half and quarter of it for a convergence c
 
 "Equal accuracy": each engine is timed at the largest step whose results are converged
 against its own halved step (mean tight-side tension within 1 %, mean chain speed within
-0.5 %); the table prints both, the ratio of wall time per simulated second and the
-differences of mean/peak chain speed and mean tight-side tension.
+0.5 %) and within 1 % of the reference (chaindrive's explicit run, mean speed and mean
+tight-side tension); the report prints, per engine, that step, its CPU time per simulated
+second and the differences, then ``vs MuJoCo rigid links: R x`` and ``vs MuJoCo stiff
+links: R x`` (MuJoCo's CPU time per simulated second over chaindrive's implicit one). CPU
+times (``time.process_time``; MuJoCo's Python sampling excluded, chaindrive timed in a
+second run without records): the machine is shared, the load average is printed.
 
 MuJoCo settings used (mujoco.readthedocs.io):
   direct solref (-stiffness, -damping), scaled by the impedance:
@@ -69,12 +83,14 @@ MuJoCo settings used (mujoco.readthedocs.io):
 Scaling (``--scaling``): the same drive with N = 100, 500, 1000, 2000, 5000 links (the
 centre distance grows with N; the pretension is that of a 2 % sag of the span, at least
 200 N, so that the long spans are drives and not hanging ropes), one line per length:
-``links N: assemble S s, link-steps/s R``; and the plain compiled point-mass chain (the
-same closed loop of springs and masses, symplectic Euler, no contacts, no records) as the
-ceiling of a link-steps/s figure on this machine.
+assembly CPU time, link-steps/s of both integrators and their CPU time per simulated
+second (the implicit one at its default step); and the plain compiled point-mass chain (the
+same closed loop of springs and masses in the vectorised layout, separate x/y arrays,
+symplectic Euler, no contacts, no records) as the ceiling of a link-steps/s figure on this
+machine.
 
-Run:  .venv/bin/python benchmarks/simulate.py [--duration 0.3] [--no-mujoco] [--quick]
-                                              [--no-scaling]
+Run:  .venv/bin/python benchmarks/simulate.py [--mujoco] [--duration 0.3] [--no-mujoco]
+                                              [--quick] [--no-scaling]
       .venv/bin/python benchmarks/simulate.py --scaling        (the scaling only)
 """
 
@@ -93,6 +109,9 @@ from chaindrive.simulation.model import iso_flank
 #: convergence tolerances against the halved step (relative)
 TOL_TENSION = 0.01
 TOL_SPEED = 0.005
+#: equal accuracy: mean speed and mean tight-side tension within this of the reference
+#: (chaindrive's explicit integrator at its converged step)
+TOL_REF = 0.01
 #: flat faces replacing each seating arc (FACES - 1 inner faces plus the two flanks)
 FLANK_FACES = 6  # flat faces per ISO flank arc (tangent polygon, < 5 µm from the arc)
 FACES = 4
@@ -100,6 +119,12 @@ FACES = 4
 SAMPLE = 1.5e-4
 #: start of the steady window [s] (ramp ends at 0.1 s)
 STEADY = 0.15
+#: time constant [s] of MuJoCo's soft constraints in the rigid-link model (contacts and
+#: link lengths): 2 x the largest step of its ladder
+RIGID_TC = 2.0e-4
+#: step ladders [s]: chaindrive's implicit integrator, MuJoCo's rigid-link model
+IMPLICIT_LADDER = (2.0e-4, 1.0e-4, 5.0e-5, 2.5e-5)
+RIGID_LADDER = (1.0e-4, 5.0e-5, 2.5e-5)
 
 
 def build():
@@ -109,26 +134,28 @@ def build():
     return model, state
 
 
-def run_chaindrive(model, state, duration, dt=None):
-    simulate(model, 0.002, state=state, dt=dt)  # compile / warm the cache
-    dt0 = model.stable_time_step() if dt is None else dt
-    nsteps = int(round(duration / dt0))
-    r = simulate(model, duration, state=state, settle=STEADY, dt=dt,
-                 record_every=max(int(round(SAMPLE / dt0)), 1))
+def run_chaindrive(model, state, duration, dt=None, method="explicit"):
+    """One chaindrive run (results) and its CPU time per simulated second (a second run
+    with two records, so that the sampling and the summary are not timed)."""
+    simulate(model, 0.002, state=state, dt=dt, method=method)  # compile / warm the cache
+    r = simulate(model, duration, state=state, settle=STEADY, dt=dt, method=method,
+                 samples=max(int(round(duration / SAMPLE)), 2))
+    t0 = time.process_time()
+    rt = simulate(model, duration, state=state, settle=STEADY, dt=dt, method=method, samples=2)
+    cpu = time.process_time() - t0
     s = r.summary
     return {
-        "name": "chaindrive",
+        "name": f"chaindrive {method[:4]}",
         "dt": r.dt,
         "steps": r.steps,
-        "wall": r.wall_time,
-        "link_steps_per_s": r.steps * model.links / r.wall_time,
-        "wall_per_sim_s": r.wall_time / (r.steps * r.dt),
+        "wall": cpu,
+        "link_steps_per_s": rt.steps * model.links / cpu,
+        "wall_per_sim_s": cpu / (rt.steps * rt.dt),
         "v_mean": s["chain_velocity_mean"][0],
         "v_peak": s["chain_velocity_max"][0],
         "tight_mean": s["tight_side_tension_mean"],
         "tight_max": s["tight_side_tension_max"],
         "wheel1": s["wheel_speed_mean"][1],
-        "nsteps": nsteps,
     }, r
 
 
@@ -198,8 +225,9 @@ def tooth_geoms(model, teeth, faces=FACES):
     return out
 
 
-def mujoco_xml(model, state, dt, dmax=0.95, kv=1.0e5, faces=FACES):
-    """MJCF of the drive (x-z plane, gravity -z)."""
+def mujoco_xml(model, state, dt, dmax=0.95, kv=1.0e5, faces=FACES, rigid=False):
+    """MJCF of the drive (x-z plane, gravity -z); ``rigid``: links as length constraints
+    (tendon equalities) instead of stiff tendons."""
     p = model.pitch
     rr = model.roller_radius
     m = model.link_mass
@@ -207,6 +235,13 @@ def mujoco_xml(model, state, dt, dmax=0.95, kv=1.0e5, faces=FACES):
     # direct form: (-stiffness, -damping) per unit mass of the roller
     solref = f"{-model.contact_stiffness / m:.9g} {-model.contact_damping / m:.9g}"
     solimp = f"{dmax} {dmax} 0.001 0.5 2"
+    if rigid:
+        # MuJoCo's rigid limit: contacts and link lengths as soft constraints with the
+        # time constant RIGID_TC, the same on every step of the ladder (>= 2 dt, MuJoCo's
+        # advice), critically damped, impedance 0.99 (with 0.95 and 4e-4 s the mean speed
+        # came out 3 % high: the rollers sank into the soft seats)
+        solref = f"{RIGID_TC:.6g} 1"
+        solimp = "0.99 0.99 0.001 0.5 2"
     wl = []
     for j, w in enumerate(model.wheels):
         cx, cy = state.wp[j, K.W_CX], state.wp[j, K.W_CY]
@@ -225,8 +260,16 @@ def mujoco_xml(model, state, dt, dmax=0.95, kv=1.0e5, faces=FACES):
                     f'<site name="s{i}"/></body>')
     tendons = []
     n = len(state.pos)
+    equality = []
     for i in range(n):
         j = (i + 1) % n
+        if rigid:
+            # length held at its assembled value (qpos0 = the assembled state) by a soft
+            # equality constraint (MuJoCo's rigid limit)
+            tendons.append(f'<spatial name="t{i}"><site site="s{i}"/><site site="s{j}"/></spatial>')
+            equality.append(f'<tendon tendon1="t{i}" solref="{RIGID_TC:.6g} 1" '
+                            f'solimp="{solimp}"/>')
+            continue
         tendons.append(f'<spatial stiffness="{model.link_stiffness:.12g}" '
                        f'damping="{model.link_damping:.9g}" springlength="{p:.12g}">'
                        f'<site site="s{i}"/><site site="s{j}"/></spatial>')
@@ -239,6 +282,7 @@ def mujoco_xml(model, state, dt, dmax=0.95, kv=1.0e5, faces=FACES):
   </default>
   <worldbody>{''.join(wl)}{''.join(pins)}</worldbody>
   <tendon>{''.join(tendons)}</tendon>
+  <equality>{''.join(equality)}</equality>
   <actuator><velocity joint="w0" kv="{kv:.6g}"/></actuator>
 </mujoco>"""
 
@@ -295,7 +339,10 @@ def run_mujoco(model, state, duration, dt, probe, tight_mid, start=None, **opts)
     step = mujoco.mj_step
     qfrc = d.qfrc_applied
     ctrl = d.ctrl
-    t0 = time.perf_counter()
+    rigid = opts.get("rigid", False)
+    eq_rows = np.zeros(n, int)
+    sampling = 0.0
+    t0 = time.process_time()
     for s in range(nsteps):
         t = s * dt
         # chaindrive sets the driver speed at the end of the step, t + dt
@@ -303,6 +350,7 @@ def run_mujoco(model, state, duration, dt, probe, tight_mid, start=None, **opts)
         qfrc[1] = load
         step(m, d)
         if s % every == 0:
+            ts = time.process_time()
             xz = state.pos + np.column_stack([d.qpos[pin_adr], d.qpos[pin_adr + 1]])
             if not np.all(np.isfinite(xz)):
                 print(f"    mujoco dt = {dt:g}: non-finite state at t = {t:.4f} s")
@@ -311,18 +359,26 @@ def run_mujoco(model, state, duration, dt, probe, tight_mid, start=None, **opts)
             v.append(d.qvel[vel_adr[ib]] * probe[2] + d.qvel[vel_adr[ib] + 1] * probe[3])
             mid = 0.5 * (xz + np.roll(xz, -1, axis=0))
             il = np.argmin(np.sum((mid - tight_mid) ** 2, axis=1))
-            # link force as chaindrive records it: spring + damper
-            ten.append(k * (d.ten_length[il] - p) + c * d.ten_velocity[il])
+            if rigid:
+                # the equality constraint's force (tension: the length's force negative)
+                rows = np.nonzero(d.efc_type[:d.nefc] == mujoco.mjtConstraint.mjCNSTR_EQUALITY)[0]
+                eq_rows[d.efc_id[rows]] = rows
+                ten.append(-d.efc_force[eq_rows[il]])
+            else:
+                # link force as chaindrive records it: spring + damper
+                ten.append(k * (d.ten_length[il] - p) + c * d.ten_velocity[il])
             w1.append(d.qvel[1])
             times.append(t)
-    wall = time.perf_counter() - t0
+            sampling += time.process_time() - ts
+    # CPU time of the steps alone (the Python sampling above excluded)
+    wall = time.process_time() - t0 - sampling
     if d.warning[mujoco.mjtWarning.mjWARN_BADQACC].number > 0:
         print(f"    mujoco dt = {dt:g}: divergence warning (bad qacc)")
         return None
     times, v, ten, w1 = map(np.asarray, (times, v, ten, w1))
     sel = times >= STEADY
     res = {
-        "name": f"mujoco {mujoco.__version__}",
+        "name": "mujoco rigid" if rigid else "mujoco stiff",
         "dt": dt,
         "steps": nsteps,
         "wall": wall,
@@ -375,47 +431,56 @@ def print_table(rows):
 
 
 def plain_chain_rate(links=5000, steps=4000):
-    """Link-steps per second of a plain compiled point-mass chain (the ceiling)."""
+    """Link-steps per second of a plain compiled point-mass chain (the ceiling): the
+    vectorised layout (separate x/y arrays, no branch in the loops), symplectic Euler, no
+    contacts, no records."""
     from numba import njit
 
     @njit(cache=False, fastmath=False)
-    def run(pos, vel, k, p, m, dt, nsteps):
-        n = pos.shape[0]
-        fx = np.zeros(n)
-        fy = np.zeros(n)
+    def run(x, y, vx, vy, k, p, m, dt, nsteps):
+        n = x.shape[0]
+        fx = np.zeros(n + 1)
+        fy = np.zeros(n + 1)
         for _ in range(nsteps):
-            for i in range(n):
-                j = i + 1 if i + 1 < n else 0
-                dx = pos[j, 0] - pos[i, 0]
-                dy = pos[j, 1] - pos[i, 1]
+            for i in range(n - 1):
+                dx = x[i + 1] - x[i]
+                dy = y[i + 1] - y[i]
                 ll = math.sqrt(dx * dx + dy * dy)
                 f = k * (ll - p) / ll
-                fx[i] = f * dx
-                fy[i] = f * dy
+                fx[i + 1] = f * dx
+                fy[i + 1] = f * dy
+            dx = x[0] - x[n - 1]
+            dy = y[0] - y[n - 1]
+            ll = math.sqrt(dx * dx + dy * dy)
+            f = k * (ll - p) / ll
+            fx[n] = f * dx
+            fy[n] = f * dy
+            fx[0] = fx[n]
+            fy[0] = fy[n]
             for i in range(n):
-                im = i - 1 if i > 0 else n - 1
-                vel[i, 0] += (fx[i] - fx[im]) * dt / m
-                vel[i, 1] += (fy[i] - fy[im]) * dt / m
-                pos[i, 0] += vel[i, 0] * dt
-                pos[i, 1] += vel[i, 1] * dt
+                vx[i] += (fx[i + 1] - fx[i]) * dt / m
+                vy[i] += (fy[i + 1] - fy[i]) * dt / m
+                x[i] += vx[i] * dt
+                y[i] += vy[i] * dt
 
     a = 2 * np.pi * np.arange(links) / links
     radius = 0.0254 / (2 * math.sin(math.pi / links))
-    pos = np.column_stack([radius * np.cos(a), radius * np.sin(a)])
-    vel = np.zeros_like(pos)
-    run(pos.copy(), vel.copy(), 3.9e9, 0.0254, 0.066, 3e-6, 10)
+    x, y = radius * np.cos(a), radius * np.sin(a)
+    vx, vy = np.zeros(links), np.zeros(links)
+    run(x.copy(), y.copy(), vx.copy(), vy.copy(), 3.9e9, 0.0254, 0.066, 3e-6, 10)
     best = 0.0
     for _ in range(3):
-        t0 = time.perf_counter()
-        run(pos, vel, 3.9e9, 0.0254, 0.066, 3e-6, steps)
-        best = max(best, links * steps / (time.perf_counter() - t0))
+        t0 = time.process_time()
+        run(x, y, vx, vy, 3.9e9, 0.0254, 0.066, 3e-6, steps)
+        best = max(best, links * steps / (time.process_time() - t0))
     return best
 
 
 def scaling(lengths=(100, 500, 1000, 2000, 5000), link_steps=1.5e8):
-    """One line per chain length: assembly time and kernel link-steps/s."""
+    """One line per chain length: assembly time and kernel link-steps/s (CPU time) of both
+    integrators, and the implicit one's CPU time per simulated second."""
     print("scaling (16B on two 17-tooth sprockets, 20 rad/s, 200 N m; pretension of a 2 % "
-          "sag, >= 200 N; machine shared, times vary):", flush=True)
+          "sag, >= 200 N; CPU time, machine shared):", flush=True)
     rates = {}
     for n in lengths:
         span = 0.5 * (n - 17) * 0.0254
@@ -423,41 +488,69 @@ def scaling(lengths=(100, 500, 1000, 2000, 5000), link_steps=1.5e8):
         pretension = max(200.0, weight * span / (8 * 0.02))
         model = roller_example(links=n, teeth=17, angular_velocity=20.0, load_torque=200.0,
                                ramp_time=0.1, pretension=pretension)
-        t0 = time.perf_counter()
+        t0 = time.process_time()
         state = assemble(model)
-        t_asm = time.perf_counter() - t0
-        dt = model.stable_time_step()
-        duration = max(link_steps / n, 2000) * dt
-        simulate(model, 20 * dt, state=state, samples=2)  # warm
-        best = 0.0
-        for _ in range(3):
-            r = simulate(model, duration, state=state, samples=20)
-            best = max(best, r.summary["link_steps_per_second"])
-        rates[n] = best
-        print(f"links {n}: assemble {t_asm:.2f} s, link-steps/s {best:.3g}", flush=True)
+        t_asm = time.process_time() - t0
+        line = f"links {n}: assemble {t_asm:.2f} s"
+        for method, dt in (("explicit", model.stable_time_step()),
+                           ("implicit", model.accurate_time_step())):
+            duration = max(link_steps / n / (10 if method == "implicit" else 1), 2000) * dt
+            simulate(model, 20 * dt, state=state, samples=2, method=method)  # warm
+            best = 0.0
+            for _ in range(3 if n <= 1000 else 2):
+                t0 = time.process_time()
+                r = simulate(model, duration, state=state, samples=2, method=method)
+                best = max(best, r.steps * n / (time.process_time() - t0))
+            rates[n, method] = best
+            line += (f", {method} link-steps/s {best:.3g} ({1e9 / best:.1f} ns, "
+                     f"{n / (best * dt):.3g} s/sim s at {1e6 * dt:.3g} us)")
+        print(line, flush=True)
     from chaindrive.simulation import conveyor_example
 
     conveyor = conveyor_example()
-    t0 = time.perf_counter()
+    t0 = time.process_time()
     state = assemble(conveyor)
-    t_asm = time.perf_counter() - t0
-    r = simulate(conveyor, 0.3, state=state, samples=20)
-    print(f"conveyor (26x92, 100 m, tensioner) links {conveyor.links}: assemble {t_asm:.2f} s, "
-          f"link-steps/s {r.summary['link_steps_per_second']:.3g}", flush=True)
+    t_asm = time.process_time() - t0
+    line = f"conveyor (26x92, 100 m, tensioner) links {conveyor.links}: assemble {t_asm:.2f} s"
+    for method in ("explicit", "implicit"):
+        t0 = time.process_time()
+        r = simulate(conveyor, 0.3, state=state, samples=20, method=method)
+        cpu = time.process_time() - t0
+        line += f", {method} {cpu / 0.3:.3g} s/sim s at {1e6 * r.dt:.3g} us"
+    print(line, flush=True)
     plain = plain_chain_rate()
-    print(f"plain compiled point-mass chain (5000 links, no contacts): link-steps/s {plain:.3g}")
-    print(f"kernel at {max(rates)} links / at {min(rates)} links: "
-          f"{rates[max(rates)] / rates[min(rates)]:.2f}; kernel at {max(rates)} links / plain "
-          f"chain: {rates[max(rates)] / plain:.2f}")
+    top, low = max(lengths), min(lengths)
+    print(f"vectorised point-mass chain (5000 links, separate x/y, no contacts): link-steps/s "
+          f"{plain:.3g} ({1e9 / plain:.2f} ns)")
+    for method in ("explicit", "implicit"):
+        print(f"{method}: kernel at {top} links / at {low} links: "
+              f"{rates[top, method] / rates[low, method]:.2f}; per link-step at {top} links / "
+              f"point-mass ceiling: {rates[top, method] / plain:.2f}")
     return rates, plain
+
+
+def pick_converged(rows, ref=None):
+    """The largest step whose run is converged against its halved step and (``ref``) within
+    ``TOL_REF`` of the reference in mean speed and mean tight-side tension; else the
+    finest converged one, else the finest. Returns (row, converged, within the reference)."""
+    converged(rows)
+    conv = [x for x in rows if x.get("conv")]
+    for x in conv:
+        if ref is None or (abs(_rel(x, ref, "v_mean")) <= TOL_REF
+                           and abs(_rel(x, ref, "tight_mean")) <= TOL_REF):
+            return x, True, True
+    return (conv[-1], True, False) if conv else (rows[-1], False, False)
 
 
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--duration", type=float, default=0.3)
+    ap.add_argument("--mujoco", action="store_true",
+                    help="compare with MuJoCo (stiff links and rigid links); the default "
+                         "when mujoco is installed")
     ap.add_argument("--no-mujoco", action="store_true")
     ap.add_argument("--quick", action="store_true",
-                    help="MuJoCo at its largest stable step and half only (no quarter)")
+                    help="MuJoCo stiff links at its largest stable step and half only")
     ap.add_argument("--diagnose", action="store_true",
                     help="also run the variants behind the stated diagnosis (MuJoCo at 4 us: "
                          "impedance d, seat faces, servo gain; both engines without friction)")
@@ -470,11 +563,17 @@ def main():
     if args.scaling:
         scaling()
         return
+    import os
+
+    print(f"load average {os.getloadavg()[0]:.2f} {os.getloadavg()[1]:.2f} (2 cores shared); "
+          "times are CPU times", flush=True)
     model, state = build()
     dt0 = model.stable_time_step()
     own, r = run_chaindrive(model, state, args.duration)
-    own_rows = [own] + [run_chaindrive(model, state, args.duration, dt=dt0 / f)[0] for f in (2, 4)]
-    mj_rows = []
+    exp_rows = [own, run_chaindrive(model, state, args.duration, dt=dt0 / 2)[0]]
+    imp_rows = [run_chaindrive(model, state, args.duration, dt=dt, method="implicit")[0]
+                for dt in IMPLICIT_LADDER]
+    stiff_rows, rigid_rows = [], []
     if not args.no_mujoco:
         try:
             import mujoco
@@ -491,19 +590,25 @@ def main():
             base = None
             for dt in (1e-5, 8e-6, 6e-6, 5e-6, 4e-6, 3e-6, 2e-6):
                 res = run_mujoco(model, state, args.duration, dt, probe, tight_mid)
-                print(f"  mujoco dt = {dt:g} s: {'stable' if res is not None else 'unstable'}",
-                      flush=True)
+                print(f"  mujoco stiff links dt = {dt:g} s: "
+                      f"{'stable' if res is not None else 'unstable'}", flush=True)
                 if res is not None:
                     base = res
                     break
             if base is not None:
-                mj_rows.append(base)
+                stiff_rows.append(base)
                 for f in ((2,) if args.quick else (2, 4)):
                     res = run_mujoco(model, state, args.duration, base["dt"] / f, probe, tight_mid,
                                      start=base["settled"])
                     if res is None:
                         break
-                    mj_rows.append(res)
+                    stiff_rows.append(res)
+            for dt in RIGID_LADDER:
+                res = run_mujoco(model, state, args.duration, dt, probe, tight_mid, rigid=True)
+                print(f"  mujoco rigid links dt = {dt:g} s: "
+                      f"{'ran' if res is not None else 'failed'}", flush=True)
+                if res is not None:
+                    rigid_rows.append(res)
             mujoco.set_mju_user_warning(previous)
     print(f"\n16B chain, {model.links} links, 2 x z = 17, centre distance "
           f"{state.wp[1, K.W_CX]:.4f} m, {args.duration:g} s simulated, steady window "
@@ -511,27 +616,33 @@ def main():
     print("dv/v, dvpk, dS/S: change of mean speed, peak speed, mean tight-side tension against "
           "the next (halved) step; conv: |dv/v| <= "
           f"{100 * TOL_SPEED:g} % and |dS/S| <= {100 * TOL_TENSION:g} %")
-    pick_own = converged(own_rows)
-    pick_mj = converged(mj_rows) if len(mj_rows) > 1 else None
-    print_table(own_rows + mj_rows)
+    groups = [g for g in (exp_rows, imp_rows, stiff_rows, rigid_rows) if g]
+    ref, _, _ = pick_converged(exp_rows)
+    picks = {g[0]["name"]: pick_converged(g, ref) for g in groups}
+    print_table([x for g in groups for x in g])
     print(f"static reference: T/R = {200 / model.pitch_radii()[1]:.1f} N (+ slack-side tension)")
-    if mj_rows:
-        a = pick_own or own_rows[-1]
-        b = pick_mj or mj_rows[-1]
-        tag = "at equal accuracy" if (pick_own and pick_mj) else \
-            "NOT at equal accuracy (a run is not converged; finest steps compared)"
-        print(f"\n{tag}: chaindrive at {1e6 * a['dt']:.3g} us, MuJoCo at {1e6 * b['dt']:.3g} us")
-        print(f"wall time per simulated second, mujoco / chaindrive: "
-              f"{b['wall_per_sim_s'] / a['wall_per_sim_s']:.3g} "
-              f"({b['wall_per_sim_s']:.3g} s / {a['wall_per_sim_s']:.3g} s)")
-        print(f"per step at the largest stable steps, mujoco / chaindrive: "
-              f"{own_rows[0]['link_steps_per_s'] / mj_rows[0]['link_steps_per_s']:.3g}")
-        print(f"difference (mujoco - chaindrive): mean speed "
-              f"{100 * _rel(b, a, 'v_mean'):+.2f} %, peak speed {100 * _rel(b, a, 'v_peak'):+.2f} %, "
-              f"mean tight-side tension {100 * _rel(b, a, 'tight_mean'):+.2f} %")
-
-    if args.diagnose and mj_rows:
-        diagnose(model, state, args.duration, mj_rows[0]["dt"], own_rows[0])
+    print(f"\nreference: chaindrive explicit at {1e6 * ref['dt']:.3g} us (mean speed "
+          f"{ref['v_mean']:.4f} m/s, mean tight-side tension {ref['tight_mean']:.1f} N)")
+    print(f"equal accuracy: each engine at its largest step converged against its halved step "
+          f"and within {100 * TOL_REF:g} % of the reference (mean speed, mean tight-side tension):")
+    for name, (x, ok, near) in picks.items():
+        state_ = "equal accuracy" if near else ("converged, NOT within the reference" if ok
+                                                else "NOT converged")
+        print(f"  {name:<16} {1e6 * x['dt']:>6.3g} us {state_}, {x['wall_per_sim_s']:.3g} s CPU "
+              f"per simulated s; against the reference: mean speed "
+              f"{100 * _rel(x, ref, 'v_mean'):+.2f} %, mean tension "
+              f"{100 * _rel(x, ref, 'tight_mean'):+.2f} %, peak speed "
+              f"{100 * _rel(x, ref, 'v_peak'):+.2f} %")
+    imp, _, imp_near = picks["chaindrive impl"]
+    print(f"chaindrive implicit vs explicit (per simulated second): "
+          f"{ref['wall_per_sim_s'] / imp['wall_per_sim_s']:.3g} x")
+    for label, key in (("rigid links", "mujoco rigid"), ("stiff links", "mujoco stiff")):
+        if key in picks:
+            x, _, near = picks[key]
+            print(f"vs MuJoCo {label}: {x['wall_per_sim_s'] / imp['wall_per_sim_s']:.3g} x"
+                  f"{'' if near and imp_near else '  (not at equal accuracy: see the lines above)'}")
+    if args.diagnose and stiff_rows:
+        diagnose(model, state, args.duration, stiff_rows[0]["dt"], own)
     if not args.no_scaling:
         print()
         scaling()

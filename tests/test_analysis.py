@@ -40,10 +40,12 @@ def _leaves(x, path=""):
 #: only, so a round link chain's "link passing" 2 z1 ω1 pairs left the band table (it is
 #: judged by its forced response, docs/vibration.md §6); the Campbell lines and the free
 #: spans' information pairs follow the same excitations (a roller chain's meshing left them,
-#: its unequal links z1 ω1/2 came in).
+#: its unequal links z1 ω1/2 came in). The roller-bushing limit of a B-series chain (issue
+#: 19): rated by its family's method, ISO 10823, whose B-series roller constant is 22.9, not
+#: the ANSI 17 (docs/rating.md); the rated power (link plate) is unchanged.
 MOVED = ("safety.checks", "Span vibration and resonance check.tensioner.check",
          "Span vibration and resonance check.check", "Span vibration and resonance check.tensioner.campbell",
-         "Span vibration and resonance check.free_spans.check")
+         "Span vibration and resonance check.free_spans.check", "Loads and safety.rating.roller_bushing")
 
 
 @pytest.mark.parametrize("name", NAMES)

@@ -224,7 +224,8 @@ def select(power: float, speed: float, ratio: float, *, service_factor: float = 
 
     References
     ----------
-    ACA rating method (:func:`chain_rating`); Shigley, 10th ed., §17-5 (selection
+    ACA and ISO 10823 rating methods, each chain by its family's (:func:`chain_rating`);
+    Shigley, 10th ed., §17-5 (selection
     procedure, eqs (17-34), (17-35)); ISO 10823:2004 (centre distance 30 … 50 pitches,
     chain length); ANSI B29.1 sprocket outside diameter ``p (0.6 + cot(180°/z))``.
 
@@ -232,7 +233,7 @@ def select(power: float, speed: float, ratio: float, *, service_factor: float = 
     --------
     >>> rows = select(7.5e3, 1450 * math.pi / 30, 3.0)
     >>> [(c.chain, c.strands, round(c.power_margin, 2)) for c in rows][:3]
-    [('10B-1', 1, 1.47), ('10A-1', 1, 1.47), ('08B-2', 2, 1.29)]
+    [('10B-1', 1, 1.48), ('10A-1', 1, 1.47), ('08B-2', 2, 1.29)]
     >>> rows[1].names, rows[1].links, rows[1].lubrication
     (('10A-1', 'ANSI 50-1'), 116, 'B')
     """

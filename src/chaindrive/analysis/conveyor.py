@@ -404,10 +404,14 @@ def _offsets(walk, spans, head, tail, head_force, tail_force):
 
 
 def _exit_offsets(walk, spans, head, tail, head_force, tail_force) -> list[float]:
-    """``τ`` where the chain leaves the head and (a driving tail) the tail."""
+    """``τ`` where the chain leaves each wheel (the head first).
+
+    Every sprocket exit, not only the driving ones: behind an idle tail at the foot of a
+    steep return (which pulls itself down, ``τ`` falling along it) the tail's exit is
+    the lowest, as in the chain makers' sheets (e-uparts 20-3: ``T1 < 0 → T2 = 0``)."""
     out = [0.0]
-    for kind, j, t in _offsets(walk, spans, head, tail, head_force, tail_force):
-        if kind == "wheel" and j == tail and tail_force != 0.0:
+    for kind, _j, t in _offsets(walk, spans, head, tail, head_force, tail_force):
+        if kind == "wheel":
             out.append(t)
     return out
 

@@ -269,13 +269,13 @@ def rating_command(
     teeth: int = typer.Option(..., "--teeth", "-z", help="Teeth of the small sprocket, a count."),
     speed: str = typer.Option(..., "--speed", "-n", help=unit_help("Speed of the small sprocket.", "rad/s",
                                                                    "1000 rpm")),
-    method: str | None = typer.Option(None, "--method", help="Rating method (default: the method of the "
-                                      "chain's family): ansi or iso10823 when available."),
+    method: str | None = typer.Option(None, "--method", help="Rating method: ansi or iso10823 (default: "
+                                      "the method of the chain's family, iso10823 for ISO 606 B series)."),
     power: str | None = typer.Option(None, "--power", "-P", help=unit_help(
         "Design power, for the galling check (optional).", "W", "5 kW")),
     as_json: bool = typer.Option(False, "--json", help="JSON in SI units: rated_power [W], method, limited_by."),
 ) -> None:
-    """Rated power of one roller chain on its small sprocket (ANSI/ACA or the chain family's method)."""
+    """Rated power of one roller chain on its small sprocket (ANSI/ACA or ISO 10823; the family's method)."""
     from ..design.rating import rate_chain
 
     r = rate_chain(chain, teeth, quantity(speed, "rad/s", "speed"), power=quantity(power, "W", "power"),

@@ -34,11 +34,15 @@ def simulate_command(
     no_plots: bool = typer.Option(False, "--no-plots", help="Skip PNGs and GIF."),
     as_json: bool = typer.Option(False, "--json", help="Print the summary as JSON (SI units)."),
     motor: bool = typer.Option(False, "--motor", help="Project files: drive the driving wheel with an induction motor on the Kloss curve, rated at [load] power at the drive speed (chaindrive.motor.Motor.rated: rated slip and breakdown-torque ratio of a high-slip mining motor), switched on direct at t = 0, instead of the prescribed speed ramp."),
-    motor_inertia: str | None = typer.Option(None, "--motor-inertia", help=unit_help("With --motor: rotor and coupling inertia reduced to the driving wheel's shaft (J_motor times the gear ratio squared), added to the wheel's (default 0).", "kg*m**2", "835 kg*m**2")),
+    motor_inertia: str | None = typer.Option(None, "--motor-inertia", help=unit_help("With --motor: rotor and coupling inertia reduced to the driving wheel's shaft (J_motor times the gear ratio squared), added to the wheel's (default 0); with --coupling the inertia of the motor's own degree of freedom (required, > 0).", "kg*m**2", "835 kg*m**2")),
     stop: str | None = typer.Option(None, "--stop", help=unit_help("Project files: from this time the motor is switched off (--motor) or the prescribed speed falls to rest over --stop-ramp (default: no stop).", "s", "3 s")),
     stop_ramp: str | None = typer.Option(None, "--stop-ramp", help=unit_help("Project files: time for the prescribed speed to fall to rest after --stop (default 0: at once).", "s", "1 s")),
     ripple: float = typer.Option(0.0, "--ripple", help="Project files: relative amplitude a of a ripple 1 + a sin(Omega t) of the motor torque (--motor) or of the prescribed speed, -1 < a < 1 (dimensionless; default 0)."),
     ripple_frequency: str | None = typer.Option(None, "--ripple-frequency", help=unit_help("Angular frequency Omega of the --ripple (default 0).", "rad/s or Hz", "50 Hz")),
+    coupling: bool = typer.Option(False, "--coupling", help="With --motor: the motor drives through a constant-fill fluid coupling sized on its rated point (nominal torque = [load] power over the drive speed, at the drive speed; chaindrive.coupling); the motor rotor and coupling primary (--motor-inertia, then required) turn at their own speed."),
+    coupling_slip: float = typer.Option(0.03, "--coupling-slip", help="With --coupling: its nominal slip s_n, 0.005 <= s_n <= 0.2 (dimensionless; default 0.03)."),
+    coupling_stall: float = typer.Option(1.5, "--coupling-stall", help="With --coupling: its stall-torque ratio k = T(s = 1)/T_n, 1.1 <= k <= 6 and k s_n < 1 (dimensionless; default 1.5)."),
+    secondary_inertia: str | None = typer.Option(None, "--secondary-inertia", help=unit_help("With --coupling: coupling secondary and gearbox reduced to the driving wheel's shaft, added to the wheel's, >= 0 (default 0).", "kg*m**2", "209 kg*m**2")),
     force: bool = typer.Option(False, "--force", help="Replace an earlier run in the output directory (the results are built in a temporary folder and moved into place when complete; a failed run leaves an earlier one unchanged)."),
 ) -> None:
     """Simulate the drive: point-mass pins, elastic links (EA), penalty contact of rollers
@@ -52,7 +56,8 @@ def simulate_command(
     # needs --force, a folder with other files is refused
     with claim_output_dir(output, force=force):
         _simulate(project, example, duration, output, speed, load, ramp, frames, no_plots, as_json, force,
-                  DriveProfile(motor, motor_inertia, stop, stop_ramp, ripple, ripple_frequency))
+                  DriveProfile(motor, motor_inertia, stop, stop_ramp, ripple, ripple_frequency, coupling,
+                               coupling_slip, coupling_stall, secondary_inertia))
 
 
 @dataclass(frozen=True)
@@ -65,6 +70,10 @@ class DriveProfile:
     stop_ramp: str | None = None
     ripple: float = 0.0
     ripple_frequency: str | None = None
+    coupling: bool = False
+    coupling_slip: float = 0.03
+    coupling_stall: float = 1.5
+    secondary_inertia: str | None = None
 
 
 def _simulate(project: Path | None, example: str | None, duration: str | None, output: Path,
@@ -91,9 +100,10 @@ def _simulate(project: Path | None, example: str | None, duration: str | None, o
     check_size("--frames", frames, MAX_FRAMES, minimum=0)
     if (project is None) == (example is None):
         raise InputError("give a project file or --example roller|link|conveyor (exactly one)")
-    if example is not None and (motor or stop or stop_ramp or ripple or ripple_frequency or motor_inertia):
-        raise InputError("--motor, --motor-inertia, --stop, --stop-ramp, --ripple and --ripple-frequency "
-                         "apply to project files, not to --example")
+    if example is not None and (motor or stop or stop_ramp or ripple or ripple_frequency or motor_inertia
+                                or profile.coupling):
+        raise InputError("--motor, --motor-inertia, --coupling, --stop, --stop-ramp, --ripple and "
+                         "--ripple-frequency apply to project files, not to --example")
     if example is not None:
 
         def conveyor(angular_velocity: float, load_torque: float, ramp_time: float) -> Any:
@@ -138,8 +148,13 @@ def _simulate(project: Path | None, example: str | None, duration: str | None, o
             motor_spec = Motor.rated(float(drive.load.power), float(drive.speed))
         elif motor_inertia is not None:
             raise InputError("--motor-inertia needs --motor")
+        coupling_spec = _coupling(profile, drive, motor_spec)
+        if profile.secondary_inertia is not None and coupling_spec is None:
+            raise InputError("--secondary-inertia needs --coupling")
         model = with_drive_profile(
-            model, motor=motor_spec,
+            model, motor=motor_spec, coupling=coupling_spec,
+            secondary_inertia=quantity(profile.secondary_inertia, "kg*m**2", "secondary-inertia")
+            if profile.secondary_inertia else 0.0,
             motor_inertia=quantity(motor_inertia, "kg*m**2", "motor-inertia") if motor_inertia else 0.0,
             stop_time=quantity(stop, "s", "stop") if stop else 0.0,
             stop_ramp=quantity(stop_ramp, "s", "stop-ramp") if stop_ramp else 0.0,
@@ -173,6 +188,28 @@ def _simulate(project: Path | None, example: str | None, duration: str | None, o
             _write_start_up(res, model, output, no_plots)
     output = final_output
     _report(res, output, as_json)
+
+
+def _coupling(profile: DriveProfile, drive: Any, motor: Any) -> Any:
+    """The fluid coupling of ``--coupling`` (sized on the motor's rated point), or None."""
+    from ..coupling import NOMINAL_SLIP_RANGE, STALL_RATIO_RANGE, FluidCoupling
+
+    if not profile.coupling:
+        return None
+    if motor is None:
+        raise InputError("--coupling needs --motor (the motor in front of the coupling)")
+    if profile.motor_inertia is None:
+        raise InputError("--coupling needs --motor-inertia (motor rotor and coupling primary reduced to the "
+                         "driving wheel, > 0 kg*m**2): behind a coupling the motor turns at its own speed")
+    s_n, k = profile.coupling_slip, profile.coupling_stall
+    if not NOMINAL_SLIP_RANGE[0] <= s_n <= NOMINAL_SLIP_RANGE[1]:
+        raise InputError(f"--coupling-slip must lie in [{NOMINAL_SLIP_RANGE[0]:g}, {NOMINAL_SLIP_RANGE[1]:g}] "
+                         f"(dimensionless), got {s_n!r}")
+    if not (STALL_RATIO_RANGE[0] <= k <= STALL_RATIO_RANGE[1] and k * s_n < 1):
+        raise InputError(f"--coupling-stall must lie in [{STALL_RATIO_RANGE[0]:g}, {STALL_RATIO_RANGE[1]:g}] "
+                         f"with --coupling-stall times --coupling-slip below 1, got {k!r}")
+    return FluidCoupling.sized(float(drive.load.power) / float(drive.speed), float(drive.speed),
+                               nominal_slip=s_n, stall_ratio=k)
 
 
 def _write_outputs(res, output: Path, no_plots: bool, frames: int) -> None:

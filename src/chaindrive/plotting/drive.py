@@ -172,7 +172,7 @@ def rating_plot(result: ChainRating | float, teeth: int | None = None, *, strand
                 plate_constant: float = 0.004, roller_constant: float = 17.0,
                 speed_range: tuple[float, float] | None = None, operating: tuple[float, float] | None = None,
                 ax: Axes | None = None, name: str = "") -> Figure:
-    """ANSI/ACA rating chart: both limits, the galling line, lubrication regions, operating point.
+    """Rating chart (ANSI/ACA or ISO 10823 form): both limits, the galling line, lubrication regions, operating point.
 
     Parameters
     ----------
@@ -217,7 +217,9 @@ def rating_plot(result: ChainRating | float, teeth: int | None = None, *, strand
     if isinstance(result, S.ChainRating):
         r = result
         pitch, teeth, strands = r.pitch, r.teeth, r.strands
-        plate_constant, roller_constant = S.ansi_constants(r.chain)
+        from ..rating import rating_constants
+
+        plate_constant, roller_constant = rating_constants(r.chain, r.method)
         name = name or r.chain
         if operating is None:
             operating = (r.angular_velocity, r.tension * r.chain_speed * S.multi_strand_factor(strands))

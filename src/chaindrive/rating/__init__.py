@@ -3,6 +3,8 @@ r"""Power rating of roller chains, each family by its own method (``method=`` re
 * ``"ansi"`` -- the American Chain Association method behind the ANSI horsepower tables
   (:mod:`chaindrive.rating.ansi`): link-plate and roller–bushing limits, galling,
   lubrication regions;
+* ``"iso10823"`` -- the ISO 10823 rating of ISO 606 A- and B-series chains
+  (:mod:`chaindrive.rating.iso10823`; the default for the B series);
 * further methods register themselves in :data:`RATING_METHODS`.
 
 :func:`chain_rating` rates one chain on one small sprocket; :func:`default_method` names
@@ -40,7 +42,8 @@ from .ansi import (
 if TYPE_CHECKING:
     from ..chains import Chain
 
-__all__ = ["ChainRating", "chain_rating", "RATING_METHODS", "RATING_CURVES", "default_method", "rated_power_curve", "HP"]
+__all__ = ["ChainRating", "chain_rating", "RATING_METHODS", "RATING_CURVES", "default_method", "rated_power_curve", "HP",
+           "rating_constants"]
 
 # --------------------------------------------------------------------------- one chain
 
@@ -49,7 +52,7 @@ _GOVERNING = ("link_plate", "roller_bushing")
 
 @dataclass(frozen=True)
 class ChainRating(Result):
-    """ANSI/ACA rating of one roller chain on one small sprocket (:func:`chain_rating`).
+    """Rating of one roller chain on one small sprocket by one method (:func:`chain_rating`).
 
     Attributes
     ----------
@@ -73,8 +76,8 @@ class ChainRating(Result):
         (:func:`galling_power` × ``K_2``); informative, the galling check is
         ``galling_exceeded``.
     rated_power : float
-        The smaller of ``link_plate`` and ``roller_bushing`` [W]: the ANSI table value,
-        which the tables also print in the galling region (type C').
+        The smaller of ``link_plate`` and ``roller_bushing`` [W]: the table (chart) value,
+        which the ANSI tables also print in the galling region (type C').
     governing_limit : str
         ``"link_plate"`` or ``"roller_bushing"``.
     tension : float
@@ -94,6 +97,10 @@ class ChainRating(Result):
         Where the region boundaries come from.
     warnings : tuple of str
         Validity-range and method notes (nothing is emitted as a Python warning).
+    method : str
+        ``"ansi"`` or ``"iso10823"`` (:data:`RATING_METHODS`).
+    source : str
+        Where the method's formulas and constants come from.
     """
 
     chain: str
@@ -189,19 +196,32 @@ def _ansi_rating(chain: Chain | str, teeth: int, angular_velocity: float, *,
     from ..chains import get
 
     ch = get(chain)
+    notes: list[str] = []
+    if ch.family == "iso606" and "B" in ch.name:
+        notes.append("ANSI/ACA rating applied to an ISO 606 B-series chain with the constants of the "
+                     "A series of equal pitch (an approximation; method 'iso10823' rates the B series)")
+    if ch.family == "custom":
+        notes.append(f"custom chain {ch.name}: ANSI B29.1 proportions assumed by the rating")
+    return _rate(ch, teeth, angular_velocity, power, constants=ansi_constants, method="ansi",
+                 source="ACA; Shigley, 10th ed., eqs (17-32), (17-33)", notes=notes)
+
+
+def _rate(ch: Chain, teeth, angular_velocity, power, *, constants, method: str, source: str,
+          notes: list[str]) -> ChainRating:
+    """Both fatigue limits, strands, galling and lubrication of one chain (shared by the methods)."""
+    label = "ANSI/ACA" if method == "ansi" else "ISO 10823"
     if not ch.is_roller_chain:
-        raise InputError(f"chain {ch.name} is a round link chain: the ANSI/ACA rating holds for roller "
+        raise InputError(f"chain {ch.name} is a round link chain: the {label} rating holds for roller "
                          "chains (ISO 606, ANSI B29.1) with 1 to 4 strands")
     if ch.strands > 4:
-        raise InputError(f"chain {ch.name} has {ch.strands} strands: the ANSI/ACA multi-strand factors "
+        raise InputError(f"chain {ch.name} has {ch.strands} strands: the {label} multi-strand factors "
                          "cover 1 to 4 strands")
     z = int(_scalar("teeth", teeth, lambda n, v, u: check_teeth(n, v), "whole number >= 3"))
     w = _scalar("angular_velocity", angular_velocity, check_positive, "rad/s")
     design = None if power is None else _scalar("power", power, check_positive, "W")
-    notes: list[str] = []
     with warnings.catch_warnings(record=True) as rec:
         warnings.simplefilter("always", ValidityRangeWarning)
-        kp, kr = ansi_constants(ch.name)
+        kp, kr = constants(ch.name)
         k2 = multi_strand_factor(ch.strands)
         h1 = float(ansi_link_plate_power(z, w, ch.pitch, kp))
         h2 = float(ansi_roller_bushing_power(z, w, ch.pitch, kr))
@@ -210,11 +230,6 @@ def _ansi_rating(chain: Chain | str, teeth: int, angular_velocity: float, *,
         tension = (min(h1, h2) if design is None else design / k2) / v
         n_gall = float(galling_speed(ch.pitch, z, tension))
         region = str(lubrication_region(v, ch.pitch))
-    if ch.family == "iso606" and "B" in ch.name:
-        notes.append("ANSI/ACA rating applied to an ISO 606 B-series chain with the constants of the "
-                     "A series of equal pitch (an approximation)")
-    if ch.family == "custom":
-        notes.append(f"custom chain {ch.name}: ANSI B29.1 proportions assumed by the rating")
     limits = (k2 * h1, k2 * h2)
     i = int(np.argmin(limits))
     exceeded = bool(w > n_gall)
@@ -230,6 +245,7 @@ def _ansi_rating(chain: Chain | str, teeth: int, angular_velocity: float, *,
         lubrication=region, lubrication_method=LUBRICATION_REGIONS[region],
         lubrication_source=_LUBRICATION_SOURCE,
         warnings=tuple(dict.fromkeys([str(r.message) for r in rec] + notes)),
+        method=method, source=source,
     )
 
 
@@ -237,7 +253,7 @@ def chain_rating(chain: Chain | str, teeth: int, angular_velocity: float, *,
                  power: float | None = None, method: str | None = None) -> ChainRating:
     r"""Rating of a roller chain on its small sprocket by the method of its family (or ``method``).
 
-    .. math:: P_r = K_2 \min(H_1, H_2)\ \text{(ANSI/ACA)}
+    .. math:: P_r = K_2 \min(H_1, H_2)\ \text{(ANSI/ACA; ISO 10823 with the series' constants)}
 
     Parameters
     ----------
@@ -265,7 +281,8 @@ def chain_rating(chain: Chain | str, teeth: int, angular_velocity: float, *,
 
     References
     ----------
-    See the methods (:mod:`chaindrive.rating.ansi`; docs/rating.md).
+    See the methods (:mod:`chaindrive.rating.ansi`, :mod:`chaindrive.rating.iso10823`;
+    docs/rating.md).
 
     Examples
     --------
@@ -280,21 +297,121 @@ def chain_rating(chain: Chain | str, teeth: int, angular_velocity: float, *,
     return RATING_METHODS.get(name)(ch, teeth, angular_velocity, power=power)
 
 
+def _iso10823_rating(chain: Chain | str, teeth: int, angular_velocity: float, *,
+                     power: float | None = None) -> ChainRating:
+    r"""ISO 10823 rating of an ISO 606 roller chain (A or B series) on its small sprocket.
+
+    .. math:: P_r = K_2 \min(P_1, P_2),\qquad (K_p, K_r)\ \text{of the chain's ISO 606 series}
+
+    Parameters
+    ----------
+    chain : Chain or str
+        An ISO 606 roller chain (A or B series; ANSI names rate as their A-series twins)
+        with 1 … 4 strands.
+    teeth : int
+        Teeth of the small sprocket [-] (9 … 45; warns outside).
+    angular_velocity : float
+        Speed of the small sprocket [rad/s].
+    power : float, optional
+        Design power [W] for the galling check.
+
+    Returns
+    -------
+    ChainRating
+        ``method == "iso10823"``; B-series ratings carry the provisional-constants note.
+
+    Raises
+    ------
+    InputError
+        A round link chain, a custom chain (no ISO 606 series), more than 4 strands, bad
+        teeth, speed or power.
+    UnknownNameError
+        Unknown chain name.
+
+    Notes
+    -----
+    Branch constants :func:`~chaindrive.rating.iso10823.iso10823_constants`; galling
+    check and lubrication regions as in the ANSI method (the ISO charts' own region
+    boundaries were not available); docs/rating.md, "ISO 10823".
+
+    References
+    ----------
+    ISO 10823:2004; Bhandari, *Design of Machine Elements*, Table 14.2; Shigley, 10th
+    ed., eqs (17-32), (17-33), §17-5.
+
+    Examples
+    --------
+    >>> r = chain_rating("12B-1", 17, 1400 * np.pi / 30, method="iso10823")
+    >>> round(r.rated_power / 1e3, 2), r.governing_limit, r.method
+    (18.15, 'roller_bushing', 'iso10823')
+    """
+    from ..chains import get
+    from .iso10823 import B_SERIES_NOTE, ISO10823_SOURCE, is_b_series, iso10823_constants
+
+    ch = get(chain)
+    if ch.family == "custom":
+        raise InputError(f"chain {ch.name} is a custom chain: the ISO 10823 rating needs an ISO 606 A- or "
+                         "B-series chain (use method='ansi' for custom proportions)")
+    notes = [B_SERIES_NOTE] if is_b_series(ch.name) else []
+    return _rate(ch, teeth, angular_velocity, power, constants=iso10823_constants, method="iso10823",
+                 source=ISO10823_SOURCE, notes=notes)
+
+
 #: Rating methods by name: ``f(chain, teeth, angular_velocity, power) -> ChainRating``.
 RATING_METHODS = Registry("rating method")
 RATING_METHODS.add("ansi", _ansi_rating)
+RATING_METHODS.add("iso10823", _iso10823_rating)
 
 
 def default_method(chain: Chain) -> str:
     """The rating method of a chain's family: ISO 606 B series by ISO 10823 when registered, else ANSI/ACA.
 
     >>> from chaindrive.chains import get
-    >>> default_method(get("ANSI 40"))
-    'ansi'
+    >>> default_method(get("ANSI 40")), default_method(get("12A-1")), default_method(get("12B-1"))
+    ('ansi', 'ansi', 'iso10823')
     """
-    if chain.family == "iso606" and "B" in chain.name and "iso10823" in RATING_METHODS:
+    from .iso10823 import is_b_series
+
+    if chain.family == "iso606" and is_b_series(chain.name) and "iso10823" in RATING_METHODS:
         return "iso10823"
     return "ansi"
+
+
+def rating_constants(name: str, method: str = "ansi") -> tuple[float, float]:
+    r"""Branch constants ``(K_p, K_r)`` a method uses for a chain name (both methods share the ACA form).
+
+    .. math:: H_1 \propto K_p,\qquad H_2 \propto K_r
+
+    Parameters
+    ----------
+    name : str
+        Chain name.
+    method : str
+        ``"ansi"`` or ``"iso10823"``.
+
+    Returns
+    -------
+    tuple of float
+
+    Raises
+    ------
+    UnknownNameError
+        An unknown method.
+
+    References
+    ----------
+    :func:`~chaindrive.rating.ansi.ansi_constants`,
+    :func:`~chaindrive.rating.iso10823.iso10823_constants`.
+
+    Examples
+    --------
+    >>> rating_constants("16B-1", "iso10823"), rating_constants("16B-1", "ansi")
+    ((0.004, 22.9), (0.004, 17.0))
+    """
+    from .iso10823 import iso10823_constants
+
+    RATING_METHODS.get(method)
+    return iso10823_constants(name) if method == "iso10823" else ansi_constants(name)
 
 
 def _ansi_curve(chain: Chain, teeth: int, angular_velocity: np.ndarray) -> np.ndarray:
@@ -305,9 +422,17 @@ def _ansi_curve(chain: Chain, teeth: int, angular_velocity: np.ndarray) -> np.nd
                                        plate_constant=kp, roller_constant=kr), dtype=float)
 
 
+def _iso10823_curve(chain: Chain, teeth: int, angular_velocity: np.ndarray) -> np.ndarray:
+    from .iso10823 import iso10823_rated_power
+
+    return np.asarray(iso10823_rated_power(chain.name, chain.pitch, teeth, angular_velocity,
+                                           strands=chain.strands), dtype=float)
+
+
 #: Rated power against speed by method: ``f(chain, teeth, angular_velocities) -> ndarray`` [W].
 RATING_CURVES = Registry("rating curve")
 RATING_CURVES.add("ansi", _ansi_curve)
+RATING_CURVES.add("iso10823", _iso10823_curve)
 
 
 def rated_power_curve(chain: Chain | str, teeth: int, angular_velocity: np.ndarray, *,

@@ -286,9 +286,9 @@ def ansi_rated_power(pitch: ArrayLike, teeth: ArrayLike, angular_velocity: Array
 
     Notes
     -----
-    Applied to ISO 606 B-series chains with the same constants as the A series of
-    equal pitch (an approximation: B-series plates differ; ISO 10823 charts would be
-    the proper source).
+    With the default constants this is the A-series (ANSI) rating; ISO 606 B-series
+    chains are rated by :mod:`chaindrive.rating.iso10823` (the same form with the
+    B-series constants).
 
     References
     ----------

@@ -10,7 +10,8 @@ pos, vel : (N, 2) pin (hinge-centre) positions [m] and velocities [m/s].
 force, work : (N, 2) work arrays.
 tension : (N,) link forces of the last step [N] (link i joins pin i and i+1).
 contact : (N,) total normal contact force on each pin of the last step [N].
-ws : (W, 6) wheel state: theta, omega, slide s, slide sdot, contact torque, slide force.
+ws : (W, 7) wheel state: theta, omega, slide s, slide sdot, contact torque, slide force,
+    speed of the motor behind a fluid coupling (0 without one).
 wp : (W, NWP) wheel parameters (column indices ``W_*`` below).
 gd : (G, 7) guides: ax, ay, ux, uy, nx, ny, length.
 tab : (W, smax, 6) seat (gap) directions in the wheel frame and the cos/sin of the half
@@ -29,13 +30,16 @@ from numba import njit
 W_CX, W_CY, W_R, W_Z, W_RS, W_CPSI, W_SPSI, W_HTIP, W_INERTIA, W_MODE, W_OMEGA0, W_RAMP, \
     W_TORQUE, W_DAMP, W_SLIDE, W_DX, W_DY, W_SMASS, W_SK, W_SC, W_SF, W_NSEAT, W_DA, W_DB, \
     W_PLAIN, W_RE, W_CEA, W_CEB, W_TCA, W_TCB, W_DTA, W_DTB, W_MSYNC, W_MTK, W_MSK, W_RIPA, W_RIPW, \
-    W_TSTOP, W_TDOWN = range(39)
-NWP = 39
+    W_TSTOP, W_TDOWN, W_FCK, W_FCSN, W_FCC, W_FCJ = range(43)
+NWP = 43
 # time-varying drive: W_MSYNC, W_MTK, W_MSK synchronous speed [rad/s], breakdown torque [N m]
 # and breakdown slip of a motor on the Kloss curve (MODE_MOTOR, reduced to the wheel);
 # W_RIPA, W_RIPW relative amplitude and angular frequency [rad/s] of a torque ripple;
 # W_TSTOP, W_TDOWN: from W_TSTOP [s] the motor is off (MODE_MOTOR) or the prescribed
 # speed falls linearly to 0 over W_TDOWN [s] (MODE_SPEED); W_TSTOP <= 0: never
+# W_FCJ > 0: the motor drives through a constant-fill fluid coupling (chaindrive.coupling):
+# the motor rotor and coupling primary (inertia W_FCJ [kg m²], speed S_MOTOR) are their own
+# degree of freedom; W_FCK = T_n (1 + c)/ω_n², W_FCSN = s_n, W_FCC = c (coupling_torque)
 # W_RE > 0: ISO 606 convex flank arc of radius r_e (sprockets): its centre (W_CEA, W_CEB)
 # and the tooth corner (W_TCA, W_TCB) in gap coordinates (a, |b|), the unit direction
 # (W_DTA, W_DTB) from the flank centre to the corner; W_RE = 0: straight flank (pockets)
@@ -43,11 +47,16 @@ NWP = 39
 # W_NSEAT: number of seats per turn (z for a sprocket, 2z for a pocket wheel); W_DA, W_DB:
 # central angles [rad] spanned by an even link (pins 2k, 2k+1) and an odd link when seated
 # wheel state columns
-S_THETA, S_OMEGA, S_S, S_SDOT, S_TORQUE, S_SFORCE = range(6)
+S_THETA, S_OMEGA, S_S, S_SDOT, S_TORQUE, S_SFORCE, S_MOTOR, S_COUPLING = range(8)
+NWS = 8
+# S_MOTOR: speed of the motor behind a fluid coupling; S_COUPLING: the coupling's torque
+# on the wheel in the last step (both 0 without a coupling)
 # parameter vector
 P_MASS, P_K, P_C, P_PITCH, P_RROLLER, P_KC, P_CC, P_MU, P_VEPS, P_GX, P_GY, P_DT, P_CGLOB, \
-    P_KG, P_CG, P_DTREF, P_PITCH2 = range(17)
-NPAR = 17
+    P_KG, P_CG, P_DTREF, P_PITCH2, P_THETA = range(18)
+NPAR = 18
+# P_THETA: implicitness θ of the linearly implicit integrator (forces evaluated at
+# x + θ h v⁺); unused by the explicit kernel
 # P_PITCH: rest length of the even links (i = 0, 2, ...); P_PITCH2: of the odd links
 # (equal for a roller chain; t + d and t - d for a round link chain)
 # wheel modes
@@ -154,7 +163,7 @@ def nearest_seat(tab, w, g, iz, qxw, qyw):
 
 @njit(cache=True, fastmath=False, inline="always")
 def seat_penetration(a, b, rr, delta, cps, sps, re, arcflank, cea, ceb, dta, dtb, tca, tcb,
-                     stip):
+                     stip, reach=0.0):
     """Penetration ``pen`` [m] of a roller at ``(a, b)`` in its gap frame, outward normal.
 
     Returns ``(pen, na, nb, curvature)``; no contact when ``pen <= 0`` (the other values
@@ -162,6 +171,8 @@ def seat_penetration(a, b, rr, delta, cps, sps, re, arcflank, cea, ceb, dta, dtb
     force on the roller is ``−k_c pen n``); ``curvature`` [1/m] is that of the gap
     function along the tangent (``+1/d`` on the concave seat arc, ``−1/d`` on the convex
     flank arc and the tooth corner, 0 on a straight flank), for the static solver.
+    ``reach`` > 0: the normal also for a gap ``0 <= −pen < reach`` (the implicit
+    integrator's contacts that close within a step).
     """
     ab = abs(b)
     sb = 1.0 if b >= 0.0 else -1.0
@@ -179,45 +190,47 @@ def seat_penetration(a, b, rr, delta, cps, sps, re, arcflank, cea, ceb, dta, dtb
         tb = ab - tcb
         d = math.sqrt(ta * ta + tb * tb)
         pen = rr - d
-        if pen <= 0.0:
+        if pen <= -reach:
             return pen, 0.0, 0.0, 0.0
         return pen, -ta / d, -sb * tb / d, -1.0 / d
     if ab * cps + a * sps <= 0.0:
         d = math.sqrt(a * a + b * b)
         pen = d - delta
-        if pen <= 0.0:
+        if pen <= -reach or d == 0.0:
             return pen, 0.0, 0.0, 0.0
         return pen, a / d, b / d, 1.0 / d
     if arcflank:
         # outside the convex ISO flank arc (radius r_e about C_e)
         dv = math.sqrt(va * va + vb * vb)
         pen = re + rr - dv
-        if pen <= 0.0:
+        if pen <= -reach:
             return pen, 0.0, 0.0, 0.0
         return pen, -va / dv, -sb * vb / dv, -1.0 / dv
     pen = -a * cps + ab * sps - delta
-    if pen <= 0.0:
+    if pen <= -reach:
         return pen, 0.0, 0.0, 0.0
     return pen, -cps, sb * sps, 0.0
 
 
 @njit(cache=True, fastmath=False, inline="always")
-def guide_penetration(px, py, gd, g, rr):
+def guide_penetration(px, py, gd, g, rr, reach=0.0):
     """Penetration ``pen`` [m] of a roller at ``(px, py)`` into guide ``g``, and the normal.
 
     The distance is taken to the segment clamped to its ends (a guide's end is a corner
     the roller rolls round). Returns ``(pen, mx, my)``: the force on the roller is
-    ``k_g pen m``; no contact when ``pen <= 0``.
+    ``k_g pen m``; no contact when ``pen <= 0``. ``reach`` > 0: the normal also for a gap
+    ``0 <= −pen < reach`` (the implicit integrator).
     """
     h, s = _segment_frame(px - gd[g, 0], py - gd[g, 1], gd[g, 2], gd[g, 3], gd[g, 4], gd[g, 5])
-    if h < -rr or h >= rr:
-        return -1.0, 0.0, 0.0
+    rmax = rr + reach
+    if h < -rr or h >= rmax:
+        return -1.0 - reach, 0.0, 0.0
     length = gd[g, 6]
     if s < 0.0 or s > length:
         es = s if s < 0.0 else s - length
         d2 = es * es + h * h
-        if d2 >= rr * rr or d2 < 1e-24:
-            return -1.0, 0.0, 0.0
+        if d2 >= rmax * rmax or d2 < 1e-24:
+            return -1.0 - reach, 0.0, 0.0
         d = math.sqrt(d2)
         return rr - d, (es * gd[g, 2] + h * gd[g, 4]) / d, (es * gd[g, 3] + h * gd[g, 5]) / d
     return rr - h, gd[g, 4], gd[g, 5]
@@ -240,6 +253,59 @@ def drive_torque(wp, w, om, t):
     if wp[w, W_RIPA] != 0.0:
         tq *= 1.0 + wp[w, W_RIPA] * math.sin(wp[w, W_RIPW] * t)
     return tq
+
+
+@njit(cache=True, fastmath=False, inline="always")
+def fluid_coupling_torque(wp, w, om_p, om_t):
+    """Torque [N m] of a constant-fill fluid coupling, primary at ``om_p``, secondary at
+    ``om_t`` (:func:`chaindrive.coupling.coupling_torque`, its regular form), and its
+    slope ``∂T/∂(om_p − om_t)`` [N m s] at constant ``om_p``."""
+    d = om_p - om_t
+    sp = wp[w, W_FCSN] * abs(om_p)
+    den = sp + wp[w, W_FCC] * abs(d)
+    if den <= 0.0:
+        return 0.0, 0.0
+    k = wp[w, W_FCK] * om_p * om_p
+    return k * d / den, k * sp / (den * den)
+
+
+@njit(cache=True, fastmath=False, inline="always")
+def fluid_coupling_step(wp, w, om_m, om, t, tload, dt):
+    """Coupling torque [N m] for the step ``t -> t + dt``: implicit in the slip.
+
+    The coupling is a stiff damper between the motor (inertia ``J_m``) and the wheel
+    (``J``); with its slope ``b`` the slip rate of the step solves
+    ``δ = dt [(T_m − T_c − b δ)/J_m − (T_load + T_c + b δ)/J]``, and ``T_c + b δ`` is
+    returned (backward Euler of the linearised coupling: stable for any ``dt``).
+    """
+    tc, b = fluid_coupling_torque(wp, w, om_m, om)
+    jm = wp[w, W_FCJ]
+    jw = wp[w, W_INERTIA]
+    tm = drive_torque(wp, w, om_m, t)
+    delta = dt * ((tm - tc) / jm - (tload + tc) / jw) / (1.0 + dt * b * (1.0 / jm + 1.0 / jw))
+    return tc + b * delta
+
+
+@njit(cache=True, fastmath=False, inline="always")
+def wheel_drive_torque(wp, ws, w, om, t, tload, dt):
+    """Torque [N m] driving wheel ``w`` (mode motor) in the step from ``t``: the motor's
+    at the wheel's speed ``om``, or through a fluid coupling the coupling's
+    (:func:`fluid_coupling_step`, kept in ``ws[w, S_COUPLING]`` for
+    :func:`advance_motor`); ``tload`` the other torques on the wheel."""
+    if wp[w, W_FCJ] > 0.0:
+        tc = fluid_coupling_step(wp, w, ws[w, S_MOTOR], om, t, tload, dt)
+        ws[w, S_COUPLING] = tc
+        return tc
+    return drive_torque(wp, w, om, t)
+
+
+@njit(cache=True, fastmath=False, inline="always")
+def advance_motor(wp, ws, w, t, dt):
+    """The motor behind a fluid coupling over the step: ``J_m ω̇_m = T_m(ω_m) − T_c`` with
+    the coupling torque of :func:`wheel_drive_torque` (once per step, after it)."""
+    if wp[w, W_FCJ] > 0.0:
+        om_m = ws[w, S_MOTOR]
+        ws[w, S_MOTOR] = om_m + (drive_torque(wp, w, om_m, t) - ws[w, S_COUPLING]) / wp[w, W_FCJ] * dt
 
 
 @njit(cache=True, fastmath=False, inline="always")
@@ -299,39 +365,60 @@ def integrate(pos, vel, force, work, tension, contact, ws, wp, gd, tab, par, t0,
     gcand = np.empty((ng, n), np.int64)
     ngcand = np.zeros(ng, np.int64)
     # material carried by a pin this step: mass [kg] and the pan's unit tangent
-    extra = np.zeros((n, 3))
+    extra = np.zeros((n, 5))
     countdown = 0
     vmax_s = 0.0
     fgx = m * gx
     fgy = m * gy
     cm = cglob * m
-    # `force` holds the contact forces only (zero between steps); link, gravity and
-    # damping forces are added in the update loop
+    # separate coordinate arrays (the caller's (N, 2) arrays copied in and out), rest
+    # lengths per link; (fx, fy) hold the contact forces only (zero between steps); link,
+    # gravity and damping forces are added in the update loop; `force`, `work` unused
+    x = pos[:, 0].copy()
+    y = pos[:, 1].copy()
+    vx = vel[:, 0].copy()
+    vy = vel[:, 1].copy()
+    rest = np.empty(n)
     for i in range(n):
-        force[i, 0] = 0.0
-        force[i, 1] = 0.0
+        rest[i] = p if i % 2 == 0 else p2
+    fx = np.zeros(n)
+    fy = np.zeros(n)
+    wkx = np.zeros(n + 1)
+    wky = np.zeros(n + 1)
+    carrying = False
+    for i in range(n):
         contact[i] = 0.0
     for step in range(nsteps):
         t = t0 + step * dt
         epot = 0.0
         # links: axial spring-damper between consecutive pins (closed loop); first the
-        # link forces (independent iterations), then the pin forces
-        for i in range(n):
-            j = i + 1
-            if j == n:
-                j = 0
-            dx = pos[j, 0] - pos[i, 0]
-            dy = pos[j, 1] - pos[i, 1]
+        # link forces (independent iterations, vectorised: separate x/y arrays, rest
+        # lengths per link), then the pin forces
+        for i in range(n - 1):
+            dx = x[i + 1] - x[i]
+            dy = y[i + 1] - y[i]
             ll = math.sqrt(dx * dx + dy * dy)
             il = 1.0 / ll
             ux = dx * il
             uy = dy * il
-            dl = ll - (p if (i & 1) == 0 else p2)
-            ldot = (vel[j, 0] - vel[i, 0]) * ux + (vel[j, 1] - vel[i, 1]) * uy
-            tt = k * dl + c * ldot
+            ldot = (vx[i + 1] - vx[i]) * ux + (vy[i + 1] - vy[i]) * uy
+            tt = k * (ll - rest[i]) + c * ldot
             tension[i] = tt
-            work[i, 0] = tt * ux
-            work[i, 1] = tt * uy
+            wkx[i + 1] = tt * ux
+            wky[i + 1] = tt * uy
+        dx = x[0] - x[n - 1]
+        dy = y[0] - y[n - 1]
+        ll = math.sqrt(dx * dx + dy * dy)
+        il = 1.0 / ll
+        ux = dx * il
+        uy = dy * il
+        ldot = (vx[0] - vx[n - 1]) * ux + (vy[0] - vy[n - 1]) * uy
+        tt = k * (ll - rest[n - 1]) + c * ldot
+        tension[n - 1] = tt
+        wkx[n] = tt * ux
+        wky[n] = tt * uy
+        wkx[0] = wkx[n]
+        wky[0] = wky[n]
         # wheels: penalty contact of each roller with the nearest tooth gap; the pins
         # near each wheel are listed every `countdown` steps, often enough that no pin
         # can cover the margin in between (4 x the fastest relative speed)
@@ -339,7 +426,7 @@ def integrate(pos, vel, force, work, tension, contact, ws, wp, gd, tab, par, t0,
         if rebuild:
             vmax = 0.0
             for i in range(n):
-                v2 = vel[i, 0] * vel[i, 0] + vel[i, 1] * vel[i, 1]
+                v2 = vx[i] * vx[i] + vy[i] * vy[i]
                 if v2 > vmax:
                     vmax = v2
             vmax = math.sqrt(vmax)
@@ -383,16 +470,16 @@ def integrate(pos, vel, force, work, tension, contact, ws, wp, gd, tab, par, t0,
                 for i in range(n):
                     gcache[w, i] = -1
                 for i in range(n):
-                    qx = pos[i, 0] - cx
-                    qy = pos[i, 1] - cy
+                    qx = x[i] - cx
+                    qy = y[i] - cy
                     if qx * qx + qy * qy <= rc2:
                         cand[w, nc] = i
                         nc += 1
                 ncand[w] = nc
             for ic in range(ncand[w]):
                 i = cand[w, ic]
-                qx = pos[i, 0] - cx
-                qy = pos[i, 1] - cy
+                qx = x[i] - cx
+                qy = y[i] - cy
                 r2 = qx * qx + qy * qy
                 if r2 > rout2 or r2 < rin2:
                     continue
@@ -434,8 +521,8 @@ def integrate(pos, vel, force, work, tension, contact, ws, wp, gd, tab, par, t0,
                         continue
                     nx = na * erx - nb * ery
                     ny = na * ery + nb * erx
-                rvx = vel[i, 0] - (-om * qy + sd * wp[w, W_DX])
-                rvy = vel[i, 1] - (om * qx + sd * wp[w, W_DY])
+                rvx = vx[i] - (-om * qy + sd * wp[w, W_DX])
+                rvy = vy[i] - (om * qx + sd * wp[w, W_DY])
                 vn = rvx * nx + rvy * ny
                 fn = kc * pen + cc * vn
                 if fn < 0.0:
@@ -449,14 +536,14 @@ def integrate(pos, vel, force, work, tension, contact, ws, wp, gd, tab, par, t0,
                 if ve < veps:
                     ve = veps
                 ft = -mu * fn * _sat(vt / ve)
-                fx = -fn * nx - ft * ny
-                fy = -fn * ny + ft * nx
-                force[i, 0] += fx
-                force[i, 1] += fy
+                cfx = -fn * nx - ft * ny
+                cfy = -fn * ny + ft * nx
+                fx[i] += cfx
+                fy[i] += cfy
                 contact[i] += fn
-                tq -= qx * fy - qy * fx
-                fwx -= fx
-                fwy -= fy
+                tq -= qx * cfy - qy * cfx
+                fwx -= cfx
+                fwy -= cfy
             ws[w, S_TORQUE] = tq
             ws[w, S_SFORCE] = fwx * wp[w, W_DX] + fwy * wp[w, W_DY]
         # guides: one-sided penalty contact of the roller with a line segment whose end
@@ -476,7 +563,7 @@ def integrate(pos, vel, force, work, tension, contact, ws, wp, gd, tab, par, t0,
                 reach = rr + margin
                 nc = 0
                 for i in range(n):
-                    h, s = _segment_frame(pos[i, 0] - ax, pos[i, 1] - ay, ux, uy, nx, ny)
+                    h, s = _segment_frame(x[i] - ax, y[i] - ay, ux, uy, nx, ny)
                     if h < -reach or h >= reach or s < -reach or s > length + reach:
                         continue
                     gcand[g, nc] = i
@@ -484,16 +571,16 @@ def integrate(pos, vel, force, work, tension, contact, ws, wp, gd, tab, par, t0,
                 ngcand[g] = nc
             for ic in range(ngcand[g]):
                 i = gcand[g, ic]
-                pen, mx, my = guide_penetration(pos[i, 0], pos[i, 1], gd, g, rr)
+                pen, mx, my = guide_penetration(x[i], y[i], gd, g, rr)
                 if pen <= 0.0:
                     continue
-                vn = vel[i, 0] * mx + vel[i, 1] * my
+                vn = vx[i] * mx + vy[i] * my
                 fn = kg * pen - cg * vn
                 if fn < 0.0:
                     fn = 0.0
                 epot += 0.5 * kg * pen * pen
                 # tangent (my, -mx): the segment direction on its face
-                vt = vel[i, 0] * my - vel[i, 1] * mx
+                vt = vx[i] * my - vy[i] * mx
                 mug = gd[g, G_MU] if gd[g, G_MU] >= 0.0 else mu
                 ve = mug * fn * dtref * inv_m
                 if ve < veps:
@@ -512,19 +599,21 @@ def integrate(pos, vel, force, work, tension, contact, ws, wp, gd, tab, par, t0,
                         vem = veps
                     ft += mmat * gt - fm * _sat(vt / vem)
                     extra[i, 0] = mmat
+                    extra[i, 3] = vx[i]
+                    extra[i, 4] = vy[i]
+                    carrying = True
                     extra[i, 1] = my
                     extra[i, 2] = -mx
-                force[i, 0] += fn * mx + ft * my
-                force[i, 1] += fn * my - ft * mx
+                fx[i] += fn * mx + ft * my
+                fy[i] += fn * my - ft * mx
                 contact[i] += fn
         # record (state at time t, forces of this step)
         assembled = False
         if step % record_every == 0 and nrec < rec_t.shape[0]:
             assembled = True
             for i in range(n):
-                im = n - 1 if i == 0 else i - 1
-                force[i, 0] += fgx - cm * vel[i, 0] + work[i, 0] - work[im, 0]
-                force[i, 1] += fgy - cm * vel[i, 1] + work[i, 1] - work[im, 1]
+                fx[i] += fgx - cm * vx[i] + wkx[i + 1] - wkx[i]
+                fy[i] += fgy - cm * vy[i] + wky[i + 1] - wky[i]
             # velocities at time t (mid-point of the two half-step velocities), so that
             # the energy estimate is second order
             hm = 0.5 * dt / m
@@ -532,18 +621,18 @@ def integrate(pos, vel, force, work, tension, contact, ws, wp, gd, tab, par, t0,
             egrav = 0.0
             for i in range(n):
                 j = i + 1 if i + 1 < n else 0
-                ddx = pos[j, 0] - pos[i, 0]
-                ddy = pos[j, 1] - pos[i, 1]
-                dl = math.sqrt(ddx * ddx + ddy * ddy) - (p if (i & 1) == 0 else p2)
+                ddx = x[j] - x[i]
+                ddy = y[j] - y[i]
+                dl = math.sqrt(ddx * ddx + ddy * ddy) - rest[i]
                 epot += 0.5 * k * dl * dl
-                vx = vel[i, 0] + hm * force[i, 0]
-                vy = vel[i, 1] + hm * force[i, 1]
-                ekin += 0.5 * m * (vx * vx + vy * vy)
-                egrav -= m * (gx * pos[i, 0] + gy * pos[i, 1])
+                hvx = vx[i] + hm * fx[i]
+                hvy = vy[i] + hm * fy[i]
+                ekin += 0.5 * m * (hvx * hvx + hvy * hvy)
+                egrav -= m * (gx * x[i] + gy * y[i])
                 rec_tension[nrec, i] = tension[i]
                 rec_contact[nrec, i] = contact[i]
-                rec_pos[nrec, i, 0] = pos[i, 0]
-                rec_pos[nrec, i, 1] = pos[i, 1]
+                rec_pos[nrec, i, 0] = x[i]
+                rec_pos[nrec, i, 1] = y[i]
             for w in range(nw):
                 om = ws[w, S_OMEGA]
                 if wp[w, W_MODE] == MODE_FREE:
@@ -559,7 +648,7 @@ def integrate(pos, vel, force, work, tension, contact, ws, wp, gd, tab, par, t0,
                     ekin += 0.5 * wp[w, W_SMASS] * sv * sv
                     epot += 0.5 * wp[w, W_SK] * ws[w, S_S] ** 2 - wp[w, W_SF] * ws[w, S_S]
                     egrav -= wp[w, W_SMASS] * (gx * dxw + gy * dyw) * ws[w, S_S]
-                for col in range(6):
+                for col in range(ws.shape[1]):
                     rec_ws[nrec, w, col] = ws[w, col]
             rec_energy[nrec] = ekin + epot + egrav
             rec_t[nrec] = t
@@ -567,49 +656,38 @@ def integrate(pos, vel, force, work, tension, contact, ws, wp, gd, tab, par, t0,
                 best = 1e300
                 ib = 0
                 for i in range(n):
-                    ddx = pos[i, 0] - probes[q, 0]
-                    ddy = pos[i, 1] - probes[q, 1]
+                    ddx = x[i] - probes[q, 0]
+                    ddy = y[i] - probes[q, 1]
                     dd = ddx * ddx + ddy * ddy
                     if dd < best:
                         best = dd
                         ib = i
-                rec_probe[nrec, q] = (vel[ib, 0] + hm * force[ib, 0]) * probes[q, 2] \
-                    + (vel[ib, 1] + hm * force[ib, 1]) * probes[q, 3]
+                rec_probe[nrec, q] = (vx[ib] + hm * fx[ib]) * probes[q, 2] \
+                    + (vy[ib] + hm * fy[ib]) * probes[q, 3]
             nrec += 1
-        # integrate pins: semi-implicit (symplectic) Euler
+        # integrate pins: semi-implicit (symplectic) Euler; the force of link i is
+        # (wkx, wky)[i + 1] (index 0 repeats the closing link's), so pin i gets
+        # wk[i + 1] - wk[i] without a branch; the material's inertia in a second pass
         hdt = inv_m * dt
         if assembled:
             for i in range(n):
-                vx0 = vel[i, 0]
-                vy0 = vel[i, 1]
-                vel[i, 0] += force[i, 0] * hdt
-                vel[i, 1] += force[i, 1] * hdt
-                if extra[i, 0] > 0.0:
-                    _carry(vel, extra, i, vx0, vy0, m)
-                pos[i, 0] += vel[i, 0] * dt
-                pos[i, 1] += vel[i, 1] * dt
-                force[i, 0] = 0.0
-                force[i, 1] = 0.0
-                contact[i] = 0.0
+                vx[i] += fx[i] * hdt
+                vy[i] += fy[i] * hdt
         else:
-            wx0 = work[n - 1, 0]
-            wy0 = work[n - 1, 1]
             for i in range(n):
-                wx1 = work[i, 0]
-                wy1 = work[i, 1]
-                vx0 = vel[i, 0]
-                vy0 = vel[i, 1]
-                vel[i, 0] += (force[i, 0] + fgx - cm * vel[i, 0] + wx1 - wx0) * hdt
-                vel[i, 1] += (force[i, 1] + fgy - cm * vel[i, 1] + wy1 - wy0) * hdt
+                vx[i] += (fx[i] + fgx - cm * vx[i] + wkx[i + 1] - wkx[i]) * hdt
+                vy[i] += (fy[i] + fgy - cm * vy[i] + wky[i + 1] - wky[i]) * hdt
+        if carrying:
+            for i in range(n):
                 if extra[i, 0] > 0.0:
-                    _carry(vel, extra, i, vx0, vy0, m)
-                pos[i, 0] += vel[i, 0] * dt
-                pos[i, 1] += vel[i, 1] * dt
-                force[i, 0] = 0.0
-                force[i, 1] = 0.0
-                contact[i] = 0.0
-                wx0 = wx1
-                wy0 = wy1
+                    _carry(vx, vy, extra, i, m)
+            carrying = False
+        for i in range(n):
+            x[i] += vx[i] * dt
+            y[i] += vy[i] * dt
+            fx[i] = 0.0
+            fy[i] = 0.0
+            contact[i] = 0.0
         # wheels
         tn = t + dt
         for w in range(nw):
@@ -617,9 +695,10 @@ def integrate(pos, vel, force, work, tension, contact, ws, wp, gd, tab, par, t0,
             if mode == MODE_SPEED:
                 ws[w, S_OMEGA] = wp[w, W_OMEGA0] * speed_factor(wp, w, tn)
             elif mode == MODE_MOTOR:
-                acc = (ws[w, S_TORQUE] + drive_torque(wp, w, ws[w, S_OMEGA], t) + wp[w, W_TORQUE]
-                       - wp[w, W_DAMP] * ws[w, S_OMEGA]) / wp[w, W_INERTIA]
-                ws[w, S_OMEGA] += acc * dt
+                tload = ws[w, S_TORQUE] + wp[w, W_TORQUE] - wp[w, W_DAMP] * ws[w, S_OMEGA]
+                tc = wheel_drive_torque(wp, ws, w, ws[w, S_OMEGA], t, tload, dt)
+                advance_motor(wp, ws, w, t, dt)
+                ws[w, S_OMEGA] += (tload + tc) / wp[w, W_INERTIA] * dt
             elif mode == MODE_FREE:
                 acc = (ws[w, S_TORQUE] + wp[w, W_TORQUE] - wp[w, W_DAMP] * ws[w, S_OMEGA]) \
                     / wp[w, W_INERTIA]
@@ -634,19 +713,25 @@ def integrate(pos, vel, force, work, tension, contact, ws, wp, gd, tab, par, t0,
                     - wp[w, W_SC] * ws[w, S_SDOT] + wp[w, W_SMASS] * (gx * dxw + gy * dyw)
                 ws[w, S_SDOT] += fs / wp[w, W_SMASS] * dt
                 ws[w, S_S] += ws[w, S_SDOT] * dt
+    for i in range(n):
+        pos[i, 0] = x[i]
+        pos[i, 1] = y[i]
+        vel[i, 0] = vx[i]
+        vel[i, 1] = vy[i]
     return nrec
 
 
 @njit(cache=True, fastmath=False, inline="always")
-def _carry(vel, extra, i, vx0, vy0, m):
+def _carry(vx, vy, extra, i, m):
     """Pin ``i`` carries material of mass ``extra[i, 0]`` along the pan tangent
-    ``extra[i, 1:]``: its velocity change along the pan is that of ``m + m_material``."""
+    ``extra[i, 1:3]``: its velocity change along the pan this step is that of
+    ``m + m_material`` (``extra[i, 3:5]``: its velocity before the step)."""
     tx = extra[i, 1]
     ty = extra[i, 2]
-    dvt = (vel[i, 0] - vx0) * tx + (vel[i, 1] - vy0) * ty
+    dvt = (vx[i] - extra[i, 3]) * tx + (vy[i] - extra[i, 4]) * ty
     corr = dvt * extra[i, 0] / (m + extra[i, 0])
-    vel[i, 0] -= corr * tx
-    vel[i, 1] -= corr * ty
+    vx[i] -= corr * tx
+    vy[i] -= corr * ty
     extra[i, 0] = 0.0
 
 
@@ -685,5 +770,5 @@ def seat_table(wp):
 def empty_records(n_records, n_pins, n_wheels, n_probes):
     """Preallocated record arrays for :func:`integrate`."""
     return (np.zeros(n_records), np.zeros((n_records, n_probes)), np.zeros((n_records, n_pins)),
-            np.zeros((n_records, n_pins)), np.zeros((n_records, n_wheels, 6)),
+            np.zeros((n_records, n_pins)), np.zeros((n_records, n_wheels, NWS)),
             np.zeros((n_records, n_pins, 2)), np.zeros(n_records))

@@ -28,6 +28,7 @@ from .model import SimGuide, SimulationModel
 
 if TYPE_CHECKING:
     from ..analysis.conveyor import ConveyorPull
+    from ..coupling import FluidCoupling
     from ..drive.model import Drive
     from ..motor import Motor
     from .run import SimulationResult
@@ -244,8 +245,8 @@ class StartUp(Result):
     chain_speed : ndarray
         Mean chain speed at the head, ``n t ω / 2π`` [m/s].
     drive_torque : ndarray
-        Torque of the head's motor (Kloss curve) or, at prescribed speed, that of the
-        chain on the head, reversed [N m].
+        Torque driving the head: the motor's (Kloss curve), through a fluid coupling the
+        coupling's, at prescribed speed that of the chain on the head, reversed [N m].
     tight_tension, slack_tension : ndarray
         Arriving at and leaving the head [N].
     envelope_position : ndarray
@@ -256,6 +257,9 @@ class StartUp(Result):
         Tension along the path at the end of the run [N].
     peak_tension, peak_position, peak_time : float
         The highest tension [N], where along the path [m] and when [s].
+    motor_speed : ndarray
+        The motor's speed reduced to the head [rad/s]: behind a fluid coupling its own,
+        else the head's (empty at prescribed speed).
     """
 
     time: np.ndarray = quantity("s")
@@ -270,6 +274,7 @@ class StartUp(Result):
     peak_tension: float = quantity("N")
     peak_position: float = quantity("m", display="m")
     peak_time: float = quantity("s")
+    motor_speed: np.ndarray = quantity("rad/s", default_factory=lambda: np.zeros(0))
 
 
 def path_envelope(result: SimulationResult, model: SimulationModel
@@ -300,13 +305,25 @@ def path_envelope(result: SimulationResult, model: SimulationModel
 
 def with_drive_profile(model: SimulationModel, *, motor: Motor | None = None, motor_inertia: float = 0.0,
                        stop_time: float = 0.0, stop_ramp: float = 0.0, ripple: float = 0.0,
-                       ripple_frequency: float = 0.0) -> SimulationModel:
+                       ripple_frequency: float = 0.0, coupling: FluidCoupling | None = None,
+                       secondary_inertia: float = 0.0) -> SimulationModel:
     """``model`` with its driving wheel (wheel 0) given a time-varying drive (:func:`start_up`)."""
     import dataclasses
 
     check_nonnegative("motor_inertia", motor_inertia, "kg m^2")
+    check_nonnegative("secondary_inertia", secondary_inertia, "kg m^2")
     head = model.wheels[0]
-    if motor is not None:
+    if secondary_inertia and coupling is None:
+        raise InputError("secondary_inertia is the coupling's secondary side: it needs a coupling",
+                         field="secondary_inertia")
+    if coupling is not None and motor is None:
+        raise InputError("a fluid coupling needs a motor in front of it", field="coupling")
+    if motor is not None and coupling is not None:
+        # the motor (rotor and coupling primary) is its own degree of freedom
+        head = dataclasses.replace(head, mode="motor", motor=motor, coupling=coupling, motor_inertia=motor_inertia,
+                                   inertia=head.inertia + secondary_inertia, stop_time=stop_time, ripple=ripple,
+                                   ripple_frequency=ripple_frequency)
+    elif motor is not None:
         head = dataclasses.replace(head, mode="motor", motor=motor, inertia=head.inertia + motor_inertia,
                                    stop_time=stop_time, ripple=ripple, ripple_frequency=ripple_frequency)
     else:
@@ -323,7 +340,12 @@ def start_up_of(result: SimulationResult, model: SimulationModel) -> StartUp:
     seats = model.seats_per_turn(head.teeth)
     omega = result.wheel_speed[:, 0]
     chain_speed = omega * seats * model.pitch / (2 * math.pi)
-    if head.motor is not None:
+    motor_speed = np.zeros(0)
+    if head.coupling is not None:
+        motor_speed = result.motor_speed[:, 0]
+        torque = np.asarray(head.coupling.torque(motor_speed, omega), float)
+    elif head.motor is not None:
+        motor_speed = omega
         on = (head.stop_time <= 0) | (result.time < head.stop_time)
         with warnings.catch_warnings():
             # a loaded start may turn the head back a little at switch-on (slip just above 1)
@@ -344,14 +366,14 @@ def start_up_of(result: SimulationResult, model: SimulationModel) -> StartUp:
     tight = result.tension[rows, _link_nearest(result.positions, p_in - step * u_in)]
     pos, peak, low, last, i_t, i_s = path_envelope(result, model)
     return StartUp(result.time, chain_speed, torque, tight, slack, pos, peak, low, last,
-                   float(peak[i_s]), float(pos[i_s]), float(result.time[i_t]))
+                   float(peak[i_s]), float(pos[i_s]), float(result.time[i_t]), motor_speed)
 
 
 def start_up(drive: Drive, duration: float, *, motor: Motor | None = None, motor_inertia: float = 0.0,
              ramp_time: float = 0.0, stop_time: float = 0.0, stop_ramp: float = 0.0, ripple: float = 0.0,
-             ripple_frequency: float = 0.0, samples: int = 1500,
-             ) -> tuple[StartUp, SimulationResult, SimulationModel]:
-    """Start (and optionally stop) a conveyor from rest with a time-varying head drive.
+             ripple_frequency: float = 0.0, samples: int = 1500, coupling: FluidCoupling | None = None,
+             secondary_inertia: float = 0.0) -> tuple[StartUp, SimulationResult, SimulationModel]:
+    r"""Start (and optionally stop) a conveyor from rest with a time-varying head drive.
 
     With ``motor`` the head wheel is driven by it (Kloss curve, switched on at ``t = 0``,
     off at ``stop_time``; ``motor_inertia`` [kg m²] is the motor's rotor and coupling
@@ -360,13 +382,25 @@ def start_up(drive: Drive, duration: float, *, motor: Motor | None = None, motor
     from ``stop_time``. ``ripple`` (relative amplitude) and ``ripple_frequency`` [rad/s]
     modulate the motor torque (or the prescribed speed).
 
+    With ``coupling`` (a :class:`chaindrive.coupling.FluidCoupling` reduced to the head)
+    the motor drives the head through it: the motor rotor and coupling primary, of
+    inertia ``motor_inertia`` (> 0), turn at their own speed ``ω_m``; the coupling's
+    secondary and the gearbox (``secondary_inertia`` [kg m²], reduced) turn with the head,
+
+    .. math::
+        J_m \dot ω_m = T_{Kloss}(ω_m) − T_c(ω_m, ω), \qquad
+        J \dot ω = T_c(ω_m, ω) + T_{chain}
+
+    with the coupling torque ``T_c`` of :func:`chaindrive.coupling.coupling_torque`
+    (implicit in the slip in each time step: the coupling is a stiff damper).
+
     Parameters
     ----------
     drive : chaindrive.drive.Drive
         A conveyor (with ``[conveyor]``), or any drive.
     duration : float
         Simulated time [s].
-    motor, motor_inertia, ramp_time, stop_time, stop_ramp, ripple, ripple_frequency
+    motor, motor_inertia, ramp_time, stop_time, stop_ramp, ripple, ripple_frequency, coupling, secondary_inertia
         As above.
     samples : int
         Records kept.
@@ -380,6 +414,7 @@ def start_up(drive: Drive, duration: float, *, motor: Motor | None = None, motor
 
     model = with_drive_profile(model_from_drive(drive, ramp_time=ramp_time), motor=motor,
                                motor_inertia=motor_inertia, stop_time=stop_time, stop_ramp=stop_ramp,
-                               ripple=ripple, ripple_frequency=ripple_frequency)
+                               ripple=ripple, ripple_frequency=ripple_frequency, coupling=coupling,
+                               secondary_inertia=secondary_inertia)
     result = simulate(model, duration, samples=samples)
     return start_up_of(result, model), result, model

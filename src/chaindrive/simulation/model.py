@@ -57,6 +57,7 @@ from ..drive.model import Tensioner, Wheel, sides_per_turn
 from ..errors import InputError
 
 if TYPE_CHECKING:
+    from ..coupling import FluidCoupling
     from ..geometry.sprocket import IsoToothForm
     from ..motor import Motor
 
@@ -122,6 +123,13 @@ class SimWheel:
         ripple ``1 + a sin(Ω t)``, ``|a| < 1``.
     ripple_frequency : float
         ``Ω`` [rad/s].
+    coupling : chaindrive.coupling.FluidCoupling, optional
+        Mode ``"motor"``: the motor drives the wheel through this constant-fill fluid
+        coupling (reduced to the wheel); the motor rotor and the coupling's primary are
+        then their own degree of freedom of inertia ``motor_inertia`` (not in
+        ``inertia``).
+    motor_inertia : float
+        With ``coupling``: motor rotor and coupling primary reduced to the wheel [kg m²], > 0.
 
     Notes
     -----
@@ -143,11 +151,19 @@ class SimWheel:
     stop_ramp: float = 0.0
     ripple: float = 0.0
     ripple_frequency: float = 0.0
+    coupling: FluidCoupling | None = None
+    motor_inertia: float = 0.0
 
     def __post_init__(self) -> None:
         if (self.mode == "motor") != (self.motor is not None):
             raise InputError("a wheel in mode 'motor' needs its motor (and a motor needs mode 'motor')",
                              field="motor")
+        if self.coupling is not None:
+            if self.motor is None:
+                raise InputError("a fluid coupling needs a motor (mode 'motor') in front of it", field="coupling")
+            check_positive("motor_inertia", self.motor_inertia, "kg m^2")
+        else:
+            check_nonnegative("motor_inertia", self.motor_inertia, "kg m^2")
         check_nonnegative("stop_time", self.stop_time, "s")
         check_nonnegative("stop_ramp", self.stop_ramp, "s")
         if not abs(float(self.ripple)) < 1:
@@ -577,3 +593,37 @@ class SimulationModel:
         om = self.omega_max()
         zeta = max(self.link_damping_ratio, self.contact_damping_ratio)
         return safety * 2.0 / om * (math.sqrt(1.0 + zeta * zeta) - zeta)
+
+    def accurate_time_step(self, per_seat: int = 200, stable_steps: float = 15.0) -> float:
+        """Default step of the linearly implicit integrator [s] (``method="implicit"``).
+
+        .. math:: Δt = \\min\\left(\\frac{2π}{n_{per}\\, s\\, ω},\\; n_s Δt_{stable}\\right)
+
+        ``per_seat`` steps per seat period ``2π/(s ω)`` (``s`` seats per turn of a driving
+        wheel, ``ω`` its prescribed speed or its motor's synchronous speed): the seating
+        of each roller, which sets the accuracy of the mean tension and speed, spread
+        over ``per_seat`` steps; at most ``stable_steps`` explicit stable steps
+        (:meth:`stable_time_step`), which keeps the explicit parts (the links' transverse
+        stiffness ``S/p``, the bearings) inside their own stability limit. The rule is
+        empirical: on the benchmark drive (16B, z = 17, 20 rad/s) the seat rule alone
+        gives 92 µs, where the mean tight-side tension changes by 0.7 % against the halved
+        step; the 100 m conveyor (108 kN) runs within 0.1 % of the explicit integrator
+        at 500 µs (16 stable steps) and is off by 15 % at 1 ms (32), where the transverse
+        stiffness of its links reaches its explicit limit ``2/ω``.
+
+        Examples
+        --------
+        >>> from chaindrive.simulation import roller_example
+        >>> m = roller_example(links=100, teeth=17, angular_velocity=20.0)
+        >>> round(m.accurate_time_step() / m.stable_time_step(), 6)
+        15.0
+        """
+        rates = [self.seats_per_turn(w.teeth) * abs(w.angular_velocity) for w in self.wheels
+                 if w.mode == "speed" and w.plain_radius is None]
+        rates += [self.seats_per_turn(w.teeth) * abs(w.motor.synchronous_speed) for w in self.wheels
+                  if w.mode == "motor" and w.motor is not None and w.plain_radius is None]
+        dt = stable_steps * self.stable_time_step()
+        rate = max(rates, default=0.0)
+        if rate > 0.0:
+            dt = min(dt, 2.0 * math.pi / (per_seat * rate))
+        return dt

@@ -63,6 +63,9 @@ class SimulationResult(Result):
         Simulated relaxation time of the assembly [s].
     guide_segments : ndarray (G, 2, 2)
         Start and end points of the guides' roller surfaces [m].
+    motor_speed : ndarray (R, W)
+        Speed of the motor behind a wheel's fluid coupling, reduced to the wheel
+        [rad/s] (0 for a wheel without one).
     """
 
     time: np.ndarray = quantity("s")
@@ -88,6 +91,7 @@ class SimulationResult(Result):
     wall_time: float = quantity("s")
     assembly_time: float = quantity("s")
     guide_segments: np.ndarray = quantity("m", default_factory=lambda: np.zeros((0, 2, 2)))
+    motor_speed: np.ndarray = quantity("rad/s", default_factory=lambda: np.zeros((0, 0)))
     summary: dict = field(default_factory=dict)
     if TYPE_CHECKING:  # set by simulate(); at run time not a dataclass field (not saved)
         final_state: State = field(init=False)

@@ -25,12 +25,16 @@ Assembly
 
 Integration
 -----------
-Semi-implicit (symplectic) Euler, ``v ← v + Δt F/m``, ``x ← x + Δt v``: explicit,
-one force evaluation per step, no energy drift for the conservative part (it conserves
-a shadow Hamiltonian), stable for ``Δt < 2/ω_max`` (:meth:`SimulationModel.stable_time_step`).
-The joints are stiff but the system is small per step (N pins): an implicit scheme
-would need a banded solve each step and would damp the very high-frequency content
-(impacts) we want to see; at ``Δt ≈ 2 µs`` the explicit step costs ~10 ns per link.
+``method="explicit"`` (default): semi-implicit (symplectic) Euler, ``v ← v + Δt F/m``,
+``x ← x + Δt v``: one force evaluation per step, no energy drift for the conservative
+part (it conserves a shadow Hamiltonian), stable for ``Δt < 2/ω_max``
+(:meth:`SimulationModel.stable_time_step`, ~3 µs for a 16B chain: the step is set by the
+stiff links, not by accuracy).
+
+``method="implicit"``: the linearly implicit step of :mod:`._implicit` (link springs,
+contact springs, sticking friction implicit; a cyclic tridiagonal solve per step, linear
+in the links), at a step set by accuracy (:meth:`SimulationModel.accurate_time_step`,
+first order: check it against its half). docs/simulation.md, "Integrator".
 """
 
 from __future__ import annotations
@@ -45,6 +49,7 @@ from numpy.typing import ArrayLike
 
 from ..errors import ConvergenceError, UnknownNameError
 from . import _kernel as K
+from ._implicit import integrate_implicit
 from .model import SimulationModel, iso_flank
 from .placement import _path, _place, _tangent  # noqa: F401 - _path, _tangent: also imported from here
 from .results import (
@@ -77,6 +82,7 @@ def kernel_arrays(model: SimulationModel, dt: float | None = None) -> tuple[np.n
     par[K.P_VEPS] = model.friction_velocity
     par[K.P_GX], par[K.P_GY] = model.gravity
     par[K.P_DT] = dt
+    par[K.P_THETA] = 1.0
     # friction slope cap m / dt_ref (see the kernel), dt_ref = 2 dt_stable: the cap
     # m / dt makes the friction dead-beat on its own, and with the link springs and
     # large seat forces the alternating mode of the seated pins then grows (period 2:
@@ -116,6 +122,9 @@ def kernel_arrays(model: SimulationModel, dt: float | None = None) -> tuple[np.n
             wp[i, K.W_MSYNC] = w.motor.synchronous_speed
             wp[i, K.W_MTK] = w.motor.breakdown_torque
             wp[i, K.W_MSK] = w.motor.breakdown_slip
+        if w.coupling is not None:
+            wp[i, K.W_FCK], wp[i, K.W_FCSN], wp[i, K.W_FCC] = w.coupling.kernel_constants()
+            wp[i, K.W_FCJ] = w.motor_inertia
         wp[i, K.W_RIPA] = w.ripple
         wp[i, K.W_RIPW] = w.ripple_frequency
         wp[i, K.W_TSTOP] = w.stop_time
@@ -167,6 +176,8 @@ class State:
 
 
 ASSEMBLY_METHODS = ("newton", "relaxation")
+#: time integrators of :func:`simulate` (same arguments, same records)
+INTEGRATORS = {"explicit": K.integrate, "implicit": integrate_implicit}
 
 
 def assemble(model: SimulationModel, *, dt: float | None = None, method: str = "newton",
@@ -216,12 +227,15 @@ def assemble(model: SimulationModel, *, dt: float | None = None, method: str = "
     nw = len(model.wheels)
     wp[:, K.W_CX] = centres[:, 0]
     wp[:, K.W_CY] = centres[:, 1]
-    ws = np.zeros((nw, 6))
+    ws = np.zeros((nw, K.NWS))
     ws[:, K.S_THETA] = theta
     run_wp = wp.copy()
     spans = [x[2] for x in pieces if x[0] == "span"]
     if method == "newton":
-        return _assemble_newton(model, pos, ws, wp, run_wp, gd, par, adj, d, pieces, s0)
+        # one BLAS thread: the Newton iteration's products are of 2N-vectors, for which a
+        # threaded BLAS only adds start-up cost (32 % of a 5,000-link assembly measured)
+        with _one_blas_thread():
+            return _assemble_newton(model, pos, ws, wp, run_wp, gd, par, adj, d, pieces, s0)
     # relaxation set-up
     lspan = max(min(spans), 5 * model.pitch)
     kspan = model.axial_stiffness / lspan
@@ -310,6 +324,17 @@ def assemble(model: SimulationModel, *, dt: float | None = None, method: str = "
     par[K.P_CGLOB] = 0.0
     st = State(pos, vel, ws, run_wp, gd, par, t, steps)
     return st
+
+
+def _one_blas_thread():
+    """Context limiting BLAS to one thread (``threadpoolctl``; no-op without it)."""
+    try:
+        from threadpoolctl import threadpool_limits
+    except ImportError:  # pragma: no cover - threadpoolctl ships with the fast extra
+        from contextlib import nullcontext
+
+        return nullcontext()
+    return threadpool_limits(limits=1, user_api="blas")
 
 
 def _slide_mass(model: SimulationModel, adj: int) -> float:
@@ -495,7 +520,8 @@ def _lead_the_loaded_wheel(model, wheel, torque, wp, theta, solve):
 def simulate(model: SimulationModel, duration: float, *, dt: float | None = None,
              record_every: int | None = None, samples: int = 2000, probes: ArrayLike | None = None,
              state: State | None = None, settle: float | None = None,
-             progress: Callable[[int, int], object] | None = None, chunks: int = 50) -> SimulationResult:
+             progress: Callable[[int, int], object] | None = None, chunks: int = 50,
+             method: str = "explicit") -> SimulationResult:
     """Assemble ``model`` in static equilibrium and integrate it for ``duration`` [s].
 
     Parameters
@@ -518,6 +544,12 @@ def simulate(model: SimulationModel, duration: float, *, dt: float | None = None
         through this run.
     progress : callable, optional
         Called as ``progress(done_steps, total_steps)`` between chunks.
+    method : {"explicit", "implicit"}
+        ``"explicit"`` (default): symplectic Euler, ``dt`` by default the stable step
+        :meth:`SimulationModel.stable_time_step`; ``"implicit"``: the linearly implicit
+        step (link springs, contact springs and sticking friction implicit), ``dt`` by
+        default :meth:`SimulationModel.accurate_time_step` (see docs/simulation.md,
+        "Integrator").
 
     Returns
     -------
@@ -537,6 +569,13 @@ def simulate(model: SimulationModel, duration: float, *, dt: float | None = None
     from ..limits import check_duration
 
     check_duration("duration", duration)  # at most chaindrive.limits.MAX_DURATION, before any work
+    if method not in INTEGRATORS:
+        raise UnknownNameError(f"method must be one of {', '.join(INTEGRATORS)}, got {method!r}")
+    integrate = INTEGRATORS[method]
+    if dt is None and method == "implicit":
+        dt = model.accurate_time_step()
+    if dt is not None:
+        check_positive("dt", dt)
     if state is None:
         state = assemble(model, dt=dt)
     par = state.par.copy()
@@ -569,7 +608,7 @@ def simulate(model: SimulationModel, duration: float, *, dt: float | None = None
     while done < nsteps:
         m = min(per, nsteps - done)
         t0 = time.perf_counter()
-        written = K.integrate(pos, vel, force, np.zeros_like(pos), tension, contact, ws, wp, state.gd, tab, par,
+        written = integrate(pos, vel, force, np.zeros_like(pos), tension, contact, ws, wp, state.gd, tab, par,
                               state.time + done * dt, m, record_every, probes, *recs, written)
         wall += time.perf_counter() - t0
         done += m
@@ -581,6 +620,7 @@ def simulate(model: SimulationModel, duration: float, *, dt: float | None = None
         time=rt, probe_points=probes, chain_velocity=rprobe, tension=rten, contact_force=rcon,
         wheel_angle=rws[:, :, K.S_THETA], wheel_speed=rws[:, :, K.S_OMEGA],
         wheel_torque=rws[:, :, K.S_TORQUE], tensioner_position=rws[:, :, K.S_S],
+        motor_speed=rws[:, :, K.S_MOTOR],
         positions=rpos, energy=ren,
         wheel_centres=np.column_stack([wp[:, K.W_CX], wp[:, K.W_CY]]),
         pitch_radii=wp[:, K.W_R].copy(), teeth=wp[:, K.W_Z].astype(int),

@@ -1,0 +1,747 @@
+r"""Compiled hot loop of the linearly implicit integrator (internal).
+
+:func:`integrate_implicit` has the signature of :func:`._kernel.integrate` (the same
+state, parameter, wheel, guide and record arrays) and advances the same model with the
+stiff parts of the force treated implicitly, so that the step is set by accuracy and
+not by the stability of the link springs (derivation in ``docs/simulation.md``,
+"Integrator"):
+
+* link springs and dampers (``k``, ``c``) and, per pin, the normal contact springs and
+  dampers of the wheels and guides and the sticking slope of the regularised friction:
+  linearised about the state at the start of the step (one linearly implicit Euler
+  step, ``(M/h + D + h K) Δv = F + h K v``);
+* the system matrix is ``W⁻¹ + Gᵀ a G`` with ``W⁻¹`` block diagonal (2 x 2 per pin)
+  and ``G`` the link directions (one row per link, nonzero at its two pins): by the
+  Woodbury identity the solve reduces to the symmetric *cyclic tridiagonal* system of
+  the link force increments ``(1/a + G W Gᵀ) λ = G W F`` (``a = h k + c``), solved by
+  :func:`cyclic_tridiagonal_solve`, linear in the number of links;
+* the wheels' rotations and slides after the pins (Gauss–Seidel): implicit in their
+  own contact stiffness, with the pins' new velocities.
+
+Layout: positions and velocities in separate ``x``/``y`` arrays inside the kernel, the
+link rest lengths in one array (no odd/even branch).
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from numba import njit
+
+from . import _kernel as K
+from ._kernel import (
+    _fast_atan2,
+    _sat,
+    _segment_frame,
+    advance_motor,
+    guide_penetration,
+    nearest_seat,
+    seat_penetration,
+    speed_factor,
+    wheel_drive_torque,
+    wheel_profile,
+)
+
+# per-contact columns kept for the wheels' implicit update after the pins
+C_BETA, C_S, C_NX, C_NY, C_L, C_LT, C_DN, C_DT, C_FN0, C_FT0, C_FN = range(11)
+
+
+@njit(cache=True, fastmath=False)
+def cyclic_tridiagonal_factor(d, e, idd, ff):
+    """Factor the symmetric cyclic tridiagonal matrix ``A`` (n >= 3); return the last pivot.
+
+    ``A[l, l] = d[l]``, ``A[l, l+1] = A[l+1, l] = e[l]`` (``l + 1`` modulo n: ``e[n-1]``
+    couples rows ``n-1`` and 0). Gaussian elimination without pivoting (stable for the
+    symmetric positive definite matrices of the integrator) carrying the fill-in of the
+    last column: ``idd`` the inverse pivots of rows ``0 … n-2``, ``ff`` the fill-in
+    (``ff[n-2]`` includes ``e[n-2]``). Cost linear in n.
+    """
+    n = d.shape[0]
+    dcur = d[0]
+    ff[0] = e[n - 1]
+    dlast = d[n - 1]
+    for ll in range(n - 2):
+        ip = 1.0 / dcur
+        idd[ll] = ip
+        dcur = d[ll + 1] - e[ll] * e[ll] * ip
+        ff[ll + 1] = -e[ll] * ip * ff[ll]
+        dlast -= ff[ll] * ff[ll] * ip
+    idd[n - 2] = 1.0 / dcur
+    ff[n - 2] += e[n - 2]
+    return dlast - ff[n - 2] * ff[n - 2] * idd[n - 2]
+
+
+@njit(cache=True, fastmath=False)
+def cyclic_tridiagonal_substitute(e, idd, ff, dlast, b, x):
+    """Solve ``A x = b`` with the factors of :func:`cyclic_tridiagonal_factor` (``x`` may be ``b``)."""
+    n = b.shape[0]
+    # forward: x holds the eliminated right-hand side
+    blast = b[n - 1]
+    prev = b[0]
+    x[0] = prev
+    for ll in range(n - 2):
+        q = prev * idd[ll]
+        blast -= ff[ll] * q
+        prev = b[ll + 1] - e[ll] * q
+        x[ll + 1] = prev
+    blast -= ff[n - 2] * prev * idd[n - 2]
+    xl = blast / dlast
+    x[n - 1] = xl
+    nxt = (prev - ff[n - 2] * xl) * idd[n - 2]
+    x[n - 2] = nxt
+    for ll in range(n - 3, -1, -1):
+        nxt = (x[ll] - e[ll] * nxt - ff[ll] * xl) * idd[ll]
+        x[ll] = nxt
+
+
+@njit(cache=True, fastmath=False)
+def cyclic_tridiagonal_solve(d, e, b, x):
+    """``A x = b`` for the symmetric cyclic tridiagonal ``A`` (:func:`cyclic_tridiagonal_factor`)."""
+    n = d.shape[0]
+    idd = np.empty(n)
+    ff = np.empty(n)
+    dlast = cyclic_tridiagonal_factor(d, e, idd, ff)
+    cyclic_tridiagonal_substitute(e, idd, ff, dlast, b, x)
+
+
+@njit(cache=True, fastmath=False)
+def _apply_inverse(gx, gy, ox, oy, wxx, wxy, wyy, ux, uy, of, idd, ff, dlast, lam):
+    """``o = P⁻¹ g`` for ``P = W⁻¹ + Gᵀ a G`` (Woodbury, factored link system)."""
+    n = gx.shape[0]
+    for i in range(n):
+        ox[i] = wxx[i] * gx[i] + wxy[i] * gy[i]
+        oy[i] = wxy[i] * gx[i] + wyy[i] * gy[i]
+    for li in range(n - 1):
+        lam[li] = ux[li] * (ox[li + 1] - ox[li]) + uy[li] * (oy[li + 1] - oy[li])
+    lam[n - 1] = ux[n - 1] * (ox[0] - ox[n - 1]) + uy[n - 1] * (oy[0] - oy[n - 1])
+    cyclic_tridiagonal_substitute(of, idd, ff, dlast, lam, lam)
+    for i in range(n):
+        im = i - 1 if i > 0 else n - 1
+        gtx = lam[im] * ux[im] - lam[i] * ux[i]
+        gty = lam[im] * uy[im] - lam[i] * uy[i]
+        ox[i] -= wxx[i] * gtx + wxy[i] * gty
+        oy[i] -= wxy[i] * gtx + wyy[i] * gty
+
+
+@njit(cache=True, fastmath=False)
+def _small_solve(a, b, nq):
+    """``b ← a⁻¹ b`` for the leading ``nq x nq`` block (Gaussian elimination, partial pivoting)."""
+    for col in range(nq):
+        piv = col
+        for r in range(col + 1, nq):
+            if abs(a[r, col]) > abs(a[piv, col]):
+                piv = r
+        if piv != col:
+            for cc in range(nq):
+                a[col, cc], a[piv, cc] = a[piv, cc], a[col, cc]
+            b[col], b[piv] = b[piv], b[col]
+        for r in range(col + 1, nq):
+            f = a[r, col] / a[col, col]
+            for cc in range(col, nq):
+                a[r, cc] -= f * a[col, cc]
+            b[r] -= f * b[col]
+    for r in range(nq - 1, -1, -1):
+        acc = b[r]
+        for cc in range(r + 1, nq):
+            acc -= a[r, cc] * b[cc]
+        b[r] = acc / a[r, r]
+
+
+@njit(cache=True, fastmath=False, inline="always")
+def _add_pin_matrix(mxx, mxy, myy, i, coef, ax, ay):
+    """``M_i += coef (a aᵀ)``."""
+    mxx[i] += coef * ax * ax
+    mxy[i] += coef * ax * ay
+    myy[i] += coef * ay * ay
+
+
+@njit(cache=True, fastmath=False, inline="always")
+def _pin_inverse(i, mh, mxx, mxy, myy, wxx, wxy, wyy):
+    """``W_i = (M_i/h + contact terms)⁻¹`` (2 x 2)."""
+    axx = mh + mxx[i]
+    axy = mxy[i]
+    ayy = mh + myy[i]
+    idet = 1.0 / (axx * ayy - axy * axy)
+    wxx[i] = ayy * idet
+    wxy[i] = -axy * idet
+    wyy[i] = axx * idet
+
+
+@njit(cache=True, fastmath=False)
+def _drop_tensile(cinfo, ncand, cand, qrot, qsl, dq, dvx, dvy, yx, yy, mxx, mxy, myy, wtq, wsf,
+                  contact):
+    """Drop the wheel contacts whose linearised normal force at the end of the step is
+    tensile (take their terms out of the pins' forces and matrices); True if any."""
+    changed = False
+    for w in range(cinfo.shape[0]):
+        dom = dq[qrot[w]] if qrot[w] >= 0 else 0.0
+        dsd = dq[qsl[w]] if qsl[w] >= 0 else 0.0
+        for ic in range(ncand[w]):
+            be = cinfo[w, ic, C_BETA]
+            if be == 0.0:
+                continue
+            i = cand[w, ic]
+            nx = cinfo[w, ic, C_NX]
+            ny = cinfo[w, ic, C_NY]
+            dvn = nx * dvx[i] + ny * dvy[i] - dom * cinfo[w, ic, C_L] - dsd * cinfo[w, ic, C_DN]
+            fn0 = cinfo[w, ic, C_FN0]
+            if fn0 + be * dvn >= 0.0:
+                continue
+            changed = True
+            ft0 = cinfo[w, ic, C_FT0]
+            s = cinfo[w, ic, C_S]
+            yx[i] += fn0 * nx + ft0 * ny
+            yy[i] += fn0 * ny - ft0 * nx
+            _add_pin_matrix(mxx, mxy, myy, i, -be, nx, ny)
+            _add_pin_matrix(mxx, mxy, myy, i, -s, -ny, nx)
+            wtq[w] -= fn0 * cinfo[w, ic, C_L] - ft0 * cinfo[w, ic, C_LT]
+            wsf[w] -= fn0 * cinfo[w, ic, C_DN] - ft0 * cinfo[w, ic, C_DT]
+            contact[i] -= cinfo[w, ic, C_FN]
+            cinfo[w, ic, C_BETA] = 0.0
+            cinfo[w, ic, C_S] = 0.0
+    return changed
+
+
+@njit(cache=True, fastmath=False)
+def _solve(n, nw, yx, yy, wxx, wxy, wyy, ux, uy, dg, of, dd, ff, lam, inv_ak, dvx, dvy, ws, wp,
+           ncand, cand, cinfo, qrot, qsl, bx, by, zx, zy, sq, fq, wtq, wsf, h, t, gx, gy):
+    """Velocity changes of the pins (``dvx``, ``dvy``) and of the wheels' rotations and
+    slides in contact (``fq[qrot[w]]``, ``fq[qsl[w]]``) of one linearly implicit step."""
+    # links: P = W⁻¹ + Gᵀ a G; by Woodbury P⁻¹ g = W g − W Gᵀ λ with
+    # (1/a + G W Gᵀ) λ = G W g, a cyclic tridiagonal system factored once per step
+    for li in range(n):
+        j = li + 1 if li + 1 < n else 0
+        ex = ux[li]
+        ey = uy[li]
+        dg[li] = inv_ak + ex * ((wxx[li] + wxx[j]) * ex + (wxy[li] + wxy[j]) * ey) \
+            + ey * ((wxy[li] + wxy[j]) * ex + (wyy[li] + wyy[j]) * ey)
+        of[li] = -(ex * (wxx[j] * ux[j] + wxy[j] * uy[j]) + ey * (wxy[j] * ux[j] + wyy[j] * uy[j]))
+    dlast = cyclic_tridiagonal_factor(dg, of, dd, ff)
+    _apply_inverse(yx, yy, dvx, dvy, wxx, wxy, wyy, ux, uy, of, dd, ff, dlast, lam)
+    # the wheels' rotations and slides in contact with pins: bordered system
+    # [[P, B], [Bᵀ, Q]] [Δv, Δq] = [F, F_q], solved by its Schur complement
+    nq = 0
+    for w in range(nw):
+        mode = wp[w, K.W_MODE]
+        qrot[w] = -1
+        qsl[w] = -1
+        if (mode == K.MODE_FREE or mode == K.MODE_MOTOR) and ncand[w] > 0:
+            qrot[w] = nq
+            nq += 1
+        if wp[w, K.W_SLIDE] > 0.0 and ncand[w] > 0:
+            qsl[w] = nq
+            nq += 1
+    # the rows of B are zero off their wheel's pins (cleared after use below)
+    for q in range(nq):
+        for q2 in range(nq):
+            sq[q, q2] = 0.0
+        fq[q] = 0.0
+    for w in range(nw):
+        om = ws[w, K.S_OMEGA]
+        qr = qrot[w]
+        qs = qsl[w]
+        if qr >= 0:
+            sq[qr, qr] = wp[w, K.W_INERTIA] / h
+            fq[qr] = wtq[w] + wp[w, K.W_TORQUE] - wp[w, K.W_DAMP] * om
+            if wp[w, K.W_MODE] == K.MODE_MOTOR:
+                fq[qr] += wheel_drive_torque(wp, ws, w, om, t, fq[qr], h)
+        if qs >= 0:
+            sq[qs, qs] = wp[w, K.W_SMASS] / h
+            fq[qs] = wsf[w] + wp[w, K.W_SF] - wp[w, K.W_SK] * ws[w, K.S_S] \
+                - wp[w, K.W_SC] * ws[w, K.S_SDOT] \
+                + wp[w, K.W_SMASS] * (gx * wp[w, K.W_DX] + gy * wp[w, K.W_DY])
+        if qr < 0 and qs < 0:
+            continue
+        for ic in range(ncand[w]):
+            be = cinfo[w, ic, C_BETA]
+            if be == 0.0:
+                continue
+            s = cinfo[w, ic, C_S]
+            i = cand[w, ic]
+            nx = cinfo[w, ic, C_NX]
+            ny = cinfo[w, ic, C_NY]
+            lev = cinfo[w, ic, C_L]
+            levt = cinfo[w, ic, C_LT]
+            dn = cinfo[w, ic, C_DN]
+            dtt = cinfo[w, ic, C_DT]
+            # contact rows J_n = [nᵀ, −L, −d·n], J_t = [tᵀ, −L_t, −d·t]: β J_nᵀJ_n + s J_tᵀJ_t
+            if qr >= 0:
+                bx[qr, i] -= be * lev * nx - s * levt * ny
+                by[qr, i] -= be * lev * ny + s * levt * nx
+                sq[qr, qr] += be * lev * lev + s * levt * levt
+            if qs >= 0:
+                bx[qs, i] -= be * dn * nx - s * dtt * ny
+                by[qs, i] -= be * dn * ny + s * dtt * nx
+                sq[qs, qs] += be * dn * dn + s * dtt * dtt
+            if qr >= 0 and qs >= 0:
+                sq[qr, qs] += be * lev * dn + s * levt * dtt
+                sq[qs, qr] += be * lev * dn + s * levt * dtt
+    if nq > 0:
+        for q in range(nq):
+            _apply_inverse(bx[q], by[q], zx[q], zy[q], wxx, wxy, wyy, ux, uy, of, dd, ff,
+                           dlast, lam)
+        # Schur complement S = Q − Bᵀ P⁻¹ B, right-hand side F_q − Bᵀ P⁻¹ F; B is
+        # sparse (its rows live on their wheel's candidate pins)
+        for w in range(nw):
+            for q in (qrot[w], qsl[w]):
+                if q < 0:
+                    continue
+                for ic in range(ncand[w]):
+                    i = cand[w, ic]
+                    bxq = bx[q, i]
+                    byq = by[q, i]
+                    if bxq == 0.0 and byq == 0.0:
+                        continue
+                    fq[q] -= bxq * dvx[i] + byq * dvy[i]
+                    for q2 in range(nq):
+                        sq[q, q2] -= bxq * zx[q2, i] + byq * zy[q2, i]
+                    bx[q, i] = 0.0
+                    by[q, i] = 0.0
+        _small_solve(sq, fq, nq)
+        for q in range(nq):
+            dq = fq[q]
+            for i in range(n):
+                dvx[i] -= zx[q, i] * dq
+                dvy[i] -= zy[q, i] * dq
+    return nq
+
+
+@njit(cache=True, fastmath=False)
+def integrate_implicit(pos, vel, force, work, tension, contact, ws, wp, gd, tab, par, t0, nsteps,
+                       record_every, probes, rec_t, rec_probe, rec_tension, rec_contact, rec_ws,
+                       rec_pos, rec_energy, rec_start):
+    """Advance ``nsteps`` linearly implicit steps from ``t0``; return the records written.
+
+    Same arguments as :func:`._kernel.integrate` (``force`` and ``work`` unused).
+    """
+    n = pos.shape[0]
+    nw = ws.shape[0]
+    ng = gd.shape[0]
+    npr = probes.shape[0]
+    m = par[K.P_MASS]
+    k = par[K.P_K]
+    c = par[K.P_C]
+    rr = par[K.P_RROLLER]
+    kc = par[K.P_KC]
+    cc = par[K.P_CC]
+    mu = par[K.P_MU]
+    veps = par[K.P_VEPS]
+    gx = par[K.P_GX]
+    gy = par[K.P_GY]
+    h = par[K.P_DT]
+    cglob = par[K.P_CGLOB]
+    kg = par[K.P_KG]
+    cg = par[K.P_CG]
+    dtref = par[K.P_DTREF]
+    twopi = 2.0 * math.pi
+    inv_m = 1.0 / m
+    mh = m / h
+    th = par[K.P_THETA]
+    ak = th * (h * k + c)
+    inv_ak = 1.0 / ak
+    betac = th * (h * kc + cc)
+    betag = th * (h * kg + cg)
+    thh = th * h
+    margin = 0.25 * rr
+    # separate coordinate arrays; rest lengths per link (no odd/even branch)
+    x = pos[:, 0].copy()
+    y = pos[:, 1].copy()
+    vx = vel[:, 0].copy()
+    vy = vel[:, 1].copy()
+    rest = np.empty(n)
+    for i in range(n):
+        rest[i] = par[K.P_PITCH] if i % 2 == 0 else par[K.P_PITCH2]
+    ux = np.empty(n)
+    uy = np.empty(n)
+    tstar = np.empty(n)
+    fx = np.zeros(n)
+    fy = np.zeros(n)
+    mxx = np.zeros(n)
+    mxy = np.zeros(n)
+    myy = np.zeros(n)
+    wxx = np.empty(n)
+    wxy = np.empty(n)
+    wyy = np.empty(n)
+    yx = np.empty(n)
+    yy = np.empty(n)
+    dg = np.empty(n)
+    of = np.empty(n)
+    lam = np.empty(n)
+    dd = np.empty(n)
+    ff = np.empty(n)
+    dvx = np.empty(n)
+    dvy = np.empty(n)
+    qrot = np.empty(nw, np.int64)
+    qsl = np.empty(nw, np.int64)
+    bx = np.zeros((2 * nw, n))
+    by = np.zeros((2 * nw, n))
+    zx = np.zeros((2 * nw, n))
+    zy = np.zeros((2 * nw, n))
+    sq = np.zeros((2 * nw, 2 * nw))
+    fq = np.zeros(2 * nw)
+    cand = np.empty((nw, n), np.int64)
+    gcache = np.full((nw, n), -1, np.int64)
+    ncand = np.zeros(nw, np.int64)
+    cinfo = np.zeros((nw, n, 11))
+    gcand = np.empty((ng, n), np.int64)
+    ngcand = np.zeros(ng, np.int64)
+    wtq = np.zeros(nw)
+    wsf = np.zeros(nw)
+    omu = np.zeros(nw)
+    countdown = 0
+    vmax_s = 0.0
+    fgx = m * gx
+    fgy = m * gy
+    cm = cglob * m
+    nrec = rec_start
+    for step in range(nsteps):
+        t = t0 + step * h
+        tn = t + h
+        epot = 0.0
+        # links: tension at the start of the step, and its linearised value at the end
+        # without the implicit increment, T* = T + h k l̇
+        for i in range(n - 1):
+            dx = x[i + 1] - x[i]
+            dy = y[i + 1] - y[i]
+            ll = math.sqrt(dx * dx + dy * dy)
+            il = 1.0 / ll
+            ex = dx * il
+            ey = dy * il
+            ldot = (vx[i + 1] - vx[i]) * ex + (vy[i + 1] - vy[i]) * ey
+            tt = k * (ll - rest[i]) + c * ldot
+            tension[i] = tt
+            tstar[i] = tt + thh * k * ldot
+            ux[i] = ex
+            uy[i] = ey
+        dx = x[0] - x[n - 1]
+        dy = y[0] - y[n - 1]
+        ll = math.sqrt(dx * dx + dy * dy)
+        ex = dx / ll
+        ey = dy / ll
+        ldot = (vx[0] - vx[n - 1]) * ex + (vy[0] - vy[n - 1]) * ey
+        tt = k * (ll - rest[n - 1]) + c * ldot
+        tension[n - 1] = tt
+        tstar[n - 1] = tt + thh * k * ldot
+        ux[n - 1] = ex
+        uy[n - 1] = ey
+        # wheel speeds used in the contacts: the prescribed ones at the end of the step
+        # (known), the free ones at its start (updated after the pins)
+        for w in range(nw):
+            mode = wp[w, K.W_MODE]
+            if mode == K.MODE_SPEED:
+                omu[w] = wp[w, K.W_OMEGA0] * speed_factor(wp, w, tn)
+            elif mode == K.MODE_LOCKED:
+                omu[w] = 0.0
+            else:
+                omu[w] = ws[w, K.S_OMEGA]
+        rebuild = countdown <= 0
+        if rebuild:
+            vmax = 0.0
+            for i in range(n):
+                v2 = vx[i] * vx[i] + vy[i] * vy[i]
+                if v2 > vmax:
+                    vmax = v2
+            vmax = math.sqrt(vmax)
+            for w in range(nw):
+                vmax_w = abs(ws[w, K.S_SDOT])
+                if vmax_w > vmax_s:
+                    vmax_s = vmax_w
+            cnt = margin / (4.0 * (vmax + vmax_s + 1e-12) * h)
+            countdown = 1 if cnt < 1.0 else (200 if cnt > 200.0 else int(cnt))
+        countdown -= 1
+        for w in range(nw):
+            cx = wp[w, K.W_CX] + ws[w, K.S_S] * wp[w, K.W_DX]
+            cy = wp[w, K.W_CY] + ws[w, K.S_S] * wp[w, K.W_DY]
+            theta = ws[w, K.S_THETA]
+            om = omu[w]
+            sd = ws[w, K.S_SDOT]
+            ddx = wp[w, K.W_DX]
+            ddy = wp[w, K.W_DY]
+            rad = wp[w, K.W_R]
+            plain = wp[w, K.W_PLAIN] > 0.5
+            nseat = wp[w, K.W_NSEAT]
+            delta, cps, sps, re, arcflank, cea, ceb, dta, dtb, tca, tcb, stip = \
+                wheel_profile(wp, w, rr)
+            rout = rad + wp[w, K.W_HTIP] + rr
+            rin = rad - wp[w, K.W_RS] - rr
+            if rin < 0.0:
+                rin = 0.0
+            rout2 = rout * rout
+            rin2 = rin * rin
+            pitch_angle = twopi / nseat
+            iz = int(nseat)
+            cth = math.cos(theta)
+            sth = math.sin(theta)
+            tq = 0.0
+            fsl = 0.0
+            if rebuild:
+                rc = rout + margin
+                rc2 = rc * rc
+                nc = 0
+                for i in range(n):
+                    gcache[w, i] = -1
+                for i in range(n):
+                    qx = x[i] - cx
+                    qy = y[i] - cy
+                    if qx * qx + qy * qy <= rc2:
+                        cand[w, nc] = i
+                        nc += 1
+                ncand[w] = nc
+            for ic in range(ncand[w]):
+                cinfo[w, ic, C_BETA] = 0.0
+                cinfo[w, ic, C_S] = 0.0
+                i = cand[w, ic]
+                qx = x[i] - cx
+                qy = y[i] - cy
+                r2 = qx * qx + qy * qy
+                if r2 > rout2 or r2 < rin2:
+                    continue
+                if plain:
+                    dq = math.sqrt(r2)
+                    pen = rad - dq
+                    if pen <= -margin:
+                        continue
+                    curv = 0.0
+                    nx = -qx / dq
+                    ny = -qy / dq
+                else:
+                    qxw = qx * cth + qy * sth
+                    qyw = -qx * sth + qy * cth
+                    g = gcache[w, i]
+                    if g < 0:
+                        g = int(math.floor(_fast_atan2(qyw, qxw) / pitch_angle + 0.5))
+                        if g < 0:
+                            g += iz
+                        if g >= iz:
+                            g -= iz
+                    g, sx, sy = nearest_seat(tab, w, g, iz, qxw, qyw)
+                    gcache[w, i] = g
+                    erx = sx * cth - sy * sth
+                    ery = sx * sth + sy * cth
+                    a = qx * erx + qy * ery - rad
+                    b = -qx * ery + qy * erx
+                    pen, na, nb, curv = seat_penetration(a, b, rr, delta, cps, sps, re, arcflank,
+                                                          cea, ceb, dta, dtb, tca, tcb, stip,
+                                                          margin)
+                    if pen <= -margin:
+                        continue
+                    nx = na * erx - nb * ery
+                    ny = na * ery + nb * erx
+                rvx = vx[i] - (-om * qy + sd * ddx)
+                rvy = vy[i] - (om * qx + sd * ddy)
+                vn = rvx * nx + rvy * ny
+                # linearised normal force at the end of the step without the implicit
+                # increment: a contact that opens within the step carries no force, a
+                # gap that closes within it (pen < 0) is a contact of this step
+                fn0 = kc * (pen + thh * vn) + cc * vn
+                if fn0 <= 0.0 and pen <= 0.0:
+                    continue
+                fn = kc * pen + cc * vn if pen > 0.0 else 0.0
+                if fn < 0.0:
+                    fn = 0.0
+                if pen > 0.0:
+                    epot += 0.5 * kc * pen * pen
+                vt = -rvx * ny + rvy * nx
+                ve = mu * fn * dtref * inv_m
+                if ve < veps:
+                    ve = veps
+                ft0 = -mu * fn * _sat(vt / ve)
+                s = mu * fn / ve if abs(vt) < ve else 0.0
+                if curv > 0.0:
+                    # concave seat: the normal turns with the roller, a tangential
+                    # stiffness fn/d (d = distance from the seat's centre, ~r_s - r):
+                    # implicit like the sticking friction (Δx_t = h Δv_t)
+                    kt = fn * curv
+                    ft0 -= thh * kt * vt
+                    s += h * kt
+                s *= th
+                # force on the pin: -(fn0 + β Δvn) n + (ft0 - s Δvt) t, t = (-ny, nx)
+                fx[i] += -fn0 * nx - ft0 * ny
+                fy[i] += -fn0 * ny + ft0 * nx
+                _add_pin_matrix(mxx, mxy, myy, i, betac, nx, ny)
+                _add_pin_matrix(mxx, mxy, myy, i, s, -ny, nx)
+                contact[i] += fn
+                lev = qx * ny - qy * nx
+                levt = qx * nx + qy * ny
+                tq += fn0 * lev - ft0 * levt
+                dn = nx * ddx + ny * ddy
+                dtt = -ny * ddx + nx * ddy
+                fsl += fn0 * dn - ft0 * dtt
+                cinfo[w, ic, C_BETA] = betac
+                cinfo[w, ic, C_S] = s
+                cinfo[w, ic, C_NX] = nx
+                cinfo[w, ic, C_NY] = ny
+                cinfo[w, ic, C_L] = lev
+                cinfo[w, ic, C_LT] = levt
+                cinfo[w, ic, C_DN] = dn
+                cinfo[w, ic, C_DT] = dtt
+                cinfo[w, ic, C_FN0] = fn0
+                cinfo[w, ic, C_FT0] = ft0
+                cinfo[w, ic, C_FN] = fn
+            wtq[w] = tq
+            wsf[w] = fsl
+            ws[w, K.S_TORQUE] = tq
+            ws[w, K.S_SFORCE] = fsl
+        # guides (fixed): the same linearisation
+        for g in range(ng):
+            gax = gd[g, 0]
+            gay = gd[g, 1]
+            gux = gd[g, 2]
+            guy = gd[g, 3]
+            gnx = gd[g, 4]
+            gny = gd[g, 5]
+            length = gd[g, 6]
+            if rebuild:
+                reach = rr + margin
+                nc = 0
+                for i in range(n):
+                    hh, ss = _segment_frame(x[i] - gax, y[i] - gay, gux, guy, gnx, gny)
+                    if hh < -reach or hh >= reach or ss < -reach or ss > length + reach:
+                        continue
+                    gcand[g, nc] = i
+                    nc += 1
+                ngcand[g] = nc
+            for ic in range(ngcand[g]):
+                i = gcand[g, ic]
+                pen, mx, my = guide_penetration(x[i], y[i], gd, g, rr, margin)
+                if pen <= -margin:
+                    continue
+                vn = vx[i] * mx + vy[i] * my
+                fn0 = kg * (pen - thh * vn) - cg * vn
+                if fn0 <= 0.0:
+                    continue
+                fn = kg * pen - cg * vn if pen > 0.0 else 0.0
+                if fn < 0.0:
+                    fn = 0.0
+                if pen > 0.0:
+                    epot += 0.5 * kg * pen * pen
+                vt = vx[i] * my - vy[i] * mx
+                mug = gd[g, K.G_MU] if gd[g, K.G_MU] >= 0.0 else mu
+                ve = mug * fn * dtref * inv_m
+                if ve < veps:
+                    ve = veps
+                ft0 = -mug * fn * _sat(vt / ve)
+                s = mug * fn / ve if abs(vt) < ve else 0.0
+                mmat = gd[g, K.G_MM]
+                if mmat > 0.0:
+                    # material scraped along the pan: weight and friction (regularised
+                    # like the chain's) along the pan, its mass in the pin's matrix
+                    gt = gx * my - gy * mx
+                    gn = abs(gx * mx + gy * my)
+                    fm = mmat * gd[g, K.G_MMU] * gn
+                    vem = fm * dtref * inv_m
+                    if vem < veps:
+                        vem = veps
+                    ft0 += mmat * gt - fm * _sat(vt / vem)
+                    if abs(vt) < vem:
+                        s += fm / vem
+                    _add_pin_matrix(mxx, mxy, myy, i, mmat / h, my, -mx)
+                s *= th
+                fx[i] += fn0 * mx + ft0 * my
+                fy[i] += fn0 * my - ft0 * mx
+                _add_pin_matrix(mxx, mxy, myy, i, betag, mx, my)
+                _add_pin_matrix(mxx, mxy, myy, i, s, my, -mx)
+                contact[i] += fn
+        # record (state at time t)
+        if step % record_every == 0 and nrec < rec_t.shape[0]:
+            ekin = 0.0
+            egrav = 0.0
+            for i in range(n):
+                j = i + 1 if i + 1 < n else 0
+                ddx = x[j] - x[i]
+                ddy = y[j] - y[i]
+                dl = math.sqrt(ddx * ddx + ddy * ddy) - rest[i]
+                epot += 0.5 * k * dl * dl
+                ekin += 0.5 * m * (vx[i] * vx[i] + vy[i] * vy[i])
+                egrav -= m * (gx * x[i] + gy * y[i])
+                rec_tension[nrec, i] = tension[i]
+                rec_contact[nrec, i] = contact[i]
+                rec_pos[nrec, i, 0] = x[i]
+                rec_pos[nrec, i, 1] = y[i]
+            for w in range(nw):
+                om = ws[w, K.S_OMEGA]
+                ekin += 0.5 * wp[w, K.W_INERTIA] * om * om
+                if wp[w, K.W_SLIDE] > 0.0:
+                    sv = ws[w, K.S_SDOT]
+                    ekin += 0.5 * wp[w, K.W_SMASS] * sv * sv
+                    epot += 0.5 * wp[w, K.W_SK] * ws[w, K.S_S] ** 2 - wp[w, K.W_SF] * ws[w, K.S_S]
+                    egrav -= wp[w, K.W_SMASS] * (gx * wp[w, K.W_DX] + gy * wp[w, K.W_DY]) \
+                        * ws[w, K.S_S]
+                for col in range(ws.shape[1]):
+                    rec_ws[nrec, w, col] = ws[w, col]
+            rec_energy[nrec] = ekin + epot + egrav
+            rec_t[nrec] = t
+            for q in range(npr):
+                best = 1e300
+                ib = 0
+                for i in range(n):
+                    ddx = x[i] - probes[q, 0]
+                    ddy = y[i] - probes[q, 1]
+                    dq = ddx * ddx + ddy * ddy
+                    if dq < best:
+                        best = dq
+                        ib = i
+                rec_probe[nrec, q] = vx[ib] * probes[q, 2] + vy[ib] * probes[q, 3]
+            nrec += 1
+        # pins: forces F_i (explicit forces, gravity and the links' T*) and the
+        # inverse W_i of the 2 x 2 matrix M_i/h + contact terms
+        for i in range(n):
+            im = i - 1 if i > 0 else n - 1
+            yx[i] = fx[i] + fgx - cm * vx[i] + tstar[i] * ux[i] - tstar[im] * ux[im]
+            yy[i] = fy[i] + fgy - cm * vy[i] + tstar[i] * uy[i] - tstar[im] * uy[im]
+            _pin_inverse(i, mh, mxx, mxy, myy, wxx, wxy, wyy)
+        # active set of the wheel contacts: a contact whose normal force at the end of
+        # the step comes out tensile is dropped and the step solved again
+        for it in range(4):
+            _solve(n, nw, yx, yy, wxx, wxy, wyy, ux, uy, dg, of, dd, ff, lam, inv_ak, dvx, dvy, ws,
+                   wp, ncand, cand, cinfo, qrot, qsl, bx, by, zx, zy, sq, fq, wtq, wsf, h, t, gx, gy)
+            if it == 3 or not _drop_tensile(cinfo, ncand, cand, qrot, qsl, fq, dvx, dvy, yx, yy,
+                                            mxx, mxy, myy, wtq, wsf, contact):
+                break
+            for i in range(n):
+                _pin_inverse(i, mh, mxx, mxy, myy, wxx, wxy, wyy)
+        for i in range(n):
+            fx[i] = 0.0
+            fy[i] = 0.0
+            mxx[i] = 0.0
+            mxy[i] = 0.0
+            myy[i] = 0.0
+            contact[i] = 0.0
+        for i in range(n):
+            vx[i] += dvx[i]
+            vy[i] += dvy[i]
+            x[i] += h * vx[i]
+            y[i] += h * vy[i]
+        for w in range(nw):
+            if wp[w, K.W_MODE] == K.MODE_MOTOR and qrot[w] >= 0:
+                advance_motor(wp, ws, w, t, h)   # the motor behind a fluid coupling
+            if qrot[w] >= 0:
+                ws[w, K.S_OMEGA] += fq[qrot[w]]
+            elif wp[w, K.W_MODE] == K.MODE_FREE or wp[w, K.W_MODE] == K.MODE_MOTOR:
+                # no pin within reach: the wheel on its own
+                om = ws[w, K.S_OMEGA]
+                tq = wp[w, K.W_TORQUE] - wp[w, K.W_DAMP] * om
+                if wp[w, K.W_MODE] == K.MODE_MOTOR:
+                    tq += wheel_drive_torque(wp, ws, w, om, t, tq, h)
+                    advance_motor(wp, ws, w, t, h)
+                ws[w, K.S_OMEGA] = om + h * tq / wp[w, K.W_INERTIA]
+            else:
+                ws[w, K.S_OMEGA] = omu[w]
+            ws[w, K.S_THETA] += ws[w, K.S_OMEGA] * h
+            if wp[w, K.W_SLIDE] > 0.0:
+                if qsl[w] >= 0:
+                    ws[w, K.S_SDOT] += fq[qsl[w]]
+                else:
+                    dxw = wp[w, K.W_DX]
+                    dyw = wp[w, K.W_DY]
+                    fs = wp[w, K.W_SF] - wp[w, K.W_SK] * ws[w, K.S_S] \
+                        - wp[w, K.W_SC] * ws[w, K.S_SDOT] + wp[w, K.W_SMASS] * (gx * dxw + gy * dyw)
+                    ws[w, K.S_SDOT] += h * fs / wp[w, K.W_SMASS]
+                ws[w, K.S_S] += ws[w, K.S_SDOT] * h
+    for i in range(n):
+        pos[i, 0] = x[i]
+        pos[i, 1] = y[i]
+        vel[i, 0] = vx[i]
+        vel[i, 1] = vy[i]
+    return nrec
