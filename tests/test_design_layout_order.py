@@ -31,3 +31,19 @@ def test_candidates_equal_those_of_every_chain_laid_out(power, rpm, centre):
                  repr(c.maximum_tension), c.notes, [x.name for x in c.checks]) for c in cands]
 
     assert rows(kept) == rows(expected) and kept
+
+
+@pytest.mark.parametrize(("power", "rpm"), [(11e3, 1460), (3e3, 960), (60e3, 300)])
+def test_the_catalogue_screen_passes_every_chain_the_one_chain_rating_passes(power, rpm):
+    from chaindrive.chains import catalogue
+    from chaindrive.design.procedure import _may_carry
+    from chaindrive.rating import chain_rating
+
+    speed = rpm * math.pi / 30
+    chains = [(ch, 19) for ch in catalogue("ansi") if ch.strands <= 4]
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        one_by_one = [chain_rating(ch, z, speed, power=power).rated_power >= power for ch, z in chains]
+    screened = _may_carry(chains, speed, power, "ansi")
+    assert screened == one_by_one
+    assert 0 < sum(screened) < len(screened)

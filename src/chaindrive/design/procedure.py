@@ -233,12 +233,13 @@ def _candidate(chain: Chain, twins: tuple[str, ...], duty: Duty, factors: tuple[
 
 
 def _rated(chain: Chain, twins: tuple[str, ...], duty: Duty, ks: float, given_teeth: int | None,
-           method: str | None) -> _Rated | str | None:
-    """Steps 2-3 of :func:`_candidate`: teeth, rating, room (``None``: does not carry the load)."""
+           method: str | None, teeth: tuple[int, str] | None = None) -> _Rated | str | None:
+    """Steps 2-3 of :func:`_candidate`: teeth (``teeth`` when already chosen), rating, room
+    (``None``: does not carry the load)."""
     from ..rating import chain_rating
     from .policy import driven_teeth
 
-    z1, why = _teeth_for(chain, duty, given_teeth)
+    z1, why = _teeth_for(chain, duty, given_teeth) if teeth is None else teeth
     z2 = driven_teeth(z1, duty.speed_ratio)
     design = duty.power * ks
     with warnings.catch_warnings():
@@ -319,6 +320,43 @@ def _laid_out(rated: _Rated, duty: Duty, factors: tuple[Factor, ...], ks: float,
         static_safety=static_value, required_static_safety=drive.static_safety_required,
         maximum_tension=maximum, teeth_rule=why, factors=cand_factors,
         checks=checks, advice=drive_advice(duty, r), notes=tuple(notes), project_text=text)
+
+
+#: Relative margin of the catalogue screen: a chain whose screened rating lies within it
+#: below the design power is rated one by one (the screen's vectorised powers may differ
+#: from the one-chain rating in the last digits).
+SCREEN_MARGIN = 1e-9
+
+
+def _may_carry(chains: list[tuple[Chain, int]], speed: float, design: float, method: str | None) -> list[bool]:
+    """Whether each (chain, teeth) may carry the design power [W] at ``speed`` [rad/s]: the
+    ANSI/ACA rated power ``K_2 min(H_1, H_2)`` of the whole catalogue in one vectorised call
+    (:func:`chaindrive.rating.ansi.ansi_link_plate_power`, ``ansi_roller_bushing_power``),
+    so that only the chains that may carry it are rated one by one (``chain_rating``).
+    A chain rated by another method is always passed on."""
+    from ..rating import default_method
+    from ..rating.ansi import (
+        ansi_constants,
+        ansi_link_plate_power,
+        ansi_roller_bushing_power,
+        multi_strand_factor,
+    )
+
+    ansi = [(method or default_method(ch)) == "ansi" and ch.is_roller_chain and ch.strands <= 4 for ch, _ in chains]
+    picked = [c for c, a in zip(chains, ansi, strict=True) if a]
+    if not picked:
+        return [True] * len(chains)
+    import numpy as np
+
+    z = np.array([t for _, t in picked], dtype=float)
+    p = np.array([ch.pitch for ch, _ in picked])
+    kp, kr = np.array([ansi_constants(ch.name) for ch, _ in picked]).T
+    k2 = np.array([multi_strand_factor(ch.strands) for ch, _ in picked])
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", ValidityRangeWarning)
+        rated = np.minimum(k2 * ansi_link_plate_power(z, speed, p, kp), k2 * ansi_roller_bushing_power(z, speed, p, kr))
+    ok = iter(rated >= design * (1.0 - SCREEN_MARGIN))
+    return [bool(next(ok)) if a else True for a in ansi]
 
 
 def _lay_out(rated: list[_Rated], duty: Duty, factors: tuple[Factor, ...], ks: float, required: float | None,
@@ -421,8 +459,7 @@ def design_drive(duty: Duty, *, teeth_driving: int | None = None, family: str | 
         raise InputError(f"required_static_safety must be a number >= 1, got {required_static_safety!r}",
                          field="required_static_safety")
     fams = ("iso606", "ansi") if family is None else (family,)
-    rated: list[_Rated] = []
-    too_close: list[str] = []
+    chains = []
     for fam in fams:
         for ch in catalogue(fam):
             if ch.strands not in allowed:
@@ -430,11 +467,18 @@ def design_drive(duty: Duty, *, teeth_driving: int | None = None, family: str | 
             twins = tuple(equivalent_names(ch))
             if family is None and ch.family == "ansi" and twins:
                 continue  # one row per chain: the ISO 606 twin carries both names
-            got = _rated(ch, twins, duty, ks, teeth_driving, method)
-            if isinstance(got, str):
-                too_close.append(got)
-            elif got is not None:
-                rated.append(got)
+            chains.append((ch, twins, _teeth_for(ch, duty, teeth_driving)))
+    may_carry = _may_carry([(ch, z[0]) for ch, _, z in chains], duty.speed, duty.power * ks, method)
+    rated: list[_Rated] = []
+    too_close: list[str] = []
+    for (ch, twins, teeth), maybe in zip(chains, may_carry, strict=True):
+        if not maybe:
+            continue
+        got = _rated(ch, twins, duty, ks, teeth_driving, method, teeth)
+        if isinstance(got, str):
+            too_close.append(got)
+        elif got is not None:
+            rated.append(got)
     found = _lay_out(rated, duty, factors, ks, required_static_safety, all_sizes)
     if not found:
         extra = f"; sprockets too large for the centre distance: {', '.join(too_close[:4])}" if too_close else ""
