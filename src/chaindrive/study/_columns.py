@@ -21,7 +21,7 @@ def _kind(value: Any) -> str:
     return "string"
 
 
-def column_type(values: Iterable[Any], established: Any, pa) -> Any:
+def column_type(values: Iterable[Any], established: Any, pa: Any) -> Any:
     """The Parquet type of an output column: the type of its earlier part files, else text
     if any value is text, bool if all are bools, else float (null: no value yet)."""
     if established is not None and not pa.types.is_null(established):
@@ -36,7 +36,7 @@ def column_type(values: Iterable[Any], established: Any, pa) -> Any:
     return pa.float64()
 
 
-def convert(value: Any, type_, pa) -> Any:
+def convert(value: Any, type_: Any, pa: Any) -> Any:
     """``value`` as a value of the column type ``type_`` (lists and dicts as JSON text;
     ``None`` where it does not fit)."""
     if value is None:
@@ -55,7 +55,7 @@ def convert(value: Any, type_, pa) -> Any:
     return None
 
 
-def array(values: list[Any], type_, pa) -> Any:
+def array(values: list[Any], type_: Any, pa: Any) -> Any:
     """``values`` as a pyarrow array of ``type_``, each converted as :func:`convert` does;
     a column of plain floats (or bools, or strings) in one call (non-finite floats null)."""
     kind = {float: pa.types.is_floating, bool: pa.types.is_boolean, str: pa.types.is_string}
