@@ -2,11 +2,14 @@
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from dataclasses import dataclass
+from typing import Any
 
 from .._results import Result
 from ..drive.model import Drive
 from ..kinematics import EntryKinematics, chain_entry
+from ._memo import memo
 from ._wheels import wheel_teeth
 from .checks import Check
 from .parts import Part, PartContext, register_part
@@ -28,13 +31,24 @@ class EntryCase:
     guide_height: float | None = None
 
     def solve(self, *, points: int = 361, free: bool = False) -> EntryKinematics:
-        """The entry kinematics (exact rigid-link model); ``free=True``: the same wheel without guide."""
-        if free or self.entry == "free":
+        """The entry kinematics (exact rigid-link model); ``free=True``: the same wheel without guide.
+
+        Kept for reuse by its case (:mod:`chaindrive.analysis._memo`): a drive whose other
+        fields changed has the same entries."""
+        return _solve(self, int(points), bool(free or self.entry == "free"))
+
+    def _solve(self, points: int, free: bool) -> EntryKinematics:
+        if free:
             return chain_entry(self.pitch, self.teeth, self.angular_velocity, bar_diameter=self.bar_diameter,
                                entry="free", points=points)
         return chain_entry(self.pitch, self.teeth, self.angular_velocity, bar_diameter=self.bar_diameter,
                            entry=self.entry, guide_end_distance=self.guide_end_distance,
                            guide_height=self.guide_height, points=points)
+
+
+@memo(maxsize=64)
+def _solve(case: EntryCase, points: int, free: bool) -> EntryKinematics:
+    return case._solve(points, free)
 
 
 @dataclass(frozen=True)
@@ -125,6 +139,29 @@ def _entry_part(ctx: PartContext) -> DriveEntry:
     return drive_entry(ctx.drive, points=ctx.options.get("entry_points", 361))
 
 
+def _entry_batch(contexts: Sequence[PartContext]) -> list[DriveEntry]:
+    """The entry kinematics of many variants, solved once per distinct set of entry cases
+    (:func:`drive_entry` reads nothing else of a drive: wheels whose positions differ share
+    it); each variant gets that result and its warnings."""
+    import warnings
+
+    solved: dict[tuple[Any, ...], tuple[DriveEntry, list[str]]] = {}
+    out = []
+    for ctx in contexts:
+        points = ctx.options.get("entry_points", 361)
+        key = (entry_cases(ctx.drive), ctx.drive.driving_wheel.name, points)
+        hit = solved.get(key)
+        if hit is None:
+            with warnings.catch_warnings(record=True) as caught:
+                warnings.simplefilter("always")
+                result = drive_entry(ctx.drive, points=points)
+            hit = solved[key] = (result, [str(w.message) for w in caught])
+        for text in hit[1]:
+            ctx.warn(text)
+        out.append(hit[0])
+    return out
+
+
 register_part(Part("entry", "Entry kinematics of the driving and the guided wheels", _entry_part,
                    checks=lambda ctx, entry: entry_checks(entry), order=40,
-                   section="chaindrive.workflows.sections:entry_section"))
+                   section="chaindrive.workflows.sections:entry_section", batch=_entry_batch))

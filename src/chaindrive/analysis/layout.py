@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import dataclasses
 import math
 import warnings
 from dataclasses import dataclass
@@ -12,6 +13,7 @@ from .. import layout as L
 from .._results import Result, quantity
 from ..drive.model import Drive
 from ..errors import InfeasibleError, ValidityRangeWarning
+from ._memo import freeze, memo
 from ._wheels import wheel_teeth
 from .checks import Check
 from .parts import Part, PartContext, register_part
@@ -138,6 +140,25 @@ def drive_layout(drive: Drive, *, phases: int = 8) -> DriveLayout:
     >>> lay.links, round(lay.centre_distance_for_links.taut, 4)
     (142, 4.0)
     """
+    lay = _geometry(drive, int(phases))
+    speed = drive.chain_speed()
+    if lay.chain_speed != speed:  # kept from a drive that differs only in its speed
+        lay = dataclasses.replace(lay, chain_speed=speed, angular_velocities=drive.angular_velocities())
+        freeze(lay.angular_velocities)
+    return lay
+
+
+def _geometry_key(drive: Drive, phases: int) -> tuple:
+    # every field _drive_layout reads, the speed aside (drive_layout sets it)
+    t = drive.tensioner
+    return (drive.chain, drive.wheels, drive.links, drive.adjustable, drive.travel,
+            None if t is None else (t.wheel, t.direction), phases)
+
+
+@memo(maxsize=64, key=_geometry_key)
+def _geometry(drive: Drive, phases: int) -> DriveLayout:
+    # drive_layout; kept for reuse by the fields it reads (a drive whose load, speed or
+    # tensioner stiffness changed has the same layout)
     wheels = drive.wheels
     p = drive.pitch
     radii = drive.pitch_radii()

@@ -14,6 +14,7 @@ from .._results import Result, quantity
 from ..chains import Chain
 from ..drive.model import Drive
 from ..errors import ChainDriveError, InputError
+from ._memo import memo
 from ._wheels import wheel_teeth
 from .checks import Check
 from .layout import DriveLayout, drive_layout, slack_span_sag, span_inclination
@@ -217,8 +218,14 @@ def _slack_tension(drive: Drive, layout: DriveLayout) -> tuple[float, str]:
     incl = span_inclination(layout.wrap.span_angle[j])
     if abs(incl) > NEAR_VERTICAL:
         return float(q * L.GRAVITY * span), "weight of the near-vertical slack span, q g l"
-    return (float(L.tension_for_sag(span, incl, drive.slack_sag_ratio * span, q)),
+    return (_tension_for_sag(span, incl, drive.slack_sag_ratio * span, q),
             f"catenary sag {drive.slack_sag_ratio:.1%} of the slack span")
+
+
+@memo(maxsize=64)
+def _tension_for_sag(span: float, inclination: float, sag: float, mass_per_length: float) -> float:
+    # chaindrive.layout.tension_for_sag (a bisection of 100 steps) kept for reuse by its inputs
+    return float(L.tension_for_sag(span, inclination, sag, mass_per_length))
 
 
 def drive_loads(drive: Drive, layout: DriveLayout | None = None, *,

@@ -27,6 +27,7 @@ from ..vibration.excitation import (
     ExcitationResponse,
     span_excitations,
 )
+from ._memo import memo
 from .checks import Check
 from .layout import DriveLayout, span_inclination
 from .loads import DriveLoads
@@ -158,11 +159,17 @@ def _severity(drive: Drive, layout: DriveLayout, span: TensionerSpan) -> tuple[E
     driven = [(j, w) for j, w in enumerate(drive.wheels) if w.teeth is not None and w.kind != "idler" and not w.driving]
     j, wd = max(driven, key=lambda jw: jw[1].teeth or 0) if driven else (i, drive.driving_wheel)
     radii = layout.pitch_radii
-    return span_excitations(span, float(drive.speed), ratio=drive.speed_ratio(),
-                            teeth_driving=int(drive.driving_wheel.teeth or 0), teeth_driven=int(wd.teeth or 0),
-                            radius_driving=float(radii[i]), radius_driven=float(radii[j]), pitch=drive.pitch,
-                            bar_diameter=drive.chain.bar_diameter if drive.chain.is_link_chain else None,
-                            damping_ratio=DAMPING_RATIO)
+    return _span_excitations(span, float(drive.speed), ratio=drive.speed_ratio(),
+                             teeth_driving=int(drive.driving_wheel.teeth or 0), teeth_driven=int(wd.teeth or 0),
+                             radius_driving=float(radii[i]), radius_driven=float(radii[j]), pitch=drive.pitch,
+                             bar_diameter=drive.chain.bar_diameter if drive.chain.is_link_chain else None,
+                             damping_ratio=DAMPING_RATIO)
+
+
+# the tensioner paper's frequencies and the forced responses of a slack span, kept for reuse by
+# their inputs (chaindrive.analysis._memo): an edit of another field gives the same span
+_span_vibration = memo(maxsize=64)(span_vibration)
+_span_excitations = memo(maxsize=64)(span_excitations)
 
 
 def drive_vibration(drive: Drive, layout: DriveLayout, loads: DriveLoads) -> DriveVibration:
@@ -198,7 +205,7 @@ def drive_vibration(drive: Drive, layout: DriveLayout, loads: DriveLoads) -> Dri
             "the tensioner paper's coupling does not apply; the spans are analysed as free strings")
         span = None
     if span is not None:
-        res = span_vibration(span, omega, modes=MODES,
+        res = _span_vibration(span, omega, modes=MODES,
                              speed_range=(CAMPBELL_RANGE[0] * omega, CAMPBELL_RANGE[1] * omega), **kw)
         return DriveVibration(exc, span, res, None, None, tuple(notes), _severity(drive, layout, span))
     q = drive.mass_per_length

@@ -209,22 +209,37 @@ def _teeth_for(chain: Chain, duty: Duty, given: int | None) -> tuple[int, str]:
     return z, why
 
 
+@dataclass(frozen=True)
+class _Rated:
+    """A chain past steps 2-3 (teeth, rating, room between the sprockets): the rest of
+    :func:`_candidate` is its layout and loads."""
+
+    chain: Chain
+    twins: tuple[str, ...]
+    z1: int
+    z2: int
+    why: str
+    rating: Any
+    centre: float
+
+
 def _candidate(chain: Chain, twins: tuple[str, ...], duty: Duty, factors: tuple[Factor, ...], ks: float,
                given_teeth: int | None, method: str | None, required: float | None) -> DesignCandidate | str | None:
     """One chain through steps 2-5 (``None``: does not carry the load; a string: why it was left out)."""
-    from ..analysis import analyze_drive
-    from ..analysis.loads import static_safety_check
-    from ..layout import (
-        centre_distance_approx,
-        centre_distance_polygon,
-        chain_length_approx,
-        even_links,
-    )
+    rated = _rated(chain, twins, duty, ks, given_teeth, method)
+    if rated is None or isinstance(rated, str):
+        return rated
+    return _laid_out(rated, duty, factors, ks, required)
+
+
+def _rated(chain: Chain, twins: tuple[str, ...], duty: Duty, ks: float, given_teeth: int | None,
+           method: str | None, teeth: tuple[int, str] | None = None) -> _Rated | str | None:
+    """Steps 2-3 of :func:`_candidate`: teeth (``teeth`` when already chosen), rating, room
+    (``None``: does not carry the load)."""
     from ..rating import chain_rating
-    from .advice import drive_advice
     from .policy import driven_teeth
 
-    z1, why = _teeth_for(chain, duty, given_teeth)
+    z1, why = _teeth_for(chain, duty, given_teeth) if teeth is None else teeth
     z2 = driven_teeth(z1, duty.speed_ratio)
     design = duty.power * ks
     with warnings.catch_warnings():
@@ -236,6 +251,25 @@ def _candidate(chain: Chain, twins: tuple[str, ...], duty: Duty, factors: tuple[
     clearance = (_outside_diameter(chain.pitch, z1) + _outside_diameter(chain.pitch, z2)) / 2
     if a <= clearance:
         return f"{chain.name} (needs > {clearance * 1e3:.0f} mm)"
+    return _Rated(chain, twins, z1, z2, why, r, a)
+
+
+def _laid_out(rated: _Rated, duty: Duty, factors: tuple[Factor, ...], ks: float,
+              required: float | None) -> DesignCandidate | None:
+    """Steps 4-5 of :func:`_candidate`: links, exact centre distance, loads, static safety."""
+    from ..analysis import analyze_drive
+    from ..analysis.loads import static_safety_check
+    from ..layout import (
+        centre_distance_approx,
+        centre_distance_polygon,
+        chain_length_approx,
+        even_links,
+    )
+    from .advice import drive_advice
+
+    chain, twins, z1, z2, why, r, a = (rated.chain, rated.twins, rated.z1, rated.z2, rated.why, rated.rating,
+                                       rated.centre)
+    design = duty.power * ks
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", ValidityRangeWarning)
         links = int(even_links(chain_length_approx(chain.pitch, z1, z2, a)))
@@ -286,6 +320,69 @@ def _candidate(chain: Chain, twins: tuple[str, ...], duty: Duty, factors: tuple[
         static_safety=static_value, required_static_safety=drive.static_safety_required,
         maximum_tension=maximum, teeth_rule=why, factors=cand_factors,
         checks=checks, advice=drive_advice(duty, r), notes=tuple(notes), project_text=text)
+
+
+#: Relative margin of the catalogue screen: a chain whose screened rating lies within it
+#: below the design power is rated one by one (the screen's vectorised powers may differ
+#: from the one-chain rating in the last digits).
+SCREEN_MARGIN = 1e-9
+
+
+def _may_carry(chains: list[tuple[Chain, int]], speed: float, design: float, method: str | None) -> list[bool]:
+    """Whether each (chain, teeth) may carry the design power [W] at ``speed`` [rad/s]: the
+    ANSI/ACA rated power ``K_2 min(H_1, H_2)`` of the whole catalogue in one vectorised call
+    (:func:`chaindrive.rating.ansi.ansi_link_plate_power`, ``ansi_roller_bushing_power``),
+    so that only the chains that may carry it are rated one by one (``chain_rating``).
+    A chain rated by another method is always passed on."""
+    from ..rating import default_method
+    from ..rating.ansi import (
+        ansi_constants,
+        ansi_link_plate_power,
+        ansi_roller_bushing_power,
+        multi_strand_factor,
+    )
+
+    ansi = [(method or default_method(ch)) == "ansi" and ch.is_roller_chain and ch.strands <= 4 for ch, _ in chains]
+    picked = [c for c, a in zip(chains, ansi, strict=True) if a]
+    if not picked:
+        return [True] * len(chains)
+    import numpy as np
+
+    z = np.array([t for _, t in picked], dtype=float)
+    p = np.array([ch.pitch for ch, _ in picked])
+    kp, kr = np.array([ansi_constants(ch.name) for ch, _ in picked]).T
+    k2 = np.array([multi_strand_factor(ch.strands) for ch, _ in picked])
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", ValidityRangeWarning)
+        rated = np.minimum(k2 * ansi_link_plate_power(z, speed, p, kp), k2 * ansi_roller_bushing_power(z, speed, p, kr))
+    ok = iter(rated >= design * (1.0 - SCREEN_MARGIN))
+    return [bool(next(ok)) if a else True for a in ansi]
+
+
+def _lay_out(rated: list[_Rated], duty: Duty, factors: tuple[Factor, ...], ks: float, required: float | None,
+             all_sizes: bool) -> list[DesignCandidate]:
+    """The rated chains laid out and loaded (steps 4-5). Unless ``all_sizes``, only the chains
+    that can be kept: per series and strand count, design_drive keeps the adequate chains of
+    the smallest (galling region, pitch); they are laid out in that order until one passes
+    the static safety, and those of its (galling, pitch) with it. The candidates are those
+    laying out every chain and filtering afterwards would give."""
+    if all_sizes:
+        return [c for r in rated if (c := _laid_out(r, duty, factors, ks, required)) is not None]
+    groups: dict[tuple[str, int], list[_Rated]] = {}
+    for r in rated:
+        groups.setdefault((_series(r.chain), r.chain.strands), []).append(r)
+    found: list[DesignCandidate] = []
+    for group in groups.values():
+        kept = None
+        for r in sorted(group, key=lambda r: (r.rating.lubrication == "C'", r.chain.pitch)):
+            order = (r.rating.lubrication == "C'", r.chain.pitch)
+            if kept is not None and order != kept:
+                break
+            c = _laid_out(r, duty, factors, ks, required)
+            if c is not None:
+                found.append(c)
+                kept = order
+    return found
 
 
 def design_drive(duty: Duty, *, teeth_driving: int | None = None, family: str | None = None,
@@ -362,8 +459,7 @@ def design_drive(duty: Duty, *, teeth_driving: int | None = None, family: str | 
         raise InputError(f"required_static_safety must be a number >= 1, got {required_static_safety!r}",
                          field="required_static_safety")
     fams = ("iso606", "ansi") if family is None else (family,)
-    found: list[DesignCandidate] = []
-    too_close: list[str] = []
+    chains = []
     for fam in fams:
         for ch in catalogue(fam):
             if ch.strands not in allowed:
@@ -371,11 +467,19 @@ def design_drive(duty: Duty, *, teeth_driving: int | None = None, family: str | 
             twins = tuple(equivalent_names(ch))
             if family is None and ch.family == "ansi" and twins:
                 continue  # one row per chain: the ISO 606 twin carries both names
-            got = _candidate(ch, twins, duty, factors, ks, teeth_driving, method, required_static_safety)
-            if isinstance(got, str):
-                too_close.append(got)
-            elif got is not None:
-                found.append(got)
+            chains.append((ch, twins, _teeth_for(ch, duty, teeth_driving)))
+    may_carry = _may_carry([(ch, z[0]) for ch, _, z in chains], duty.speed, duty.power * ks, method)
+    rated: list[_Rated] = []
+    too_close: list[str] = []
+    for (ch, twins, teeth), maybe in zip(chains, may_carry, strict=True):
+        if not maybe:
+            continue
+        got = _rated(ch, twins, duty, ks, teeth_driving, method, teeth)
+        if isinstance(got, str):
+            too_close.append(got)
+        elif got is not None:
+            rated.append(got)
+    found = _lay_out(rated, duty, factors, ks, required_static_safety, all_sizes)
     if not found:
         extra = f"; sprockets too large for the centre distance: {', '.join(too_close[:4])}" if too_close else ""
         raise InfeasibleError(

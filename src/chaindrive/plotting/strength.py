@@ -50,9 +50,14 @@ def skew_plot(result: RollerContactResult, *, ax: Axes | None = None) -> Figure:
 
     from ..strength.skew import ARCMIN, MEASURED_SKEW_RANGE
 
+    own = ax is None
     if ax is None:
-        # laid out when drawn, so that a report's own layout engine replaces it (one layout, not two)
+        # fixed margins [in] (what the tight layout found for the report's examples, with room
+        # for a longer tick label): no layout pass measuring every text at each draw
         fig, ax = subplots(figsize=(7.5, 5.5), layout="tight")
+        fig.set_layout_engine("none")  # an inert engine: a report keeps these margins
+        width, height = fig.get_size_inches()
+        fig.subplots_adjust(left=0.78 / width, right=1 - 0.78 / width, bottom=1.34 / height, top=1 - 0.37 / height)
     else:
         fig = figure_of(ax)
     skew = np.atleast_1d(result.max_skew) / ARCMIN
@@ -79,9 +84,7 @@ def skew_plot(result: RollerContactResult, *, ax: Axes | None = None) -> Figure:
     ax.set_title(f"Roller–tooth contact with skew (γ = {g:.5f}/arcmin², "
                  f"K_φ = {float(np.atleast_1d(result.design_skew)[-1] / np.atleast_1d(result.max_skew)[-1]):.2f})")
     ax.grid(True, alpha=0.3)
-    from matplotlib.layout_engine import TightLayoutEngine
-
-    if not isinstance(fig.get_layout_engine(), TightLayoutEngine):  # a caller's figure: laid out now
+    if not own:  # a caller's figure: laid out now
         fig.tight_layout()
     return fig
 

@@ -112,12 +112,12 @@ def _group(check: Any) -> str:
 def loads_table(analysis: LightAnalysis) -> Table | None:
     """The chain-tension table of the report's "Loads" section (names, values, units and
     basis as the report gives them), or ``None`` when the analysis has no loads."""
-    from ..workflows.sections import build_sections
+    from ..analysis.parts import get_part
+    from ..workflows.sections import Figures, section_function
 
     if analysis.analysis is None or getattr(analysis.analysis, "loads", None) is None:
         return None
-    sections, _ = build_sections(analysis.analysis, figures=False)
-    sec = next((x for x in sections if x.title.lower().startswith("loads")), None)
+    sec = section_function(get_part("loads"))(analysis.analysis, Figures(False))  # that section only
     return None if sec is None or not sec.tables else sec.tables[0]
 
 

@@ -44,11 +44,13 @@ class AnalysisOutcome:
 
 def report_from_analysis(analysis: DriveAnalysis, *, title: str | None = None, subtitle: str = "",
                          figures: bool = True,
-                         progress: Callable[[str, int, int], None] | None = None) -> tuple[Report, dict[str, float]]:
-    """The :class:`Report` of ``analysis`` (sections in a fixed order, figures when asked)."""
+                         progress: Callable[[str, int, int], None] | None = None,
+                         parallel_figures: bool = False) -> tuple[Report, dict[str, float]]:
+    """The :class:`Report` of ``analysis`` (sections in a fixed order, figures when asked;
+    ``parallel_figures``: see :func:`analyze`)."""
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always")
-        sections, timings = build_sections(analysis, figures=figures, progress=progress)
+        sections, timings = build_sections(analysis, figures=figures, progress=progress, parallel=parallel_figures)
     extra = [str(w.message) for w in caught]
     report = Report(title=title or analysis.drive.name or "Chain drive", subtitle=subtitle, sections=sections,
                     warnings=list(dict.fromkeys([*analysis.warnings, *extra])), analysis=analysis)
@@ -82,6 +84,7 @@ def analyze(
     figures: bool = True,
     progress: Callable[[str, int, int], None] | None = None,
     include: Iterable[str] | None = None,
+    parallel_figures: bool = False,
 ) -> AnalysisOutcome:
     """Analyse ``drive`` and write its calculation report.
 
@@ -102,6 +105,10 @@ def analyze(
         Called as ``progress(title, index, total)`` before each step.
     include : iterable of str, optional
         Parts of the analysis (:data:`chaindrive.analysis.PARTS`).
+    parallel_figures : bool
+        Share the figures with one helper process forked from this one when the machine
+        has two processors or more (Linux); the report is the same. For a program of its
+        own (``chaindrive analyze`` sets it), not for one that runs threads or a server.
 
     Returns
     -------
@@ -113,7 +120,7 @@ def analyze(
     analysis = analyze_drive(drive, include=include)
     t_analysis = time.perf_counter() - t0
     report, timings = report_from_analysis(analysis, title=title, subtitle=subtitle, figures=figures,
-                                           progress=progress)
+                                           progress=progress, parallel_figures=parallel_figures)
     timings = {"analysis": t_analysis, **timings}
     if progress is not None:
         progress("done", 1, 1)

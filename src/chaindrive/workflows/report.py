@@ -67,6 +67,60 @@ def _fixed_margins(fig: MatplotlibFigure) -> bool:
     return True
 
 
+def _fixed_titles(fig: MatplotlibFigure) -> None:
+    """Leave each axes title at its default height where matplotlib's automatic placement
+    would not move it (no x ticks or label on top, no offset text beside the title):
+    that placement measures every y tick label at each draw, a third of a plain figure's
+    drawing time. The picture is the same."""
+    axes: list[Any] = list(fig.axes)  # matplotlib's own (private) title state is read and set
+    for ax in axes:
+        if not getattr(ax, "_autotitlepos", False) or not any(
+                t.get_text() for t in (ax.title, ax._left_title, ax._right_title)):
+            continue
+        if ax.xaxis.get_ticks_position() in ("top", "unknown") or ax.xaxis.get_label_position() == "top":
+            continue
+        if ax.child_axes or len(ax._twinned_axes.get_siblings(ax)) > 1:
+            continue
+        if ax.yaxis.offsetText.get_visible() and _offset_text(ax.yaxis):
+            continue
+        ax._autotitlepos = False
+
+
+def _offset_text(axis: Any) -> str:
+    """The offset text (``1e6``, ``+7.7``) the axis will show, found without drawing it."""
+    formatter = axis.get_major_formatter()
+    if not hasattr(formatter, "get_offset"):
+        return ""
+    try:
+        formatter.set_locs(axis.get_majorticklocs())
+        return str(formatter.get_offset())
+    except Exception:  # noqa: BLE001 - any doubt: keep matplotlib's own placement
+        return "?"
+
+
+def _save_png(fig: MatplotlibFigure, buf: io.BytesIO, dpi: int) -> None:
+    """The figure as PNG, zlib level 3 (a quarter less encoding time than the default 6,
+    files ~8 % larger). On the Agg canvas at the figure's own resolution with the default
+    savefig settings: one draw and the encoding, the same bytes as ``savefig`` (which
+    draws a figure twice when it has a layout engine, even the inert one of fixed
+    margins); otherwise ``savefig``."""
+    import matplotlib as mpl
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+
+    pil_kwargs = {"compress_level": 3}
+    rc = mpl.rcParams
+    canvas = fig.canvas
+    direct = (isinstance(canvas, FigureCanvasAgg) and fig.dpi == dpi and rc["savefig.bbox"] is None
+              and rc["savefig.facecolor"] == "auto" and rc["savefig.edgecolor"] == "auto"
+              and not rc["savefig.transparent"] and getattr(fig.canvas, "_device_pixel_ratio", 1) == 1)
+    if not direct or not isinstance(canvas, FigureCanvasAgg):
+        fig.savefig(buf, format="png", dpi=dpi, pil_kwargs=pil_kwargs)
+        return
+    FigureCanvasAgg.draw(canvas)
+    mpl.image.imsave(buf, canvas.buffer_rgba(), format="png", origin="upper", dpi=fig.dpi,
+                     pil_kwargs=pil_kwargs)
+
+
 @dataclasses.dataclass
 class Figure:
     """A figure: caption plus PNG bytes (and the file name it is saved under)."""
@@ -87,8 +141,8 @@ class Figure:
         # axes) sets it where it is made
         if (engine is None or isinstance(engine, TightLayoutEngine)) and not _fixed_margins(fig) and engine is None:
             fig.set_layout_engine("tight", pad=0.6)
-        # zlib level 3: a quarter less encoding time than the default 6, files ~8 % larger
-        fig.savefig(buf, format="png", dpi=dpi, pil_kwargs={"compress_level": 3})
+        _fixed_titles(fig)
+        _save_png(fig, buf, dpi)
         plt = sys.modules.get("matplotlib.pyplot")  # imported only by a program that uses it
         if plt is not None:
             plt.close(fig)

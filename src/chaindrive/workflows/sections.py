@@ -18,13 +18,15 @@ from ..analysis.vibration_remedy import REQUIRED_MARGIN
 from ..drive.model import Wheel
 from ..errors import InputError
 from ..vibration.excitation import AMPLIFICATION_LIMIT, DAMPING_RATIO
+from ._figures import Figures, FigureShare
+from ._figures import Figures as _Figures
 from .display import convert, display_of
-from .report import Figure, Section, Table
+from .report import Section, Table
 
 if TYPE_CHECKING:
     from matplotlib.figure import Figure as MatplotlibFigure
 
-__all__ = ["report_sections", "build_sections", "generic_section"]
+__all__ = ["report_sections", "build_sections", "generic_section", "section_function", "Figures"]
 
 
 def _si(value: Any, unit: str, shown: str | None = None) -> list[Any]:
@@ -54,18 +56,6 @@ def _q(result: Any, name: str, index: int | None = None) -> list[Any]:
 def _col(result: Any, name: str) -> str:
     """The display unit of field ``name`` of a result, for a column header."""
     return _unit(type(result).unit_of(name) or "1", type(result).display_unit_of(name))
-
-
-class _Figures:
-    """Draws figures unless switched off; a figure that fails becomes a warning."""
-
-    def __init__(self, enabled: bool) -> None:
-        self.enabled = enabled
-
-    def __call__(self, section: Section, make: Callable[[], MatplotlibFigure], caption: str, filename: str) -> None:
-        if not self.enabled:
-            return
-        section.figures.append(Figure.from_matplotlib(make(), caption, filename))
 
 
 def wheel_description(drive: Any, name: str) -> str:
@@ -679,7 +669,8 @@ def generic_section(part: Part) -> Callable[[DriveAnalysis, _Figures], Section |
     return section
 
 
-def _section_function(part: Part) -> Callable[[DriveAnalysis, _Figures], Section | None]:
+def section_function(part: Part) -> Callable[[DriveAnalysis, _Figures], Section | None]:
+    """The report section function of an analysis part (its declared one, or the generic one)."""
     if part.section is None:
         return generic_section(part)
     import importlib
@@ -698,7 +689,7 @@ def report_sections() -> tuple[tuple[str, str, Callable[[DriveAnalysis, _Figures
         ("inputs", "Input data", inputs_section)]
     seen: set[Any] = set()
     for part in all_parts():
-        fn = _section_function(part)
+        fn = section_function(part)
         key = part.section if part.section is not None else part.name
         if key in seen:
             continue
@@ -708,11 +699,21 @@ def report_sections() -> tuple[tuple[str, str, Callable[[DriveAnalysis, _Figures
 
 
 def build_sections(analysis: DriveAnalysis, *, figures: bool = True,
-                   progress: Callable[[str, int, int], None] | None = None) -> tuple[list[Section], dict[str, float]]:
-    """The report sections of ``analysis`` (figures drawn when ``figures``), and their times [s]."""
+                   progress: Callable[[str, int, int], None] | None = None,
+                   parallel: bool = False) -> tuple[list[Section], dict[str, float]]:
+    """The report sections of ``analysis`` (figures drawn when ``figures``), and their times [s].
+
+    With ``parallel`` (and two processors and ``fork``), a forked helper process draws
+    part of the figures (:mod:`chaindrive.workflows._figures`); the sections are the same.
+    """
     import time
 
-    fig = _Figures(figures)
+    share = None
+    if figures and parallel and FigureShare.available():
+        import matplotlib.backends.backend_agg  # noqa: F401 - imported once, before the fork
+        import matplotlib.figure  # noqa: F401
+        share = FigureShare(lambda s: _helper_sections(analysis, s))
+    fig = _Figures(figures, share)
     out, timings = [], {}
     sections = report_sections()
     for i, (key, title, fn) in enumerate(sections):
@@ -723,7 +724,18 @@ def build_sections(analysis: DriveAnalysis, *, figures: bool = True,
         timings[key] = time.perf_counter() - t0
         if sec is not None:
             out.append(sec)
+    t0 = time.perf_counter()
+    fig.finish()
+    if share is not None:
+        timings["figures of the helper process"] = time.perf_counter() - t0
     return out, timings
+
+
+def _helper_sections(analysis: DriveAnalysis, share: FigureShare) -> None:
+    # in the forked helper: the same sections, drawing the figures it claims
+    fig = _Figures(True, share)
+    for _, _, fn in report_sections():
+        fn(analysis, fig)
 
 
 # --------------------------------------------------------------------------- conveyor
