@@ -194,9 +194,24 @@ def tension_for_sag(
     lo, hi = lo.astype(float).copy(), hi.astype(float).copy()
     span, rise, w = np.broadcast_arrays(span, *_catenary_parts(chord_length, inclination, 1.0, mass_per_length,
                                                                 gravity)[1:])
+    if lo.ndim == 0 and np.ndim(f) == 0 and span.ndim == 0:
+        return _bisect_scalar(lo[()], hi[()], span[()], rise[()], w[()], np.asarray(f)[()])
     for _ in range(100):
         mid = 0.5 * (lo + hi)
         too_slack = _catenary_sag(span, rise, w / np.exp(mid)) > f
         lo = np.where(too_slack, mid, lo)
         hi = np.where(too_slack, hi, mid)
+    return np.exp(0.5 * (lo + hi))
+
+
+def _bisect_scalar(lo, hi, span, rise, w, f):
+    # the bisection of tension_for_sag for one span on numpy float scalars: the same
+    # operations and ufuncs in the same order as on the 0-d arrays (so the same result,
+    # bit for bit), without the array overhead of np.where
+    for _ in range(100):
+        mid = 0.5 * (lo + hi)
+        if _catenary_sag(span, rise, w / np.exp(mid)) > f:
+            lo = mid
+        else:
+            hi = mid
     return np.exp(0.5 * (lo + hi))

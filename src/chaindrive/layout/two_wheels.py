@@ -220,10 +220,13 @@ def _cone_index(normals: np.ndarray, directions: np.ndarray) -> np.ndarray:
     return ((k.reshape(rows, -1) - n * np.arange(rows)[:, None]) % n).reshape(directions.shape)
 
 
-def _abs_cos_primitive(x: np.ndarray) -> np.ndarray:
-    """A primitive of ``|cos x|``: ``2m + (-1)^m sin x``, ``m = floor((x + π/2)/π)`` (continuous)."""
+def _abs_cos_primitive(x: np.ndarray, sin_x: np.ndarray | None = None) -> np.ndarray:
+    """A primitive of ``|cos x|``: ``2m + (-1)^m sin x``, ``m = floor((x + π/2)/π)`` (continuous);
+    ``sin_x``: ``np.sin(x)`` when the caller has it already."""
     m = np.floor((x + np.pi / 2) / np.pi)
-    return 2.0 * m + np.where(m % 2 == 0, 1.0, -1.0) * np.sin(x)
+    s = np.sin(x) if sin_x is None else sin_x
+    # (-1)^m sin x: m is a whole number, so m/2 and 2 floor(m/2) are exact (the same test as m % 2 == 0)
+    return 2.0 * m + np.where(np.floor(0.5 * m) * 2.0 == m, s, -s)
 
 
 def _hull_perimeters(vertices_1: np.ndarray, vertices_2: np.ndarray) -> np.ndarray:
@@ -261,8 +264,9 @@ def _hull_perimeters(vertices_1: np.ndarray, vertices_2: np.ndarray) -> np.ndarr
     w = vertices_2[np.arange(rows_2)[None, :, None], k2] - vertices_1[np.arange(rows_1)[:, None, None], k1]
     psi = np.arctan2(w[..., 1], w[..., 0])
     xs, xe = s - psi, e - psi
+    sin_e, sin_s = np.sin(xe), np.sin(xs)  # each sine once (the primitives reuse them)
     extra = 0.5 * np.hypot(w[..., 0], w[..., 1]) * (
-        (np.sin(xe) - np.sin(xs)) + _abs_cos_primitive(xe) - _abs_cos_primitive(xs))
+        (sin_e - sin_s) + _abs_cos_primitive(xe, sin_e) - _abs_cos_primitive(xs, sin_s))
     own = np.sum(np.hypot(*np.moveaxis(np.roll(vertices_1, -1, axis=-2) - vertices_1, -1, 0)), axis=-1)
     return own[:, None] + np.sum(extra, axis=-1)
 

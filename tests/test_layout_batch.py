@@ -1,0 +1,54 @@
+"""The scalar fast paths of the layout solvers give the array paths' results bit for bit."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from chaindrive.errors import InputError
+from chaindrive.layout import catenary_sag, tension_for_sag
+from chaindrive.layout.two_wheels import _abs_cos_primitive, _hull_perimeter, _polygon_links
+
+
+@settings(max_examples=60, deadline=None)
+@given(chord=st.floats(0.05, 20.0), incl=st.floats(-1.4, 1.4), ratio=st.floats(1e-4, 0.3),
+       q=st.floats(0.1, 100.0))
+def test_tension_for_sag_scalar_equals_array(chord, incl, ratio, q):
+    one = tension_for_sag(chord, incl, ratio * chord, q)
+    arr = tension_for_sag(np.array([chord, chord]), np.array([incl, incl]), np.array([ratio * chord] * 2), q)
+    assert isinstance(one, np.floating) and np.ndim(one) == 0
+    assert float(one) == float(arr[0]) == float(arr[1])
+    back = float(catenary_sag(chord, incl, float(one), q))
+    assert back == pytest.approx(ratio * chord, rel=1e-7)  # the bisection's own accuracy
+
+
+def test_tension_for_sag_scalar_refuses_bad_sag():
+    with pytest.raises(InputError, match="sag must be positive"):
+        tension_for_sag(2.0, 0.0, -0.01, 2.6)
+
+
+def test_abs_cos_primitive_with_given_sine_is_the_same():
+    x = np.linspace(-20.0, 20.0, 4001)
+    assert np.array_equal(_abs_cos_primitive(x), _abs_cos_primitive(x, np.sin(x)))
+    # reference: 2m + (-1)^m sin x with the parity from m % 2
+    m = np.floor((x + np.pi / 2) / np.pi)
+    assert np.array_equal(_abs_cos_primitive(x), 2.0 * m + np.where(m % 2 == 0, 1.0, -1.0) * np.sin(x))
+    # a primitive of |cos|: its derivative
+    h = 1e-6
+    assert np.allclose((_abs_cos_primitive(x + h) - _abs_cos_primitive(x - h)) / (2 * h), np.abs(np.cos(x)),
+                       atol=1e-6)
+
+
+@pytest.mark.parametrize("z1,z2,a,d", [(17, 57, 0.9, None), (25, 57, 1.2, None), (8, 8, 2.0, 0.018)])
+def test_polygon_links_equal_qhull(z1, z2, a, d):
+    from chaindrive.layout.two_wheels import _phase_vertices, _shifted
+
+    p = 0.0254 if d is None else 0.064
+    ph1, ph2, X = _polygon_links(p, z1, z2, a, d, 3)
+    v1, v2 = _phase_vertices(p, z1, ph1, d), _shifted(_phase_vertices(p, z2, ph2, d), a)
+    for i in range(3):
+        for j in range(3):
+            ref = _hull_perimeter(np.concatenate([v1[i], v2[j]])) / p
+            assert X[i, j] == pytest.approx(ref, rel=1e-12)
