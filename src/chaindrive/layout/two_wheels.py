@@ -200,12 +200,25 @@ def _hull_perimeter(points: np.ndarray) -> float:
     return float(np.sum(np.hypot(*(np.roll(v, -1, axis=0) - v).T)))
 
 
+def _next_vertices(vertices: np.ndarray) -> np.ndarray:
+    """Vertex ``k + 1`` in place of vertex ``k`` (``np.roll(vertices, -1, axis=-2)``, without its overhead)."""
+    return np.concatenate([vertices[..., 1:, :], vertices[..., :1, :]], axis=-2)
+
+
+def _mod_2pi(x: np.ndarray) -> np.ndarray:
+    """``np.mod(x, 2π)`` by the same steps (``fmod``, plus 2π where it is negative, +0 for a zero), a
+    third cheaper than numpy's floor-division remainder."""
+    r = np.fmod(x, 2 * np.pi)
+    r = np.where(r < 0, r + 2 * np.pi, r)
+    return np.where(r == 0, 0.0, r)
+
+
 def _edge_normal_angles(vertices: np.ndarray) -> np.ndarray:
     """Outward normal angles of the edges ``k -> k+1`` of counter-clockwise convex polygons.
 
     ``vertices`` (rows, n, 2) -> (rows, n), unwrapped so that they increase along a row.
     """
-    d = np.roll(vertices, -1, axis=-2) - vertices
+    d = _next_vertices(vertices) - vertices
     return np.unwrap(np.arctan2(-d[..., 0], d[..., 1]), axis=-1)
 
 
@@ -215,7 +228,7 @@ def _cone_index(normals: np.ndarray, directions: np.ndarray) -> np.ndarray:
     starts = np.concatenate([normals[:, -1:] - 2 * np.pi, normals[:, :-1]], axis=1)  # vertex k: from ν_{k-1}
     offsets = 2 * np.pi * np.arange(rows)
     flat = (starts - starts[:, :1] + offsets[:, None]).ravel()
-    q = np.mod(directions.reshape(rows, -1) - starts[:, :1], 2 * np.pi) + offsets[:, None]
+    q = _mod_2pi(directions.reshape(rows, -1) - starts[:, :1]) + offsets[:, None]
     k = np.searchsorted(flat, q.ravel(), side="right") - 1
     return ((k.reshape(rows, -1) - n * np.arange(rows)[:, None]) % n).reshape(directions.shape)
 
@@ -253,21 +266,26 @@ def _hull_perimeters(vertices_1: np.ndarray, vertices_2: np.ndarray) -> np.ndarr
     n1, n2 = vertices_1.shape[1], vertices_2.shape[1]
     normals_1 = _edge_normal_angles(vertices_1)
     normals_2 = _edge_normal_angles(vertices_2)
-    s = np.concatenate([np.broadcast_to(np.mod(normals_1, 2 * np.pi)[:, None, :], (rows_1, rows_2, n1)),
-                        np.broadcast_to(np.mod(normals_2, 2 * np.pi)[None, :, :], (rows_1, rows_2, n2))],
+    s = np.concatenate([np.broadcast_to(_mod_2pi(normals_1)[:, None, :], (rows_1, rows_2, n1)),
+                        np.broadcast_to(_mod_2pi(normals_2)[None, :, :], (rows_1, rows_2, n2))],
                        axis=-1)
     s.sort(axis=-1)
     e = np.concatenate([s[..., 1:], s[..., :1] + 2 * np.pi], axis=-1)
     mid = 0.5 * (s + e)
     k1 = _cone_index(normals_1, mid)
     k2 = np.swapaxes(_cone_index(normals_2, np.swapaxes(mid, 0, 1)), 0, 1)
-    w = vertices_2[np.arange(rows_2)[None, :, None], k2] - vertices_1[np.arange(rows_1)[:, None, None], k1]
-    psi = np.arctan2(w[..., 1], w[..., 0])
+    # w = v2[k2] - v1[k1], gathered from the flat x and y columns (the same values, faster than
+    # fancy indexing over the rows)
+    flat_2 = (k2 + (n2 * np.arange(rows_2))[None, :, None]).ravel()
+    flat_1 = (k1 + (n1 * np.arange(rows_1))[:, None, None]).ravel()
+    wx = (vertices_2[..., 0].ravel().take(flat_2) - vertices_1[..., 0].ravel().take(flat_1)).reshape(k1.shape)
+    wy = (vertices_2[..., 1].ravel().take(flat_2) - vertices_1[..., 1].ravel().take(flat_1)).reshape(k1.shape)
+    psi = np.arctan2(wy, wx)
     xs, xe = s - psi, e - psi
     sin_e, sin_s = np.sin(xe), np.sin(xs)  # each sine once (the primitives reuse them)
-    extra = 0.5 * np.hypot(w[..., 0], w[..., 1]) * (
+    extra = 0.5 * np.hypot(wx, wy) * (
         (sin_e - sin_s) + _abs_cos_primitive(xe, sin_e) - _abs_cos_primitive(xs, sin_s))
-    own = np.sum(np.hypot(*np.moveaxis(np.roll(vertices_1, -1, axis=-2) - vertices_1, -1, 0)), axis=-1)
+    own = np.sum(np.hypot(*np.moveaxis(_next_vertices(vertices_1) - vertices_1, -1, 0)), axis=-1)
     return own[:, None] + np.sum(extra, axis=-1)
 
 
