@@ -20,7 +20,8 @@ in-process rate of the same variants without dask. The study: the 16B roller dri
 ``examples/roller_industrial.toml``, Latin hypercube over speed 300...1500 rpm, power
 5...25 kW and skew 42...206 arcmin (Garshniev & Maksymovych's measured range); outputs contact
 stress, maximum chain force, wear life, verdict.
-Usage: ``python benchmarks/study.py [--variants N] [--million]``.
+Usage: ``python benchmarks/study.py [--variants N] [--million] [--per-core]`` (``--per-core``:
+only the three per-core figures).
 """
 
 from __future__ import annotations
@@ -152,9 +153,15 @@ def main() -> None:
     parser = argparse.ArgumentParser()
     parser.add_argument("--variants", type=int, default=1000)
     parser.add_argument("--million", action="store_true", help="also run the 1,000,000-variant Monte Carlo")
+    parser.add_argument("--per-core", action="store_true",
+                        help="only the three per-core figures (and the CPU time they took), no dask")
     args = parser.parse_args()
     print(f"machine: {os.cpu_count()} cores, load average {os.getloadavg()[0]:.1f}")
+    c0 = time.process_time()
     per_core_rates()
+    if args.per_core:
+        print(f"CPU time {time.process_time() - c0:.1f} s; load average now {os.getloadavg()[0]:.1f}")
+        return
     if args.million:
         million()
     study = parse_study(STUDY.format(samples=args.variants), filename="benchmark.toml",

@@ -52,3 +52,21 @@ def test_polygon_links_equal_qhull(z1, z2, a, d):
         for j in range(3):
             ref = _hull_perimeter(np.concatenate([v1[i], v2[j]])) / p
             assert X[i, j] == pytest.approx(ref, rel=1e-12)
+
+
+def test_grid_memo_returns_the_polygon_grid_and_stays_small():
+    from chaindrive.layout.two_wheels import _GRIDS, _grid_at
+
+    for a in (0.8, 0.9, 1.0, 1.1, 1.2, 0.8):
+        got = _grid_at(0.0254, 19, 57, a, None, 4)
+        ref = _polygon_links(0.0254, 19, 57, a, None, 4)
+        assert all(np.array_equal(x, y) for x, y in zip(got, ref, strict=True))
+        assert len(_GRIDS.grids) <= 4
+
+
+def test_centre_distance_polygon_fits_the_links_at_both_roots():
+    from chaindrive.layout import centre_distance_polygon
+
+    r = centre_distance_polygon(0.0254, 19, 57, 120, phases=6)
+    assert _polygon_links(0.0254, 19, 57, r.taut, None, 6)[2].max() == pytest.approx(120, abs=1e-8)
+    assert _polygon_links(0.0254, 19, 57, r.loose, None, 6)[2].min() == pytest.approx(120, abs=1e-8)

@@ -208,9 +208,15 @@ def _bisect_scalar(lo, hi, span, rise, w, f):
     # the bisection of tension_for_sag for one span on numpy float scalars: the same
     # operations and ufuncs in the same order as on the 0-d arrays (so the same result,
     # bit for bit), without the array overhead of np.where
+    # _catenary_sag's steps, with those that do not depend on the tension done once
+    half, m = span / 2, rise / span
+    asinh_m = np.arcsinh(m)
     for _ in range(100):
         mid = 0.5 * (lo + hi)
-        if _catenary_sag(span, rise, w / np.exp(mid)) > f:
+        k = w / np.exp(mid)
+        x0 = half - np.arcsinh(k * rise / (2 * np.sinh(k * span / 2))) / k
+        xs = x0 + asinh_m / k
+        if m * xs - (np.cosh(k * (xs - x0)) - np.cosh(k * x0)) / k > f:
             lo = mid
         else:
             hi = mid

@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import functools
 import math
+import threading
 from dataclasses import dataclass, replace
 
 import numpy as np
@@ -515,6 +516,25 @@ def _pair_links(p, z1, z2, a, d, f1, f2):
     return float(_hull_perimeters(v1, v2)[0, 0]) / p
 
 
+#: The phase grids :func:`_extreme_phase_root` evaluated last (the loose root starts where the
+#: taut one ended, at a grid already evaluated), per thread.
+_GRIDS = threading.local()
+
+
+def _grid_at(p, z1, z2, a, d, n):
+    # _polygon_links(p, z1, z2, a, d, n), the last few kept (read only by the root search)
+    grids = getattr(_GRIDS, "grids", None)
+    if grids is None:
+        grids = _GRIDS.grids = {}
+    key = (p, z1, z2, a, d, n)
+    found = grids.get(key)
+    if found is None:
+        if len(grids) >= 4:
+            grids.clear()
+        found = grids[key] = _polygon_links(p, z1, z2, a, d, n)
+    return found
+
+
 def _extreme_phase_root(pick, p, z1, z2, d, n, target, a0, r1, r2, lo, hi):
     """Root of max (``pick=np.argmax``) or min over the phase grid of X(a) = target.
 
@@ -525,7 +545,7 @@ def _extreme_phase_root(pick, p, z1, z2, d, n, target, a0, r1, r2, lo, hi):
     """
     a = a0
     for _ in range(20):
-        ph1, ph2, grid = _polygon_links(p, z1, z2, a, d, n)
+        ph1, ph2, grid = _grid_at(p, z1, z2, a, d, n)
         i, j = np.unravel_index(pick(grid), grid.shape)
         if abs(grid[i, j] - target) <= 1e-9 and a != a0:
             return a
