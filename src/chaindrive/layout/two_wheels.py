@@ -243,8 +243,11 @@ def _abs_cos_primitive(x: np.ndarray, sin_x: np.ndarray | None = None) -> np.nda
     return 2.0 * m + np.where(np.floor(0.5 * m) * 2.0 == m, s, -s)
 
 
-def _hull_perimeters(vertices_1: np.ndarray, vertices_2: np.ndarray) -> np.ndarray:
+def _hull_perimeters(vertices_1: np.ndarray, vertices_2: np.ndarray,
+                     first: tuple[np.ndarray, np.ndarray] | None = None) -> np.ndarray:
     r"""Perimeter of hull(P1[a] ∪ P2[b]) for every pair: (A, n1, 2), (B, n2, 2) -> (A, B) [m].
+
+    ``first``: ``_polygon_terms(vertices_1)`` when the caller has them already.
 
     Cauchy's formula: the perimeter of a convex set is the integral of its support
     function over the directions, :math:`\int_0^{2\pi} h\,d\varphi`, and the support
@@ -265,7 +268,7 @@ def _hull_perimeters(vertices_1: np.ndarray, vertices_2: np.ndarray) -> np.ndarr
     """
     rows_1, rows_2 = vertices_1.shape[0], vertices_2.shape[0]
     n1, n2 = vertices_1.shape[1], vertices_2.shape[1]
-    normals_1 = _edge_normal_angles(vertices_1)
+    normals_1, own = _polygon_terms(vertices_1) if first is None else first
     normals_2 = _edge_normal_angles(vertices_2)
     s = np.concatenate([np.broadcast_to(_mod_2pi(normals_1)[:, None, :], (rows_1, rows_2, n1)),
                         np.broadcast_to(_mod_2pi(normals_2)[None, :, :], (rows_1, rows_2, n2))],
@@ -286,8 +289,13 @@ def _hull_perimeters(vertices_1: np.ndarray, vertices_2: np.ndarray) -> np.ndarr
     sin_e, sin_s = np.sin(xe), np.sin(xs)  # each sine once (the primitives reuse them)
     extra = 0.5 * np.hypot(wx, wy) * (
         (sin_e - sin_s) + _abs_cos_primitive(xe, sin_e) - _abs_cos_primitive(xs, sin_s))
-    own = np.sum(np.hypot(*np.moveaxis(_next_vertices(vertices_1) - vertices_1, -1, 0)), axis=-1)
     return own[:, None] + np.sum(extra, axis=-1)
+
+
+def _polygon_terms(vertices: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """What :func:`_hull_perimeters` needs of its first polygons alone: edge normal angles and perimeters."""
+    own = np.sum(np.hypot(*np.moveaxis(_next_vertices(vertices) - vertices, -1, 0)), axis=-1)
+    return _edge_normal_angles(vertices), own
 
 
 @dataclass(frozen=True)
@@ -323,14 +331,32 @@ def _polygon_links(p, z1, z2, a, d, n):
     ph1 = np.arange(n) * (2 * np.pi / z1) / n
     ph2 = np.arange(n) * (2 * np.pi / z2) / n
     v1, v2 = _phase_vertices(p, z1, ph1, d), _phase_vertices(p, z2, ph2, d)
-    return ph1, ph2, _hull_perimeters(v1, _shifted(v2, a)) / p
+    return ph1, ph2, _hull_perimeters(v1, _shifted(v2, a), _first_terms(p, z1, ph1, d)) / p
+
+
+def _first_terms(p, z, phases, d):
+    # _polygon_terms(_phase_vertices(p, z, phases, d)), cached with the vertices
+    key = ("terms", *_vertex_key(p, z, phases, d))
+    found = _VERTEX_CACHE.get(key)
+    if found is None:
+        found = _polygon_terms(_phase_vertices(p, z, phases, d))
+        for x in found:
+            x.flags.writeable = False
+        if len(_VERTEX_CACHE) > 256:
+            _VERTEX_CACHE.clear()
+        _VERTEX_CACHE[key] = found
+    return found
+
+
+def _vertex_key(p, z, phases, d):
+    return (float(p), int(z), np.asarray(phases, dtype=float).ravel().tobytes(), None if not d else float(d))
 
 
 def _phase_vertices(p, z, phases, d):
     # the pitch polygons of a wheel at the origin for each phase, (phases, n, 2); cached
     # because the root searches ask for the same wheels at many centre distances
     phases = np.asarray(phases, dtype=float).ravel()
-    key = (float(p), int(z), phases.tobytes(), None if not d else float(d))
+    key = _vertex_key(p, z, phases, d)
     found = _VERTEX_CACHE.get(key)
     if found is None:
         # pitch_polygon_vertices for every phase at once (the same operations)
@@ -338,7 +364,7 @@ def _phase_vertices(p, z, phases, d):
         theta = phases[:, None] + offsets[None, :]
         found = np.stack([0.0 + R * np.cos(theta), 0.0 + R * np.sin(theta)], axis=-1)
         found.flags.writeable = False
-        if len(_VERTEX_CACHE) > 64:
+        if len(_VERTEX_CACHE) > 256:
             _VERTEX_CACHE.clear()
         _VERTEX_CACHE[key] = found
     return found
@@ -513,7 +539,7 @@ def _newton_fixed_slope(fun, target, a0, r1, r2, p, lo, hi):
 def _pair_links(p, z1, z2, a, d, f1, f2):
     v1 = _phase_vertices(p, z1, (f1,), d)
     v2 = _shifted(_phase_vertices(p, z2, (f2,), d), a)
-    return float(_hull_perimeters(v1, v2)[0, 0]) / p
+    return float(_hull_perimeters(v1, v2, _first_terms(p, z1, (f1,), d))[0, 0]) / p
 
 
 #: The phase grids :func:`_extreme_phase_root` evaluated last (the loose root starts where the
