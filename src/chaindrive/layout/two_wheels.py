@@ -465,14 +465,20 @@ def chain_length_polygon(
 
 
 @functools.lru_cache(maxsize=256)
+def _radius(p: float, z: int, bar_diameter: float | None) -> float:
+    # float(pitch_radius(p, z, bar_diameter)) on checked scalars, kept
+    return float(pitch_radius(p, z, bar_diameter))
+
+
+@functools.lru_cache(maxsize=256)
 def _chain_length_polygon(p: float, z1: int, z2: int, a: float, bar_diameter: float | None,
                           phases: int) -> PolygonLength:
     # chain_length_polygon on checked scalars; cached because it depends on them only and
     # an analysis asks for the same pair of wheels again (the results are plain numbers)
     ph1, ph2, X = _polygon_links(p, z1, z2, a, bar_diameter, phases)
-    circles = float(chain_length_circles(p, z1, z2, a, bar_diameter)) if a > abs(
-        float(pitch_radius(p, z2, bar_diameter)) - float(pitch_radius(p, z1, bar_diameter))
-    ) else float("nan")
+    r1, r2 = _radius(p, z1, bar_diameter), _radius(p, z2, bar_diameter)
+    # chain_length_circles(p, z1, z2, a, bar_diameter) on the checked inputs (a > |R2 - R1|)
+    circles = float(_belt_length(a, r1, r2) / p) if a > abs(r2 - r1) else float("nan")
     approx = None if bar_diameter else float(chain_length_approx(p, z1, z2, a))
     return PolygonLength(
         links_min=float(X.min()), links_max=float(X.max()), links_mean=float(X.mean()),
@@ -657,8 +663,7 @@ def centre_distance_polygon(
 def _centre_distance_polygon(p: float, z1: int, z2: int, N: int, bar_diameter: float | None,
                              n: int) -> PolygonCentreDistance:
     # centre_distance_polygon on checked scalars; cached (a frozen result of plain numbers)
-    r1 = float(pitch_radius(p, z1, bar_diameter))
-    r2 = float(pitch_radius(p, z2, bar_diameter))
+    r1, r2 = _radius(p, z1, bar_diameter), _radius(p, z2, bar_diameter)
     lo = abs(r2 - r1) + 1e-6 * p
     hi = max(N * p / 2.0, 2 * lo)
 
