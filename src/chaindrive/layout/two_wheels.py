@@ -223,15 +223,24 @@ def _edge_normal_angles(vertices: np.ndarray) -> np.ndarray:
     return np.unwrap(np.arctan2(-d[..., 0], d[..., 1]), axis=-1)
 
 
-def _cone_index(normals: np.ndarray, directions: np.ndarray) -> np.ndarray:
-    """Vertex whose normal cone holds each direction: ``normals`` (rows, n), ``directions`` (rows, ...)."""
+def _cone_index(normals: np.ndarray, directions: np.ndarray,
+                table: tuple[np.ndarray, np.ndarray, np.ndarray] | None = None) -> np.ndarray:
+    """Vertex whose normal cone holds each direction: ``normals`` (rows, n), ``directions`` (rows, ...);
+    ``table``: ``_cone_table(normals)`` when the caller has it already."""
     rows, n = normals.shape
+    first, offsets, flat = _cone_table(normals) if table is None else table
+    q = _mod_2pi(directions.reshape(rows, -1) - first) + offsets[:, None]
+    k = np.searchsorted(flat, q.ravel(), side="right") - 1
+    return ((k.reshape(rows, -1) - n * np.arange(rows)[:, None]) % n).reshape(directions.shape)
+
+
+def _cone_table(normals: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """The cone starts of every row laid end to end (rows 2π apart), for :func:`_cone_index`."""
+    rows = normals.shape[0]
     starts = np.concatenate([normals[:, -1:] - 2 * np.pi, normals[:, :-1]], axis=1)  # vertex k: from ν_{k-1}
     offsets = 2 * np.pi * np.arange(rows)
     flat = (starts - starts[:, :1] + offsets[:, None]).ravel()
-    q = _mod_2pi(directions.reshape(rows, -1) - starts[:, :1]) + offsets[:, None]
-    k = np.searchsorted(flat, q.ravel(), side="right") - 1
-    return ((k.reshape(rows, -1) - n * np.arange(rows)[:, None]) % n).reshape(directions.shape)
+    return starts[:, :1], offsets, flat
 
 
 def _abs_cos_primitive(x: np.ndarray, sin_x: np.ndarray | None = None) -> np.ndarray:
@@ -244,7 +253,7 @@ def _abs_cos_primitive(x: np.ndarray, sin_x: np.ndarray | None = None) -> np.nda
 
 
 def _hull_perimeters(vertices_1: np.ndarray, vertices_2: np.ndarray,
-                     first: tuple[np.ndarray, np.ndarray] | None = None) -> np.ndarray:
+                     first: tuple | None = None) -> np.ndarray:
     r"""Perimeter of hull(P1[a] ∪ P2[b]) for every pair: (A, n1, 2), (B, n2, 2) -> (A, B) [m].
 
     ``first``: ``_polygon_terms(vertices_1)`` when the caller has them already.
@@ -268,15 +277,15 @@ def _hull_perimeters(vertices_1: np.ndarray, vertices_2: np.ndarray,
     """
     rows_1, rows_2 = vertices_1.shape[0], vertices_2.shape[0]
     n1, n2 = vertices_1.shape[1], vertices_2.shape[1]
-    normals_1, own = _polygon_terms(vertices_1) if first is None else first
+    normals_1, own, mod_1, table_1 = _polygon_terms(vertices_1) if first is None else first
     normals_2 = _edge_normal_angles(vertices_2)
-    s = np.concatenate([np.broadcast_to(_mod_2pi(normals_1)[:, None, :], (rows_1, rows_2, n1)),
+    s = np.concatenate([np.broadcast_to(mod_1[:, None, :], (rows_1, rows_2, n1)),
                         np.broadcast_to(_mod_2pi(normals_2)[None, :, :], (rows_1, rows_2, n2))],
                        axis=-1)
     s.sort(axis=-1)
     e = np.concatenate([s[..., 1:], s[..., :1] + 2 * np.pi], axis=-1)
     mid = 0.5 * (s + e)
-    k1 = _cone_index(normals_1, mid)
+    k1 = _cone_index(normals_1, mid, table_1)
     k2 = np.swapaxes(_cone_index(normals_2, np.swapaxes(mid, 0, 1)), 0, 1)
     # w = v2[k2] - v1[k1], gathered from the flat x and y columns (the same values, faster than
     # fancy indexing over the rows)
@@ -292,10 +301,12 @@ def _hull_perimeters(vertices_1: np.ndarray, vertices_2: np.ndarray,
     return own[:, None] + np.sum(extra, axis=-1)
 
 
-def _polygon_terms(vertices: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """What :func:`_hull_perimeters` needs of its first polygons alone: edge normal angles and perimeters."""
+def _polygon_terms(vertices: np.ndarray) -> tuple:
+    """What :func:`_hull_perimeters` needs of its first polygons alone: edge normal angles,
+    perimeters, the angles in [0, 2π) and their cone table."""
     own = np.sum(np.hypot(*np.moveaxis(_next_vertices(vertices) - vertices, -1, 0)), axis=-1)
-    return _edge_normal_angles(vertices), own
+    normals = _edge_normal_angles(vertices)
+    return normals, own, _mod_2pi(normals), _cone_table(normals)
 
 
 @dataclass(frozen=True)
@@ -340,7 +351,7 @@ def _first_terms(p, z, phases, d):
     found = _VERTEX_CACHE.get(key)
     if found is None:
         found = _polygon_terms(_phase_vertices(p, z, phases, d))
-        for x in found:
+        for x in (*found[:3], *found[3]):
             x.flags.writeable = False
         if len(_VERTEX_CACHE) > 256:
             _VERTEX_CACHE.clear()
