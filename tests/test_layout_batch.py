@@ -10,6 +10,7 @@ from hypothesis import strategies as st
 from chaindrive.errors import InputError
 from chaindrive.layout import catenary_sag, tension_for_sag
 from chaindrive.layout.two_wheels import _abs_cos_primitive, _hull_perimeter, _polygon_links
+from test_batch_parts import _equal_to_analyze_drive, _roller
 
 
 @settings(max_examples=60, deadline=None)
@@ -70,3 +71,20 @@ def test_centre_distance_polygon_fits_the_links_at_both_roots():
     r = centre_distance_polygon(0.0254, 19, 57, 120, phases=6)
     assert _polygon_links(0.0254, 19, 57, r.taut, None, 6)[2].max() == pytest.approx(120, abs=1e-8)
     assert _polygon_links(0.0254, 19, 57, r.loose, None, 6)[2].min() == pytest.approx(120, abs=1e-8)
+
+
+@settings(max_examples=4, deadline=None)
+@given(st.lists(st.tuples(st.integers(17, 25), st.floats(0.9, 1.2), st.floats(0.0, 0.06)), min_size=2, max_size=4))
+def test_varying_geometry_variants_equal_analyze_drive(variants):
+    # the study benchmark's varying geometry: teeth, centre distance and skew; every layout
+    # solved per variant by the solvers above, equal to the analysis of each variant's drive
+    changes = [{("wheels", 0, "teeth"): z, ("wheels", 1, "position"): (a, 0.0), ("contact", "skew"): s}
+               for z, a, s in variants]
+    _equal_to_analyze_drive(_roller(), changes)
+
+
+def test_varying_geometry_errors_are_each_variants_own():
+    # a centre distance inside the larger wheel: that variant's own error, the others' results
+    changes = [{("wheels", 0, "teeth"): 19, ("wheels", 1, "position"): (a, 0.0)} for a in (1.0, 0.05, 1.1)]
+    out = _equal_to_analyze_drive(_roller(), changes, include=["layout", "loads"])
+    assert isinstance(out[1], Exception) and not isinstance(out[0], Exception)
