@@ -532,14 +532,14 @@ def scaling(lengths=(100, 500, 1000, 2000, 5000), link_steps=1.5e8):
 def pick_converged(rows, ref=None):
     """The largest step whose run is converged against its halved step and (``ref``) within
     ``TOL_REF`` of the reference in mean speed and mean tight-side tension; else the
-    finest converged one, else the finest. Returns (row, converged, within the reference)."""
+    largest converged one, else the finest. Returns (row, converged, within the reference)."""
     converged(rows)
     conv = [x for x in rows if x.get("conv")]
     for x in conv:
         if ref is None or (abs(_rel(x, ref, "v_mean")) <= TOL_REF
                            and abs(_rel(x, ref, "tight_mean")) <= TOL_REF):
             return x, True, True
-    return (conv[-1], True, False) if conv else (rows[-1], False, False)
+    return (conv[0], True, False) if conv else (rows[-1], False, False)
 
 
 def main():
@@ -595,6 +595,8 @@ def main():
                 if res is not None:
                     base = res
                     break
+            # each ladder stops at its first step converged against its half (the finer
+            # steps would not change the pick; --quick: at most one halving)
             if base is not None:
                 stiff_rows.append(base)
                 for f in ((2,) if args.quick else (2, 4)):
@@ -603,12 +605,16 @@ def main():
                     if res is None:
                         break
                     stiff_rows.append(res)
+                    if converged(stiff_rows) is not None:
+                        break
             for dt in RIGID_LADDER:
                 res = run_mujoco(model, state, args.duration, dt, probe, tight_mid, rigid=True)
                 print(f"  mujoco rigid links dt = {dt:g} s: "
                       f"{'ran' if res is not None else 'failed'}", flush=True)
                 if res is not None:
                     rigid_rows.append(res)
+                    if len(rigid_rows) > 1 and converged(rigid_rows) is not None:
+                        break
             mujoco.set_mju_user_warning(previous)
     print(f"\n16B chain, {model.links} links, 2 x z = 17, centre distance "
           f"{state.wp[1, K.W_CX]:.4f} m, {args.duration:g} s simulated, steady window "

@@ -1,7 +1,8 @@
 """Design studies: batched evaluation per core, then on dask with 1 and with 2 workers.
 
 First, in one process and one thread, the variants per second of CPU time of
-(a) batched evaluation with fixed geometry (the skew Monte Carlo of
+(a) batched evaluation (what a dask task does with its batch:
+:func:`~chaindrive.study.batch.evaluate_columns`, 5,000 variants a call) with fixed geometry (the skew Monte Carlo of
 ``examples/skew_study.toml``: skew and wear factor vary), (b) batched evaluation with
 varying geometry (driving teeth 17...25 and centre distance 0.9...1.2 m vary with the
 skew, so every variant needs its own layout), (c) the per-variant loop
@@ -19,7 +20,7 @@ in-process rate of the same variants without dask. The study: the 16B roller dri
 ``examples/roller_industrial.toml``, Latin hypercube over speed 300...1500 rpm, power
 5...25 kW and skew 42...206 arcmin (Garshniev & Maksymovych's measured range); outputs contact
 stress, maximum chain force, wear life, verdict.
-Usage: ``python benchmarks/study.py [--variants N]``.
+Usage: ``python benchmarks/study.py [--variants N] [--million]``.
 """
 
 from __future__ import annotations
@@ -92,13 +93,13 @@ high = 206
 
 
 def _per_core(study, count: int, batched: bool) -> float:
-    from chaindrive.study.batch import evaluate_batch
+    from chaindrive.study.batch import evaluate_columns
 
     variants = [study.variant_inputs(r) for r in study.rows()[:count]]
     c0 = time.process_time()
-    if batched:
+    if batched:  # what a dask task does with its batch (run_batch_columns)
         for i in range(0, len(variants), 5000):
-            evaluate_batch(study.base, variants[i:i + 5000], study.outputs, parts=study.parts)
+            evaluate_columns(study.base, variants[i:i + 5000], study.outputs, parts=study.parts)
     else:
         for v in variants:
             evaluate_variant(study.base, v, study.outputs, parts=study.parts)
@@ -123,15 +124,28 @@ def per_core_rates() -> None:
 
 
 def million() -> None:
-    """The 1,000,000-variant skew Monte Carlo through run_study on the local cluster."""
+    """The 1,000,000-variant skew Monte Carlo through run_study on the local cluster (one
+    worker per core): wall time, the main process' CPU time (planning, keys, Parquet) and
+    the workers' CPU time inside the variants (from the rows), with the load."""
+    import resource
+
     text = (ROOT / "examples" / "skew_study.toml").read_text().replace("samples = 400", "samples = 1000000")
     study = parse_study(text, filename="skew_study.toml", folder=ROOT / "examples")
+    load0 = os.getloadavg()[0]
     with tempfile.TemporaryDirectory() as tmp:
-        t0 = time.perf_counter()
+        t0, c0 = time.perf_counter(), time.process_time()
         run = run_study(study, Path(tmp) / "out", progress=False)
-        wall = time.perf_counter() - t0
+        wall, main_cpu = time.perf_counter() - t0, time.process_time() - c0
+        table = read_results(Path(tmp) / "out")
+        workers_cpu = sum(table.column("cpu_seconds").to_pylist())
+        rows = table.num_rows
+    children = resource.getrusage(resource.RUSAGE_CHILDREN)
     print(f"1,000,000-variant skew Monte Carlo: {wall:.0f} s wall on {run.workers} workers "
-          f"({run.computed} computed, {run.failed} failed; aim < 180 s)")
+          f"({run.computed} computed, {run.failed} failed, {rows} rows read back; aim < 180 s); "
+          f"compute {run.compute_seconds:.0f} s; CPU: main process {main_cpu:.0f} s, workers inside "
+          f"the variants {workers_cpu:.0f} s ({run.computed / max(workers_cpu, 1e-9):.0f} variants/s per "
+          f"core), reaped children {children.ru_utime + children.ru_stime:.0f} s; load average "
+          f"{load0:.1f} before, {os.getloadavg()[0]:.1f} after")
 
 
 def main() -> None:

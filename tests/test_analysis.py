@@ -43,9 +43,21 @@ def _leaves(x, path=""):
 #: its unequal links z1 ω1/2 came in). The roller-bushing limit of a B-series chain (issue
 #: 19): rated by its family's method, ISO 10823, whose B-series roller constant is 22.9, not
 #: the ANSI 17 (docs/rating.md); the rated power (link plate) is unchanged.
-MOVED = ("safety.checks", "Span vibration and resonance check.tensioner.check",
+#: The dynamic load (issue 19): a roller chain's dynamic tension is the spring-mass model's, so the
+#: roller example's dynamic load, F_max, dynamic factor, moving mass and static safety moved
+#: (docs/design.md, "The dynamic load and the simulation").
+MOVED = ("safety.checks", "Loads and safety.tensions.dynamic", "Loads and safety.tensions.maximum",
+         "Loads and safety.tensions.moving_mass", "Loads and safety.safety.static_safety",
+         "Span vibration and resonance check.tensioner.check",
          "Span vibration and resonance check.check", "Span vibration and resonance check.tensioner.campbell",
-         "Span vibration and resonance check.free_spans.check", "Loads and safety.rating.roller_bushing")
+         "Span vibration and resonance check.free_spans.check", "Loads and safety.rating.roller_bushing",
+         # the B-series link-plate constant 0.00434 (docs/rating.md, "ISO 10823"): the 16B-1 rating of
+         # roller_industrial and the wear life that scales with it rise by 0.00434/0.004
+         "Loads and safety.rating.link_plate", "Loads and safety.rating.rated_power",
+         "Loads and safety.safety.rated_power", "Wear life.life.hours",
+         # the required static safety of roller chains 7 -> 6 (Diamond Chain's 1/6 rule on F_max,
+         # docs/design.md "One static safety"); the roller example's project file states it
+         "Input data.inputs.required_static_safety", "Loads and safety.safety.required_static_safety")
 
 
 @pytest.mark.parametrize("name", NAMES)

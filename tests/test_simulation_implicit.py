@@ -164,3 +164,27 @@ def test_implicit_round_link_chain_mean_speed():
     sel = r.time >= r.time[-1] - 3 * period
     assert float(np.mean(r.chain_velocity[sel, 0])) == pytest.approx(2 * t * z * omega / (2 * np.pi),
                                                                      rel=0.005)
+
+
+def test_step_for_accuracy_returns_a_step_that_holds_against_its_half():
+    from chaindrive.simulation.run import step_for_accuracy
+
+    m = roller_example(links=30, teeth=11, angular_velocity=5.0, load_torque=20.0, ramp_time=0.005,
+                       gravity=False)
+    st = assemble(m)
+    dt = step_for_accuracy(m, 0.03, state=st, tolerance=0.01)
+    a = simulate(m, 0.03, state=st, dt=dt, method="implicit", samples=400).summary
+    b = simulate(m, 0.03, state=st, dt=dt / 2, method="implicit", samples=400).summary
+    assert a["tight_side_tension_mean"] == pytest.approx(b["tight_side_tension_mean"], rel=0.01)
+    assert a["chain_velocity_mean"][0] == pytest.approx(b["chain_velocity_mean"][0], rel=0.01)
+
+
+def test_step_for_accuracy_errors():
+    from chaindrive.errors import ConvergenceError
+    from chaindrive.simulation.run import step_for_accuracy
+
+    m = roller_example(links=30, teeth=11, angular_velocity=5.0, ramp_time=0.005)
+    with pytest.raises(InputError, match="tolerance must be in"):
+        step_for_accuracy(m, 0.01, tolerance=0.0)
+    with pytest.raises(ConvergenceError, match="no step from"):
+        step_for_accuracy(m, 0.01, tolerance=1e-12, max_halvings=1)

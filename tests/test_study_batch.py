@@ -17,7 +17,7 @@ from chaindrive.analysis.batch import analyze_variants, replace_path, replace_pa
 from chaindrive.drive.project import load_project
 from chaindrive.errors import InputError
 from chaindrive.study.batch import evaluate_batch, probe_path
-from chaindrive.study.run import evaluate_variant, run_batch
+from chaindrive.study.run import evaluate_variant, run_batch, run_batch_columns
 from chaindrive.study.spec import parse_study
 
 EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
@@ -115,6 +115,31 @@ def test_the_skew_path_is_probed_as_linear():
     leaf, factor = probe_path(study.base, v, "contact.skew")
     assert leaf == ("contact", "skew") and factor == pytest.approx(math.pi / 180 / 60, rel=1e-12)
     assert probe_path(study.base, {**v, "wheels.0.teeth": 21}, "wheels.0.teeth") is None  # a count
+    # one number of a wheel's position (a tuple): that item is the leaf
+    leaf, factor = probe_path(study.base, {**v, "wheels.1.position.0": "1000 mm"}, "wheels.1.position.0")
+    assert leaf == ("wheels", 1, "position", 0) and factor == pytest.approx(1e-3, rel=1e-12)
+
+
+def test_varying_centre_distance_batched_equals_per_variant():
+    # the position is set directly in the variants' drives; each group (one per number of
+    # teeth) is analysed from one project read
+    vary = """
+[[vary]]
+path = "wheels.0.teeth"
+values = [19, 21]
+[[vary]]
+path = "wheels.1.position.0"
+unit = "mm"
+low = 900
+high = 1200
+count = 4
+[[vary]]
+path = "contact.skew"
+unit = "arcmin"
+values = [50, 150]
+"""
+    text = STUDY.format(vary=vary).replace('kind = "latin_hypercube"\nsamples = 12\nseed = 5', 'kind = "grid"')
+    _compare(parse_study(text, filename="s.toml", folder=EXAMPLES), 16)
 
 
 def test_run_batch_carries_batches():
@@ -123,6 +148,9 @@ def test_run_batch_carries_batches():
     batch = [(i, f"k{i}", study.variant_inputs(r)) for i, r in enumerate(study.rows()[:5])]
     rows = run_batch(batch, base=study.base, outputs=study.outputs, parts=study.parts)
     assert [r["variant"] for r in rows] == list(range(5)) and [r["key"] for r in rows] == [f"k{i}" for i in range(5)]
+    columns = run_batch_columns(batch, base=study.base, outputs=study.outputs, parts=study.parts)
+    for name in [*study.outputs, "error", "warnings", "key", "variant", "worker"]:
+        assert columns[name] == [r[name] for r in rows], name
 
 
 @pytest.mark.slow
@@ -162,3 +190,35 @@ def test_batch_errors():
     assert isinstance(out[0], InputError) and out[1].passed
     with pytest.raises(InputError):
         analyze_variants(drive, [{("load", "power"): -1.0}])
+
+
+def test_variant_key_is_the_canonical_hash():
+    from chaindrive.study.spec import canonical_hash
+
+    text = (EXAMPLES / "skew_study.toml").read_text()
+    study = parse_study(text, filename="skew_study.toml", folder=EXAMPLES)
+    for inputs in [study.variant_inputs(r) for r in study.rows()[:3]] + [{"wheels.0.teeth": 19, "x": "ü \"q\""}]:
+        assert study.key(inputs) == canonical_hash({"base": study.base_hash, "inputs": inputs,
+                                                    "outputs": list(study.outputs), "simulation": None})
+
+
+def test_values_the_project_loader_refuses_give_its_message():
+    # negative skews are refused by the project file's reader: their rows carry its message
+    # (the batch sets numbers directly only where the reader takes the smallest and the
+    # largest of them; else the variants' projects are read)
+    vary = """
+[[vary]]
+path = "contact.skew"
+unit = "arcmin"
+low = -40
+high = 100
+[[vary]]
+path = "contact.wear_factor"
+low = 0.6
+high = 0.7
+"""
+    study = parse_study(STUDY.format(vary=vary), filename="s.toml", folder=EXAMPLES)
+    variants = [study.variant_inputs(r) for r in study.rows()]
+    rows = evaluate_batch(study.base, variants, study.outputs, parts=study.parts)
+    assert any(r["error"] for r in rows) and any(r["error"] is None for r in rows)
+    _compare(study, 12)

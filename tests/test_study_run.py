@@ -210,12 +210,11 @@ def test_lost_batch_is_computed_again(study_file, tmp_path):
     keys = [study.key(study.variant_inputs(r)) for r in rows]
     values = dict(zip(keys, rows, strict=True))
     writer = _PartWriter(tmp_path, study)
-    writer.write([{"key": k, "variant": i, "error": f"{CLUSTER_FAILURE}: KilledWorker"}
-                  for i, k in enumerate(keys)], values)
+    writer.write({"key": keys, "variant": [0, 1], "error": [f"{CLUSTER_FAILURE}: KilledWorker"] * 2}, values)
     assert existing_keys(tmp_path) == set()
     time.sleep(0.01)  # part names carry the microsecond: the retry's part sorts after
     retry = _PartWriter(tmp_path, study)
-    retry.write([{"key": keys[0], "variant": 0, "contact.stress": 1.0e8, "error": None}], values)
+    retry.write({"key": keys[:1], "variant": [0], "contact.stress": [1.0e8], "error": [None]}, values)
     assert existing_keys(tmp_path) == {keys[0]}
     table = read_results(tmp_path)
     assert table.num_rows == 2
@@ -227,7 +226,7 @@ def test_lost_batch_is_computed_again(study_file, tmp_path):
 def test_drive_family_with_named_chains(tmp_path):
     # a family over catalogue chains (text values) and tooth counts: text and whole-number
     # input columns; evaluated in this process, written by the part writer
-    from chaindrive.study.run import _PartWriter, run_batch
+    from chaindrive.study.run import _PartWriter, run_batch_columns
     from chaindrive.study.spec import parse_study
 
     study = parse_study(f"""
@@ -243,7 +242,7 @@ values = [17, 21]
 """, filename="family.toml")
     rows = study.rows()
     batch = [(i, study.key(study.variant_inputs(r)), study.variant_inputs(r)) for i, r in enumerate(rows)]
-    out = run_batch(batch, base=study.base, outputs=study.outputs, parts=study.parts)
+    out = run_batch_columns(batch, base=study.base, outputs=study.outputs, parts=study.parts)
     _PartWriter(tmp_path, study).write(out, {k: r for (_, k, _), r in zip(batch, rows, strict=True)})
     table = read_results(tmp_path)
     assert table.schema.field("chain.name").type == pa.string()

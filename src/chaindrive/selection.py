@@ -233,7 +233,7 @@ def select(power: float, speed: float, ratio: float, *, service_factor: float = 
     --------
     >>> rows = select(7.5e3, 1450 * math.pi / 30, 3.0)
     >>> [(c.chain, c.strands, round(c.power_margin, 2)) for c in rows][:3]
-    [('10B-1', 1, 1.48), ('10A-1', 1, 1.47), ('08B-2', 2, 1.29)]
+    [('10B-1', 1, 1.61), ('10A-1', 1, 1.47), ('08B-2', 2, 1.4)]
     >>> rows[1].names, rows[1].links, rows[1].lubrication
     (('10A-1', 'ANSI 50-1'), 116, 'B')
     """

@@ -58,8 +58,8 @@ def _recording_getattribute(self: Any, name: str) -> Any:
     return object.__getattribute__(self, name)
 
 
-def _recording(drive: Drive) -> Drive:
-    """``drive`` as an instance of a subclass that records the fields read (while a
+def _recording(drive: Any) -> Any:
+    """``drive`` (any dataclass instance) as an instance of a subclass that records the fields read (while a
     recording set is active)."""
     cls = type(drive)
     sub = _RECORDING_CLASSES.get(cls)
@@ -174,7 +174,7 @@ def analyze_variants(drive: Drive, changes: Sequence[Mapping[FieldPath, Any]], *
     InputError
         Bad arguments, or (``errors="raise"``) a variant's drive is invalid.
     """
-    from . import DriveAnalysis, _parts
+    from . import _parts
 
     if not isinstance(drive, Drive):
         raise InputError(f"drive must be a chaindrive.drive.Drive, got {type(drive).__name__}", field="drive")
@@ -212,37 +212,230 @@ def analyze_variants(drive: Drive, changes: Sequence[Mapping[FieldPath, Any]], *
     # 2. the variants' drives; then each affected part for all of them (vectorised where
     # the part declares it), then their checks
     n = len(changes)
-    drives: list[Drive | None] = [None] * n
     failures: list[BaseException | None] = [None] * n
-    for i, change in enumerate(changes):
-        try:
-            drives[i] = replace_paths(drive, {tuple(p): v for p, v in change.items()}) if change else drive
-        except Exception as exc:
-            if errors == "raise":
-                raise
-            failures[i] = exc
+    drives = _variant_drives(drive, changes, failures, errors)
     computed_v = [dict(shared) for _ in range(n)]
     for part in plan:
         if part.name in shared:
             continue
         live = [i for i in range(n) if failures[i] is None]
         _compute_for_variants(part, live, drives, computed_v, failures, options, errors)
-    for i in range(n):
-        if failures[i] is not None:
-            out.append(failures[i])
-            continue
-        try:
-            results, checks, notes = compute_parts(drives[i], parts, options, computed=computed_v[i],  # type: ignore[arg-type]
-                                                   shared_checks=shared_checks)
-            out.append(DriveAnalysis(drive=drives[i], results=results, checks=tuple(checks),  # type: ignore[arg-type]
-                                     warnings=tuple(dict.fromkeys(notes)), parts=parts))
-        except Exception as exc:
-            if errors == "raise":
-                raise
-            out.append(exc)
+    _assemble(out, plan, parts, drives, computed_v, failures, shared, shared_checks, options, errors)
     return out
 
 
+def _variant_drives(drive: Drive, changes: Sequence[Mapping[FieldPath, Any]], failures: list[BaseException | None],
+                    errors: str) -> list[Drive | None]:
+    """The variants' drives, as :func:`replace_paths` builds them; variants that change
+    the same paths as the first rebuild the objects along those paths from keyword
+    arguments read once (the same constructor calls, so the same validation)."""
+    n = len(changes)
+    drives: list[Drive | None] = [None] * n
+    plans: dict[tuple[FieldPath, ...], Any] = {}
+    for i, change in enumerate(changes):
+        try:
+            if not change:
+                drives[i] = drive
+                continue
+            paths = tuple(tuple(p) for p in change)
+            if paths not in plans or plans[paths] is None:  # the first variant of these paths: the checked way
+                drives[i] = replace_paths(drive, dict(zip(paths, change.values(), strict=True)))
+                if paths not in plans:
+                    plans[paths] = _shell(drive, _rebuild_plan(drive, paths))
+                continue
+            drives[i] = _rebuild(plans[paths], iter(change.values()))
+        except Exception as exc:
+            if errors == "raise":
+                raise
+            failures[i] = exc
+    return drives
+
+
+def _rebuild_plan(obj: Any, paths: Sequence[FieldPath]) -> Any:
+    """How to rebuild ``obj`` with new values at ``paths`` (given in that order):
+    ``("value", index)``, ``("tuple", items, {position: plan})`` or
+    ``("object", class, keyword arguments, {name: plan})``."""
+    if len(paths) == 1 and paths[0] == ():
+        return ("value",)
+    if any(not p for p in paths):  # a path and one inside it: replace_paths decides
+        return None
+    groups: dict[str | int, list[FieldPath]] = {}
+    for path in paths:
+        groups.setdefault(path[0], []).append(tuple(path[1:]))
+    init: Any
+    if isinstance(obj, tuple):
+        subs = {h: _rebuild_plan(obj[h], sub) for h, sub in groups.items()}  # type: ignore[index]
+        kind, init = "tuple", list(obj)
+    else:
+        subs = {h: _rebuild_plan(getattr(obj, str(h)), sub) for h, sub in groups.items()}
+        kind, init = "object", {f.name: getattr(obj, f.name) for f in dataclasses.fields(obj) if f.init}
+    if any(sub is None for sub in subs.values()):
+        return None
+    return (kind, type(obj), init, subs, _order(paths))
+
+
+def _order(paths: Sequence[FieldPath]) -> list[tuple[str | int, int]]:
+    """For each value in turn (paths in the given order): its head and its place
+    among the values of that head."""
+    seen: dict[str | int, int] = {}
+    out = []
+    for path in paths:
+        out.append((path[0], seen.get(path[0], 0)))
+        seen[path[0]] = seen.get(path[0], 0) + 1
+    return out
+
+
+def _rebuild(plan: Any, values: Any) -> Any:
+    if plan[0] == "value":
+        return next(values)
+    kind, base, init, subs, order = plan
+    per_head: dict[str | int, list[Any]] = {}
+    for head, _ in order:
+        per_head.setdefault(head, []).append(next(values))
+    if kind == "tuple":
+        items = list(init)
+        for head, sub in subs.items():
+            items[head] = _rebuild(sub, iter(per_head[head]))
+        return tuple(items)
+    kwargs = dict(init)
+    for head, sub in subs.items():
+        kwargs[head] = _rebuild(sub, iter(per_head[head]))
+    if kind == "shell":  # the fields as validated on the base; the changed objects built by their classes
+        new = object.__new__(base)
+        new.__dict__.update(kwargs)
+        return new
+    return base(**kwargs)
+
+
+def _shell(drive: Drive, plan: Any) -> Any:
+    """``plan`` with the drive's own construction skipped where that is exact: every change
+    lies inside a dataclass field of the drive, and the drive's ``__post_init__``, run on
+    the base with those objects recording, reads none of their fields and keeps them as
+    they are (its checks then pass and normalise alike for every variant; the changed
+    objects are still built, and checked, by their own classes)."""
+    if plan is None or plan[0] != "object" or any(isinstance(h, int) for h in plan[3]):
+        return plan
+    cls = type(drive)
+    post = getattr(cls, "__post_init__", None)
+    reads: set[str] = set()
+    recorders = {}
+    token = _READS.set(reads)
+    try:
+        probe = object.__new__(cls)
+        probe.__dict__.update(drive.__dict__)
+        for head in plan[3]:
+            value = drive.__dict__.get(str(head))
+            if value is None or not dataclasses.is_dataclass(value) or isinstance(value, type) \
+                    or plan[3][head][0] != "object":
+                return plan
+            recorders[head] = probe.__dict__[head] = _recording(value)
+        if post is not None:
+            post(probe)
+    except Exception:  # noqa: BLE001 - not a plain dataclass, or the base is refused: construct each variant
+        return plan
+    finally:
+        _READS.reset(token)
+    if reads or any(probe.__dict__[h] is not r for h, r in recorders.items()):
+        return plan
+    kind, base, _, subs, order = plan
+    return ("shell", base, dict(drive.__dict__), subs, order)
+
+
+def _with_part(check: Check, name: str) -> Check:
+    """``dataclasses.replace(check, part=name)`` (Check has no __post_init__)."""
+    if check.part == name:
+        return check
+    new = object.__new__(type(check))
+    new.__dict__.update(check.__dict__)
+    new.__dict__["part"] = name
+    return new
+
+
+def _assemble(out: VariantAnalyses, plan: Sequence[Part], parts: tuple[str, ...], drives: list[Drive | None],
+              computed_v: list[dict[str, _Computed]], failures: list[BaseException | None],
+              shared: dict[str, _Computed], shared_checks: dict[str, list[Check]], options: dict[str, Any], errors: str) -> None:
+    """Each variant's analysis from its computed parts, as
+    :func:`~chaindrive.analysis.parts.compute_parts` assembles it: the wanted parts'
+    results and checks in report order (shared checks reused, the others computed with
+    their warnings), then the notes and the warnings of every part."""
+    import warnings
+
+    from . import DriveAnalysis
+    from .parts import PartContext
+
+    wanted = sorted((p for p in plan if p.name in parts), key=lambda p: (p.order, p.name))
+    names = [p.name for p in plan]
+    # what every variant shares is joined once: its results, its checks, and the notes and
+    # warnings of runs of shared parts (a variant's own parts are read in their places)
+    template = {p.name: shared[p.name].result if p.name in shared else None for p in wanted}
+    note_plan: list[Any] = []  # lists of shared notes, or names of parts computed per variant
+    check_plan: list[Any] = []  # lists of shared checks, or per-variant parts
+    for part in wanted:
+        if part.name in shared_checks:
+            check_plan.append(list(shared_checks[part.name]))
+        else:
+            check_plan.append(part)
+    notes_of: list[Any] = [("notes", p.name) for p in wanted] + [("caught", name) for name in names]
+    for what, name in notes_of:
+        if name in shared:
+            entry = shared[name]
+            note_plan.append(list(entry.notes if what == "notes" else entry.caught))
+        else:
+            note_plan.append((what, name))
+    check_plan = _join_lists(check_plan)
+    note_plan = _join_lists(note_plan)
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        for i, comp in enumerate(computed_v):
+            if failures[i] is not None:
+                out.append(failures[i])
+                continue
+            d = drives[i]
+            try:
+                if len(comp) < len(names):  # a part not computed: the general way
+                    results, checks, notes = compute_parts(d, parts, options, computed=comp,  # type: ignore[arg-type]
+                                                           shared_checks=shared_checks)
+                else:
+                    results = dict(template)
+                    checks = []
+                    for step in check_plan:
+                        if isinstance(step, list):
+                            checks.extend(step)
+                            continue
+                        entry = comp[step.name]
+                        res = results[step.name] = entry.result
+                        if res is not None and step.checks is not None:
+                            k = len(caught)
+                            checks.extend(_with_part(c, step.name)
+                                          for c in step.checks(PartContext(d, step, comp, options), res))  # type: ignore[arg-type]
+                            if len(caught) > k:
+                                entry.caught.extend(str(w.message) for w in caught[k:])
+                                del caught[k:]
+                    notes = []
+                    for step in note_plan:
+                        if isinstance(step, list):
+                            notes.extend(step)
+                        else:
+                            entry = comp[step[1]]
+                            notes.extend(entry.notes if step[0] == "notes" else entry.caught)
+                out.append(DriveAnalysis(drive=d, results=results, checks=tuple(checks),  # type: ignore[arg-type]
+                                         warnings=tuple(dict.fromkeys(notes)), parts=parts))
+            except Exception as exc:
+                if errors == "raise":
+                    raise
+                out.append(exc)
+            del caught[:]
+
+
+def _join_lists(steps: list[Any]) -> list[Any]:
+    """Adjacent lists joined into one."""
+    out: list[Any] = []
+    for step in steps:
+        if isinstance(step, list) and out and isinstance(out[-1], list):
+            out[-1] = out[-1] + step
+        else:
+            out.append(step)
+    return out
 
 
 def _compute_for_variants(part: Part, live: list[int], drives: list[Drive | None], computed_v: list[dict[str, _Computed]],
@@ -262,21 +455,23 @@ def _compute_for_variants(part: Part, live: list[int], drives: list[Drive | None
             with warnings.catch_warnings(record=True) as caught:
                 warnings.simplefilter("always")
                 results = part.batch(contexts)
-        except ChainDriveError:
-            results = None  # a variant is refused: find which, one by one
+        except Exception:  # noqa: BLE001 - a variant is refused: find which, one by one
+            results = None
         if results is not None and not caught and len(results) == len(live):
             for i, res in zip(live, results, strict=True):
                 entries[i].result = res
             return
-        for i in live:  # notes of the discarded call
+        for i in live:  # notes and warnings of the discarded call
             entries[i].notes.clear()
-    for i, ctx in zip(live, contexts, strict=True):
-        try:
-            with warnings.catch_warnings(record=True) as caught:
-                warnings.simplefilter("always")
+            entries[i].caught.clear()
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        for i, ctx in zip(live, contexts, strict=True):
+            try:
                 entries[i].result = part.compute(ctx)
+            except Exception as exc:
+                if errors == "raise":
+                    raise
+                failures[i] = exc
             entries[i].caught = [str(w.message) for w in caught]
-        except Exception as exc:
-            if errors == "raise":
-                raise
-            failures[i] = exc
+            del caught[:]

@@ -21,7 +21,6 @@ information (relation ``"info"``), with the verdict in words in the note.
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass
 
 import numpy as np
@@ -36,7 +35,6 @@ __all__ = ["CriticalSpeeds", "critical_speeds", "ASSUMED_DISC_THICKNESS"]
 
 #: Thickness of the steel disc assumed for a wheel's inertia [m] (as the simulation).
 ASSUMED_DISC_THICKNESS = 0.02
-_STEEL_DENSITY = 7800.0
 
 
 @dataclass(frozen=True)
@@ -71,6 +69,7 @@ def critical_speeds(drive: Drive, layout: DriveLayout) -> CriticalSpeeds:
     >>> round(c.longitudinal_ratio, 1), [round(float(r), 2) for r in c.torsional_ratio]
     (9.8, [2.01])
     """
+    from ..loads import disc_inertia
     from ..vibration.critical import longitudinal_frequency, torsional_frequency
 
     q = drive.mass_per_length
@@ -87,7 +86,7 @@ def critical_speeds(drive: Drive, layout: DriveLayout) -> CriticalSpeeds:
         if w.driving or w.teeth is None:
             continue
         r = float(layout.pitch_radii[i])
-        j = 0.5 * _STEEL_DENSITY * math.pi * r**4 * ASSUMED_DISC_THICKNESS
+        j = float(disc_inertia(r, ASSUMED_DISC_THICKNESS))  # the one assumed wheel inertia
         k = ea / float(spans[(i - 1) % n]) + ea / float(spans[i])
         names.append(w.name)
         inertias.append(j)

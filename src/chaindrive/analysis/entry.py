@@ -2,7 +2,9 @@
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from dataclasses import dataclass
+from typing import Any
 
 from .._results import Result
 from ..drive.model import Drive
@@ -137,6 +139,29 @@ def _entry_part(ctx: PartContext) -> DriveEntry:
     return drive_entry(ctx.drive, points=ctx.options.get("entry_points", 361))
 
 
+def _entry_batch(contexts: Sequence[PartContext]) -> list[DriveEntry]:
+    """The entry kinematics of many variants, solved once per distinct set of entry cases
+    (:func:`drive_entry` reads nothing else of a drive: wheels whose positions differ share
+    it); each variant gets that result and its warnings."""
+    import warnings
+
+    solved: dict[tuple[Any, ...], tuple[DriveEntry, list[str]]] = {}
+    out = []
+    for ctx in contexts:
+        points = ctx.options.get("entry_points", 361)
+        key = (entry_cases(ctx.drive), ctx.drive.driving_wheel.name, points)
+        hit = solved.get(key)
+        if hit is None:
+            with warnings.catch_warnings(record=True) as caught:
+                warnings.simplefilter("always")
+                result = drive_entry(ctx.drive, points=points)
+            hit = solved[key] = (result, [str(w.message) for w in caught])
+        for text in hit[1]:
+            ctx.warn(text)
+        out.append(hit[0])
+    return out
+
+
 register_part(Part("entry", "Entry kinematics of the driving and the guided wheels", _entry_part,
                    checks=lambda ctx, entry: entry_checks(entry), order=40,
-                   section="chaindrive.workflows.sections:entry_section"))
+                   section="chaindrive.workflows.sections:entry_section", batch=_entry_batch))

@@ -23,7 +23,7 @@ from .parts import Part, PartContext, register_part
 if TYPE_CHECKING:
     from .conveyor import ConveyorPull
 
-__all__ = ["DriveLoads", "drive_loads", "span_tensions", "free_entry_acceleration", "static_safety_check", "wrap_check",
+__all__ = ["DriveLoads", "drive_loads", "polygonal_spring_mass", "span_tensions", "free_entry_acceleration", "static_safety_check", "wrap_check",
            "MINIMUM_WRAP", "REQUIRED_STATIC_SAFETY", "required_static_safety"]
 
 #: Smallest wrap on the driving wheel [rad] (ISO 10823:2004 guidance: 120°).
@@ -37,7 +37,7 @@ def required_static_safety(chain: Chain) -> float:
 
     >>> from chaindrive.chains import get
     >>> required_static_safety(get("18x64")), required_static_safety(get("16B-1"))
-    (3.5, 7.0)
+    (3.5, 6.0)
     """
     return REQUIRED_STATIC_SAFETY["link" if chain.is_link_chain else "roller"]
 
@@ -69,9 +69,10 @@ class DriveLoads(Result):
     acceleration_peak : float
         Peak chain acceleration [m/s²]; its origin in ``acceleration_source``.
     moving_mass : float
-        Mass moved by the polygonal action [kg] (the whole chain).
+        Mass accelerated by the polygonal action [kg]: the driven side reduced to the chain
+        (:func:`polygonal_spring_mass`), or the whole chain where ``m a_max`` is used.
     dynamic : float
-        Inertia force ``m a_max`` [N].
+        Peak dynamic tension of the polygonal action [N]; its model in ``dynamic_source``.
     maximum : float
         ``tight + dynamic`` [N].
     dynamic_factor : float
@@ -92,6 +93,10 @@ class DriveLoads(Result):
         the driven wheels' negative (taken off), idlers 0.
     wheel_torques : ndarray
         Torque on each wheel's shaft without service factor [N·m], signed as the powers.
+    dynamic_source : str
+        How ``dynamic`` was computed.
+    dynamic_stiffness : float or None
+        Stiffness of the spans holding the driven side [N/m] (spring–mass model only).
     """
 
     torque: float = quantity("N*m")
@@ -115,6 +120,8 @@ class DriveLoads(Result):
     power_shares: np.ndarray | None = quantity("1", default=None)
     wheel_powers: np.ndarray | None = quantity("W", default=None)
     wheel_torques: np.ndarray | None = quantity("N*m", default=None)
+    dynamic_source: str = "m a_max"
+    dynamic_stiffness: float | None = quantity("N/m", default=None)
 
 
 def free_entry_acceleration(drive: Drive) -> float:
@@ -142,6 +149,54 @@ def free_entry_acceleration(drive: Drive) -> float:
     else:
         half = math.pi / teeth
     return float(F.free_entry_acceleration_peak(drive.speed, R, half))
+
+
+def polygonal_spring_mass(drive: Drive, layout: DriveLayout) -> tuple[int, float, float] | None:
+    r"""The driven side of the tight span as a mass on the chain's spans: ``(wheel, m, k)``.
+
+    The tight span joins the driving wheel to wheel ``j``; that wheel (its inertia
+    :func:`chaindrive.loads.disc_inertia` at the pitch radius, as the torsional critical
+    speed and the simulation assume), the chain wrapped on it and a third of each of its two
+    spans (the consistent mass of a uniform spring) form the mass, its two spans
+    ``Σ EA/l`` the stiffness (as :mod:`chaindrive.analysis.critical_speeds`):
+
+    .. math:: m = \frac{J_j}{R_j^2} + q R_j θ_j + \frac{q (l_{j-1} + l_j)}{3}, \qquad
+              k = EA \left(\frac{1}{l_{j-1}} + \frac{1}{l_j}\right)
+
+    ``None`` where the model does not apply (then ``m a_max`` with the whole chain): round
+    link chains and conveyors, a guide on the driving wheel (not free entry), a chain
+    without mass per length, a load not taken off at the wheel the tight span leaves (an
+    idler, the tensioner's wheel, a track's road wheel, a crawler drive's cams).
+
+    >>> from chaindrive.drive.project import load_project
+    >>> from chaindrive.analysis.layout import drive_layout
+    >>> d = load_project("examples/roller_industrial.toml")
+    >>> j, m, k = polygonal_spring_mass(d, drive_layout(d))
+    >>> j, round(m, 2), round(k / 1e8, 3)
+    (1, 16.9, 1.925)
+    """
+    from ..chains.stiffness import chain_axial_stiffness
+
+    chain = drive.chain
+    k0 = drive.driving_index
+    if (chain.bar_diameter is not None or drive.conveyor is not None or chain.mass_per_length is None
+            or drive.driving_wheel.teeth is None or any(g.wheel == drive.driving_wheel.name for g in drive.guides)):
+        return None
+    n = len(drive.wheels)
+    t = layout.tight_span
+    j = t if (t + 1) % n == k0 else (t + 1) % n
+    far = drive.wheels[j]
+    tensioner = drive.tensioner.wheel if drive.tensioner is not None else None
+    if (far.teeth is None or far.kind == "idler" or far.name == tensioner or drive.track is not None
+            or drive.crawler is not None):
+        return None  # the load is not on the wheel the tight span leaves (idler, tensioner, track, crawler's cams)
+    spans = layout.wrap.span_length
+    l_in, l_out = float(spans[(j - 1) % n]), float(spans[j])
+    R = float(layout.pitch_radii[j])
+    q = float(drive.mass_per_length)
+    m = float(F.disc_inertia(R)) / R**2 + q * R * float(layout.wrap.wrap_angle[j]) + q * (l_in + l_out) / 3.0
+    ea = chain_axial_stiffness(chain) * chain.strands
+    return j, m, ea * (1.0 / l_in + 1.0 / l_out)
 
 
 def _slack_tension(drive: Drive, layout: DriveLayout) -> tuple[float, str]:
@@ -180,13 +235,18 @@ def drive_loads(drive: Drive, layout: DriveLayout | None = None, *,
 
     .. math::
 
-        F_{max} = \frac{K_s T}{R} + S_{slack} + q v^2 + m\,a_{max}
+        F_{max} = \frac{K_s T}{R} + S_{slack} + q v^2 + F_d
 
     The slack tension is, in this order: given; from the tensioner force (the tensioner
     wheel held by its two spans); the weight of a near-vertical (> 80°) slack span; the
     catenary tension for ``slack_sag_ratio`` of the slack span. The shaft load of each
     wheel is the vector sum of its two span tensions (without the centrifugal part,
-    which the chain carries itself).
+    which the chain carries itself). The dynamic tension ``F_d`` of the polygonal action
+    is the periodic response of the driven side on its spans
+    (:func:`polygonal_spring_mass`, :func:`chaindrive.loads.polygonal_dynamic_tension`;
+    docs/design.md, "Dynamic load"), or ``m a_max`` with the whole chain moved rigidly
+    where that model does not apply (round link chains, conveyors, guided entry) or
+    ``moving_mass`` is given.
 
     Parameters
     ----------
@@ -200,7 +260,7 @@ def drive_loads(drive: Drive, layout: DriveLayout | None = None, *,
     acceleration_source : str
         Where a given ``acceleration_peak`` comes from (for the report).
     moving_mass : float, optional
-        Mass moved by the polygonal action [kg]; default the whole chain.
+        Mass moved rigidly by the polygonal action [kg]: then ``F_d = m a_max``.
     conveyor : ConveyorPull, optional
         A scraper conveyor's chain pull (:func:`chaindrive.analysis.conveyor.conveyor_pull`):
         then the slack tension is the tension leaving the head and the effective pull
@@ -242,8 +302,16 @@ def drive_loads(drive: Drive, layout: DriveLayout | None = None, *,
         a, asrc = free_entry_acceleration(drive), "free entry on the driving wheel, ω² R sin(δ/2) (Dolipiński et al.)"
     else:
         a, asrc = float(acceleration_peak), acceleration_source
-    m = float(moving_mass) if moving_mass is not None else q * lay.links * drive.pitch
-    Fd = float(F.dynamic_tension(m, a))
+    sm = None if moving_mass is not None else polygonal_spring_mass(drive, lay)
+    if sm is None:
+        m = float(moving_mass) if moving_mass is not None else q * lay.links * drive.pitch
+        Fd, dsrc, kd = float(F.dynamic_tension(m, a)), "m a_max, the whole chain moved rigidly", None
+    else:
+        j, m, kd = sm
+        Fd = float(F.polygonal_dynamic_tension(drive.speed, R, math.pi / wheel_teeth(drive.driving_wheel, "the driving wheel"),
+                                               kd, m))
+        dsrc = (f"wheel {drive.wheels[j].name!r} as a mass on its spans, driven by the polygonal speed "
+                f"(periodic response, ζ = {F.POLYGONAL_DAMPING_RATIO:g})")
     ang = lay.wrap.span_angle
     # wheel i: pulled back along incoming span i-1, forward along outgoing span i
     tens = np.column_stack([np.roll(span_T, 1), span_T])
@@ -258,7 +326,7 @@ def drive_loads(drive: Drive, layout: DriveLayout | None = None, *,
         dynamic_factor=float(F.dynamic_factor(tight, Fd)), span_tensions=span_T,
         shaft_loads=np.asarray(mag, dtype=float), shaft_load_angles=np.asarray(th, dtype=float),
         wheel_names=lay.wheel_names, power_shares=shares, wheel_powers=powers,
-        wheel_torques=powers / lay.angular_velocities,
+        wheel_torques=powers / lay.angular_velocities, dynamic_source=dsrc, dynamic_stiffness=kd,
     )
 
 
@@ -323,7 +391,7 @@ def static_safety_check(drive: Drive, loads: DriveLoads) -> Check:
         name="static safety F_B / F_max", value=sf, limit=drive.static_safety_required, unit="-",
         passed=None if sf is None else bool(sf >= drive.static_safety_required),
         source="catalogue breaking force (ISO 606:2015 table 1 / ASME B29.1 / DIN 22252); "
-               "F_max = K_s T/R + S_slack + q v² + m a_max",
+               "F_max = K_s T/R + S_slack + q v² + F_d (polygonal action, docs/design.md)",
         note="" if fb is not None else "breaking force unknown")
 
 

@@ -17,6 +17,7 @@ skew (no contact part) the part does not apply: the rating check covers the life
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from dataclasses import dataclass
 
 from .. import wear as W
@@ -67,6 +68,48 @@ def _checks(ctx: PartContext, result: ServiceLife) -> list[Check]:
                   bool(result.hours >= result.required), source, note=note)]
 
 
+
+# --------------------------------------------------------------------------- many variants
+def _batch(contexts: Sequence[PartContext]) -> list[ServiceLife | None] | None:
+    """:func:`_part` for many variants that share the wear, rating and layout results, the
+    elongation limit and the number of wheels (their contacts differ): the life at the
+    rated power is computed once, its warnings replayed for each variant."""
+    import warnings
+
+    first = contexts[0]
+    life, rating, layout = first["wear"], first["rating"], first["layout"]
+    drive = first.drive
+    for ctx in contexts:
+        d = ctx.drive
+        if (ctx["wear"] is not life or ctx["rating"] is not rating or ctx["layout"] is not layout
+                or d.elongation_limit != drive.elongation_limit or len(d.wheels) != len(drive.wheels)):
+            return None
+    if life is None:
+        return [None] * len(contexts)
+    hours = float(life.hours_to_limit)
+    required = None
+    messages: list[str] = []
+    if life.model == "rating" and rating is not None:
+        rated = rating.rating.rated_power
+        with warnings.catch_warnings(record=True) as caught:
+            warnings.simplefilter("always")
+            required = float(W.wear_life("rating", rated_power=rated, power=rated, links=layout.links,
+                                         elongation_limit=drive.elongation_limit,
+                                         wheels=len(drive.wheels)).hours_to_limit)
+        messages = [str(w.message) for w in caught]
+    out: list[ServiceLife | None] = []
+    for ctx in contexts:
+        contact = ctx["contact"]
+        if contact is None:
+            out.append(None)
+            continue
+        rel = float(contact.result.relative_life_wear)
+        for m in messages:
+            ctx.warn(m)
+        out.append(ServiceLife(hours_without_skew=hours, relative_life=rel, hours=hours * rel, required=required,
+                               model=life.model))
+    return out
+
+
 register_part(Part("service_life", "Service life with skew", _part, needs=("layout", "rating", "wear", "contact"),
-                   checks=_checks,
-                   order=95))
+                   checks=_checks, order=95, batch=_batch))

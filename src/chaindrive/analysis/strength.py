@@ -208,35 +208,42 @@ def _track_tooth_part(ctx: PartContext) -> TrackToothResult | None:
 
 def _contact_batch(contexts: Sequence[PartContext]) -> list[ContactAnalysis] | None:
     """The contact of many variants in one vectorised call of
-    :meth:`~chaindrive.strength.RollerToothContact.stress` (same chain, seat, length and
-    tight-side tension; skews and wear factors vary); ``None`` where they differ."""
+    :meth:`~chaindrive.strength.RollerToothContact.stress` (same chain, seat and length;
+    tight-side tensions, skews and wear factors vary); ``None`` where they differ."""
     import dataclasses
     import warnings
 
     import numpy as np
 
-    from ..strength.hertz import warn_conformal
-    from ..strength.skew import RollerContactResult, design_skew, skew_gamma
+    from ..strength.hertz import CONFORMITY_LIMIT, warn_conformal
+    from ..strength.skew import (
+        MEASURED_SKEW_RANGE,
+        WEAR_FACTOR_RANGE,
+        RollerContactResult,
+        design_skew,
+        skew_gamma,
+    )
 
     first = contexts[0].drive
-    loads = contexts[0]["loads"]
     con0, c = first.contact, first.chain
     if con0 is None or not c.is_roller_chain or c.roller_diameter is None:
         return None
-    skews, factors = [], []
+    skews, factors, tights = [], [], []
     for ctx in contexts:
         con = ctx.drive.contact
-        if (ctx.drive.chain is not c or con is None or con.skew is None or ctx["loads"] is not loads
+        if (ctx.drive.chain is not c or con is None or con.skew is None
                 or con.seat_radius != con0.seat_radius or con.contact_length != con0.contact_length):
             return None
         skews.append(float(con.skew))
         factors.append(float(con.wear_factor))
+        tights.append(float(ctx["loads"].tight))
     with warnings.catch_warnings(record=True) as shared:
         warnings.simplefilter("always")
         obj = RollerToothContact.from_chain(c, seat_radius=con0.seat_radius, length=con0.contact_length)
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")  # replayed per variant below
-        res = obj.stress(loads.tight, max_skew=np.array(skews), wear_factor=np.array(factors))
+        res = obj.stress(tights[0] if len(set(tights)) == 1 else np.array(tights), max_skew=np.array(skews),
+                         wear_factor=np.array(factors))
     # each variant's warnings, as its own call of RollerToothContact.stress raises them
     # (roller_contact_stress: design_skew, then skew_gamma, then warn_conformal)
     with warnings.catch_warnings(record=True) as gamma_warnings:
@@ -244,20 +251,49 @@ def _contact_batch(contexts: Sequence[PartContext]) -> list[ContactAnalysis] | N
         skew_gamma(c.pitch)
     fields = [f.name for f in dataclasses.fields(res)]
     columns = {name: getattr(res, name) for name in fields}
+    # the variants whose own call warns (the scalar tests of design_skew's warn_outside
+    # and of warn_conformal, vectorised); each of those calls its formula again for the
+    # exact message, the others warn only what every variant warns
+    phi, k = np.array(skews), np.array(factors)
+    lo, hi = MEASURED_SKEW_RANGE[1], WEAR_FACTOR_RANGE
+    skew_warns = (~((phi >= 0.0) & (phi <= lo)) | ~((k >= hi[0]) & (k <= hi[1]))).tolist()
+    ratio = np.asarray(columns["half_width"], dtype=float) / (c.roller_diameter / 2)
+    conformal = np.broadcast_to(ratio > CONFORMITY_LIMIT, phi.shape).tolist()
+    common = [str(w.message) for w in (*shared, *gamma_warnings)]
+    conformal_messages: dict[str, list[str]] = {}
+    half_width = np.broadcast_to(columns["half_width"], phi.shape).tolist()
+    cls = RollerContactResult
+    scalar = {name: v for name, v in columns.items() if not (isinstance(v, np.ndarray) and v.ndim)}
+    arrays = {name: v.tolist() for name, v in columns.items() if isinstance(v, np.ndarray) and v.ndim}
     out = []
     for i, (skew, factor) in enumerate(zip(skews, factors, strict=True)):
         ctx = contexts[i]
-        with warnings.catch_warnings(record=True) as own:
-            warnings.simplefilter("always")
-            design_skew(skew, factor)
-        with warnings.catch_warnings(record=True) as conformal_caught:
-            warnings.simplefilter("always")
-            warn_conformal(columns["half_width"][i], c.roller_diameter / 2, "roller-tooth contact")
-        for w in (*shared, *own, *gamma_warnings, *conformal_caught):
-            ctx.warn(str(w.message))
-        row: dict[str, Any] = {name: (float(v[i]) if isinstance(v, np.ndarray) and v.ndim else v)
-                               for name, v in columns.items()}
-        out.append(ContactAnalysis(float(loads.tight), skew, factor, obj, RollerContactResult(**row)))
+        if skew_warns[i] or conformal[i]:
+            messages = [str(w.message) for w in shared]
+            if skew_warns[i]:
+                with warnings.catch_warnings(record=True) as own:
+                    warnings.simplefilter("always")
+                    design_skew(skew, factor)
+                messages += [str(w.message) for w in own]
+            messages += [str(w.message) for w in gamma_warnings]
+            if conformal[i]:
+                # warn_conformal's message shows the ratio to 3 digits: one call per shown value
+                x = half_width[i]
+                key = f"{x / (c.roller_diameter / 2):.3g}"
+                if key not in conformal_messages:
+                    with warnings.catch_warnings(record=True) as caught:
+                        warnings.simplefilter("always")
+                        warn_conformal(x, c.roller_diameter / 2, "roller-tooth contact")
+                    conformal_messages[key] = [str(w.message) for w in caught]
+                messages += conformal_messages[key]
+        else:
+            messages = common
+        for m in messages:
+            ctx.warn(m)
+        row = dict(scalar)
+        for name, v in arrays.items():
+            row[name] = v[i]
+        out.append(ContactAnalysis(tights[i], skew, factor, obj, cls(**row)))
     return out
 
 

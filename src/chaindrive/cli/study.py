@@ -25,9 +25,9 @@ def study_cmd(
                                        "local cluster with one worker process per core."),
     workers: int = typer.Option(None, "--workers", min=1, max=256,
                                 help="Worker processes of the local cluster [-] (default: cores)."),
-    batch_size: int = typer.Option(None, "--batch-size", min=1, max=1000,
-                                   help="Variants per dask task [-] (default about 8 tasks per worker, "
-                                        "at most 50)."),
+    batch_size: int = typer.Option(None, "--batch-size", min=1, max=20_000,
+                                   help="Variants per dask task [-] (at most 20,000; default about 8 "
+                                        "tasks per worker, at most 5,000 variants each)."),
     quiet: bool = typer.Option(False, "--quiet", "-q", help="No progress bar, no summary line."),
 ) -> None:
     """Run a design study on dask.distributed, or summarise one (--summary DIR).

@@ -80,7 +80,7 @@ class DesignCandidate(Result):
     lubrication: str = ""
     lubrication_method: str = ""
     static_safety: float | None = quantity("1", default=None)
-    required_static_safety: float = quantity("1", default=7.0)
+    required_static_safety: float = quantity("1", default=6.0)
     maximum_tension: float = quantity("N", default=0.0)
     teeth_rule: str = ""
     factors: tuple[Factor, ...] = ()

@@ -539,7 +539,7 @@ class Drive:
     @property
     def static_safety_required(self) -> float:
         """Required ``F_B / F_max``: the drive's ``required_static_safety``, or the one table's
-        value for its chain kind (:data:`chaindrive.loads.REQUIRED_STATIC_SAFETY`: 7 roller, 3.5 link)."""
+        value for its chain kind (:data:`chaindrive.loads.REQUIRED_STATIC_SAFETY`: 6 roller, 3.5 link)."""
         if self.required_static_safety is not None:
             return float(self.required_static_safety)
         from ..loads import REQUIRED_STATIC_SAFETY

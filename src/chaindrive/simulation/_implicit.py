@@ -30,6 +30,17 @@ import numpy as np
 from numba import njit
 
 from . import _kernel as K
+from ._banded import (  # noqa: F401 - the cyclic solver is part of this module's interface
+    _apply_inverse,
+    _factor_solve2,
+    _link_back,
+    _link_entries,
+    _link_rhs,
+    _small_solve,
+    cyclic_tridiagonal_factor,
+    cyclic_tridiagonal_solve,
+    cyclic_tridiagonal_substitute,
+)
 from ._kernel import (
     _fast_atan2,
     _sat,
@@ -45,107 +56,6 @@ from ._kernel import (
 
 # per-contact columns kept for the wheels' implicit update after the pins
 C_BETA, C_S, C_NX, C_NY, C_L, C_LT, C_DN, C_DT, C_FN0, C_FT0, C_FN = range(11)
-
-
-@njit(cache=True, fastmath=False)
-def cyclic_tridiagonal_factor(d, e, idd, ff):
-    """Factor the symmetric cyclic tridiagonal matrix ``A`` (n >= 3); return the last pivot.
-
-    ``A[l, l] = d[l]``, ``A[l, l+1] = A[l+1, l] = e[l]`` (``l + 1`` modulo n: ``e[n-1]``
-    couples rows ``n-1`` and 0). Gaussian elimination without pivoting (stable for the
-    symmetric positive definite matrices of the integrator) carrying the fill-in of the
-    last column: ``idd`` the inverse pivots of rows ``0 … n-2``, ``ff`` the fill-in
-    (``ff[n-2]`` includes ``e[n-2]``). Cost linear in n.
-    """
-    n = d.shape[0]
-    dcur = d[0]
-    ff[0] = e[n - 1]
-    dlast = d[n - 1]
-    for ll in range(n - 2):
-        ip = 1.0 / dcur
-        idd[ll] = ip
-        dcur = d[ll + 1] - e[ll] * e[ll] * ip
-        ff[ll + 1] = -e[ll] * ip * ff[ll]
-        dlast -= ff[ll] * ff[ll] * ip
-    idd[n - 2] = 1.0 / dcur
-    ff[n - 2] += e[n - 2]
-    return dlast - ff[n - 2] * ff[n - 2] * idd[n - 2]
-
-
-@njit(cache=True, fastmath=False)
-def cyclic_tridiagonal_substitute(e, idd, ff, dlast, b, x):
-    """Solve ``A x = b`` with the factors of :func:`cyclic_tridiagonal_factor` (``x`` may be ``b``)."""
-    n = b.shape[0]
-    # forward: x holds the eliminated right-hand side
-    blast = b[n - 1]
-    prev = b[0]
-    x[0] = prev
-    for ll in range(n - 2):
-        q = prev * idd[ll]
-        blast -= ff[ll] * q
-        prev = b[ll + 1] - e[ll] * q
-        x[ll + 1] = prev
-    blast -= ff[n - 2] * prev * idd[n - 2]
-    xl = blast / dlast
-    x[n - 1] = xl
-    nxt = (prev - ff[n - 2] * xl) * idd[n - 2]
-    x[n - 2] = nxt
-    for ll in range(n - 3, -1, -1):
-        nxt = (x[ll] - e[ll] * nxt - ff[ll] * xl) * idd[ll]
-        x[ll] = nxt
-
-
-@njit(cache=True, fastmath=False)
-def cyclic_tridiagonal_solve(d, e, b, x):
-    """``A x = b`` for the symmetric cyclic tridiagonal ``A`` (:func:`cyclic_tridiagonal_factor`)."""
-    n = d.shape[0]
-    idd = np.empty(n)
-    ff = np.empty(n)
-    dlast = cyclic_tridiagonal_factor(d, e, idd, ff)
-    cyclic_tridiagonal_substitute(e, idd, ff, dlast, b, x)
-
-
-@njit(cache=True, fastmath=False)
-def _apply_inverse(gx, gy, ox, oy, wxx, wxy, wyy, ux, uy, of, idd, ff, dlast, lam):
-    """``o = P⁻¹ g`` for ``P = W⁻¹ + Gᵀ a G`` (Woodbury, factored link system)."""
-    n = gx.shape[0]
-    for i in range(n):
-        ox[i] = wxx[i] * gx[i] + wxy[i] * gy[i]
-        oy[i] = wxy[i] * gx[i] + wyy[i] * gy[i]
-    for li in range(n - 1):
-        lam[li] = ux[li] * (ox[li + 1] - ox[li]) + uy[li] * (oy[li + 1] - oy[li])
-    lam[n - 1] = ux[n - 1] * (ox[0] - ox[n - 1]) + uy[n - 1] * (oy[0] - oy[n - 1])
-    cyclic_tridiagonal_substitute(of, idd, ff, dlast, lam, lam)
-    for i in range(n):
-        im = i - 1 if i > 0 else n - 1
-        gtx = lam[im] * ux[im] - lam[i] * ux[i]
-        gty = lam[im] * uy[im] - lam[i] * uy[i]
-        ox[i] -= wxx[i] * gtx + wxy[i] * gty
-        oy[i] -= wxy[i] * gtx + wyy[i] * gty
-
-
-@njit(cache=True, fastmath=False)
-def _small_solve(a, b, nq):
-    """``b ← a⁻¹ b`` for the leading ``nq x nq`` block (Gaussian elimination, partial pivoting)."""
-    for col in range(nq):
-        piv = col
-        for r in range(col + 1, nq):
-            if abs(a[r, col]) > abs(a[piv, col]):
-                piv = r
-        if piv != col:
-            for cc in range(nq):
-                a[col, cc], a[piv, cc] = a[piv, cc], a[col, cc]
-            b[col], b[piv] = b[piv], b[col]
-        for r in range(col + 1, nq):
-            f = a[r, col] / a[col, col]
-            for cc in range(col, nq):
-                a[r, cc] -= f * a[col, cc]
-            b[r] -= f * b[col]
-    for r in range(nq - 1, -1, -1):
-        acc = b[r]
-        for cc in range(r + 1, nq):
-            acc -= a[r, cc] * b[cc]
-        b[r] = acc / a[r, r]
 
 
 @njit(cache=True, fastmath=False, inline="always")
@@ -204,21 +114,15 @@ def _drop_tensile(cinfo, ncand, cand, qrot, qsl, dq, dvx, dvy, yx, yy, mxx, mxy,
 
 
 @njit(cache=True, fastmath=False)
-def _solve(n, nw, yx, yy, wxx, wxy, wyy, ux, uy, dg, of, dd, ff, lam, inv_ak, dvx, dvy, ws, wp,
-           ncand, cand, cinfo, qrot, qsl, bx, by, zx, zy, sq, fq, wtq, wsf, h, t, gx, gy):
+def _solve(n, nw, yx, yy, wxx, wxy, wyy, ux, uy, dg, of, dd, ff, lam, lam1, inv_ak, dvx, dvy, ws,
+           wp, ncand, cand, cinfo, qrot, qsl, bx, by, zx, zy, sq, fq, wtq, wsf, h, t, gx, gy):
     """Velocity changes of the pins (``dvx``, ``dvy``) and of the wheels' rotations and
     slides in contact (``fq[qrot[w]]``, ``fq[qsl[w]]``) of one linearly implicit step."""
     # links: P = W⁻¹ + Gᵀ a G; by Woodbury P⁻¹ g = W g − W Gᵀ λ with
     # (1/a + G W Gᵀ) λ = G W g, a cyclic tridiagonal system factored once per step
-    for li in range(n):
-        j = li + 1 if li + 1 < n else 0
-        ex = ux[li]
-        ey = uy[li]
-        dg[li] = inv_ak + ex * ((wxx[li] + wxx[j]) * ex + (wxy[li] + wxy[j]) * ey) \
-            + ey * ((wxy[li] + wxy[j]) * ex + (wyy[li] + wyy[j]) * ey)
-        of[li] = -(ex * (wxx[j] * ux[j] + wxy[j] * uy[j]) + ey * (wxy[j] * ux[j] + wyy[j] * uy[j]))
-    dlast = cyclic_tridiagonal_factor(dg, of, dd, ff)
-    _apply_inverse(yx, yy, dvx, dvy, wxx, wxy, wyy, ux, uy, of, dd, ff, dlast, lam)
+    for li in range(n - 1):
+        _link_entries(dg, of, wxx, wxy, wyy, ux, uy, inv_ak, li, li + 1)
+    _link_entries(dg, of, wxx, wxy, wyy, ux, uy, inv_ak, n - 1, 0)
     # the wheels' rotations and slides in contact with pins: bordered system
     # [[P, B], [Bᵀ, Q]] [Δv, Δq] = [F, F_q], solved by its Schur complement
     nq = 0
@@ -277,10 +181,17 @@ def _solve(n, nw, yx, yy, wxx, wxy, wyy, ux, uy, dg, of, dd, ff, lam, inv_ak, dv
             if qr >= 0 and qs >= 0:
                 sq[qr, qs] += be * lev * dn + s * levt * dtt
                 sq[qs, qr] += be * lev * dn + s * levt * dtt
+    # P⁻¹ F and P⁻¹ B_0 with the factorisation in one pass, further border columns after
+    _link_rhs(yx, yy, dvx, dvy, wxx, wxy, wyy, ux, uy, lam)
     if nq > 0:
-        for q in range(nq):
+        _link_rhs(bx[0], by[0], zx[0], zy[0], wxx, wxy, wyy, ux, uy, lam1)
+    dlast = _factor_solve2(dg, of, dd, ff, lam, lam1)
+    _link_back(dvx, dvy, wxx, wxy, wyy, ux, uy, lam)
+    if nq > 0:
+        _link_back(zx[0], zy[0], wxx, wxy, wyy, ux, uy, lam1)
+        for q in range(1, nq):
             _apply_inverse(bx[q], by[q], zx[q], zy[q], wxx, wxy, wyy, ux, uy, of, dd, ff,
-                           dlast, lam)
+                           dlast, lam1)
         # Schur complement S = Q − Bᵀ P⁻¹ B, right-hand side F_q − Bᵀ P⁻¹ F; B is
         # sparse (its rows live on their wheel's candidate pins)
         for w in range(nw):
@@ -308,9 +219,13 @@ def _solve(n, nw, yx, yy, wxx, wxy, wyy, ux, uy, dg, of, dd, ff, lam, inv_ak, dv
 
 
 @njit(cache=True, fastmath=False)
-def integrate_implicit(pos, vel, force, work, tension, contact, ws, wp, gd, tab, par, t0, nsteps,
-                       record_every, probes, rec_t, rec_probe, rec_tension, rec_contact, rec_ws,
-                       rec_pos, rec_energy, rec_start):
+def integrate_implicit(pos: np.ndarray, vel: np.ndarray, force: np.ndarray, work: np.ndarray,
+                       tension: np.ndarray, contact: np.ndarray, ws: np.ndarray, wp: np.ndarray,
+                       gd: np.ndarray, tab: np.ndarray, par: np.ndarray, t0: float, nsteps: int,
+                       record_every: int, probes: np.ndarray, rec_t: np.ndarray,
+                       rec_probe: np.ndarray, rec_tension: np.ndarray, rec_contact: np.ndarray,
+                       rec_ws: np.ndarray, rec_pos: np.ndarray, rec_energy: np.ndarray,
+                       rec_start: int) -> int:
     """Advance ``nsteps`` linearly implicit steps from ``t0``; return the records written.
 
     Same arguments as :func:`._kernel.integrate` (``force`` and ``work`` unused).
@@ -368,6 +283,7 @@ def integrate_implicit(pos, vel, force, work, tension, contact, ws, wp, gd, tab,
     dg = np.empty(n)
     of = np.empty(n)
     lam = np.empty(n)
+    lam1 = np.zeros(n)
     dd = np.empty(n)
     ff = np.empty(n)
     dvx = np.empty(n)
@@ -479,8 +395,8 @@ def integrate_implicit(pos, vel, force, work, tension, contact, ws, wp, gd, tab,
                 rc = rout + margin
                 rc2 = rc * rc
                 nc = 0
-                for i in range(n):
-                    gcache[w, i] = -1
+                for ic in range(ncand[w]):
+                    gcache[w, cand[w, ic]] = -1
                 for i in range(n):
                     qx = x[i] - cx
                     qy = y[i] - cy
@@ -686,16 +602,19 @@ def integrate_implicit(pos, vel, force, work, tension, contact, ws, wp, gd, tab,
             nrec += 1
         # pins: forces F_i (explicit forces, gravity and the links' T*) and the
         # inverse W_i of the 2 x 2 matrix M_i/h + contact terms
+        yx[0] = fx[0] + fgx - cm * vx[0] + tstar[0] * ux[0] - tstar[n - 1] * ux[n - 1]
+        yy[0] = fy[0] + fgy - cm * vy[0] + tstar[0] * uy[0] - tstar[n - 1] * uy[n - 1]
+        for i in range(1, n):
+            yx[i] = fx[i] + fgx - cm * vx[i] + tstar[i] * ux[i] - tstar[i - 1] * ux[i - 1]
+            yy[i] = fy[i] + fgy - cm * vy[i] + tstar[i] * uy[i] - tstar[i - 1] * uy[i - 1]
         for i in range(n):
-            im = i - 1 if i > 0 else n - 1
-            yx[i] = fx[i] + fgx - cm * vx[i] + tstar[i] * ux[i] - tstar[im] * ux[im]
-            yy[i] = fy[i] + fgy - cm * vy[i] + tstar[i] * uy[i] - tstar[im] * uy[im]
             _pin_inverse(i, mh, mxx, mxy, myy, wxx, wxy, wyy)
         # active set of the wheel contacts: a contact whose normal force at the end of
         # the step comes out tensile is dropped and the step solved again
         for it in range(4):
-            _solve(n, nw, yx, yy, wxx, wxy, wyy, ux, uy, dg, of, dd, ff, lam, inv_ak, dvx, dvy, ws,
-                   wp, ncand, cand, cinfo, qrot, qsl, bx, by, zx, zy, sq, fq, wtq, wsf, h, t, gx, gy)
+            _solve(n, nw, yx, yy, wxx, wxy, wyy, ux, uy, dg, of, dd, ff, lam, lam1, inv_ak, dvx,
+                   dvy, ws, wp, ncand, cand, cinfo, qrot, qsl, bx, by, zx, zy, sq, fq, wtq, wsf, h,
+                   t, gx, gy)
             if it == 3 or not _drop_tensile(cinfo, ncand, cand, qrot, qsl, fq, dvx, dvy, yx, yy,
                                             mxx, mxy, myy, wtq, wsf, contact):
                 break

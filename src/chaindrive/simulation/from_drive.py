@@ -32,9 +32,12 @@ def _teeth(wheel: Any) -> int:
     return int(wheel.teeth)
 
 
-def _disc_inertia(radius: float, thickness: float = 0.02, density: float = 7800.0) -> float:
-    """``J = ½ ρ π r⁴ b`` of a steel disc at the pitch radius [kg m²]."""
-    return 0.5 * density * math.pi * radius**4 * thickness
+def _disc_inertia(radius: float) -> float:
+    """``J = ½ ρ π r⁴ b`` of a 20 mm steel disc at the pitch radius [kg m²]
+    (:func:`chaindrive.loads.disc_inertia`, the one definition)."""
+    from ..loads import disc_inertia
+
+    return float(disc_inertia(radius))
 
 
 def model_from_drive(drive: Drive, *, ramp_time: float = 0.2, axial_stiffness: float | None = None,

@@ -61,7 +61,8 @@ from .results import (
     tight_span,
 )
 
-__all__ = ["SimulationResult", "SUMMARY_QUANTITIES", "assemble", "simulate", "kernel_arrays", "State", "conservative"]
+__all__ = ["SimulationResult", "SUMMARY_QUANTITIES", "assemble", "simulate", "kernel_arrays", "State", "conservative",
+           "step_for_accuracy"]
 
 
 # ---------------------------------------------------------------------------- kernel data
@@ -632,6 +633,76 @@ def simulate(model: SimulationModel, duration: float, *, dt: float | None = None
     object.__setattr__(res, "final_state", State(pos, vel, ws, wp, state.gd, par, state.relax_time,
                                                  state.relax_steps, state.time + nsteps * dt))  # not a field
     return res
+
+
+def step_for_accuracy(model: SimulationModel, duration: float, *, state: State | None = None,
+                      tolerance: float = 0.01, start: float | None = None,
+                      method: str = "implicit", max_halvings: int = 6) -> float:
+    """Largest step [s] of a halving ladder whose results hold against the halved step.
+
+    Runs ``start``, ``start/2``, … (``start`` default twice
+    :meth:`SimulationModel.accurate_time_step` for the implicit integrator, the stable
+    step for the explicit one) from the same state and returns the first step whose mean
+    chain speed and mean tight-side tension (steady window: the second half of the run)
+    differ from those at its half by at most ``tolerance`` (relative).
+
+    Parameters
+    ----------
+    model : SimulationModel
+    duration : float
+        Simulated time of each run [s].
+    state : State, optional
+        Start state; default a fresh assembly.
+    tolerance : float
+        Relative change allowed against the halved step, 0 < tolerance < 1.
+    start : float, optional
+        First step of the ladder [s].
+    method : {"explicit", "implicit"}
+    max_halvings : int
+        Halvings tried before giving up.
+
+    Returns
+    -------
+    float
+        The step [s].
+
+    Raises
+    ------
+    InputError
+        ``tolerance`` not in (0, 1).
+    ConvergenceError
+        No step of the ladder holds.
+
+    Examples
+    --------
+    >>> from chaindrive.simulation import roller_example
+    >>> from chaindrive.simulation.run import step_for_accuracy
+    >>> m = roller_example(links=30, teeth=11, angular_velocity=5.0, ramp_time=0.005)
+    >>> step_for_accuracy(m, 0.02, tolerance=0.02) >= m.stable_time_step()
+    True
+    """
+    from ..errors import InputError
+
+    if not 0.0 < tolerance < 1.0:
+        raise InputError(f"tolerance must be in (0, 1), got {tolerance!r}")
+    if state is None:
+        state = assemble(model)
+    if start is None:
+        start = 2.0 * model.accurate_time_step() if method == "implicit" else model.stable_time_step()
+
+    def means(dt: float) -> tuple[float, float]:
+        s = simulate(model, duration, state=state, dt=dt, method=method, samples=400).summary
+        return float(s["chain_velocity_mean"][0]), float(s["tight_side_tension_mean"])
+
+    dt = float(start)
+    here = means(dt)
+    for _ in range(max_halvings):
+        half = means(0.5 * dt)
+        if all(abs(a - b) <= tolerance * abs(b) for a, b in zip(here, half, strict=True)):
+            return dt
+        dt, here = 0.5 * dt, half
+    raise ConvergenceError(f"no step from {start:.3g} s down to {dt:.3g} s holds its mean chain "
+                           f"speed and tight-side tension within {tolerance:g} against the halved step")
 
 
 def conservative(state: State) -> State:

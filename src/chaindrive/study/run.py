@@ -1,6 +1,6 @@
 """Running a design study on ``dask.distributed``.
 
-Variants go to the workers in batches (one task per batch, :func:`run_batch`); each
+Variants go to the workers in batches (one task per batch, :func:`run_batch_columns`); each
 finished batch is appended to the output folder as a new Parquet part file
 (``results/part-*.parquet``, written to a temporary name and renamed, so a part is
 either whole or absent). A row is keyed by the SHA-256 of the canonical JSON of the
@@ -22,7 +22,7 @@ import socket
 import time
 import uuid
 import warnings
-from collections.abc import Iterable, Sequence
+from collections.abc import Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
@@ -30,6 +30,8 @@ from typing import TYPE_CHECKING, Any
 from .._io import atomic_write_bytes, atomic_write_text, folder_lock
 from .._results import jsonable
 from ..errors import InfeasibleError, InputError
+from ._columns import array as _array
+from ._columns import column_type as _column_type
 from .spec import MAXIMUM_BATCH_SIZE, Study, set_path
 
 if TYPE_CHECKING:
@@ -38,7 +40,7 @@ if TYPE_CHECKING:
 
     from ..drive.model import Drive
 
-__all__ = ["analysis_result", "lookup", "evaluate_variant", "run_batch", "run_study", "read_dataframe",
+__all__ = ["analysis_result", "lookup", "evaluate_variant", "run_batch", "run_batch_columns", "run_study", "read_dataframe",
            "read_results", "existing_keys", "StudyRun", "DEFAULT_BATCH_SIZE"]
 
 #: Largest default batch: a batch is the unit of progress and of what a lost worker loses, and
@@ -264,6 +266,34 @@ def run_batch(batch: Sequence[tuple[int, str, dict]], *, base: dict, outputs: Se
     return rows
 
 
+def run_batch_columns(batch: Sequence[tuple[int, str, dict]], *, base: dict, outputs: Sequence[str],
+                      parts: Sequence[str] = (), simulation: dict | None = None) -> dict[str, list]:
+    """:func:`run_batch` as columns (``{"key": [...], "variant": [...], output: [...], ...}``):
+    what the study runner's tasks return and its Parquet part files store.
+
+    Examples
+    --------
+    >>> import tomllib
+    >>> from chaindrive.drive.project import template
+    >>> cols = run_batch_columns([(0, "k0", {"drive.speed": "1450 rpm"}), (1, "k1", {"drive.speed": "0 rpm"})],
+    ...                          base=tomllib.loads(template("roller")), outputs=["loads.chain_speed"])
+    >>> cols["key"], [e is None for e in cols["error"]]
+    (['k0', 'k1'], [True, False])
+    """
+    worker = f"{socket.gethostname()}:{os.getpid()}"
+    if simulation is None:
+        from .batch import evaluate_columns
+
+        columns = evaluate_columns(base, [inputs for _, _, inputs in batch], outputs, parts=parts)
+    else:
+        rows = run_batch(batch, base=base, outputs=outputs, parts=parts, simulation=simulation)
+        columns = {name: [r.get(name) for r in rows] for name in rows[0]} if rows else {}
+    columns["key"] = [key for _, key, _ in batch]
+    columns["variant"] = [number for number, _, _ in batch]
+    columns["worker"] = [worker] * len(batch)
+    return columns
+
+
 # --------------------------------------------------------------------------- Parquet
 
 
@@ -331,46 +361,6 @@ def read_results(directory: str | Path) -> pa.Table:
     return table.take(pc.sort_indices(table, sort_keys=[("variant", "ascending")]))
 
 
-def _kind(value: Any) -> str:
-    if value is None:
-        return "null"
-    if isinstance(value, bool):
-        return "bool"
-    if isinstance(value, (int, float)):
-        return "float"
-    return "string"
-
-
-def _column_type(values: Iterable[Any], established: Any, pa) -> Any:
-    if established is not None and not pa.types.is_null(established):
-        return established
-    kinds = {_kind(v) for v in values} - {"null"}
-    if not kinds:
-        return pa.null()
-    if "string" in kinds:
-        return pa.string()
-    if kinds == {"bool"}:
-        return pa.bool_()
-    return pa.float64()
-
-
-def _convert(value: Any, type_, pa) -> Any:
-    if value is None:
-        return None
-    if pa.types.is_string(type_):
-        return value if isinstance(value, str) else json.dumps(value)
-    if pa.types.is_boolean(type_):
-        return bool(value) if isinstance(value, bool) else None
-    if pa.types.is_floating(type_):
-        if isinstance(value, (bool, int, float)):
-            x = float(value)
-            return x if math.isfinite(x) else None
-        return None
-    if pa.types.is_integer(type_):
-        return int(value) if isinstance(value, (int, float)) and not isinstance(value, bool) else None
-    return None
-
-
 class _PartWriter:
     """Writes each finished batch as one Parquet part file (atomic rename)."""
 
@@ -402,26 +392,29 @@ class _PartWriter:
                 "inputs": [v.path for v in study.variables], "outputs": list(study.outputs)}
         self.metadata = {_META_KEY: json.dumps(meta).encode("utf-8")}
 
-    def write(self, rows: list[dict], values: dict[str, tuple]) -> Path:
+    def write(self, columns: dict[str, list], values: dict[str, tuple]) -> Path:
+        """One part file of a finished batch (``columns`` as :func:`run_batch_columns` gives
+        them; a column missing is null)."""
         pa, pq = self.pa, self.pq
+        keys = list(columns["key"])
+        n = len(keys)
         fields = [pa.field("key", pa.string()), pa.field("variant", pa.int64())]
-        data: dict[str, list] = {"key": [r["key"] for r in rows],
-                                 "variant": [int(r["variant"]) for r in rows]}
+        data: dict[str, Any] = {"key": keys, "variant": [int(v) for v in columns["variant"]]}
         for j, v in enumerate(self.study.variables):
             t = self.input_types[v.path]
             fields.append(pa.field(v.path, t, metadata={b"unit": v.unit.encode()}))
-            data[v.path] = [_convert(values[r["key"]][j], t, pa) for r in rows]
+            data[v.path] = _array([values[k][j] for k in keys], t, pa)
         for name in self.study.outputs:
-            col = [r.get(name) for r in rows]
+            col = columns.get(name) or [None] * n
             t = _column_type(col, self.output_types.get(name), pa)
             if not pa.types.is_null(t):
                 self.output_types[name] = t
             fields.append(pa.field(name, t))
-            data[name] = [_convert(x, t, pa) for x in col]
+            data[name] = _array(col, t, pa)
         for name, t in (("error", pa.string()), ("warnings", pa.string()), ("seconds", pa.float64()),
                         ("cpu_seconds", pa.float64()), ("worker", pa.string())):
             fields.append(pa.field(name, t))
-            data[name] = [_convert(r.get(name), t, pa) for r in rows]
+            data[name] = _array(columns.get(name) or [None] * n, t, pa)
         schema = pa.schema(fields, metadata=self.metadata)
         table = pa.table(data, schema=schema)
         self.count += 1
@@ -658,24 +651,30 @@ def _run_study(study: Study, directory: Path, t_start: float, *, scheduler: str 
         rows = study.rows()
         _prepare(directory, study)
         done = existing_keys(directory)
-        pending, values = [], {}
-        for number, row in enumerate(rows):
-            inputs = study.variant_inputs(row)
-            key = study.key(inputs)
-            if key in done or key in values:
-                continue
-            values[key] = row
-            pending.append((number, key, inputs))
-        skipped = len(rows) - len(pending)
-        run = StudyRun(directory=directory, variants=len(rows), skipped=skipped, computed=0,
+        values: dict[str, tuple] = {}
+
+        def pending():  # the variants not yet in the folder, each once (keys made as they go)
+            for number, row in enumerate(rows):
+                inputs = study.variant_inputs(row)
+                key = study.key(inputs)
+                if key in done or key in values:
+                    continue
+                values[key] = row
+                yield number, key, inputs
+
+        plan = pending()
+        first = next(plan, None)
+        run = StudyRun(directory=directory, variants=len(rows), skipped=0, computed=0,
                        failed=0, seconds=0.0, compute_seconds=0.0, workers=0)
-        if not pending:
+        if first is None:
+            run.skipped = len(rows)
             if bar is not None:
                 bar.update(task, description="nothing to do", total=1, completed=1)
             run.seconds = time.perf_counter() - t_start
             return run
+        estimate = len(rows) - len(done)  # at most this many to compute (known when planned)
         if bar is not None:
-            bar.update(task, description="starting the cluster", total=len(pending), completed=0)
+            bar.update(task, description="starting the cluster", total=estimate, completed=0)
         client, cluster = _client(scheduler, workers, timeout=min(10.0, max(3.0, wait_for_workers)))
         try:
             client.wait_for_workers(1, timeout=wait_for_workers)
@@ -688,8 +687,7 @@ def _run_study(study: Study, directory: Path, t_start: float, *, scheduler: str 
         except Exception:  # noqa: BLE001 - a broken worker shows in the variants' errors
             pass
         run.workers = nworkers
-        size = batch_size or max(1, min(DEFAULT_BATCH_SIZE, math.ceil(len(pending) / (8 * nworkers))))
-        batches = [pending[i:i + size] for i in range(0, len(pending), size)]
+        size = batch_size or max(1, min(DEFAULT_BATCH_SIZE, math.ceil(estimate / (8 * nworkers))))
         writer = _PartWriter(directory, study)
         payload = {"base": study.base, "outputs": list(study.outputs), "parts": list(study.parts),
                    "simulation": study.simulation}
@@ -698,21 +696,47 @@ def _run_study(study: Study, directory: Path, t_start: float, *, scheduler: str 
         t0 = time.perf_counter()
         if bar is not None:
             bar.update(task, description=f"study, {nworkers} worker{'s' if nworkers != 1 else ''}")
-        futures = client.map(run_batch, batches, pure=False, **payload)
-        index = {f.key: b for f, b in zip(futures, batches, strict=True)}
-        for future in as_completed(futures):
+        index: dict[str, list] = {}
+        finished = as_completed()
+
+        def collect(future) -> None:
             try:
                 result = future.result()
             except Exception as exc:  # noqa: BLE001 - a lost batch is recorded, the study goes on
                 msg = f"{CLUSTER_FAILURE}: {_one_line(exc)}"
-                result = [{"key": k, "variant": n, "error": msg} for n, k, _ in index[future.key]]
+                lost = index[future.key]
+                result = {"key": [k for _, k, _ in lost], "variant": [n for n, _, _ in lost],
+                          "error": [msg] * len(lost)}
             future.release()
+            del index[future.key]
             run.files.append(writer.write(result, values))
-            run.computed += len(result)
-            run.failed += sum(1 for r in result if r.get("error"))
+            run.computed += len(result["key"])
+            run.failed += sum(1 for e in result.get("error") or () if e)
             run.compute_seconds = time.perf_counter() - t0
             if bar is not None:
                 bar.update(task, completed=run.computed, rate=f"{run.rate:.1f} variants/s")
+
+        # batches go to the cluster as they are planned (the workers start on the first
+        # while the client makes the keys of the next); finished ones are written meanwhile
+        batch = [first]
+        for item in plan:
+            batch.append(item)
+            if len(batch) == size:
+                future = client.submit(run_batch_columns, batch, pure=False, **payload)
+                index[future.key] = batch
+                finished.add(future)
+                batch = []
+                while finished.has_ready():
+                    collect(next(finished))
+        if batch:
+            future = client.submit(run_batch_columns, batch, pure=False, **payload)
+            index[future.key] = batch
+            finished.add(future)
+        run.skipped = len(rows) - len(values)
+        if bar is not None:
+            bar.update(task, total=len(values))
+        for future in finished:
+            collect(future)
         run.seconds = time.perf_counter() - t_start
         return run
     finally:

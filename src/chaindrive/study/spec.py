@@ -315,9 +315,23 @@ class Study:
         return canonical_hash(self.base)
 
     def key(self, inputs: dict[str, Any]) -> str:
-        """Identity of a variant: hash of the base, its inputs, the outputs and options."""
-        return canonical_hash({"base": self.base_hash, "inputs": inputs,
-                               "outputs": list(self.outputs), "simulation": self.simulation})
+        """Identity of a variant: hash of the base, its inputs, the outputs and options
+        (:func:`canonical_hash` of ``{"base", "inputs", "outputs", "simulation"}``; the
+        canonical text around the inputs is made once per study)."""
+        before, after = self._key_text
+        text = before + json.dumps(inputs, sort_keys=True, separators=(",", ":"), ensure_ascii=False,
+                                   default=str) + after
+        return hashlib.sha256(text.encode("utf-8")).hexdigest()
+
+    @cached_property
+    def _key_text(self) -> tuple[str, str]:
+        """The canonical JSON of a variant's key with a gap where its inputs go."""
+        mark = "\x00inputs\x00"
+        text = json.dumps({"base": self.base_hash, "inputs": mark, "outputs": list(self.outputs),
+                           "simulation": self.simulation}, sort_keys=True, separators=(",", ":"),
+                          ensure_ascii=False, default=str)
+        before, after = text.split(json.dumps(mark, ensure_ascii=False))
+        return before, after
 
     def variant_mapping(self, inputs: dict[str, Any]) -> dict:
         """The base project mapping with the variant's inputs set (a copy)."""

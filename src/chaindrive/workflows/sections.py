@@ -210,15 +210,15 @@ def loads_section(a: DriveAnalysis, fig: _Figures) -> Section | None:
     d = a.drive
     sec = Section("Loads and safety")
     sec.tables.append(Table(
-        "Chain tensions (F_max = K_s T / R + S_slack + q v² + m a_max)", ["quantity", "value", "unit", "basis"],
+        "Chain tensions (F_max = K_s T / R + S_slack + q v² + F_d)", ["quantity", "value", "unit", "basis"],
         [["effective pull K_s T / R", *_q(t, "effective_pull"), "torque over the pitch radius of the driving wheel"],
          ["slack-side tension", *_q(t, "slack"), t.slack_source],
          ["centrifugal tension q v²", *_q(t, "centrifugal"), "q v²"],
          ["tight-side tension", *_q(t, "tight"), "sum of the above"],
          ["peak chain acceleration", t.acceleration_peak, "m/s²", t.acceleration_source],
-         ["moving mass", *_q(t, "moving_mass"), "whole chain"],
-         ["inertia force m a_max", *_q(t, "dynamic"), "polygonal effect (Dolipiński et al.)"],
-         ["maximum tension", *_q(t, "maximum"), "tight + inertia"],
+         ["mass accelerated", *_q(t, "moving_mass"), "reduced to the chain"],
+         ["dynamic tension F_d", *_q(t, "dynamic"), "polygonal action: " + t.dynamic_source],
+         ["maximum tension", *_q(t, "maximum"), "tight + dynamic"],
          ["dynamic factor", t.dynamic_factor, "-", "maximum / tight"]]))
     n = len(t.wheel_names)
     shares = t.power_shares if t.power_shares is not None else np.zeros(n)
