@@ -39,7 +39,7 @@ def _run_claimed(project: Path, output: Path, pdf: bool, figures: bool, quiet: b
 
         with atomic_output_dir(output, force=force) as partial:  # moved into place when complete
             outcome = analyze(drive, partial, subtitle=f"Project file: {project}", pdf=pdf, figures=figures,
-                              progress=progress)
+                              progress=progress, parallel_figures=True)
         outcome.files = {k: output / Path(v).relative_to(partial) for k, v in outcome.files.items()}
     from ..workflows.display import check_limit_text, check_value_text
 

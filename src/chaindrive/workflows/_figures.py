@@ -1,10 +1,8 @@
 """Drawing the report's figures, in this process or shared with one forked helper (internal).
 
 A report's sections call :class:`Figures` for each figure they show, in a fixed order. Serial
-(the default), each figure is drawn when asked. Shared (``analyze(..., parallel_figures=True)``
-on Linux with two or more processors: a program that writes many reports; in a new process
-such as ``chaindrive analyze`` it gains nothing, both processes loading matplotlib's fonts
-and caches), a helper process
+(the default), each figure is drawn when asked. Shared (``chaindrive analyze`` on a machine
+with two or more processors, where the ``fork`` start method exists), a helper process
 forked from this one runs the same sections on the same analysis and the two processes
 claim the figures one by one from a shared table: each figure is drawn once, by whichever
 process reaches it first; the helper sends its PNGs back. A figure the helper could not
@@ -75,17 +73,18 @@ class FigureShare:
 
     @staticmethod
     def available() -> bool:
-        """Whether a helper can be forked here (Linux, two processors or more, not a daemon)."""
+        """Whether a helper can be forked here and would have a processor of its own."""
         import multiprocessing as mp
 
         try:
             cpus = len(os.sched_getaffinity(0))
         except (AttributeError, OSError):  # pragma: no cover - not Linux
             cpus = os.cpu_count() or 1
-        # measured (the roller report's six figures, in a program that has drawn before): the
-        # figures' wall time 0.35 s shared against 0.65 s alone, at load 3.5 on 2 cores; in a
-        # new process (chaindrive analyze) no gain: both processes load fonts and caches
-        return (cpus >= 2 and "fork" in mp.get_all_start_methods() and not mp.current_process().daemon
+        # a processor idle on average over the last minute. Measured on 2 cores (chaindrive
+        # analyze of the roller example, 15 pairs against drawing alone): wall 0.92x at load
+        # 1.4-1.7 (CPU +6 %), 0.86x at load 0.5; at load 3.3 no gain (1.03-1.07x)
+        idle = os.getloadavg()[0] < cpus
+        return (cpus >= 2 and idle and "fork" in mp.get_all_start_methods() and not mp.current_process().daemon
                 and sys.platform.startswith("linux"))
 
     def claim(self, index: int) -> bool:
