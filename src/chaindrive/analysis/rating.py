@@ -1,4 +1,4 @@
-"""The ANSI/ACA power rating of a drive's chain on its smallest toothed wheel."""
+"""The power rating of a drive's chain on its smallest toothed wheel, by its family's method (ANSI/ACA or ISO 10823)."""
 
 from __future__ import annotations
 
@@ -34,7 +34,10 @@ class DriveRating(Result):
 
 
 def drive_rating(drive: Drive) -> DriveRating | None:
-    """ANSI/ACA rating (Shigley eqs (17-32), (17-33), §17-5) of ``drive`` on its smallest toothed wheel.
+    """Power rating of ``drive``'s chain on its smallest toothed wheel by its family's method.
+
+    ANSI/ACA (Shigley eqs (17-32), (17-33), §17-5) or ISO 10823 (ISO 606 B series), as
+    :func:`chaindrive.rating.default_method` says.
 
     ``None`` for chains outside the method: round link chains, custom chains (crawler and
     track chains are not ANSI roller chains), more than 4 strands.
@@ -62,8 +65,8 @@ def rating_checks(drive: Drive, rating: DriveRating) -> tuple[Check, ...]:
     r = rating.rating
     design = drive.design_power()
     return (
-        Check(name="ANSI/ACA rated power >= design power", value=r.rated_power, limit=design, unit="W",
-              passed=bool(r.rated_power >= design), source="ACA; Shigley eqs (17-32), (17-33)",
+        Check(name="rated power >= design power", value=r.rated_power, limit=design, unit="W",
+              passed=bool(r.rated_power >= design), source=r.source,
               note=f"governed by {r.governing_limit.replace('_', '-')}"),
         Check(name="speed below the galling limit", value=r.angular_velocity, limit=r.galling_speed, unit="rad/s",
               passed=not r.galling_exceeded, relation="<=", source="ACA galling limit; Shigley §17-5",

@@ -241,7 +241,7 @@ def loads_section(a: DriveAnalysis, fig: _Figures) -> Section | None:
     if rating is not None:
         r = rating.rating
         sec.tables.append(Table(
-            "ANSI/ACA power rating on the smallest wheel (Shigley eqs (17-32), (17-33); galling §17-5)",
+            f"Power rating on the smallest wheel, method {r.method} ({r.source}; galling: Shigley §17-5)",
             ["quantity", "value", "unit"],
             [["wheel", rating.wheel, ""], ["teeth", r.teeth, "-"], ["speed", *_q(r, "angular_velocity")],
              ["link-plate limit", *_q(r, "link_plate")], ["roller-bushing limit", *_q(r, "roller_bushing")],
@@ -254,7 +254,7 @@ def loads_section(a: DriveAnalysis, fig: _Figures) -> Section | None:
 
             return rating_plot(r, operating=(r.angular_velocity, d.design_power()))
 
-        fig(sec, rating_figure, "ANSI/ACA rating curve of the chain with the design point", "rating.png")
+        fig(sec, rating_figure, f"Rating curve of the chain (method {r.method}) with the design point", "rating.png")
     sec.results = {"tensions": t.to_dict(), "rating": None if rating is None else rating.to_dict()}
     return sec
 
