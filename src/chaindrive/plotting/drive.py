@@ -220,10 +220,12 @@ def rating_plot(result: ChainRating | float, teeth: int | None = None, *, strand
         from ..rating import rating_constants
 
         plate_constant, roller_constant = rating_constants(r.chain, r.method)
+        method_label = "ISO 10823" if r.method == "iso10823" else "ANSI/ACA"
         name = name or r.chain
         if operating is None:
             operating = (r.angular_velocity, r.tension * r.chain_speed * S.multi_strand_factor(strands))
     else:
+        method_label = "ANSI/ACA"
         pitch = float(result)
         if teeth is None:
             raise TypeError("rating_plot needs teeth when given a pitch")
@@ -278,7 +280,7 @@ def rating_plot(result: ChainRating | float, teeth: int | None = None, *, strand
     ax.set_ylim(ymin, ymax)
     ax.set_xlabel("small-sprocket speed [rpm]")
     ax.set_ylabel("power, all strands [kW]")
-    ax.set_title(f"ANSI/ACA rating {name} ({teeth} teeth, {strands} strand{'s' if strands > 1 else ''}); "
+    ax.set_title(f"{method_label} rating {name} ({teeth} teeth, {strands} strand{'s' if strands > 1 else ''}); "
                  "lubrication A/B/C by chain speed", fontsize=10)
     ax.legend(fontsize=7, loc="lower left")
     ax.grid(True, which="both", lw=0.3)
