@@ -41,8 +41,9 @@ def _leaves(x, path=""):
 #: judged by its forced response, docs/vibration.md §6); the Campbell lines and the free
 #: spans' information pairs follow the same excitations (a roller chain's meshing left them,
 #: its unequal links z1 ω1/2 came in). The roller-bushing limit of a B-series chain (issue
-#: 19): rated by its family's method, ISO 10823, whose B-series roller constant is 22.9, not
-#: the ANSI 17 (docs/rating.md); the rated power (link plate) is unchanged.
+#: 19): rated by its family's method, ISO 10823, whose B-series roller constant is 21.85 on the
+#: standard's 19-tooth basis and tooth factor (19/z1)^1.08, not the ANSI 17 (docs/rating.md); the rated
+#: power (link plate) is unchanged.
 #: The dynamic load (issue 19): a roller chain's dynamic tension is the spring-mass model's, so the
 #: roller example's dynamic load, F_max, dynamic factor, moving mass and static safety moved
 #: (docs/design.md, "The dynamic load and the simulation").

@@ -171,3 +171,52 @@ def test_advice_at_every_door(api, capsys):
         "power": "11 kW", "speed": "1460 rpm", "driven_speed": "480 rpm", "driven": "varying_conveyor",
         "centre_distance": "600 mm"}))
     assert [a["name"] for a in p["advice"]] == names
+
+
+# ------------------------------------------------ the recommended drive passes every check
+
+def test_no_recommendation_in_the_galling_region(capsys):
+    """31 kW at 2900 rpm, ratio 5: every chain that carries it (20B-3, 36A-3) runs in the galling region
+    (Shigley §17-5, type C': the ratings do not apply there). The procedure recommends no drive that fails
+    a check: InfeasibleError naming the nearest chain and the check, and `select` exits 2 with that line."""
+    from chaindrive.errors import InfeasibleError
+
+    duty = Duty(31.13e3, 2900 * RPM, ratio=4.98, load_character="smooth")
+    with pytest.raises(InfeasibleError, match=r"passes every check: the nearest, 20B-3 \(23/115 teeth\), fails "
+                                              r"speed below the galling limit: 2900 rpm \(limit <= 1780 rpm\)"):
+        design_drive(duty)
+    assert main(["select", "-P", "31.13 kW", "-n", "2900 rpm", "-i", "4.98", "--load", "smooth"]) == 2
+    captured = capsys.readouterr()
+    assert captured.err.strip().count("\n") == 0 and "galling" in captured.err
+    assert "implausible" not in captured.err     # the candidates' own notes do not leak as warnings
+
+
+@pytest.mark.parametrize(("power", "rpm", "ratio", "centre"), [
+    (0.39e3, 480, 5.7, 1.5), (7.04e3, 720, 4.8, 0.8), (95.46e3, 720, 1.47, None), (6.91e3, 2900, 5.87, 1.5),
+    (31.13e3, 2900, 4.98, 1.5), (1.3e3, 2900, 5.74, None)])
+def test_recommended_passes_every_check_with_its_static_safety(power, rpm, ratio, centre):
+    """Generated duties: the recommended drive has every check computed and passed (its static safety
+    computed and met), or the procedure refuses the duty."""
+    from chaindrive.design.procedure import _failed
+    from chaindrive.errors import InfeasibleError
+
+    duty = Duty(power, rpm * RPM, ratio=ratio, load_character="moderate", centre_distance=centre)
+    try:
+        r = design_drive(duty)
+    except InfeasibleError as exc:
+        assert "passes every check" in str(exc) or "carries" in str(exc)
+        return
+    c = r.recommended
+    assert not _failed(c) and c.checks and all(x.passed is not False for x in c.checks)
+    assert c.static_safety is not None and c.static_safety >= c.required_static_safety
+    assert c.lubrication != "C'"
+
+
+def test_tooth_factor_reported_by_the_rating_method():
+    """A B-series candidate reports ISO 10823's f2 (its rating used it), an ANSI one Shigley's K_1."""
+    r = design_drive(DUTY)
+    by_chain = {c.chain: c for c in r.candidates}
+    iso = next(f for f in by_chain["12B-1"].factors if f.name == "tooth factor")
+    ansi = next(f for f in by_chain["12A-1"].factors if f.name == "tooth factor")
+    assert iso.symbol == "1/f_2" and iso.value == pytest.approx(1.0) and "ISO 10823" in iso.source
+    assert ansi.symbol == "K_1" and ansi.value == pytest.approx((19 / 17) ** 1.5) and "17-22" in ansi.source

@@ -138,9 +138,10 @@ def test_b_series_roller_fit_point_reproduced():
     r = _rate(chain, 17, rpm)
     assert r.rated_power / 1e3 == pytest.approx(table_kw, rel=1e-3)
     assert r.governing_limit == "roller_bushing"
-    # the derivation of K_r: the roller-bushing branch (eq. 17-33) solved for the constant
-    base = float(ansi_roller_bushing_power(17, rpm * RPM, 0.01905, 1.0))
-    assert table_kw * 1e3 / base == pytest.approx(B_SERIES_ROLLER_CONSTANT, rel=2e-3)
+    # the derivation of K_r: the 17-tooth entry on the 19-tooth basis (ISO 10823's f2, Bhandari's
+    # Table 14.5), the roller-bushing branch (eq. 17-33) on 19 teeth solved for the constant
+    base = float(ansi_roller_bushing_power(19, rpm * RPM, 0.01905, 1.0))
+    assert table_kw * 1e3 * (19 / 17) ** 1.08 / base == pytest.approx(B_SERIES_ROLLER_CONSTANT, rel=1e-3)
     # and the fitted plate branch stays above it there, so 12B is roller-limited as the fit assumed
     assert r.link_plate > 1.08 * r.roller_bushing
 
@@ -165,10 +166,10 @@ def test_bhandari_a_series_scatter(chain, rpm, table_kw):
 @pytest.mark.parametrize(("chain", "rpm", "kw", "limit"), [
     ("06B-1", 2000, 3.9383, "link_plate"),
     ("08B-1", 1000, 4.9952, "link_plate"),
-    ("12B-1", 1460, 20.1395, "roller_bushing"),
+    ("12B-1", 1460, 19.2161, "roller_bushing"),
     ("16B-1", 300, 13.1983, "link_plate"),
     ("16B-1", 1000, 39.0039, "link_plate"),
-    ("16B-1", 1400, 26.9984, "roller_bushing"),
+    ("16B-1", 1400, 25.7605, "roller_bushing"),
     ("20B-1", 500, 40.0342, "link_plate"),
     ("16B-2", 700, 48.1000, "link_plate"),
 ])
@@ -196,30 +197,41 @@ def test_registered_and_default():
 def test_tooth_factor_against_bhandari_table_14_5(teeth, factor):
     """Bhandari Table 14.5 tooth correction on his 17-tooth basis (Ex. 14.7 data14_7.sci: 1.11 at 19 teeth;
     Ex. 14.3 data14_3.sci and Ex. 14.6 data14_6.sci: 1.26 at 21; Jindal Ex. 30-3 prints the same 1.26) against
-    the link-plate exponent, (z/17)^1.08 = iso_tooth_factor(z) / iso_tooth_factor(17): measured +1.5 %, -0.3 %;
+    ISO 10823's tooth factor, (z/17)^1.08 = iso_tooth_factor(z) / iso_tooth_factor(17): measured +1.5 %, -0.3 %;
     within 2 % (the factors' two decimals are 0.4 %; the rest is the table's own smoothing)."""
     ours = float(iso_tooth_factor(teeth)) / float(iso_tooth_factor(17))
     assert ours == pytest.approx((teeth / 17) ** 1.08, rel=1e-12)
     assert abs(ours / factor - 1) < 0.02
 
 
-def test_tooth_factor_limits():
-    assert float(iso_tooth_factor(19)) == 1.0 and float(iso_tooth_factor(19, "roller_bushing")) == 1.0
-    r19, r25 = _rate("16B-1", 19, 200), _rate("16B-1", 25, 200)       # plate branch governs
-    assert r25.rated_power / r19.rated_power == pytest.approx(float(iso_tooth_factor(25)), rel=1e-12)
-    h19, h25 = _rate("16B-1", 19, 3000), _rate("16B-1", 25, 3000)     # roller branch governs
-    assert h25.roller_bushing / h19.roller_bushing == pytest.approx(float(iso_tooth_factor(25, "roller_bushing")),
-                                                                    rel=1e-12)
+def test_tooth_factor_is_the_standards_f2():
+    """ISO 10823:2004 4.2: P_c = f1 f2 P with f2 = (19/z1)^1.08, compared with the 19-tooth chart; the same
+    factor in GB/T 18150 calculators (f2(25) = 0.74 printed to two decimals) and KISSsoft's DIN ISO 10823
+    module. One factor for the whole line: both branches scale by it, so the governing branch does not
+    depend on the teeth; ANSI/ACA scales the roller branch by (z/19)^1.5 instead."""
+    assert float(iso_tooth_factor(19)) == 1.0
+    assert round(1 / float(iso_tooth_factor(25)), 2) == 0.74
+    for rpm in (200, 3000):                                             # plate branch, roller branch
+        r19, r25 = _rate("16B-1", 19, rpm), _rate("16B-1", 25, rpm)
+        assert r25.rated_power / r19.rated_power == pytest.approx(float(iso_tooth_factor(25)), rel=1e-12)
+        assert r25.governing_limit == r19.governing_limit
+    a19, a25 = _rate("16A-1", 19, 3000, method="ansi"), _rate("16A-1", 25, 3000, method="ansi")
+    assert a25.roller_bushing / a19.roller_bushing == pytest.approx((25 / 19) ** 1.5, rel=1e-12)
+    # on 19 teeth the ISO method is the ANSI/ACA law with the series' constants (A series: equal)
+    assert _rate("16A-1", 19, 3000, method="iso10823").rated_power == pytest.approx(a19.rated_power, rel=1e-12)
 
 
 def test_b_series_branches_against_the_aca_forms():
-    """Plate branch = eq. (17-32) times 0.00434/0.004; roller branch = eq. (17-33) times 22.9/17."""
+    """Plate branch = eq. (17-32) times 0.00434/0.004 (any teeth: its tooth exponent is the standard's
+    1.08); roller branch = eq. (17-33) on 19 teeth times 21.85/17, then the tooth factor."""
     w = 800 * RPM
     iso, ansi = _rate("16B-1", 21, 800), _rate("16B-1", 21, 800, method="ansi")
     assert iso.link_plate == pytest.approx(float(ansi_link_plate_power(21, w, 0.0254, 0.00434)), rel=1e-12)
     assert iso.link_plate / ansi.link_plate == pytest.approx(0.00434 / 0.004, rel=1e-12)
-    assert iso.roller_bushing / ansi.roller_bushing == pytest.approx(22.9 / 17.0, rel=1e-12)
-    assert iso10823_constants("16B-2") == (0.00434, 22.9) and iso10823_constants("06C-1") == (0.004, 29.0)
+    assert iso.roller_bushing == pytest.approx(float(ansi_roller_bushing_power(19, w, 0.0254, 21.85))
+                                               * (21 / 19) ** 1.08, rel=1e-12)
+    assert iso.roller_bushing / ansi.roller_bushing == pytest.approx(21.85 / 17.0 * (21 / 19) ** -0.42, rel=1e-12)
+    assert iso10823_constants("16B-2") == (0.00434, 21.85) and iso10823_constants("06C-1") == (0.004, 29.0)
 
 
 def test_low_and_high_speed_limits():
@@ -261,12 +273,12 @@ def test_errors():
         chain_rating("16B-1", 19, 10.0, power=float("nan"))
     with pytest.raises(InputError, match="angular_velocity must be a single number"):
         chain_rating("16B-1", 19, np.array([1.0, 2.0]))
-    with pytest.raises(UnknownNameError, match="unknown regime 'plate'; valid: 'link_plate', 'roller_bushing'"):
-        iso_tooth_factor(19, "plate")
     with pytest.raises(UnknownNameError, match="unknown rating method 'iso'; valid: 'ansi', 'iso10823'"):
         chain_rating("16B-1", 19, 10.0, method="iso")
     with pytest.raises(InputError, match="teeth"):
         iso_tooth_factor(0)
+    with pytest.warns(FutureWarning, match=r"regime=\.\.\.\) is deprecated and ignored"):
+        assert float(iso_tooth_factor(25, "roller_bushing")) == float(iso_tooth_factor(25))
 
 
 # ---------------------------------------------------------------- properties
@@ -308,7 +320,7 @@ def test_rating_constants_and_chart_follow_the_method():
     from chaindrive.plotting.drive import rating_plot
     from chaindrive.rating import rating_constants
 
-    assert rating_constants("16B-1", "iso10823") == (0.00434, 22.9)
+    assert rating_constants("16B-1", "iso10823") == (0.00434, 21.85)
     assert rating_constants("16B-1", "ansi") == (0.004, 17.0)
     with pytest.raises(UnknownNameError, match="unknown rating method 'iso'"):
         rating_constants("16B-1", "iso")

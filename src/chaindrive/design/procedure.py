@@ -284,8 +284,10 @@ def _laid_out(rated: _Rated, duty: Duty, factors: tuple[Factor, ...], ks: float,
         text = text.replace("[chain]", f"required_static_safety = {required:g}\n\n[chain]", 1)
     from ..drive.project import parse_project
 
-    drive = parse_project(text, filename="design.toml")
-    notes = list(r.warnings)
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        drive = parse_project(text, filename="design.toml")   # e.g. an implausible chain speed: a note of the row
+    notes = list(dict.fromkeys([*r.warnings, *(str(w.message) for w in caught)]))
     checks: tuple[Check, ...] = ()
     static_value, maximum = None, float("nan")
     with warnings.catch_warnings():
@@ -307,9 +309,7 @@ def _laid_out(rated: _Rated, duty: Duty, factors: tuple[Factor, ...], ks: float,
     cand_factors = factors + (
         Factor("multi-strand factor", "K_2", multi_strand_factor(chain.strands),
                "ACA; Shigley, 10th ed., Table 17-23 (ISO 10823:2004: the same 1, 1.7, 2.5)"),
-        Factor("tooth factor", "K_1", (z1 / 17.0) ** (1.5 if r.governing_limit == "roller_bushing" else 1.08),
-               "Shigley, 10th ed., Table 17-22 (relative to the 17-tooth column of the ANSI tables)",
-               note=f"{z1} teeth: {why}"),
+        _tooth_factor(r.method, r.governing_limit, z1, why),
     )
     return DesignCandidate(
         chain=chain.name, names=(chain.name, *twins), family=chain.family, pitch=chain.pitch,
@@ -320,6 +320,46 @@ def _laid_out(rated: _Rated, duty: Duty, factors: tuple[Factor, ...], ks: float,
         static_safety=static_value, required_static_safety=drive.static_safety_required,
         maximum_tension=maximum, teeth_rule=why, factors=cand_factors,
         checks=checks, advice=drive_advice(duty, r), notes=tuple(notes), project_text=text)
+
+
+_MESSAGE_UNITS = {"rad/s": (1.0 / angular_velocity_to_rpm(1.0), "rpm"), "W": (1e3, "kW"), "N": (1e3, "kN"),
+                  "Pa": (1e6, "MPa"), "rad": (math.pi / 180, "°")}
+
+
+def _failed(candidate: DesignCandidate) -> list[str]:
+    """The checks a candidate fails, as ``name: value (limit ...)`` texts (empty: it passes every check)."""
+    def text(x: float, unit: str) -> str:
+        scale, shown = _MESSAGE_UNITS.get(unit, (1.0, "" if unit in ("1", "-", "") else unit))
+        return f"{x / scale:.4g} {shown}".strip()
+
+    out = []
+    if not candidate.checks:   # the analysis could not run (e.g. no mass per length): nothing is verified
+        if candidate.lubrication == "C'":
+            out.append("speed below the galling limit (galling region, type C')")
+        out.append("static safety F_B / F_max: not computed (" + "; ".join(
+            n.removeprefix("static safety not computed: ") for n in candidate.notes
+            if n.startswith("static safety not computed")) + ")")
+    for c in candidate.checks:
+        if c.passed is not False:
+            continue
+        value = "not computed" if c.value is None else text(c.value, c.unit)
+        if isinstance(c.limit, tuple):
+            limit = f"{text(c.limit[0], c.unit)} … {text(c.limit[1], c.unit)}"
+        else:
+            limit = "" if c.limit is None else f"{c.relation} {text(c.limit, c.unit)}"
+        out.append(f"{c.name}: {value}" + (f" (limit {limit})" if limit else ""))
+    return out
+
+
+def _tooth_factor(method: str, governing: str, teeth: int, why: str) -> Factor:
+    """The tooth factor of the candidate's rating method, as the rating applied it."""
+    if method == "iso10823":
+        return Factor("tooth factor", "1/f_2", (teeth / 19.0) ** 1.08,
+                      "ISO 10823:2004, 4.2: f_2 = (19/z_1)^1.08 on the 19-tooth chart (one factor for both branches)",
+                      note=f"{teeth} teeth: {why}")
+    return Factor("tooth factor", "K_1", (teeth / 17.0) ** (1.5 if governing == "roller_bushing" else 1.08),
+                  "Shigley, 10th ed., Table 17-22 (relative to the 17-tooth column of the ANSI tables)",
+                  note=f"{teeth} teeth: {why}")
 
 
 #: Relative margin of the catalogue screen: a chain whose screened rating lies within it
@@ -498,6 +538,20 @@ def design_drive(duty: Duty, *, teeth_driving: int | None = None, family: str | 
         for c in rows:
             smallest.setdefault(key(c), (c.lubrication == "C'", c.pitch))
         rows = [c for c in rows if smallest[key(c)] == (c.lubrication == "C'", c.pitch)]
+    # the recommended drive passes every check (rated power, galling, wrap, static safety computed
+    # and met): the first such row, moved to the front; none (in practice: every chain that carries
+    # the duty runs in the galling region, type C'): no drive the procedure could defend
+    passing = [c for c in rows if not _failed(c)]
+    if not passing:
+        best = rows[0]
+        more = "" if 4 in allowed else "more strands (up to 4), "
+        raise InfeasibleError(
+            f"no catalogue roller chain carries {duty.power * ks / 1e3:g} kW (design power) at "
+            f"{angular_velocity_to_rpm(duty.speed):g} rpm and passes every check: the nearest, {best.chain} "
+            f"({best.driving_teeth}/{best.driven_teeth} teeth), fails {'; '.join(_failed(best))}; "
+            f"try {more}a lower speed, or submit the duty to the chain maker "
+            "(beyond the galling limit the ACA and ISO 10823 ratings do not apply: Shigley §17-5, type C')")
+    rows = [passing[0], *(c for c in rows if c is not passing[0])]
     rows = rows[:limit] if limit else rows
     return DesignResult(duty=duty, factors=factors, recommended=rows[0], candidates=tuple(rows))
 

@@ -207,8 +207,11 @@ def _ansi_rating(chain: Chain | str, teeth: int, angular_velocity: float, *,
 
 
 def _rate(ch: Chain, teeth, angular_velocity, power, *, constants, method: str, source: str,
-          notes: list[str]) -> ChainRating:
-    """Both fatigue limits, strands, galling and lubrication of one chain (shared by the methods)."""
+          notes: list[str], basis_teeth: int | None = None) -> ChainRating:
+    """Both fatigue limits, strands, galling and lubrication of one chain (shared by the methods).
+
+    ``basis_teeth``: the branches are evaluated on that tooth count and scaled to ``teeth`` by
+    ``(teeth/basis)^1.08`` (ISO 10823's tooth factor); ``None``: on ``teeth`` (ACA)."""
     label = "ANSI/ACA" if method == "ansi" else "ISO 10823"
     if not ch.is_roller_chain:
         raise InputError(f"chain {ch.name} is a round link chain: the {label} rating holds for roller "
@@ -223,8 +226,10 @@ def _rate(ch: Chain, teeth, angular_velocity, power, *, constants, method: str, 
         warnings.simplefilter("always", ValidityRangeWarning)
         kp, kr = constants(ch.name)
         k2 = multi_strand_factor(ch.strands)
-        h1 = float(ansi_link_plate_power(z, w, ch.pitch, kp))
-        h2 = float(ansi_roller_bushing_power(z, w, ch.pitch, kr))
+        zb = z if basis_teeth is None else basis_teeth
+        scale = 1.0 if basis_teeth is None else (z / basis_teeth) ** 1.08
+        h1 = scale * float(ansi_link_plate_power(zb, w, ch.pitch, kp))
+        h2 = scale * float(ansi_roller_bushing_power(zb, w, ch.pitch, kr))
         v = mean_chain_speed(z, ch.pitch, w)
         h3 = float(galling_power(ch.pitch, z, w))
         tension = (min(h1, h2) if design is None else design / k2) / v
@@ -253,7 +258,8 @@ def chain_rating(chain: Chain | str, teeth: int, angular_velocity: float, *,
                  power: float | None = None, method: str | None = None) -> ChainRating:
     r"""Rating of a roller chain on its small sprocket by the method of its family (or ``method``).
 
-    .. math:: P_r = K_2 \min(H_1, H_2)\ \text{(ANSI/ACA; ISO 10823 with the series' constants)}
+    .. math:: P_r = K_2 \min(H_1, H_2)\ \text{(ANSI/ACA)},\qquad
+              P_r = \frac{K_2}{f_2} \min\big(H_1(19), H_2(19)\big)\ \text{(ISO 10823)}
 
     Parameters
     ----------
@@ -301,7 +307,8 @@ def _iso10823_rating(chain: Chain | str, teeth: int, angular_velocity: float, *,
                      power: float | None = None) -> ChainRating:
     r"""ISO 10823 rating of an ISO 606 roller chain (A or B series) on its small sprocket.
 
-    .. math:: P_r = K_2 \min(P_1, P_2),\qquad (K_p, K_r)\ \text{of the chain's ISO 606 series}
+    .. math:: P_r = \frac{K_2}{f_2} \min\big(P_1(19), P_2(19)\big),\qquad f_2 = (19/z_1)^{1.08},
+              \qquad (K_p, K_r)\ \text{of the chain's ISO 606 series}
 
     Parameters
     ----------
@@ -330,7 +337,9 @@ def _iso10823_rating(chain: Chain | str, teeth: int, angular_velocity: float, *,
 
     Notes
     -----
-    Branch constants :func:`~chaindrive.rating.iso10823.iso10823_constants`; galling
+    Branch constants :func:`~chaindrive.rating.iso10823.iso10823_constants`, evaluated on
+    the charts' 19 teeth and scaled by the standard's tooth factor
+    (:func:`~chaindrive.rating.iso10823.iso_tooth_factor`); galling
     check and lubrication regions as in the ANSI method (the ISO charts' own region
     boundaries were not available); docs/rating.md, "ISO 10823".
 
@@ -346,7 +355,13 @@ def _iso10823_rating(chain: Chain | str, teeth: int, angular_velocity: float, *,
     (18.15, 'roller_bushing', 'iso10823')
     """
     from ..chains import get
-    from .iso10823 import B_SERIES_NOTE, ISO10823_SOURCE, is_b_series, iso10823_constants
+    from .iso10823 import (
+        B_SERIES_NOTE,
+        ISO10823_SOURCE,
+        REFERENCE_TEETH,
+        is_b_series,
+        iso10823_constants,
+    )
 
     ch = get(chain)
     if ch.family == "custom":
@@ -354,7 +369,7 @@ def _iso10823_rating(chain: Chain | str, teeth: int, angular_velocity: float, *,
                          "B-series chain (use method='ansi' for custom proportions)")
     notes = [B_SERIES_NOTE] if is_b_series(ch.name) else []
     return _rate(ch, teeth, angular_velocity, power, constants=iso10823_constants, method="iso10823",
-                 source=ISO10823_SOURCE, notes=notes)
+                 source=ISO10823_SOURCE, notes=notes, basis_teeth=REFERENCE_TEETH)
 
 
 #: Rating methods by name: ``f(chain, teeth, angular_velocity, power) -> ChainRating``.
@@ -406,7 +421,7 @@ def rating_constants(name: str, method: str = "ansi") -> tuple[float, float]:
     Examples
     --------
     >>> rating_constants("16B-1", "iso10823"), rating_constants("16B-1", "ansi")
-    ((0.004, 22.9), (0.004, 17.0))
+    ((0.00434, 21.85), (0.004, 17.0))
     """
     from .iso10823 import iso10823_constants
 
