@@ -220,3 +220,21 @@ def test_tooth_factor_reported_by_the_rating_method():
     ansi = next(f for f in by_chain["12A-1"].factors if f.name == "tooth factor")
     assert iso.symbol == "1/f_2" and iso.value == pytest.approx(1.0) and "ISO 10823" in iso.source
     assert ansi.symbol == "K_1" and ansi.value == pytest.approx((19 / 17) ** 1.5) and "17-22" in ansi.source
+
+
+def test_centre_distance_advice_outside_30_to_80_pitches():
+    """ISO 10823:2004 10.1 (30-50 pitches) and clause 8 (at most 80): a 1.3 kW drive asked for 1.5 m gets
+    a small chain at 188 pitches, with the advice to support the span or take a larger pitch; the default
+    (40 pitches) gets none."""
+    long = design_drive(Duty(1.3e3, 2900 * RPM, ratio=5.74, load_character="moderate", centre_distance=1.5))
+    adv = {a.name: a for a in long.recommended.advice}
+    c = long.recommended
+    assert adv["centre distance above 80 pitches"].value == pytest.approx(c.centre_distance / c.pitch)
+    assert "guide or an idler" in adv["centre distance above 80 pitches"].note
+    assert "clause 8" in adv["centre distance above 80 pitches"].source
+    default = design_drive(Duty(1.3e3, 2900 * RPM, ratio=5.74, load_character="moderate"))
+    assert not any(a.name.startswith("centre distance") for a in default.recommended.advice)
+    short = design_drive(Duty(11e3, 1460 * RPM, ratio=3.0, load_character="moderate", centre_distance=0.3))
+    names = [a.name for a in short.recommended.advice]
+    assert ("centre distance below 30 pitches" in names) == (short.recommended.centre_distance
+                                                             / short.recommended.pitch < 30)

@@ -13,6 +13,10 @@ value that triggers it, the published limit, the source and, in ``note``, what t
   Bearing Co. table; Shigley Table 17-20), above what the site provides;
 * **a dusty or abrasive environment** -- the ratings assume clean, lubricated chains
   (ISO 10823:2004; ACA): enclosed drive or a larger service margin;
+* **the centre distance in pitches** outside 30 ... 80 (ISO 10823:2004, 10.1: 30-50
+  pitches; clause 8: at most 80 pitches without support) -- above: a guide or idler under
+  the long span, or a larger pitch; below: fewer teeth in mesh and more articulations per
+  metre: a longer centre distance or a smaller pitch;
 * **hours per day** -- the rating life (15 000 h, ACA) in years at the duty's hours.
 """
 
@@ -23,10 +27,13 @@ from ..rating import ChainRating
 from .duty import Duty
 from .policy import MINIMUM_TEETH_BY_REGION, TEETH_SOURCES
 
-__all__ = ["drive_advice", "RATING_LIFE_HOURS"]
+__all__ = ["drive_advice", "RATING_LIFE_HOURS", "CENTRE_PITCHES"]
 
 #: Rating life of the ANSI/ACA and ISO 10823 power ratings [h].
 RATING_LIFE_HOURS = 15000.0
+#: Centre distance range without advice [pitches] (ISO 10823:2004, 10.1: 30-50; clause 8: at most 80).
+CENTRE_PITCHES = (30.0, 80.0)
+_CENTRE_SOURCE = "ISO 10823:2004, 10.1 (30-50 pitches) and clause 8 (maximum centre distance, 80 pitches)"
 _LUBRICATION_ORDER = {"A": 0, "B": 1, "C": 2, "C'": 2}
 _LUBRICATION_SOURCE = ("McGuire Bearing Co. lubrication table by chain speed; Shigley, 10th ed., "
                        "Table 17-20 (types A, B, C)")
@@ -37,7 +44,8 @@ def _info(name: str, value: float | None, limit: float | None, unit: str, source
                  relation="info")
 
 
-def drive_advice(duty: Duty, rating: ChainRating, *, smaller_pitch: str | None = None) -> tuple[Check, ...]:
+def drive_advice(duty: Duty, rating: ChainRating, *, smaller_pitch: str | None = None,
+                 centre_pitches: float | None = None) -> tuple[Check, ...]:
     """Advice for one rated chain under ``duty`` (information checks with sources).
 
     Parameters
@@ -47,6 +55,8 @@ def drive_advice(duty: Duty, rating: ChainRating, *, smaller_pitch: str | None =
         The rating of the chain on the small sprocket at the design power.
     smaller_pitch : str, optional
         A smaller-pitch multi-strand chain that carries the duty (named in the advice).
+    centre_pitches : float, optional
+        The drive's centre distance in pitches [-] (advice outside :data:`CENTRE_PITCHES`).
 
     Returns
     -------
@@ -93,6 +103,15 @@ def drive_advice(duty: Duty, rating: ChainRating, *, smaller_pitch: str | None =
                          "ISO 10823:2004 and ACA ratings: clean, properly lubricated chains",
                          f"a {duty.environment} environment shortens the wear life the rating assumes: "
                          "enclose and lubricate the drive or choose a larger margin"))
+    low, high = CENTRE_PITCHES
+    if centre_pitches is not None and centre_pitches > high:
+        out.append(_info("centre distance above 80 pitches", centre_pitches, high, "1", _CENTRE_SOURCE,
+                         f"{centre_pitches:.0f} pitches: support the long span on a guide or an idler, or choose "
+                         "a larger pitch"))
+    elif centre_pitches is not None and centre_pitches < low:
+        out.append(_info("centre distance below 30 pitches", centre_pitches, low, "1", _CENTRE_SOURCE,
+                         f"{centre_pitches:.0f} pitches: each link articulates often and the wrap on the small "
+                         "sprocket shrinks: a longer centre distance or a smaller pitch"))
     years = RATING_LIFE_HOURS / (duty.hours_per_day * 365.0)
     out.append(_info("rating life at the duty's hours", years * 365.0 * 24.0 * 3600.0, None, "s",
                      "ACA and ISO 10823:2004 ratings: 15 000 h",

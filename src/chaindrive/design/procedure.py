@@ -302,8 +302,6 @@ def _laid_out(rated: _Rated, duty: Duty, factors: tuple[Factor, ...], ks: float,
             if static.value is not None and static.passed is False:
                 return None
             static_value, maximum, checks = static.value, analysis.loads.maximum, analysis.checks
-    if duty.centre_distance is not None and not 30 <= a / chain.pitch <= 80:
-        notes.append(f"centre distance {a / chain.pitch:.0f} pitches (ISO 10823: 30-50, at most 80)")
     from ..rating.ansi import multi_strand_factor
 
     cand_factors = factors + (
@@ -319,7 +317,7 @@ def _laid_out(rated: _Rated, duty: Duty, factors: tuple[Factor, ...], ks: float,
         chain_speed=r.chain_speed, lubrication=r.lubrication, lubrication_method=r.lubrication_method,
         static_safety=static_value, required_static_safety=drive.static_safety_required,
         maximum_tension=maximum, teeth_rule=why, factors=cand_factors,
-        checks=checks, advice=drive_advice(duty, r), notes=tuple(notes), project_text=text)
+        checks=checks, advice=drive_advice(duty, r, centre_pitches=exact / chain.pitch), notes=tuple(notes), project_text=text)
 
 
 _MESSAGE_UNITS = {"rad/s": (1.0 / angular_velocity_to_rpm(1.0), "rpm"), "W": (1e3, "kW"), "N": (1e3, "kN"),
