@@ -77,6 +77,25 @@ def test_studio_answer(api):
     assert d.exact_centre_distance == pytest.approx(c.centre_distance, abs=1e-9)
 
 
+@pytest.mark.parametrize(("power", "rpm", "driven", "machine", "teeth"), [
+    (30.64, 1800, 473, "varying_conveyor", ""), (3.65, 480, 107, "uniform_conveyor", "25"),
+    (71.06, 300, 50, "uniform_conveyor", "25")])
+def test_studio_blank_centre_distance_is_the_procedures_default(power, rpm, driven, machine, teeth):
+    """A blank centre distance in the studio (roller) is the procedure's default, 40 pitches of each chain,
+    as `select` and the API without --centre-distance (generated duties that the studio refused before)."""
+    from chaindrive.web.design import design_from_state, normalise_state
+
+    duty = Duty(power * 1e3, rpm * RPM, driven_speed=driven * RPM, driven_machine=machine)
+    c = design_drive(duty, teeth_driving=int(teeth) if teeth else None).recommended
+    d, errors = design_from_state(normalise_state({
+        "power": f"{power} kW", "speed": f"{rpm} rpm", "driven_speed": f"{driven} rpm", "driver": "electric_motor",
+        "driven": machine, "hours_per_day": "8", "centre_distance": "", "teeth_driving": teeth}))
+    assert errors == {}
+    assert (d.chain.name, d.teeth_driving, d.teeth_driven, d.links) == (c.chain, c.driving_teeth, c.driven_teeth,
+                                                                        c.links)
+    assert d.exact_centre_distance == pytest.approx(c.centre_distance, abs=1e-9)
+
+
 def test_study_answer(api, tmp_path):
     from chaindrive.study.run import design_outputs
 

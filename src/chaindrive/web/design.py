@@ -238,7 +238,7 @@ def _teeth(state: dict[str, str], errors: dict[str, str], ratio: float | None,
 
 @lru_cache(maxsize=128)
 def _roller_design(power: float, speed: float, ratio: float, service_factor: float | None, driver: str,
-                   driven: str, hours: float, centre: float, teeth: int | None) -> Any:
+                   driven: str, hours: float, centre: float | None, teeth: int | None) -> Any:
     """The design procedure's answer for the form's duty (cached by the duty)."""
     from ..design import Duty, design_drive
 
@@ -388,8 +388,12 @@ def design_from_state(state: dict[str, str]) -> tuple[Design | None, dict[str, s
     required = None
     if state["required_static_safety"].strip():
         required = _number(state, "required_static_safety", errors)
-    centre = _number(state, "centre_distance", errors)
-    if (power is None or speed is None or ratio is None or ks is None or hours is None or centre is None
+    # a roller drive may leave the centre distance blank: the design procedure's default, 40 pitches
+    # of each chain (ISO 10823: 30-50), as `select` and the API
+    default_centre = kind == "roller" and not state["centre_distance"].strip()
+    centre = None if default_centre else _number(state, "centre_distance", errors)
+    if (power is None or speed is None or ratio is None or ks is None or hours is None
+            or (centre is None and not default_centre)
             or (kind == "link" and (z1 is None or z2 is None)) or errors):
         return None, errors
     candidates: list[dict] = []
@@ -411,7 +415,7 @@ def design_from_state(state: dict[str, str]) -> tuple[Design | None, dict[str, s
     chain_name = state["chain"].strip()
     if not chain_name:
         if not candidates:
-            if "too large for the centre distance" in note:
+            if "too large for the centre distance" in note and centre is not None:
                 errors["centre_distance"] = f"{centre * 1e3:.1f} mm is too short: {note}"
             else:
                 errors["chain"] = note or "no catalogue chain carries this duty; give a chain name"
@@ -431,6 +435,10 @@ def design_from_state(state: dict[str, str]) -> tuple[Design | None, dict[str, s
     except ChainDriveError as exc:
         errors["chain"] = str(exc)
         return None, errors
+    if centre is None:   # blank (roller): the procedure's centre distance for its chain, else 40 pitches
+        from ..design.procedure import DEFAULT_CENTRE_PITCHES
+
+        centre = chosen["centre_distance"] if chosen is not None else DEFAULT_CENTRE_PITCHES * chain.pitch
     if kind == "link" and not chain.is_link_chain:
         errors["chain"] = f"{chain.name} is a roller chain; the link-chain design needs a DIN 22252 chain"
         return None, errors
