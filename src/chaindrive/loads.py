@@ -313,9 +313,11 @@ def dynamic_tension(moving_mass: ArrayLike, acceleration: ArrayLike) -> FloatOrA
 
 #: Damping ratio ``ζ`` of the driven wheel's spring-type vibration on the chain spans [-]
 #: used by :func:`polygonal_dynamic_tension` in the analysis: light damping (bearings,
-#: friction of the rollers in their seats). An assumed value, not a measurement: the
-#: comparison with the simulation (docs/design.md, "Dynamic load") shows F_max within
-#: 10 % of the simulated peaks for ζ = 0.05…0.2.
+#: friction of the rollers in their seats). An assumed value, not a measurement: with
+#: ζ = 0.05…0.2 F_max of the roller example is 1.08…0.97 of the simulated peak, of the
+#: 10B-2 drive of issue 19 1.36…0.91 (its ω_n is near twice the tooth frequency). The
+#: simulation's own wheel mode rings at ζ ≈ 0.002–0.006 without the roller–tooth friction
+#: and 0.17–0.23 with it (docs/design.md, "The dynamic load and the simulation").
 POLYGONAL_DAMPING_RATIO = 0.1
 
 

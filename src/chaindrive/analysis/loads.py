@@ -163,6 +163,14 @@ def polygonal_spring_mass(drive: Drive, layout: DriveLayout) -> tuple[int, float
     .. math:: m = \frac{J_j}{R_j^2} + q R_j θ_j + \frac{q (l_{j-1} + l_j)}{3}, \qquad
               k = EA \left(\frac{1}{l_{j-1}} + \frac{1}{l_j}\right)
 
+    Known limits (measured against the simulation, docs/design.md, "The dynamic load and the
+    simulation"): the slack span sags and holds the wheel with Ernst's stiffness
+    ``12 T³/(w² l³)`` (1e4–1e5 N/m in the examples), not ``EA/l``; the tight span's sag (statically) and
+    the seats (dynamically) soften it further, so the simulation's driven side is 2.5–3.2 times
+    softer than ``k`` dynamically (natural frequency 1.6–1.8 times lower). ``k`` is kept as it is: the
+    spring–mass ``F_d`` agrees with the simulated peaks on the acceptance drives through
+    this stiffness, and a softer spring alone does not make it agree elsewhere.
+
     ``None`` where the model does not apply (then ``m a_max`` with the whole chain): round
     link chains and conveyors, a guide on the driving wheel (not free entry), a chain
     without mass per length, a load not taken off at the wheel the tight span leaves (an
