@@ -257,3 +257,15 @@ def test_centre_distance_advice_outside_30_to_80_pitches():
     names = [a.name for a in short.recommended.advice]
     assert ("centre distance below 30 pitches" in names) == (short.recommended.centre_distance
                                                              / short.recommended.pitch < 30)
+
+
+def test_refusal_names_the_remedy_of_the_failed_check():
+    """7.34 kW at 720 rpm, ratio 5.93, on 400 mm: every adequate chain wraps the small sprocket by less than
+    120°: the refusal names the check and the remedy for it (not the galling one)."""
+    from chaindrive.errors import InfeasibleError
+
+    duty = Duty(7.34e3, 720 * RPM, ratio=5.93, load_character="moderate", centre_distance=0.4)
+    with pytest.raises(InfeasibleError, match=r"fails wrap on the driving wheel: 108.1 ° \(limit >= 120 °\); try a "
+                                              r"longer centre distance") as err:
+        design_drive(duty)
+    assert "galling" not in str(err.value)

@@ -349,6 +349,23 @@ def _failed(candidate: DesignCandidate) -> list[str]:
     return out
 
 
+def _remedies(failed: list[str], four_strands: bool) -> str:
+    """What to try when the nearest candidate fails these checks (texts of :func:`_failed`)."""
+    out = []
+    if any(f.startswith("speed below the galling limit") for f in failed):
+        out.append(("" if four_strands else "more strands (up to 4), ") + "a lower speed, or submit the duty to "
+                   "the chain maker (beyond the galling limit the ACA and ISO 10823 ratings do not apply: "
+                   "Shigley §17-5, type C')")
+    if any(f.startswith("wrap") for f in failed):
+        out.append("a longer centre distance, a smaller ratio per stage or an idler for at least 120° of wrap "
+                   "on the small sprocket (ISO 10823:2004 guidance)")
+    if any("not computed" in f for f in failed):
+        out.append("a chain whose catalogue entry has its mass per length (the static safety needs it)")
+    if not out:
+        out.append("more strands, a lower speed or a longer centre distance")
+    return "; or ".join(out)
+
+
 def _tooth_factor(method: str, governing: str, teeth: int, why: str) -> Factor:
     """The tooth factor of the candidate's rating method, as the rating applied it."""
     if method == "iso10823":
@@ -542,13 +559,12 @@ def design_drive(duty: Duty, *, teeth_driving: int | None = None, family: str | 
     passing = [c for c in rows if not _failed(c)]
     if not passing:
         best = rows[0]
-        more = "" if 4 in allowed else "more strands (up to 4), "
+        failed = _failed(best)
         raise InfeasibleError(
             f"no catalogue roller chain carries {duty.power * ks / 1e3:g} kW (design power) at "
             f"{angular_velocity_to_rpm(duty.speed):g} rpm and passes every check: the nearest, {best.chain} "
-            f"({best.driving_teeth}/{best.driven_teeth} teeth), fails {'; '.join(_failed(best))}; "
-            f"try {more}a lower speed, or submit the duty to the chain maker "
-            "(beyond the galling limit the ACA and ISO 10823 ratings do not apply: Shigley §17-5, type C')")
+            f"({best.driving_teeth}/{best.driven_teeth} teeth), fails {'; '.join(failed)}; "
+            f"try {_remedies(failed, 4 in allowed)}")
     rows = [passing[0], *(c for c in rows if c is not passing[0])]
     rows = rows[:limit] if limit else rows
     return DesignResult(duty=duty, factors=factors, recommended=rows[0], candidates=tuple(rows))
