@@ -139,3 +139,52 @@ def test_simulated_peak_within_15_percent():
     mean, peak, _ = simulated_tension(d, periods=40)
     assert lo.maximum == pytest.approx(peak, rel=0.15)
     assert lo.tight + float(F.dynamic_tension(8.094, lo.acceleration_peak)) < 0.7 * peak  # the former m a_max
+
+
+def _benchmark():
+    import sys
+    from pathlib import Path
+
+    sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "benchmarks"))
+    import dynamic_load
+
+    return dynamic_load
+
+
+def test_sag_compliance_against_the_exact_catenary():
+    # the diagnosis's sag compliance w² l³ / 12T³ (shallow parabola) against the exact
+    # catenary's length L = 2 (T/w) sinh(w l / 2T), differentiated numerically
+    from chaindrive.analysis.layout import drive_layout
+    from chaindrive.drive.project import load_project
+
+    d = load_project("examples/roller_industrial.toml")
+    lay = drive_layout(d)
+    span = lay.tight_span
+    l, w = float(lay.wrap.span_length[span]), float(d.mass_per_length) * 9.81
+    w *= math.cos(math.atan(math.tan(float(lay.wrap.span_angle[span]))))
+
+    def length(t):
+        return 2 * t / w * math.sinh(w * l / (2 * t))
+
+    for t in (165.0, 1000.0, 2100.0):
+        exact = -(length(t * 1.001) - length(t * 0.999)) / (0.002 * t)
+        assert _benchmark().sag_compliance(d, lay, span, t) == pytest.approx(exact, rel=0.01)
+
+
+@pytest.mark.slow
+def test_diagnosis_of_the_simulated_driven_side():
+    # docs/design.md, "Why they part over the sweep": the example's driven side in the simulation
+    from chaindrive.analysis.layout import drive_layout
+    from chaindrive.analysis.loads import polygonal_spring_mass
+    from chaindrive.drive.project import load_project
+
+    bench = _benchmark()
+    d = bench.nominal(load_project("examples/roller_industrial.toml"))
+    _, m, k = polygonal_spring_mass(d, drive_layout(d))
+    k_sim, span, sag, ernst, seats, _, zeta, wd0, zeta0 = bench.at_rest(d)
+    assert 0.2 < k_sim / k < 0.3                    # the slack span holds nothing, the tight span sags
+    assert ernst == pytest.approx(sag, rel=0.15)    # Ernst's sag compliance against the simulation's
+    assert span + sag + seats == pytest.approx(1.0, abs=0.1)
+    # dynamically: the tight span alone in series with the seats (its sag has no time to change)
+    assert m * wd0**2 == pytest.approx(k_sim / (span + seats), rel=0.1)
+    assert zeta0 < 0.02 and zeta > 0.1              # the damping is the roller-tooth friction
