@@ -28,8 +28,10 @@ simulation's own stiffness and damping against the simulated ``peak − mean``, 
 tooth-synchronous part, the phase concentration of the peaks, and the effect of four
 times softer seats). Measured: the simulated driven side is 2.5–3.2 times softer than the
 model's ``k`` (natural frequency 1.6–1.8 times lower) (the slack span sags and holds nothing), its damping is the roller–tooth
-friction, 62–88 % of the simulated dynamic part is not periodic in the tooth period, and
-it falls to 0.53–0.80 with four times softer seats (about 50 s of CPU time).
+friction, 62–88 % of the simulated dynamic part is not periodic in the tooth period, from
+480 rpm the tight span goes slack once per tooth period (the swing is bounded by the mean
+tension: peak about twice the mean), and the dynamic part falls to 0.53–0.80 with four
+times softer seats (about 45 s of CPU time).
 
 Run: ``PYTHONPATH=src python benchmarks/dynamic_load.py [--sweep | --diagnose [NAME ...]]``.
 """
@@ -176,12 +178,13 @@ def sag_compliance(drive: Drive, layout: Any, span: int, tension: float, gravity
     return w**2 * float(layout.wrap.span_length[span]) ** 3 / (12.0 * tension**3)
 
 
-def response(drive: Drive, t: np.ndarray, ts: np.ndarray, angle: np.ndarray) -> tuple[float, float, float, float]:
+def response(drive: Drive, t: np.ndarray, ts: np.ndarray,
+             angle: np.ndarray) -> tuple[float, float, float, float, float]:
     """Of a simulated window: the dominant angular frequency of the tight-span tension
     [rad/s], its tooth-synchronous part ``max − mean`` of the average over the driver's
     angle within a tooth [N], the concentration of the per-tooth-period peaks' phase
     (``|mean e^{iφ}|``: 1 = every peak at the same angle of the tooth, 0 = uniform), and
-    the median per-tooth-period peak [N]."""
+    the medians of the per-tooth-period peaks and minima [N]."""
     z = drive.driving_wheel.teeth
     x = ts - ts.mean()
     f = np.fft.rfftfreq(4 * len(x), t[1] - t[0]) * 2 * math.pi
@@ -194,7 +197,7 @@ def response(drive: Drive, t: np.ndarray, ts: np.ndarray, angle: np.ndarray) -> 
     at_peak = [phase[(t >= t0) & (t < t0 + tooth)][np.argmax(ts[(t >= t0) & (t < t0 + tooth)])]
                for t0 in np.arange(t[0], t[-1] - tooth, tooth)]
     return (float(f[np.argmax(a)]), float(sync.max() - ts.mean()), float(abs(np.mean(np.exp(1j * np.array(at_peak))))),
-            float(np.median(tooth_peaks(drive, t, ts))))
+            float(np.median(tooth_peaks(drive, t, ts))), -float(np.median(tooth_peaks(drive, t, -ts))))
 
 
 def at_rest(drive: Drive) -> tuple[float, float, float, float, float, float, float, float, float]:
@@ -225,7 +228,8 @@ def diagnose(names: list[str] | None = None) -> None:
     with and without friction; (b) running — the model's and the simulation's (frictionless
     free vibration) natural frequency against the tooth frequency, the simulated tension's
     dominant frequency, the model's ``F_d`` and the same model given the simulation's own
-    stiffness ``m ω_d²`` and damping, against the simulated ``peak − mean``, its
+    stiffness ``m ω_d²`` and damping, against the simulated ``peak − mean`` and ``mean −
+    minimum`` (medians per tooth period), its
     tooth-synchronous part and the phase concentration of the peaks, and ``peak − mean``
     with the seats four times softer over the same with the default seats."""
     from chaindrive.analysis.layout import drive_layout
@@ -252,7 +256,7 @@ def diagnose(names: list[str] | None = None) -> None:
               f"{math.sqrt(k / m):7.0f} {wd:7.0f} {zeta:5.2f} {wd0:9.0f} {zeta0:6.3f}", flush=True)
     print("\n(b) running; frequencies over the tooth frequency z*omega; forces [N]")
     print(f"{'drive':34s} {'w_n mdl':>7s} {'w_n sim':>7s} {'dominant':>8s} | {'F_d':>6s} {'F_d(sim k, zeta)':>16s} "
-          f"{'peak-mean':>9s} {'synchr.':>7s} {'phase R':>7s} | {'seats/4':>7s}")
+          f"{'peak-mean':>9s} {'mean-min':>8s} {'synchr.':>7s} {'phase R':>7s} | {'seats/4':>7s}")
     for name, d, m, k in rows:
         key = (d.chain.name, tuple(w.teeth for w in d.wheels), d.links, round(float(d.torque()), 6))
         _, _, _, _, _, _, zeta, wd0, _ = cache[key]
@@ -264,11 +268,12 @@ def diagnose(names: list[str] | None = None) -> None:
         slow = d.speed < 40
         periods, settle = (20, 0.5) if slow else (57, 0.3)
         t, ts, ang = simulated_run(d, periods, settle)
-        dom, sync, conc, peak = response(d, t, ts, ang)
+        dom, sync, conc, peak, low = response(d, t, ts, ang)
         t4, ts4, _ = simulated_run(d, periods, settle, contact_stiffness=5e7)
         soft = float(np.median(tooth_peaks(d, t4, ts4))) - float(ts4.mean())
         print(f"{name:34s} {math.sqrt(k / m) / zw:7.2f} {wd0 / zw:7.2f} {dom / zw:8.2f} | {fd:6.0f} {fd_sim:16.0f} "
-              f"{peak - ts.mean():9.0f} {sync:7.0f} {conc:7.2f} | {soft / (peak - ts.mean()):7.2f}", flush=True)
+              f"{peak - ts.mean():9.0f} {ts.mean() - low:8.0f} {sync:7.0f} {conc:7.2f} | "
+              f"{soft / (peak - ts.mean()):7.2f}", flush=True)
 
 
 def main(extended: bool = False) -> None:
