@@ -15,7 +15,7 @@ Not a timed benchmark: it documents the comparison of docs/design.md, "Dynamic l
 ``--sweep`` adds the roller example varied beyond the three drives (speed at the same
 torque, half the torque, other tooth counts): the model is *not* within 15 % there
 (docs/design.md). Measured on 1984631, F_max / peak: roller example (= roller template)
-1.05, issue 19 duty 12A-1 1.12, its 10B-2 candidate 1.11; the example at 120 / 240 / 480 /
+1.05, issue 19 duty 12A-1 1.12, its 10B-2 candidate 1.12; the example at 120 / 240 / 480 /
 1460 rpm 0.85 / 0.63 / 0.69 / 1.85, at half the torque 1.30, with 15/45 and 25/75 teeth
 0.79 and 2.61.
 
@@ -30,7 +30,7 @@ times softer seats). Measured: the simulated driven side is 2.5–3.2 times soft
 model's ``k`` (natural frequency 1.6–1.8 times lower) (the slack span sags and holds nothing), its damping is the roller–tooth
 friction, 62–88 % of the simulated dynamic part is not periodic in the tooth period, from
 480 rpm the tight span goes slack once per tooth period (the swing is bounded by the mean
-tension: peak about twice the mean), and the dynamic part falls to 0.53–0.80 with four
+tension: peak about twice the mean), and the dynamic part falls to 0.52–0.80 with four
 times softer seats (about 45 s of CPU time).
 
 Run: ``PYTHONPATH=src python benchmarks/dynamic_load.py [--sweep | --diagnose [NAME ...]]``.
@@ -112,17 +112,19 @@ def simulated_run(drive: Drive, periods: int = 57, settle: float = 0.3,
     return t[keep], res.tight_side_tension()[keep], np.asarray(res.wheel_angle)[keep, 0]
 
 
-def tooth_peaks(drive: Drive, t: np.ndarray, tension: np.ndarray) -> np.ndarray:
-    """The largest tension of each whole tooth period of the window [N]."""
+def tooth_peaks(drive: Drive, t: np.ndarray, tension: np.ndarray, start: float | None = None) -> np.ndarray:
+    """The largest tension of each whole tooth period of the window from ``start`` [s]
+    (default its first sample) [N]."""
     tooth = 2 * math.pi / drive.speed / drive.driving_wheel.teeth
-    return np.array([tension[(t >= t0) & (t < t0 + tooth)].max() for t0 in np.arange(t[0], t[-1] - tooth, tooth)])
+    t0s = np.arange(t[0] if start is None else start, t[-1] - tooth, tooth)
+    return np.array([tension[(t >= t0) & (t < t0 + tooth)].max() for t0 in t0s])
 
 
 def simulated_tension(drive: Drive, periods: int = 57, settle: float = 0.3) -> tuple[float, float, float]:
     """Simulated tight-span tension after ``settle`` [s] over ``periods`` tooth periods:
     (mean, median of the per-tooth-period peaks, overall peak) [N]."""
     t, ts, _ = simulated_run(drive, periods, settle)
-    return float(ts.mean()), float(np.median(tooth_peaks(drive, t, ts))), float(ts.max())
+    return float(ts.mean()), float(np.median(tooth_peaks(drive, t, ts, settle))), float(ts.max())
 
 
 def _loaded_wheel(model: SimulationModel) -> int:
@@ -178,8 +180,8 @@ def sag_compliance(drive: Drive, layout: Any, span: int, tension: float, gravity
     return w**2 * float(layout.wrap.span_length[span]) ** 3 / (12.0 * tension**3)
 
 
-def response(drive: Drive, t: np.ndarray, ts: np.ndarray,
-             angle: np.ndarray) -> tuple[float, float, float, float, float]:
+def response(drive: Drive, t: np.ndarray, ts: np.ndarray, angle: np.ndarray,
+             start: float | None = None) -> tuple[float, float, float, float, float]:
     """Of a simulated window: the dominant angular frequency of the tight-span tension
     [rad/s], its tooth-synchronous part ``max − mean`` of the average over the driver's
     angle within a tooth [N], the concentration of the per-tooth-period peaks' phase
@@ -197,7 +199,7 @@ def response(drive: Drive, t: np.ndarray, ts: np.ndarray,
     at_peak = [phase[(t >= t0) & (t < t0 + tooth)][np.argmax(ts[(t >= t0) & (t < t0 + tooth)])]
                for t0 in np.arange(t[0], t[-1] - tooth, tooth)]
     return (float(f[np.argmax(a)]), float(sync.max() - ts.mean()), float(abs(np.mean(np.exp(1j * np.array(at_peak))))),
-            float(np.median(tooth_peaks(drive, t, ts))), -float(np.median(tooth_peaks(drive, t, -ts))))
+            float(np.median(tooth_peaks(drive, t, ts, start))), -float(np.median(tooth_peaks(drive, t, -ts, start))))
 
 
 def at_rest(drive: Drive) -> tuple[float, float, float, float, float, float, float, float, float]:
@@ -268,9 +270,9 @@ def diagnose(names: list[str] | None = None) -> None:
         slow = d.speed < 40
         periods, settle = (20, 0.5) if slow else (57, 0.3)
         t, ts, ang = simulated_run(d, periods, settle)
-        dom, sync, conc, peak, low = response(d, t, ts, ang)
+        dom, sync, conc, peak, low = response(d, t, ts, ang, settle)
         t4, ts4, _ = simulated_run(d, periods, settle, contact_stiffness=5e7)
-        soft = float(np.median(tooth_peaks(d, t4, ts4))) - float(ts4.mean())
+        soft = float(np.median(tooth_peaks(d, t4, ts4, settle))) - float(ts4.mean())
         print(f"{name:34s} {math.sqrt(k / m) / zw:7.2f} {wd0 / zw:7.2f} {dom / zw:8.2f} | {fd:6.0f} {fd_sim:16.0f} "
               f"{peak - ts.mean():9.0f} {ts.mean() - low:8.0f} {sync:7.0f} {conc:7.2f} | "
               f"{soft / (peak - ts.mean()):7.2f}", flush=True)
