@@ -482,3 +482,31 @@ def test_dxf_downloads_are_the_workshop_drawing_and_the_mining_example_is_the_fi
     state = state_from_project(example_path("mining_conveyor.toml").read_text(encoding="utf-8"))
     assert f"idler_offset={state['idler_offset'].replace(' ', '+')}" in page.replace("%20", "+")
 
+
+
+def test_rating_chart_names_each_chains_method():
+    """The studio's rating chart rates each candidate by its family's method (B series: ISO 10823) and
+    says so: in the title and, when the methods differ, on each curve (it read "ANSI/ACA" for all)."""
+    import numpy as np
+
+    from chaindrive.rating import rated_power_curve
+    from chaindrive.units import rpm_to_angular_velocity
+    from chaindrive.web.charts import rating_chart
+    from chaindrive.web.design import design_from_state, normalise_state
+
+    d, errors = design_from_state(normalise_state({"power": "30.64 kW", "speed": "1800 rpm",
+                                                   "driven_speed": "473 rpm", "driven": "varying_conveyor",
+                                                   "centre_distance": ""}))
+    assert errors == {}
+    fig = rating_chart(d)
+    assert fig["layout"]["title"]["text"] == "Rated power by each chain's method (ISO 10823, ANSI/ACA), z1 = 25"
+    by_name = {t["name"]: t for t in fig["data"]}
+    assert "16B-2 (ISO 10823)" in by_name and "16A-3 (ANSI/ACA)" in by_name
+    t = by_name["16B-2 (ISO 10823)"]
+    w = rpm_to_angular_velocity(np.asarray(t["x"]))
+    kw = rated_power_curve("16B-2", 25, w, method="iso10823") / 1e3
+    assert np.allclose(t["y"], kw, rtol=1e-4)
+    link, _ = design_from_state(normalise_state({"kind": "link", "chain": "18x64", "teeth_driving": "8",
+                                                 "teeth_driven": "8", "centre_distance": "4.05 m"}))
+    if link is not None:
+        assert rating_chart(link)["layout"]["title"]["text"] == "Power at the required static safety, F_B v / S"

@@ -78,7 +78,7 @@ def analyze_cmd(
     """Run every applicable analysis of a drive and write a calculation report.
 
     Layout (ISO 10823 / exact polygon), loads and static safety (catalogue breaking
-    force), ANSI/ACA rating, entry kinematics (Dolipiński et al.), span and tensioner vibration
+    force), power rating (ANSI/ACA; ISO 10823 for B-series chains), entry kinematics (Dolipiński et al.), span and tensioner vibration
     with the resonance check (the tensioner paper), wheel geometry (ISO 606, Dolipiński et al., Sharipov),
     contact with skew (Garshniev & Maksymovych), track wheel teeth (Sharipov), wear life.
     Exit code 0 when every check passes, 1 when a check fails, 2 on bad input.

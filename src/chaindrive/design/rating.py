@@ -35,7 +35,8 @@ def rate_chain(chain: str, teeth: int, angular_velocity: float, *, power: float 
 
     References
     ----------
-    ANSI/ACA rating formulas as in Shigley's Mechanical Engineering Design, §17-5 (docs/rating.md).
+    ANSI/ACA rating formulas as in Shigley's Mechanical Engineering Design, §17-5; ISO 10823:2004 (B series;
+    docs/rating.md).
 
     Examples
     --------

@@ -35,8 +35,10 @@ def _power_unit(units: str) -> tuple[str, float]:
 def rating_chart(design: Design, *, units: str = "metric") -> dict[str, Any]:
     """Rating chart: rated power against small-wheel speed of the candidates, the duty marked.
 
-    Roller chains: ANSI/ACA rating ``K2 min(H1, H2)`` (ACA; Shigley eqs (17-32),
-    (17-33)) with the candidate's teeth. Round link chains: the power the chain carries at
+    Roller chains: each by the rating method of its family (:func:`chaindrive.rating.default_method`:
+    ANSI/ACA ``K2 min(H1, H2)``, Shigley eqs (17-32), (17-33), for the A series and ANSI;
+    ISO 10823 for the B series) with the candidate's teeth; the title names the methods and
+    a curve its method when they differ. Round link chains: the power the chain carries at
     the required static safety, ``F_B v / S`` (DIN 22252 breaking force).
 
     Examples
@@ -49,7 +51,9 @@ def rating_chart(design: Design, *, units: str = "metric") -> dict[str, Any]:
     """
     from ..chains import get
     from ..design.link import power_at_safety
-    from ..rating import rated_power_curve
+    from ..rating import default_method, rated_power_curve
+
+    method_labels = {"ansi": "ANSI/ACA", "iso10823": "ISO 10823"}
 
     label, factor = _power_unit(units)
     speeds = rpm_to_angular_velocity(np.geomspace(10, 6000, 120))
@@ -57,6 +61,8 @@ def rating_chart(design: Design, *, units: str = "metric") -> dict[str, Any]:
     names = [c["chain"] for c in design.candidates[:5]]
     if design.chain.name not in names:
         names.insert(0, design.chain.name)
+    methods = {n: default_method(get(n)) for n in names if not get(n).is_link_chain}
+    mixed = len(set(methods.values())) > 1
     for name in names:
         ch = get(name)
         if ch.is_link_chain:
@@ -67,7 +73,8 @@ def rating_chart(design: Design, *, units: str = "metric") -> dict[str, Any]:
         else:
             power = rated_power_curve(ch, design.teeth_driving, speeds)
         ok = np.isfinite(power) & (power > 0)
-        traces.append({"type": "scatter", "mode": "lines", "name": name,
+        shown = f"{name} ({method_labels.get(methods[name], methods[name])})" if mixed and name in methods else name
+        traces.append({"type": "scatter", "mode": "lines", "name": shown,
                        "x": angular_velocity_to_rpm(speeds[ok]).round(3).tolist(), "y": (power[ok] * factor).round(5).tolist(),
                        "line": {"width": 3 if name == design.chain.name else 1.5},
                        "hovertemplate": f"{name}<br>%{{x:.0f}} rpm<br>%{{y:.3g}} {label}<extra></extra>"})
@@ -75,8 +82,15 @@ def rating_chart(design: Design, *, units: str = "metric") -> dict[str, Any]:
                    "x": [angular_velocity_to_rpm(design.speed)], "y": [design.design_power * factor],
                    "marker": {"size": 13, "symbol": "x", "color": "#c0392b"},
                    "hovertemplate": f"design power K_s P<br>%{{x:.0f}} rpm<br>%{{y:.3g}} {label}<extra></extra>"})
-    title = (f"ANSI/ACA rating (Shigley eqs 17-32, 17-33), z1 = {design.teeth_driving}"
-             if not design.chain.is_link_chain else "Power at the required static safety, F_B v / S")
+    used = sorted({method_labels.get(m, m) for m in methods.values()}, key=lambda m: m != "ISO 10823")
+    if not used:
+        title = "Power at the required static safety, F_B v / S"
+    elif len(used) > 1:
+        title = f"Rated power by each chain's method ({', '.join(used)}), z1 = {design.teeth_driving}"
+    elif used[0] == "ISO 10823":
+        title = f"ISO 10823 rating, z1 = {design.teeth_driving}"
+    else:
+        title = f"ANSI/ACA rating (Shigley eqs 17-32, 17-33), z1 = {design.teeth_driving}"
     return {"data": traces, "layout": {**_LAYOUT, "title": {"text": title, "font": {"size": 13}},
                                        "xaxis": {"type": "log", "dtick": 1, "title": {"text": "small wheel speed [rpm]"}},
                                        "yaxis": {"type": "log", "dtick": 1, "title": {"text": f"power [{label}]"}}}}
