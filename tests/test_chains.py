@@ -646,3 +646,10 @@ def test_equivalent_names():
         equivalent_names("ANSI 85")
     with pytest.raises(UnknownNameError, match="unknown chain"):
         estimated_fields("99x99")
+
+
+def test_04c_transverse_pitch_from_donghua():
+    """Donghua "Drive Chains 2020" (text copy in github.com/ArtemFilin1990/Mar), duplex table of the C series:
+    10025-2 / 04C-2 / 25-2, transverse pitch 6,40 mm; the ANSI twins take it."""
+    assert get("04C-2").transverse_pitch == pytest.approx(6.4e-3) and get("04C-3").transverse_pitch == pytest.approx(6.4e-3)
+    assert get("ANSI 25-2").transverse_pitch == pytest.approx(6.4e-3)
