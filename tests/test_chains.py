@@ -5,7 +5,9 @@ Sources of the reference values (each also named in the comment of its test):
         (github.com/JayP11/galaxy_chain, src/pages/charts/*_roller_*/*.jsx)
   MECHA mecha.odoo.com roller chain data sheets (08B-3, 10B-2, 12B-3, 16B-3, 05B-3, 16A-2 ...)
   DH    Donghua "Drive Chains 2020" catalogue (text copy: github.com/ArtemFilin1990/Mar,
-        Размеры/cepi-donghua-2020.md), column "min. ISO" breaking load
+        Размеры/cepi-donghua-2020.md), column "min. ISO" breaking load; multi-strand masses
+  REN   Renold transmission chain catalogue, Russian edition (text copy in the same repository):
+        multi-strand masses
   ANSI  ANSI B29.1 size table (liquisearch.com/roller_chain/chain_standards, a copy of the
         Wikipedia "Roller chain" article), minimum tensile strength in lbf
   EE    engineersedge.com/power_transmission/roller_chain_dimensions_13610.htm (ASME B29.1M)
@@ -565,6 +567,54 @@ def test_a_and_c_simplex_masses_from_rcds():
         assert "RCDS" in get(iso).source
 
 
+
+# Multi-strand masses per length [kg/m] published by two chain makers, (DH, REN):
+#  DH   Donghua "Drive Chains 2020" (text copy github.com/ArtemFilin1990/Mar,
+#       12_Прочее_сопутствующее/Прочее/cepi-donghua-2020.md), "weight per meter q": B series duplex
+#       p. 21 and triplex p. 23, A series duplex p. 27 and triplex p. 29; rows identified by designation
+#       and Q min (06B-2 16.9 kN, 06B-3 24.9 kN, 25-2 7.00 kN, 180-3 840.7 kN ...)
+#  REN  Renold transmission chain catalogue, Russian edition "Каталог приводных цепей" (text copy in
+#       the same repository, katalog-privodnyh-cepej-zvezd-i-napravljajushhih-renold.md), Section 1,
+#       "Вес кг/м": European (BS) / ISO 606 duplex/triplex p. 23, ANSI / ISO 606 duplex/triplex p. 25
+TWO_MAKERS_MASSES = {
+    "06B-2": (0.77, 0.78), "06B-3": (1.16, 1.11),
+    "04C-2": (0.28, 0.26), "04C-3": (0.44, 0.39),   # ANSI 25-2, 25-3
+    "06C-3": (1.05, 0.93),                          # ANSI 35-3
+    "08A-3": (1.90, 1.80),                          # ANSI 40-3
+    "10A-3": (3.09, 2.96),                          # ANSI 50-3
+    "36A-2": (29.22, 27.72), "36A-3": (38.22, 41.50),  # ANSI 180-2, 180-3
+}
+
+
+@pytest.mark.parametrize("name", TWO_MAKERS_MASSES)
+def test_multi_strand_masses_published_by_two_makers(name):
+    """The masses that were missing (the design procedure could not compute the static safety of these
+    chains): DH and REN publish them and differ by up to 12 %; the catalogue stores the larger (the safe
+    side of F_B / F_max, rule in the iso606.csv header) and names both; the ANSI twin carries the same
+    value (ansi.csv leaves multi-strand masses to the twin)."""
+    dh, ren = TWO_MAKERS_MASSES[name]
+    c = get(name)
+    assert c.mass_per_length == max(dh, ren)
+    assert f"{dh:.2f}" in c.source and f"{ren:.2f}" in c.source
+    assert ("DH" if dh > ren else "REN") in c.source and estimated_fields(c) == ()
+    for twin in equivalent_names(c):
+        assert get(twin).mass_per_length == c.mass_per_length
+
+
+def test_every_roller_chain_has_a_mass_in_proportion_to_its_strands():
+    # No row left without a mass (the static safety needs it), and no typo of a factor 10: the
+    # n-strand mass lies within 0.75 n ... 1.25 n times the simplex mass of the same chain (makers'
+    # tables: 05B 0.20 / 0.33 / 0.48, 180 13.94 / 27.72 / 41.50 kg/m), rising with the strands.
+    for fam in ("iso606", "ansi"):
+        rows = catalogue(fam)
+        assert all(c.mass_per_length is not None for c in rows), fam
+        for c in rows:
+            simplex = get(c.name.rsplit("-", 1)[0] + "-1").mass_per_length
+            assert 0.75 * c.strands <= c.mass_per_length / simplex <= 1.25 * c.strands, c.name
+            if c.strands > 1:
+                fewer = get(c.name.rsplit("-", 1)[0] + f"-{c.strands - 1}").mass_per_length
+                assert c.mass_per_length > fewer, c.name
+
 def test_din_masses_flagged_and_reproducible():
     # The DIN 22252 masses per metre are geometric estimates (no public table found), flagged in the
     # catalogue; recompute them independently: steel 7850 kg/m^3, bar section pi d^2/4, link
@@ -596,3 +646,10 @@ def test_equivalent_names():
         equivalent_names("ANSI 85")
     with pytest.raises(UnknownNameError, match="unknown chain"):
         estimated_fields("99x99")
+
+
+def test_04c_transverse_pitch_from_donghua():
+    """Donghua "Drive Chains 2020" (text copy in github.com/ArtemFilin1990/Mar), duplex table of the C series:
+    10025-2 / 04C-2 / 25-2, transverse pitch 6,40 mm; the ANSI twins take it."""
+    assert get("04C-2").transverse_pitch == pytest.approx(6.4e-3) and get("04C-3").transverse_pitch == pytest.approx(6.4e-3)
+    assert get("ANSI 25-2").transverse_pitch == pytest.approx(6.4e-3)

@@ -231,6 +231,30 @@ def test_recommended_passes_every_check_with_its_static_safety(power, rpm, ratio
     assert c.lubrication != "C'"
 
 
+
+@pytest.mark.parametrize(("power", "rpm", "strands", "chain", "before"), [
+    (0.1e3, 1460, (2,), "04C-2", "05B-2"), (1.1e3, 480, (2,), "06B-2", "06C-2"),
+    (0.55e3, 150, (3,), "06B-3", None)])
+def test_multi_strand_chains_with_published_masses_are_recommended(power, rpm, strands, chain, before, capsys):
+    """Small duties, ratio 3, moderate shock, two or three strands admitted: the smallest adequate pitch is
+    04C (6.35 mm) or 06B (9.525 mm, the higher static safety of the 9.525 mm pair). Before the catalogue
+    had their masses (DH / REN, tests/test_chains.py) their static safety was "not computed" and the
+    procedure recommended the next chain (`before`) or, three strands only, refused the duty (06B-3 and
+    06C-3 both "not computed"); now the recommendation is the chain itself, with its static safety
+    computed: F_B / F_max, F_max at least the design power over the chain speed."""
+    from chaindrive.chains import get
+    from chaindrive.design.procedure import _failed
+
+    r = design_drive(Duty(power, rpm * RPM, ratio=3.0, load_character="moderate"), strands=strands)
+    c = r.recommended
+    assert c.chain == chain and (before is None or before in [x.chain for x in r.candidates])
+    assert not _failed(c) and c.static_safety is not None and c.static_safety >= c.required_static_safety
+    assert c.static_safety == pytest.approx(get(chain).breaking_force / c.maximum_tension, rel=1e-9)
+    assert c.maximum_tension >= c.design_power / c.chain_speed
+    assert main(["select", "-P", f"{power / 1e3:g} kW", "-n", f"{rpm} rpm", "-i", "3", "--load", "moderate",
+                 "--strands", ",".join(map(str, strands)), "--json"]) == 0
+    assert json.loads(capsys.readouterr().out)["recommended"]["chain"] == chain
+
 def test_tooth_factor_reported_by_the_rating_method():
     """A B-series candidate reports ISO 10823's f2 (its rating used it), an ANSI one Shigley's K_1."""
     r = design_drive(DUTY)
