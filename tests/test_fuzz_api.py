@@ -207,7 +207,9 @@ def test_second_fuzz_round_reproducers():
 
     with pytest.raises(InfeasibleError, match="chain_entry: the result acceleration"):
         chain_entry_for(chains.get("18x64"), 8, 1e300)  # ω² overflows
-    with pytest.raises(InfeasibleError, match="select: the numbers overflow or divide by zero"):
+    # (one line either way; which guard trips first depends on the catalogue rows rated)
+    with pytest.raises(InfeasibleError, match=r"select: (the numbers overflow or divide by zero|the result "
+                                              r"\[0\]\.power_margin is not a finite number)"):
         select(5e-324, 19.80946939381021, 1.6830019764695077, centre_distance=0.0729603197769288)
     span = TensionerSpan(2000.0, 2.6, 0.8, 0.8, 0.35, 0.35, 3.0, 5e4)
     with pytest.raises(InputError):
