@@ -40,3 +40,24 @@ def test_wear_and_rating_plots():
     assert {"rated power", "operating point", "galling line (Shigley §17-5)"} <= {
         t.get_text() for t in fig.axes[0].get_legend().get_texts()}
     plt.close(fig)
+
+
+def test_rating_plot_draws_the_ratings_own_branches():
+    """The rating chart draws the branches of the rating it is given: an ISO 10823 rating of a B-series
+    chain off 19 teeth (25) takes the standard's tooth factor in both branches, so its 'rated power' line
+    passes through the rating's own value at the operating speed (it drew the ACA z^1.5 roller branch)."""
+    import matplotlib.pyplot as plt
+    import numpy as np
+
+    from chaindrive.rating import chain_rating
+
+    w = 1460 * np.pi / 30
+    r = chain_rating("12B-1", 25, w)
+    assert r.method == "iso10823" and r.governing_limit == "roller_bushing"
+    fig = rating_plot(r)
+    line = next(ln for ln in fig.axes[0].get_lines() if ln.get_label() == "rated power")
+    x, y = line.get_data()
+    at = float(np.interp(np.log(1460.0), np.log(x), np.log(y)))
+    assert np.exp(at) == pytest.approx(r.rated_power / 1e3, rel=2e-3)
+    assert "ISO 10823" in fig.axes[0].get_title()
+    plt.close(fig)

@@ -213,6 +213,7 @@ def rating_plot(result: ChainRating | float, teeth: int | None = None, *, strand
 
     from .. import selection as S
     from ..errors import ValidityRangeWarning
+    from ..rating import branch_powers
 
     if isinstance(result, S.ChainRating):
         r = result
@@ -221,12 +222,18 @@ def rating_plot(result: ChainRating | float, teeth: int | None = None, *, strand
 
         plate_constant, roller_constant = rating_constants(r.chain, r.method)
         method_label = "ISO 10823" if r.method == "iso10823" else "ANSI/ACA"
+        if r.method == "iso10823":
+            from ..rating.iso10823 import REFERENCE_TEETH
+
+            basis = REFERENCE_TEETH
         name = name or r.chain
         if operating is None:
             operating = (r.angular_velocity, r.tension * r.chain_speed * S.multi_strand_factor(strands))
     else:
         method_label = "ANSI/ACA"
         pitch = float(result)
+    if method_label == "ANSI/ACA":
+        basis = None
         if teeth is None:
             raise TypeError("rating_plot needs teeth when given a pitch")
     if ax is None:
@@ -240,8 +247,9 @@ def rating_plot(result: ChainRating | float, teeth: int | None = None, *, strand
         lo, hi = speed_range if speed_range is not None else (10.0, min(max(1.05 * n0, 100.0), 20000.0))
         rpm = np.geomspace(lo, hi, 400)
         w = rpm_to_angular_velocity(rpm)
-        h1 = k2 * S.ansi_link_plate_power(teeth, w, pitch, plate_constant) / 1e3
-        h2 = k2 * S.ansi_roller_bushing_power(teeth, w, pitch, roller_constant) / 1e3
+        b1, b2 = branch_powers(pitch, teeth, w, plate_constant=plate_constant, roller_constant=roller_constant,
+                               basis_teeth=basis)   # the rating's own branches (ISO 10823: on 19 teeth, f2)
+        h1, h2 = k2 * b1 / 1e3, k2 * b2 / 1e3
         hg = k2 * S.galling_power(pitch, teeth, w) / 1e3
         va, vb = S.lubrication_limits(pitch)
     rated = np.minimum(h1, h2)

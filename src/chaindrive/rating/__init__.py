@@ -42,7 +42,7 @@ from .ansi import (
 if TYPE_CHECKING:
     from ..chains import Chain
 
-__all__ = ["ChainRating", "chain_rating", "RATING_METHODS", "RATING_CURVES", "default_method", "rated_power_curve", "HP",
+__all__ = ["ChainRating", "chain_rating", "branch_powers", "RATING_METHODS", "RATING_CURVES", "default_method", "rated_power_curve", "HP",
            "rating_constants"]
 
 # --------------------------------------------------------------------------- one chain
@@ -206,6 +206,50 @@ def _ansi_rating(chain: Chain | str, teeth: int, angular_velocity: float, *,
                  source="ACA; Shigley, 10th ed., eqs (17-32), (17-33)", notes=notes)
 
 
+def branch_powers(pitch, teeth, angular_velocity, *, plate_constant: float, roller_constant: float,
+                  basis_teeth: int | None = None) -> tuple[np.ndarray, np.ndarray]:
+    r"""Link-plate and roller–bushing powers of one strand: the ACA branches, on ``teeth`` or on a basis.
+
+    .. math:: (H_1, H_2)(z_1) = \left(\frac{z_1}{z_b}\right)^{1.08} (H_1, H_2)(z_b)\quad
+              (z_b = 19:\ \text{ISO 10823});\qquad (H_1, H_2)(z_1)\quad(\text{ACA})
+
+    Parameters
+    ----------
+    pitch : float or array_like
+        [m].
+    teeth : int or array_like
+        Small-sprocket teeth [-].
+    angular_velocity : float or array_like
+        [rad/s].
+    plate_constant, roller_constant : float
+        ``K_p``, ``K_r`` of eqs (17-32), (17-33).
+    basis_teeth : int, optional
+        Evaluate both branches on this tooth count and scale them by ``(z_1/z_b)^{1.08}``
+        (ISO 10823's tooth factor ``1/f_2`` on its 19-tooth basis); ``None``: on ``teeth``.
+
+    Returns
+    -------
+    tuple of ndarray
+        ``H_1``, ``H_2`` [W] per strand.
+
+    References
+    ----------
+    ACA; Shigley, 10th ed., eqs (17-32), (17-33); ISO 10823:2004, 4.2 (tooth factor).
+
+    Examples
+    --------
+    >>> h1, h2 = branch_powers(0.01905, 25, 152.89, plate_constant=0.00434, roller_constant=21.85,
+    ...                        basis_teeth=19)
+    >>> round(float(h1) / 1e3, 2), round(float(h2) / 1e3, 2)
+    (31.59, 25.85)
+    """
+    z = np.asarray(teeth, dtype=float)
+    zb = z if basis_teeth is None else basis_teeth
+    scale = 1.0 if basis_teeth is None else (z / basis_teeth) ** 1.08
+    return (scale * ansi_link_plate_power(zb, angular_velocity, pitch, plate_constant),
+            scale * ansi_roller_bushing_power(zb, angular_velocity, pitch, roller_constant))
+
+
 def _rate(ch: Chain, teeth, angular_velocity, power, *, constants, method: str, source: str,
           notes: list[str], basis_teeth: int | None = None) -> ChainRating:
     """Both fatigue limits, strands, galling and lubrication of one chain (shared by the methods).
@@ -226,10 +270,8 @@ def _rate(ch: Chain, teeth, angular_velocity, power, *, constants, method: str, 
         warnings.simplefilter("always", ValidityRangeWarning)
         kp, kr = constants(ch.name)
         k2 = multi_strand_factor(ch.strands)
-        zb = z if basis_teeth is None else basis_teeth
-        scale = 1.0 if basis_teeth is None else (z / basis_teeth) ** 1.08
-        h1 = scale * float(ansi_link_plate_power(zb, w, ch.pitch, kp))
-        h2 = scale * float(ansi_roller_bushing_power(zb, w, ch.pitch, kr))
+        b1, b2 = branch_powers(ch.pitch, z, w, plate_constant=kp, roller_constant=kr, basis_teeth=basis_teeth)
+        h1, h2 = float(b1), float(b2)
         v = mean_chain_speed(z, ch.pitch, w)
         h3 = float(galling_power(ch.pitch, z, w))
         tension = (min(h1, h2) if design is None else design / k2) / v
