@@ -215,6 +215,7 @@ def rating_plot(result: ChainRating | float, teeth: int | None = None, *, strand
     from ..errors import ValidityRangeWarning
     from ..rating import branch_powers
 
+    basis: int | None = None   # ISO 10823: the branches on its 19-tooth basis, then f2
     if isinstance(result, S.ChainRating):
         r = result
         pitch, teeth, strands = r.pitch, r.teeth, r.strands
@@ -232,8 +233,6 @@ def rating_plot(result: ChainRating | float, teeth: int | None = None, *, strand
     else:
         method_label = "ANSI/ACA"
         pitch = float(result)
-    if method_label == "ANSI/ACA":
-        basis = None
         if teeth is None:
             raise TypeError("rating_plot needs teeth when given a pitch")
     if ax is None:

@@ -215,12 +215,8 @@ def branch_powers(pitch, teeth, angular_velocity, *, plate_constant: float, roll
 
     Parameters
     ----------
-    pitch : float or array_like
-        [m].
-    teeth : int or array_like
-        Small-sprocket teeth [-].
-    angular_velocity : float or array_like
-        [rad/s].
+    pitch, teeth, angular_velocity : float or array_like
+        Chain pitch [m], small-sprocket teeth [-] and speed [rad/s].
     plate_constant, roller_constant : float
         ``K_p``, ``K_r`` of eqs (17-32), (17-33).
     basis_teeth : int, optional
