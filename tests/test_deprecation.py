@@ -81,3 +81,16 @@ def test_split_modules_keep_their_names():
 
     assert resonance.campbell is tensioner_design.campbell
     assert sprocket.sprocket_outline is tooth_form.sprocket_outline
+
+
+def test_selection_select_is_deprecated_for_the_design_procedure():
+    """`chaindrive.selection.select` (K_s = 1 and 17 teeth unless told, its own static safety) gave another
+    answer than the one design procedure: it warns and names `design_drive`."""
+    import math
+
+    from chaindrive.selection import select
+
+    with pytest.warns(FutureWarning, match=r"chaindrive\.selection\.select is deprecated and will be removed: "
+                                           r"use chaindrive\.design\.design_drive"):
+        rows = select(7.5e3, 1450 * math.pi / 30, 3.0)
+    assert rows

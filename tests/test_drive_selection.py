@@ -260,6 +260,7 @@ def test_select_errors():
 def test_select_no_warning_leak():
     with warnings.catch_warnings():
         warnings.simplefilter("error")
+        warnings.filterwarnings("ignore", "chaindrive.selection.select is deprecated", FutureWarning)
         rows = S.select(2e3, 300 * RPM, 2, teeth_driving=50)
     assert all("50 teeth: outside the 9-45 teeth" in " ".join(c.notes) for c in rows)
 

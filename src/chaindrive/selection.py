@@ -159,7 +159,15 @@ def select(power: float, speed: float, ratio: float, *, service_factor: float = 
            teeth_driving: int = 17, centre_distance: float | None = None, family: str | None = None,
            strands: tuple[int, ...] = (1, 2, 3), min_static_safety: float = 6.0,
            all_sizes: bool = False, limit: int | None = None) -> list[Candidate]:
-    r"""Roller chains that carry a power with the required safety, simplex first.
+    r"""Roller chains that carry a power with the required safety, simplex first (deprecated).
+
+    .. deprecated:: 0.2
+        Use :func:`chaindrive.design.design_drive`, the design procedure that ``chaindrive
+        select``, the studio and studies run: this older screen takes ``K_s = 1`` and 17
+        teeth unless told, and its static safety ``F_B / (K_s P / v + q v²)`` is not the
+        analysis's (which adds the slack-side and the polygonal dynamic tension), so it can
+        rank and pass another chain than the one design procedure. It warns
+        (``FutureWarning``) and is removed in the next release.
 
     .. math:: K_2 \min(H_1, H_2, H_3) \ge K_s P,\qquad
               \frac{F_B}{K_s P / v + q v^2} \ge S_{min},\qquad
@@ -231,12 +239,19 @@ def select(power: float, speed: float, ratio: float, *, service_factor: float = 
 
     Examples
     --------
-    >>> rows = select(7.5e3, 1450 * math.pi / 30, 3.0)
+    >>> import warnings
+    >>> with warnings.catch_warnings():
+    ...     warnings.simplefilter("ignore", FutureWarning)
+    ...     rows = select(7.5e3, 1450 * math.pi / 30, 3.0)
     >>> [(c.chain, c.strands, round(c.power_margin, 2)) for c in rows][:3]
     [('10B-1', 1, 1.61), ('10A-1', 1, 1.47), ('08B-2', 2, 1.4)]
     >>> rows[1].names, rows[1].links, rows[1].lubrication
     (('10A-1', 'ANSI 50-1'), 116, 'B')
     """
+    warnings.warn("chaindrive.selection.select is deprecated and will be removed: use "
+                  "chaindrive.design.design_drive (the one design procedure of select, the studio and "
+                  "studies; the service factor from a duty class, the analysis's static safety)",
+                  FutureWarning, stacklevel=2)
     from .chains import catalogue, equivalent_names
     from .layout import centre_distance_approx, chain_length_approx, even_links
 
