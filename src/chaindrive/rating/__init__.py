@@ -19,6 +19,7 @@ from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
 import numpy as np
+from numpy.typing import ArrayLike
 
 from .._registry import Registry
 from .._results import Result, quantity
@@ -206,7 +207,8 @@ def _ansi_rating(chain: Chain | str, teeth: int, angular_velocity: float, *,
                  source="ACA; Shigley, 10th ed., eqs (17-32), (17-33)", notes=notes)
 
 
-def branch_powers(pitch, teeth, angular_velocity, *, plate_constant: float, roller_constant: float,
+def branch_powers(pitch: ArrayLike, teeth: ArrayLike, angular_velocity: ArrayLike, *, plate_constant: float,
+                  roller_constant: float,
                   basis_teeth: int | None = None) -> tuple[np.ndarray, np.ndarray]:
     r"""Link-plate and roller–bushing powers of one strand: the ACA branches, on ``teeth`` or on a basis.
 
