@@ -604,7 +604,7 @@ def test_multi_strand_masses_published_by_two_makers(name):
 def test_every_roller_chain_has_a_mass_in_proportion_to_its_strands():
     # No row left without a mass (the static safety needs it), and no typo of a factor 10: the
     # n-strand mass lies within 0.75 n ... 1.25 n times the simplex mass of the same chain (makers'
-    # tables: 05B 0.20 / 0.33 / 0.48, 180 13.94 / 27.72 / 41.50 kg/m), rising with the strands.
+    # tables: 05B 0.20 / 0.36 / 0.54 (REN 0.18 / 0.36 / 0.54), 180 13.94 / 27.72 / 41.50 kg/m), rising with the strands.
     for fam in ("iso606", "ansi"):
         rows = catalogue(fam)
         assert all(c.mass_per_length is not None for c in rows), fam
@@ -653,3 +653,13 @@ def test_04c_transverse_pitch_from_donghua():
     10025-2 / 04C-2 / 25-2, transverse pitch 6,40 mm; the ANSI twins take it."""
     assert get("04C-2").transverse_pitch == pytest.approx(6.4e-3) and get("04C-3").transverse_pitch == pytest.approx(6.4e-3)
     assert get("ANSI 25-2").transverse_pitch == pytest.approx(6.4e-3)
+
+
+def test_05b_from_renold_iso_minimum_and_plate_height():
+    """Renold, "Каталог приводных цепей" (text copy in github.com/ArtemFilin1990/Mar), section 1, European standard
+    (BS) tables pp. 22-23: 05B-1/-2/-3 plate height 7.11 mm (max), minimum tensile strength "by ISO 606, MIN"
+    4400 / 7800 / 11100 N (the 5.0 kN stored before for 05B-1 is DIN 8187's works value, above the ISO minimum the
+    column holds), masses 0.18 / 0.36 / 0.54 kg/m (MECHA 0.20 / 0.33 / 0.48: the larger is stored)."""
+    assert [get(f"05B-{n}").breaking_force for n in (1, 2, 3)] == pytest.approx([4400.0, 7800.0, 11100.0])
+    assert all(get(f"05B-{n}").plate_height == pytest.approx(7.11e-3) for n in (1, 2, 3))
+    assert [get(f"05B-{n}").mass_per_length for n in (1, 2, 3)] == pytest.approx([0.20, 0.36, 0.54])
