@@ -712,6 +712,16 @@ def recover_output_dir(path: str | os.PathLike) -> None:
         pass
 
 
+def _drop_earlier(old: Path, real: Path, text: str) -> None:
+    """Delete the earlier run swapped out to ``old``; files of the user are kept aside."""
+    left = _remove_run(old)
+    if left:
+        kept = _keep_aside(old, real, "kept")
+        warnings.warn(f"files chaindrive did not write were in the earlier run of {show_path(text)} "
+                      f"({_names(left)}); they are kept in {show_path(_as_given(kept, text))}",
+                      ChainDriveWarning, stacklevel=5)
+
+
 def _move_into_place(tmp: Path, real: Path, text: str, *, force: bool, option: str,
                      inputs: tuple = ()) -> bool:
     """Check the rules again and move ``tmp`` to ``real``; returns True (or raises).
@@ -746,12 +756,7 @@ def _move_into_place(tmp: Path, real: Path, text: str, *, force: bool, option: s
         old = None
         if real.exists() and _entries(real):
             if exchange(tmp, real):  # atomic: DIR is the new run, tmp the earlier one
-                left = _remove_run(tmp)
-                if left:
-                    kept = _keep_aside(tmp, real, "kept")
-                    warnings.warn(f"files chaindrive did not write were in the earlier run of {shown} "
-                                  f"({_names(left)}); they are kept in {show_path(_as_given(kept, text))}",
-                                  ChainDriveWarning, stacklevel=4)
+                _drop_earlier(tmp, real, text)
                 return True
             old = Path(tempfile.mkdtemp(prefix=f".{real.name[:200]}.", suffix=".old", dir=real.parent))
             os.rmdir(old)
@@ -771,12 +776,7 @@ def _move_into_place(tmp: Path, real: Path, text: str, *, force: bool, option: s
                 keep(f"files appeared in {shown} during the run")
             raise
         if old is not None:
-            left = _remove_run(old)
-            if left:
-                kept = _keep_aside(old, real, "kept")
-                warnings.warn(f"files chaindrive did not write were in the earlier run of {shown} "
-                              f"({_names(left)}); they are kept in {show_path(_as_given(kept, text))}",
-                              ChainDriveWarning, stacklevel=4)
+            _drop_earlier(old, real, text)
     except OSError as exc:
         raise InputError(f"{option}: cannot move the results into {shown}: {_reason(exc)}") from None
     return True
