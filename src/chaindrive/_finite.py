@@ -23,6 +23,7 @@ import dataclasses
 import functools
 import inspect
 import math
+import sys
 import threading
 from collections.abc import Callable
 from typing import Any, TypeVar, cast, overload
@@ -31,7 +32,7 @@ import numpy as np
 
 from .errors import ChainDriveError, ConvergenceError, InfeasibleError, InputError
 
-__all__ = ["finite_guard", "first_nonfinite", "check_finite_fields"]
+__all__ = ["finite_guard", "first_nonfinite", "check_finite_fields", "finite_fields", "guard_public"]
 
 F = TypeVar("F", bound=Callable[..., Any])
 
@@ -110,7 +111,8 @@ def _show(value: Any) -> str:
     return repr(value)
 
 
-def check_finite_fields(obj: Any, names: tuple[str, ...] | None = None) -> None:
+def check_finite_fields(obj: Any, names: tuple[str, ...] | None = None,
+                        allow_infinite: tuple[str, ...] = ()) -> None:
     """Refuse NaN/inf in the numeric fields of a dataclass (for ``__post_init__``).
 
     Examples
@@ -128,6 +130,8 @@ def check_finite_fields(obj: Any, names: tuple[str, ...] | None = None) -> None:
             continue
         value = getattr(obj, f.name, None)
         if _nonfinite_number(value):
+            if f.name in allow_infinite and not _has_nan(value):
+                continue
             raise InputError(f"{f.name} must be finite (a number, not NaN or inf), got {_show(value)}")
 
 
@@ -185,6 +189,9 @@ def finite_guard(function: F | None = None, *, check_result: bool = True,
         except (TypeError, ValueError):  # pragma: no cover - builtins
             return []
 
+    if getattr(function, "_finite_guarded", False):  # guarded already
+        return function
+
     @functools.wraps(function)
     def wrapper(*args, **kwargs):
         for i, value in enumerate(args):
@@ -241,6 +248,7 @@ def finite_guard(function: F | None = None, *, check_result: bool = True,
                     "formula is defined, or the numbers overflow double precision")
         return result
 
+    wrapper._finite_guarded = True  # type: ignore[attr-defined]
     return cast(F, wrapper)  # functools.wraps keeps the signature
 
 
@@ -283,3 +291,75 @@ def _walk(obj: Any, where: str) -> Any:
             else:
                 obj = np.asarray(obj).ravel()[int(key)] if isinstance(obj, np.ndarray) else obj[int(key)]
     return obj
+
+
+C = TypeVar("C", bound=type)
+
+
+def finite_fields(cls: C | None = None, *, allow_infinite: tuple[str, ...] = ()) -> Any:
+    """Class decorator (above ``@dataclass``, or applied after it): the constructor refuses
+    NaN/inf in any numeric field with :class:`~chaindrive.errors.InputError` naming the field.
+
+    Parameters
+    ----------
+    cls : type
+        A dataclass.
+    allow_infinite : tuple of str
+        Fields that may be ``+inf`` or ``-inf`` by their documented meaning (never NaN).
+
+    Examples
+    --------
+    >>> @finite_fields
+    ... @dataclasses.dataclass(frozen=True)
+    ... class Span:
+    ...     length: float
+    >>> Span(float("nan"))
+    Traceback (most recent call last):
+    ...
+    chaindrive.errors.InputError: length must be finite (a number, not NaN or inf), got nan
+    """
+    if cls is None:
+        return lambda inner: finite_fields(inner, allow_infinite=allow_infinite)
+    if getattr(cls, "_finite_fields", False) is cls:  # applied already
+        return cls
+    init = cls.__init__
+
+    @functools.wraps(init)
+    def __init__(self, *args, **kwargs):
+        init(self, *args, **kwargs)
+        check_finite_fields(self, allow_infinite=allow_infinite)
+
+    cls.__init__ = __init__  # type: ignore[misc]
+    cls._finite_fields = cls  # type: ignore[attr-defined]
+    return cls
+
+
+def guard_public(module: str, *, skip: tuple[str, ...] = (), allow_infinite: tuple[str, ...] = ()) -> None:
+    """Guard every public function and dataclass of ``module`` (its ``__all__``) at once.
+
+    Call it as the last line of a formula module (``guard_public(__name__)``): each public
+    function defined there gets :func:`finite_guard` (NaN/inf arguments refused by name,
+    NaN/inf results and numerical failures raised as chaindrive errors), each public
+    dataclass :func:`finite_fields`. Names already guarded are left as they are; ``skip``
+    names the exceptions (say why beside the call).
+
+    Parameters
+    ----------
+    module : str
+        The module's ``__name__``.
+    skip : tuple of str
+        Public names left unguarded.
+    allow_infinite : tuple of str
+        Parameters and fields that may be infinite by their documented meaning.
+    """
+    mod = sys.modules[module]
+    for name in getattr(mod, "__all__", ()):
+        if name in skip:
+            continue
+        obj = getattr(mod, name, None)
+        if getattr(obj, "__module__", None) != module:
+            continue
+        if inspect.isfunction(obj):
+            setattr(mod, name, finite_guard(obj, allow_infinite=allow_infinite))
+        elif inspect.isclass(obj) and dataclasses.is_dataclass(obj):
+            finite_fields(obj, allow_infinite=allow_infinite)

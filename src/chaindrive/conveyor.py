@@ -428,3 +428,8 @@ def free_strand(chord_length: float, inclination: float, start_tension: float,
                       end_tension=float(H * math.cosh(k * (span - x0))), sag=sag,
                       excess_length=float(arc - c),
                       lowest_tension=float(H if 0 < x0 < span else min(T0, H * math.cosh(k * (span - x0)))))
+
+
+from chaindrive._finite import guard_public  # noqa: E402
+
+guard_public(__name__)  # every public function and dataclass: NaN/inf in or out refused

@@ -13,6 +13,7 @@ from .. import layout as L
 from .._results import Result, quantity
 from ..drive.model import Drive
 from ..errors import InfeasibleError, ValidityRangeWarning
+from ..limits import check_links_needed
 from ._memo import freeze, memo
 from ._wheels import wheel_teeth
 from .checks import Check
@@ -167,6 +168,7 @@ def _geometry(drive: Drive, phases: int) -> DriveLayout:
     positions = np.array([w.position for w in wheels], dtype=float)
     links_required, polygon, loop, centre = _required_length(drive, positions, phases)
     needed = loop.links_max if loop is not None and loop.exact else links_required
+    check_links_needed(needed)  # chaindrive.limits: the documented maximum at every door
     links = int(drive.links) if drive.links is not None else int(L.even_links(needed))
     adjustment = None
     if drive.adjustable is not None:

@@ -546,3 +546,8 @@ def pocket_wheel_part(
             "keyway": "DIN 6885-1:1968 table 1",
         },
     )
+
+
+from chaindrive._finite import guard_public  # noqa: E402
+
+guard_public(__name__)  # every public function and dataclass: NaN/inf in or out refused

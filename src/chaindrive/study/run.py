@@ -192,7 +192,7 @@ def evaluate_variant(base: dict, inputs: dict[str, Any], outputs: Sequence[str],
     >>> round(row["loads.chain_speed"], 3), row["error"]
     (11.663, None)
     >>> evaluate_variant(base, {"wheels.0.teeth": 2}, ["loads.maximum"])["error"]
-    'InputError: variant: wheels[0].teeth: Input should be greater than or equal to 3'
+    'InputError: variant: wheels[0].teeth: must be a whole number in [3, 10000], got 2'
     """
     import copy
 
