@@ -122,6 +122,7 @@ class Tally:
     bad_exit: int = 0
     nonfinite: int = 0
     slow: int = 0
+    http500: int = 0
     seconds: float = 0.0
     outcomes: dict = dataclasses.field(default_factory=dict)
     examples: dict = dataclasses.field(default_factory=lambda: {"tracebacks": [], "bad_exit": [],
@@ -140,7 +141,9 @@ class Tally:
     def line(self) -> str:
         return (f"{self.surface:8s} inputs {self.inputs:6d}  tracebacks {self.tracebacks:4d}  "
                 f"exit codes outside 0/1/2/3 {self.bad_exit:4d}  NaN/inf {self.nonfinite:4d}  "
-                f"calls over {SLOW_S:.0f} s {self.slow:3d}  ({self.seconds:.0f} s; outcomes "
+                f"calls over {SLOW_S:.0f} s {self.slow:3d}  "
+                + (f"HTTP 500s {self.http500:4d}  " if self.surface in ("web", "openapi") else "")
+                + f"({self.seconds:.0f} s; outcomes "
                 + ", ".join(f"{k} {v}" for k, v in sorted(self.outcomes.items())) + ")")
 
     @property
@@ -646,7 +649,12 @@ API_SKIP = {"load_project", "Project", "layout", "loads", "selection", "wear", "
             "SprocketDimensions", "PocketWheelDimensions", "TrackDriveWheelDimensions", "CampbellResult",
             "ResonanceCheck", "ResonanceMapResult", "SpanVibration", "SafeTensioner", "ReducedTensioner",
             "PinBendingResult", "BeamSolution", "FrettingComparison", "RollerContactResult", "TrackToothResult",
-            "FittedBoltResult", "FrictionBoltResult", "Chain"}
+            "FittedBoltResult", "FrictionBoltResult", "Chain",
+            # a container analyze_variants fills with the analyses of its variants
+            "VariantAnalyses",
+            # the static solver's Newton kernel on a model's packed arrays (13 arrays that only
+            # assemble() makes consistently): reached through assemble/simulate
+            "solve_static"}
 
 #: (callable, result field) where +inf is a documented value passed through (a fixed
 #: tensioner has infinite stiffness), not an overflow.
@@ -655,7 +663,7 @@ API_INFINITE_OK = {("TensionerSpan", "stiffness")}
 _F_TYPICAL = {
     "length": (1e-3, 3.0), "angle": (-1.0, 1.5), "speed": (0.1, 200.0), "force": (1.0, 1e6),
     "mass": (0.1, 100.0), "mpl": (0.05, 50.0), "stiffness": (1e2, 1e8), "pressure": (1e8, 3e11),
-    "time": (1e-3, 10.0), "ratio": (0.1, 10.0), "power": (10.0, 1e6), "torque": (1.0, 1e5),
+    "time": (1e-3, 0.5), "ratio": (0.1, 10.0), "power": (10.0, 1e6), "torque": (1.0, 1e5),
     "factor": (0.1, 2.0), "small": (1e-4, 0.5), "generic": (0.01, 100.0),
 }
 _KIND_BY_NAME = [
@@ -825,6 +833,40 @@ def _annotation_text(obj, p) -> str:
 
 
 _POOL: dict[str, list] = {}
+#: One pool per template drive: the drive and its own analysis (a call taking a drive and
+#: its layout gets the layout of that drive).
+_GROUPS: list[dict[str, list]] = []
+
+
+def _group_of(drive) -> dict[str, list]:
+    """Objects of one drive: the drive, its parts, its analysis results."""
+    from chaindrive.analysis import analyze_drive
+
+    group: dict[str, list] = {}
+
+    def put(obj, depth: int = 0) -> None:
+        if obj is None or depth > 3 or isinstance(obj, (str, bytes, int, float, bool, np.ndarray, np.generic)):
+            return
+        if isinstance(obj, (list, tuple)):
+            for v in obj[:6]:
+                put(v, depth + 1)
+            return
+        if not (type(obj).__module__ or "").startswith("chaindrive"):
+            return
+        for cls in type(obj).__mro__:
+            if (cls.__module__ or "").startswith("chaindrive"):
+                group.setdefault(cls.__name__, []).append(obj)
+        if dataclasses.is_dataclass(obj):
+            for f in dataclasses.fields(obj):
+                put(getattr(obj, f.name, None), depth + 1)
+
+    put(drive)
+    with contextlib.suppress(Exception):
+        analysis = analyze_drive(drive)
+        for name in getattr(analysis, "parts", None) or ():
+            with contextlib.suppress(Exception):
+                put(analysis[name])
+    return group
 
 
 def object_pool() -> dict[str, list]:
@@ -864,6 +906,7 @@ def object_pool() -> dict[str, list]:
         for kind in ("roller", "mining", "track", "crawler-conveyor"):
             with contextlib.suppress(Exception):
                 drive = parse_project(_template(kind))
+                _GROUPS.append(_group_of(drive))
                 add(drive)
                 analysis = analyze_drive(drive)
                 add(analysis)
@@ -884,7 +927,10 @@ def object_pool() -> dict[str, list]:
             add(model)
             result = simulate(model, 0.02, samples=20)
             add(result)
-            add(getattr(result, "state", None) or getattr(result, "final_state", None))
+            state = getattr(result, "final_state", None)
+            add(state)
+            _POOL.setdefault("(model, state)", []).append((model, state))
+            _POOL.setdefault("(model, result)", []).append((model, result))
         _more_objects(add)
     return _POOL
 
@@ -946,6 +992,8 @@ def api_call_args(qualname: str, obj, rnd: random.Random) -> tuple[list, dict] |
         return None
     args, kwargs = [], {}
     doc_types = documented_types(obj)
+    object_pool()
+    group = rnd.choice(_GROUPS) if _GROUPS else {}
     for p in sig.parameters.values():
         if p.kind in (p.VAR_POSITIONAL, p.VAR_KEYWORD):
             continue
@@ -956,11 +1004,20 @@ def api_call_args(qualname: str, obj, rnd: random.Random) -> tuple[list, dict] |
         ann = _annotation_text(obj, p)
         words = set(re.findall(r"[A-Za-z_]\w*", ann))
         objects = _pooled(words - _NUMERIC_WORDS - _TEXT_WORDS)
-        builder = SPECIAL_PARAMS.get(p.name) if not objects or p.name in ("span", "pin") else None
+        text_only = bool(words) and words <= _TEXT_WORDS | {"None", "Sequence", "list", "tuple", "Iterable"}
+        numeric_only = bool(words) and words <= _NUMERIC_WORDS and not objects
+        builder = (SPECIAL_PARAMS.get(p.name) if (not objects or p.name in ("span", "pin")) and not text_only
+                   and not (numeric_only and p.name in ("wheel", "chain", "drive")) else None)
         many = re.match(r"^\s*(list|Sequence|tuple|Iterable|collections\.abc\.Sequence)\[", ann) is not None
         if objects and many:
-            bucket = object_pool()[rnd.choice(sorted(objects))]
-            value = [rnd.choice(bucket) for _ in range(rnd.choice((1, 2, 3)))]
+            value = [_object(rnd, group, objects) for _ in range(rnd.choice((1, 2, 3)))]
+        elif many and "str" in words and not objects:
+            value = [rnd.choice(WORDS) for _ in range(rnd.choice((0, 1, 2)))]
+        elif re.match(r"^\s*(list|Sequence)\[(list|Sequence)\[", ann):
+            value = [[api_value("generic", None, rnd, arrays=False) for _ in range(rnd.choice((1, 2, 3)))]
+                     for _ in range(rnd.choice((1, 2)))]
+        elif words and words <= {"np", "ndarray", "NDArray", "npt", "float64", "None"} and "ndarray" in ann:
+            value = _array(p.name)(rnd)
         elif builder is not None:
             try:
                 value = builder(rnd)
@@ -969,7 +1026,7 @@ def api_call_args(qualname: str, obj, rnd: random.Random) -> tuple[list, dict] |
         elif p.name in ("callback", "progress", "ax", "rng"):
             continue
         elif objects:
-            value = rnd.choice(object_pool()[rnd.choice(sorted(objects))])
+            value = _object(rnd, group, objects)
         elif words & _PATH_WORDS or (not words and p.name in ("folder", "directory", "filename", "file")):
             if not required:
                 continue
@@ -1008,7 +1065,16 @@ def api_call_args(qualname: str, obj, rnd: random.Random) -> tuple[list, dict] |
             args.append(value)
         else:
             kwargs[p.name] = value
+    for other in ("state", "result"):  # a state or result of its own model
+        if other in kwargs and "model" in kwargs and object_pool().get(f"(model, {other})"):
+            kwargs["model"], kwargs[other] = rnd.choice(object_pool()[f"(model, {other})"])
     return args, kwargs
+
+
+def _object(rnd: random.Random, group: dict, names: list[str]):
+    """A pooled object of one of the classes ``names``, from the call's drive group when it has one."""
+    name = rnd.choice(sorted(names))
+    return rnd.choice(group.get(name) or object_pool()[name])
 
 
 def _tensioner_span(rnd: random.Random):
@@ -1230,6 +1296,13 @@ def _schema_value(name: str, sch: dict, rnd: random.Random, texts: list[str]):
 WEB_WEIGHTS = {"/api/jobs/simulate": 0.1}
 
 
+#: Raw JSON bodies: not JSON, JSON of the wrong shape, deep, huge numbers (issue 34: null, "x", [],
+#: 5 gave HTTP 500; `[1,2` started a default job).
+RAW_BODIES = [b"null", b'"x"', b"[]", b"5", b"[1,2", b"{", b"", b"\xff\xfe\x00", b'{"a":', b"[" * 3000 + b"]" * 3000,
+              b'{"speed": {"x": [1]}}', b'{"frames": 1e999}', b'{"frames": -1}', b'{"duration": "1e300 s"}',
+              b'{"example": null, "design": 5}', b"true", b'{"speed": "NaN rad/s"}', b'{"load": "' + b"9" * 400 + b' N*m"}']
+
+
 def web_request(rnd: random.Random, routes, texts, fields=()):
     weights = [WEB_WEIGHTS.get(r[1], 1.0) for r in routes]
     method, path, params, body = rnd.choices(routes, weights)[0]
@@ -1253,6 +1326,8 @@ def web_request(rnd: random.Random, routes, texts, fields=()):
             data = chosen
         else:
             json_body = chosen
+    if method == "post" and (body is not None or fields) and rnd.random() < 0.15:
+        return method, url, query, rnd.choice(RAW_BODIES), None  # hostile raw bytes as a JSON body
     if body is not None:
         props = body["schema"].get("properties", {})
         required = set(body["schema"].get("required", []))
@@ -1277,7 +1352,10 @@ def run_web(client, req, tally: Tally) -> None:
         warnings.simplefilter("ignore")
         try:
             kw = {"params": query}
-            if data is not None:
+            if isinstance(data, bytes):
+                kw["content"] = data
+                kw["headers"] = {"content-type": "application/json"}
+            elif data is not None:
                 kw["data"] = data
             if json_body is not None:
                 kw["json"] = json_body
@@ -1289,6 +1367,7 @@ def run_web(client, req, tally: Tally) -> None:
     code = resp.status_code
     tally.outcomes[f"HTTP {code}"] = tally.outcomes.get(f"HTTP {code}", 0) + 1
     if code >= 500 and code != 503:  # 503: the server's job queue is full (by design)
+        tally.http500 += 1
         tally.add("tracebacks", what, f"HTTP {code}: {resp.text[:300]!r}")
     if "Traceback (most recent call last)" in resp.text:
         tally.add("tracebacks", what, "traceback in the response body")
@@ -1375,6 +1454,7 @@ def run_openapi_case(case, tally: Tally) -> None:
     tally.outcomes[f"HTTP {code}"] = tally.outcomes.get(f"HTTP {code}", 0) + 1
     text = resp.text if isinstance(resp.text, str) else ""
     if code >= 500 and code != 503:
+        tally.http500 += 1
         tally.add("tracebacks", what, f"HTTP {code}: {text[:300]!r}")
     if "Traceback (most recent call last)" in text:
         tally.add("tracebacks", what, "traceback in the response body")

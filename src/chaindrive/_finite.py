@@ -234,6 +234,9 @@ def finite_guard(function: F | None = None, *, check_result: bool = True,
             # numpy/scipy refusing a value the function did not check itself (e.g. a
             # negative sample count, an empty range): an input outside its range
             raise InputError(f"{label}: an input is outside its valid range ({text.strip()})") from None
+        except IndexError as exc:  # an index or a count argument outside the arrays it indexes
+            raise InputError(f"{label}: an index or count argument is out of range for the other "
+                             f"arguments ({str(exc).strip()})") from None
         except RuntimeError as exc:  # e.g. scipy's QhullError: a degenerate geometry
             if type(exc).__name__ in ("QhullError",):
                 raise InfeasibleError(f"{label}: the geometry is degenerate for these inputs (the points are "

@@ -10,6 +10,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .. import layout as L
+from .._finite import finite_guard
 from .._results import Result, quantity
 from ..drive.model import Drive
 from ..errors import InfeasibleError, ValidityRangeWarning
@@ -256,6 +257,7 @@ def _required_length(drive: Drive, positions: np.ndarray, phases: int):
     return required, None, loop, None
 
 
+@finite_guard  # NaN/inf and out-of-range arguments refused (chaindrive._finite)
 def span_inclination(direction: float) -> float:
     """Inclination of a span's chord above the horizontal, in (-π/2, π/2] [rad].
 

@@ -10,6 +10,7 @@ import numpy as np
 
 from .. import layout as L
 from .. import loads as F
+from .._finite import finite_guard
 from .._results import Result, quantity
 from ..chains import Chain
 from ..drive.model import Drive
@@ -338,6 +339,7 @@ def drive_loads(drive: Drive, layout: DriveLayout | None = None, *,
     )
 
 
+@finite_guard  # NaN/inf and out-of-range arguments refused (chaindrive._finite)
 def span_tensions(effective_pull: float, slack: float, shares: np.ndarray, driving: int,
                   travel: str = "ccw") -> np.ndarray:
     r"""Static tension of every span [N] with the power taken off at several wheels.

@@ -117,3 +117,8 @@ def drive_advice(duty: Duty, rating: ChainRating, *, smaller_pitch: str | None =
                      "ACA and ISO 10823:2004 ratings: 15 000 h",
                      f"15 000 h at {duty.hours_per_day:g} h/day is about {years:.1f} years"))
     return tuple(out)
+
+
+from chaindrive._finite import guard_public  # noqa: E402
+
+guard_public(__name__)  # every public function and dataclass: NaN/inf in or out refused

@@ -233,7 +233,9 @@ def side_chamfer_moment(radius: ArrayLike, width: float, tip_radius: float, side
 
     Parameters
     ----------
-    radius, width, tip_radius, side_radius, side_relief : float or array_like
+    radius : float or array_like
+        As in :func:`side_chamfer_thickness` [m].
+    width, tip_radius, side_radius, side_relief : float
         As in :func:`side_chamfer_thickness` [m].
 
     Returns
