@@ -2,10 +2,17 @@
 
 from __future__ import annotations
 
-from ..drive.model import Wheel
-from ..errors import InputError
+import math
 
-__all__ = ["wheel_teeth"]
+import numpy as np
+
+from .. import layout as L
+from ..drive.model import Drive, Wheel
+from ..errors import InfeasibleError, InputError
+from .checks import Check
+
+__all__ = ["wheel_teeth", "wheel_checks", "clearance_error", "power_wheels", "MINIMUM_POWER_WRAP",
+           "MINIMUM_POWER_TEETH_IN_MESH"]
 
 
 def wheel_teeth(wheel: Wheel, purpose: str) -> int:
@@ -32,3 +39,148 @@ def wheel_teeth(wheel: Wheel, purpose: str) -> int:
         raise InputError(f"wheel {wheel.name!r}: {purpose} needs teeth (a whole number >= 3); "
                          "a toothless idler cannot take this role", field="teeth")
     return wheel.teeth
+
+
+# --------------------------------------------------------------------------- every wheel
+#: Least wrap of the chain on a sprocket that transmits power [rad]: 120° (ISO 10823:2004
+#: guidance for the small sprocket; Diamond Chain, "What is the recommended minimum chain
+#: wrap in a roller chain drive?": 120°, down to 90° only where the chain tension is
+#: closely maintained, else the chain can jump teeth).
+MINIMUM_POWER_WRAP = math.radians(120.0)
+
+#: Least whole teeth (pockets) in mesh on a sprocket that transmits power [-]: the 120°
+#: above on a 9-tooth sprocket, the smallest of the ANSI/ACA rating tables (ASME B29.1,
+#: ACA power tables): 9 × 120/360 = 3.
+MINIMUM_POWER_TEETH_IN_MESH = 3
+
+WRAP_SOURCE = ("ISO 10823:2004 guidance; Diamond Chain, recommended minimum chain wrap (120°, 90° only with the "
+               "chain tension closely maintained)")
+TEETH_SOURCE = ("the 120° minimum wrap on a 9-tooth sprocket, the smallest of the ANSI/ACA rating tables "
+                "(9 × 120°/360° = 3 teeth)")
+
+
+def power_wheels(drive: Drive) -> list[int]:
+    """Indices of the wheels that transmit power: the driving wheel, every wheel given a
+    ``power_share > 0``, the driven wheel of a two-wheel drive, a conveyor's tail drive."""
+    out = {drive.driving_index}
+    out.update(i for i, w in enumerate(drive.wheels) if (w.power_share or 0.0) > 0)
+    if drive.is_two_wheel():
+        out.update(range(2))
+    conv = drive.conveyor
+    if conv is not None and conv.head_share < 1.0:
+        n = len(drive.wheels)
+        out.add((drive.driving_index - 1) % n if drive.travel == "ccw" else (drive.driving_index + 1) % n)
+    return sorted(out)
+
+
+def clearance_error(drive: Drive, centres: np.ndarray) -> None:
+    """Refuse overlapping wheels (coincident centres included) and spans crossing a wheel,
+    naming the wheels (:func:`chaindrive.layout.clearance_problems`).
+
+    Raises
+    ------
+    InputError
+        Field ``wheels[i].position`` of the wheel to move.
+    """
+    radii = drive.pitch_radii()
+    problems = L.clearance_problems(centres, radii, [w.side for w in drive.wheels])
+    if not problems:
+        return
+    kind, i, j, dist = problems[0]
+    names = drive.wheel_names
+    n = len(names)
+    if kind == "overlap":
+        what = ("have the same centre" if dist < 1e-12 else
+                f"overlap: centres {dist * 1e3:.1f} mm apart, pitch radii {radii[i] * 1e3:.1f} + "
+                f"{radii[j] * 1e3:.1f} = {(radii[i] + radii[j]) * 1e3:.1f} mm")
+        raise InputError(f"wheels {names[i]!r} and {names[j]!r} {what}; move {names[j]!r} so that the centres "
+                         f"are at least {(radii[i] + radii[j]) * 1e3:.1f} mm apart (the sum of the pitch radii)",
+                         field=f"wheels[{j}].position")
+    raise InputError(f"the chain from {names[i]!r} to {names[(i + 1) % n]!r} runs through wheel {names[j]!r} "
+                     f"({dist * 1e3:.1f} mm from its centre, pitch radius {radii[j] * 1e3:.1f} mm); move "
+                     f"{names[j]!r}, or list the wheels in the order the chain passes them",
+                     field=f"wheels[{j}].position")
+
+
+#: Margin over a minimum wrap that a move advised by the checks aims at [rad], so that the
+#: position rounded to whole millimetres still passes.
+ADVICE_MARGIN = math.radians(0.5)
+
+
+def _advice(drive: Drive, centres: np.ndarray, index: int, minimum: float) -> str:
+    """Where to move wheel ``index`` so that its wrap reaches ``minimum``: the smallest move
+    along eight directions found by :func:`chaindrive.layout.place_for_wrap` for ``minimum``
+    + :data:`ADVICE_MARGIN`, the position rounded to whole millimetres and re-checked (every
+    power sprocket's wrap at least ``minimum``, wheels and spans clear)."""
+    radii = drive.pitch_radii()
+    sides = [w.side for w in drive.wheels]
+    power = power_wheels(drive)
+    best = None
+    for k in range(8):
+        d = np.array([math.cos(k * math.pi / 4), math.sin(k * math.pi / 4)])
+        try:
+            s = L.place_for_wrap(centres, radii, sides, index, d, minimum + ADVICE_MARGIN, steps=100)
+        except InputError:
+            continue
+        if best is not None and abs(s) >= best[0]:
+            continue
+        moved = centres.copy()
+        moved[index] = np.round((centres[index] + s * d) * 1e3) / 1e3
+        try:
+            wraps = L.wrap_layout(moved, radii, sides).wrap_angle
+        except InfeasibleError:
+            continue
+        if all(wraps[i] >= minimum for i in power) and not L.clearance_problems(moved, radii, sides):
+            best = (abs(s), s * d, moved[index], float(wraps[index]))
+    name = drive.wheels[index].name
+    if best is None:
+        return (f"no move of {name!r} within twice the drive's size gives it {math.degrees(minimum):.0f}° with "
+                f"every power sprocket keeping {math.degrees(minimum):.0f}°: add an idler on the back of a span "
+                f"next to {name!r} that presses the chain round it")
+    dist, move, at, wrap = best
+    return (f"move {name!r} by ({move[0] * 1e3:.0f} mm, {move[1] * 1e3:.0f} mm) to position = "
+            f"[\"{at[0] * 1e3:.0f} mm\", \"{at[1] * 1e3:.0f} mm\"]: wrap {math.degrees(wrap):.1f}° there, every "
+            f"power sprocket at least {math.degrees(minimum):.0f}°, wheels and spans clear (or any wrap: "
+            f"`chaindrive layout FILE --place \"{name}\" --wrap \"130 deg\"`); or add an idler on the back of a "
+            "span next to it; then fit the links again")
+
+
+def wheel_checks(drive: Drive, wrap: L.WrapLayout, teeth_in_mesh: tuple[int | None, ...]) -> list[Check]:
+    """Wrap and teeth in mesh on every wheel: a power-transmitting sprocket (other than
+    the driving wheel, whose wrap is :func:`chaindrive.analysis.loads.wrap_check`) against
+    :data:`MINIMUM_POWER_WRAP` and every power sprocket against
+    :data:`MINIMUM_POWER_TEETH_IN_MESH`, with advice where to move a failing wheel; an
+    idler shown for information (no published minimum for idlers in the sources used)."""
+    centres = np.asarray(wrap.centres, float)
+    power = power_wheels(drive)
+    roller = not drive.chain.is_link_chain
+    checks: list[Check] = []
+    for i, w in enumerate(drive.wheels):
+        theta = float(wrap.wrap_angle[i])
+        mesh = teeth_in_mesh[i]
+        if i in power:
+            role = "driving" if i == drive.driving_index else "driven"
+            short = theta < MINIMUM_POWER_WRAP - 1e-12
+            few = roller and mesh is not None and mesh < MINIMUM_POWER_TEETH_IN_MESH
+            advice = _advice(drive, centres, i, MINIMUM_POWER_WRAP) if short or few else ""
+            if i != drive.driving_index:
+                checks.append(Check(f"wrap on {role} wheel {w.name!r}", theta, MINIMUM_POWER_WRAP, "rad",
+                                    not short, WRAP_SOURCE, note=advice if short else ""))
+            if mesh is not None and roller:
+                checks.append(Check(f"teeth in mesh on {role} wheel {w.name!r}", float(mesh),
+                                    float(MINIMUM_POWER_TEETH_IN_MESH), "-", not few, TEETH_SOURCE,
+                                    note=advice if few else ""))
+            elif mesh is not None:
+                checks.append(Check(f"pockets in mesh on {role} wheel {w.name!r}", float(mesh), None, "-", None,
+                                    "whole pockets inside the wrap (chaindrive.layout.teeth_in_mesh)",
+                                    note="a round link chain: the 3-teeth rule of the roller chain tables does "
+                                         "not apply; no published minimum in the sources used", relation="info"))
+        else:
+            what = "idler" if w.kind == "idler" else "idle wheel"
+            note = (f"transmits no power: the sources used (ISO 10823, Diamond Chain) give no minimum wrap for it; "
+                    f"{mesh if mesh is not None else 'no'} teeth in mesh")
+            if mesh == 0:
+                note += " (the chain only touches it: it guides nothing)"
+            checks.append(Check(f"wrap on {what} {w.name!r}", theta, None, "rad", None, WRAP_SOURCE, note=note,
+                                relation="info"))
+    return checks

@@ -14,7 +14,7 @@ from .._results import Result, quantity
 from ..drive.model import Drive
 from ..errors import InfeasibleError, ValidityRangeWarning
 from ._memo import freeze, memo
-from ._wheels import wheel_teeth
+from ._wheels import clearance_error, wheel_checks, wheel_teeth
 from .checks import Check
 from .parts import Part, PartContext, register_part
 
@@ -165,6 +165,7 @@ def _geometry(drive: Drive, phases: int) -> DriveLayout:
     chain = drive.chain
     sides = [w.side for w in wheels]
     positions = np.array([w.position for w in wheels], dtype=float)
+    clearance_error(drive, positions)
     links_required, polygon, loop, centre = _required_length(drive, positions, phases)
     needed = loop.links_max if loop is not None and loop.exact else links_required
     links = int(drive.links) if drive.links is not None else int(L.even_links(needed))
@@ -175,6 +176,7 @@ def _geometry(drive: Drive, phases: int) -> DriveLayout:
                                    sides, diameters=[w.diameter for w in wheels], bar_diameter=drive.bar_diameter,
                                    phases=phases)
         positions[idx] = adjustment.position
+        clearance_error(drive, positions)
         links_required, polygon, loop, centre = _required_length(drive, positions, phases)
         needed = loop.links_max if loop is not None and loop.exact else links_required
     wrap = L.wrap_layout(positions, radii, sides)
@@ -284,7 +286,7 @@ def _layout_part(ctx: PartContext) -> DriveLayout:
 def _layout_checks(ctx: PartContext, lay: DriveLayout) -> list[Check]:
     from .loads import wrap_check
 
-    return [wrap_check(ctx.drive, lay)]
+    return [wrap_check(ctx.drive, lay), *wheel_checks(ctx.drive, lay.wrap, lay.teeth_in_mesh)]
 
 
 register_part(Part("layout", "Layout: chain length, spans, wraps, take-up", _layout_part, checks=_layout_checks,
