@@ -187,3 +187,30 @@ def test_clearance_problems_crossing():
     out = L.clearance_problems(c[:4], [0.1] * 4)
     assert out == []
     assert L.clearance_problems([[0, 0], [1, 0], [0.5, -0.05]], [0.1, 0.1, 0.08], [1, 1, -1])
+
+
+def test_both_advices_pass_when_followed(multi):
+    # the example as it was (machine B at 117.8° of wrap): move it, or add an idler
+    import dataclasses
+
+    from chaindrive.drive import Wheel
+
+    old = multi.with_wheel("machine B", position=(0.75, 0.75))
+    a = _layout(old)
+    wrap = {c.name: c for c in a.checks}["wrap on driven wheel 'machine B'"]
+    assert wrap.passed is False and math.degrees(wrap.value) == pytest.approx(117.8, abs=0.05)
+    pos = r'position = \["(-?\d+) mm", "(-?\d+) mm"\]'
+    moves = re.findall(pos, wrap.note)
+    assert len(moves) == 2, wrap.note
+    (mx, my), (ix, iy) = ((int(x) / 1e3, int(y) / 1e3) for x, y in moves)
+    moved = _layout(old.with_wheel("machine B", position=(mx, my)))
+    assert moved.passed and math.degrees(moved.layout.wrap.wrap_angle[3]) >= 120.0
+    m = re.search(r"on the back of the span '(.+?)' → '(.+?)'", wrap.note)
+    assert m and m[1] == "machine A" and m[2] == "machine B"
+    wheels = list(old.wheels)
+    wheels.insert(3, Wheel("advised idler", "idler", 17, (ix, iy), side=-1))
+    with_idler = _layout(dataclasses.replace(old, wheels=wheels, links=None))
+    checks = {c.name: c for c in with_idler.checks}
+    assert checks["wrap on driven wheel 'machine B'"].passed
+    assert math.degrees(with_idler.layout.wrap.wrap_angle[4]) >= 120.0
+    assert with_idler.passed

@@ -133,16 +133,69 @@ def _advice(drive: Drive, centres: np.ndarray, index: int, minimum: float) -> st
         if all(wraps[i] >= minimum for i in power) and not L.clearance_problems(moved, radii, sides):
             best = (abs(s), s * d, moved[index], float(wraps[index]))
     name = drive.wheels[index].name
+    idler = _idler_advice(drive, centres, index, minimum)
     if best is None:
         return (f"no move of {name!r} within twice the drive's size gives it {math.degrees(minimum):.0f}° with "
-                f"every power sprocket keeping {math.degrees(minimum):.0f}°: add an idler on the back of a span "
-                f"next to {name!r} that presses the chain round it")
+                f"every power sprocket keeping {math.degrees(minimum):.0f}°; " + (idler or
+                f"add an idler on the back of a span next to {name!r} that presses the chain round it"))
     dist, move, at, wrap = best
     return (f"move {name!r} by ({move[0] * 1e3:.0f} mm, {move[1] * 1e3:.0f} mm) to position = "
             f"[\"{at[0] * 1e3:.0f} mm\", \"{at[1] * 1e3:.0f} mm\"]: wrap {math.degrees(wrap):.1f}° there, every "
             f"power sprocket at least {math.degrees(minimum):.0f}°, wheels and spans clear (or any wrap: "
-            f"`chaindrive layout FILE --place \"{name}\" --wrap \"130 deg\"`); or add an idler on the back of a "
-            "span next to it; then fit the links again")
+            f"`chaindrive layout FILE --place \"{name}\" --wrap \"130 deg\"`); or "
+            + (idler or "add an idler on the back of a span next to it") + "; then fit the links again")
+
+
+#: Teeth of the idler the advice proposes (a common idler size, e.g. the examples' take-up idler).
+ADVICE_IDLER_TEETH = 17
+
+
+def _idler_advice(drive: Drive, centres: np.ndarray, index: int, minimum: float) -> str:
+    """An idler on the back of a span next to wheel ``index``, a third of the span from it,
+    pushed into the loop until the wheel has ``minimum`` + :data:`ADVICE_MARGIN` (computed
+    with :func:`chaindrive.layout.place_for_wrap`, the position rounded to whole
+    millimetres and re-checked: every power sprocket at least ``minimum``, the layout
+    clear); ``""`` where none is found (or the chain has no teeth-based idler size)."""
+    if drive.chain.is_link_chain:
+        return ""
+    radii = list(drive.pitch_radii())
+    sides = [float(w.side) for w in drive.wheels]
+    n = len(radii)
+    r_id = float(L.pitch_radius(drive.pitch, ADVICE_IDLER_TEETH))
+    wrap = L.wrap_layout(centres, radii, sides)
+    power = power_wheels(drive)
+    best = None
+    for span, near_start in (((index - 1) % n, False), (index, True)):
+        a, b = np.asarray(wrap.span_start[span]), np.asarray(wrap.span_end[span])
+        t = (b - a) / float(np.hypot(*(b - a)))
+        outside = np.array([t[1], -t[0]])           # right of travel: outside the loop
+        point = a + (b - a) * (1 / 3 if near_start else 2 / 3)
+        at = span + 1                               # inserted after wheel `span`
+        c2 = np.insert(centres, at, point + r_id * outside, axis=0)
+        r2 = np.insert(np.asarray(radii), at, r_id)
+        s2 = np.insert(np.asarray(sides), at, -1.0)
+        target = index + 1 if index >= at else index
+        try:
+            s = L.place_for_wrap(c2, r2, s2, at, -outside, minimum + ADVICE_MARGIN, target=target, steps=100)
+        except InputError:
+            continue
+        c2[at] = np.round((c2[at] - s * outside) * 1e3) / 1e3
+        try:
+            wraps = L.wrap_layout(c2, r2, s2).wrap_angle
+        except InfeasibleError:
+            continue
+        shifted = [i + 1 if i >= at else i for i in power]
+        if all(wraps[i] >= minimum for i in shifted) and not L.clearance_problems(c2, r2, s2) \
+                and (best is None or abs(s) < best[0]):
+            best = (abs(s), span, c2[at], float(wraps[target]))
+    if best is None:
+        return ""
+    _, span, pos, got = best
+    names = drive.wheel_names
+    return (f"add a {ADVICE_IDLER_TEETH}-tooth idler (side = -1) on the back of the span {names[span]!r} → "
+            f"{names[(span + 1) % n]!r}, listed between them, at position = [\"{pos[0] * 1e3:.0f} mm\", "
+            f"\"{pos[1] * 1e3:.0f} mm\"]: wrap on {names[index]!r} {math.degrees(got):.1f}° there, every power "
+            f"sprocket at least {math.degrees(minimum):.0f}°, wheels and spans clear")
 
 
 def wheel_checks(drive: Drive, wrap: L.WrapLayout, teeth_in_mesh: tuple[int | None, ...]) -> list[Check]:

@@ -94,8 +94,8 @@ def place_for_wrap(centres: ArrayLike, radii: ArrayLike, sides: ArrayLike | None
 
     Solves :math:`θ_{target}(c_{index} + s\,\hat d) = θ_{req}` for the smallest move
     ``|s|`` (a scan in ``steps`` steps each way over ``[−reach, reach]`` from ``s = 0``,
-    then Brent's method on the first sign change; the edge of a clear layout found by
-    bisection), where the layout stays clear (:func:`clearance_problems`).
+    then bisection on the first sign change, to 1e-13 m; the edge of a clear layout found
+    by bisection too), where the layout stays clear (:func:`clearance_problems`).
 
     Parameters
     ----------
@@ -137,8 +137,6 @@ def place_for_wrap(centres: ArrayLike, radii: ArrayLike, sides: ArrayLike | None
     ...     [0.1, 0.05, 0.1]).wrap_angle[1])), 6)
     60.0
     """
-    from .._roots import brentq
-
     c = as_float_array("centres", centres).copy()
     n = len(c)
     if not 0 <= int(index) < n:
@@ -175,6 +173,22 @@ def place_for_wrap(centres: ArrayLike, radii: ArrayLike, sides: ArrayLike | None
                 good = mid
         return good
 
+    def bisect(a: float, va: float, b: float) -> float | None:
+        """Root between ``a`` (value ``va``) and ``b`` of opposite signs; ``None`` where the
+        layout stops being clear inside (no continuous wrap there)."""
+        for _ in range(80):
+            mid = 0.5 * (a + b)
+            vm = theta(mid)
+            if math.isnan(vm):
+                return None
+            if vm == 0 or abs(b - a) < 1e-13:
+                return mid
+            if (vm < 0) == (va < 0):
+                a, va = mid, vm
+            else:
+                b = mid
+        return 0.5 * (a + b)
+
     def scan(sign: float) -> float | None:
         grid = sign * np.linspace(0.0, reach, int(steps) + 1)
         prev_s, prev_v = 0.0, math.nan
@@ -197,8 +211,9 @@ def place_for_wrap(centres: ArrayLike, radii: ArrayLike, sides: ArrayLike | None
                     return b
                 if prev_v == 0:
                     return a
-                lo, hi = (a, b) if a < b else (b, a)
-                return float(brentq(theta, lo, hi, xtol=1e-12, rtol=1e-12))
+                root = bisect(a, prev_v, b)
+                if root is not None:
+                    return root
             prev_s, prev_v = float(s), vb
         return None
 
