@@ -8,6 +8,8 @@ import warnings
 
 import numpy as np
 import pytest
+
+from chaindrive.drive.writer import candidate_project_text
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
@@ -183,7 +185,7 @@ def test_candidate_project_loads_and_lays_out(tmp_path):
 
     row = S.select(7.5e3, 1450 * RPM, 3.0)[1]
     f = tmp_path / "drive.toml"
-    f.write_text(S.candidate_project(row), encoding="utf-8")
+    f.write_text(candidate_project_text(row), encoding="utf-8")
     drive = load_project(f)
     assert drive.chain.name == "10A-1" and drive.links == 116
     assert drive.speed == pytest.approx(1450 * RPM) and [w.teeth for w in drive.wheels] == [17, 51]

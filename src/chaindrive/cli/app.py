@@ -18,7 +18,8 @@ import typer
 
 from .._results import jsonable
 from ..limits import warn_implausible
-from ..units import parse_quantity, parse_wheel_speed
+from ..kinematics.speed import parse_wheel_speed
+from ..units import parse_quantity
 
 app = typer.Typer(
     name="chaindrive",
