@@ -48,6 +48,14 @@ LAYERS: tuple[tuple[str, tuple[str, ...]], ...] = (
     ("package face", ("chaindrive",)),
 )
 
+#: Circles still to be taken apart (a ratchet: a new circle fails, and so does an entry
+#: here that no longer exists; the list only shrinks).
+KNOWN_CIRCLES: list[list[str]] = [
+    ["chaindrive.simulation.conveyor", "chaindrive.simulation.from_drive"],
+    ["chaindrive.study.batch", "chaindrive.study.run", "chaindrive.study.summary"],
+    ["chaindrive.web.expert", "chaindrive.web.jobs", "chaindrive.web.studio", "chaindrive.web.tasks"],
+]
+
 MAX_LINES = 800
 #: Modules allowed over MAX_LINES: the numba kernel (one jitted unit) only.
 OVERSIZE_ALLOWED = {
@@ -171,7 +179,10 @@ def test_no_import_circle() -> None:
     for v in GRAPH:
         if v not in index:
             strong(v)
-    assert not circles, f"import circles: {circles}"
+    new = [c for c in circles if c not in KNOWN_CIRCLES]
+    assert not new, f"import circles: {new}"
+    gone = [c for c in KNOWN_CIRCLES if c not in circles]
+    assert not gone, f"no longer circles, remove from KNOWN_CIRCLES: {gone}"
 
 
 def test_every_module_has_a_layer() -> None:
