@@ -8,12 +8,11 @@ import warnings
 
 import numpy as np
 import pytest
-
-from chaindrive.drive.writer import candidate_project_text
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from chaindrive import selection as S
+from chaindrive.drive.writer import candidate_project_text
 from chaindrive.errors import InfeasibleError, InputError, UnknownNameError, ValidityRangeWarning
 
 RPM = 2 * math.pi / 60

@@ -8,13 +8,13 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from chaindrive.errors import InputError, ValidityRangeWarning
+from chaindrive.kinematics.speed import chain_speed_to_angular_velocity, parse_wheel_speed
 from chaindrive.limits import (
     MAX_POINTS,
     check_duration,
     check_size,
     warn_implausible,
 )
-from chaindrive.kinematics.speed import chain_speed_to_angular_velocity, parse_wheel_speed
 from chaindrive.units import (
     MAX_TEXT_LENGTH,
     parse_quantity,

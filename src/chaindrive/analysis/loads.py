@@ -17,7 +17,14 @@ from ..errors import ChainDriveError, InputError
 from ._memo import memo
 from ._wheels import wheel_teeth
 from .checks import Check
-from .layout import MINIMUM_WRAP, DriveLayout, drive_layout, slack_span_sag, span_inclination, wrap_check
+from .layout import (
+    MINIMUM_WRAP,
+    DriveLayout,
+    drive_layout,
+    slack_span_sag,
+    span_inclination,
+    wrap_check,
+)
 from .parts import Part, PartContext, register_part
 
 if TYPE_CHECKING:

@@ -17,8 +17,8 @@ from typing import Any, overload
 import typer
 
 from .._results import jsonable
-from ..limits import warn_implausible
 from ..kinematics.speed import parse_wheel_speed
+from ..limits import warn_implausible
 from ..units import parse_quantity
 
 app = typer.Typer(

@@ -67,8 +67,8 @@ def layout_command(
     from rich.markup import escape
 
     from ..analysis import analyze_drive
-    from ..drive.project import load_project
     from ..display import check_limit_text, check_value_text
+    from ..drive.project import load_project
 
     drive = load_project(file)
     analysis = analyze_drive(drive, include=["layout", "loads", "rating"])

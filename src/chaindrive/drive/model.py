@@ -28,8 +28,8 @@ from typing import TYPE_CHECKING, Any, Literal
 import numpy as np
 
 from .. import layout as L
-from .._presenters import view
 from .. import loads as F
+from .._presenters import view
 from ..errors import InputError
 from ..loads import mean_chain_speed, sides_per_turn
 from ._fields import _direction, _finite

@@ -34,9 +34,9 @@ from pydantic import (
 )
 
 from ..errors import ChainDriveError, InputError, UnknownNameError
+from ..kinematics.speed import chain_speed_to_angular_velocity
 from ..limits import MAX_LINKS, MAX_TEETH, warn_implausible
 from ..loads import mean_chain_speed
-from ..kinematics.speed import chain_speed_to_angular_velocity
 from ..units import is_dimensional, parse_quantity, unit_example
 from . import model as _model
 from .model import Adjustable, Drive, Guide, Load, Tensioner, Wheel

@@ -15,12 +15,12 @@ import numpy as np
 from ..analysis import DriveAnalysis
 from ..analysis.parts import Part, all_parts
 from ..analysis.vibration_remedy import REQUIRED_MARGIN
+from ..display import convert, display_of
 from ..drive.model import Wheel
 from ..errors import InputError
 from ..vibration.excitation import AMPLIFICATION_LIMIT, DAMPING_RATIO
 from ._figures import Figures, FigureShare
 from ._figures import Figures as _Figures
-from ..display import convert, display_of
 from .report import Section, Table
 
 if TYPE_CHECKING:
