@@ -51,7 +51,6 @@ LAYERS: tuple[tuple[str, tuple[str, ...]], ...] = (
 #: Circles still to be taken apart (a ratchet: a new circle fails, and so does an entry
 #: here that no longer exists; the list only shrinks).
 KNOWN_CIRCLES: list[list[str]] = [
-    ["chaindrive.simulation.conveyor", "chaindrive.simulation.from_drive"],
     ["chaindrive.study.batch", "chaindrive.study.run", "chaindrive.study.summary"],
     ["chaindrive.web.expert", "chaindrive.web.jobs", "chaindrive.web.studio", "chaindrive.web.tasks"],
 ]
