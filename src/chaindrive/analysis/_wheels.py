@@ -11,7 +11,7 @@ from ..drive.model import Drive, Wheel
 from ..errors import InfeasibleError, InputError
 from .checks import Check
 
-__all__ = ["wheel_teeth", "wheel_checks", "clearance_error", "power_wheels", "MINIMUM_POWER_WRAP",
+__all__ = ["wheel_teeth", "wheel_checks", "clearance_error", "power_wheels", "wrap_advice", "MINIMUM_POWER_WRAP",
            "MINIMUM_POWER_TEETH_IN_MESH"]
 
 
@@ -107,7 +107,7 @@ def clearance_error(drive: Drive, centres: np.ndarray) -> None:
 ADVICE_MARGIN = math.radians(0.5)
 
 
-def _advice(drive: Drive, centres: np.ndarray, index: int, minimum: float) -> str:
+def wrap_advice(drive: Drive, centres: np.ndarray, index: int, minimum: float = MINIMUM_POWER_WRAP) -> str:
     """Where to move wheel ``index`` so that its wrap reaches ``minimum``: the smallest move
     along eight directions found by :func:`chaindrive.layout.place_for_wrap` for ``minimum``
     + :data:`ADVICE_MARGIN`, the position rounded to whole millimetres and re-checked (every
@@ -215,7 +215,7 @@ def wheel_checks(drive: Drive, wrap: L.WrapLayout, teeth_in_mesh: tuple[int | No
             role = "driving" if i == drive.driving_index else "driven"
             short = theta < MINIMUM_POWER_WRAP - 1e-12
             few = roller and mesh is not None and mesh < MINIMUM_POWER_TEETH_IN_MESH
-            advice = _advice(drive, centres, i, MINIMUM_POWER_WRAP) if short or few else ""
+            advice = wrap_advice(drive, centres, i) if short or few else ""
             if i != drive.driving_index:
                 checks.append(Check(f"wrap on {role} wheel {w.name!r}", theta, MINIMUM_POWER_WRAP, "rad",
                                     not short, WRAP_SOURCE, note=advice if short else ""))
