@@ -95,9 +95,10 @@ def test_scraper_tensioner_force_from_the_end_tangents():
     d = load_project("examples/scraper_conveyor.toml")
     r = conveyor_pull(d)
     lay = drive_layout(d)
-    # 956 links for a path of 954.35: 106 mm of chain taken up by the tensioner (the
-    # simulation's assembly puts the wheel 0.2704 m below its drawn position)
-    assert r.tensioner_offset == pytest.approx(0.2704 - r.tensioner_travel, abs=2e-3)
+    # 956 links for a polygon path of 954.37: 104 mm of chain taken up by the tensioner;
+    # running, the simulation's wheel sits 0.2682 m below its drawn position (assembled
+    # 0.27039 m, then 2.15 mm back up under the running load; benchmarks/conveyor.py model)
+    assert r.tensioner_offset + r.tensioner_travel == pytest.approx(0.2682, abs=1.5e-3)
     moved = dataclasses.replace(d.with_wheel("tensioner", position=(1.2, -0.4 - r.tensioner_offset)),
                                 links=lay.links)
     wrap = drive_layout(moved).wrap

@@ -408,7 +408,11 @@ def _fitted_tensioner(drive: Drive, layout: DriveLayout) -> tuple[Drive, float] 
     tens = drive.tensioner
     if tens is None or tens.force is None or tens.kind not in ("spring", "weight", "hydraulic"):
         return None
-    extra = (float(layout.links) - float(layout.links_required)) * drive.pitch
+    # the chain over the path: the exact polygon length where the layout has it (the length
+    # that set the link count; the simulation's assembly fits the same), else the circles'
+    loop = layout.loop
+    needed = float(loop.links_max) if loop is not None and loop.exact else float(layout.links_required)
+    extra = (float(layout.links) - needed) * drive.pitch
     if not extra > 1e-6 * drive.pitch:
         return None
     iw = drive.wheel_index(tens.wheel)
