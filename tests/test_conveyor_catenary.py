@@ -167,3 +167,22 @@ def test_roller_drive_label_matches_its_formula(roller_drive):
 def test_free_strand_too_slack_is_refused():
     with pytest.raises(InputError, match="start_tension .* too low"):
         C.free_strand(28.8, 0.0, 100.0, 15.4)
+
+
+@pytest.mark.slow
+def test_conveyor_template_report_labels_match_their_formulas(tmp_path):
+    # issue 30 item 3: the template's loads section said "K_s T / R = 27.41 kN" (1.5 × the
+    # conveyor pull; T / R would be 73 kN) and drew the idle tail as a driven wheel
+    from chaindrive.cli import main
+
+    f = tmp_path / "c.toml"
+    assert main(["new", str(f), "--kind", "conveyor"]) == 0
+    main(["analyze", str(f), "-o", str(tmp_path / "out")])
+    html = (tmp_path / "out" / "report.html").read_text(encoding="utf-8")
+    assert "effective pull K_s F_head" in html and "K_s T / R" not in html
+    assert "running tensions of the chain pull" in html
+    d = load_project(f)
+    r = conveyor_pull(d)
+    assert r.tail_force == 0.0
+    tail = [w.name for w in d.wheels].index("tail")
+    assert r.wheel_tension_in[tail] == pytest.approx(r.wheel_tension_out[tail], rel=1e-12)
