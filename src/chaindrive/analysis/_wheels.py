@@ -119,7 +119,8 @@ def wrap_advice(drive: Drive, centres: np.ndarray, index: int, minimum: float = 
     for k in range(8):
         d = np.array([math.cos(k * math.pi / 4), math.sin(k * math.pi / 4)])
         try:
-            s = L.place_for_wrap(centres, radii, sides, index, d, minimum + ADVICE_MARGIN, steps=100)
+            s = L.place_for_wrap(centres, radii, sides, index, d, minimum + ADVICE_MARGIN, steps=40,
+                                 tolerance=1e-5)
         except InputError:
             continue
         if best is not None and abs(s) >= best[0]:
@@ -176,7 +177,8 @@ def _idler_advice(drive: Drive, centres: np.ndarray, index: int, minimum: float)
         s2 = np.insert(np.asarray(sides), at, -1.0)
         target = index + 1 if index >= at else index
         try:
-            s = L.place_for_wrap(c2, r2, s2, at, -outside, minimum + ADVICE_MARGIN, target=target, steps=100)
+            s = L.place_for_wrap(c2, r2, s2, at, -outside, minimum + ADVICE_MARGIN, target=target,
+                                 steps=40, tolerance=1e-5)
         except InputError:
             continue
         c2[at] = np.round((c2[at] - s * outside) * 1e3) / 1e3

@@ -19,13 +19,6 @@ from .wrap import wrap_layout
 __all__ = ["clearance_problems", "place_for_wrap"]
 
 
-def _segment_distance(point: np.ndarray, a: np.ndarray, b: np.ndarray) -> float:
-    ab = b - a
-    den = float(ab @ ab)
-    t = 0.0 if den == 0 else min(1.0, max(0.0, float((point - a) @ ab) / den))
-    return float(np.hypot(*(a + t * ab - point)))
-
-
 def clearance_problems(centres: ArrayLike, radii: ArrayLike, sides: ArrayLike | None = None,
                        ) -> list[tuple[str, int, int, float]]:
     r"""Wheels that overlap and spans that cross a wheel, on the pitch circles.
@@ -61,40 +54,47 @@ def clearance_problems(centres: ArrayLike, radii: ArrayLike, sides: ArrayLike | 
     >>> clearance_problems([[0, 0], [0.15, 0], [1, 0.5]], [0.15, 0.125, 0.1])
     [('overlap', 0, 1, 0.15)]
     """
-    c = as_float_array("centres", centres)
-    r = as_float_array("radii", radii)
+    return _clearance(as_float_array("centres", centres), as_float_array("radii", radii), sides)[0]
+
+
+def _clearance(c: np.ndarray, r: np.ndarray, sides: ArrayLike | None):
+    """(:func:`clearance_problems`, the wrap layout or ``None`` where there is none)."""
     n = len(c)
     out: list[tuple[str, int, int, float]] = []
-    for i in range(n):
-        for j in range(i + 1, n):
-            dist = float(np.hypot(*(c[i] - c[j])))
-            if dist < (r[i] + r[j]) * (1 - 1e-9):
-                out.append(("overlap", i, j, dist))
+    diff = c[:, None, :] - c[None, :, :]
+    dist = np.hypot(diff[..., 0], diff[..., 1])
+    close = dist < (r[:, None] + r[None, :]) * (1 - 1e-9)
+    for i, j in zip(*np.nonzero(np.triu(close, 1)), strict=True):
+        out.append(("overlap", int(i), int(j), float(dist[i, j])))
     if out:
-        return out
+        return out, None
     try:
         wrap = wrap_layout(c, r, sides)
     except InfeasibleError:
-        return out
+        return out, None
+    a, b = np.asarray(wrap.span_start), np.asarray(wrap.span_end)
+    ab = b - a
+    den = np.maximum(np.sum(ab * ab, axis=1), 1e-300)
+    # distance of every centre k from every span j: (j, k)
+    t = np.clip(np.einsum("jkd,jd->jk", c[None, :, :] - a[:, None, :], ab) / den[:, None], 0.0, 1.0)
+    near = a[:, None, :] + t[..., None] * ab[:, None, :] - c[None, :, :]
+    gap = np.hypot(near[..., 0], near[..., 1])
     for j in range(n):
         for k in range(n):
-            if k in (j, (j + 1) % n):
-                continue
-            dist = _segment_distance(c[k], wrap.span_start[j], wrap.span_end[j])
-            if dist < r[k] * (1 - 1e-9):
-                out.append(("crossing", j, k, dist))
-    return out
+            if k not in (j, (j + 1) % n) and gap[j, k] < r[k] * (1 - 1e-9):
+                out.append(("crossing", j, k, float(gap[j, k])))
+    return out, wrap
 
 
 def place_for_wrap(centres: ArrayLike, radii: ArrayLike, sides: ArrayLike | None, index: int,
                    direction: ArrayLike, wrap: float, *, target: int | None = None,
-                   reach: float | None = None, steps: int = 200) -> float:
+                   reach: float | None = None, steps: int = 200, tolerance: float = 1e-13) -> float:
     r"""Distance [m] to move wheel ``index`` along ``direction`` so that wheel ``target``
     has the chain wrapped over ``wrap`` [rad].
 
     Solves :math:`θ_{target}(c_{index} + s\,\hat d) = θ_{req}` for the smallest move
     ``|s|`` (a scan in ``steps`` steps each way over ``[−reach, reach]`` from ``s = 0``,
-    then bisection on the first sign change, to 1e-13 m; the edge of a clear layout found
+    then bisection on the first sign change, to ``tolerance``; the edge of a clear layout found
     by bisection too), where the layout stays clear (:func:`clearance_problems`).
 
     Parameters
@@ -113,6 +113,8 @@ def place_for_wrap(centres: ArrayLike, radii: ArrayLike, sides: ArrayLike | None
         Longest move searched [m]; default twice the layout's largest extent.
     steps : int
         Scan steps each way.
+    tolerance : float
+        Width [m] to which the root and a clear layout's edge are bisected.
 
     Returns
     -------
@@ -154,18 +156,18 @@ def place_for_wrap(centres: ArrayLike, radii: ArrayLike, sides: ArrayLike | None
     reach = 2.0 * max(span, 1e-3) if reach is None else float(reach)
     base = c[int(index)].copy()
 
+    r = as_float_array("radii", radii)
+
     def theta(s: float) -> float:
         c[int(index)] = base + s * d
-        if clearance_problems(c, radii, sides):
+        problems, lay = _clearance(c, r, sides)
+        if problems or lay is None:      # not clear, or no simple loop there
             return math.nan
-        try:
-            return float(wrap_layout(c, radii, sides).wrap_angle[tgt]) - float(wrap)
-        except InfeasibleError:          # no simple loop there
-            return math.nan
+        return float(lay.wrap_angle[tgt]) - float(wrap)
 
     def edge(good: float, bad: float) -> float:
         """The last clear position between a clear ``good`` and an unclear ``bad`` (bisection)."""
-        for _ in range(60):
+        while abs(good - bad) > tolerance:
             mid = 0.5 * (good + bad)
             if math.isnan(theta(mid)):
                 bad = mid
@@ -181,7 +183,7 @@ def place_for_wrap(centres: ArrayLike, radii: ArrayLike, sides: ArrayLike | None
             vm = theta(mid)
             if math.isnan(vm):
                 return None
-            if vm == 0 or abs(b - a) < 1e-13:
+            if vm == 0 or abs(b - a) < tolerance:
                 return mid
             if (vm < 0) == (va < 0):
                 a, va = mid, vm
