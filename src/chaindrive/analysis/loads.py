@@ -14,6 +14,7 @@ from .._results import Result, quantity
 from ..chains import Chain
 from ..drive.model import Drive
 from ..errors import ChainDriveError, InputError
+from ..units import angular_velocity_to_rpm, rpm_to_angular_velocity
 from ._memo import memo
 from ._wheels import wheel_teeth
 from .checks import Check
@@ -52,7 +53,7 @@ def required_static_safety(chain: Chain, pitch_speed: float | None = None) -> fl
     >>> required_static_safety(get("18x64")), required_static_safety(get("16B-1"))
     (3.5, 7.3)
     """
-    speed = 50 * math.pi / 30 if pitch_speed is None else pitch_speed
+    speed = rpm_to_angular_velocity(50.0) if pitch_speed is None else pitch_speed
     return F.required_static_safety_for(chain.is_link_chain, chain.pitch, speed)
 
 
@@ -365,14 +366,9 @@ def static_safety_check(drive: Drive, loads: DriveLoads) -> Check:
         basis = "required 3.5 for round link chains (the Dolipiński et al. example drive; no standard found)"
     else:
         n1 = drive.small_sprocket_speed()
-        basis = (f"required [s] from Chernavsky et al. Table 7.19 at p = {drive.pitch * 1e3:.3g} mm, "
-                 f"n1 = {n1 * 30 / math.pi:.0f} rpm (small sprocket)")
-        inside = (F.REQUIRED_SAFETY_PITCHES[0] - 1e-12 <= drive.pitch <= F.REQUIRED_SAFETY_PITCHES[-1] + 1e-12
-                  and n1 * 30 / math.pi >= F.REQUIRED_SAFETY_SPEEDS[0])
-        col = np.interp(drive.pitch, F.REQUIRED_SAFETY_PITCHES, [
-            F.REQUIRED_SAFETY_SPEEDS[~np.isnan(F.REQUIRED_SAFETY_TABLE[:, k])][-1]
-            for k in range(len(F.REQUIRED_SAFETY_PITCHES))])
-        if not inside or n1 * 30 / math.pi > col + 1e-9:
+        basis = (f"required [s] from Chernavsky et al. Table 7.19 at p = {drive.pitch * 1e3:.4g} mm, "
+                 f"n1 = {angular_velocity_to_rpm(n1):.0f} rpm (small sprocket)")
+        if F.outside_required_safety_table(drive.pitch, n1):
             basis += ", outside the printed table: extended linearly (chaindrive.loads.required_static_safety_table)"
     return Check(
         name="static safety", value=sf, limit=need, unit="-",
