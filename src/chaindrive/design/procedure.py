@@ -317,7 +317,8 @@ def _laid_out(rated: _Rated, duty: Duty, factors: tuple[Factor, ...], ks: float,
                 return None
             static_value, checks = static.value, analysis.checks
             tensions = (loads.tight, loads.dynamic, loads.maximum)
-            peak_limit = next((c.limit for c in checks if c.name == "peak tension"), None)
+            peak_limit = next((float(c.limit) for c in checks
+                               if c.name == "peak tension" and isinstance(c.limit, (int, float))), None)
     from ..rating.ansi import multi_strand_factor
 
     cand_factors = factors + (
