@@ -19,7 +19,14 @@ from ._memo import memo
 from ._wheels import wheel_teeth
 from .checks import Check
 from .dynamic_tension import dynamic_tension, polygonal_spring_mass
-from .layout import DriveLayout, drive_layout, slack_span_sag, span_inclination
+from .layout import (
+    MINIMUM_WRAP,
+    DriveLayout,
+    drive_layout,
+    slack_span_sag,
+    span_inclination,
+    wrap_check,
+)
 from .parts import Part, PartContext, register_part
 
 if TYPE_CHECKING:
@@ -29,8 +36,6 @@ __all__ = ["DriveLoads", "drive_loads", "polygonal_spring_mass", "span_tensions"
            "static_safety_check", "peak_tension_check", "wrap_check", "MINIMUM_WRAP", "REQUIRED_STATIC_SAFETY",
            "required_static_safety", "STATIC_SAFETY_SOURCE", "PEAK_TENSION_SOURCE"]
 
-#: Smallest wrap on the driving wheel [rad] (ISO 10823:2004 guidance: 120°).
-MINIMUM_WRAP = math.radians(120.0)
 #: Required static safety of round link chains (:data:`chaindrive.loads.REQUIRED_STATIC_SAFETY`);
 #: roller chains: :func:`chaindrive.loads.required_static_safety_table`.
 REQUIRED_STATIC_SAFETY = F.REQUIRED_STATIC_SAFETY
@@ -396,13 +401,6 @@ def peak_tension_check(drive: Drive, loads: DriveLoads) -> Check:
                  passed=None if limit is None else bool(loads.maximum <= limit),
                  source=f"F_B / {F.PEAK_TENSION_RATIO:g}: {PEAK_TENSION_SOURCE}",
                  note=detail if fb is not None else "breaking force unknown; " + detail, relation="<=")
-
-
-def wrap_check(drive: Drive, layout: DriveLayout) -> Check:
-    """Wrap on the driving wheel ``>= 120°`` (ISO 10823:2004 guidance)."""
-    wrap = float(layout.wrap.wrap_angle[drive.driving_index])
-    return Check(name="wrap on the driving wheel", value=wrap, limit=MINIMUM_WRAP, unit="rad",
-                 passed=bool(wrap >= MINIMUM_WRAP - 1e-12), source="ISO 10823:2004 guidance (at least 120°)")
 
 
 # --------------------------------------------------------------------------- declared parts
