@@ -50,6 +50,16 @@ def test_static_safety_full_form_by_hand():
     assert np.allclose(got, [10.0, 10.0])
 
 
+@settings(max_examples=60, deadline=None)
+@given(fb=st.floats(1e3, 1e7), ft=st.floats(1.0, 1e6), fv=st.floats(0.0, 1e5), ff=st.floats(0.0, 1e5),
+       k=st.floats(1.0, 3.0), dk=st.floats(0.0, 1.0))
+def test_static_safety_falls_with_the_shock(fb, ft, fv, ff, k, dk):
+    s1 = float(F.static_safety(fb, ft, fv, ff, k))
+    s2 = float(F.static_safety(fb, ft, fv, ff, k + dk))
+    assert math.isfinite(s1) and 0.0 < s2 <= s1 * (1 + 1e-12)
+    assert s1 == pytest.approx(fb / (k * ft + fv + ff), rel=1e-12)
+
+
 def test_static_safety_refuses_bad_input():
     with pytest.raises(InputError, match="dynamic_factor must be >= 1"):
         F.static_safety(1e4, 100.0, 0.0, 0.0, 0.5)
