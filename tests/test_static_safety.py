@@ -139,6 +139,20 @@ def test_static_safety_has_no_dynamic_tension_and_the_peak_is_its_own_check():
     assert "not validated against measurement" in peak.note and "Diamond Chain" in peak.source
 
 
+def test_the_static_safety_does_not_depend_on_the_dynamic_model():
+    """Another dynamic model (here the rigid chain, m a_max) moves the peak tension, never the static safety."""
+    from chaindrive.analysis import loads as AL
+    from chaindrive.analysis.layout import drive_layout
+    from chaindrive.drive.project import load_project
+
+    d = load_project("examples/roller_industrial.toml")
+    lay = drive_layout(d)
+    a, b = AL.drive_loads(d, lay), AL.drive_loads(d, lay, moving_mass=1.0)
+    assert a.dynamic != b.dynamic
+    assert AL.static_safety_check(d, a).value == AL.static_safety_check(d, b).value
+    assert AL.peak_tension_check(d, a).value != AL.peak_tension_check(d, b).value
+
+
 def test_the_dynamic_tension_has_one_entry():
     """dynamic_tension is the one function the loads call (a reduced model replaces it there)."""
     from chaindrive.analysis import dynamic_tension as D
@@ -178,6 +192,10 @@ def test_four_doors_one_static_safety_one_dynamic_tension(tmp_path, capsys):
     assert results["analysis"]["loads"]["dynamic"] == pytest.approx(api.dynamic_tension, rel=1e-12)
     assert checks["peak tension"]["value"] == pytest.approx(api.peak_tension, rel=1e-12)
     assert studio["peak tension"]["value"] == pytest.approx(api.peak_tension, rel=1e-7)
+    from chaindrive.study.run import design_outputs
+
+    row = design_outputs(DUTY)   # the studies' door
+    assert row["static_safety"] == api.static_safety and row["dynamic_tension"] == api.dynamic_tension
     # regression: 17.49 against 13.54; F_d 3.02 kN, peak 4.80 kN against F_B / 6 = 5.21 kN
     assert (round(api.static_safety, 2), api.required_static_safety) == (17.49, 13.54)
     assert round(api.dynamic_tension) == 3016 and round(api.peak_tension) == 4803
