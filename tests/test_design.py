@@ -206,7 +206,8 @@ def test_no_recommendation_in_the_galling_region(capsys):
 
     duty = Duty(31.13e3, 2900 * RPM, ratio=4.98, load_character="smooth")
     with pytest.raises(InfeasibleError, match=r"no catalogue roller chain carries 31.13 kW \(design power\) at "
-                                              r"2900 rpm with the required static safety"):
+                                              r"2900 rpm with the required static safety; the nearest, 20B-3 \(23/115 teeth\) "
+                                              r"has a static safety of 15.7 < 30.2 required"):
         design_drive(duty)
     assert main(["select", "-P", "31.13 kW", "-n", "2900 rpm", "-i", "4.98", "--load-character", "smooth"]) == 2
     captured = capsys.readouterr()

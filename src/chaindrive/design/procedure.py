@@ -268,7 +268,7 @@ def _rated(chain: Chain, twins: tuple[str, ...], duty: Duty, ks: float, given_te
 
 
 def _laid_out(rated: _Rated, duty: Duty, factors: tuple[Factor, ...], ks: float,
-              required: float | None) -> DesignCandidate | None:
+              required: float | None, dropped: list[tuple[float, str]] | None = None) -> DesignCandidate | None:
     """Steps 4-5 of :func:`_candidate`: links, exact centre distance, loads, static safety."""
     from ..analysis import analyze_drive
     from ..analysis.loads import static_safety_check
@@ -314,6 +314,10 @@ def _laid_out(rated: _Rated, duty: Duty, factors: tuple[Factor, ...], ks: float,
             assert loads is not None
             static = static_safety_check(drive, loads)
             if static.value is not None and static.passed is False:
+                if dropped is not None:
+                    dropped.append((static.value / drive.static_safety_required,
+                                    f"{chain.name} ({z1}/{z2} teeth) has a static safety of {static.value:.3g} "
+                                    f"< {static.limit:.4g} required (Chernavsky et al. Table 7.19)"))
                 return None
             static_value, checks = static.value, analysis.checks
             tensions = (loads.tight, loads.dynamic, loads.maximum)
@@ -512,14 +516,14 @@ def _may_carry(chains: list[tuple[Chain, int]], speed: float, design: float, met
 
 
 def _lay_out(rated: list[_Rated], duty: Duty, factors: tuple[Factor, ...], ks: float, required: float | None,
-             all_sizes: bool) -> list[DesignCandidate]:
+             all_sizes: bool, dropped: list[tuple[float, str]] | None = None) -> list[DesignCandidate]:
     """The rated chains laid out and loaded (steps 4-5). Unless ``all_sizes``, only the chains
     that can be kept: per series and strand count, design_drive keeps the adequate chains of
     the smallest (galling region, pitch); they are laid out in that order until one passes
     the static safety, and those of its (galling, pitch) with it. The candidates are those
     laying out every chain and filtering afterwards would give."""
     if all_sizes:
-        return [c for r in rated if (c := _laid_out(r, duty, factors, ks, required)) is not None]
+        return [c for r in rated if (c := _laid_out(r, duty, factors, ks, required, dropped)) is not None]
     groups: dict[tuple[str, int], list[_Rated]] = {}
     for r in rated:
         groups.setdefault((_series(r.chain), r.chain.strands), []).append(r)
@@ -530,7 +534,7 @@ def _lay_out(rated: list[_Rated], duty: Duty, factors: tuple[Factor, ...], ks: f
             order = (r.rating.lubrication == "C'", r.chain.pitch)
             if kept is not None and order != kept:
                 break
-            c = _laid_out(r, duty, factors, ks, required)
+            c = _laid_out(r, duty, factors, ks, required, dropped)
             if c is not None:
                 found.append(c)
                 kept = order
@@ -635,9 +639,12 @@ def design_drive(duty: Duty, *, teeth_driving: int | None = None, family: str | 
             too_close.append(got)
         elif got is not None:
             rated.append(got)
-    found = _lay_out(rated, duty, factors, ks, required_static_safety, all_sizes)
+    dropped: list[tuple[float, str]] = []
+    found = _lay_out(rated, duty, factors, ks, required_static_safety, all_sizes, dropped)
     if not found:
         extra = f"; sprockets too large for the centre distance: {', '.join(too_close[:4])}" if too_close else ""
+        if dropped:
+            extra += "; the nearest, " + max(dropped)[1]
         raise InfeasibleError(
             f"no catalogue roller chain carries {duty.power * ks / 1e3:g} kW (design power) at "
             f"{angular_velocity_to_rpm(duty.speed):g} rpm with the required static safety{extra}; try more strands, "
