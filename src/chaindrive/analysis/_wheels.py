@@ -61,9 +61,14 @@ TEETH_SOURCE = ("the 120° minimum wrap on a 9-tooth sprocket, the smallest of t
 
 def power_wheels(drive: Drive) -> list[int]:
     """Indices of the wheels that transmit power: the driving wheel, every wheel given a
-    ``power_share > 0``, the driven wheel of a two-wheel drive, a conveyor's tail drive."""
+    ``power_share > 0`` (without shares, the wheel that takes the power in the loads,
+    :meth:`~chaindrive.drive.Drive.power_shares`, unless the load is not taken off at a
+    wheel: a conveyor's pans, a track's ground), the driven wheel of a two-wheel drive, a
+    conveyor's tail drive."""
     out = {drive.driving_index}
-    out.update(i for i, w in enumerate(drive.wheels) if (w.power_share or 0.0) > 0)
+    if any(w.power_share is not None for w in drive.wheels) or (
+            drive.conveyor is None and drive.track is None and drive.crawler is None):
+        out.update(int(i) for i in np.nonzero(drive.power_shares() > 0)[0])
     if drive.is_two_wheel():
         out.update(range(2))
     conv = drive.conveyor
