@@ -64,7 +64,8 @@ def test_refusal_at_the_cli_names_the_wheel(tmp_path, capsys):
     f = tmp_path / "d.toml"
     f.write_text(text, encoding="utf-8")
     assert main(["analyze", str(f), "-o", str(tmp_path / "out")]) == 2
-    assert "'motor' and 'machine B' have the same centre" in capsys.readouterr().err
+    # refused where the file is read, with its line
+    assert "d.toml:53: wheels 'motor' and 'machine B' have the same centre" in capsys.readouterr().err
 
 
 # ------------------------------------------------------------------ reproducer, fails

@@ -7,6 +7,7 @@ import math
 import numpy as np
 
 from .. import layout as L
+from ..drive.clearance import clearance_error
 from ..drive.model import Drive, Wheel
 from ..errors import InfeasibleError, InputError
 from .checks import Check
@@ -76,35 +77,6 @@ def power_wheels(drive: Drive) -> list[int]:
         n = len(drive.wheels)
         out.add((drive.driving_index - 1) % n if drive.travel == "ccw" else (drive.driving_index + 1) % n)
     return sorted(out)
-
-
-def clearance_error(drive: Drive, centres: np.ndarray) -> None:
-    """Refuse overlapping wheels (coincident centres included) and spans crossing a wheel,
-    naming the wheels (:func:`chaindrive.layout.clearance_problems`).
-
-    Raises
-    ------
-    InputError
-        Field ``wheels[i].position`` of the wheel to move.
-    """
-    radii = drive.pitch_radii()
-    problems = L.clearance_problems(centres, radii, [w.side for w in drive.wheels])
-    if not problems:
-        return
-    kind, i, j, dist = problems[0]
-    names = drive.wheel_names
-    n = len(names)
-    if kind == "overlap":
-        what = ("have the same centre" if dist < 1e-12 else
-                f"overlap: centres {dist * 1e3:.1f} mm apart, pitch radii {radii[i] * 1e3:.1f} + "
-                f"{radii[j] * 1e3:.1f} = {(radii[i] + radii[j]) * 1e3:.1f} mm")
-        raise InputError(f"wheels {names[i]!r} and {names[j]!r} {what}; move {names[j]!r} so that the centres "
-                         f"are at least {(radii[i] + radii[j]) * 1e3:.1f} mm apart (the sum of the pitch radii)",
-                         field=f"wheels[{j}].position")
-    raise InputError(f"the chain from {names[i]!r} to {names[(i + 1) % n]!r} runs through wheel {names[j]!r} "
-                     f"({dist * 1e3:.1f} mm from its centre, pitch radius {radii[j] * 1e3:.1f} mm); move "
-                     f"{names[j]!r}, or list the wheels in the order the chain passes them",
-                     field=f"wheels[{j}].position")
 
 
 #: Margin over a minimum wrap that a move advised by the checks aims at [rad], so that the
