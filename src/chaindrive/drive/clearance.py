@@ -17,10 +17,30 @@ def clearance_error(drive: Drive, centres: np.ndarray) -> None:
     """Refuse overlapping wheels (coincident centres included) and spans crossing a wheel,
     naming the wheels (:func:`chaindrive.layout.clearance_problems`).
 
+    Parameters
+    ----------
+    drive : Drive
+    centres : ndarray, shape (n, 2)
+        Where the wheels are [m] (as drawn, or as the layout sets an adjustable wheel).
+
     Raises
     ------
     InputError
         Field ``wheels[i].position`` of the wheel to move.
+
+    References
+    ----------
+    Plane geometry (:func:`chaindrive.layout.clearance_problems`).
+
+    Examples
+    --------
+    >>> from chaindrive.drive.project import load_project
+    >>> d = load_project("examples/multi_wheel.toml")
+    >>> c = np.array([w.position for w in d.wheels]); c[3] = (1.15, -0.05)
+    >>> clearance_error(d, c)
+    Traceback (most recent call last):
+    ...
+    chaindrive.errors.InputError: wheels 'machine A' and 'machine B' overlap: centres 150.0 mm apart, pitch radii 153.8 + 121.5 = 275.3 mm; move 'machine B' so that the centres are at least 275.3 mm apart (the sum of the pitch radii)
     """
     radii = drive.pitch_radii()
     problems = L.clearance_problems(centres, radii, [w.side for w in drive.wheels])
