@@ -34,6 +34,7 @@ from ..life import efficiency as EF
 from ..life import elongation as EL
 from ..life import fatigue as FA
 from ..life import jump_over as JO
+from ..vibration.resonance import resonance_margin
 from ..vibration.string import moving_string_frequencies
 from .checks import Check
 from .parts import Part, PartContext, register_part
@@ -69,6 +70,8 @@ class DriveLife(Result):
     jump_over_wheel: str = ""
     take_up: np.ndarray | None = quantity("m", default=None)
     span_frequencies: np.ndarray | None = quantity("rad/s", display="rad/s", default=None)
+    resonance_margins: np.ndarray | None = quantity("1", default=None)
+    resonance_worst: str = ""
     endurance_range: float | None = quantity("N", default=None)
     fatigue_utilisation: float | None = quantity("1", default=None)
     fatigue_life_hours: float | None = quantity("h", default=None)
@@ -170,6 +173,24 @@ def _span_frequencies(drive, layout, loads, grid):
     return out
 
 
+def _resonance(freqs, vibration, grid, names):
+    """Smallest margin to the 0.7…1.4 band of every excitation against every span's first
+    frequency, at each elongation; the worst point in words."""
+    if freqs is None or vibration is None or not vibration.excitations:
+        return None, ""
+    exc = dict(vibration.excitations)
+    keys = list(exc)
+    omega = np.array([exc[k] for k in keys], float)
+    ratio = omega[:, None, None] / freqs[None, :, :]  # excitation × span × elongation
+    margin = np.asarray(resonance_margin(ratio), float)
+    per_e = margin.min(axis=(0, 1))
+    i, j, k = np.unravel_index(int(np.argmin(margin)), margin.shape)
+    n = len(names)
+    worst = (f"{keys[i]} on span {names[j]} → {names[(j + 1) % n]} at {grid[k]:.4g} elongation "
+             f"(P/ω = {ratio[i, j, k]:.3g}, margin {margin[i, j, k]:.3g})")
+    return per_e, worst
+
+
 def _lap_history(drive, layout, loads):
     """Tension of one link over a lap [N]: each span's static tension with the centrifugal part,
     in chain order. The polygonal dynamic tension is not added: the rating's link-plate line,
@@ -221,7 +242,7 @@ def _efficiency(drive, layout, loads, notes):
     return float(EF.transmission_efficiency(power, min(loss, power))), loss
 
 
-def drive_life(drive, layout, loads, rating, wear) -> DriveLife:
+def drive_life(drive, layout, loads, rating, wear, vibration=None) -> DriveLife:
     """The drive over its life (see the module notes).
 
     Raises
@@ -253,6 +274,7 @@ def drive_life(drive, layout, loads, rating, wear) -> DriveLife:
             s0, s1 = layout.take_up[-2:]
             take_up[beyond] = s1 + (grid[beyond] - e1) * (s1 - s0) / (e1 - e0)
     freqs = _span_frequencies(drive, layout, loads, grid)
+    res_margins, res_worst = _resonance(freqs, vibration, grid, drive.wheel_names)
     endurance, util, fat_hours = _fatigue(drive, layout, loads, rating, notes)
     eff, loss = _efficiency(drive, layout, loads, notes)
     lives = {"wear": t_lim}
@@ -266,7 +288,8 @@ def drive_life(drive, layout, loads, rating, wear) -> DriveLife:
                      wheel_names=drive.wheel_names, seating_rise=tuple(rise), holding_limit=tuple(hold),
                      jump_over_tension=tuple(t_jump), jump_over_margin=tuple(margin), jump_over_margins=curves,
                      jump_over_elongation=e_jump, jump_over_hours=jump_hours, jump_over_wheel=wheel_jump,
-                     take_up=take_up, span_frequencies=freqs, endurance_range=endurance,
+                     take_up=take_up, span_frequencies=freqs, resonance_margins=res_margins,
+                     resonance_worst=res_worst, endurance_range=endurance,
                      fatigue_utilisation=util, fatigue_life_hours=fat_hours, efficiency=eff, power_loss=loss,
                      life_hours=float(lives[governing]), governing=governing, notes=tuple(notes))
 
@@ -276,7 +299,7 @@ def _part(ctx: PartContext) -> DriveLife | None:
     wear = ctx["wear"]
     if wear is None:  # the wear part has said why
         return None
-    result = drive_life(ctx.drive, ctx["layout"], ctx["loads"], ctx["rating"], wear)
+    result = drive_life(ctx.drive, ctx["layout"], ctx["loads"], ctx["rating"], wear, ctx["vibration"])
     for text in result.notes:
         ctx.note(text)
     return result
@@ -304,6 +327,10 @@ def _checks(ctx: PartContext, r: DriveLife) -> list[Check]:
                          "Fig. 2.19), FKM S–N slope 5", relation="info",
                          note="below 1: no fatigue failure" if (r.fatigue_utilisation or 0) < 1 else
                          f"fatigue life {r.fatigue_life_hours:.0f} h"))
+    if r.resonance_margins is not None:
+        out.append(Check("span resonance over the life: smallest margin to the 0.7…1.4 band", float(np.min(r.resonance_margins)),
+                         None, "1", None, "the tensioner paper's band, span frequencies of the worn chain",
+                         relation="info", note=f"worst: {r.resonance_worst}"))
     out.append(Check(f"life of the chain (governed by {r.governing})", r.life_hours, None, "h", None,
                      "wear part, jump-over and fatigue of docs/life.md", relation="info"))
     if r.efficiency is not None:
@@ -312,5 +339,5 @@ def _checks(ctx: PartContext, r: DriveLife) -> list[Check]:
     return out
 
 
-register_part(Part("life", "The drive over its life", _part, needs=("layout", "loads", "rating", "wear"),
+register_part(Part("life", "The drive over its life", _part, needs=("layout", "loads", "rating", "wear", "vibration"),
                    checks=_checks, order=110, section="chaindrive.workflows.life_section:life_section"))
