@@ -298,3 +298,69 @@ def test_life_part_mining_conveyor(examples_dir):
     assert any("pocket wheels" in n for n in r.notes)
     assert r.take_up is not None and r.take_up[-1] > 0
     assert r.span_frequencies.shape == (3, 7)
+
+
+# --------------------------------------------------------------------------- the worn chain at a point; CLI
+def test_worn_state_at_hours_and_elongation(examples_dir):
+    from chaindrive.analysis import analyze_drive
+    from chaindrive.analysis.life import worn_state
+    from chaindrive.drive.project import load_project
+
+    d = load_project(examples_dir / "roller_industrial.toml")
+    a = analyze_drive(d, include=["life", "layout", "loads"])
+    s = worn_state(d, a.layout, a.loads, a.life, elongation=0.02)
+    assert s.hours == pytest.approx(a.life.replacement_hours * 2 / 3)
+    assert s.seating_rise[0] == pytest.approx(a.layout.pitch_radii[0] * 0.02, rel=1e-9)
+    assert s.take_up == pytest.approx(a.layout.take_up[1], rel=1e-9)  # the layout's take-up at 2 %
+    assert worn_state(d, a.layout, a.loads, a.life, hours=s.hours).elongation == pytest.approx(0.02)
+    with pytest.raises(InputError, match="hours must be non-negative"):
+        worn_state(d, a.layout, a.loads, a.life, hours=-1.0)
+    with pytest.raises(InputError, match="beyond the replacement limit 3 % reached after"):
+        worn_state(d, a.layout, a.loads, a.life, hours=2 * a.life.replacement_hours)
+    with pytest.raises(InputError, match="elongation 4 % is beyond the replacement limit 3 %"):
+        worn_state(d, a.layout, a.loads, a.life, elongation=0.04)
+    with pytest.raises(InputError, match="give exactly one of hours"):
+        worn_state(d, a.layout, a.loads, a.life)
+
+
+def test_worn_state_tooth_form_cannot_hold(roller_drive):
+    import dataclasses
+
+    from chaindrive.analysis import analyze_drive
+    from chaindrive.analysis.life import worn_state
+    from chaindrive.drive import Wheel
+
+    d = roller_drive()
+    d = dataclasses.replace(d, elongation_limit=0.05, wheels=[d.wheels[0], Wheel("fan", "sprocket", 90, (1.4, 0))])
+    a = analyze_drive(d, include=["life", "layout", "loads"])
+    with pytest.raises(InputError, match="tooth form of a 90-tooth wheel can hold"):
+        worn_state(d, a.layout, a.loads, a.life, elongation=0.04)
+
+
+@pytest.mark.parametrize("args, pattern", [
+    (["--hours", "-5 h"], "hours must be non-negative"),
+    (["--hours", "200000 h"], "beyond the replacement limit"),
+    (["--elongation", "4 %"], "beyond the replacement limit"),
+    (["--hours", "2000"], "give a unit"),
+])
+def test_cli_life_bad_input_exit_2(capsys, examples_dir, args, pattern):
+    from chaindrive.cli import main
+
+    code = main(["life", str(examples_dir / "roller_industrial.toml"), *args])
+    out, err = capsys.readouterr()
+    assert code == 2
+    lines = [ln for ln in err.splitlines() if ln.startswith("error")]
+    assert len(lines) == 1 and pattern in lines[0] and "Traceback" not in err
+
+
+def test_cli_life_output(capsys, examples_dir):
+    import json
+
+    from chaindrive.cli import main
+
+    assert main(["life", str(examples_dir / "roller_industrial.toml")]) == 0
+    out = capsys.readouterr().out
+    assert "life (governed by wear)" in out and "efficiency" in out
+    assert main(["life", str(examples_dir / "roller_industrial.toml"), "--elongation", "2 %", "--json"]) == 0
+    d = json.loads(capsys.readouterr().out)
+    assert d["elongation"] == pytest.approx(0.02) and len(d["jump_over_margin"]) == 2

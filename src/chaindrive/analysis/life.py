@@ -29,6 +29,7 @@ import numpy as np
 
 from .. import layout as L
 from .._results import Result, quantity
+from .._validation import check_nonnegative
 from ..errors import InputError
 from ..life import efficiency as EF
 from ..life import elongation as EL
@@ -39,7 +40,7 @@ from ..vibration.string import moving_string_frequencies
 from .checks import Check
 from .parts import Part, PartContext, register_part
 
-__all__ = ["DriveLife", "drive_life", "ELONGATION_STEPS"]
+__all__ = ["DriveLife", "WornState", "drive_life", "worn_state", "ELONGATION_STEPS"]
 
 #: Points of the elongation grid from new to the drive's limit.
 ELONGATION_STEPS = 7
@@ -292,6 +293,65 @@ def drive_life(drive, layout, loads, rating, wear, vibration=None) -> DriveLife:
                      resonance_worst=res_worst, endurance_range=endurance,
                      fatigue_utilisation=util, fatigue_life_hours=fat_hours, efficiency=eff, power_loss=loss,
                      life_hours=float(lives[governing]), governing=governing, notes=tuple(notes))
+
+
+@dataclass(frozen=True)
+class WornState(Result):
+    """The worn chain at one point of its life (see :func:`worn_state`)."""
+
+    hours: float = quantity("h")
+    elongation: float = quantity("1")
+    wheel_names: tuple[str, ...] = ()
+    seating_rise: tuple[float | None, ...] = quantity("m", default=())
+    jump_over_margin: tuple[float | None, ...] = quantity("1", default=())
+    take_up: float | None = quantity("m", default=None)
+    span_frequencies: np.ndarray | None = quantity("rad/s", display="rad/s", default=None)
+
+
+def worn_state(drive, layout, loads, life: DriveLife, *, hours: float | None = None,
+               elongation: float | None = None) -> WornState:
+    """The chain after ``hours`` of running, or at ``elongation`` (exactly one of them).
+
+    Raises
+    ------
+    InputError
+        Negative hours or elongation; a point past the drive's elongation limit (the chain
+        is due for replacement: the hours to it are named); an elongation the ISO 606 tooth
+        form of a wheel cannot hold.
+    """
+    if (hours is None) == (elongation is None):
+        raise InputError("give exactly one of hours (e.g. '20000 h') and elongation (e.g. '2 %')", field="hours")
+    limit, t_lim = life.elongation_limit, life.replacement_hours
+    if hours is not None:
+        e = float(EL.elongation_at_hours(hours, t_lim, limit))
+        t = float(hours)
+        if e > limit * (1 + 1e-12):
+            raise InputError(f"after {t:.6g} h the chain has stretched {100 * e:.3g} %, beyond the replacement "
+                             f"limit {100 * limit:.3g} % reached after {t_lim:.6g} h (hours in [0, {t_lim:.6g}] h)",
+                             field="hours")
+    else:
+        e = float(check_nonnegative("elongation", elongation))
+        if e > limit * (1 + 1e-12):
+            raise InputError(f"elongation {100 * e:.3g} % is beyond the replacement limit {100 * limit:.3g} % "
+                             f"of the drive (elongation in [0, {100 * limit:.3g}] %)", field="elongation")
+        t = float(EL.hours_to_elongation(e, t_lim, limit))
+    n = len(drive.wheels)
+    rise: list[float | None] = [None] * n
+    margin: list[float | None] = [None] * n
+    tens = _wheel_tensions(loads, n)
+    p, d1 = drive.pitch, drive.chain.roller_diameter
+    for i, z, seated in _tooth_form_wheels(drive, layout):
+        seat = JO.worn_seat(p, z, d1, e)  # refuses an elongation the tooth form cannot hold
+        rise[i] = float(seat.rise)
+        hi, lo = max(tens[i]), min(tens[i])
+        if hi - lo > 1e-9 * max(hi, 1.0) and seated >= 1:
+            beta = float(JO.tension_ratio(p, z, d1, e))
+            margin[i] = math.inf if beta <= 0 else lo * beta ** (-float(seated)) / hi
+    take_up = None if life.take_up is None else float(np.interp(e, life.elongations, life.take_up))
+    freqs = None
+    if life.span_frequencies is not None:
+        freqs = np.array([np.interp(e, life.elongations, row) for row in life.span_frequencies])
+    return WornState(t, e, drive.wheel_names, tuple(rise), tuple(margin), take_up, freqs)
 
 
 # --------------------------------------------------------------------------- declared part
