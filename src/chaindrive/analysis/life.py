@@ -329,7 +329,7 @@ def worn_state(drive, layout, loads, life: DriveLife, *, hours: float | None = N
             raise InputError(f"after {t:.6g} h the chain has stretched {100 * e:.3g} %, beyond the replacement "
                              f"limit {100 * limit:.3g} % reached after {t_lim:.6g} h (hours in [0, {t_lim:.6g}] h)",
                              field="hours")
-    else:
+    elif elongation is not None:
         e = float(check_nonnegative("elongation", elongation))
         if e > limit * (1 + 1e-12):
             raise InputError(f"elongation {100 * e:.3g} % is beyond the replacement limit {100 * limit:.3g} % "
