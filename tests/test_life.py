@@ -241,10 +241,13 @@ def test_life_part_roller_drive(roller_drive):
     assert r.elongation[-1] == pytest.approx(r.elongation_limit)
     assert r.replacement_limit == 0.03  # 57 teeth <= 67
     assert r.governing == "wear" and r.life_hours == r.replacement_hours
-    # the take-up at 1, 2, 3 % is the layout part's
+    # the take-up at 1, 2, 3 % is the layout part's, counted from the new chain (its value at 1 %
+    # extrapolated linearly to 0 %)
     lay = a.layout
+    t0 = 2 * lay.take_up[0] - lay.take_up[1]
+    assert r.take_up[0] == 0.0
     for e, t in zip(lay.elongations, lay.take_up, strict=True):
-        assert np.interp(e, r.elongations, r.take_up) == pytest.approx(t, rel=1e-9)
+        assert np.interp(e, r.elongations, r.take_up) == pytest.approx(t - t0, rel=1e-9)
     # margins fall with wear; the fan's 57 teeth hold less elongation than the motor's 19
     m = r.jump_over_margins
     assert np.all(np.diff(m[0]) < 0) and np.all(np.diff(m[1]) < 0)
@@ -296,7 +299,9 @@ def test_life_part_mining_conveyor(examples_dir):
     assert r.replacement_hours == a.wear.hours_to_limit
     assert r.jump_over_margins is None and r.fatigue_life_hours is None
     assert any("pocket wheels" in n for n in r.notes)
-    assert r.take_up is not None and r.take_up[-1] > 0
+    # the tensioner's travel from the new chain: the layout's take-up at 1 and 2 % less its
+    # value extrapolated to a new chain (the tensioner first takes up the spare links)
+    assert r.take_up[0] == 0.0 and r.take_up[-1] > 0
     assert r.span_frequencies.shape == (3, 7)
 
 
@@ -311,7 +316,8 @@ def test_worn_state_at_hours_and_elongation(examples_dir):
     s = worn_state(d, a.layout, a.loads, a.life, elongation=0.02)
     assert s.hours == pytest.approx(a.life.replacement_hours * 2 / 3)
     assert s.seating_rise[0] == pytest.approx(a.layout.pitch_radii[0] * 0.02, rel=1e-9)
-    assert s.take_up == pytest.approx(a.layout.take_up[1], rel=1e-9)  # the layout's take-up at 2 %
+    t0 = 2 * a.layout.take_up[0] - a.layout.take_up[1]
+    assert s.take_up == pytest.approx(a.layout.take_up[1] - t0, rel=1e-9)  # the layout's take-up at 2 %
     assert worn_state(d, a.layout, a.loads, a.life, hours=s.hours).elongation == pytest.approx(0.02)
     with pytest.raises(InputError, match="hours must be non-negative"):
         worn_state(d, a.layout, a.loads, a.life, hours=-1.0)

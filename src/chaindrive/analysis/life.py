@@ -268,12 +268,15 @@ def drive_life(drive, layout, loads, rating, wear, vibration=None) -> DriveLife:
     jump_hours = None if e_jump is None else float(EL.hours_to_elongation(e_jump, t_lim, limit))
     take_up = None
     if layout.take_up is not None:
-        take_up = np.interp(grid, np.r_[0.0, layout.elongations], np.r_[0.0, layout.take_up])
-        beyond = grid > layout.elongations[-1]
-        if np.any(beyond):  # linear from the last step of the layout's take-up
-            e0, e1 = layout.elongations[-2:]
-            s0, s1 = layout.take_up[-2:]
-            take_up[beyond] = s1 + (grid[beyond] - e1) * (s1 - s0) / (e1 - e0)
+        # the layout's take-up at 1, 2, 3 %, counted from its setting for the links (which may
+        # already take up spare links): linear between them, and beyond them from the nearer
+        # step; the travel is counted from the new chain
+        e_pts, t_pts = np.asarray(layout.elongations, float), np.asarray(layout.take_up, float)
+        take_up = np.interp(grid, e_pts, t_pts)
+        lo, hi = grid < e_pts[0], grid > e_pts[-1]
+        take_up[lo] = t_pts[0] + (grid[lo] - e_pts[0]) * (t_pts[1] - t_pts[0]) / (e_pts[1] - e_pts[0])
+        take_up[hi] = t_pts[-1] + (grid[hi] - e_pts[-1]) * (t_pts[-1] - t_pts[-2]) / (e_pts[-1] - e_pts[-2])
+        take_up = take_up - take_up[0]
     freqs = _span_frequencies(drive, layout, loads, grid)
     res_margins, res_worst = _resonance(freqs, vibration, grid, drive.wheel_names)
     endurance, util, fat_hours = _fatigue(drive, layout, loads, rating, notes)
