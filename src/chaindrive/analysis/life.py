@@ -44,7 +44,8 @@ __all__ = ["DriveLife", "WornState", "drive_life", "worn_state", "ELONGATION_STE
 
 #: Points of the elongation grid from new to the drive's limit.
 ELONGATION_STEPS = 7
-_SOURCE_LIMIT = "makers' replacement rule: 3 %, 200/z % above 67 teeth, 1.5 % on fixed centres"
+_SOURCE_LIMIT = ("makers' replacement rule (Diamond Chain, Regal Rexnord): 3 %, 200/z % above 67 teeth, "
+                 "1.5 % on fixed centres")
 _SOURCE_JUMP = ("ISO 606 tooth form, frictionless roller balance (Binder 1956 ch. 5; Naji & Marshek, "
                 "Mech. Mach. Theory 18 (1983) 349); docs/life.md")
 

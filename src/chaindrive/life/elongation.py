@@ -2,8 +2,8 @@ r"""Wear elongation of a chain over its running hours, and the limit at which it
 
 The elongation grows by the steady wear of the pin–bushing joints: Archard's law makes
 the wear depth per articulation proportional to the joint load, so at a steady duty the
-elongation grows linearly in time after running-in (Tandler, Wünsche & Sauer, Wear
-446–447 (2020) 203193, model of the joint wear as wear energy per articulation). The rate
+elongation grows linearly in time after running-in (Tandler et al., Wear 446–447
+(2020) 203193: joint wear of roller chains). The rate
 is set once, by :mod:`chaindrive.wear` (ONE life per drive): the ANSI/ACA ratings promise
 3 % elongation after 15 000 h at the rated power (Shigley, §17-5), scaled with the load
 and the articulations per hour. No industrial elongation-versus-hours measurement could
@@ -64,10 +64,11 @@ def replacement_limit(largest_teeth: ArrayLike, *, fixed_centres: bool = False) 
 
     References
     ----------
-    Makers' replacement rule as printed in their maintenance instructions (Renold,
-    *Installation, maintenance and chain wear*: 3 %, ``200/z`` % above 67 teeth, 1.5 % on
-    fixed centres; Tsubaki, *The Complete Guide to Chain*, 1997, §3.3: elongation limits
-    by sprocket size); ISO 10823:2004, the 3 % wear basis of the ratings.
+    Diamond Chain, FAQ "How can the wear in a roller chain be accurately measured, and
+    when is the chain considered worn out?" (3 % valid up to 67 teeth of the large
+    sprocket, ``200/N`` % above, about 1.5 % on fixed centres); Regal Rexnord FAQ
+    KA-01616 (3 %, ``2.00/N`` % above 66 teeth; ANSI B29.1 for the measurement);
+    ISO 10823:2004, the 3 % wear basis of the ratings.
 
     Examples
     --------
@@ -105,8 +106,7 @@ def elongation_at_hours(hours: ArrayLike, hours_to_limit: ArrayLike, limit: Arra
     References
     ----------
     Archard, J. F., J. Appl. Phys. 24 (1953) 981 (wear linear in load and sliding);
-    Tandler, Wünsche & Sauer, Wear 446–447 (2020) 203193 (steady joint wear after
-    running-in); Shigley, §17-5 (15 000 h to 3 % at the rated power).
+    Tandler et al., Wear 446–447 (2020) 203193 (steady joint wear after running-in); Shigley, §17-5 (15 000 h to 3 % at the rated power).
 
     Examples
     --------
