@@ -37,6 +37,7 @@ from ..life import fatigue as FA
 from ..life import jump_over as JO
 from ..vibration.resonance import resonance_margin
 from ..vibration.string import moving_string_frequencies
+from ._memo import memo
 from .checks import Check
 from .parts import Part, PartContext, register_part
 
@@ -168,11 +169,10 @@ def _span_frequencies(drive, layout, loads, grid):
     w = layout.wrap
     v = float(loads.chain_speed)
     tension = np.asarray(loads.span_tensions, float) + float(loads.centrifugal)
-    out = np.empty((len(w.span_length), grid.size))
-    for j, e in enumerate(grid):
-        worn = L.wrap_layout(w.centres, np.asarray(w.radii) * (1.0 + e), w.sides)
-        out[:, j] = moving_string_frequencies(tension, q / (1.0 + e), worn.span_length, chain_speed=v, modes=1)[:, 0]
-    return out
+    lengths = np.column_stack([L.wrap_layout(w.centres, np.asarray(w.radii) * (1.0 + e), w.sides).span_length
+                               for e in grid])
+    return moving_string_frequencies(tension[:, None], q / (1.0 + grid[None, :]), lengths, chain_speed=v,
+                                     modes=1)[..., 0]
 
 
 def _resonance(freqs, vibration, grid, names):
@@ -244,6 +244,13 @@ def _efficiency(drive, layout, loads, notes):
     return float(EF.transmission_efficiency(power, min(loss, power))), loss
 
 
+def _life_key(drive, layout, loads, rating, wear, vibration=None):
+    """Everything the life depends on: the drive (layout, loads, rating, vibration follow from
+    it), the wear life, and which of the optional parts were there."""
+    return (drive, float(wear.hours_to_limit) if wear is not None else None, rating is None, vibration is None)
+
+
+@memo(maxsize=64, key=_life_key)
 def drive_life(drive, layout, loads, rating, wear, vibration=None) -> DriveLife:
     """The drive over its life (see the module notes).
 
@@ -395,8 +402,9 @@ def _checks(ctx: PartContext, r: DriveLife) -> list[Check]:
         out.append(Check("span resonance over the life: smallest margin to the 0.7…1.4 band", float(np.min(r.resonance_margins)),
                          None, "1", None, "the tensioner paper's band, span frequencies of the worn chain",
                          relation="info", note=f"worst: {r.resonance_worst}"))
-    out.append(Check(f"life of the chain (governed by {r.governing})", r.life_hours, None, "h", None,
-                     "wear part, jump-over and fatigue of docs/life.md", relation="info"))
+    if r.governing != "wear":  # the wear part's check already gives the wear life: one number per life
+        out.append(Check(f"life of the chain (governed by {r.governing})", r.life_hours, None, "h", None,
+                         "wear part, jump-over and fatigue of docs/life.md", relation="info"))
     if r.efficiency is not None:
         out.append(Check("efficiency (articulation friction)", r.efficiency, None, "1", None,
                          "Spicer et al., J. Mech. Des. 123 (2001) 598; calibrated, docs/life.md", relation="info"))

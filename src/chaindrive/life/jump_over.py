@@ -37,6 +37,7 @@ and quasi-static (no impact, no centrifugal lift of the rollers).
 
 from __future__ import annotations
 
+import functools
 import math
 from dataclasses import dataclass
 
@@ -67,6 +68,12 @@ class WornSeat(Result):
 
 
 def _form(pitch, teeth, roller_diameter, form):
+    """The tooth form and the roller's paths (cached: a pure function of four numbers)."""
+    return _form_cached(float(pitch), int(teeth), float(roller_diameter), str(form))
+
+
+@functools.lru_cache(maxsize=256)
+def _form_cached(pitch, teeth, roller_diameter, form):
     f = iso_tooth_form(pitch, teeth, roller_diameter, form=form)
     r = 0.5 * float(roller_diameter)
     c = f.seat_radius - r
