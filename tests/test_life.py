@@ -370,3 +370,21 @@ def test_cli_life_output(capsys, examples_dir):
     assert main(["life", str(examples_dir / "roller_industrial.toml"), "--elongation", "2 %", "--json"]) == 0
     d = json.loads(capsys.readouterr().out)
     assert d["elongation"] == pytest.approx(0.02) and len(d["jump_over_margin"]) == 2
+
+
+def test_study_outputs_life():
+    # a study asks "which design lasts longest": life.* are study outputs with their units
+    import tomllib
+
+    from chaindrive.drive.project import template
+    from chaindrive.study.run import evaluate_variant
+    from chaindrive.study.summary import output_unit
+
+    base = tomllib.loads(template("roller"))
+    outs = ["life.life_hours", "life.governing", "life.efficiency", "life.jump_over_elongation"]
+    rows = [evaluate_variant(base, {"wheels.0.teeth": z}, outs) for z in (17, 25)]
+    assert all(r["error"] is None for r in rows)
+    assert all(r["life.life_hours"] > 0 and 0.9 < r["life.efficiency"] < 1 for r in rows)
+    # more teeth on the small wheel: less articulation per joint, a more efficient drive
+    assert rows[1]["life.efficiency"] > rows[0]["life.efficiency"]
+    assert output_unit("life.life_hours") == "h" and output_unit("life.power_loss") == "W"
