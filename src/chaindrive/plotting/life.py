@@ -6,7 +6,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from ..workflows.display import convert
+from ..display import convert
 from ._axes import subplots
 
 if TYPE_CHECKING:
