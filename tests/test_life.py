@@ -388,3 +388,13 @@ def test_study_outputs_life():
     # more teeth on the small wheel: less articulation per joint, a more efficient drive
     assert rows[1]["life.efficiency"] > rows[0]["life.efficiency"]
     assert output_unit("life.life_hours") == "h" and output_unit("life.power_loss") == "W"
+
+
+def test_life_part_takes_the_service_life_with_skew(examples_dir):
+    # ONE wear life: with a skew (the [contact] table) it is the service-life part's hours
+    from chaindrive.analysis import analyze_drive
+    from chaindrive.drive.project import load_project
+
+    a = analyze_drive(load_project(examples_dir / "roller_industrial.toml"), include=["life", "service_life"])
+    assert a.life.replacement_hours == a.service_life.hours
+    assert a.life.wear_basis == "service life with skew"

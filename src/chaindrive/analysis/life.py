@@ -3,7 +3,8 @@ r"""The drive over its life: elongation, the worn chain on the wheels, jump-over
 One life per mechanism, each decided here once:
 
 - **wear**: the hours to the drive's elongation limit are the wear part's
-  (:mod:`chaindrive.analysis.wear`), never recomputed; the elongation over hours follows
+  (:mod:`chaindrive.analysis.wear`), or with a skew the service-life part's
+  (:mod:`chaindrive.analysis.service_life`), never recomputed; the elongation over hours follows
   it (:func:`chaindrive.life.elongation.elongation_at_hours`). The makers' replacement
   limit by tooth count is a check on the drive's limit.
 - **jump-over**: for every loaded ISO 606 sprocket, the tight-side tooth load at which the
@@ -82,6 +83,7 @@ class DriveLife(Result):
     power_loss: float | None = quantity("W", default=None)
     life_hours: float = quantity("h", default=0.0)
     governing: str = "wear"
+    wear_basis: str = "wear"
     notes: tuple[str, ...] = ()
 
 
@@ -244,27 +246,30 @@ def _efficiency(drive, layout, loads, notes):
     return float(EF.transmission_efficiency(power, min(loss, power))), loss
 
 
-def _life_key(drive, layout, loads, rating, wear, vibration=None):
+def _life_key(drive, layout, loads, rating, wear_hours, vibration=None, wear_basis="wear"):
     """Everything the life depends on: the drive (layout, loads, rating, vibration follow from
     it), the wear life, and which of the optional parts were there."""
-    return (drive, float(wear.hours_to_limit) if wear is not None else None, rating is None, vibration is None)
+    return (drive, float(wear_hours), rating is None, vibration is None, wear_basis)
 
 
 @memo(maxsize=64, key=_life_key)
-def drive_life(drive, layout, loads, rating, wear, vibration=None) -> DriveLife:
+def drive_life(drive, layout, loads, rating, wear_hours, vibration=None, wear_basis="wear") -> DriveLife:
     """The drive over its life (see the module notes).
+
+    ``wear_hours`` are the hours to the drive's elongation limit as the wear part (or, with
+    a skew, the service-life part) gives them; ``wear_basis`` names which.
 
     Raises
     ------
     InputError
         No wear life (the drive needs a wear model: a rating or ``wear_coefficient``).
     """
-    if wear is None:
+    if wear_hours is None:
         raise InputError("the life over the hours needs a wear life: a rated roller chain, or "
                          "wear_coefficient in [drive]", field="drive.wear_coefficient")
     notes: list[str] = []
     limit = float(drive.elongation_limit)
-    t_lim = float(wear.hours_to_limit)
+    t_lim = float(wear_hours)
     hours = np.linspace(0.0, t_lim, 11)
     elong = EL.elongation_at_hours(hours, t_lim, limit)
     grid = np.linspace(0.0, limit, ELONGATION_STEPS)
@@ -303,7 +308,8 @@ def drive_life(drive, layout, loads, rating, wear, vibration=None) -> DriveLife:
                      take_up=take_up, span_frequencies=freqs, resonance_margins=res_margins,
                      resonance_worst=res_worst, endurance_range=endurance,
                      fatigue_utilisation=util, fatigue_life_hours=fat_hours, efficiency=eff, power_loss=loss,
-                     life_hours=float(lives[governing]), governing=governing, notes=tuple(notes))
+                     life_hours=float(lives[governing]), governing=governing, wear_basis=wear_basis,
+                     notes=tuple(notes))
 
 
 @dataclass(frozen=True)
@@ -370,7 +376,10 @@ def _part(ctx: PartContext) -> DriveLife | None:
     wear = ctx["wear"]
     if wear is None:  # the wear part has said why
         return None
-    result = drive_life(ctx.drive, ctx["layout"], ctx["loads"], ctx["rating"], wear, ctx["vibration"])
+    service = ctx["service_life"]  # the wear life with the skew, where a skew is given
+    hours, basis = ((service.hours, "service life with skew") if service is not None else
+                    (wear.hours_to_limit, "wear"))
+    result = drive_life(ctx.drive, ctx["layout"], ctx["loads"], ctx["rating"], float(hours), ctx["vibration"], basis)
     for text in result.notes:
         ctx.note(text)
     return result
@@ -411,5 +420,5 @@ def _checks(ctx: PartContext, r: DriveLife) -> list[Check]:
     return out
 
 
-register_part(Part("life", "The drive over its life", _part, needs=("layout", "loads", "rating", "wear", "vibration"),
+register_part(Part("life", "The drive over its life", _part, needs=("layout", "loads", "rating", "wear", "service_life", "vibration"),
                    checks=_checks, order=110, section="chaindrive.workflows.life_section:life_section"))

@@ -42,7 +42,7 @@ def life_command(
         if as_json:
             echo_json(life)
             return
-        rows = [("hours to the elongation limit (wear)", f"{life.replacement_hours:.6g} h"),
+        rows = [(f"hours to the elongation limit ({life.wear_basis})", f"{life.replacement_hours:.6g} h"),
                 ("elongation limit", ratio_text(life.elongation_limit))]
         if life.replacement_limit is not None:
             rows.append(("makers' replacement limit", ratio_text(life.replacement_limit)))

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING
 
-from .sections import Section, Table, _checks, _col, _si
+from .sections import Section, Table, _checks, _si, _unit, _val
 
 if TYPE_CHECKING:
     from ..analysis import DriveAnalysis
@@ -24,24 +24,24 @@ def life_section(a: DriveAnalysis, fig: _Figures) -> Section | None:
     rows = [["elongation limit of the drive", *_si(r.elongation_limit, "1", "%")]]
     if r.replacement_limit is not None:
         rows.append(["makers' replacement limit (largest wheel)", *_si(r.replacement_limit, "1", "%")])
-    rows.append(["hours to the elongation limit (wear)", r.replacement_hours, "h"])
+    rows.append([f"hours to the elongation limit ({r.wear_basis})", r.replacement_hours, "h"])
     if r.jump_over_elongation is not None:
         rows.append([f"elongation at jump-over (wheel '{r.jump_over_wheel}')", *_si(r.jump_over_elongation, "1", "%")])
         rows.append(["hours to jump-over", r.jump_over_hours, "h"])
     if r.fatigue_utilisation is not None:
         rows.append(["link-plate endurance range (rating's link-plate line)", *_si(r.endurance_range, "N", "kN")])
         rows.append(["equivalent tension range / endurance", r.fatigue_utilisation, "-"])
-        rows.append(["fatigue life", "no fatigue failure" if r.fatigue_life_hours is None else r.fatigue_life_hours,
-                     "h"])
+        rows.append(["fatigue life", "no fatigue failure", ""] if r.fatigue_life_hours is None else
+                    ["fatigue life", r.fatigue_life_hours, "h"])
     if r.efficiency is not None:
         rows.append(["efficiency (articulation friction)", *_si(r.efficiency, "1", "%")])
     if r.power_loss is not None:
         rows.append(["power lost as heat", r.power_loss, "W"])
     rows.append([f"life of the chain, governed by {r.governing}", r.life_hours, "h"])
     sec.tables.append(Table("Lives by mechanism (docs/life.md)", ["quantity", "value", "unit"], rows))
-    head = ["wheel", f"holding limit [{_col(r, 'holding_limit')}]", f"seating rise at the limit [{_col(r, 'seating_rise')}]",
+    head = ["wheel", f"holding limit [{_unit('1', '%')}]", f"seating rise at the limit [{_unit('m')}]",
             "jump-over margin at the limit [-]"]
-    wheel_rows = [[name, h, s, m] for name, h, s, m in
+    wheel_rows = [[name, _val(h, "1", "%"), _val(s, "m"), m] for name, h, s, m in
                   zip(r.wheel_names, r.holding_limit, r.seating_rise, r.jump_over_margin, strict=True)
                   if h is not None]
     if wheel_rows:
