@@ -299,6 +299,7 @@ def test_life_part_mining_conveyor(examples_dir):
     assert r.replacement_hours == a.wear.hours_to_limit
     assert r.jump_over_margins is None and r.fatigue_life_hours is None
     assert any("pocket wheels" in n for n in r.notes)
+    assert not any("pocket wheels" in w for w in a.warnings)  # information, not a warning
     # the tensioner's travel from the new chain: the layout's take-up at 1 and 2 % less its
     # value extrapolated to a new chain (the tensioner first takes up the spare links)
     assert r.take_up[0] == 0.0 and r.take_up[-1] > 0

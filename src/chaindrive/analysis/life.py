@@ -379,10 +379,9 @@ def _part(ctx: PartContext) -> DriveLife | None:
     service = ctx["service_life"]  # the wear life with the skew, where a skew is given
     hours, basis = ((service.hours, "service life with skew") if service is not None else
                     (wear.hours_to_limit, "wear"))
-    result = drive_life(ctx.drive, ctx["layout"], ctx["loads"], ctx["rating"], float(hours), ctx["vibration"], basis)
-    for text in result.notes:
-        ctx.note(text)
-    return result
+    # what does not apply (jump-over on pocket wheels, fatigue without a rating) is in
+    # result.notes, shown by the report section: information, not a warning
+    return drive_life(ctx.drive, ctx["layout"], ctx["loads"], ctx["rating"], float(hours), ctx["vibration"], basis)
 
 
 def _checks(ctx: PartContext, r: DriveLife) -> list[Check]:

@@ -21,6 +21,7 @@ def life_section(a: DriveAnalysis, fig: _Figures) -> Section | None:
         return Section("The drive over its life", skipped="no wear model applies (a link chain needs "
                        "wear_coefficient in [drive])")
     sec = Section("The drive over its life")
+    sec.paragraphs.extend(r.notes)
     rows = [["elongation limit of the drive", *_si(r.elongation_limit, "1", "%")]]
     if r.replacement_limit is not None:
         rows.append(["makers' replacement limit (largest wheel)", *_si(r.replacement_limit, "1", "%")])
