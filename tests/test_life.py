@@ -200,8 +200,9 @@ def _bicycle(power, cadence_rpm, front, rear, pitch=0.0127, pin=0.0036):
 # - Friction Facts (now CeramicSpeed), "Chain efficiency vs. run time", 10-speed chains on a new
 #   53T/11T ring and cog, 95 rpm, 250 W: chain A (Campagnolo Record) 6.67 W, chain B (Shimano
 #   CN-7901) 6.44 W lost after 8 h. Chain A calibrates ARTICULATION_FRICTION (pin 3.6 mm).
-# - Spicer et al., J. Mech. Des. 123 (2001) 598: the highest efficiency measured, 98.6 %, with the
-#   52T chainring on their largest rear sprocket (21T) at the highest tension.
+# - Spicer et al., J. Mech. Des. 123 (2001) 598: the highest efficiency measured, 98.6 % (abstract);
+#   the conditions (52T chainring, their largest rear sprocket 21T, highest tension) are recalled
+#   from the paper's figures, not re-read: the weaker of the two references.
 MEASURED = [("Friction Facts 53/11 chain A", 250.0, 95.0, 53, 11, 1 - 6.67 / 250),
             ("Friction Facts 53/11 chain B", 250.0, 95.0, 53, 11, 1 - 6.44 / 250),
             ("Spicer et al. 52/21", 200.0, 80.0, 52, 21, 0.986)]
