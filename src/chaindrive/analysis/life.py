@@ -388,33 +388,33 @@ def _checks(ctx: PartContext, r: DriveLife) -> list[Check]:
     out: list[Check] = []
     if r.replacement_limit is not None:
         out.append(Check("wear elongation limit <= makers' replacement limit", r.elongation_limit,
-                         r.replacement_limit, "1", bool(r.elongation_limit <= r.replacement_limit + 1e-12),
+                         r.replacement_limit, "-", bool(r.elongation_limit <= r.replacement_limit + 1e-12),
                          _SOURCE_LIMIT, relation="<="))
     for name, hold, m in zip(r.wheel_names, r.holding_limit, r.jump_over_margin, strict=True):
         if hold is None:
             continue
         if r.elongation_limit > hold:
             out.append(Check(f"tooth form of '{name}' holds the chain at the elongation limit", hold,
-                             r.elongation_limit, "1", False, _SOURCE_JUMP, relation=">=",
+                             r.elongation_limit, "-", False, _SOURCE_JUMP, relation=">=",
                              note="the rollers ride over the tooth corner before the limit"))
         elif m is not None:
-            out.append(Check(f"jump-over margin on '{name}' at the elongation limit", m, 1.0, "1", bool(m >= 1.0),
+            out.append(Check(f"jump-over margin on '{name}' at the elongation limit", m, 1.0, "-", bool(m >= 1.0),
                              _SOURCE_JUMP, note="tight-side tooth load at jump-over / running tooth load"))
     if r.fatigue_life_hours is not None or r.fatigue_utilisation is not None:
-        out.append(Check("link-plate fatigue: equivalent range / endurance", r.fatigue_utilisation, None, "1", None,
+        out.append(Check("link-plate fatigue: equivalent range / endurance", r.fatigue_utilisation, None, "-", None,
                          "rainflow (ASTM E1049) + Miner; endurance at the ANSI link-plate line (Tsubaki 1997 "
                          "Fig. 2.19), FKM S–N slope 5", relation="info",
                          note="below 1: no fatigue failure" if (r.fatigue_utilisation or 0) < 1 else
                          f"fatigue life {r.fatigue_life_hours:.0f} h"))
     if r.resonance_margins is not None:
         out.append(Check("span resonance over the life: smallest margin to the 0.7…1.4 band", float(np.min(r.resonance_margins)),
-                         None, "1", None, "the tensioner paper's band, span frequencies of the worn chain",
+                         None, "-", None, "the tensioner paper's band, span frequencies of the worn chain",
                          relation="info", note=f"worst: {r.resonance_worst}"))
     if r.governing != "wear":  # the wear part's check already gives the wear life: one number per life
         out.append(Check(f"life of the chain (governed by {r.governing})", r.life_hours, None, "h", None,
                          "wear part, jump-over and fatigue of docs/life.md", relation="info"))
     if r.efficiency is not None:
-        out.append(Check("efficiency (articulation friction)", r.efficiency, None, "1", None,
+        out.append(Check("efficiency (articulation friction)", r.efficiency, None, "-", None,
                          "Spicer et al., J. Mech. Des. 123 (2001) 598; calibrated, docs/life.md", relation="info"))
     return out
 
