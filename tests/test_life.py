@@ -400,3 +400,38 @@ def test_life_part_takes_the_service_life_with_skew(examples_dir):
     a = analyze_drive(load_project(examples_dir / "roller_industrial.toml"), include=["life", "service_life"])
     assert a.life.replacement_hours == a.service_life.hours
     assert a.life.wear_basis == "service life with skew"
+
+
+# --------------------------------------------------------------------------- the worn chain in the simulation
+def test_simulation_wheel_pitch_places_the_worn_chain():
+    # a chain worn by e on wheels cut for p: the chain's polygon is R (1 + e), the seats stay at R
+    from chaindrive.simulation.examples import roller_example
+
+    p, e = 0.0254, 0.05
+    m = roller_example(teeth=11, links=40, gravity=False, pitch=p * (1 + e), wheel_pitch=p)
+    r = p / (2 * math.sin(math.pi / 11))
+    assert m.seat_radii() == pytest.approx([r, r], rel=1e-12)
+    assert m.pitch_radii() == pytest.approx([r * (1 + e)] * 2, rel=1e-12)
+    assert m.tooth_form(11).pitch_radius == pytest.approx(r, rel=1e-12)
+    new = roller_example(teeth=11, links=40, gravity=False)
+    assert new.tooth_pitch == new.pitch and np.allclose(new.seat_radii(), new.pitch_radii())
+    with pytest.raises(InputError, match=r"wheel_pitch must lie in \[pitch/1.3, pitch\]"):
+        roller_example(teeth=11, links=40, pitch=p, wheel_pitch=1.1 * p)
+
+
+@pytest.mark.slow
+def test_simulation_runs_an_elongated_chain_without_skipping():
+    # the worn chain (e = 20 % on 11 teeth, holding limit 26 %) under 600 N m: the simulation holds
+    # the wrap (no tooth skipped) at a tension ratio T1/T2 well below the analysis' jump ratio β^-n
+    from chaindrive.simulation import simulate
+    from chaindrive.simulation.examples import roller_example
+    from chaindrive.simulation.run import assemble
+
+    p, e, z = 0.0254, 0.2, 11
+    m = roller_example(teeth=z, links=40, angular_velocity=2.0, load_torque=600.0, ramp_time=0.05,
+                       gravity=False, pitch=p * (1 + e), wheel_pitch=p, friction=0.0, pretension=10.0)
+    r = simulate(m, 0.4, samples=200, state=assemble(m, method="relaxation"))
+    rel = (r.wheel_angle[:, 1] - r.wheel_angle[:, 0]) * z / (2 * np.pi)
+    assert np.ptp(rel) < 0.5  # no tooth skipped
+    ratio = np.median(r.tension.max(axis=1) / np.maximum(r.tension.min(axis=1), 1.0))
+    assert ratio < tension_ratio(p, z, 0.01588, e) ** -5
