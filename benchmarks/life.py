@@ -7,10 +7,10 @@ Prints
   (provenance in ``tests/test_life.py``; aim within 0.5 percentage point);
 * ``holding limit vs makers' rule: z = N``: the largest elongation the ISO 606 tooth form
   holds (the roller centre at the tooth corner) next to the makers' replacement limit;
-* ``jump-over, analysis vs simulation: ...``: the worn chain in the dynamic simulation
-  (``SimulationModel.wheel_pitch``) driven at increasing load: the tension ratio it ran at
-  and whether it skipped a tooth, against the analysis' jump ratio (a bracket so far, not
-  the issue's ``X %``: see docs/life.md, "Limits");
+* ``jump-over, analysis vs simulation: CASE X %``: the worn chain in the dynamic
+  simulation (``SimulationModel.wheel_pitch``), its slack side slackening as the load
+  grows, driven until a tooth is skipped: its tension ratio at the onset against the
+  analysis' jump ratio ``β^-n`` (docs/life.md, "Jump-over");
 * the lives by mechanism of the example drives (``chaindrive life``).
 
 Run: ``PYTHONPATH=src python benchmarks/life.py``.
@@ -49,30 +49,58 @@ def bicycle_efficiency(power: float, cadence: float, front: int, rear: int) -> f
     return float(transmission_efficiency(power, float(loss)))
 
 
-def jump_over_vs_simulation(teeth: int = 11, elongation: float = 0.2, torques=(150.0, 600.0)) -> None:
-    """The worn chain in the simulation (``wheel_pitch``): the largest tension ratio it ran at
-    without skipping a tooth, against the analysis' jump ratio ``β^-n``. Not yet a jump-over
-    found by both (the simulation's slack side takes up tension with the load, so its ratio
-    T1/T2 stays near 30 and never reaches the analysis' jump ratio): a bracket, not a %."""
+def _run_worn(teeth, elongation, tight, back_force, duration=0.8):
+    """The worn chain on two ``teeth`` wheels (16B, no friction, no gravity), the driven wheel on a
+    slide pulled by ``back_force`` (a soft spring), the load torque for the tight tension ``tight``.
+    Returns (teeth skipped over the run, median T1/T2 over its second half)."""
     import numpy as np
 
-    from chaindrive.life import tension_ratio
     from chaindrive.simulation import simulate
     from chaindrive.simulation.examples import roller_example
+    from chaindrive.simulation.model import SimTensioner
     from chaindrive.simulation.run import assemble
 
-    p, n = 0.0254, 5  # 16B; 5 rollers seated in the 180° wrap of 11 teeth
-    jump_ratio = tension_ratio(p, teeth, 0.01588, elongation) ** -n
-    for torque in torques:
-        m = roller_example(teeth=teeth, links=40, angular_velocity=2.0, load_torque=torque, ramp_time=0.05,
-                           gravity=False, pitch=p * (1 + elongation), wheel_pitch=p, friction=0.0, pretension=10.0)
-        r = simulate(m, 0.4, samples=200, state=assemble(m, method="relaxation"))
-        rel = (r.wheel_angle[:, 1] - r.wheel_angle[:, 0]) * teeth / (2 * np.pi)
-        ratio = float(np.median(r.tension.max(axis=1) / np.maximum(r.tension.min(axis=1), 1.0)))
-        skipped = bool(np.ptp(rel) >= 0.5)
-        print(f"jump-over, analysis vs simulation: z = {teeth}, e = {100 * elongation:g} %, {torque:g} N m: "
-              f"simulation T1/T2 = {ratio:.1f}, {'a tooth skipped' if skipped else 'no tooth skipped'}; "
-              f"analysis jump ratio {jump_ratio:.0f} (no % comparison yet: the simulated ratio stays below it)")
+    p = 0.0254
+    radius = p * (1 + elongation) / (2 * math.sin(math.pi / teeth))
+    slide = SimTensioner.at(1, (1.0, 0.0), 2.0, 1000.0, damping=200.0, preload=back_force)
+    m = roller_example(teeth=teeth, links=40, angular_velocity=2.0, load_torque=tight * radius, ramp_time=0.05,
+                       gravity=False, pitch=p * (1 + elongation), wheel_pitch=p, friction=0.0, pretension=10.0,
+                       tensioner=slide)
+    r = simulate(m, duration, samples=400, state=assemble(m, method="relaxation"))
+    rel = (r.wheel_angle[:, 1] - r.wheel_angle[:, 0]) * teeth / (2 * np.pi)
+    t = r.tension[len(r.tension) // 2:]
+    return float(np.ptp(rel)), float(np.median(t.max(axis=1)) / max(float(np.median(t.min(axis=1))), 1e-9))
+
+
+def jump_over_vs_simulation(teeth: int = 11, elongation: float = 0.2, back_force: float = 3000.0) -> None:
+    """The worn chain in the simulation (``SimulationModel.wheel_pitch``), the driven wheel on a
+    slide pulled by a constant force ``F`` (so the slack side slackens as the load grows,
+    ``T_2 ≈ F − T_1``), driven at growing load until a tooth is skipped (bisection on the load).
+    The tension ratio ``T_1/T_2`` of the last run that skipped no tooth is the simulated
+    jump-over ratio; the analysis' is ``β(e)^-n`` (frictionless, ``n`` the rollers seated in
+    the 180° wrap, as the layout counts them)."""
+    from chaindrive.layout import teeth_in_mesh
+    from chaindrive.life import tension_ratio
+
+    seated = int(teeth_in_mesh(math.pi, teeth))
+    analysis = tension_ratio(0.0254, teeth, 0.01588, elongation) ** -seated
+    lo, hi = 0.85 * back_force, 0.97 * back_force  # no skip at lo, a skip at hi (checked)
+    ok_lo, ratio_lo = _run_worn(teeth, elongation, lo, back_force)
+    ok_hi, _ = _run_worn(teeth, elongation, hi, back_force)
+    if ok_lo >= 1.0 or ok_hi < 1.0:
+        print(f"jump-over, analysis vs simulation: z = {teeth}, e = {100 * elongation:g} %: no bracket "
+              f"(skipped {ok_lo:.2f} teeth at {lo:.0f} N, {ok_hi:.2f} at {hi:.0f} N)")
+        return
+    for _ in range(5):
+        mid = 0.5 * (lo + hi)
+        skipped, ratio = _run_worn(teeth, elongation, mid, back_force)
+        if skipped >= 1.0:
+            hi = mid
+        else:
+            lo, ratio_lo = mid, ratio
+    print(f"jump-over, analysis vs simulation: z = {teeth}, e = {100 * elongation:g} %, n = {seated} (16B, no friction): "
+          f"{100 * (analysis / ratio_lo - 1):+.1f} % (jump ratio T1/T2: analysis {analysis:.0f}, simulation "
+          f"{ratio_lo:.0f}, the last load without a skipped tooth, T1 = {lo:.0f} N)")
 
 
 def main() -> None:
@@ -84,7 +112,8 @@ def main() -> None:
         h = holding_limit(0.0254, z, 0.01588)
         print(f"holding limit vs makers' rule: z = {z}: ISO 606 form holds {100 * h:.2f} %, makers replace at "
               f"{100 * float(replacement_limit(z)):.2f} %")
-    jump_over_vs_simulation()
+    for teeth, elongation in ((11, 0.2), (11, 0.1), (9, 0.2)):
+        jump_over_vs_simulation(teeth, elongation)
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
         for name in ("roller_industrial", "multi_wheel", "mining_conveyor", "crawler_conveyor"):
