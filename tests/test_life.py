@@ -289,6 +289,9 @@ def test_life_part_tooth_form_cannot_hold(roller_drive):
     c = next(c for c in a.checks if c.name.startswith("tooth form of 'fan'"))
     assert c.passed is False
     assert a.life.jump_over_margin[1] is None
+    # the fan's holding limit comes before the drive's 4 %: jump-over governs the life
+    assert a.life.jump_over_wheel == "fan" and a.life.jump_over_elongation == a.life.holding_limit[1]
+    assert a.life.governing == "jump-over" and a.life.life_hours < a.life.replacement_hours
 
 
 def test_life_part_mining_conveyor(examples_dir):

@@ -121,6 +121,9 @@ def _margins(drive, layout, loads, grid, notes):
         limit = JO.holding_limit(p, z, d1)
         hold[i] = limit
         rise[i] = float(p / (2 * math.sin(math.pi / z)) * grid[-1])
+        # past its holding limit no sprocket holds the chain, loaded or not
+        if e_jump is None or limit < e_jump:
+            e_jump, wheel_jump = limit, drive.wheels[i].name
         if grid[-1] > limit:
             continue  # the holding check fails; no margin past the corner
         if hi - lo <= 1e-9 * max(hi, 1.0) or seated < 1:
@@ -133,7 +136,7 @@ def _margins(drive, layout, loads, grid, notes):
         margin[i] = float(tj[-1] / hi)
         # elongation where the margin reaches 1 (or the holding limit), by bisection on the ratio
         e_w = _jump_elongation(p, z, d1, seated, lo / hi, limit)
-        if e_jump is None or e_w < e_jump:
+        if e_w < e_jump:
             e_jump, wheel_jump = e_w, drive.wheels[i].name
     if not wheels:
         notes.append("jump-over: no ISO 606 sprocket on a roller chain (pocket wheels and track wheels "
