@@ -38,6 +38,7 @@ TOPICS = (
     "analyze",
     "crawler",
     "study",
+    "life",
 )
 
 for _topic in TOPICS:
