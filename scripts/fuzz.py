@@ -1018,12 +1018,20 @@ def api_call_args(qualname: str, obj, rnd: random.Random) -> tuple[list, dict] |
         text_only = bool(words) and words <= _TEXT_WORDS | {"None", "Sequence", "list", "tuple", "Iterable"}
         numeric_only = bool(words) and words <= _NUMERIC_WORDS and not objects
         builder = (SPECIAL_PARAMS.get(p.name) if (not objects or p.name in ("span", "pin")) and not text_only
-                   and not (numeric_only and p.name in ("wheel", "chain", "drive")) else None)
+                   and not (numeric_only and p.name in ("wheel", "chain", "drive"))
+                   and not (p.name == "direction" and "Array" not in ann and "ndarray" not in ann) else None)
         many = re.match(r"^\s*(list|Sequence|tuple|Iterable|collections\.abc\.Sequence)\[", ann) is not None
         if objects and many:
             value = [_object(rnd, group, objects) for _ in range(rnd.choice((1, 2, 3)))]
         elif many and "str" in words and not objects:
             value = [rnd.choice(WORDS) for _ in range(rnd.choice((0, 1, 2)))]
+        elif re.match(r"^\s*(list|Sequence|tuple)\[(int|float)", ann):  # one per wheel: as many as the centres
+            n = len(next(iter(_WHEEL_SETS.values()))[0]) if _WHEEL_SETS else rnd.choice((2, 3))
+            if "[int" in ann:
+                value = [api_value("teeth", None, rnd) if rnd.random() < 0.2 else rnd.choice((9, 12, 17, 19, 25, 40))
+                         for _ in range(n)]
+            else:
+                value = [api_value(p.name, None, rnd, arrays=False) for _ in range(n)]
         elif re.match(r"^\s*(list|Sequence)\[(list|Sequence)\[", ann):
             value = [[api_value("generic", None, rnd, arrays=False) for _ in range(rnd.choice((1, 2, 3)))]
                      for _ in range(rnd.choice((1, 2)))]
