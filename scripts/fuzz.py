@@ -1349,12 +1349,16 @@ WEB_WEIGHTS = {"/api/jobs/simulate": 0.1}
 
 #: Raw JSON bodies: not JSON, JSON of the wrong shape, deep, huge numbers (issue 34: null, "x", [],
 #: 5 gave HTTP 500; `[1,2` started a default job).
-RAW_BODIES = [b"null", b'"x"', b"[]", b"5", b"[1,2", b"{", b"", b"\xff\xfe\x00", b'{"a":', b"[" * 3000 + b"]" * 3000,
+RAW_BODIES = [b"null", b'"x"', b"[]", b"5", b"[1,2", b"{", b"{}[]", b"\xff\xfe\x00", b'{"a":', b"[" * 3000 + b"]" * 3000,
               b'{"speed": {"x": [1]}}', b'{"frames": 1e999}', b'{"frames": -1}', b'{"duration": "1e300 s"}',
               b'{"example": null, "design": 5}', b"true", b'{"speed": "NaN rad/s"}', b'{"load": "' + b"9" * 400 + b' N*m"}']
 
 
 def web_request(rnd: random.Random, routes, texts, fields=()):
+    json_routes = [r for r in routes if r[0] == "post" and r[3] is not None and "json" in r[3]["type"]]
+    if json_routes and rnd.random() < 0.06:  # a hostile raw body to a JSON route (never a valid one)
+        method, path, _, _ = rnd.choice(json_routes)
+        return method, path, {}, rnd.choice(RAW_BODIES), None
     weights = [WEB_WEIGHTS.get(r[1], 1.0) for r in routes]
     method, path, params, body = rnd.choices(routes, weights)[0]
     query, url = {}, path
