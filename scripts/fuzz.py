@@ -663,7 +663,9 @@ API_SKIP = {"load_project", "Project", "layout", "loads", "selection", "wear", "
 API_INFINITE_OK = {("TensionerSpan", "stiffness")}
 #: Functions whose result is +inf by its documented meaning: the reason.
 API_INFINITE_RESULT = {"cycles_to_failure": "+inf cycles below the endurance range (no fatigue damage), as "
-                                            "documented; the life analysis reads it as no damage"}
+                                            "documented; the life analysis reads it as no damage",
+                       "jump_over_tension": "+inf when a seated roller takes the whole load (ratio 0), as "
+                                            "documented: the chain cannot ride over"}
 
 _F_TYPICAL = {
     "length": (1e-3, 3.0), "angle": (-1.0, 1.5), "speed": (0.1, 200.0), "force": (1.0, 1e6),

@@ -215,6 +215,7 @@ def _tension_for_sag(span: float, inclination: float, sag: float, mass_per_lengt
     return float(L.tension_for_sag(span, inclination, sag, mass_per_length))
 
 
+@finite_guard  # NaN/inf arguments (acceleration_peak, ...) refused (chaindrive._finite)
 def drive_loads(drive: Drive, layout: DriveLayout | None = None, *,
                 acceleration_peak: float | None = None, acceleration_source: str = "given",
                 moving_mass: float | None = None, conveyor: ConveyorPull | None = None) -> DriveLoads:
