@@ -50,6 +50,11 @@ from .run import INTEGRATORS, State, assemble
 
 __all__ = ["SteadyState", "span_period", "steady_state", "warm_start"]
 
+#: settling step: at most this many times the measuring step and ...
+SETTLE_FACTOR = 2.0
+#: ... at least this many steps per tooth period
+SETTLE_PER_PERIOD = 50
+
 
 @dataclass(frozen=True)
 class SteadyState(Result):
@@ -383,7 +388,7 @@ def steady_state(drive_or_model: Any, *, periods: int = 8, bins: int = 24, windo
         s_max = max(float(np.max(start.par[K.P_K] * (np.hypot(seg[:, 0], seg[:, 1])
                                                      - start.par[K.P_PITCH]))), 1.0)
         transverse = 2.0 / (2.0 * math.sqrt(1.5 * s_max / (model.pitch * model.link_mass)))
-        settle_dt = max(dt, min(2.0 * dt, 0.5 * transverse))
+        settle_dt = max(dt, min(SETTLE_FACTOR * dt, period / SETTLE_PER_PERIOD, 0.5 * transverse))
     run = _Runner(model, start, method, settle_dt, period, samples, drv)
     if min_settle_time is None:
         min_settle_time = 2.0 * span_period(model, start)
