@@ -106,17 +106,7 @@ outputs = ["dynamics.peak_tension", "dynamics.mean_tension", "dynamics.settled"]
 kind = "latin_hypercube"
 samples = {samples}
 seed = 5
-[[vary]]
-path = "drive.speed"
-unit = "rpm"
-low = 300
-high = 1500
-[[vary]]
-path = "load.power"
-unit = "kW"
-low = 5
-high = 25
-"""
+""" + STUDY[STUDY.index("[[vary]]"):STUDY.index("[[vary]]\npath = \"contact.skew\"")]
 
 
 def dynamic_study(variants: int, workers: int = 2) -> None:
