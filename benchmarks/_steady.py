@@ -42,7 +42,7 @@ def reference(model, seconds=4.0, settle=0.5):
     period = 2.0 * np.pi / (model.seats_per_turn(model.wheels[0].teeth)
                             * abs(model.wheels[0].angular_velocity))
     return steady_state(model, method="explicit", periods=max(int(seconds / period), 1),
-                        max_settle=int(np.ceil(settle / period)), min_settle_time=settle,
+                        max_settle=0, min_settle_time=settle,
                         settle_tolerance=1e-12)
 
 

@@ -16,7 +16,10 @@ over one tooth period) in a fraction of a second:
 3. **The step checked against its half.** The linearly implicit integrator is first
    order: from the settled state one tooth period is run at ``Δt`` and at ``Δt/2`` and
    the relative change of its mean and peak tension is the step's error estimate; above
-   ``step_tolerance`` the step is halved (and the check repeated) before measuring.
+   ``step_tolerance`` the step is halved (and the check repeated) before measuring. A
+   step that would fall below four explicit stable steps (where the implicit step costs
+   more than the explicit integrator at its stable step) is not tried: the measurement
+   then runs with the explicit integrator (``method`` of the result).
 4. **Measuring** over ``periods`` tooth periods: the mean, the waveform (the tension
    averaged in ``bins`` bins of the driver's phase within the tooth period) and its
    peak, the mean of each period's largest value, the largest and smallest values and
@@ -54,6 +57,11 @@ __all__ = ["SteadyState", "span_period", "steady_state", "warm_start"]
 SETTLE_FACTOR = 2.0
 #: ... at least this many steps per tooth period
 SETTLE_PER_PERIOD = 50
+#: the implicit step is not halved below this many explicit stable steps: the measurement
+#: then runs explicitly (the implicit step costs about four explicit ones)
+EXPLICIT_BELOW = 4.0
+#: the default minimum settling time is at most this many tooth periods
+MAX_AUTO_SETTLE = 100
 
 
 @dataclass(frozen=True)
@@ -86,8 +94,8 @@ class SteadyState(Result):
     settle_time : float
         Simulated time before the measurement [s].
     settled : bool
-        The settling criterion was met (else the measurement began after ``max_settle``
-        periods).
+        The settling criterion was met (else the measurement began ``max_settle``
+        periods after ``min_settle_time``).
     measured_time : float
         Simulated time measured [s].
     dt : float
@@ -96,7 +104,8 @@ class SteadyState(Result):
         Relative change of the mean or peak tension of one tooth period against the
         half step (the larger; NaN when not checked).
     method : str
-        Integrator.
+        Integrator of the measurement (``"explicit"`` where the implicit step did not
+        hold the accuracy above four explicit stable steps).
     cpu_time : float
         Processor time of the whole computation, assembly included [s].
     """
@@ -265,6 +274,12 @@ class _Runner:
         self.state = state
         self.set_step(dt, period, samples)
 
+    def use(self, method: str, dt: float, period: float, samples: int) -> None:
+        """Go on with another integrator at step ``dt``."""
+        self.method = method
+        self.integrate = INTEGRATORS[method]
+        self.set_step(dt, period, samples)
+
     def set_step(self, dt: float, period: float, samples: int) -> None:
         self.dt = dt
         self.steps = max(int(round(period / dt)), 1)
@@ -312,7 +327,7 @@ def steady_state(drive_or_model: Any, *, periods: int = 8, bins: int = 24, windo
         Relative change of the window's mean and mean peak tension below which the drive
         counts as settled, in (0, 1).
     max_settle : int
-        Tooth periods run at most before measuring.
+        Tooth periods run at most after ``min_settle_time`` before measuring.
     step_tolerance : float
         Relative error allowed against the half step, in (0, 1).
     check_step : bool
@@ -327,8 +342,8 @@ def steady_state(drive_or_model: Any, *, periods: int = 8, bins: int = 24, windo
     min_settle_time : float, optional
         Simulated time [s] run before the settling test may pass; default two periods of
         the slowest first transverse mode of the tight and the slack span
-        (:func:`span_period`): a span's vibration builds up over its own periods, and the
-        mean tension with it.
+        (:func:`span_period`; at most 100 tooth periods): a span's vibration builds up
+        over its own periods, and the mean tension with it.
     state : State, optional
         Static state to start from (default a fresh assembly).
 
@@ -391,7 +406,7 @@ def steady_state(drive_or_model: Any, *, periods: int = 8, bins: int = 24, windo
         settle_dt = max(dt, min(SETTLE_FACTOR * dt, period / SETTLE_PER_PERIOD, 0.5 * transverse))
     run = _Runner(model, start, method, settle_dt, period, samples, drv)
     if min_settle_time is None:
-        min_settle_time = 2.0 * span_period(model, start)
+        min_settle_time = min(2.0 * span_period(model, start), MAX_AUTO_SETTLE * period)
     elif not min_settle_time >= 0.0:
         raise InputError(f"min_settle_time must be >= 0 s, got {min_settle_time!r}",
                          field="min_settle_time")
@@ -399,7 +414,7 @@ def steady_state(drive_or_model: Any, *, periods: int = 8, bins: int = 24, windo
     means: list[float] = []
     peaks: list[float] = []
     settled = False
-    for _ in range(max_settle):
+    for _ in range(math.ceil(min_settle_time / period - 1e-9) + max_settle):
         run.state, ten, _ = run.period()
         means.append(float(np.mean(ten)))
         peaks.append(float(np.max(ten)))
@@ -429,11 +444,17 @@ def steady_state(drive_or_model: Any, *, periods: int = 8, bins: int = 24, windo
             half = run.period()[1]
             step_error = max(abs(float(np.mean(full)) / float(np.mean(half)) - 1.0),
                              abs(float(np.max(full)) / float(np.max(half)) - 1.0))
-            if step_error <= step_tolerance or run.dt < model.stable_time_step():
+            if step_error <= step_tolerance:
                 # the checked period at the accepted step is the first one measured
                 run.set_step(2.0 * run.dt, period, samples)
                 run.state = after
                 keep(full, ang)
+                break
+            if 0.5 * run.dt < EXPLICIT_BELOW * model.stable_time_step():
+                # a step this fine costs the implicit integrator more than the explicit
+                # one at its stable step costs: measure with that
+                method = "explicit"
+                run.use("explicit", model.stable_time_step(), period, samples)
                 break
     # 4: measuring
     while len(tens) < periods:
