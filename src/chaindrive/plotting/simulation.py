@@ -210,7 +210,9 @@ def simulation_animation(result: SimulationResult, path: str | os.PathLike[str],
     for a in moving:
         a.set_animated(True)
     ax.set_autoscale_on(False)
-    canvas = fig.canvas
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+
+    canvas = FigureCanvasAgg(fig)  # whatever the backend: copy_from_bbox, buffer_rgba
     canvas.draw()
     background = canvas.copy_from_bbox(fig.bbox)
 

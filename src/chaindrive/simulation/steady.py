@@ -144,7 +144,7 @@ def _driver(model: SimulationModel) -> int:
 
 def _driver_speed(model: SimulationModel, w: int) -> float:
     wheel = model.wheels[w]
-    if wheel.mode == "speed":
+    if wheel.mode == "speed" or wheel.motor is None:
         return float(wheel.angular_velocity)
     return float(wheel.motor.synchronous_speed)
 
@@ -379,9 +379,9 @@ def steady_state(drive_or_model: Any, *, periods: int = 8, bins: int = 24, windo
         if not isinstance(value, (int, np.integer)) or not lo <= value <= hi:
             raise InputError(f"{name} must be a whole number from {lo} to {hi}, got {value!r}",
                              field=name)
-    for name, value in (("settle_tolerance", settle_tolerance), ("step_tolerance", step_tolerance)):
-        if not 0.0 < value < 1.0:
-            raise InputError(f"{name} must be in (0, 1), e.g. 0.02, got {value!r}", field=name)
+    for name, tol in (("settle_tolerance", settle_tolerance), ("step_tolerance", step_tolerance)):
+        if not 0.0 < tol < 1.0:
+            raise InputError(f"{name} must be in (0, 1), e.g. 0.02, got {tol!r}", field=name)
     if method not in INTEGRATORS:
         raise InputError(f"method must be one of {', '.join(INTEGRATORS)}, got {method!r}",
                          field="method")
