@@ -398,7 +398,13 @@ def acceptance_drives_with_seat_stiffness() -> None:
 
     warnings.simplefilter("ignore")
     print("the acceptance drives, seats at seat_contact_stiffness (Palmgren), 2.5 s settling: model vs simulation")
-    for name, drive in drives():
+    d0 = nominal(load_project(ROOT / "examples" / "roller_industrial.toml"))
+    over_speed = []
+    for rpm in (240, 480, 1460):
+        f = rpm / 960
+        over_speed.append((f"example at {rpm} rpm, same torque", d0.replace(
+            speed=d0.speed * f, load=dataclasses.replace(d0.load, power=d0.power() * f))))
+    for name, drive in itertools.chain(drives(), over_speed):
         d = nominal(drive)
         lo = analyze_drive(d, include=["loads"]).loads
         strands = d.chain.strands
