@@ -82,16 +82,16 @@ def seat_contact_stiffness(load: ArrayLike, width: ArrayLike, contacts: int = 2)
     against Roark's cylinder between two flat plates (within 25 % over 0.5…20 kN on
     17 mm). Clearances, oil films and the pin–bushing contact are not counted.
 
-    Examples
-    --------
-    >>> round(float(seat_contact_stiffness(2500.0, 0.01702)) / 1e8, 2)   # 16B at 2.5 kN
-    2.75
-
     References
     ----------
     A. Palmgren, Ball and Roller Bearing Engineering, 3rd ed., S. H. Burbank, 1959;
     T. A. Harris, M. N. Kotzalas, Rolling Bearing Analysis (Essential Concepts of Bearing
     Technology), 5th ed., CRC 2007, ch. 6.
+
+    Examples
+    --------
+    >>> round(float(seat_contact_stiffness(2500.0, 0.01702)) / 1e8, 2)   # 16B at 2.5 kN
+    2.75
     """
     q = check_positive("load", load, "N")
     w = check_positive("width", width, "m")
@@ -123,15 +123,15 @@ def seating_impact_velocity(angular_velocity: ArrayLike, pitch: ArrayLike) -> np
     numpy.ndarray
         ``v_i`` [m/s].
 
-    Examples
-    --------
-    >>> round(float(seating_impact_velocity(100.531, 0.0254)), 3)   # 16B at 960 rpm
-    2.553
-
     References
     ----------
     R. C. Binder, W. V. Covert, Impact between chain roller and sprocket in a chain drive,
     J. Franklin Inst. 245 (1948) 319–329.
+
+    Examples
+    --------
+    >>> round(float(seating_impact_velocity(100.531, 0.0254)), 3)   # 16B at 960 rpm
+    2.553
     """
     w = check_positive("angular_velocity", angular_velocity, "rad/s")
     p = check_positive("pitch", pitch, "m")
@@ -162,15 +162,15 @@ def seating_impact_force(velocity: ArrayLike, stiffness: ArrayLike, mass: ArrayL
     numpy.ndarray
         ``F_i`` [N].
 
-    Examples
-    --------
-    >>> round(float(seating_impact_force(2.0, 2e8, 0.05)))
-    6325
-
     References
     ----------
     W. Goldsmith, Impact: The Theory and Physical Behaviour of Colliding Solids, Arnold
     1960, ch. 4 (the linear-spring limit of Hertz's impact).
+
+    Examples
+    --------
+    >>> round(float(seating_impact_force(2.0, 2e8, 0.05)))
+    6325
     """
     v = np.asarray(velocity, dtype=float)
     if np.any(~np.isfinite(v)) or np.any(v < 0):
@@ -277,17 +277,17 @@ def running_peak_tension(tight_tension: ArrayLike, angular_velocity: ArrayLike, 
     hold-out drives). The simulation itself is not validated against a measurement
     (docs/design.md).
 
-    Examples
-    --------
-    >>> f = running_peak_tension(2254.0, 100.531, 0.0254, 19, 2.612, 2.5e8)
-    >>> 1.5 < float(f) / 2254.0 < 4.0
-    True
-
     References
     ----------
     R. C. Binder, W. V. Covert, J. Franklin Inst. 245 (1948) 319–329 (seating impact);
     A. Palmgren, Ball and Roller Bearing Engineering, 1959 (seat stiffness); the
     calibration sweep: benchmarks/_dynamic_sweep.py, scripts/calibrate_running_tension.py.
+
+    Examples
+    --------
+    >>> f = running_peak_tension(2254.0, 100.531, 0.0254, 19, 2.612, 2.5e8)
+    >>> 1.5 < float(f) / 2254.0 < 4.0
+    True
     """
     ft = check_positive("tight_tension", tight_tension, "N")
     z = check_positive("teeth", teeth)
