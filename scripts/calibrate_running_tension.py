@@ -29,7 +29,7 @@ CALIBRATION_DRIVES = 48
 REFERENCE_TEETH = 19.0
 #: the sweep's design ranges (benchmarks/_dynamic_sweep.py, sweep_drives)
 RANGES = {"pitch": [0.0127, 0.03175], "teeth": [13, 27], "ratio": [1.0, 3.5], "rpm": [100.0, 1800.0],
-          "chain_speed": [0.0, 12.0], "centre_pitches": [25.0, 60.0], "pull_ratio": [0.02, 0.12]}
+          "chain_speed": [0.0, 12.0], "centre_pitches": [25.0, 60.0], "pull_ratio": [0.02, 0.12], "wheels": [2, 2]}
 
 
 def load() -> dict[str, np.ndarray]:

@@ -91,7 +91,7 @@ def test_peak_grows_with_speed_and_exceeds_the_static_tension(w, f):
 def test_calibration_is_data_with_provenance():
     c = RT.calibration()
     assert "Halton" in c.provenance and "benchmarks/_dynamic_sweep.py" in c.provenance
-    assert set(c.ranges) == {"pitch", "teeth", "ratio", "rpm", "chain_speed", "centre_pitches", "pull_ratio"}
+    assert set(c.ranges) == {"pitch", "teeth", "ratio", "rpm", "chain_speed", "centre_pitches", "pull_ratio", "wheels"}
     assert 0 < c.calibration_rms <= c.calibration_worst < 1 and 0 < c.holdout_worst < 1
 
 
@@ -144,7 +144,7 @@ def test_range_warnings():
         RT.check_running_tension_range(**args)
     for change, match in [(dict(teeth=9), "teeth"), (dict(teeth_driven=95), "ratio"),
                           (dict(angular_velocity=300.0), "rpm"), (dict(centre_distance=2.5), "centre_pitches"),
-                          (dict(pull=12e3), "pull_ratio"), (dict(pitch=0.0508), "pitch")]:
+                          (dict(pull=12e3), "pull_ratio"), (dict(pitch=0.0508), "pitch"), (dict(wheels=3), "wheels")]:
         with warnings.catch_warnings(record=True) as caught:
             warnings.simplefilter("always")
             RT.check_running_tension_range(**{**args, **change})
@@ -164,6 +164,11 @@ def test_range_warnings():
     (lambda: RT.running_peak_tension(2e3, 100.0, 0.0254, 0, 2.6, 2e8), "teeth"),
     (lambda: RT.running_peak_tension(2e3, 100.0, 0.0254, 19, float("nan"), 2e8), "mass_per_length"),
     (lambda: RT.running_peak_tension(2e3, 100.0, 0.0254, 19, 2.6, -2e8), "stiffness"),
+    (lambda: RT.seating_impact_force("fast", 1e8, 0.05), "velocity"),
+    (lambda: RT.check_running_tension_range(pitch="x", teeth=19, teeth_driven=57, angular_velocity=100.0,
+                                            centre_distance=1.0, pull=1e3, breaking_force=6e4), "pitch"),
+    (lambda: RT.check_running_tension_range(pitch=0.0254, teeth=19, teeth_driven=57, angular_velocity=100.0,
+                                            centre_distance=1.0, pull=0.0, breaking_force=6e4), "pull"),
 ])
 def test_errors(call, match):
     with pytest.raises(InputError, match=match):

@@ -31,7 +31,7 @@ from pathlib import Path
 import numpy as np
 
 from .._typing import ArrayLike
-from .._validation import check_positive, warn_outside
+from .._validation import check_nonnegative, check_positive, warn_outside
 from ..units import angular_velocity_to_rpm
 
 __all__ = ["PALMGREN_LINE_CONTACT", "RunningTensionCalibration", "calibration", "seat_contact_stiffness",
@@ -172,9 +172,7 @@ def seating_impact_force(velocity: ArrayLike, stiffness: ArrayLike, mass: ArrayL
     >>> round(float(seating_impact_force(2.0, 2e8, 0.05)))
     6325
     """
-    v = np.asarray(velocity, dtype=float)
-    if np.any(~np.isfinite(v)) or np.any(v < 0):
-        check_positive("velocity", np.where(v == 0, 1.0, v), "m/s")
+    v = check_nonnegative("velocity", velocity, "m/s")
     k = check_positive("stiffness", stiffness, "N/m")
     m = check_positive("mass", mass, "kg")
     return np.asarray(v * np.sqrt(k * m))
@@ -300,7 +298,7 @@ def running_peak_tension(tight_tension: ArrayLike, angular_velocity: ArrayLike, 
 
 
 def check_running_tension_range(*, pitch: float, teeth: float, teeth_driven: float, angular_velocity: float,
-                                centre_distance: float, pull: float, breaking_force: float,
+                                centre_distance: float, pull: float, breaking_force: float, wheels: int = 2,
                                 stacklevel: int = 3) -> None:
     """Warn (:class:`chaindrive.errors.ValidityRangeWarning`) for each input of
     :func:`running_peak_tension` outside the calibration sweep's range.
@@ -319,6 +317,8 @@ def check_running_tension_range(*, pitch: float, teeth: float, teeth_driven: flo
         ``T/R`` [N].
     breaking_force : float
         Chain's ``F_B`` [N] (all strands).
+    wheels : int
+        Wheels of the drive (the sweep's drives have two).
     stacklevel : int
         For the warning.
 
@@ -332,11 +332,15 @@ def check_running_tension_range(*, pitch: float, teeth: float, teeth_driven: flo
     >>> len(w)
     0
     """
+    given = {"pitch": pitch, "teeth": teeth, "teeth_driven": teeth_driven, "angular_velocity": angular_velocity,
+             "centre_distance": centre_distance, "pull": pull, "breaking_force": breaking_force}
+    pitch, teeth, teeth_driven, angular_velocity, centre_distance, pull, breaking_force = (
+        float(check_positive(name, value)) for name, value in given.items())
     r = calibration().ranges
     source = "the running peak tension model (its calibration sweep)"
     values = {"pitch": pitch, "teeth": teeth, "ratio": teeth_driven / teeth, "rpm": float(angular_velocity_to_rpm(angular_velocity)),
               "chain_speed": angular_velocity * teeth * pitch / (2 * math.pi), "centre_pitches": centre_distance / pitch,
-              "pull_ratio": pull / breaking_force}
+              "pull_ratio": pull / breaking_force, "wheels": float(wheels)}
     for name, value in values.items():
         low, high = r[name]
         warn_outside(name, value, low, high, source, stacklevel=stacklevel + 1)
