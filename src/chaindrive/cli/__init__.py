@@ -32,6 +32,7 @@ TOPICS = (
     "analyze",
     "crawler",
     "study",
+    "cad",
 )
 
 for _topic in TOPICS:
