@@ -127,8 +127,21 @@ def _check_example(examples_dir, tmp_path, name, *, gltf=False):
     assert sorted(back.names) == sorted(p.name for p in a.parts)
     # the chain's length against the layout's links x pitch (elastic stretch of the assembly < 0.1 %)
     assert a.chain_length() == pytest.approx(drive_layout(drive).links * float(drive.chain.pitch), rel=1e-3)
-    # the re-imported parts sit where they were placed (the wheels' hub makes their centres off-plane)
-    chain_centres = back.centres[[i for i, n in enumerate(back.names) if n.startswith("link")]]
+    # each re-imported part sits where it was placed: its centre of mass is the placement of
+    # its shape's own centre of mass (computed here from the built solids)
+    from OCP.BRepGProp import BRepGProp
+    from OCP.GProp import GProp_GProps
+
+    local = {}
+    for key, shape in shapes.items():
+        props = GProp_GProps()
+        BRepGProp.VolumeProperties_s(shape, props)
+        c = props.CentreOfMass()
+        local[key] = np.array([c.X(), c.Y(), c.Z(), 1e3]) * 1e-3
+    expected = {p.name: (np.asarray(p.matrix) @ local[p.shape])[:3] for p in a.parts}
+    got = dict(zip(back.names, back.centres))
+    assert max(np.abs(got[n] - expected[n]).max() for n in expected) < 1e-6
+    chain_centres = np.array([got[p.name] for p in a.parts if p.group == "chain"])
     assert np.abs(chain_centres[:, 2]).max() < 0.05
     clear = clearances(a, shapes)
     if gltf:

@@ -25,7 +25,12 @@ import numpy as np
 
 from ..errors import InputError
 from ..limits import MAX_CAD_PARTS
-from .links import RollerLinkDimensions, RoundLinkDimensions, roller_link_dimensions, round_link_dimensions
+from .links import (
+    RollerLinkDimensions,
+    RoundLinkDimensions,
+    roller_link_dimensions,
+    round_link_dimensions,
+)
 
 __all__ = ["Pose", "PartPlacement", "ShapeSpec", "DriveAssembly", "drive_assembly", "frame_assembly",
            "static_pose", "frame_pose", "placement_matrix"]
@@ -212,8 +217,8 @@ def static_pose(drive: Any) -> tuple[Pose, Any]:
     >>> pose.pins.shape[1]  # doctest: +SKIP
     2
     """
-    from ..simulation import assemble, model_from_drive
     from ..simulation import _kernel as K
+    from ..simulation import assemble, model_from_drive
 
     model = model_from_drive(drive)
     state = assemble(model)
@@ -265,9 +270,9 @@ def _wheel_part(wheel: Any, chain: Any, link: RoundLinkDimensions | None) -> tup
     if link is not None:
         pw = PocketWheel.from_chain(chain, z, clearance=POCKET_PLAY_RATIO * link.bar_diameter)
         part = pocket_wheel_part(pw)
-        dims = pw.dimensions()
-        info = {"kind": "pocket wheel", "pockets": z, "pitch radius [m]": float(dims.pitch_radius),
-                "tip radius [m]": float(dims.tip_radius), "play in pocket and groove [m]": pw.clearance}
+        pdims = pw.dimensions()
+        info = {"kind": "pocket wheel", "pockets": z, "pitch radius [m]": float(pdims.pitch_radius),
+                "tip radius [m]": float(pdims.tip_radius), "play in pocket and groove [m]": pw.clearance}
     else:
         sp = Sprocket.from_chain(chain, z)
         part = sprocket_part(sp)

@@ -236,12 +236,14 @@ def read_assembly(path: str | os.PathLike[str]) -> AssemblyCheck:
     """
     from OCP.BRepCheck import BRepCheck_Analyzer
     from OCP.BRepGProp import BRepGProp
+    from OCP.collections import Sequence_TDF_Label as TDF_LabelSequence
+    from OCP.gp import gp_Pnt
     from OCP.GProp import GProp_GProps
     from OCP.IFSelect import IFSelect_RetDone
     from OCP.STEPCAFControl import STEPCAFControl_Reader
-    from OCP.TCollection import TCollection_ExtendedString
+    from OCP.TCollection import TCollection_AsciiString, TCollection_ExtendedString
     from OCP.TDataStd import TDataStd_Name
-    from OCP.TDF import TDF_Label, TDF_LabelSequence
+    from OCP.TDF import TDF_Label, TDF_Tool
     from OCP.TDocStd import TDocStd_Document
     from OCP.TopAbs import TopAbs_SOLID
     from OCP.TopExp import TopExp_Explorer
@@ -260,7 +262,7 @@ def read_assembly(path: str | os.PathLike[str]) -> AssemblyCheck:
     tool = XCAFDoc_DocumentTool.ShapeTool_s(doc.Main())
     names: list[str] = []
     centres: list[tuple[float, float, float]] = []
-    volumes: dict[int, tuple[float, bool, tuple[float, float, float]]] = {}
+    volumes: dict[str, tuple[float, bool, tuple[float, float, float]]] = {}
     count = 0
     valid = True
     volume = 0.0
@@ -287,7 +289,9 @@ def read_assembly(path: str | os.PathLike[str]) -> AssemblyCheck:
             return
         names.append(label_name(own))
         shape = tool.GetShape_s(label)
-        key = hash(shape.TShape())
+        entry = TCollection_AsciiString()
+        TDF_Tool.Entry_s(label, entry)
+        key = entry.ToCString()  # the referred product's label: shared by its copies
         if key not in volumes:
             props = GProp_GProps()
             BRepGProp.VolumeProperties_s(shape, props)
@@ -299,7 +303,7 @@ def read_assembly(path: str | os.PathLike[str]) -> AssemblyCheck:
             count += 1
             exp.Next()
         trsf = location.Transformation()
-        from OCP.gp import gp_Pnt
+
 
         q = gp_Pnt(cx, cy, cz).Transformed(trsf)
         centres.append((q.X() / _MM, q.Y() / _MM, q.Z() / _MM))

@@ -38,10 +38,10 @@ class Mesh:
 
 
 def _mesh_of(shape: Any) -> Mesh:
+    from OCP.Bnd import Bnd_Box
     from OCP.BRep import BRep_Tool
     from OCP.BRepBndLib import BRepBndLib
     from OCP.BRepMesh import BRepMesh_IncrementalMesh
-    from OCP.Bnd import Bnd_Box
     from OCP.TopAbs import TopAbs_FACE, TopAbs_REVERSED
     from OCP.TopExp import TopExp_Explorer
     from OCP.TopLoc import TopLoc_Location
@@ -49,14 +49,14 @@ def _mesh_of(shape: Any) -> Mesh:
 
     box = Bnd_Box()
     BRepBndLib.Add_s(shape, box)
-    x0, y0, z0, x1, y1, z1 = box.Get()
-    size = float(np.linalg.norm([x1 - x0, y1 - y0, z1 - z0]))
-    BRepMesh_IncrementalMesh(shape, max(0.05, 0.004 * size), False, 0.35, True)
+    lo, hi = box.CornerMin(), box.CornerMax()
+    size = float(np.linalg.norm([hi.X() - lo.X(), hi.Y() - lo.Y(), hi.Z() - lo.Z()]))
+    BRepMesh_IncrementalMesh(shape, max(0.05, 0.006 * size), False, 0.5, True)
     verts, faces = [], []
     offset = 0
     exp = TopExp_Explorer(shape, TopAbs_FACE)
     while exp.More():
-        face = TopoDS.Face_s(exp.Current())
+        face = TopoDS.Face(exp.Current()) if hasattr(TopoDS, "Face") else TopoDS.Face_s(exp.Current())
         loc = TopLoc_Location()
         tri = BRep_Tool.Triangulation_s(face, loc)
         if tri is not None:
@@ -159,10 +159,11 @@ def _fmt(key: str, value: Any) -> str:
     """A part's number for the view: metres as mm, newtons as kN (the unit is in the key)."""
     from ..workflows.display import convert
 
+    if isinstance(value, float) and key.endswith("]"):
+        name, unit = key[:-1].rsplit(" [", 1)
+        shown_value, shown = convert(value, unit)
+        return f"{name} [{shown}]: {shown_value:.4g}"
     if isinstance(value, float):
-        for unit, shown in (("[m]", "mm"), ("[N]", "kN"), ("[N/m]", "kN/m")):
-            if key.endswith(unit):
-                return f"{key[:-len(unit)]}[{shown}]: {convert(value, unit[1:-1], shown):.4g}"
         return f"{key}: {value:.4g}"
     return f"{key}: {value}"
 
@@ -204,8 +205,8 @@ def view_figure(assembly: DriveAssembly, meshes: dict[str, Mesh] | None = None, 
         r, g, b = colour_of(assembly.shapes[key])
         texts = ["<b>" + p.name + "</b><br>" + "<br>".join(_fmt(k, v) for k, v in p.info.items()) for p in parts]
         traces.append({
-            "type": "mesh3d", "name": key, "x": (xyz[:, 0] * _MM).round(3).tolist(),
-            "y": (xyz[:, 1] * _MM).round(3).tolist(), "z": (xyz[:, 2] * _MM).round(3).tolist(),
+            "type": "mesh3d", "name": key, "x": (xyz[:, 0] * _MM).round(2).tolist(),
+            "y": (xyz[:, 1] * _MM).round(2).tolist(), "z": (xyz[:, 2] * _MM).round(2).tolist(),
             "i": faces[:, 0].tolist(), "j": faces[:, 1].tolist(), "k": faces[:, 2].tolist(),
             "color": f"rgb({int(r * 255)},{int(g * 255)},{int(b * 255)})", "flatshading": False,
             "lighting": {"ambient": 0.45, "diffuse": 0.8, "specular": 0.3, "roughness": 0.5},

@@ -42,10 +42,9 @@ def export_assembly(assembly: Any, output: Path, gltf: Path | None, force: bool,
 
     from rich.progress import BarColumn, Progress, TextColumn, TimeElapsedColumn
 
+    from .._io import atomic_write_bytes
     from ..cad.build import build_shapes, clearances, read_assembly, step_bytes
     from ..cad.mesh import tessellate, write_gltf
-
-    from .._io import atomic_write_bytes
 
     start = time.perf_counter()
     with Progress(TextColumn("{task.description:<28}"), BarColumn(), TextColumn("{task.completed}/{task.total}"),
