@@ -275,10 +275,11 @@ def _wheel_part(wheel: Any, chain: Any, link: RoundLinkDimensions | None) -> tup
                 "tip radius [m]": float(pdims.tip_radius), "play in pocket and groove [m]": pw.clearance}
     else:
         sp = Sprocket.from_chain(chain, z)
-        part = sprocket_part(sp)
+        part = sprocket_part(sp, transverse_pitch=chain.transverse_pitch if sp.strands > 1 else None)
         dims = sp.dimensions()
         info = {"kind": "sprocket", "teeth": z, "pitch diameter [m]": float(dims.pitch_diameter),
-                "tip diameter [m]": 2 * part.tip_radius, "tooth width bf1 [m]": part.width}
+                "tip diameter [m]": 2 * part.tip_radius, "tooth width bf1 [m]": part.width,
+                "strands": sp.strands, "rim width [m]": part.rim_width}
     info.update({"bore [m]": part.hub.bore, "hub diameter [m]": part.hub.hub_diameter,
                  "hub length [m]": part.hub.hub_length, "material": part.material})
     return f"{part.kind} {part.chain} z{z}", ShapeSpec("wheel", part), info

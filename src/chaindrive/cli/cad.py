@@ -16,6 +16,7 @@ from .app import app, echo_json, force_option
 
 _OUTPUT = typer.Option(..., "--output", "-o", help="STEP file to write (.step or .stp; AP214, millimetres): one named, placed part per wheel, link part, guide and tensioner slide.")
 _GLTF = typer.Option(None, "--gltf", help="Also write the model as binary glTF (.glb, metres; a node per part with its numbers in 'extras').")
+_DXF = typer.Option(None, "--dxf", help="Also write the view along the wheels' axes as DXF (mm; layers WHEELS, PITCH_CIRCLES, CHAIN_PLATES, CHAIN_ROLLERS, CHAIN_LINKS, GUIDES, TENSIONER, TEXT; each contour one closed polyline).")
 _LINKS = typer.Option(None, "--links", help="Model only a section of the chain: FIRST:COUNT (dimensionless link indices, e.g. 0:200); all wheels are kept. The remedy when the assembly has more parts than chaindrive.limits.MAX_CAD_PARTS.")
 _CHECK = typer.Option(False, "--check", help="Read the STEP file back and check it: one solid per part, the chain's length against the layout's links x pitch [m], and the clearance [mm] between the wheels and the links near them (slow on large drives).")
 
@@ -83,8 +84,9 @@ def report(out: dict, as_json: bool) -> None:
     typer.echo(f"chain length {out['chain_length'] * 1e3:.2f} mm at the assembly (layout {out['total_links']} "
                f"x {out['pitch'] * 1e3:g} mm = {out['layout_length'] * 1e3:.2f} mm)")
     typer.echo(f"wrote {out['step']} ({out['bytes'] / 1e6:.2f} MB) in {out['seconds']:.1f} s")
-    if "gltf" in out:
-        typer.echo(f"wrote {out['gltf']}")
+    for key in ("gltf", "dxf"):
+        if key in out:
+            typer.echo(f"wrote {out[key]}")
     c = out.get("check")
     if c:
         typer.echo(f"check: {c['solids']} solids read back for {c['parts']} parts ({c['named_parts']} named), "
@@ -98,6 +100,7 @@ def cad_command(
     project: Path = typer.Argument(..., help="Project file (TOML, as for `analyze`)."),
     output: Path = _OUTPUT,
     gltf: Path | None = _GLTF,
+    dxf: Path | None = _DXF,
     links: str | None = _LINKS,
     check: bool = _CHECK,
     force: bool = force_option(),
@@ -115,8 +118,16 @@ def cad_command(
     check_output_path(output, STEP_SUFFIXES, option="--output", force=force)
     if gltf is not None:
         check_output_path(gltf, GLTF_SUFFIXES, option="--gltf", force=force)
+    if dxf is not None:
+        check_output_path(dxf, (".dxf",), option="--dxf", force=force)
     section = parse_links(links)
     drive = load_project(project)
     typer.echo("placing the chain (static assembly)...", err=True)
     assembly = drive_assembly(drive, section=section)
-    report(export_assembly(assembly, output, gltf, force, check), as_json)
+    out = export_assembly(assembly, output, gltf, force, check)
+    if dxf is not None:
+        from ..cad.drawing import write_dxf
+
+        write_dxf(assembly, dxf, force=force)
+        out["dxf"] = str(dxf)
+    report(out, as_json)
