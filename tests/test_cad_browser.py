@@ -8,6 +8,7 @@ import os
 import shutil
 from pathlib import Path
 
+import numpy as np
 import pytest
 
 pytestmark = [pytest.mark.browser, pytest.mark.slow]
@@ -57,10 +58,22 @@ def test_view3d_draws_the_drive_and_shows_a_part(web_server):
         assert "190 parts" in status and "144 links" in status
         box = page.locator("#view3d").bounding_box()
         # click the plot until a part is hit (the drive spans the middle of the view)
-        for fx, fy in ((0.5, 0.5), (0.3, 0.5), (0.7, 0.5), (0.5, 0.45), (0.4, 0.55), (0.6, 0.55), (0.25, 0.45)):
-            page.mouse.click(box["x"] + fx * box["width"], box["y"] + fy * box["height"])
-            page.wait_for_timeout(400)
-            if page.inner_text("#view3d-part") != "click a part":
+        hit = False
+        for fx in (0.5, 0.3, 0.7):
+            for fy in np.arange(0.45, 0.8, 0.01):
+                x, y = box["x"] + fx * box["width"], box["y"] + fy * box["height"]
+                page.mouse.move(x, y)  # plotly picks the WebGL part under the pointer on hover
+                page.wait_for_timeout(100)
+                # plotly's 3-D scene emits the click from its render loop while the button is
+                # down: hold it for a few frames of the software renderer
+                page.mouse.down()
+                page.wait_for_timeout(600)
+                page.mouse.up()
+                page.wait_for_timeout(100)
+                if page.inner_text("#view3d-part") != "click a part":
+                    hit = True
+                    break
+            if hit:
                 break
         page.screenshot(path=str(ARTIFACTS / "view3d.png"), full_page=True)
         text = page.inner_text("#view3d-part")

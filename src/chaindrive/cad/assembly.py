@@ -384,7 +384,7 @@ def _assembly(drive: Any, pose: Pose, section: tuple[int, int] | None, chain_wid
     for g, (a, b) in enumerate(pose.guides):
         u = b - a
         length = float(np.hypot(*u))
-        key = f"guide {length * 1e3:.3f}"
+        key = f"guide rail {length * 1e3:.1f} mm"
         shapes.setdefault(key, ShapeSpec("box", (length, thickness, 1.2 * width, 0.0, -thickness)))
         parts.append(PartPlacement(f"guide {g}", "guides", key,
                                    placement_matrix((a[0], a[1], 0.0), math.atan2(u[1], u[0])),

@@ -213,10 +213,17 @@ def view_figure(assembly: DriveAssembly, meshes: dict[str, Mesh] | None = None, 
             "hoverinfo": "name", "showlegend": True, "meta": {"verts": nv, "parts": texts},
         })
     axis = {"title": {"text": "{} [mm]"}, "showbackground": False}
+    lo = np.min([np.min(t["x"]) for t in traces]), np.min([np.min(t["y"]) for t in traces]), \
+        np.min([np.min(t["z"]) for t in traces])
+    hi = np.max([np.max(t["x"]) for t in traces]), np.max([np.max(t["y"]) for t in traces]), \
+        np.max([np.max(t["z"]) for t in traces])
+    ext = np.maximum(np.subtract(hi, lo), 1e-9)
+    ratio = ext / ext.max()
     layout = {"title": {"text": assembly.title}, "margin": {"l": 0, "r": 0, "t": 40, "b": 0},
-              "scene": {"aspectmode": "data", "xaxis": {**axis, "title": {"text": "x [mm]"}},
+              "scene": {"aspectmode": "manual", "aspectratio": dict(zip("xyz", ratio.round(4).tolist(), strict=True)),
+                        "xaxis": {**axis, "title": {"text": "x [mm]"}},
                         "yaxis": {**axis, "title": {"text": "y [mm]"}}, "zaxis": {**axis, "title": {"text": "z [mm]"}},
-                        "camera": {"eye": {"x": 0.3, "y": -1.2, "z": 1.4}}},
+                        "camera": {"eye": {"x": 0.1, "y": -0.65, "z": 0.65}}},
               "legend": {"itemclick": "toggle"}}
     return {"data": traces, "layout": layout}
 
