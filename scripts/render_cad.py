@@ -19,7 +19,7 @@ from chaindrive.drive.project import load_project  # noqa: E402
 from chaindrive.plotting.cad import assembly_plot  # noqa: E402
 
 OUT = Path(__file__).resolve().parents[1] / "docs" / "img"
-VIEWS = {"roller_industrial.toml": (30, -75), "multi_wheel.toml": (40, -70), "mining_conveyor.toml": (25, -80)}
+VIEWS = {"roller_industrial.toml": (30, -75), "multi_wheel.toml": (40, -70), "mining_conveyor.toml": (65, -90)}
 
 
 def main(names: list[str]) -> None:

@@ -245,3 +245,27 @@ def test_multi_strand_sprocket_solid_volume():
     assert solid.volume * 1e-9 == pytest.approx(part_volume(p), rel=1e-5)
     box = solid.bounding_box()
     assert box.size.Z * 1e-3 == pytest.approx(p.total_width, rel=1e-9)
+
+
+def test_cad_frame_errors(tmp_path, examples_dir, capsys):
+    from chaindrive.cli import main
+
+    assert main(["simulate", "--example", "link", "-o", str(tmp_path / "a"), "--cad-frame", "0.1 s"]) == 2
+    assert "--cad-frame needs a project file" in capsys.readouterr().err
+    assert main(["simulate", str(examples_dir / "mining_conveyor.toml"), "-o", str(tmp_path / "b"), "-t", "0.2 s",
+                 "--cad-frame", "1 s"]) == 2
+    assert "--cad-frame must lie in [0, 0.2] s" in capsys.readouterr().err
+    assert main(["simulate", str(examples_dir / "mining_conveyor.toml"), "-o", str(tmp_path / "c"),
+                 "--cad-frame", "0.1"]) == 2  # a bare number is refused
+
+
+@pytest.mark.slow
+def test_simulate_cad_frame(tmp_path, examples_dir):
+    from chaindrive.cad.build import read_assembly
+    from chaindrive.cli import main
+
+    out = tmp_path / "run"
+    assert main(["simulate", str(examples_dir / "mining_conveyor.toml"), "-o", str(out), "-t", "0.1 s",
+                 "--no-plots", "--frames", "0", "--cad-frame", "0.05 s"]) == 0
+    back = read_assembly(out / "cad_frame.step")
+    assert back.solids == back.named_parts == 190 and back.valid
