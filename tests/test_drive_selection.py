@@ -12,6 +12,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from chaindrive import selection as S
+from chaindrive.drive.writer import candidate_project_text
 from chaindrive.errors import InfeasibleError, InputError, UnknownNameError, ValidityRangeWarning
 
 RPM = 2 * math.pi / 60
@@ -183,7 +184,7 @@ def test_candidate_project_loads_and_lays_out(tmp_path):
 
     row = S.select(7.5e3, 1450 * RPM, 3.0)[1]
     f = tmp_path / "drive.toml"
-    f.write_text(S.candidate_project(row), encoding="utf-8")
+    f.write_text(candidate_project_text(row), encoding="utf-8")
     drive = load_project(f)
     assert drive.chain.name == "10A-1" and drive.links == 116
     assert drive.speed == pytest.approx(1450 * RPM) and [w.teeth for w in drive.wheels] == [17, 51]
@@ -198,7 +199,7 @@ def test_cli_select_write_then_layout(tmp_path, capsys):
     from chaindrive.cli import main
 
     f = tmp_path / "drive.toml"
-    duty = ["select", "--power", "7.5 kW", "--speed", "1450 rpm", "--ratio", "3", "--load", "smooth"]
+    duty = ["select", "--power", "7.5 kW", "--speed", "1450 rpm", "--ratio", "3", "--load-character", "smooth"]
     assert main([*duty, "--write", str(f), "--choose", "2"]) == 0
     out = capsys.readouterr().out
     assert "service factor K_s = 1" in out and f"wrote {f}" in out and "margin" in out
@@ -226,7 +227,7 @@ def test_cli_select_write_then_layout(tmp_path, capsys):
 def test_cli_select_errors(args, match, capsys):
     from chaindrive.cli import main
 
-    assert main(["select", "--ratio", "3", "--load", "smooth", *args]) == 2
+    assert main(["select", "--ratio", "3", "--load-character", "smooth", *args]) == 2
     import re
 
     assert re.search(match, capsys.readouterr().err)

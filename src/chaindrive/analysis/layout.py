@@ -14,11 +14,11 @@ from .._results import Result, quantity
 from ..drive.model import Drive
 from ..errors import InfeasibleError, ValidityRangeWarning
 from ._memo import freeze, memo
-from ._wheels import wheel_teeth
+from ._wheels import MINIMUM_POWER_WRAP, clearance_error, wheel_checks, wheel_teeth, wrap_advice
 from .checks import Check
 from .parts import Part, PartContext, register_part
 
-__all__ = ["DriveLayout", "drive_layout", "span_inclination", "slack_span_sag"]
+__all__ = ["DriveLayout", "drive_layout", "span_inclination", "slack_span_sag", "wrap_check", "MINIMUM_WRAP"]
 
 #: Wear elongations for which the take-up is reported [-].
 TAKE_UP_ELONGATIONS = (0.01, 0.02, 0.03)
@@ -165,6 +165,7 @@ def _geometry(drive: Drive, phases: int) -> DriveLayout:
     chain = drive.chain
     sides = [w.side for w in wheels]
     positions = np.array([w.position for w in wheels], dtype=float)
+    clearance_error(drive, positions)
     links_required, polygon, loop, centre = _required_length(drive, positions, phases)
     needed = loop.links_max if loop is not None and loop.exact else links_required
     links = int(drive.links) if drive.links is not None else int(L.even_links(needed))
@@ -175,6 +176,7 @@ def _geometry(drive: Drive, phases: int) -> DriveLayout:
                                    sides, diameters=[w.diameter for w in wheels], bar_diameter=drive.bar_diameter,
                                    phases=phases)
         positions[idx] = adjustment.position
+        clearance_error(drive, positions)
         links_required, polygon, loop, centre = _required_length(drive, positions, phases)
         needed = loop.links_max if loop is not None and loop.exact else links_required
     wrap = L.wrap_layout(positions, radii, sides)
@@ -273,6 +275,18 @@ def slack_span_sag(drive: Drive, layout: DriveLayout, tension: float) -> float:
                                 tension, drive.mass_per_length))
 
 
+#: Smallest wrap on the driving wheel [rad] (ISO 10823:2004 guidance: 120°; the one value
+#: for every power sprocket, :data:`chaindrive.analysis._wheels.MINIMUM_POWER_WRAP`).
+MINIMUM_WRAP = MINIMUM_POWER_WRAP
+
+
+def wrap_check(drive: Drive, layout: DriveLayout) -> Check:
+    """Wrap on the driving wheel ``>= 120°`` (ISO 10823:2004 guidance)."""
+    wrap = float(layout.wrap.wrap_angle[drive.driving_index])
+    return Check(name="wrap on the driving wheel", value=wrap, limit=MINIMUM_WRAP, unit="rad",
+                 passed=bool(wrap >= MINIMUM_WRAP - 1e-12), source="ISO 10823:2004 guidance (at least 120°)")
+
+
 # --------------------------------------------------------------------------- declared parts
 def _layout_part(ctx: PartContext) -> DriveLayout:
     lay = drive_layout(ctx.drive)
@@ -282,9 +296,11 @@ def _layout_part(ctx: PartContext) -> DriveLayout:
 
 
 def _layout_checks(ctx: PartContext, lay: DriveLayout) -> list[Check]:
-    from .loads import wrap_check
-
-    return [wrap_check(ctx.drive, lay)]
+    driving = wrap_check(ctx.drive, lay)
+    if driving.passed is False:   # where to move the driving wheel, or an idler (computed, re-checked)
+        driving = dataclasses.replace(driving, note=wrap_advice(ctx.drive, np.asarray(lay.wrap.centres, float),
+                                                                ctx.drive.driving_index))
+    return [driving, *wheel_checks(ctx.drive, lay.wrap, lay.teeth_in_mesh)]
 
 
 register_part(Part("layout", "Layout: chain length, spans, wraps, take-up", _layout_part, checks=_layout_checks,

@@ -16,7 +16,7 @@ from __future__ import annotations
 import math
 import warnings
 from dataclasses import dataclass
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
@@ -37,7 +37,7 @@ if TYPE_CHECKING:
 PAN_GAP = 0.1
 
 __all__ = ["conveyor_pans", "SteadyState", "steady_state", "peak_tension_envelope", "span_kinds", "StartUp",
-           "start_up", "start_up_of", "with_drive_profile", "path_envelope", "compare"]
+           "start_up_of", "with_drive_profile", "path_envelope", "compare"]
 
 
 def span_kinds(model: SimulationModel, drive: Drive) -> list[str]:
@@ -140,6 +140,7 @@ class SteadyState(Result):
     tight_tension_std: float = quantity("N")
     return_sag_std: float = quantity("m", display="mm")
     start: float = quantity("s")
+    tensioner_force: float | None = quantity("N", default=None)
 
 
 def _link_nearest(pos: np.ndarray, point: np.ndarray) -> np.ndarray:
@@ -206,8 +207,37 @@ def steady_state(result: SimulationResult, model: SimulationModel, drive: Drive,
         # span itself (the carrying strand lies above)
         below = np.where(inside & (y < chord + 1e-3) & (chord - y < 0.5 * (hi - lo)), chord - y, 0.0)
         sag = np.max(below, axis=1)
+    force = None
+    if model.tensioner is not None:
+        force = _chain_on_tensioner(pos, ten, c, radii, model, step=1.5 * model.pitch)
     return SteadyState(float(np.mean(slack)), float(np.mean(tight)), float(np.mean(sag)),
-                       float(np.std(slack)), float(np.std(tight)), float(np.std(sag)), t0)
+                       float(np.std(slack)), float(np.std(tight)), float(np.std(sag)), t0, force)
+
+
+def _chain_on_tensioner(pos: np.ndarray, ten: np.ndarray, c: np.ndarray, radii: np.ndarray,
+                        model: SimulationModel, step: float) -> float:
+    """Time mean of the chain's force on the tensioner wheel against its travel [N]:
+    ``(T_in u_in − T_out u_out)·d`` with the tension and the direction of the simulated
+    links ``step`` before and after the wheel's tangent points (the chain's own end
+    tangents, not the chords)."""
+    from .run import _tangent
+
+    assert model.tensioner is not None
+    j = model.tensioner.wheel
+    nw = len(model.wheels)
+    d = np.asarray(model.tensioner.direction, float)
+    d = d / np.hypot(*d)
+    _, p_in, u_in, _ = _tangent(c[(j - 1) % nw], radii[(j - 1) % nw], c[j], radii[j])
+    p_out, _, u_out, _ = _tangent(c[j], radii[j], c[(j + 1) % nw], radii[(j + 1) % nw])
+    rows = np.arange(pos.shape[0])
+    total = np.zeros(pos.shape[0])
+    for point, chord, sign in ((p_in - step * u_in, u_in, 1.0), (p_out + step * u_out, u_out, -1.0)):
+        i = _link_nearest(pos, point)
+        link = pos[rows, (i + 1) % pos.shape[1]] - pos[rows, i]
+        link /= np.hypot(link[:, 0], link[:, 1])[:, None]
+        link *= np.sign(link @ chord)[:, None]       # in the direction of travel
+        total += sign * ten[rows, i] * (link @ d)
+    return float(np.mean(total))
 
 
 def peak_tension_envelope(result: SimulationResult) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
@@ -225,18 +255,22 @@ def peak_tension_envelope(result: SimulationResult) -> tuple[np.ndarray, np.ndar
 
 
 def compare(pull: ConveyorPull, state: SteadyState) -> dict[str, tuple[float, float, float]]:
-    """Analysis, simulation and their difference [%] of slack, tight tension and sag."""
+    """Analysis, simulation and their difference [%] of slack, tight tension, sag and the
+    tensioner force (where both have a tensioner)."""
     out = {}
-    for name, a, s in (("slack tension", pull.slack_tension, state.slack_tension),
-                       ("tight tension", pull.tight_tension, state.tight_tension),
-                       ("sag", pull.return_sag, state.return_sag)):
+    rows = [("slack tension", pull.slack_tension, state.slack_tension),
+            ("tight tension", pull.tight_tension, state.tight_tension),
+            ("sag", pull.return_sag, state.return_sag)]
+    if pull.tensioner_force is not None and state.tensioner_force is not None:
+        rows.append(("tensioner force", pull.tensioner_force, state.tensioner_force))
+    for name, a, s in rows:
         out[name] = (float(a), float(s), 100.0 * (s - a) / a if a else math.nan)
     return out
 
 
 @dataclass(frozen=True)
 class StartUp(Result):
-    """A conveyor's start-up (or stop) in the simulation (:func:`start_up`).
+    """A conveyor's start-up (or stop) in the simulation (:func:`chaindrive.simulation.startup.start_up`).
 
     Attributes
     ----------
@@ -307,7 +341,7 @@ def with_drive_profile(model: SimulationModel, *, motor: Motor | None = None, mo
                        stop_time: float = 0.0, stop_ramp: float = 0.0, ripple: float = 0.0,
                        ripple_frequency: float = 0.0, coupling: FluidCoupling | None = None,
                        secondary_inertia: float = 0.0) -> SimulationModel:
-    """``model`` with its driving wheel (wheel 0) given a time-varying drive (:func:`start_up`)."""
+    """``model`` with its driving wheel (wheel 0) given a time-varying drive (:func:`chaindrive.simulation.startup.start_up`)."""
     import dataclasses
 
     check_nonnegative("motor_inertia", motor_inertia, "kg m^2")
@@ -369,52 +403,14 @@ def start_up_of(result: SimulationResult, model: SimulationModel) -> StartUp:
                    float(peak[i_s]), float(pos[i_s]), float(result.time[i_t]), motor_speed)
 
 
-def start_up(drive: Drive, duration: float, *, motor: Motor | None = None, motor_inertia: float = 0.0,
-             ramp_time: float = 0.0, stop_time: float = 0.0, stop_ramp: float = 0.0, ripple: float = 0.0,
-             ripple_frequency: float = 0.0, samples: int = 1500, coupling: FluidCoupling | None = None,
-             secondary_inertia: float = 0.0) -> tuple[StartUp, SimulationResult, SimulationModel]:
-    r"""Start (and optionally stop) a conveyor from rest with a time-varying head drive.
+def __getattr__(name: str) -> Any:
+    """``start_up`` moved to :mod:`chaindrive.simulation.startup` (it builds the model from a
+    drive): a deprecated alias here, removed in the next release."""
+    if name == "start_up":
+        import importlib
 
-    With ``motor`` the head wheel is driven by it (Kloss curve, switched on at ``t = 0``,
-    off at ``stop_time``; ``motor_inertia`` [kg m²] is the motor's rotor and coupling
-    reduced to the head shaft, added to the wheel's); without, the head follows a
-    prescribed speed: a linear ramp over ``ramp_time`` [s], down to 0 over ``stop_ramp``
-    from ``stop_time``. ``ripple`` (relative amplitude) and ``ripple_frequency`` [rad/s]
-    modulate the motor torque (or the prescribed speed).
+        from .._deprecation import warn_renamed
 
-    With ``coupling`` (a :class:`chaindrive.coupling.FluidCoupling` reduced to the head)
-    the motor drives the head through it: the motor rotor and coupling primary, of
-    inertia ``motor_inertia`` (> 0), turn at their own speed ``ω_m``; the coupling's
-    secondary and the gearbox (``secondary_inertia`` [kg m²], reduced) turn with the head,
-
-    .. math::
-        J_m \dot ω_m = T_{Kloss}(ω_m) − T_c(ω_m, ω), \qquad
-        J \dot ω = T_c(ω_m, ω) + T_{chain}
-
-    with the coupling torque ``T_c`` of :func:`chaindrive.coupling.coupling_torque`
-    (implicit in the slip in each time step: the coupling is a stiff damper).
-
-    Parameters
-    ----------
-    drive : chaindrive.drive.Drive
-        A conveyor (with ``[conveyor]``), or any drive.
-    duration : float
-        Simulated time [s].
-    motor, motor_inertia, ramp_time, stop_time, stop_ramp, ripple, ripple_frequency, coupling, secondary_inertia
-        As above.
-    samples : int
-        Records kept.
-
-    Returns
-    -------
-    (StartUp, SimulationResult, SimulationModel)
-    """
-    from .from_drive import model_from_drive
-    from .run import simulate
-
-    model = with_drive_profile(model_from_drive(drive, ramp_time=ramp_time), motor=motor,
-                               motor_inertia=motor_inertia, stop_time=stop_time, stop_ramp=stop_ramp,
-                               ripple=ripple, ripple_frequency=ripple_frequency, coupling=coupling,
-                               secondary_inertia=secondary_inertia)
-    result = simulate(model, duration, samples=samples)
-    return start_up_of(result, model), result, model
+        warn_renamed(f"{__name__}.start_up", "chaindrive.simulation.startup.start_up")
+        return importlib.import_module("chaindrive.simulation.startup").start_up
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")

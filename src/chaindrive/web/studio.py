@@ -29,6 +29,7 @@ from .design import (
     DEFAULTS,
     FIELDS,
     design_from_state,
+    load_character_of,
     normalise_state,
     service_factor_table,
     state_from_project,
@@ -106,7 +107,7 @@ def studio_payload(state: dict[str, str]) -> dict[str, Any]:
     design, errors = design_from_state(state)
     out: dict[str, Any] = {"errors": errors, "query": state_query(state), "state": state}
     table = service_factor_table()
-    character = table["driven_machines"][state["driven"]][1]
+    character = load_character_of(state)
     out["service_factor_table"] = {"value": table["factors"][character][state["driver"]],
                                    "character": table["characters"][character],
                                    "driver": table["drivers"][state["driver"]],
@@ -170,6 +171,9 @@ def studio_payload(state: dict[str, str]) -> dict[str, Any]:
                 rows.append([name.replace("_", " "), *show(value, "-" if unit == "1" else unit, units)])
         out["fretting"] = {"caption": "Fretting and pin slip of the multi-strand chain (Vikulov)", "rows": rows}
     life = next((c for c in analysis.checks if "hours" in c["name"] and isinstance(c["value"], (int, float))), None)
+    over_life = None if analysis.analysis is None else analysis.analysis.results.get("life")
+    if over_life is not None:  # the shortest life of wear, jump-over and fatigue (docs/life.md)
+        life = {"value": over_life.life_hours}
     if life is not None and design.hours_per_day > 0:
         out["life_years"] = fmt(life["value"] / (design.hours_per_day * 365.0), 3)
     out["checks"] = checks
@@ -287,6 +291,8 @@ def router(ctx: Any) -> APIRouter:
         driven_options = [(k, v[0]) for k, v in table["driven_machines"].items()]
         return ctx.render(request, "studio.html", state=state, table=table, fields=FIELDS,
                           driven_options=driven_options, required_safety=REQUIRED_STATIC_SAFETY,
+                          load_characters=[("", "from the driven machine")] + [(c, table["characters"][c]) for c in
+                                                                               ("smooth", "moderate", "heavy")],
                           downloads=DOWNLOADS, open_error=request.query_params.get("open_error", "")[:500],
                           mining_query=_example_query("mining_conveyor.toml"),
                           query=state_query(state), extra_rows=extra_rows(state), extra_max=MAX_EXTRA_WHEELS,

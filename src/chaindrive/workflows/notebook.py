@@ -26,7 +26,8 @@ from typing import Any
 
 import numpy as np
 
-from .display import check_limit_text, check_value_text, convert, fmt
+from .._presenters import register_view
+from ..display import check_limit_text, check_value_text, convert, fmt
 
 __all__ = ["html_of", "drive_html", "analysis_html", "result_html", "drawing_svg", "tidy"]
 
@@ -222,6 +223,7 @@ def analysis_html(analysis: Any) -> str:
             + "".join(parts) + "</div>")
 
 
+@register_view("html", object)
 def html_of(subject: Any) -> str:
     """The notebook HTML of a drive, an analysis or a result object."""
     from ..analysis import DriveAnalysis
