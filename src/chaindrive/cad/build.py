@@ -335,7 +335,7 @@ class Clearance(Result):
     """
 
     minimum: float = quantity("m", display="mm")
-    interference_volume: float = quantity("m^3", display="mm^3")
+    interference_volume: float = quantity("m^3", display="cm^3")
     pairs: int = quantity("1")
     nearest: str = ""
 

@@ -157,7 +157,7 @@ def write_gltf(assembly: DriveAssembly, path: str | os.PathLike[str], *, force: 
 
 def _fmt(key: str, value: Any) -> str:
     """A part's number for the view: metres as mm, newtons as kN (the unit is in the key)."""
-    from ..workflows.display import convert
+    from ..display import convert
 
     if isinstance(value, float) and key.endswith("]"):
         name, unit = key[:-1].rsplit(" [", 1)
