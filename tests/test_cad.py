@@ -276,3 +276,22 @@ def test_simulate_cad_frame(tmp_path, examples_dir):
                  "--no-plots", "--frames", "0", "--cad-frame", "0.05 s"]) == 0
     back = read_assembly(out / "cad_frame.step")
     assert back.solids == back.named_parts == 190 and back.valid
+
+
+def test_duplex_drive_parts(roller_drive):
+    """A duplex chain: a roller, bushing and inner plate pair per strand, middle plates, and
+    sprockets with a two-plate rim (placements only; the solids are tested above)."""
+    from chaindrive.chains import get
+
+    drive = roller_drive(chain=get("16B-2"))
+    a = A.drive_assembly(drive, section=(0, 2))
+    names = [p.name for p in a.parts if p.group == "chain"]
+    assert sum("roller" in n for n in names) == 4 and sum("middle plate" in n for n in names) == 1
+    wheel = next(p for p in a.parts if p.group == "wheels")
+    spec = a.shapes[wheel.shape]
+    assert spec.data.rim.strands == 2
+    assert wheel.info["rim width [m]"] == pytest.approx(0.03188 + spec.data.width)
+    # every chain part of a strand lies inside the outer plates' width
+    z = np.array([p.matrix[2, 3] for p in a.parts if p.group == "chain"])
+    dims = roller_link_dimensions("16B-2")
+    assert np.abs(z).max() <= dims.width / 2

@@ -497,7 +497,7 @@ def sprocket_part(
     else:
         hub_limit, limit_name = 0.75 * dims.pitch_diameter, "0.75 d without plate_height"
     rim = None
-    if sprocket.strands != 1:
+    if sprocket.strands != 1 and transverse_pitch is not None:  # refused above without it
         pt = float(check_positive("transverse_pitch", transverse_pitch, "m"))
         if pt <= width:
             raise InputError(f"transverse_pitch must exceed the tooth width bf1 = {width / _MM:.3f} mm, got "
