@@ -20,7 +20,7 @@ from ..units import RAD_S_PER_RPM
 if TYPE_CHECKING:
     from ..analysis.checks import Check
 
-__all__ = ["DISPLAY", "CONVERSIONS", "convert", "display_of", "display", "fmt", "check_line_parts", "check_value_text", "check_limit_text"]
+__all__ = ["verdict_text", "DISPLAY", "CONVERSIONS", "convert", "display_of", "display", "fmt", "check_line_parts", "check_value_text", "check_limit_text"]
 
 #: SI unit -> (display unit, factor).
 DISPLAY: dict[str, tuple[str, float]] = {
@@ -134,3 +134,25 @@ def check_limit_text(check: Check) -> str:
         (a, u), (b, _) = display(lo, check.unit), display(hi, check.unit)
         return f"{fmt(a)} … {fmt(b)} {u if u != '-' else ''}".strip()
     return f"{check.relation} {check_line_parts(limit, check.unit)}"
+
+
+def verdict_text(failed: int, warnings: int) -> str:
+    """The overall verdict in words: never "all checks pass" beside a warning.
+
+    Parameters
+    ----------
+    failed : int
+        Checks that fail.
+    warnings : int
+        Warnings of the analysis.
+
+    Examples
+    --------
+    >>> verdict_text(0, 0), verdict_text(0, 3), verdict_text(2, 1)
+    ('passes', 'passes, 3 warnings', 'fails: 2 checks fail, 1 warning')
+    """
+    w = f"{warnings} warning{'s' if warnings != 1 else ''}"
+    if failed:
+        return f"fails: {failed} check{'s' if failed != 1 else ''} fail{'s' if failed == 1 else ''}" + (
+            f", {w}" if warnings else "")
+    return "passes" + (f", {w}" if warnings else "")

@@ -195,6 +195,14 @@ class Report:
             return bool(self.analysis.passed)
         return all(s.passed for s in self.sections)
 
+    @property
+    def verdict(self) -> str:
+        """The overall verdict in words (``"passes, 3 warnings"``): :func:`~.display.verdict_text`."""
+        from .display import verdict_text
+
+        failed = sum(1 for _, c in self.checks if c.passed is False)
+        return verdict_text(failed, len(self.warnings))
+
     def to_dict(self) -> dict[str, Any]:
         return {
             "title": self.title,
