@@ -271,7 +271,7 @@ def vibration_checks(vib: DriveVibration) -> tuple[Check, ...]:
                              f"→ largest span amplitude {worst.response * 1e3:.3g} mm", relation="<="))
         rows = vib.tensioner.check.rows()
         band = min(rows, key=lambda r: r["margin"])
-        out.append(Check("tensioner paper's band 0.7 ≤ P/ω ≤ 1.4, worst pair margin (information)", band["margin"],
+        out.append(Check("band 0.7 ≤ P/ω ≤ 1.4 of the tensioner paper, worst pair margin (information)", band["margin"],
                          None, "-", None,
                          "tensioner paper, band 0.7 ≤ P/ω ≤ 1.4 for its three excitations; "
                          "margin = max(r/1.4 − 1, 1 − r/0.7); the verdict is the forced response above",

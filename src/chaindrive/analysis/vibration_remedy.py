@@ -130,24 +130,16 @@ def _moved(drive: Drive, shift: float, force_factor: float) -> Drive:
     return dataclasses.replace(drive, wheels=tuple(wheels), tensioner=dataclasses.replace(t, force=force))
 
 
-def _span(drive: Drive, layout_cache: dict[tuple[float, float], Any], key: tuple[float, float]
-          ) -> TensionerSpan | None:
-    """The slack span of a moved drive (its layout cached by key; None where the tensioner
-    paper's coupling does not apply or the layout fails)."""
-    from .layout import drive_layout
-    from .loads import drive_loads
-    from .vibration import COUPLING_LIMIT_ANGLE, tensioner_span
+def _span(drive: Drive) -> TensionerSpan | None:
+    """The slack span of a moved drive, as the analysis computes it (its layout, the conveyor's
+    pull, its loads); None where the tensioner paper's coupling does not apply or the layout fails."""
+    from . import analyze_drive
 
     try:
-        if key not in layout_cache:
-            layout_cache[key] = drive_layout(drive)
-        layout = layout_cache[key]
-        span = tensioner_span(drive, layout, drive_loads(drive, layout))
+        vib = analyze_drive(drive, include=["vibration"])["vibration"]
     except ChainDriveError:
         return None
-    if span is None or max(span.angle_1, span.angle_2) > COUPLING_LIMIT_ANGLE:
-        return None
-    return span
+    return None if vib is None or vib.tensioner is None else vib.span
 
 
 def _amplifications(span: TensionerSpan, excitations: list[tuple[float, float]], omega: float,
@@ -239,12 +231,11 @@ def search_remedy(drive: Drive, vib: DriveVibration) -> Remedy | None:
     omega = float(drive.speed)
     excitations = [(s.frequency, s.end_amplitude) for s in vib.severity if s.end_amplitude > 0]
     target = AMPLIFICATION_LIMIT * (1.0 - REQUIRED_MARGIN)
-    layouts: dict[tuple[float, float], Any] = {}
     candidates = []
     for force in ff:
         for shift in fs:
             key = (float(force), float(shift))
-            sp = _span(_moved(drive, float(shift), float(force)), layouts, key)
+            sp = _span(_moved(drive, float(shift), float(force)))
             if sp is None:
                 continue
             amp = _amplifications(sp, excitations, omega, mm, cc)

@@ -201,7 +201,8 @@ class Report:
         from .display import verdict_text
 
         failed = sum(1 for _, c in self.checks if c.passed is False)
-        return verdict_text(failed, len(self.warnings))
+        warnings = dict.fromkeys([*self.warnings, *(w for s in self.sections for w in s.warnings)])
+        return verdict_text(failed, len(warnings))
 
     def to_dict(self) -> dict[str, Any]:
         return {
