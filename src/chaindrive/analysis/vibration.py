@@ -66,7 +66,7 @@ class FreeSpans(Result):
     names: tuple[str, ...]
     lengths: dict[str, float] = quantity("m")
     running_tensions: dict[str, float] = quantity("N")
-    frequencies: np.ndarray = quantity("rad/s", display="rad/s")
+    frequencies: np.ndarray = quantity("rad/s", display="Hz")
     check: ResonanceCheck
 
     @property
@@ -87,7 +87,7 @@ class DriveVibration(Result):
     check fails is the part ``remedy`` (:mod:`chaindrive.analysis.vibration_remedy`).
     """
 
-    excitations: dict[str, float] = quantity("rad/s", display="rad/s")
+    excitations: dict[str, float] = quantity("rad/s", display="Hz")
     span: TensionerSpan | None
     tensioner: SpanVibration | None
     proposal: SafeTensioner | None

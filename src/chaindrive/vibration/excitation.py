@@ -316,7 +316,7 @@ class ExcitationResponse(Result):
     """
 
     name: str
-    frequency: float = quantity("rad/s", display="rad/s")
+    frequency: float = quantity("rad/s", display="Hz")
     end_amplitude: float = quantity("m", display="mm")
     response: float = quantity("m", display="mm")
     tensioner_amplitude: float = quantity("m", display="mm")

@@ -62,8 +62,14 @@ def state_query(state: dict[str, str]) -> str:
 def _checks_for_page(checks: list[dict], units: str) -> list[dict]:
     """Value, limit and margin texts of the checks in the page's units (names from the checks)."""
     out = []
+    from ..workflows.display import convert
+
     for c in checks:
-        value, unit = show(c["value"], c["unit"], units)
+        if c.get("display") and isinstance(c["value"], (int, float)):  # a declared display unit ("%")
+            shown = convert(float(c["value"]), c["unit"], c["display"])
+            value, unit = fmt(shown[0]), shown[1]
+        else:
+            value, unit = show(c["value"], c["unit"], units)
         limit, relation = c["limit"], c.get("relation", ">=")
         if relation == "info" or limit is None:
             limit_text = "" if limit is None or relation == "info" else str(limit)

@@ -50,7 +50,7 @@ def run_demo(output: Path, *, analysis: bool = True, shown: Path | None = None) 
         for entry, s in summary[model].items():
             print(
                 f"  {model:5s} {entry:10s} v = {s['v_min']:.4f}..{s['v_max']:.4f} m/s, "
-                f"non-uniformity {s['nonuniformity']:.4f}, a = {s['a_min']:+.3f}..{s['a_max']:+.3f} m/s²"
+                f"non-uniformity {100 * s['nonuniformity']:.3g} %, a = {s['a_min']:+.3f}..{s['a_max']:+.3f} m/s²"
             )
     if analysis:
         _maybe_analysis(output, files, shown)
