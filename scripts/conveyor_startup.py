@@ -37,8 +37,8 @@ def main() -> None:
     from chaindrive.drive.project import load_project
     from chaindrive.motor import Motor
     from chaindrive.plotting.conveyor import conveyor_plot, startup_plot
-    from chaindrive.simulation.conveyor import start_up
     from chaindrive.simulation.profiles import link_chain_axial_stiffness
+    from chaindrive.simulation.startup import start_up
 
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--inertia-factor", type=float, default=1.0)

@@ -1,14 +1,18 @@
-"""The package's layers, read from its source (AST, module-level imports):
+"""The package's layers, read from its source (AST): every import between the package's
+own modules, those written inside functions included (a lazy import is still a
+dependency); only imports under ``if TYPE_CHECKING:`` (annotations) are not counted.
 
 * no import circle between modules;
-* no upward import: the formula modules do not import the drive description, the
-  analysis or the presenters; ``chaindrive.drive`` does not import the analysis or the
-  presenters; ``chaindrive.analysis`` does not import the presenters;
+* no upward import: each module belongs to a layer (the longest matching prefix of
+  :data:`LAYERS`, every module of the package has one) and imports only from its own
+  layer or below;
 * no source module over 800 lines (the numba kernel aside);
 * rpm <-> rad/s is converted only in :mod:`chaindrive.units`.
 
-Imports inside functions (the lazy ``.plot()`` dispatch, optional extras) and under
-``if TYPE_CHECKING:`` are not module-level and not counted.
+A deprecated alias that forwards a moved name (``chaindrive._deprecation``,
+``importlib.import_module`` by name) and the presenter registry (``chaindrive._presenters``:
+results ask for their views by kind) are no imports: the lower module names no module
+above it in code.
 """
 
 from __future__ import annotations
@@ -23,19 +27,33 @@ SRC = Path(__file__).resolve().parents[1] / "src"
 PACKAGE = SRC / "chaindrive"
 
 #: The layers, lowest first; a module belongs to the layer of its longest matching prefix.
-FORMULAS = ("chaindrive.kinematics", "chaindrive.vibration", "chaindrive.strength", "chaindrive.geometry",
-            "chaindrive.layout", "chaindrive.loads", "chaindrive.selection", "chaindrive.wear", "chaindrive.chains",
-            "chaindrive.self_regulating", "chaindrive.rating", "chaindrive.units", "chaindrive.limits")
-DESCRIPTION = ("chaindrive.drive",)
-ANALYSIS = ("chaindrive.analysis",)
-PRESENTERS = ("chaindrive.workflows", "chaindrive.cli", "chaindrive.web", "chaindrive.study", "chaindrive.plotting")
+LAYERS: tuple[tuple[str, tuple[str, ...]], ...] = (
+    ("foundation", ("chaindrive.errors", "chaindrive._typing", "chaindrive._deprecation", "chaindrive._roots",
+                    "chaindrive._registry", "chaindrive._presenters", "chaindrive._examples", "chaindrive.units",
+                    "chaindrive.limits", "chaindrive._validation", "chaindrive._finite", "chaindrive._results",
+                    "chaindrive._io", "chaindrive._folders", "chaindrive.display")),
+    ("formulas", ("chaindrive.kinematics", "chaindrive.vibration", "chaindrive.strength", "chaindrive.geometry",
+                  "chaindrive.layout", "chaindrive.loads", "chaindrive.selection", "chaindrive.wear",
+                  "chaindrive.chains", "chaindrive.self_regulating", "chaindrive.rating", "chaindrive.motor",
+                  "chaindrive.coupling", "chaindrive.conveyor", "chaindrive.life")),
+    ("description", ("chaindrive.drive",)),
+    ("analysis", ("chaindrive.analysis",)),
+    ("simulation", ("chaindrive.simulation",)),
+    ("design", ("chaindrive.design",)),
+    ("plots", ("chaindrive.plotting", "chaindrive.cad")),
+    ("workflows", ("chaindrive.workflows",)),
+    ("studies", ("chaindrive.study",)),
+    ("web", ("chaindrive.web",)),
+    ("command line", ("chaindrive.cli",)),
+    ("package face", ("chaindrive",)),
+)
 
-#: What a layer must not import at module level.
-FORBIDDEN = {
-    FORMULAS: DESCRIPTION + ANALYSIS + PRESENTERS,
-    DESCRIPTION: ANALYSIS + PRESENTERS,
-    ANALYSIS: ("chaindrive.workflows", "chaindrive.cli", "chaindrive.web", "chaindrive.study"),
-}
+#: Circles still to be taken apart (a ratchet: a new circle fails, and so does an entry
+#: here that no longer exists; the list only shrinks).
+KNOWN_CIRCLES: list[list[str]] = [
+    ["chaindrive.study.batch", "chaindrive.study.run", "chaindrive.study.summary"],
+    ["chaindrive.web.expert", "chaindrive.web.jobs", "chaindrive.web.studio", "chaindrive.web.tasks"],
+]
 
 MAX_LINES = 800
 #: Modules allowed over MAX_LINES: the numba kernel (one jitted unit) only.
@@ -61,24 +79,21 @@ def _is_type_checking(node: ast.If) -> bool:
         isinstance(test, ast.Attribute) and test.attr == "TYPE_CHECKING")
 
 
-def _top_level_imports(tree: ast.Module) -> list[ast.Import | ast.ImportFrom]:
+def _imports(tree: ast.Module) -> list[ast.Import | ast.ImportFrom]:
+    """Every import statement, at any depth, but those under ``if TYPE_CHECKING:``."""
     out: list[ast.Import | ast.ImportFrom] = []
 
-    def visit(body: list[ast.stmt]) -> None:
-        for node in body:
-            if isinstance(node, (ast.Import, ast.ImportFrom)):
-                out.append(node)
-            elif isinstance(node, ast.If) and not _is_type_checking(node):
-                visit(node.body)
-                visit(node.orelse)
-            elif isinstance(node, ast.Try):
-                visit(node.body)
-                for h in node.handlers:
-                    visit(h.body)
-                visit(node.orelse)
-                visit(node.finalbody)
+    def visit(node: ast.AST) -> None:
+        for child in ast.iter_child_nodes(node):
+            if isinstance(child, (ast.Import, ast.ImportFrom)):
+                out.append(child)
+            elif isinstance(child, ast.If) and _is_type_checking(child):
+                for other in child.orelse:
+                    visit(other)
+            else:
+                visit(child)
 
-    visit(tree.body)
+    visit(tree)
     return out
 
 
@@ -92,10 +107,10 @@ def _resolve(module: str, node: ast.ImportFrom) -> str:
 
 
 def _edges(module: str) -> set[str]:
-    """The chaindrive modules ``module`` imports at module level."""
+    """The chaindrive modules ``module`` imports, anywhere in its code."""
     tree = ast.parse(MODULES[module].read_text(encoding="utf-8"))
     out: set[str] = set()
-    for node in _top_level_imports(tree):
+    for node in _imports(tree):
         if isinstance(node, ast.Import):
             targets = [a.name for a in node.names]
         else:
@@ -113,12 +128,12 @@ def _edges(module: str) -> set[str]:
 GRAPH = {m: _edges(m) for m in MODULES}
 
 
-def _layer(module: str) -> tuple[str, ...] | None:
-    best: tuple[tuple[str, ...], int] | None = None
-    for layer in FORBIDDEN:
-        for prefix in layer:
+def _layer(module: str) -> int | None:
+    best: tuple[int, int] | None = None
+    for level, (_, prefixes) in enumerate(LAYERS):
+        for prefix in prefixes:
             if (module == prefix or module.startswith(prefix + ".")) and (best is None or len(prefix) > best[1]):
-                best = (layer, len(prefix))
+                best = (level, len(prefix))
     return None if best is None else best[0]
 
 
@@ -163,18 +178,31 @@ def test_no_import_circle() -> None:
     for v in GRAPH:
         if v not in index:
             strong(v)
-    assert not circles, f"import circles: {circles}"
+    new = [c for c in circles if c not in KNOWN_CIRCLES]
+    assert not new, f"import circles: {new}"
+    gone = [c for c in KNOWN_CIRCLES if c not in circles]
+    assert not gone, f"no longer circles, remove from KNOWN_CIRCLES: {gone}"
+
+
+def test_every_module_has_a_layer() -> None:
+    assert not [m for m in MODULES if _layer(m) is None]
+
+
+def test_imports_inside_functions_are_counted() -> None:
+    """A lazy import is an edge: chaindrive.analysis.conveyor imports the conveyor formulas
+    (module level) and the sag solver inside a function."""
+    tree = ast.parse("def f():\n    from .x import y\nif TYPE_CHECKING:\n    from .z import w\n")
+    assert [n.module for n in _imports(tree)] == ["x"]
 
 
 def test_no_upward_import() -> None:
     bad = []
     for module, targets in GRAPH.items():
-        layer = _layer(module)
-        if layer is None:
-            continue
+        here = _layer(module)
         for t in targets:
-            if any(t == f or t.startswith(f + ".") for f in FORBIDDEN[layer]):
-                bad.append(f"{module} -> {t}")
+            there = _layer(t)
+            if here is not None and there is not None and there > here:
+                bad.append(f"{module} ({LAYERS[here][0]}) -> {t} ({LAYERS[there][0]})")
     assert not bad, "upward imports:\n" + "\n".join(sorted(bad))
 
 

@@ -202,7 +202,7 @@ def test_conveyor_start_up_through_a_coupling_runs_at_the_couplings_slip():
     # start_up(..., coupling=...) on an 8 m conveyor: at the end the coupling carries the
     # head's pull (T = F R) with the motor ahead of the head by the coupling's slip
     from chaindrive.analysis.conveyor import conveyor_pull
-    from chaindrive.simulation.conveyor import start_up
+    from chaindrive.simulation.startup import start_up
     from test_simulation_conveyor import _short
 
     d = _short(length=8.0)

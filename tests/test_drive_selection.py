@@ -12,6 +12,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from chaindrive import selection as S
+from chaindrive.drive.writer import candidate_project_text
 from chaindrive.errors import InfeasibleError, InputError, UnknownNameError, ValidityRangeWarning
 
 RPM = 2 * math.pi / 60
@@ -183,7 +184,7 @@ def test_candidate_project_loads_and_lays_out(tmp_path):
 
     row = S.select(7.5e3, 1450 * RPM, 3.0)[1]
     f = tmp_path / "drive.toml"
-    f.write_text(S.candidate_project(row), encoding="utf-8")
+    f.write_text(candidate_project_text(row), encoding="utf-8")
     drive = load_project(f)
     assert drive.chain.name == "10A-1" and drive.links == 116
     assert drive.speed == pytest.approx(1450 * RPM) and [w.teeth for w in drive.wheels] == [17, 51]

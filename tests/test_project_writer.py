@@ -71,7 +71,8 @@ def test_custom_chain_and_comments() -> None:
 
 
 def test_candidate_drive_is_the_selected_row() -> None:
-    from chaindrive.selection import candidate_project, select
+    from chaindrive.drive.writer import candidate_project_text as candidate_project
+    from chaindrive.selection import select
 
     row = select(7.5e3, 1450 * np.pi / 30, 3.0)[0]
     d = candidate_drive(row)

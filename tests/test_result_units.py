@@ -93,8 +93,8 @@ def test_every_numeric_field_has_a_unit(cls: type) -> None:
 
 
 def test_units_are_known_to_the_display_table() -> None:
-    """Every declared SI unit is one :mod:`chaindrive.workflows.display` can show."""
-    from chaindrive.workflows.display import convert
+    """Every declared SI unit is one :mod:`chaindrive.display` can show."""
+    from chaindrive.display import convert
 
     for cls in CLASSES:
         for name, unit in cls.field_units().items():

@@ -16,8 +16,9 @@ from chaindrive.drive.model import Conveyor, Drive, Load, Tensioner, Wheel
 from chaindrive.errors import InputError
 from chaindrive.motor import Motor
 from chaindrive.simulation import SimWheel, simulate
-from chaindrive.simulation.conveyor import compare, start_up, steady_state
+from chaindrive.simulation.conveyor import compare, steady_state
 from chaindrive.simulation.from_drive import model_from_drive
+from chaindrive.simulation.startup import start_up
 
 
 def _short(return_strand="supported", length=10.0, material=60.0, share=1.0):

@@ -8,6 +8,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from chaindrive.errors import InputError, ValidityRangeWarning
+from chaindrive.kinematics.speed import chain_speed_to_angular_velocity, parse_wheel_speed
 from chaindrive.limits import (
     MAX_POINTS,
     check_duration,
@@ -16,9 +17,7 @@ from chaindrive.limits import (
 )
 from chaindrive.units import (
     MAX_TEXT_LENGTH,
-    chain_speed_to_angular_velocity,
     parse_quantity,
-    parse_wheel_speed,
     to_si,
 )
 
@@ -317,3 +316,14 @@ def test_spellings_keep_pint_units_and_cli_accepts_rpm_in_capitals():
     assert parse_quantity("5 MW", "W") == 5e6 and parse_quantity("5 mW", "W") == pytest.approx(5e-3)
     assert parse_quantity("500 nm", "m") == pytest.approx(5e-7)      # a nanometre stays one
     assert main(["kinematics", "--chain", "18x64", "--teeth", "8", "--speed", "48 RPM", "--points", "7"]) == 0
+
+
+def test_moved_speed_functions_warn_from_units():
+    """The former home chaindrive.units keeps the two wheel-speed functions as deprecated aliases."""
+    import chaindrive.units as units
+
+    with pytest.warns(FutureWarning, match="chaindrive.kinematics.speed.parse_wheel_speed"):
+        f = units.parse_wheel_speed
+    assert f is parse_wheel_speed
+    with pytest.raises(AttributeError, match="no attribute 'nothing'"):
+        units.nothing  # noqa: B018

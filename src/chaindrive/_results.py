@@ -106,9 +106,9 @@ class Result:
     def _repr_html_(self) -> str:
         """Notebook display: a table of the fields with their units (the presenter
         :func:`chaindrive.workflows.notebook.html_of` formats it)."""
-        from .workflows.notebook import html_of
+        from ._presenters import view
 
-        return html_of(self)
+        return view("html", self)
 
     @classmethod
     def _field(cls, name: str) -> dataclasses.Field[Any]:

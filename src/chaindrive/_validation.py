@@ -13,6 +13,7 @@ import numpy as np
 from numpy.typing import ArrayLike
 
 from .errors import InputError, ValidityRangeWarning
+from .limits import MAX_TEETH
 
 __all__ = [
     "as_float_array",
@@ -107,8 +108,6 @@ def check_range(
 
 def check_teeth(name: str, value: ArrayLike, minimum: int = 3) -> np.ndarray:
     """Require an integer tooth count ``>= minimum`` and ``<= chaindrive.limits.MAX_TEETH``."""
-    from .limits import MAX_TEETH
-
     x = _scalar(value)
     if x is not None and minimum <= x <= MAX_TEETH and x == int(x):  # the range first: NaN, inf fail it
         return np.asarray(int(x))

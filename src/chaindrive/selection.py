@@ -12,7 +12,7 @@ from __future__ import annotations
 import math
 import warnings
 from dataclasses import dataclass
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
 from ._finite import finite_guard
 from ._results import Result, quantity
@@ -61,7 +61,6 @@ __all__ = [
     "chain_rating",
     "Candidate",
     "select",
-    "candidate_project",
 ]
 
 
@@ -357,32 +356,15 @@ def _toml_string(text: str) -> str:
     return '"' + text.replace("\\", "\\\\").replace('"', '\\"') + '"'
 
 
-def candidate_project(candidate: Candidate, *, name: str | None = None) -> str:
-    """A complete project file (TOML) for a row of :func:`select`.
+def __getattr__(name: str) -> Any:
+    """``candidate_project``, moved to :func:`chaindrive.drive.writer.candidate_project_text` (the
+    writer of project files belongs to the drive description, above this formula module):
+    a deprecated alias, removed in the next release."""
+    if name == "candidate_project":
+        import importlib
 
-    Two sprockets on a horizontal line at the row's centre distance, the chain, the
-    speed, the power and service factor, and the chain length in links; loadable with
-    :func:`chaindrive.drive.project.load_project` and ``chaindrive layout``.
+        from ._deprecation import alias
 
-    Parameters
-    ----------
-    candidate : Candidate
-        The chosen row.
-    name : str, optional
-        Drive name (default: the chain and the teeth).
-
-    Returns
-    -------
-    str
-        TOML text with units on every quantity.
-
-    Examples
-    --------
-    >>> row = select(7.5e3, 1450 * math.pi / 30, 3.0)[0]
-    >>> text = candidate_project(row)
-    >>> 'name = "10B-1"' in text and "links = 116" in text
-    True
-    """
-    from .drive.writer import candidate_project_text
-
-    return candidate_project_text(candidate, name=name)
+        function = importlib.import_module("chaindrive.drive.writer").candidate_project_text
+        return alias(function, "chaindrive.selection.candidate_project")
+    raise AttributeError(f"module 'chaindrive.selection' has no attribute {name!r}")

@@ -18,7 +18,7 @@ from ._wheels import wheel_teeth
 from .checks import Check
 from .parts import Part, PartContext, register_part
 
-__all__ = ["DriveLayout", "drive_layout", "span_inclination", "slack_span_sag"]
+__all__ = ["DriveLayout", "drive_layout", "span_inclination", "slack_span_sag", "wrap_check", "MINIMUM_WRAP"]
 
 #: Wear elongations for which the take-up is reported [-].
 TAKE_UP_ELONGATIONS = (0.01, 0.02, 0.03)
@@ -273,6 +273,17 @@ def slack_span_sag(drive: Drive, layout: DriveLayout, tension: float) -> float:
                                 tension, drive.mass_per_length))
 
 
+#: Smallest wrap on the driving wheel [rad] (ISO 10823:2004 guidance: 120°).
+MINIMUM_WRAP = math.radians(120.0)
+
+
+def wrap_check(drive: Drive, layout: DriveLayout) -> Check:
+    """Wrap on the driving wheel ``>= 120°`` (ISO 10823:2004 guidance)."""
+    wrap = float(layout.wrap.wrap_angle[drive.driving_index])
+    return Check(name="wrap on the driving wheel", value=wrap, limit=MINIMUM_WRAP, unit="rad",
+                 passed=bool(wrap >= MINIMUM_WRAP - 1e-12), source="ISO 10823:2004 guidance (at least 120°)")
+
+
 # --------------------------------------------------------------------------- declared parts
 def _layout_part(ctx: PartContext) -> DriveLayout:
     lay = drive_layout(ctx.drive)
@@ -282,8 +293,6 @@ def _layout_part(ctx: PartContext) -> DriveLayout:
 
 
 def _layout_checks(ctx: PartContext, lay: DriveLayout) -> list[Check]:
-    from .loads import wrap_check
-
     return [wrap_check(ctx.drive, lay)]
 
 

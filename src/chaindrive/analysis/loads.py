@@ -17,7 +17,14 @@ from ..errors import ChainDriveError, InputError
 from ._memo import memo
 from ._wheels import wheel_teeth
 from .checks import Check
-from .layout import DriveLayout, drive_layout, slack_span_sag, span_inclination
+from .layout import (
+    MINIMUM_WRAP,
+    DriveLayout,
+    drive_layout,
+    slack_span_sag,
+    span_inclination,
+    wrap_check,
+)
 from .parts import Part, PartContext, register_part
 
 if TYPE_CHECKING:
@@ -26,8 +33,6 @@ if TYPE_CHECKING:
 __all__ = ["DriveLoads", "drive_loads", "polygonal_spring_mass", "span_tensions", "free_entry_acceleration", "static_safety_check", "wrap_check",
            "MINIMUM_WRAP", "REQUIRED_STATIC_SAFETY", "required_static_safety"]
 
-#: Smallest wrap on the driving wheel [rad] (ISO 10823:2004 guidance: 120°).
-MINIMUM_WRAP = math.radians(120.0)
 #: The one table of required static safeties (:data:`chaindrive.loads.REQUIRED_STATIC_SAFETY`).
 REQUIRED_STATIC_SAFETY = F.REQUIRED_STATIC_SAFETY
 
@@ -401,13 +406,6 @@ def static_safety_check(drive: Drive, loads: DriveLoads) -> Check:
         source="catalogue breaking force (ISO 606:2015 table 1 / ASME B29.1 / DIN 22252); "
                "F_max = K_s T/R + S_slack + q v² + F_d (polygonal action, docs/design.md)",
         note="" if fb is not None else "breaking force unknown")
-
-
-def wrap_check(drive: Drive, layout: DriveLayout) -> Check:
-    """Wrap on the driving wheel ``>= 120°`` (ISO 10823:2004 guidance)."""
-    wrap = float(layout.wrap.wrap_angle[drive.driving_index])
-    return Check(name="wrap on the driving wheel", value=wrap, limit=MINIMUM_WRAP, unit="rad",
-                 passed=bool(wrap >= MINIMUM_WRAP - 1e-12), source="ISO 10823:2004 guidance (at least 120°)")
 
 
 # --------------------------------------------------------------------------- declared parts

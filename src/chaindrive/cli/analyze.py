@@ -45,7 +45,7 @@ def _run_claimed(project: Path, output: Path, pdf: bool, figures: bool, quiet: b
             outcome = analyze(drive, partial, subtitle=f"Project file: {project}", pdf=pdf, figures=figures,
                               progress=progress, parallel_figures=True, source=source)
         outcome.files = {k: output / Path(v).relative_to(partial) for k, v in outcome.files.items()}
-    from ..workflows.display import check_limit_text, check_value_text, verdict_text
+    from ..display import check_limit_text, check_value_text, verdict_text
 
     out = Console(quiet=quiet, highlight=False)
     for title, c in outcome.report.checks:

@@ -17,8 +17,9 @@ from typing import Any, overload
 import typer
 
 from .._results import jsonable
+from ..kinematics.speed import parse_wheel_speed
 from ..limits import warn_implausible
-from ..units import parse_quantity, parse_wheel_speed
+from ..units import parse_quantity
 
 app = typer.Typer(
     name="chaindrive",

@@ -67,8 +67,8 @@ def layout_command(
     from rich.markup import escape
 
     from ..analysis import analyze_drive
+    from ..display import check_limit_text, check_value_text
     from ..drive.project import load_project
-    from ..workflows.display import check_limit_text, check_value_text
 
     drive = load_project(file)
     analysis = analyze_drive(drive, include=["layout", "loads", "rating"])
@@ -221,7 +221,7 @@ def select_command(
     from rich.markup import escape
     from rich.table import Table
 
-    from ..workflows.display import check_limit_text, check_value_text
+    from ..display import check_limit_text, check_value_text
 
     con = _console()
     rec = result.recommended

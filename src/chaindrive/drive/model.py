@@ -29,6 +29,7 @@ import numpy as np
 
 from .. import layout as L
 from .. import loads as F
+from .._presenters import view
 from ..errors import InputError
 from ..loads import mean_chain_speed, sides_per_turn
 from ._fields import _direction, _finite
@@ -609,9 +610,7 @@ class Drive:
     def _repr_html_(self) -> str:
         """Notebook display: the drive's data with units and its drawing to scale
         (formatted by :func:`chaindrive.workflows.notebook.html_of`)."""
-        from ..workflows.notebook import html_of
-
-        return html_of(self)
+        return view("html", self)
 
     def is_two_wheel(self) -> bool:
         """Two toothed wheels and nothing else (the two-wheel hull model and its centre distance for the

@@ -34,9 +34,10 @@ from pydantic import (
 )
 
 from ..errors import ChainDriveError, InputError, UnknownNameError
+from ..kinematics.speed import chain_speed_to_angular_velocity
 from ..limits import MAX_LINKS, MAX_TEETH, warn_implausible
 from ..loads import mean_chain_speed
-from ..units import chain_speed_to_angular_velocity, is_dimensional, parse_quantity, unit_example
+from ..units import is_dimensional, parse_quantity, unit_example
 from . import model as _model
 from .model import Adjustable, Drive, Guide, Load, Tensioner, Wheel
 from .templates import TEMPLATES, template  # the templates of `chaindrive new`
@@ -606,7 +607,7 @@ def project_from_mapping(data: dict[str, Any], filename: str = "<project>", *,
 
 def _speed_of(speed: float | ChainSpeedSpec, chain, wheels, filename: str, index: dict) -> float:
     """The driving wheel's angular speed [rad/s]; a chain speed v goes through
-    :func:`chaindrive.units.chain_speed_to_angular_velocity` (v = n p omega / 2 pi)."""
+    :func:`chaindrive.kinematics.speed.chain_speed_to_angular_velocity` (v = n p omega / 2 pi)."""
     driving = [w for w in wheels if w.driving]
     if not isinstance(speed, ChainSpeedSpec):
         if len(driving) == 1 and driving[0].teeth is not None and not warn_implausible(

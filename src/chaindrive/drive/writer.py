@@ -2,7 +2,7 @@
 TOML text that :func:`chaindrive.drive.project.parse_project` reads back to an equal Drive.
 
 ``chaindrive new`` (:func:`chaindrive.drive.project.template`), ``chaindrive select --write``
-(:func:`chaindrive.selection.candidate_project`) write through it. Every quantity is written in
+(:func:`candidate_project_text`) write through it. Every quantity is written in
 its SI unit with the shortest text that reads back to the same float (``repr``), so the
 round trip is exact; a comment may follow any key (``comments={"drive.speed": "driving
 wheel"}``) and a header may open the file.

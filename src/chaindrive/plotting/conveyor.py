@@ -43,7 +43,7 @@ def conveyor_plot(result: ConveyorPull, *, ax: Axes | None = None) -> Figure:
     """
     import matplotlib.pyplot as plt
 
-    from ..workflows.display import DISPLAY
+    from ..display import DISPLAY
 
     unit, k = DISPLAY["N"]
 
@@ -85,7 +85,7 @@ def startup_plot(result: StartUp, *, ax: tuple[Axes, Axes] | None = None) -> Fig
     """
     import matplotlib.pyplot as plt
 
-    from ..workflows.display import DISPLAY
+    from ..display import DISPLAY
 
     unit, k = DISPLAY["N"]
 

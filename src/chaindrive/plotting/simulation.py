@@ -8,6 +8,8 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
+from .._presenters import register_view
+from ..simulation.run import SimulationResult
 from ._axes import figure_of
 
 if TYPE_CHECKING:
@@ -16,11 +18,11 @@ if TYPE_CHECKING:
     from matplotlib.collections import PathCollection
     from matplotlib.figure import Figure
 
-    from ..simulation.run import SimulationResult
 
 __all__ = ["simulation_plot", "drive_frame_plot", "simulation_animation"]
 
 
+@register_view("plot", SimulationResult)
 def simulation_plot(result: SimulationResult, *, ax: Sequence[Axes] | None = None) -> Figure:
     """Standard views: chain speed, tight/slack tension, wheel speeds, contact forces.
 

@@ -6,14 +6,15 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
+from .._presenters import register_view
 from ..units import angular_velocity_to_rpm, rpm_to_angular_velocity
+from ..vibration.tensioner_design import CampbellResult, ResonanceMapResult
 from ._axes import figure_of
 
 if TYPE_CHECKING:
     from matplotlib.axes import Axes
     from matplotlib.figure import Figure
 
-    from ..vibration.tensioner_design import CampbellResult, ResonanceMapResult
 
 __all__ = ["campbell_plot", "resonance_map_plot"]
 
@@ -26,6 +27,7 @@ def _runs(mask: np.ndarray) -> list[tuple[int, int]]:
     return [(int(a), int(b) - 1) for a, b in zip(edges[::2], edges[1::2], strict=True)]
 
 
+@register_view("plot", CampbellResult)
 def campbell_plot(result: CampbellResult, *, ax: Axes | None = None) -> Figure:
     """Campbell diagram: natural frequencies and excitation lines against sprocket speed.
 
@@ -117,6 +119,7 @@ def campbell_plot(result: CampbellResult, *, ax: Axes | None = None) -> Figure:
     return fig
 
 
+@register_view("plot", ResonanceMapResult)
 def resonance_map_plot(result: ResonanceMapResult, *, ax: Axes | None = None) -> Figure:
     """Resonance map: smallest margin to the forbidden band over (tensioner mass, stiffness).
 

@@ -16,7 +16,7 @@ from __future__ import annotations
 import math
 import warnings
 from dataclasses import dataclass
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
@@ -37,7 +37,7 @@ if TYPE_CHECKING:
 PAN_GAP = 0.1
 
 __all__ = ["conveyor_pans", "SteadyState", "steady_state", "peak_tension_envelope", "span_kinds", "StartUp",
-           "start_up", "start_up_of", "with_drive_profile", "path_envelope", "compare"]
+           "start_up_of", "with_drive_profile", "path_envelope", "compare"]
 
 
 def span_kinds(model: SimulationModel, drive: Drive) -> list[str]:
@@ -236,7 +236,7 @@ def compare(pull: ConveyorPull, state: SteadyState) -> dict[str, tuple[float, fl
 
 @dataclass(frozen=True)
 class StartUp(Result):
-    """A conveyor's start-up (or stop) in the simulation (:func:`start_up`).
+    """A conveyor's start-up (or stop) in the simulation (:func:`chaindrive.simulation.startup.start_up`).
 
     Attributes
     ----------
@@ -307,7 +307,7 @@ def with_drive_profile(model: SimulationModel, *, motor: Motor | None = None, mo
                        stop_time: float = 0.0, stop_ramp: float = 0.0, ripple: float = 0.0,
                        ripple_frequency: float = 0.0, coupling: FluidCoupling | None = None,
                        secondary_inertia: float = 0.0) -> SimulationModel:
-    """``model`` with its driving wheel (wheel 0) given a time-varying drive (:func:`start_up`)."""
+    """``model`` with its driving wheel (wheel 0) given a time-varying drive (:func:`chaindrive.simulation.startup.start_up`)."""
     import dataclasses
 
     check_nonnegative("motor_inertia", motor_inertia, "kg m^2")
@@ -369,52 +369,14 @@ def start_up_of(result: SimulationResult, model: SimulationModel) -> StartUp:
                    float(peak[i_s]), float(pos[i_s]), float(result.time[i_t]), motor_speed)
 
 
-def start_up(drive: Drive, duration: float, *, motor: Motor | None = None, motor_inertia: float = 0.0,
-             ramp_time: float = 0.0, stop_time: float = 0.0, stop_ramp: float = 0.0, ripple: float = 0.0,
-             ripple_frequency: float = 0.0, samples: int = 1500, coupling: FluidCoupling | None = None,
-             secondary_inertia: float = 0.0) -> tuple[StartUp, SimulationResult, SimulationModel]:
-    r"""Start (and optionally stop) a conveyor from rest with a time-varying head drive.
+def __getattr__(name: str) -> Any:
+    """``start_up`` moved to :mod:`chaindrive.simulation.startup` (it builds the model from a
+    drive): a deprecated alias here, removed in the next release."""
+    if name == "start_up":
+        import importlib
 
-    With ``motor`` the head wheel is driven by it (Kloss curve, switched on at ``t = 0``,
-    off at ``stop_time``; ``motor_inertia`` [kg m²] is the motor's rotor and coupling
-    reduced to the head shaft, added to the wheel's); without, the head follows a
-    prescribed speed: a linear ramp over ``ramp_time`` [s], down to 0 over ``stop_ramp``
-    from ``stop_time``. ``ripple`` (relative amplitude) and ``ripple_frequency`` [rad/s]
-    modulate the motor torque (or the prescribed speed).
+        from .._deprecation import warn_renamed
 
-    With ``coupling`` (a :class:`chaindrive.coupling.FluidCoupling` reduced to the head)
-    the motor drives the head through it: the motor rotor and coupling primary, of
-    inertia ``motor_inertia`` (> 0), turn at their own speed ``ω_m``; the coupling's
-    secondary and the gearbox (``secondary_inertia`` [kg m²], reduced) turn with the head,
-
-    .. math::
-        J_m \dot ω_m = T_{Kloss}(ω_m) − T_c(ω_m, ω), \qquad
-        J \dot ω = T_c(ω_m, ω) + T_{chain}
-
-    with the coupling torque ``T_c`` of :func:`chaindrive.coupling.coupling_torque`
-    (implicit in the slip in each time step: the coupling is a stiff damper).
-
-    Parameters
-    ----------
-    drive : chaindrive.drive.Drive
-        A conveyor (with ``[conveyor]``), or any drive.
-    duration : float
-        Simulated time [s].
-    motor, motor_inertia, ramp_time, stop_time, stop_ramp, ripple, ripple_frequency, coupling, secondary_inertia
-        As above.
-    samples : int
-        Records kept.
-
-    Returns
-    -------
-    (StartUp, SimulationResult, SimulationModel)
-    """
-    from .from_drive import model_from_drive
-    from .run import simulate
-
-    model = with_drive_profile(model_from_drive(drive, ramp_time=ramp_time), motor=motor,
-                               motor_inertia=motor_inertia, stop_time=stop_time, stop_ramp=stop_ramp,
-                               ripple=ripple, ripple_frequency=ripple_frequency, coupling=coupling,
-                               secondary_inertia=secondary_inertia)
-    result = simulate(model, duration, samples=samples)
-    return start_up_of(result, model), result, model
+        warn_renamed(f"{__name__}.start_up", "chaindrive.simulation.startup.start_up")
+        return importlib.import_module("chaindrive.simulation.startup").start_up
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")

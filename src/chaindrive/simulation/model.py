@@ -74,11 +74,15 @@ __all__ = ["SimWheel", "SimTensioner", "SimGuide", "SimulationModel", "iso_flank
 
 
 def __getattr__(name: str) -> Any:
-    """``roller_example`` and ``link_example`` live in :mod:`chaindrive.simulation.examples`."""
+    """``roller_example`` and ``link_example`` live in :mod:`chaindrive.simulation.examples`:
+    deprecated aliases here (removed in the next release)."""
     if name in ("roller_example", "link_example"):
-        from . import examples
+        import importlib
 
-        return getattr(examples, name)
+        from .._deprecation import warn_renamed
+
+        warn_renamed(f"{__name__}.{name}", f"chaindrive.simulation.examples.{name}")
+        return getattr(importlib.import_module("chaindrive.simulation.examples"), name)
     raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
 
 _MODES = ("speed", "torque", "free", "motor")

@@ -9,6 +9,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
+from .._presenters import view
 from .._results import Result, quantity
 from . import _kernel as K
 from .model import SimulationModel
@@ -129,9 +130,7 @@ class SimulationResult(Result):
 
     def plot(self, *, ax: Sequence[Axes] | None = None) -> Figure:
         """Standard views (see :func:`chaindrive.plotting.simulation.simulation_plot`)."""
-        from ..plotting.simulation import simulation_plot
-
-        return simulation_plot(self, ax=ax)
+        return view("plot", self, ax=ax)
 
 
 #: Every key of :attr:`SimulationResult.summary`: its label and SI unit ("1": a count or

@@ -191,7 +191,7 @@ def output_display(path: str) -> tuple[float, str]:
     >>> output_display("contact.stress")
     (1e-06, 'MPa')
     """
-    from ..workflows.display import convert
+    from ..display import convert
 
     found = _declared(path)
     unit, shown = found if found is not None else (output_unit(path), None)

@@ -426,9 +426,13 @@ _MOVED = {"CampbellResult", "ResonanceMapResult", "SafeTensioner", "SpanVibratio
 
 
 def __getattr__(name: str) -> Any:
-    """The design help moved to :mod:`chaindrive.vibration.tensioner_design` (imported on use)."""
+    """The design help moved to :mod:`chaindrive.vibration.tensioner_design`: deprecated
+    aliases here (removed in the next release)."""
     if name in _MOVED:
-        from . import tensioner_design
+        import importlib
 
-        return getattr(tensioner_design, name)
+        from .._deprecation import warn_renamed
+
+        warn_renamed(f"{__name__}.{name}", f"chaindrive.vibration.tensioner_design.{name}")
+        return getattr(importlib.import_module("chaindrive.vibration.tensioner_design"), name)
     raise AttributeError(f"module {__name__!r} has no attribute {name!r}")

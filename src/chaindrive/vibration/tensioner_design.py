@@ -12,6 +12,7 @@ import numpy as np
 from numpy.typing import ArrayLike
 
 from .._finite import finite_guard
+from .._presenters import view
 from .._results import Result, quantity
 from .._validation import check_nonnegative, check_positive, check_range
 from ..errors import InfeasibleError, InputError
@@ -53,9 +54,8 @@ class CampbellResult(Result):
     min_margin: np.ndarray = quantity("1")  # (speeds,)
 
     def plot(self, *, ax: Axes | None = None) -> Figure:
-        from ..plotting.vibration import campbell_plot
-
-        return campbell_plot(self, ax=ax)
+        """Campbell diagram (:func:`chaindrive.plotting.vibration.campbell_plot`)."""
+        return view("plot", self, ax=ax)
 
 
 @dataclasses.dataclass(frozen=True)
@@ -73,9 +73,8 @@ class ResonanceMapResult(Result):
     proposal: tuple | None = None
 
     def plot(self, *, ax: Axes | None = None) -> Figure:
-        from ..plotting.vibration import resonance_map_plot
-
-        return resonance_map_plot(self, ax=ax)
+        """Resonance map (:func:`chaindrive.plotting.vibration.resonance_map_plot`)."""
+        return view("plot", self, ax=ax)
 
 
 @dataclasses.dataclass(frozen=True)

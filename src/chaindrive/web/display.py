@@ -11,7 +11,7 @@ from __future__ import annotations
 
 from typing import Any
 
-from ..workflows.display import DISPLAY, fmt
+from ..display import DISPLAY, fmt
 
 __all__ = ["show", "fmt", "IMPERIAL"]
 

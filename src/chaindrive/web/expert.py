@@ -83,7 +83,7 @@ def _unit_text(unit: str) -> str:
 def _shown(value: Any, unit: str, display: str | None = None, scale: float | None = None) -> tuple[str, str]:
     """A value in its display unit, rounding noise shown as 0 (``scale``: the largest value
     it is shown with), and the unit's text."""
-    from ..workflows.display import convert, fmt
+    from ..display import convert, fmt
     from ..workflows.notebook import tidy
 
     if value is None:
@@ -168,9 +168,9 @@ def dimension_rows(result: Any) -> list[tuple[str, str, str]]:
 
 def _wheel_speed(text: str, *, pitch: float, teeth: int, link_chain: bool) -> float:
     """The speed field: an angular speed ("5 rad/s", "48 rpm") or the mean chain speed
-    ("0.8 m/s"), as at the command line (:func:`chaindrive.units.parse_wheel_speed`)."""
+    ("0.8 m/s"), as at the command line (:func:`chaindrive.kinematics.speed.parse_wheel_speed`)."""
     from ..errors import InputError
-    from ..units import parse_wheel_speed
+    from ..kinematics.speed import parse_wheel_speed
 
     parse_field("speed", text, FieldSpec("", 0.0, math.inf, example="5 rad/s")) if not text.strip() else None
     try:

@@ -62,7 +62,7 @@ def state_query(state: dict[str, str]) -> str:
 def _checks_for_page(checks: list[dict], units: str) -> list[dict]:
     """Value, limit and margin texts of the checks in the page's units (names from the checks)."""
     out = []
-    from ..workflows.display import convert
+    from ..display import convert
 
     for c in checks:
         if c.get("display") and isinstance(c["value"], (int, float)):  # a declared display unit ("%")

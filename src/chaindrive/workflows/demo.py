@@ -77,7 +77,7 @@ def _maybe_analysis(output: Path, files: list, shown: Path) -> None:
         return
     drive = load_project(example)
     outcome = analyze(drive, output, subtitle=f"Project file: {example.name}")
-    from .display import verdict_text
+    from ..display import verdict_text
 
     words = verdict_text(len(outcome.analysis.failed), len(outcome.report.warnings))
     verdict = (words if outcome.passed else

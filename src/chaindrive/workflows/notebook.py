@@ -26,7 +26,8 @@ from typing import Any
 
 import numpy as np
 
-from .display import check_limit_text, check_value_text, convert, fmt
+from .._presenters import register_view
+from ..display import check_limit_text, check_value_text, convert, fmt
 
 __all__ = ["html_of", "drive_html", "analysis_html", "result_html", "drawing_svg", "tidy"]
 
@@ -189,7 +190,7 @@ def drive_html(drive: Any) -> str:
 def analysis_html(analysis: Any) -> str:
     """An analysis: verdict, every check with its value, limit and source, the drawing,
     and each part folded as its table."""
-    from .display import verdict_text
+    from ..display import verdict_text
 
     words = escape(verdict_text(len(analysis.failed), len(analysis.warnings)))
     verdict = (f"<span class='cd-pass'>{words}</span>" if analysis.passed
@@ -225,6 +226,7 @@ def analysis_html(analysis: Any) -> str:
             + "".join(parts) + "</div>")
 
 
+@register_view("html", object)
 def html_of(subject: Any) -> str:
     """The notebook HTML of a drive, an analysis or a result object."""
     from ..analysis import DriveAnalysis

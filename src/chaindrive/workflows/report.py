@@ -198,7 +198,7 @@ class Report:
     @property
     def verdict(self) -> str:
         """The overall verdict in words (``"passes, 3 warnings"``): :func:`~.display.verdict_text`."""
-        from .display import verdict_text
+        from ..display import verdict_text
 
         failed = sum(1 for _, c in self.checks if c.passed is False)
         warnings = dict.fromkeys([*self.warnings, *(w for s in self.sections for w in s.warnings)])

@@ -15,12 +15,12 @@ import numpy as np
 from ..analysis import DriveAnalysis
 from ..analysis.parts import Part, all_parts
 from ..analysis.vibration_remedy import REQUIRED_MARGIN
+from ..display import convert, display_of
 from ..drive.model import Wheel
 from ..errors import InputError
 from ..vibration.excitation import AMPLIFICATION_LIMIT, DAMPING_RATIO
 from ._figures import Figures, FigureShare
 from ._figures import Figures as _Figures
-from .display import convert, display_of
 from .report import Section, Table
 
 if TYPE_CHECKING:
@@ -632,7 +632,7 @@ def _field_rows(result: Any, prefix: str = "") -> list[list[Any]]:
     import dataclasses
 
     from .._results import Result
-    from .display import display
+    from ..display import display
 
     rows: list[list[Any]] = []
     if not (isinstance(result, Result) and dataclasses.is_dataclass(result)):
@@ -664,7 +664,7 @@ def generic_section(part: Part) -> Callable[[DriveAnalysis, _Figures], Section |
             return None
         sec = Section(part.title)
         if isinstance(res, (int, float)) and part.unit is not None:
-            from .display import display
+            from ..display import display
 
             shown, unit = display(float(res), part.unit)
             rows = [[part.title, shown, unit]]
