@@ -16,7 +16,7 @@ from typing import TYPE_CHECKING, Any
 
 from .._results import Result, jsonable
 from ..analysis.checks import Check
-from . import display as _display
+from .. import display as _display
 
 if TYPE_CHECKING:
     from matplotlib.figure import Figure as MatplotlibFigure
