@@ -232,8 +232,9 @@ def drive_vibration(drive: Drive, layout: DriveLayout, loads: DriveLoads) -> Dri
     allf = np.concatenate(freqs)
     free = FreeSpans(tuple(names), lengths, running, allf, resonance_check(allf, exc))
     for r in free.pairs_in_band:
-        notes.append(f"{names[r['mode'] - 1]} ({r['natural_frequency']:.4g} rad/s) lies in the band "
-                     f"0.7…1.4 of the {r['excitation']} excitation ({r['exciting_frequency']:.4g} rad/s)")
+        p, w = r["natural_frequency"], r["exciting_frequency"]
+        notes.append(f"{names[r['mode'] - 1]} ({p / (2 * math.pi):.4g} Hz, {p:.4g} rad/s) lies in the band "
+                     f"0.7…1.4 of the {r['excitation']} excitation ({w / (2 * math.pi):.4g} Hz, {w:.4g} rad/s)")
     return DriveVibration(exc, None, None, None, free, tuple(notes))
 
 

@@ -380,7 +380,7 @@ def vibration_section(a: DriveAnalysis, fig: _Figures) -> Section | None:
 
             fig(sec, lambda: campbell_plot(campbell),
                 "Campbell diagram of the slack span with the tensioner: natural frequencies, excitations and the "
-                "forbidden bands 0.7 ≤ P/ω ≤ 1.4", "campbell.png")
+                "tensioner paper's bands 0.7 ≤ P/ω ≤ 1.4 (information; frequencies in rad/s, Hz on the right)", "campbell.png")
         sec.results["tensioner"] = res.to_dict()
         if res.check is not None:
             sec.results["check"] = res.check.rows()
