@@ -14,9 +14,9 @@ import sys
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
+from .. import display as _display
 from .._results import Result, jsonable
 from ..analysis.checks import Check
-from .. import display as _display
 
 if TYPE_CHECKING:
     from matplotlib.figure import Figure as MatplotlibFigure
