@@ -33,6 +33,7 @@ from .design import (
     service_factor_table,
     state_from_project,
 )
+from ..display import verdict_text
 from .display import fmt, show
 from .wheels import MAX_EXTRA_WHEELS, extra_rows
 
@@ -181,6 +182,8 @@ def studio_payload(state: dict[str, str]) -> dict[str, Any]:
     out["checks"] = checks
     out["warnings"] = analysis.warnings
     out["passed"] = analysis.passed
+    failed = sum(1 for c in analysis.checks if c["passed"] is False)
+    out["verdict"] = verdict_text(failed, len(analysis.warnings))  # "passes, 2 warnings" (issue 30)
     out["downloads"] = {name: f"/download/{name}?{out['query']}" for name in DOWNLOADS}
     out["has_tensioner"] = drive.tensioner is not None
     out["elapsed_ms"] = round((time.perf_counter() - t0) * 1e3, 1)
