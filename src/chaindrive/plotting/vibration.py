@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
@@ -81,8 +81,11 @@ def campbell_plot(result: CampbellResult, *, ax: Axes | None = None) -> Figure:
 
     per_hz = CONVERSIONS[("rad/s", "Hz")]  # the display table's factor
 
-    def hz(omega):  # [rad/s] -> [Hz]
-        return omega * per_hz
+    def hz(omega: Any) -> Any:  # [rad/s] -> [Hz]
+        return np.asarray(omega) * per_hz
+
+    def rad_s(frequency: Any) -> Any:  # [Hz] -> [rad/s]
+        return np.asarray(frequency) / per_hz
 
     lo, hi = result.band
     colors = plt.rcParams["axes.prop_cycle"].by_key()["color"]
@@ -118,7 +121,7 @@ def campbell_plot(result: CampbellResult, *, ax: Axes | None = None) -> Figure:
     ax.set_ylabel("frequency [rad/s]")
     top = ax.secondary_xaxis("top", functions=(angular_velocity_to_rpm, rpm_to_angular_velocity))
     top.set_xlabel("n₁ [rpm]")
-    right = ax.secondary_yaxis("right", functions=(hz, lambda f: f / per_hz))  # the frequencies in Hz beside
+    right = ax.secondary_yaxis("right", functions=(hz, rad_s))  # the frequencies in Hz beside
     right.set_ylabel("frequency [Hz]")
     ax.set_title("Campbell diagram: slack span with tensioner (the tensioner paper)\n"
                  f"shaded round each excitation: the paper's band {lo:g} ≤ P/ω ≤ {hi:g} (information)", fontsize=10)
