@@ -59,3 +59,20 @@ def test_frequencies_in_hz_and_non_uniformity_in_percent():
     assert all(text.endswith(" Hz") for name, text in shown.items() if "natural frequency" in name)
     assert all(text.endswith(" %") for name, text in shown.items() if "non-uniformity" in name)
     assert not any("rpm" in text for name, text in shown.items() if "frequency" in name)
+
+
+def test_studio_shows_one_life_hz_percent_and_the_verdict_in_words():
+    pytest.importorskip("fastapi")
+    import json
+
+    from chaindrive.web.design import normalise_state
+    from chaindrive.web.studio import studio_payload
+
+    p = studio_payload(normalise_state({}))
+    text = json.dumps(p, default=str)
+    # issue 30: the studio showed 5.59 years (wear) and 5.1 years (the rating basis) for one drive
+    assert "years" not in text.replace("life_years", "") and p["life_years"]
+    shown = {c["name"]: f"{c['value_text']} {c['unit_text']}".strip() for c in p["checks"]}
+    assert all(v.endswith("Hz") for k, v in shown.items() if "natural frequency" in k)
+    assert all(v.endswith("%") for k, v in shown.items() if "non-uniformity" in k)
+    assert p["verdict"].startswith("passes") and (str(len(p["warnings"])) in p["verdict"]) is bool(p["warnings"])
