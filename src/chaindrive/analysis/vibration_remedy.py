@@ -288,7 +288,8 @@ def search_remedy(drive: Drive, vib: DriveVibration) -> Remedy | None:
     ok, a, why = _verify(design(best), failed_before)
     reason = (f"the best candidate still amplifies the response {best[1]:.3g}× (limit {target:.3g}× with the "
               f"{100 * REQUIRED_MARGIN:.0f} % reserve)" if best[1] > target else
-              "every candidate that meets the amplification limit fails its verification: " + "; ".join(rejected[:3]))
+              f"the {len(rejected)} nearest candidates that meet the amplification limit fail their verification by "
+              "the full analysis: " + "; ".join(dict.fromkeys(rejected[:3])))
     if bounds:
         reason += "; it sits at the bound" + ("s" if len(bounds) > 1 else "") + " of the search: " + ", ".join(bounds)
     return result(False, best, a, reason, bounds)
