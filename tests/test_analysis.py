@@ -58,7 +58,10 @@ MOVED = ("safety.checks", "Loads and safety.tensions.dynamic", "Loads and safety
          "Loads and safety.safety.rated_power", "Wear life.life.hours",
          # the required static safety of roller chains 7 -> 6 (Diamond Chain's 1/6 rule on F_max,
          # docs/design.md "One static safety"); the roller example's project file states it
-         "Input data.inputs.required_static_safety", "Loads and safety.safety.required_static_safety")
+         "Input data.inputs.required_static_safety", "Loads and safety.safety.required_static_safety",
+         # issue 29: the static safety by Chernavsky et al. eq. (7.40), without the dynamic tension,
+         # against Table 7.19's required value (the roller example no longer states 6)
+         "Loads and safety.safety.required_static_safety")
 
 
 @pytest.mark.parametrize("name", NAMES)
@@ -137,7 +140,7 @@ def test_include_and_exclude():
     d = _roller()
     a = analyze_drive(d, include=["loads"])
     assert a.loads is not None and a.layout is None and a.rating is None and a.entry is None
-    assert [c.name for c in a.checks] == ["static safety F_B / F_max"]
+    assert [c.name for c in a.checks] == ["static safety", "peak tension"]
     b = analyze_drive(d, exclude=["vibration", "geometry"])
     assert b.vibration is None and b.geometry is None and b.rating is not None
     with pytest.raises(InputError, match="include: unknown part.*'lay'.*valid: layout"):
@@ -186,10 +189,13 @@ def test_check_margin_and_verdict():
 def test_properties_of_the_analysis(power, factor, teeth):
     d = _roller(load=Load(power=power, service_factor=factor)).with_wheel("motor", teeth=teeth)
     a = analyze_drive(d, exclude=["geometry", "vibration"])
-    # the static safety check is F_B / F_max and its verdict follows from its value
-    s = a.checks_of("loads")[0]
-    assert s.value == pytest.approx(d.chain.breaking_force / a.loads.maximum)
+    # the static safety check is F_B / (K_s F_t + S + q v²) (Chernavsky et al. eq. (7.40), no dynamic
+    # tension) and its verdict follows from its value; the peak tension is its own check
+    s, peak = a.checks_of("loads")[:2]
+    assert s.value == pytest.approx(d.chain.breaking_force / a.loads.tight)
     assert s.passed == (s.value >= d.static_safety_required)
+    assert peak.value == a.loads.maximum and peak.limit == pytest.approx(d.chain.breaking_force / 6)
+    assert peak.passed == (peak.value <= peak.limit)
     # effective pull scales with the service factor, F_max = tight + dynamic
     assert a.loads.effective_pull == pytest.approx(factor * d.torque() / a.layout.pitch_radii[0])
     assert a.loads.maximum == pytest.approx(a.loads.tight + a.loads.dynamic)

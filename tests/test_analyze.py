@@ -93,7 +93,7 @@ def test_cli_analyze_exit_codes(tmp_path, capsys):
     assert (tmp_path / "report.html").exists()
     # a failing check gives exit code 1: demand an absurd static safety
     bad = tmp_path / "strict.toml"
-    bad.write_text(ex.read_text().replace("required_static_safety = 6 ", "required_static_safety = 500 "))
+    bad.write_text(ex.read_text().replace("# required_static_safety = 10 ", "required_static_safety = 500 "))
     assert main(["analyze", str(bad), "-o", str(tmp_path / "b"), "--no-figures", "-q"]) == 1
     # bad input: exit code 2 with the field and line named
     worse = tmp_path / "worse.toml"

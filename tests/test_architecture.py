@@ -35,7 +35,7 @@ LAYERS: tuple[tuple[str, tuple[str, ...]], ...] = (
     ("formulas", ("chaindrive.kinematics", "chaindrive.vibration", "chaindrive.strength", "chaindrive.geometry",
                   "chaindrive.layout", "chaindrive.loads", "chaindrive.selection", "chaindrive.wear",
                   "chaindrive.chains", "chaindrive.self_regulating", "chaindrive.rating", "chaindrive.motor",
-                  "chaindrive.coupling", "chaindrive.conveyor", "chaindrive.life")),
+                  "chaindrive.coupling", "chaindrive.conveyor", "chaindrive.life", "chaindrive.static_safety")),
     ("description", ("chaindrive.drive",)),
     ("analysis", ("chaindrive.analysis",)),
     ("simulation", ("chaindrive.simulation",)),

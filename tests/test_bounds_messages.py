@@ -85,9 +85,9 @@ def test_sprocket_cli_refuses_a_million_teeth_at_once(capsys):
      "error: --seat-radius must be positive and finite (0 < --seat-radius < inf m), got 0"),
     (["contact", "--load", "5 kN", "--chain", "16B", "--poisson", "0.7"],
      "error: --poisson must lie in [0, 0.5), got 0.7"),
-    (["select", "--power", "7 kW", "--speed", "1450 rpm", "--ratio", "1e300", "--load", "smooth"],
+    (["select", "--power", "7 kW", "--speed", "1450 rpm", "--ratio", "1e300", "--load-character", "smooth"],
      "error: --ratio must be a finite number in (0, 20], got 1e+300"),
-    (["select", "--power", "7 kW", "--speed", "1450 rpm", "--ratio", "3", "--load", "smooth", "--teeth", "1000000"],
+    (["select", "--power", "7 kW", "--speed", "1450 rpm", "--ratio", "3", "--load-character", "smooth", "--teeth", "1000000"],
      "error: --teeth must be a whole number in [3, 10000], got 1000000"),
 ])
 def test_messages_name_the_option_typed(capsys, argv, expected):

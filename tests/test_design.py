@@ -37,11 +37,14 @@ def _key(c) -> tuple:
 
 def test_api_answer(api):
     c = api.recommended
-    # regression of the procedure (docs/design.md compares it with a catalogue done by hand); with the
-    # spring-mass dynamic load its static safety F_B / F_max is 6.5 >= 6 (Diamond Chain's 1/6 rule)
+    # regression of the procedure (docs/design.md compares it with a catalogue done by hand); its static
+    # safety F_B / (K_s F_t + S + q v²) = 17.49 against Chernavsky et al.'s Table 7.19 extended to 1460 rpm
+    # (13.54, issue 29), its peak tension 4.80 kN against F_B / 6 = 5.21 kN (Diamond Chain)
     assert (c.chain, c.driving_teeth, c.driven_teeth, c.links) == ("12A-1", 19, 58, 104)
     assert c.service_factor == 1.3 and c.design_power == pytest.approx(14.3e3)
     assert c.rated_power >= c.design_power and c.static_safety >= c.required_static_safety
+    assert c.static_safety == pytest.approx(17.4936, abs=1e-4) and c.required_static_safety == 13.54
+    assert c.peak_tension <= c.peak_tension_limit and c.peak_tension == pytest.approx(4803.1, abs=0.1)
     assert c.links % 2 == 0 and c.driving_teeth % 2 == 1
     assert api.candidates[0] is c
     assert any(a.relation == "info" for a in api.advice)
@@ -196,17 +199,19 @@ def test_advice_at_every_door(api, capsys):
 
 def test_no_recommendation_in_the_galling_region(capsys):
     """31 kW at 2900 rpm, ratio 5: every chain that carries it (20B-3, 36A-3) runs in the galling region
-    (Shigley §17-5, type C': the ratings do not apply there). The procedure recommends no drive that fails
-    a check: InfeasibleError naming the nearest chain and the check, and `select` exits 2 with that line."""
+    (Shigley §17-5, type C': the ratings do not apply there), and at that speed Chernavsky et al.'s
+    required static safety (Table 7.19, extended beyond its 1250 rpm) is out of their reach. The
+    procedure recommends no drive that fails a check: InfeasibleError, and `select` exits 2 with one line."""
     from chaindrive.errors import InfeasibleError
 
     duty = Duty(31.13e3, 2900 * RPM, ratio=4.98, load_character="smooth")
-    with pytest.raises(InfeasibleError, match=r"passes every check: the nearest, 20B-3 \(23/115 teeth\), fails "
-                                              r"speed below the galling limit: 2900 rpm \(limit <= 1780 rpm\)"):
+    with pytest.raises(InfeasibleError, match=r"no catalogue roller chain carries 31.13 kW \(design power\) at "
+                                              r"2900 rpm with the required static safety; the nearest, 20B-3 \(23/115 teeth\) "
+                                              r"has a static safety of 15.7 < 30.2 required"):
         design_drive(duty)
-    assert main(["select", "-P", "31.13 kW", "-n", "2900 rpm", "-i", "4.98", "--load", "smooth"]) == 2
+    assert main(["select", "-P", "31.13 kW", "-n", "2900 rpm", "-i", "4.98", "--load-character", "smooth"]) == 2
     captured = capsys.readouterr()
-    assert captured.err.strip().count("\n") == 0 and "galling" in captured.err
+    assert captured.err.strip().count("\n") == 0 and "static safety" in captured.err
     assert "implausible" not in captured.err     # the candidates' own notes do not leak as warnings
 
 
@@ -249,9 +254,9 @@ def test_multi_strand_chains_with_published_masses_are_recommended(power, rpm, s
     c = r.recommended
     assert c.chain == chain and (before is None or before in [x.chain for x in r.candidates])
     assert not _failed(c) and c.static_safety is not None and c.static_safety >= c.required_static_safety
-    assert c.static_safety == pytest.approx(get(chain).breaking_force / c.maximum_tension, rel=1e-9)
-    assert c.maximum_tension >= c.design_power / c.chain_speed
-    assert main(["select", "-P", f"{power / 1e3:g} kW", "-n", f"{rpm} rpm", "-i", "3", "--load", "moderate",
+    assert c.static_safety == pytest.approx(get(chain).breaking_force / c.static_tension, rel=1e-9)
+    assert c.static_tension >= c.design_power / c.chain_speed
+    assert main(["select", "-P", f"{power / 1e3:g} kW", "-n", f"{rpm} rpm", "-i", "3", "--load-character", "moderate",
                  "--strands", ",".join(map(str, strands)), "--json"]) == 0
     assert json.loads(capsys.readouterr().out)["recommended"]["chain"] == chain
 

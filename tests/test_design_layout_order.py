@@ -28,7 +28,7 @@ def test_candidates_equal_those_of_every_chain_laid_out(power, rpm, centre):
     expected = [c for c in every if smallest[(_series(get(c.chain)), c.strands)] == (c.lubrication == "C'", c.pitch)]
     def rows(cands):  # (a candidate may hold NaN, which == does not match)
         return [(c.chain, c.driving_teeth, c.driven_teeth, c.links, c.centre_distance, c.static_safety, c.lubrication,
-                 repr(c.maximum_tension), c.notes, [x.name for x in c.checks]) for c in cands]
+                 repr(c.peak_tension), c.notes, [x.name for x in c.checks]) for c in cands]
 
     assert rows(kept) == rows(expected) and kept
 

@@ -60,7 +60,7 @@ def test_drive_roller_numbers():
     assert t.shaft_loads[0] == pytest.approx(t.shaft_loads[1])
     assert t.shaft_loads[0] == pytest.approx(t.effective_pull + 2 * t.slack, rel=0.01)
     safety = next(c for c in a.checks if c.name.startswith("static safety"))
-    assert a.passed and safety.value == pytest.approx(60e3 / a.loads.maximum)
+    assert a.passed and safety.value == pytest.approx(60e3 / a.loads.tight)  # Chernavsky et al. eq. (7.40)
     assert a.rating.rating.teeth == 19 and a.rating.rating.rated_power > 15e3
     assert a.wear.model == "rating" and a.wear.hours_to_limit > 15000
     summary = json.loads(json.dumps(a.to_dict()))

@@ -199,7 +199,7 @@ def test_cli_select_write_then_layout(tmp_path, capsys):
     from chaindrive.cli import main
 
     f = tmp_path / "drive.toml"
-    duty = ["select", "--power", "7.5 kW", "--speed", "1450 rpm", "--ratio", "3", "--load", "smooth"]
+    duty = ["select", "--power", "7.5 kW", "--speed", "1450 rpm", "--ratio", "3", "--load-character", "smooth"]
     assert main([*duty, "--write", str(f), "--choose", "2"]) == 0
     out = capsys.readouterr().out
     assert "service factor K_s = 1" in out and f"wrote {f}" in out and "margin" in out
@@ -227,7 +227,7 @@ def test_cli_select_write_then_layout(tmp_path, capsys):
 def test_cli_select_errors(args, match, capsys):
     from chaindrive.cli import main
 
-    assert main(["select", "--ratio", "3", "--load", "smooth", *args]) == 2
+    assert main(["select", "--ratio", "3", "--load-character", "smooth", *args]) == 2
     import re
 
     assert re.search(match, capsys.readouterr().err)

@@ -15,6 +15,17 @@ from ._registry import Registry
 from ._typing import FloatOrArray
 from ._validation import as_float_array, check_nonnegative, check_positive, check_teeth
 from .errors import InputError
+from .static_safety import (
+    PEAK_TENSION_RATIO,
+    REQUIRED_SAFETY_PITCHES,
+    REQUIRED_SAFETY_SPEEDS,
+    REQUIRED_SAFETY_TABLE,
+    REQUIRED_STATIC_SAFETY,
+    outside_required_safety_table,
+    required_static_safety_for,
+    required_static_safety_table,
+    static_safety,
+)
 
 __all__ = [
     "torque_from_power",
@@ -32,6 +43,14 @@ __all__ = [
     "dynamic_factor",
     "shaft_load",
     "static_safety_factor",
+    "static_safety",
+    "required_static_safety_table",
+    "required_static_safety_for",
+    "outside_required_safety_table",
+    "REQUIRED_SAFETY_PITCHES",
+    "REQUIRED_SAFETY_SPEEDS",
+    "REQUIRED_SAFETY_TABLE",
+    "PEAK_TENSION_RATIO",
     "service_factor",
     "SERVICE_FACTORS",
     "REQUIRED_STATIC_SAFETY",
@@ -536,20 +555,6 @@ def shaft_load(tensions: ArrayLike, directions: ArrayLike) -> tuple[FloatOrArray
     fx = np.sum(F * np.cos(a), axis=-1)
     fy = np.sum(F * np.sin(a), axis=-1)
     return np.hypot(fx, fy), np.arctan2(fy, fx)
-
-
-#: Required static safety ``F_B / F_max`` by chain kind, the one table of chaindrive (a
-#: project may set its own ``required_static_safety``). Roller chains 6: Diamond Chain
-#: Company, "What is working load and what role does it play in selecting roller chain?"
-#: (engineering FAQ, diamondchain.com): the chain pull should not exceed 1/6 of the ultimate
-#: tensile strength with press-fit connecting links or non-offset links, 1/9 with slip-fit
-#: connecting links or offset links (a project with those sets ``required_static_safety =
-#: 9``); the rule guards against link-plate fatigue of a continuously running chain, so it
-#: is applied to the largest tension in service, ``F_max``, which includes the slack,
-#: centrifugal and the polygonal action's dynamic tension (:func:`polygonal_dynamic_tension`).
-#: Round link chains 3.5 (mining scraper conveyors, the value of the Dolipiński et al.
-#: example drive; no standard prescribing it was found). docs/design.md.
-REQUIRED_STATIC_SAFETY = {"roller": 6.0, "link": 3.5}
 
 
 def static_safety_factor(breaking_force: ArrayLike, tension: ArrayLike) -> FloatOrArray:

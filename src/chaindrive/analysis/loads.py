@@ -14,9 +14,11 @@ from .._results import Result, quantity
 from ..chains import Chain
 from ..drive.model import Drive
 from ..errors import ChainDriveError, InputError
+from ..units import angular_velocity_to_rpm, rpm_to_angular_velocity
 from ._memo import memo
 from ._wheels import wheel_teeth
 from .checks import Check
+from .dynamic_tension import dynamic_tension, polygonal_spring_mass
 from .layout import (
     MINIMUM_WRAP,
     DriveLayout,
@@ -30,21 +32,34 @@ from .parts import Part, PartContext, register_part
 if TYPE_CHECKING:
     from .conveyor import ConveyorPull
 
-__all__ = ["DriveLoads", "drive_loads", "polygonal_spring_mass", "span_tensions", "free_entry_acceleration", "static_safety_check", "wrap_check",
-           "MINIMUM_WRAP", "REQUIRED_STATIC_SAFETY", "required_static_safety"]
+__all__ = ["DriveLoads", "drive_loads", "polygonal_spring_mass", "span_tensions", "free_entry_acceleration",
+           "static_safety_check", "peak_tension_check", "wrap_check", "MINIMUM_WRAP", "REQUIRED_STATIC_SAFETY",
+           "required_static_safety", "STATIC_SAFETY_SOURCE", "PEAK_TENSION_SOURCE"]
 
-#: The one table of required static safeties (:data:`chaindrive.loads.REQUIRED_STATIC_SAFETY`).
+#: Required static safety of round link chains (:data:`chaindrive.loads.REQUIRED_STATIC_SAFETY`);
+#: roller chains: :func:`chaindrive.loads.required_static_safety_table`.
 REQUIRED_STATIC_SAFETY = F.REQUIRED_STATIC_SAFETY
+#: The definition of the static safety and of its required value, as the checks cite it.
+STATIC_SAFETY_SOURCE = ("s = F_B / (K_s F_t + S_slack + q v²): Chernavsky et al., Kursovoe proektirovanie detalei "
+                        "mashin (1988), eq. (7.40), K_d = the service factor K_s, F_f = the slack-span tension; "
+                        "F_B the catalogue minimum breaking force (ISO 606:2015 / ASME B29.1 / DIN 22252)")
+#: The limit of the peak tension of the running chain, as the check cites it.
+PEAK_TENSION_SOURCE = ("Diamond Chain, 'What is working load ...' (engineering FAQ): chain pull at most 1/6 of "
+                       "the ultimate tensile strength (press-fit or non-offset connecting links)")
 
 
-def required_static_safety(chain: Chain) -> float:
-    """The required static safety of :data:`REQUIRED_STATIC_SAFETY` for a chain (link or roller).
+def required_static_safety(chain: Chain, pitch_speed: float | None = None) -> float:
+    """The required static safety for a chain: 3.5 for a round link chain; for a roller chain
+    Chernavsky et al.'s Table 7.19 at ``pitch_speed``, the speed of the small sprocket [rad/s]
+    (:func:`chaindrive.loads.required_static_safety_table`; ``None``: at 50 rpm, the table's
+    lowest value for the pitch).
 
     >>> from chaindrive.chains import get
     >>> required_static_safety(get("18x64")), required_static_safety(get("16B-1"))
-    (3.5, 6.0)
+    (3.5, 7.3)
     """
-    return REQUIRED_STATIC_SAFETY["link" if chain.is_link_chain else "roller"]
+    speed = rpm_to_angular_velocity(50.0) if pitch_speed is None else pitch_speed
+    return F.required_static_safety_for(chain.is_link_chain, chain.pitch, speed)
 
 
 #: A slack span steeper than this hangs in its own weight (no sag to speak of) [rad].
@@ -77,9 +92,11 @@ class DriveLoads(Result):
         Mass accelerated by the polygonal action [kg]: the driven side reduced to the chain
         (:func:`polygonal_spring_mass`), or the whole chain where ``m a_max`` is used.
     dynamic : float
-        Peak dynamic tension of the polygonal action [N]; its model in ``dynamic_source``.
+        Peak dynamic tension of the running chain [N] (:func:`chaindrive.analysis.dynamic_tension.dynamic_tension`);
+        its model in ``dynamic_source``, how far it is checked in ``dynamic_validity``.
     maximum : float
-        ``tight + dynamic`` [N].
+        Peak tension of the running chain's tight span, ``tight + dynamic`` [N]: the value of
+        the peak-tension check (:func:`peak_tension_check`), not of the static safety.
     dynamic_factor : float
         ``maximum / tight`` [-].
     span_tensions : ndarray
@@ -102,6 +119,8 @@ class DriveLoads(Result):
         How ``dynamic`` was computed.
     dynamic_stiffness : float or None
         Stiffness of the spans holding the driven side [N/m] (spring–mass model only).
+    dynamic_validity : str
+        How far the dynamic model is checked.
     """
 
     torque: float = quantity("N*m")
@@ -127,6 +146,7 @@ class DriveLoads(Result):
     wheel_torques: np.ndarray | None = quantity("N*m", default=None)
     dynamic_source: str = "m a_max"
     dynamic_stiffness: float | None = quantity("N/m", default=None)
+    dynamic_validity: str = ""
 
 
 def free_entry_acceleration(drive: Drive) -> float:
@@ -154,62 +174,6 @@ def free_entry_acceleration(drive: Drive) -> float:
     else:
         half = math.pi / teeth
     return float(F.free_entry_acceleration_peak(drive.speed, R, half))
-
-
-def polygonal_spring_mass(drive: Drive, layout: DriveLayout) -> tuple[int, float, float] | None:
-    r"""The driven side of the tight span as a mass on the chain's spans: ``(wheel, m, k)``.
-
-    The tight span joins the driving wheel to wheel ``j``; that wheel (its inertia
-    :func:`chaindrive.loads.disc_inertia` at the pitch radius, as the torsional critical
-    speed and the simulation assume), the chain wrapped on it and a third of each of its two
-    spans (the consistent mass of a uniform spring) form the mass, its two spans
-    ``Σ EA/l`` the stiffness (as :mod:`chaindrive.analysis.critical_speeds`):
-
-    .. math:: m = \frac{J_j}{R_j^2} + q R_j θ_j + \frac{q (l_{j-1} + l_j)}{3}, \qquad
-              k = EA \left(\frac{1}{l_{j-1}} + \frac{1}{l_j}\right)
-
-    Known limits (measured against the simulation, docs/design.md, "The dynamic load and the
-    simulation"): the slack span sags and holds the wheel with Ernst's stiffness
-    ``12 T³/(w² l³)`` (1e4–1e5 N/m in the examples), not ``EA/l``; the tight span's sag (statically) and
-    the seats (dynamically) soften it further, so the simulation's driven side is 2.5–3.2 times
-    softer than ``k`` dynamically (natural frequency 1.6–1.8 times lower). ``k`` is kept as it is: the
-    spring–mass ``F_d`` agrees with the simulated peaks on the acceptance drives through
-    this stiffness, and a softer spring alone does not make it agree elsewhere.
-
-    ``None`` where the model does not apply (then ``m a_max`` with the whole chain): round
-    link chains and conveyors, a guide on the driving wheel (not free entry), a chain
-    without mass per length, a load not taken off at the wheel the tight span leaves (an
-    idler, the tensioner's wheel, a track's road wheel, a crawler drive's cams).
-
-    >>> from chaindrive.drive.project import load_project
-    >>> from chaindrive.analysis.layout import drive_layout
-    >>> d = load_project("examples/roller_industrial.toml")
-    >>> j, m, k = polygonal_spring_mass(d, drive_layout(d))
-    >>> j, round(m, 2), round(k / 1e8, 3)
-    (1, 16.9, 1.925)
-    """
-    from ..chains.stiffness import chain_axial_stiffness
-
-    chain = drive.chain
-    k0 = drive.driving_index
-    if (chain.bar_diameter is not None or drive.conveyor is not None or chain.mass_per_length is None
-            or drive.driving_wheel.teeth is None or any(g.wheel == drive.driving_wheel.name for g in drive.guides)):
-        return None
-    n = len(drive.wheels)
-    t = layout.tight_span
-    j = t if (t + 1) % n == k0 else (t + 1) % n
-    far = drive.wheels[j]
-    tensioner = drive.tensioner.wheel if drive.tensioner is not None else None
-    if (far.teeth is None or far.kind == "idler" or far.name == tensioner or drive.track is not None
-            or drive.crawler is not None):
-        return None  # the load is not on the wheel the tight span leaves (idler, tensioner, track, crawler's cams)
-    spans = layout.wrap.span_length
-    l_in, l_out = float(spans[(j - 1) % n]), float(spans[j])
-    R = float(layout.pitch_radii[j])
-    q = float(drive.mass_per_length)
-    m = float(F.disc_inertia(R)) / R**2 + q * R * float(layout.wrap.wrap_angle[j]) + q * (l_in + l_out) / 3.0
-    ea = chain_axial_stiffness(chain) * chain.strands
-    return j, m, ea * (1.0 / l_in + 1.0 / l_out)
 
 
 def _slack_tension(drive: Drive, layout: DriveLayout) -> tuple[float, str]:
@@ -248,18 +212,18 @@ def drive_loads(drive: Drive, layout: DriveLayout | None = None, *,
 
     .. math::
 
-        F_{max} = \frac{K_s T}{R} + S_{slack} + q v^2 + F_d
+        F_{tight} = \frac{K_s T}{R} + S_{slack} + q v^2, \qquad F_{peak} = F_{tight} + F_d
 
     The slack tension is, in this order: given; from the tensioner force (the tensioner
     wheel held by its two spans); the weight of a near-vertical (> 80°) slack span; the
     catenary tension for ``slack_sag_ratio`` of the slack span. The shaft load of each
     wheel is the vector sum of its two span tensions (without the centrifugal part,
-    which the chain carries itself). The dynamic tension ``F_d`` of the polygonal action
-    is the periodic response of the driven side on its spans
-    (:func:`polygonal_spring_mass`, :func:`chaindrive.loads.polygonal_dynamic_tension`;
-    docs/design.md, "Dynamic load"), or ``m a_max`` with the whole chain moved rigidly
-    where that model does not apply (round link chains, conveyors, guided entry) or
-    ``moving_mass`` is given.
+    which the chain carries itself, and without the dynamic tension, as the handbook's
+    shaft load ``F_t + 2 F_f``: Ivanov, *Detali mashin*, chain drives; here with ``K_s``). The
+    dynamic tension ``F_d`` of the running chain comes from the one function
+    :func:`chaindrive.analysis.dynamic_tension.dynamic_tension` (docs/design.md, "The dynamic
+    load and the simulation"); it enters ``maximum`` (the peak-tension check), not the static
+    safety.
 
     Parameters
     ----------
@@ -315,16 +279,8 @@ def drive_loads(drive: Drive, layout: DriveLayout | None = None, *,
         a, asrc = free_entry_acceleration(drive), "free entry on the driving wheel, ω² R sin(δ/2) (Dolipiński et al.)"
     else:
         a, asrc = float(acceleration_peak), acceleration_source
-    sm = None if moving_mass is not None else polygonal_spring_mass(drive, lay)
-    if sm is None:
-        m = float(moving_mass) if moving_mass is not None else q * lay.links * drive.pitch
-        Fd, dsrc, kd = float(F.dynamic_tension(m, a)), "m a_max, the whole chain moved rigidly", None
-    else:
-        j, m, kd = sm
-        Fd = float(F.polygonal_dynamic_tension(drive.speed, R, math.pi / wheel_teeth(drive.driving_wheel, "the driving wheel"),
-                                               kd, m))
-        dsrc = (f"wheel {drive.wheels[j].name!r} as a mass on its spans, driven by the polygonal speed "
-                f"(periodic response, ζ = {F.POLYGONAL_DAMPING_RATIO:g})")
+    dyn = dynamic_tension(drive, lay, a, moving_mass=moving_mass)
+    m, Fd, dsrc, kd = dyn.moving_mass, dyn.value, dyn.model, dyn.stiffness
     ang = lay.wrap.span_angle
     # wheel i: pulled back along incoming span i-1, forward along outgoing span i
     tens = np.column_stack([np.roll(span_T, 1), span_T])
@@ -340,6 +296,7 @@ def drive_loads(drive: Drive, layout: DriveLayout | None = None, *,
         shaft_loads=np.asarray(mag, dtype=float), shaft_load_angles=np.asarray(th, dtype=float),
         wheel_names=lay.wheel_names, power_shares=shares, wheel_powers=powers,
         wheel_torques=powers / lay.angular_velocities, dynamic_source=dsrc, dynamic_stiffness=kd,
+        dynamic_validity=dyn.validity,
     )
 
 
@@ -397,15 +354,53 @@ def span_tensions(effective_pull: float, slack: float, shares: np.ndarray, drivi
 
 
 def static_safety_check(drive: Drive, loads: DriveLoads) -> Check:
-    """Static safety ``F_B / F_max`` against ``drive.required_static_safety``."""
+    """Static safety ``F_B / (K_s F_t + S_slack + q v²)`` against the required ``[s]``
+    (:func:`chaindrive.loads.static_safety`, Chernavsky et al. eq. (7.40); the required value
+    :attr:`Drive.static_safety_required`: the project's, or Table 7.19 by pitch and
+    small-sprocket speed for roller chains, 3.5 for round link chains). The dynamic tension is
+    not in it: :func:`peak_tension_check`."""
     fb = drive.chain.breaking_force
-    sf = None if fb is None else float(fb) / loads.maximum
+    need = drive.static_safety_required
+    ks = float(drive.load.service_factor)
+    sf = None
+    if fb is not None:
+        sf = float(F.static_safety(fb, loads.effective_pull / ks, loads.centrifugal, loads.slack, ks))
+    if drive.required_static_safety is not None:
+        basis = "required value set by the project"
+    elif drive.chain.is_link_chain:
+        basis = "required 3.5 for round link chains (the Dolipiński et al. example drive; no standard found)"
+    else:
+        n1 = drive.small_sprocket_speed()
+        basis = (f"required [s] from Chernavsky et al. Table 7.19 at p = {drive.pitch * 1e3:.4g} mm, "
+                 f"n1 = {angular_velocity_to_rpm(n1):.0f} rpm (small sprocket)")
+        if F.outside_required_safety_table(drive.pitch, n1):
+            basis += ", outside the printed table: extended linearly (chaindrive.loads.required_static_safety_table)"
     return Check(
-        name="static safety F_B / F_max", value=sf, limit=drive.static_safety_required, unit="-",
-        passed=None if sf is None else bool(sf >= drive.static_safety_required),
-        source="catalogue breaking force (ISO 606:2015 table 1 / ASME B29.1 / DIN 22252); "
-               "F_max = K_s T/R + S_slack + q v² + F_d (polygonal action, docs/design.md)",
-        note="" if fb is not None else "breaking force unknown")
+        name="static safety", value=sf, limit=need, unit="-",
+        passed=None if sf is None else bool(sf >= need),
+        source=STATIC_SAFETY_SOURCE,
+        note=("breaking force unknown" if fb is None else
+              f"K_s F_t = {loads.effective_pull:.4g} N, S_slack = {loads.slack:.4g} N, q v² = {loads.centrifugal:.4g} N; "
+              f"{basis}"))
+
+
+def peak_tension_check(drive: Drive, loads: DriveLoads) -> Check:
+    """Peak tension of the running chain's tight span ``F_tight + F_d`` against ``F_B / 6`` for
+    roller chains (Diamond Chain's working-load rule, :data:`chaindrive.loads.PEAK_TENSION_RATIO`);
+    information for round link chains (no published limit found)."""
+    fb = drive.chain.breaking_force
+    link = drive.chain.is_link_chain
+    limit = None if (fb is None or link) else float(fb) / F.PEAK_TENSION_RATIO
+    detail = (f"F_tight = {loads.tight:.4g} N + F_d = {loads.dynamic:.4g} N ({loads.dynamic_source}); "
+              f"F_d {loads.dynamic_validity}")
+    if link:
+        return Check(name="peak tension", value=loads.maximum, limit=None, unit="N", passed=None,
+                     source="tight-side tension + dynamic tension of the running chain",
+                     note=detail + "; no published peak limit for round link chains was found", relation="info")
+    return Check(name="peak tension", value=loads.maximum, limit=limit, unit="N",
+                 passed=None if limit is None else bool(loads.maximum <= limit),
+                 source=f"F_B / {F.PEAK_TENSION_RATIO:g}: {PEAK_TENSION_SOURCE}",
+                 note=detail if fb is not None else "breaking force unknown; " + detail, relation="<=")
 
 
 # --------------------------------------------------------------------------- declared parts
@@ -441,7 +436,8 @@ def _slack_sag_checks(ctx: PartContext, sag: float) -> list[Check]:
 
 
 register_part(Part("loads", "Loads and safety", _loads_part, needs=("layout", "entry", "conveyor"),
-                   checks=lambda ctx, loads: [static_safety_check(ctx.drive, loads)], order=20,
+                   checks=lambda ctx, loads: [static_safety_check(ctx.drive, loads), peak_tension_check(ctx.drive, loads)],
+                   order=20,
                    section="chaindrive.workflows.sections:loads_section"))
 register_part(Part("slack_sag", "Sag of the slack span", _slack_sag_part, needs=("layout", "loads", "conveyor"),
                    checks=_slack_sag_checks, order=21, unit="m",

@@ -115,7 +115,7 @@ def layout_command(
     con.print(t)
     con.print(f"effective pull {ten.effective_pull / 1e3:.3f} kN, slack {ten.slack / 1e3:.3f} kN "
               f"({ten.slack_source}), centrifugal {ten.centrifugal / 1e3:.3f} kN, dynamic "
-              f"{ten.dynamic / 1e3:.3f} kN, max {ten.maximum / 1e3:.3f} kN"
+              f"{ten.dynamic / 1e3:.3f} kN, peak {ten.maximum / 1e3:.3f} kN"
               + ("" if analysis.slack_sag is None else f"; slack sag {analysis.slack_sag * 1e3:.1f} mm"))
     if lay.take_up is not None:
         con.print(f"{lay.take_up_kind} for 1/2/3 % elongation: "
@@ -129,7 +129,7 @@ def layout_command(
 
 
 OPTION_ALIASES["select"] = {"teeth_driving": "--teeth", "service_factor": "--service-factor",
-                            "load_character": "--load", "hours_per_day": "--hours-per-day"}
+                            "load_character": "--load-character", "hours_per_day": "--hours-per-day"}
 
 
 @app.command("select")
@@ -146,8 +146,9 @@ def select_command(
                                "ic_hydraulic or ic_mechanical (service-factor table)."),
     driven_machine: str | None = typer.Option(None, "--driven-machine", help="Driven machine of the "
                                               "service-factor table, e.g. varying_conveyor (moderate shock)."),
-    load_character: str | None = typer.Option(None, "--load", help="Load character instead of a driven machine: "
-                                    "smooth, moderate or heavy."),
+    load_character: str | None = typer.Option(None, "--load-character", help="Load character instead of a "
+                                              "driven machine: smooth, moderate or heavy."),
+    load_old: str | None = typer.Option(None, "--load", hidden=True, help="Deprecated: --load-character."),
     service_factor: float | None = typer.Option(None, "--service-factor", "-K", help="Explicit service "
                                                 "factor K_s >= 1, a bare number (instead of the duty class)."),
     hours: float = typer.Option(8.0, "--hours-per-day", help="Operating hours per day, a number in (0, 24]."),
@@ -166,8 +167,8 @@ def select_command(
     method: str | None = typer.Option(None, "--method", help="Rating method for every chain (default: the "
                                       "method of each chain's family), e.g. ansi."),
     required_static_safety: float | None = typer.Option(
-        None, "--required-static-safety", help="Required F_B / F_max, dimensionless (default: the "
-        "analysis's value for the chain, docs/design.md)."),
+        None, "--required-static-safety", help="Required static safety F_B / (K_s F_t + S + q v²), dimensionless "
+        "(default: Chernavsky et al. Table 7.19 by pitch and small-sprocket speed, docs/design.md)."),
     all_sizes: bool = typer.Option(False, "--all-sizes", help="List every adequate chain, not only the "
                                    "smallest adequate pitch per series (ISO B, ISO A = ANSI) and strand count."),
     limit: int = typer.Option(10, "--limit", help="Show at most this many chains (a count)."),
@@ -182,11 +183,17 @@ def select_command(
     """Design a roller chain drive for a duty: the procedure of docs/design.md (service
     factor from the driver and the driven machine, tooth-count policy, rating by the method
     of each chain's family, even link count and exact centre distance, the analysis's
-    static safety, advice). Needs a duty class (--driven-machine or --load) or an explicit
-    --service-factor; prints every factor with its source."""
+    static safety, the peak tension of the running chain, advice, near misses). Needs a duty
+    class (--driven-machine or --load-character) or an explicit --service-factor; prints every
+    factor with its source."""
     from ..design import Duty, design_drive
     from ..errors import InputError
 
+    if load_old is not None:
+        if load_character is not None:
+            raise InputError("give --load-character only (--load is its deprecated name)", field="--load")
+        typer.echo("warning: --load is deprecated; use --load-character", err=True)
+        load_character = load_old
     out_file = None
     if write is not None:
         from .._io import check_output_path
@@ -235,13 +242,17 @@ def select_command(
                   f"{c.centre_distance * 1e3:.2f}", f"{c.rated_power / 1e3:.2f}", f"{c.power_margin:.2f}",
                   c.limited_by.replace("_", "-")] for k, c in enumerate(found, 1)]
     more_rows = [[str(k), c.method, f"{c.chain_speed:.2f}", c.lubrication,
-                  "-" if c.static_safety is None else f"{c.static_safety:.2f} (>= {c.required_static_safety:g})"]
+                  "-" if c.static_safety is None else f"{c.static_safety:.2f} (>= {c.required_static_safety:.3g})",
+                  f"{c.dynamic_tension / 1e3:.2f}",
+                  f"{c.peak_tension / 1e3:.2f}" + ("" if c.peak_tension_limit is None
+                                                   else f" (<= {c.peak_tension_limit / 1e3:.2f})")]
                  for k, c in enumerate(found, 1)]
     tables = ((f"Candidates (design power {rec.design_power / 1e3:.4g} kW)",
                ("#", "chain", "teeth", "links", "centre distance [mm]", "rated [kW]", "margin", "limited by"),
                rank_rows),
-              ("Candidates: chain speed, lubrication, static safety",
-               ("#", "rating method", "v [m/s]", "lubrication region", "static safety (required)"), more_rows))
+              ("Candidates: chain speed, lubrication, static safety, dynamic and peak tension",
+               ("#", "rating method", "v [m/s]", "lubrication region", "static safety (required)",
+                "dynamic tension [kN]", "peak tension [kN] (limit)"), more_rows))
     for title, headers, rows in tables:
         table = Table(title=title)
         for i, h in enumerate(headers):
@@ -256,6 +267,9 @@ def select_command(
                      f"centre distance {rec.centre_distance * 1e3:.2f} mm"))
     for a in rec.advice:
         con.print(escape(f"  advice: {a.name}: {a.note} [{a.source}]"))
+    for m in result.near_misses:
+        con.print(escape(f"Near miss: {' / '.join(m.names)} on {m.driving_teeth} teeth carries "
+                         f"{m.rating_ratio:.1%} of the design power; remedy: {m.remedy}"))
     for c in rec.checks:
         con.print(escape(f"  {c.verdict}: {c.name}: {check_value_text(c)} (limit {check_limit_text(c)}) [{c.source}]"))
     if out_file is not None:

@@ -49,7 +49,8 @@ if TYPE_CHECKING:
     from ..chains import Chain
     from ..drive.model import Drive
 
-__all__ = ["DesignCandidate", "DesignResult", "design_drive", "project_text", "DEFAULT_CENTRE_PITCHES"]
+__all__ = ["DesignCandidate", "DesignResult", "NearMiss", "design_drive", "project_text", "DEFAULT_CENTRE_PITCHES",
+           "NEAR_MISS_BAND"]
 
 #: Default centre distance [pitches] (ISO 10823:2004: 30 ... 50 pitches).
 DEFAULT_CENTRE_PITCHES = 40
@@ -81,7 +82,10 @@ class DesignCandidate(Result):
     lubrication_method: str = ""
     static_safety: float | None = quantity("1", default=None)
     required_static_safety: float = quantity("1", default=6.0)
-    maximum_tension: float = quantity("N", default=0.0)
+    static_tension: float = quantity("N", default=0.0)
+    dynamic_tension: float = quantity("N", default=0.0)
+    peak_tension: float = quantity("N", default=0.0)
+    peak_tension_limit: float | None = quantity("N", default=None)
     teeth_rule: str = ""
     factors: tuple[Factor, ...] = ()
     checks: tuple[Any, ...] = ()
@@ -99,7 +103,9 @@ class DesignCandidate(Result):
             "power_margin": self.power_margin, "method": self.method, "limited_by": self.limited_by,
             "chain_speed": self.chain_speed, "lubrication": self.lubrication,
             "static_safety": self.static_safety, "required_static_safety": self.required_static_safety,
-            "maximum_tension": self.maximum_tension, "teeth_rule": self.teeth_rule,
+            "static_tension": self.static_tension, "dynamic_tension": self.dynamic_tension,
+            "peak_tension": self.peak_tension, "peak_tension_limit": self.peak_tension_limit,
+            "teeth_rule": self.teeth_rule,
             "factors": [f.to_dict() for f in self.factors],
             "advice": [a.to_dict() for a in self.advice], "notes": list(self.notes),
         }
@@ -119,6 +125,7 @@ class DesignResult(Result):
     factors: tuple[Factor, ...]
     recommended: DesignCandidate
     candidates: tuple[DesignCandidate, ...]
+    near_misses: tuple[Any, ...] = ()
 
     @property
     def advice(self) -> tuple[Check, ...]:
@@ -128,7 +135,8 @@ class DesignResult(Result):
     def to_dict(self) -> dict[str, Any]:
         return {"duty": self.duty.to_dict(), "factors": [f.to_dict() for f in self.factors],
                 "recommended": self.recommended.summary(),
-                "candidates": [c.summary() for c in self.candidates]}
+                "candidates": [c.summary() for c in self.candidates],
+                "near_misses": [m.summary() for m in self.near_misses]}
 
 
 def _toml_string(text: str) -> str:
@@ -233,9 +241,11 @@ def _candidate(chain: Chain, twins: tuple[str, ...], duty: Duty, factors: tuple[
 
 
 def _rated(chain: Chain, twins: tuple[str, ...], duty: Duty, ks: float, given_teeth: int | None,
-           method: str | None, teeth: tuple[int, str] | None = None) -> _Rated | str | None:
+           method: str | None, teeth: tuple[int, str] | None = None,
+           short: list[tuple[_Rated, float]] | None = None) -> _Rated | str | None:
     """Steps 2-3 of :func:`_candidate`: teeth (``teeth`` when already chosen), rating, room
-    (``None``: does not carry the load)."""
+    (``None``: does not carry the load; then, when its rating lies within :data:`NEAR_MISS_BAND`
+    of the design power, it is appended to ``short`` with its rating ratio)."""
     from ..rating import chain_rating
     from .policy import driven_teeth
 
@@ -246,6 +256,9 @@ def _rated(chain: Chain, twins: tuple[str, ...], duty: Duty, ks: float, given_te
         warnings.simplefilter("ignore", ValidityRangeWarning)
         r = chain_rating(chain, z1, duty.speed, power=design, method=method)
     if r.rated_power < design:
+        if short is not None and r.rated_power >= (1.0 - NEAR_MISS_BAND) * design:
+            a0 = DEFAULT_CENTRE_PITCHES * chain.pitch if duty.centre_distance is None else duty.centre_distance
+            short.append((_Rated(chain, twins, z1, z2, why, r, a0), r.rated_power / design))
         return None
     a = DEFAULT_CENTRE_PITCHES * chain.pitch if duty.centre_distance is None else duty.centre_distance
     clearance = (_outside_diameter(chain.pitch, z1) + _outside_diameter(chain.pitch, z2)) / 2
@@ -255,7 +268,7 @@ def _rated(chain: Chain, twins: tuple[str, ...], duty: Duty, ks: float, given_te
 
 
 def _laid_out(rated: _Rated, duty: Duty, factors: tuple[Factor, ...], ks: float,
-              required: float | None) -> DesignCandidate | None:
+              required: float | None, dropped: list[tuple[float, str]] | None = None) -> DesignCandidate | None:
     """Steps 4-5 of :func:`_candidate`: links, exact centre distance, loads, static safety."""
     from ..analysis import analyze_drive
     from ..analysis.loads import static_safety_check
@@ -289,7 +302,7 @@ def _laid_out(rated: _Rated, duty: Duty, factors: tuple[Factor, ...], ks: float,
         drive = parse_project(text, filename="design.toml")   # e.g. an implausible chain speed: a note of the row
     notes = list(dict.fromkeys([*r.warnings, *(str(w.message) for w in caught)]))
     checks: tuple[Check, ...] = ()
-    static_value, maximum = None, float("nan")
+    static_value, tensions, peak_limit = None, (0.0, 0.0, 0.0), None
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
         try:
@@ -297,11 +310,19 @@ def _laid_out(rated: _Rated, duty: Duty, factors: tuple[Factor, ...], ks: float,
         except ChainDriveError as exc:  # e.g. a chain without a mass per length: no loads
             notes.append(f"static safety not computed: {exc}")
         else:
-            assert analysis.loads is not None
-            static = static_safety_check(drive, analysis.loads)
+            loads = analysis.loads
+            assert loads is not None
+            static = static_safety_check(drive, loads)
             if static.value is not None and static.passed is False:
+                if dropped is not None:
+                    dropped.append((static.value / drive.static_safety_required,
+                                    f"{chain.name} ({z1}/{z2} teeth) has a static safety of {static.value:.3g} "
+                                    f"< {static.limit:.4g} required (Chernavsky et al. Table 7.19)"))
                 return None
-            static_value, maximum, checks = static.value, analysis.loads.maximum, analysis.checks
+            static_value, checks = static.value, analysis.checks
+            tensions = (loads.tight, loads.dynamic, loads.maximum)
+            peak_limit = next((float(c.limit) for c in checks
+                               if c.name == "peak tension" and isinstance(c.limit, (int, float))), None)
     from ..rating.ansi import multi_strand_factor
 
     cand_factors = factors + (
@@ -316,7 +337,8 @@ def _laid_out(rated: _Rated, duty: Duty, factors: tuple[Factor, ...], ks: float,
         power_margin=r.rated_power / design, method=r.method, limited_by=r.limited_by,
         chain_speed=r.chain_speed, lubrication=r.lubrication, lubrication_method=r.lubrication_method,
         static_safety=static_value, required_static_safety=drive.static_safety_required,
-        maximum_tension=maximum, teeth_rule=why, factors=cand_factors,
+        static_tension=tensions[0], dynamic_tension=tensions[1], peak_tension=tensions[2],
+        peak_tension_limit=peak_limit, teeth_rule=why, factors=cand_factors,
         checks=checks, advice=drive_advice(duty, r, centre_pitches=exact / chain.pitch), notes=tuple(notes), project_text=text)
 
 
@@ -334,7 +356,7 @@ def _failed(candidate: DesignCandidate) -> list[str]:
     if not candidate.checks:   # the analysis could not run (e.g. no mass per length): nothing is verified
         if candidate.lubrication == "C'":
             out.append("speed below the galling limit (galling region, type C')")
-        out.append("static safety F_B / F_max: not computed (" + "; ".join(
+        out.append("static safety: not computed (" + "; ".join(
             n.removeprefix("static safety not computed: ") for n in candidate.notes
             if n.startswith("static safety not computed")) + ")")
     for c in candidate.checks:
@@ -377,14 +399,93 @@ def _tooth_factor(method: str, governing: str, teeth: int, why: str) -> Factor:
                   note=f"{teeth} teeth: {why}")
 
 
+#: A chain whose rating falls short of the design power by at most this fraction is a near miss:
+#: ``select`` names it with the smallest change that makes it pass (issue 30, item 5).
+NEAR_MISS_BAND = 0.05
+#: The most teeth a near miss's remedy adds to its small sprocket.
+NEAR_MISS_MAX_EXTRA_TEETH = 4
+
+
+@dataclass(frozen=True)
+class NearMiss(Result):
+    """A chain whose rating misses the design power by a few per cent, and the smallest change that
+    makes it pass every check (re-analysed: ``remedy_candidate`` is the drive with the change)."""
+
+    chain: str
+    names: tuple[str, ...]
+    driving_teeth: int = quantity("1")
+    rating_ratio: float = quantity("1")
+    remedy: str = ""
+    remedy_candidate: DesignCandidate | None = None
+
+    def summary(self) -> dict[str, Any]:
+        """JSON data in SI units (``select --json``, ``near_misses``)."""
+        c = self.remedy_candidate
+        return {"chain": self.chain, "names": list(self.names), "driving_teeth": self.driving_teeth,
+                "rating_ratio": self.rating_ratio, "remedy": self.remedy,
+                "remedy_drive": None if c is None else {
+                    "driving_teeth": c.driving_teeth, "driven_teeth": c.driven_teeth, "links": c.links,
+                    "centre_distance": c.centre_distance, "rated_power": c.rated_power,
+                    "power_margin": c.power_margin, "static_safety": c.static_safety,
+                    "required_static_safety": c.required_static_safety, "peak_tension": c.peak_tension,
+                    "peak_tension_limit": c.peak_tension_limit}}
+
+
+def _near_misses(short: list[tuple[_Rated, float]], best: DesignCandidate, duty: Duty,
+                 factors: tuple[Factor, ...], ks: float, method: str | None,
+                 required: float | None) -> tuple[NearMiss, ...]:
+    """The near misses lighter than the recommended drive (smaller pitch, or the same pitch in fewer
+    strands), each with the smallest remedy that passes every check after re-analysis: one more
+    small-sprocket tooth, then two, ... up to :data:`NEAR_MISS_MAX_EXTRA_TEETH` (the large wheel at
+    most 120 teeth). A lower service factor is never offered: the duty's shock is what it is; nor a
+    lubrication type: the ACA and ISO 10823 ratings do not rise with it (the type is what the
+    rating requires)."""
+    from .policy import MAXIMUM_DRIVEN_TEETH, driven_teeth
+
+    out = []
+    for rated, ratio in sorted(short, key=lambda x: -x[1]):
+        ch = rated.chain
+        if not (ch.pitch < best.pitch - 1e-12 or (abs(ch.pitch - best.pitch) <= 1e-12 and ch.strands < best.strands)):
+            continue
+        remedy, found, why = f"no change of up to {NEAR_MISS_MAX_EXTRA_TEETH} more small-sprocket teeth passes", None, ""
+        for extra in range(1, NEAR_MISS_MAX_EXTRA_TEETH + 1):
+            z = rated.z1 + extra
+            if driven_teeth(z, duty.speed_ratio) > MAXIMUM_DRIVEN_TEETH:
+                break
+            got = _rated(ch, rated.twins, duty, ks, z, method, teeth=(z, f"near-miss remedy: {extra} more "
+                                                                         f"tooth{'' if extra == 1 else ' teeth'}"))
+            if not isinstance(got, _Rated):
+                continue
+            cand = _laid_out(got, duty, factors, ks, required)
+            if cand is None:
+                why = f"with {z} teeth: static safety below the required value"
+                continue
+            if _failed(cand):
+                why = f"with {z} teeth: " + "; ".join(_failed(cand))
+                continue
+            if not _failed(cand):
+                found = cand
+                remedy = (f"{z} teeth on the small sprocket instead of {rated.z1} "
+                          f"({extra} more), {cand.driven_teeth} on the large: rated {cand.rated_power / 1e3:.4g} kW "
+                          f"for {cand.design_power / 1e3:.4g} kW, every check passes")
+                break
+        if found is None and why:
+            remedy += f" ({why})"
+        out.append(NearMiss(chain=ch.name, names=(ch.name, *rated.twins), driving_teeth=rated.z1,
+                            rating_ratio=float(ratio), remedy=remedy, remedy_candidate=found))
+    return tuple(out)
+
+
 #: Relative margin of the catalogue screen: a chain whose screened rating lies within it
 #: below the design power is rated one by one (the screen's vectorised powers may differ
 #: from the one-chain rating in the last digits).
 SCREEN_MARGIN = 1e-9
 
 
-def _may_carry(chains: list[tuple[Chain, int]], speed: float, design: float, method: str | None) -> list[bool]:
-    """Whether each (chain, teeth) may carry the design power [W] at ``speed`` [rad/s]: the
+def _may_carry(chains: list[tuple[Chain, int]], speed: float, design: float, method: str | None,
+               band: float = 0.0) -> list[bool]:
+    """Whether each (chain, teeth) may carry the design power [W] at ``speed`` [rad/s] (or miss it
+    by at most the fraction ``band``: the near misses): the
     ANSI/ACA rated power ``K_2 min(H_1, H_2)`` of the whole catalogue in one vectorised call
     (:func:`chaindrive.rating.ansi.ansi_link_plate_power`, ``ansi_roller_bushing_power``),
     so that only the chains that may carry it are rated one by one (``chain_rating``).
@@ -410,19 +511,19 @@ def _may_carry(chains: list[tuple[Chain, int]], speed: float, design: float, met
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", ValidityRangeWarning)
         rated = np.minimum(k2 * ansi_link_plate_power(z, speed, p, kp), k2 * ansi_roller_bushing_power(z, speed, p, kr))
-    ok = iter(rated >= design * (1.0 - SCREEN_MARGIN))
+    ok = iter(rated >= design * (1.0 - band - SCREEN_MARGIN))
     return [bool(next(ok)) if a else True for a in ansi]
 
 
 def _lay_out(rated: list[_Rated], duty: Duty, factors: tuple[Factor, ...], ks: float, required: float | None,
-             all_sizes: bool) -> list[DesignCandidate]:
+             all_sizes: bool, dropped: list[tuple[float, str]] | None = None) -> list[DesignCandidate]:
     """The rated chains laid out and loaded (steps 4-5). Unless ``all_sizes``, only the chains
     that can be kept: per series and strand count, design_drive keeps the adequate chains of
     the smallest (galling region, pitch); they are laid out in that order until one passes
     the static safety, and those of its (galling, pitch) with it. The candidates are those
     laying out every chain and filtering afterwards would give."""
     if all_sizes:
-        return [c for r in rated if (c := _laid_out(r, duty, factors, ks, required)) is not None]
+        return [c for r in rated if (c := _laid_out(r, duty, factors, ks, required, dropped)) is not None]
     groups: dict[tuple[str, int], list[_Rated]] = {}
     for r in rated:
         groups.setdefault((_series(r.chain), r.chain.strands), []).append(r)
@@ -433,7 +534,7 @@ def _lay_out(rated: list[_Rated], duty: Duty, factors: tuple[Factor, ...], ks: f
             order = (r.rating.lubrication == "C'", r.chain.pitch)
             if kept is not None and order != kept:
                 break
-            c = _laid_out(r, duty, factors, ks, required)
+            c = _laid_out(r, duty, factors, ks, required, dropped)
             if c is not None:
                 found.append(c)
                 kept = order
@@ -447,7 +548,8 @@ def design_drive(duty: Duty, *, teeth_driving: int | None = None, family: str | 
     r"""Design a two-sprocket roller chain drive for ``duty``: the recommended drive and the candidates.
 
     .. math:: K_2 P_{r,1}(z_1, n_1) \ge K_s P,\qquad
-              \frac{F_B}{F_{max}} \ge S_{req},\qquad X\ \text{even},\ a = a(X)\ \text{exact}
+              \frac{F_B}{K_s F_t + S + q v^2} \ge [s],\qquad F_{peak} \le \frac{F_B}{6},\qquad
+              X\ \text{even},\ a = a(X)\ \text{exact}
 
     Parameters
     ----------
@@ -462,7 +564,8 @@ def design_drive(duty: Duty, *, teeth_driving: int | None = None, family: str | 
         Rating method for every chain (default: the method of each chain's family,
         :func:`chaindrive.rating.default_method`).
     required_static_safety : float, optional
-        Required ``F_B / F_max`` (default the drive's, :data:`chaindrive.drive.model.Drive`).
+        Required static safety ``[s]`` (default the drive's, :attr:`chaindrive.drive.model.Drive.static_safety_required`:
+        Chernavsky et al. Table 7.19 by pitch and small-sprocket speed).
     all_sizes : bool
         Every adequate chain, not only the smallest adequate pitch per series and strands.
     limit : int, optional
@@ -523,20 +626,25 @@ def design_drive(duty: Duty, *, teeth_driving: int | None = None, family: str | 
             if family is None and ch.family == "ansi" and twins:
                 continue  # one row per chain: the ISO 606 twin carries both names
             chains.append((ch, twins, _teeth_for(ch, duty, teeth_driving)))
-    may_carry = _may_carry([(ch, z[0]) for ch, _, z in chains], duty.speed, duty.power * ks, method)
+    may_carry = _may_carry([(ch, z[0]) for ch, _, z in chains], duty.speed, duty.power * ks, method,
+                           NEAR_MISS_BAND)
     rated: list[_Rated] = []
+    short: list[tuple[_Rated, float]] = []
     too_close: list[str] = []
     for (ch, twins, teeth), maybe in zip(chains, may_carry, strict=True):
         if not maybe:
             continue
-        got = _rated(ch, twins, duty, ks, teeth_driving, method, teeth)
+        got = _rated(ch, twins, duty, ks, teeth_driving, method, teeth, short=short)
         if isinstance(got, str):
             too_close.append(got)
         elif got is not None:
             rated.append(got)
-    found = _lay_out(rated, duty, factors, ks, required_static_safety, all_sizes)
+    dropped: list[tuple[float, str]] = []
+    found = _lay_out(rated, duty, factors, ks, required_static_safety, all_sizes, dropped)
     if not found:
         extra = f"; sprockets too large for the centre distance: {', '.join(too_close[:4])}" if too_close else ""
+        if dropped:
+            extra += "; the nearest, " + max(dropped)[1]
         raise InfeasibleError(
             f"no catalogue roller chain carries {duty.power * ks / 1e3:g} kW (design power) at "
             f"{angular_velocity_to_rpm(duty.speed):g} rpm with the required static safety{extra}; try more strands, "
@@ -567,5 +675,6 @@ def design_drive(duty: Duty, *, teeth_driving: int | None = None, family: str | 
             f"try {_remedies(failed, 4 in allowed)}")
     rows = [passing[0], *(c for c in rows if c is not passing[0])]
     rows = rows[:limit] if limit else rows
-    return DesignResult(duty=duty, factors=factors, recommended=rows[0], candidates=tuple(rows))
+    near = _near_misses(short, rows[0], duty, factors, ks, method, required_static_safety)
+    return DesignResult(duty=duty, factors=factors, recommended=rows[0], candidates=tuple(rows), near_misses=near)
 

@@ -537,15 +537,26 @@ class Drive:
                              "[chain] table of the project", field="chain.mass_per_length")
         return float(q)
 
+    def small_sprocket_speed(self) -> float:
+        """Speed of the fastest toothed wheel [rad/s]: ``ω z_driving / z_min`` (the small sprocket of a
+        two-sprocket drive; the driving wheel's speed when wheels have no teeth)."""
+        z0 = self.driving_wheel.teeth
+        teeth = [w.teeth for w in self.wheels if w.teeth is not None]
+        if z0 is None or not teeth:
+            return float(self.speed)
+        return float(self.speed) * z0 / min(teeth)
+
     @property
     def static_safety_required(self) -> float:
-        """Required ``F_B / F_max``: the drive's ``required_static_safety``, or the one table's
-        value for its chain kind (:data:`chaindrive.loads.REQUIRED_STATIC_SAFETY`: 6 roller, 3.5 link)."""
+        """Required static safety ``[s]`` (:func:`chaindrive.loads.static_safety`): the drive's
+        ``required_static_safety``, else 3.5 for a round link chain and, for a roller chain,
+        Chernavsky et al.'s Table 7.19 at the chain's pitch and the small sprocket's speed
+        (:func:`chaindrive.loads.required_static_safety_table`; docs/design.md, "One static safety")."""
         if self.required_static_safety is not None:
             return float(self.required_static_safety)
-        from ..loads import REQUIRED_STATIC_SAFETY
+        from ..loads import required_static_safety_for
 
-        return REQUIRED_STATIC_SAFETY["link" if self.chain.is_link_chain else "roller"]
+        return required_static_safety_for(self.chain.is_link_chain, self.pitch, self.small_sprocket_speed())
 
     def pitch_radii(self) -> np.ndarray:
         """Pitch radius of every wheel in chain order [m]."""

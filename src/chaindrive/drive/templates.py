@@ -26,7 +26,7 @@ speed = "960 rpm"               # driving wheel
 # links = 122                   # chain length in pitches (default: required, rounded up to even)
 slack_sag_ratio = 0.02          # slack-span sag / span (ISO 10823 guidance: about 2 %)
 travel = "ccw"                  # the chain runs along the wheel list ("cw": against it)
-required_static_safety = 6      # F_B / F_max; 9 with slip-fit or offset connecting links (Diamond Chain)
+# required_static_safety = 10  # [s] of F_B / (K_s F_t + S_slack + q v²); default Chernavsky et al. Table 7.19 (pitch, speed)
 elongation_limit = 0.03         # wear limit (3 %)
 
 [chain]
@@ -240,7 +240,7 @@ name = "Intermediate crawler drive of a conveyor"
 description = "40B drive chain with cams, 10/10 teeth, tangent guide, 20 kN traction force"
 speed = "50 rpm"                # driving sprocket
 travel = "ccw"
-required_static_safety = 6      # F_B / F_max; 9 with slip-fit or offset connecting links (Diamond Chain)
+# required_static_safety = 10  # [s] of F_B / (K_s F_t + S_slack + q v²); default Chernavsky et al. Table 7.19 (pitch, speed)
 elongation_limit = 0.03
 slack_tension = "6 kN"          # pre-tension set by the tensioning sprocket
 

@@ -126,7 +126,7 @@ def lookup(result: Any, path: str) -> Any:
     """The value at a dotted ``path`` of a result dict (``None`` where there is none).
 
     List entries are reached by index, list entries that are dicts with a ``name`` also by
-    that name (``"checks.static safety F_B / F_max.passed"``).
+    that name (``"checks.static safety.passed"``).
 
     Examples
     --------

@@ -41,6 +41,7 @@ DEFAULTS: dict[str, str] = {
     "driven_speed": "",
     "driver": "electric_motor",
     "driven": "uniform_conveyor",
+    "load_character": "",   # empty: the driven machine's (the service-factor table)
     "service_factor": "",
     "hours_per_day": "8",
     "chain": "",
@@ -89,6 +90,7 @@ CHOICES: dict[str, tuple[str, ...]] = {
     "tensioner": ("", "on"),
     "tensioner_mechanism": ("", "lever", "sliding"),
     "guide": ("", "tangential", "chordal"),
+    "load_character": ("", "smooth", "moderate", "heavy"),
     **EXTRA_CHOICES,
 }
 
@@ -187,6 +189,14 @@ def _number(state: dict[str, str], name: str, errors: dict[str, str]) -> float |
         return None
 
 
+def load_character_of(state: dict[str, str]) -> str:
+    """The load character of the form: the one chosen, or the driven machine's (the name
+    ``load_character`` of :class:`chaindrive.design.Duty` and ``select --load-character``)."""
+    if state.get("load_character"):
+        return state["load_character"]
+    return str(service_factor_table()["driven_machines"][state["driven"]][1])
+
+
 def _duty(state: dict[str, str], errors: dict[str, str]) -> tuple:
     power = _number(state, "power", errors)
     speed = _number(state, "speed", errors)
@@ -201,7 +211,7 @@ def _duty(state: dict[str, str], errors: dict[str, str]) -> tuple:
     else:
         ratio = _number(state, "ratio", errors)
     table = service_factor_table()
-    character = table["driven_machines"][state["driven"]][1]
+    character = load_character_of(state)
     if state["service_factor"].strip():
         ks = _number(state, "service_factor", errors)
         source = "given"
@@ -238,12 +248,13 @@ def _teeth(state: dict[str, str], errors: dict[str, str], ratio: float | None,
 
 @lru_cache(maxsize=128)
 def _roller_design(power: float, speed: float, ratio: float, service_factor: float | None, driver: str,
-                   driven: str, hours: float, centre: float | None, teeth: int | None) -> Any:
+                   driven: str, hours: float, centre: float | None, teeth: int | None,
+                   load_character: str | None = None) -> Any:
     """The design procedure's answer for the form's duty (cached by the duty)."""
     from ..design import Duty, design_drive
 
     duty = Duty(power, speed, ratio=ratio, driver=driver, driven_machine=driven, service_factor=service_factor,
-                hours_per_day=hours, centre_distance=centre)
+                hours_per_day=hours, centre_distance=centre, load_character=load_character)
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", ValidityRangeWarning)
         return design_drive(duty, teeth_driving=teeth, limit=8)
@@ -252,6 +263,8 @@ def _roller_design(power: float, speed: float, ratio: float, service_factor: flo
 def _candidate_rows(result: Any) -> list[dict]:
     return [{"chain": c.chain, "strands": c.strands, "pitch": c.pitch, "rated_power": c.rated_power,
              "design_power": c.design_power, "margin": c.power_margin, "static_safety": c.static_safety,
+             "required_static_safety": c.required_static_safety, "dynamic_tension": c.dynamic_tension,
+             "peak_tension": c.peak_tension, "peak_tension_limit": c.peak_tension_limit,
              "lubrication": c.lubrication, "governing_limit": c.limited_by, "notes": tuple(c.notes),
              "teeth_driving": c.driving_teeth, "teeth_driven": c.driven_teeth, "links": c.links,
              "centre_distance": c.centre_distance,
@@ -405,8 +418,11 @@ def design_from_state(state: dict[str, str]) -> tuple[Design | None, dict[str, s
             else:
                 given_ks = ks if state["service_factor"].strip() else None
                 result = _roller_design(power, speed, ratio, given_ks, state["driver"], state["driven"], hours,
-                                        centre, z1)
+                                        centre, z1, state["load_character"] or None)
                 candidates = _candidate_rows(result)
+                note = " ".join(f"Near miss: {' / '.join(m.names)} on {m.driving_teeth} teeth carries "
+                                f"{m.rating_ratio:.1%} of the design power; remedy: {m.remedy}."
+                                for m in result.near_misses)
         else:
             assert z1 is not None
             candidates = link_candidates(power, speed, ks, z1, required)

@@ -29,6 +29,7 @@ from .design import (
     DEFAULTS,
     FIELDS,
     design_from_state,
+    load_character_of,
     normalise_state,
     service_factor_table,
     state_from_project,
@@ -113,7 +114,7 @@ def studio_payload(state: dict[str, str]) -> dict[str, Any]:
     design, errors = design_from_state(state)
     out: dict[str, Any] = {"errors": errors, "query": state_query(state), "state": state}
     table = service_factor_table()
-    character = table["driven_machines"][state["driven"]][1]
+    character = load_character_of(state)
     out["service_factor_table"] = {"value": table["factors"][character][state["driver"]],
                                    "character": table["characters"][character],
                                    "driver": table["drivers"][state["driver"]],
@@ -296,6 +297,8 @@ def router(ctx: Any) -> APIRouter:
         driven_options = [(k, v[0]) for k, v in table["driven_machines"].items()]
         return ctx.render(request, "studio.html", state=state, table=table, fields=FIELDS,
                           driven_options=driven_options, required_safety=REQUIRED_STATIC_SAFETY,
+                          load_characters=[("", "from the driven machine")] + [(c, table["characters"][c]) for c in
+                                                                               ("smooth", "moderate", "heavy")],
                           downloads=DOWNLOADS, open_error=request.query_params.get("open_error", "")[:500],
                           mining_query=_example_query("mining_conveyor.toml"),
                           query=state_query(state), extra_rows=extra_rows(state), extra_max=MAX_EXTRA_WHEELS,

@@ -209,23 +209,28 @@ def loads_section(a: DriveAnalysis, fig: _Figures) -> Section | None:
     d = a.drive
     sec = Section("Loads and safety")
     sec.tables.append(Table(
-        "Chain tensions (F_max = K_s T / R + S_slack + q v² + F_d)", ["quantity", "value", "unit", "basis"],
-        [["effective pull K_s T / R", *_q(t, "effective_pull"), "torque over the pitch radius of the driving wheel"],
-         ["slack-side tension", *_q(t, "slack"), t.slack_source],
-         ["centrifugal tension q v²", *_q(t, "centrifugal"), "q v²"],
-         ["tight-side tension", *_q(t, "tight"), "sum of the above"],
+        "Chain tensions: static F_tight = K_s T / R + S_slack + q v² (the static safety's, Chernavsky et al. "
+        "eq. (7.40)); peak of the running chain F_tight + F_d (the peak-tension check)",
+        ["quantity", "value", "unit", "basis"],
+        [["effective pull K_s T / R", *_q(t, "effective_pull"),
+          f"K_s = {d.load.service_factor:g} (service factor: the driven machine's shock) times the torque over the "
+          "pitch radius of the driving wheel"],
+         ["slack-side tension S_slack", *_q(t, "slack"), t.slack_source],
+         ["centrifugal tension q v²", *_q(t, "centrifugal"), "q v² (ISO 10823:2004)"],
+         ["static tight-side tension F_tight", *_q(t, "tight"), "sum of the above: the static safety's denominator"],
          ["peak chain acceleration", t.acceleration_peak, "m/s²", t.acceleration_source],
          ["mass accelerated", *_q(t, "moving_mass"), "reduced to the chain"],
-         ["dynamic tension F_d", *_q(t, "dynamic"), "polygonal action: " + t.dynamic_source],
-         ["maximum tension", *_q(t, "maximum"), "tight + dynamic"],
-         ["dynamic factor", t.dynamic_factor, "-", "maximum / tight"]]))
+         ["dynamic tension F_d", *_q(t, "dynamic"), f"{t.dynamic_source}; {t.dynamic_validity}"],
+         ["peak tension F_tight + F_d", *_q(t, "maximum"), "the peak-tension check's value (limit F_B / 6)"],
+         ["dynamic factor", t.dynamic_factor, "-", "peak / static tight-side tension"]]))
     n = len(t.wheel_names)
     shares = t.power_shares if t.power_shares is not None else np.zeros(n)
     powers = t.wheel_powers if t.wheel_powers is not None else np.zeros(n)
     torques = t.wheel_torques if t.wheel_torques is not None else np.zeros(n)
     sec.tables.append(Table(
         "Per wheel: power taken off, span tensions (without centrifugal part) and shaft load "
-        "(vector sum of the two span tensions); the tension rises across each driven wheel by its share "
+        "(vector sum of the two span tensions, with K_s, without q v² and F_d, as the handbook shaft load "
+        "F_t + 2 F_f: Ivanov, Detali mashin); the tension rises across each driven wheel by its share "
         "of K_s T / R",
         ["wheel", "power share", f"power [{_col(t, 'wheel_powers')}]", f"torque [{_col(t, 'wheel_torques')}]",
          f"tension in [{_col(t, 'span_tensions')}]", f"tension out [{_col(t, 'span_tensions')}]",
