@@ -396,8 +396,9 @@ def vibration_section(a: DriveAnalysis, fig: _Figures) -> Section | None:
         for role in fs.lengths:
             n = sum(1 for name in fs.names if name.startswith(role))
             for i in range(n):
+                hz, _, rad_s = _hz(fs.frequencies[k])
                 rows.append([f"{role} span P{i + 1} (L = {fs.lengths[role]:.3f} m, running tension "
-                             f"{_val(fs.running_tensions[role], 'N'):.3g} {_unit('N')})", *_hz(fs.frequencies[k])])
+                             f"{_val(fs.running_tensions[role], 'N'):.3g} {_unit('N')})", hz, rad_s])
                 k += 1
         sec.tables.append(Table("Free spans as axially moving strings: ω_n = nπc/L (1 − v²/c²), c² = S/(q cos β) "
                                 "(Wickert & Mote 1990; tensioner paper eq. (1))",
