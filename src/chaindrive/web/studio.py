@@ -23,6 +23,7 @@ from starlette.datastructures import UploadFile as StarletteUpload
 
 from .._results import jsonable
 from ..analysis.loads import REQUIRED_STATIC_SAFETY
+from ..display import verdict_text
 from ..errors import ChainDriveError, InputError
 from ..units import angular_velocity_to_rpm
 from .design import (
@@ -34,7 +35,6 @@ from .design import (
     service_factor_table,
     state_from_project,
 )
-from ..display import verdict_text
 from .display import fmt, show
 from .wheels import MAX_EXTRA_WHEELS, extra_rows
 
