@@ -69,7 +69,7 @@ def test_contact_and_service_life_batches_are_used(no_compute):
     changes = [{("contact", "skew"): s * ARCMIN, ("contact", "wear_factor"): k}
                for s, k in ((42, 0.6), (100, 0.65), (206, 0.7), (150, 0.62))]
     out = analyze_variants(drive, changes)
-    assert out.per_variant == ("contact", "service_life")
+    assert out.per_variant == ("contact", "service_life", "life")  # the life reads the service life
     assert [round(a.contact.skew / ARCMIN) for a in out] == [42, 100, 206, 150]
     assert all(a.service_life.relative_life == a.contact.result.relative_life_wear for a in out)
 

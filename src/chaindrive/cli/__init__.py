@@ -32,6 +32,7 @@ TOPICS = (
     "analyze",
     "crawler",
     "study",
+    "life",
 )
 
 for _topic in TOPICS:

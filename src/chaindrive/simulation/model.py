@@ -396,6 +396,11 @@ class SimulationModel:
     bar_diameter : float or None
         Round link chain: bar diameter ``d`` [m], ``0 < d < t/2`` (``None``: roller
         chain). The wheels are then pocket wheels with ``teeth`` pockets.
+    wheel_pitch : float or None
+        Pitch the sprockets are cut for [m] (roller chains; ``None``: ``pitch``). A worn
+        chain is ``pitch = p (1 + e)`` on wheels of ``wheel_pitch = p``: the chain is placed on
+        its own pitch polygons (the rollers ridden out to ``R (1 + e)``), the tooth gaps are
+        the wheels' (docs/life.md). ``pitch / 1.3 <= wheel_pitch <= pitch``.
     """
 
     pitch: float
@@ -419,6 +424,7 @@ class SimulationModel:
     prestrain: float = 0.0
     tooth_flank: str = "arc"
     bar_diameter: float | None = None
+    wheel_pitch: float | None = None
 
     def __post_init__(self):
         for name in ("pitch", "link_mass", "axial_stiffness", "roller_radius",
@@ -463,6 +469,14 @@ class SimulationModel:
                                  f"got {w.plain_radius:g}")
         if self.tooth_flank not in ("arc", "straight"):
             raise InputError(f"tooth_flank must be one of arc, straight, got {self.tooth_flank!r}")
+        if self.wheel_pitch is not None:
+            if self.bar_diameter is not None:
+                raise InputError("wheel_pitch (a worn chain on its wheels) is for roller chains only",
+                                 field="wheel_pitch")
+            if not self.pitch / 1.3 <= self.wheel_pitch <= self.pitch:
+                raise InputError(f"wheel_pitch must lie in [pitch/1.3, pitch] = [{self.pitch / 1.3:g}, "
+                                 f"{self.pitch:g}] m (a chain worn by at most 30 %), got {self.wheel_pitch!r}",
+                                 field="wheel_pitch")
         if not 0.0 <= self.prestrain < 0.01:
             raise InputError(f"prestrain must be in [0, 0.01), got {self.prestrain!r}")
         if self.tensioner is not None and not 0 <= self.tensioner.wheel < len(self.wheels):
@@ -519,14 +533,28 @@ class SimulationModel:
         from ..geometry.sprocket import iso_tooth_form, tip_diameter_limits
 
         d1 = 2.0 * self.roller_radius
+        p = self.tooth_pitch
         if self.tip_height is not None:
-            tip = self.pitch / math.sin(math.pi / teeth) + 2.0 * self.tip_height
+            tip = p / math.sin(math.pi / teeth) + 2.0 * self.tip_height
         elif teeth >= 9:
-            tip = 0.5 * float(sum(tip_diameter_limits(self.pitch, teeth, d1)))
+            tip = 0.5 * float(sum(tip_diameter_limits(p, teeth, d1)))
         else:  # below ISO 606 Annex A: the same clause 5.5 formula, extrapolated
-            tip = self.pitch / math.sin(math.pi / teeth) \
-                + self.pitch * (1.125 - 0.8 / teeth) - d1
-        return iso_tooth_form(self.pitch, teeth, d1, seat_radius=self.seat, tip_diameter=tip)
+            tip = p / math.sin(math.pi / teeth) + p * (1.125 - 0.8 / teeth) - d1
+        return iso_tooth_form(p, teeth, d1, seat_radius=self.seat, tip_diameter=tip)
+
+    @property
+    def tooth_pitch(self) -> float:
+        """Pitch the sprockets are cut for [m]: ``wheel_pitch``, else the chain's ``pitch``."""
+        return self.pitch if self.wheel_pitch is None else float(self.wheel_pitch)
+
+    def seat_radii(self) -> np.ndarray:
+        """Radius of every wheel's seat centres [m]: the pitch radius of the wheel's own pitch
+        (:attr:`tooth_pitch`; :meth:`pitch_radii` is the chain's polygon)."""
+        radii = self.pitch_radii()
+        if self.wheel_pitch is None:
+            return radii
+        return np.array([w.pitch_radius(self.tooth_pitch) if w.plain_radius is None else r
+                         for w, r in zip(self.wheels, radii, strict=True)])
 
     @property
     def link_stiffness(self) -> float:

@@ -94,7 +94,7 @@ def kernel_arrays(model: SimulationModel, dt: float | None = None) -> tuple[np.n
     par[K.P_CG] = 2.0 * model.contact_damping_ratio * math.sqrt(model.guide_stiffness * model.link_mass)
     nw = len(model.wheels)
     wp = np.zeros((nw, K.NWP))
-    radii = model.pitch_radii()
+    radii = model.seat_radii()  # the wheels' own pitch (a worn chain: model.wheel_pitch)
     for i, w in enumerate(model.wheels):
         psi = model.seat_angle(w.teeth)
         wp[i, K.W_CX], wp[i, K.W_CY] = w.centre
@@ -110,7 +110,7 @@ def kernel_arrays(model: SimulationModel, dt: float | None = None) -> tuple[np.n
         if w.plain_radius is None and not model.is_link_chain and model.tooth_flank == "arc":
             # ISO 606 convex flank arc (sprockets of roller chains)
             (wp[i, K.W_RE], wp[i, K.W_CEA], wp[i, K.W_CEB], wp[i, K.W_TCA], wp[i, K.W_TCB],
-             wp[i, K.W_DTA], wp[i, K.W_DTB]) = iso_flank(model.pitch, w.teeth, model.roller_radius,
+             wp[i, K.W_DTA], wp[i, K.W_DTB]) = iso_flank(model.tooth_pitch, w.teeth, model.roller_radius,
                                                          model.seat, psi, model.tip(w.teeth))
         if w.plain_radius is not None:
             # toothless idler: penalty contact with its running circle, no seats

@@ -178,6 +178,9 @@ def studio_payload(state: dict[str, str]) -> dict[str, Any]:
                 rows.append([name.replace("_", " "), *show(value, "-" if unit == "1" else unit, units)])
         out["fretting"] = {"caption": "Fretting and pin slip of the multi-strand chain (Vikulov)", "rows": rows}
     life = next((c for c in analysis.checks if "hours" in c["name"] and isinstance(c["value"], (int, float))), None)
+    over_life = None if analysis.analysis is None else analysis.analysis.results.get("life")
+    if over_life is not None:  # the shortest life of wear, jump-over and fatigue (docs/life.md)
+        life = {"value": over_life.life_hours}
     if life is not None and design.hours_per_day > 0:
         out["life_years"] = fmt(life["value"] / (design.hours_per_day * 365.0), 3)
     out["checks"] = checks

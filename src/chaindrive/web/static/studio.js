@@ -104,7 +104,7 @@
     ];
     if (L.centre_distance_exact) rows.push(["exact centre distance for " + L.links + " links", L.centre_distance_exact]);
     rows.push(["chain speed", L.chain_speed]);
-    if (d.life_years) rows.push(["wear life at " + d.duty.hours_per_day + " h/day", d.life_years + " years"]);
+    if (d.life_years) rows.push(["chain life at " + d.duty.hours_per_day + " h/day", d.life_years + " years"]);
     kvTable("layout-out", rows);
     $("drawing").innerHTML = d.drawing || "";
     const lb = $("loads").querySelector("tbody");

@@ -1,0 +1,426 @@
+r"""The drive over its life: elongation, the worn chain on the wheels, jump-over, fatigue, efficiency.
+
+One life per mechanism, each decided here once:
+
+- **wear**: the hours to the drive's elongation limit are the wear part's
+  (:mod:`chaindrive.analysis.wear`), or with a skew the service-life part's
+  (:mod:`chaindrive.analysis.service_life`), never recomputed; the elongation over hours follows
+  it (:func:`chaindrive.life.elongation.elongation_at_hours`). The makers' replacement
+  limit by tooth count is a check on the drive's limit.
+- **jump-over**: for every loaded ISO 606 sprocket, the tight-side tooth load at which the
+  wrap lets the chain ride over (:mod:`chaindrive.life.jump_over`), over the elongation
+  from new to the limit; the elongation at which the margin reaches 1 and the hours to it.
+- **fatigue**: rainflow counting of one link's tension over a lap (span tensions, the
+  centrifugal part and the polygonal dynamic tension on the tight span) against the link
+  plate S–N curve tied to the rating's link-plate line (:mod:`chaindrive.life.fatigue`).
+- **efficiency**: articulation friction on every wheel (:mod:`chaindrive.life.efficiency`).
+
+The worn chain on the wheels: the rollers ride out to ``R (1 + e)``, so the spans shorten
+and the chain is lighter per metre, ``q / (1 + e)``; the span frequencies, the tensioner's
+travel (the layout part's take-up) and the jump-over margins are given over the elongation
+grid ``elongations`` (new → the drive's limit), the worst point named.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from .. import layout as L
+from .._results import Result, quantity
+from .._validation import check_nonnegative
+from ..errors import InputError
+from ..life import efficiency as EF
+from ..life import elongation as EL
+from ..life import fatigue as FA
+from ..life import jump_over as JO
+from ..vibration.resonance import resonance_margin
+from ..vibration.string import moving_string_frequencies
+from ._memo import memo
+from .checks import Check
+from .parts import Part, PartContext, register_part
+
+__all__ = ["DriveLife", "WornState", "drive_life", "worn_state", "ELONGATION_STEPS"]
+
+#: Points of the elongation grid from new to the drive's limit.
+ELONGATION_STEPS = 7
+_SOURCE_LIMIT = ("makers' replacement rule (Diamond Chain, Regal Rexnord): 3 %, 200/z % above 67 teeth, "
+                 "1.5 % on fixed centres")
+_SOURCE_JUMP = ("ISO 606 tooth form, frictionless roller balance (Binder 1956 ch. 5; Naji & Marshek, "
+                "Mech. Mach. Theory 18 (1983) 349); docs/life.md")
+
+
+@dataclass(frozen=True)
+class DriveLife(Result):
+    """The drive over its life (see the module notes). Per-wheel tuples are in the wheel order,
+    ``None`` where the quantity does not apply (idlers, pocket wheels, toothless wheels)."""
+
+    hours: np.ndarray = quantity("h")
+    elongation: np.ndarray = quantity("1")
+    elongation_limit: float = quantity("1")
+    replacement_limit: float | None = quantity("1")
+    replacement_hours: float = quantity("h")
+    elongations: np.ndarray = quantity("1")
+    wheel_names: tuple[str, ...] = ()
+    seating_rise: tuple[float | None, ...] = quantity("m", default=())
+    holding_limit: tuple[float | None, ...] = quantity("1", default=())
+    jump_over_tension: tuple[float | None, ...] = quantity("N", default=())
+    jump_over_margin: tuple[float | None, ...] = quantity("1", default=())
+    jump_over_margins: np.ndarray | None = quantity("1", default=None)
+    jump_over_elongation: float | None = quantity("1", default=None)
+    jump_over_hours: float | None = quantity("h", default=None)
+    jump_over_wheel: str = ""
+    take_up: np.ndarray | None = quantity("m", default=None)
+    span_frequencies: np.ndarray | None = quantity("rad/s", display="rad/s", default=None)
+    resonance_margins: np.ndarray | None = quantity("1", default=None)
+    resonance_worst: str = ""
+    endurance_range: float | None = quantity("N", default=None)
+    fatigue_utilisation: float | None = quantity("1", default=None)
+    fatigue_life_hours: float | None = quantity("h", default=None)
+    efficiency: float | None = quantity("1", default=None)
+    power_loss: float | None = quantity("W", default=None)
+    life_hours: float = quantity("h", default=0.0)
+    governing: str = "wear"
+    wear_basis: str = "wear"
+    notes: tuple[str, ...] = ()
+
+
+def _tooth_form_wheels(drive, layout):
+    """(index, teeth, teeth in mesh) of the ISO 606 sprockets of a roller chain."""
+    chain = drive.chain
+    if chain.roller_diameter is None or chain.bar_diameter is not None:
+        return []
+    out = []
+    for i, w in enumerate(drive.wheels):
+        if w.kind == "sprocket" and w.teeth is not None:
+            out.append((i, int(w.teeth), int(layout.teeth_in_mesh[i] or 0)))
+    return out
+
+
+def _wheel_tensions(loads, n):
+    """(arriving, leaving) static span tension of every wheel, without the centrifugal part [N]."""
+    s = np.asarray(loads.span_tensions, float)
+    return [(float(s[(i - 1) % n]), float(s[i])) for i in range(n)]
+
+
+def _margins(drive, layout, loads, grid, notes):
+    n = len(drive.wheels)
+    wheels = _tooth_form_wheels(drive, layout)
+    tens = _wheel_tensions(loads, n)
+    rise = [None] * n
+    hold = [None] * n
+    t_jump = [None] * n
+    margin = [None] * n
+    curves = np.full((n, grid.size), np.nan)
+    e_jump, wheel_jump = None, ""
+    p, d1 = drive.pitch, drive.chain.roller_diameter
+    for i, z, seated in wheels:
+        hi, lo = max(tens[i]), min(tens[i])
+        limit = JO.holding_limit(p, z, d1)
+        hold[i] = limit
+        rise[i] = float(p / (2 * math.sin(math.pi / z)) * grid[-1])
+        # past its holding limit no sprocket holds the chain, loaded or not
+        if e_jump is None or limit < e_jump:
+            e_jump, wheel_jump = limit, drive.wheels[i].name
+        if grid[-1] > limit:
+            continue  # the holding check fails; no margin past the corner
+        if hi - lo <= 1e-9 * max(hi, 1.0) or seated < 1:
+            continue  # no tooth load: an idler sprocket, or nothing seated
+        betas = JO.tension_ratio(p, z, d1, grid)
+        with np.errstate(divide="ignore"):
+            tj = np.where(betas > 0, lo * betas ** (-float(seated)), np.inf)
+        curves[i] = tj / hi
+        t_jump[i] = float(tj[-1])
+        margin[i] = float(tj[-1] / hi)
+        # elongation where the margin reaches 1 (or the holding limit), by bisection on the ratio
+        e_w = _jump_elongation(p, z, d1, seated, lo / hi, limit)
+        if e_w < e_jump:
+            e_jump, wheel_jump = e_w, drive.wheels[i].name
+    if not wheels:
+        notes.append("jump-over: no ISO 606 sprocket on a roller chain (pocket wheels and track wheels "
+                     "are not modelled)")
+    curves_out = None if np.all(np.isnan(curves)) else curves
+    return rise, hold, t_jump, margin, curves_out, e_jump, wheel_jump
+
+
+def _jump_elongation(p, z, d1, seated, back_ratio, limit):
+    """Smallest elongation where ``β(e)^-n T2/T1 <= 1``, or the holding limit."""
+    def excess(e):
+        b = float(JO.tension_ratio(p, z, d1, e))
+        return math.inf if b <= 0 else back_ratio * b ** (-float(seated)) - 1.0
+
+    top = limit * (1 - 1e-9)
+    if excess(top) > 0:
+        return limit
+    lo_e, hi_e = 0.0, top
+    if excess(0.0) <= 0:
+        return 0.0
+    for _ in range(40):
+        mid = 0.5 * (lo_e + hi_e)
+        if excess(mid) > 0:
+            lo_e = mid
+        else:
+            hi_e = mid
+    return hi_e
+
+
+def _span_frequencies(drive, layout, loads, grid):
+    """First transverse frequency of every span over the elongation grid [rad/s] (spans × grid)."""
+    q = drive.chain.mass_per_length
+    if not q:
+        return None
+    w = layout.wrap
+    v = float(loads.chain_speed)
+    tension = np.asarray(loads.span_tensions, float) + float(loads.centrifugal)
+    lengths = np.column_stack([L.wrap_layout(w.centres, np.asarray(w.radii) * (1.0 + e), w.sides).span_length
+                               for e in grid])
+    return moving_string_frequencies(tension[:, None], q / (1.0 + grid[None, :]), lengths, chain_speed=v,
+                                     modes=1)[..., 0]
+
+
+def _resonance(freqs, vibration, grid, names):
+    """Smallest margin to the 0.7…1.4 band of every excitation against every span's first
+    frequency, at each elongation; the worst point in words."""
+    if freqs is None or vibration is None or not vibration.excitations:
+        return None, ""
+    exc = dict(vibration.excitations)
+    keys = list(exc)
+    omega = np.array([exc[k] for k in keys], float)
+    ratio = omega[:, None, None] / freqs[None, :, :]  # excitation × span × elongation
+    margin = np.asarray(resonance_margin(ratio), float)
+    per_e = margin.min(axis=(0, 1))
+    i, j, k = np.unravel_index(int(np.argmin(margin)), margin.shape)
+    n = len(names)
+    worst = (f"{keys[i]} on span {names[j]} → {names[(j + 1) % n]} at {grid[k]:.4g} elongation "
+             f"(P/ω = {ratio[i, j, k]:.3g}, margin {margin[i, j, k]:.3g})")
+    return per_e, worst
+
+
+def _lap_history(drive, layout, loads):
+    """Tension of one link over a lap [N]: each span's static tension with the centrifugal part,
+    in chain order. The polygonal dynamic tension is not added: the rating's link-plate line,
+    to which the endurance is tied, is an empirical basis of chains running on sprockets, so it
+    already holds the polygonal action of a drive at that tension."""
+    span = np.asarray(loads.span_tensions, float) + float(loads.centrifugal)
+    return np.r_[span, span[0]]
+
+
+def _fatigue(drive, layout, loads, rating, notes):
+    if rating is None:
+        notes.append("fatigue: no link-plate rating for this chain, so no S–N endurance (roller chains of "
+                     "ISO 606 / ANSI only)")
+        return None, None, None
+    r = rating.rating
+    endurance = float(r.link_plate) / float(r.chain_speed)
+    try:
+        cycles = FA.rainflow_cycles(_lap_history(drive, layout, loads))
+    except ImportError:
+        notes.append("fatigue: rainflow counting needs the 'rainflow' package (pip install 'chaindrive[life]')")
+        return endurance, None, None
+    eq = FA.equivalent_range(cycles.ranges, cycles.means)
+    util = float(np.max(eq)) / endurance if eq.size else 0.0
+    damage = FA.miner_damage(cycles, endurance)
+    laps_per_hour = float(loads.chain_speed) * 3600.0 / float(layout.chain_length)
+    life = None if damage <= 0 else 1.0 / (damage * laps_per_hour)
+    return endurance, util, life
+
+
+def _efficiency(drive, layout, loads, notes):
+    ch = drive.chain
+    d = ch.pin_diameter if ch.pin_diameter is not None else ch.bar_diameter
+    if d is None:
+        notes.append("efficiency: the chain has no pin (or bar) diameter")
+        return None, None
+    n = len(drive.wheels)
+    cf = float(loads.centrifugal)
+    tens = _wheel_tensions(loads, n)
+    radii = np.asarray(layout.pitch_radii, float)
+    # articulation angle per joint on each wheel: 2 asin(p / 2R) (= 2π/z on a sprocket)
+    angle = 2.0 * np.arcsin(np.minimum(1.0, drive.pitch / (2.0 * radii)))
+    sides = 2.0 * math.pi / angle
+    t_in = np.array([t[0] for t in tens]) + cf
+    t_out = np.array([t[1] for t in tens]) + cf
+    loss = float(EF.articulation_power_loss(loads.chain_speed, drive.pitch, d, sides, t_in, t_out))
+    power = float(loads.effective_pull) * float(loads.chain_speed) / max(float(drive.load.service_factor), 1e-12)
+    if power <= 0:
+        return None, loss
+    return float(EF.transmission_efficiency(power, min(loss, power))), loss
+
+
+def _life_key(drive, layout, loads, rating, wear_hours, vibration=None, wear_basis="wear"):
+    """Everything the life depends on: the drive (layout, loads, rating, vibration follow from
+    it), the wear life, and which of the optional parts were there."""
+    return (drive, float(wear_hours), rating is None, vibration is None, wear_basis)
+
+
+@memo(maxsize=64, key=_life_key)
+def drive_life(drive, layout, loads, rating, wear_hours, vibration=None, wear_basis="wear") -> DriveLife:
+    """The drive over its life (see the module notes).
+
+    ``wear_hours`` are the hours to the drive's elongation limit as the wear part (or, with
+    a skew, the service-life part) gives them; ``wear_basis`` names which.
+
+    Raises
+    ------
+    InputError
+        No wear life (the drive needs a wear model: a rating or ``wear_coefficient``).
+    """
+    if wear_hours is None:
+        raise InputError("the life over the hours needs a wear life: a rated roller chain, or "
+                         "wear_coefficient in [drive]", field="drive.wear_coefficient")
+    notes: list[str] = []
+    limit = float(drive.elongation_limit)
+    t_lim = float(wear_hours)
+    hours = np.linspace(0.0, t_lim, 11)
+    elong = EL.elongation_at_hours(hours, t_lim, limit)
+    grid = np.linspace(0.0, limit, ELONGATION_STEPS)
+    sprockets = [w.teeth for w in drive.wheels if w.kind == "sprocket" and w.teeth is not None]
+    replacement = None
+    if drive.chain.roller_diameter is not None and sprockets:
+        replacement = float(EL.replacement_limit(max(sprockets), fixed_centres=layout.take_up is None))
+    rise, hold, t_jump, margin, curves, e_jump, wheel_jump = _margins(drive, layout, loads, grid, notes)
+    jump_hours = None if e_jump is None else float(EL.hours_to_elongation(e_jump, t_lim, limit))
+    take_up = None
+    if layout.take_up is not None:
+        # the layout's take-up at 1, 2, 3 %, counted from its setting for the links (which may
+        # already take up spare links): linear between them, and beyond them from the nearer
+        # step; the travel is counted from the new chain
+        e_pts, t_pts = np.asarray(layout.elongations, float), np.asarray(layout.take_up, float)
+        take_up = np.interp(grid, e_pts, t_pts)
+        lo, hi = grid < e_pts[0], grid > e_pts[-1]
+        take_up[lo] = t_pts[0] + (grid[lo] - e_pts[0]) * (t_pts[1] - t_pts[0]) / (e_pts[1] - e_pts[0])
+        take_up[hi] = t_pts[-1] + (grid[hi] - e_pts[-1]) * (t_pts[-1] - t_pts[-2]) / (e_pts[-1] - e_pts[-2])
+        take_up = take_up - take_up[0]
+    freqs = _span_frequencies(drive, layout, loads, grid)
+    res_margins, res_worst = _resonance(freqs, vibration, grid, drive.wheel_names)
+    endurance, util, fat_hours = _fatigue(drive, layout, loads, rating, notes)
+    eff, loss = _efficiency(drive, layout, loads, notes)
+    lives = {"wear": t_lim}
+    if fat_hours is not None:
+        lives["fatigue"] = fat_hours
+    if jump_hours is not None:
+        lives["jump-over"] = jump_hours
+    governing = min(lives, key=lambda k: lives[k])
+    return DriveLife(hours=hours, elongation=np.asarray(elong, float), elongation_limit=limit,
+                     replacement_limit=replacement, replacement_hours=t_lim, elongations=grid,
+                     wheel_names=drive.wheel_names, seating_rise=tuple(rise), holding_limit=tuple(hold),
+                     jump_over_tension=tuple(t_jump), jump_over_margin=tuple(margin), jump_over_margins=curves,
+                     jump_over_elongation=e_jump, jump_over_hours=jump_hours, jump_over_wheel=wheel_jump,
+                     take_up=take_up, span_frequencies=freqs, resonance_margins=res_margins,
+                     resonance_worst=res_worst, endurance_range=endurance,
+                     fatigue_utilisation=util, fatigue_life_hours=fat_hours, efficiency=eff, power_loss=loss,
+                     life_hours=float(lives[governing]), governing=governing, wear_basis=wear_basis,
+                     notes=tuple(notes))
+
+
+@dataclass(frozen=True)
+class WornState(Result):
+    """The worn chain at one point of its life (see :func:`worn_state`)."""
+
+    hours: float = quantity("h")
+    elongation: float = quantity("1")
+    wheel_names: tuple[str, ...] = ()
+    seating_rise: tuple[float | None, ...] = quantity("m", default=())
+    jump_over_margin: tuple[float | None, ...] = quantity("1", default=())
+    take_up: float | None = quantity("m", default=None)
+    span_frequencies: np.ndarray | None = quantity("rad/s", display="rad/s", default=None)
+
+
+def worn_state(drive, layout, loads, life: DriveLife, *, hours: float | None = None,
+               elongation: float | None = None) -> WornState:
+    """The chain after ``hours`` of running, or at ``elongation`` (exactly one of them).
+
+    Raises
+    ------
+    InputError
+        Negative hours or elongation; a point past the drive's elongation limit (the chain
+        is due for replacement: the hours to it are named); an elongation the ISO 606 tooth
+        form of a wheel cannot hold.
+    """
+    if (hours is None) == (elongation is None):
+        raise InputError("give exactly one of hours (e.g. '20000 h') and elongation (e.g. '2 %')", field="hours")
+    limit, t_lim = life.elongation_limit, life.replacement_hours
+    if hours is not None:
+        e = float(EL.elongation_at_hours(hours, t_lim, limit))
+        t = float(hours)
+        if e > limit * (1 + 1e-12):
+            raise InputError(f"after {t:.6g} h the chain has stretched {100 * e:.3g} %, beyond the replacement "
+                             f"limit {100 * limit:.3g} % reached after {t_lim:.6g} h (hours in [0, {t_lim:.6g}] h)",
+                             field="hours")
+    elif elongation is not None:
+        e = float(check_nonnegative("elongation", elongation))
+        if e > limit * (1 + 1e-12):
+            raise InputError(f"elongation {100 * e:.3g} % is beyond the replacement limit {100 * limit:.3g} % "
+                             f"of the drive (elongation in [0, {100 * limit:.3g}] %)", field="elongation")
+        t = float(EL.hours_to_elongation(e, t_lim, limit))
+    n = len(drive.wheels)
+    rise: list[float | None] = [None] * n
+    margin: list[float | None] = [None] * n
+    tens = _wheel_tensions(loads, n)
+    p, d1 = drive.pitch, drive.chain.roller_diameter
+    for i, z, seated in _tooth_form_wheels(drive, layout):
+        seat = JO.worn_seat(p, z, d1, e)  # refuses an elongation the tooth form cannot hold
+        rise[i] = float(seat.rise)
+        hi, lo = max(tens[i]), min(tens[i])
+        if hi - lo > 1e-9 * max(hi, 1.0) and seated >= 1:
+            beta = float(JO.tension_ratio(p, z, d1, e))
+            margin[i] = math.inf if beta <= 0 else lo * beta ** (-float(seated)) / hi
+    take_up = None if life.take_up is None else float(np.interp(e, life.elongations, life.take_up))
+    freqs = None
+    if life.span_frequencies is not None:
+        freqs = np.array([np.interp(e, life.elongations, row) for row in life.span_frequencies])
+    return WornState(t, e, drive.wheel_names, tuple(rise), tuple(margin), take_up, freqs)
+
+
+# --------------------------------------------------------------------------- declared part
+def _part(ctx: PartContext) -> DriveLife | None:
+    wear = ctx["wear"]
+    if wear is None:  # the wear part has said why
+        return None
+    service = ctx["service_life"]  # the wear life with the skew, where a skew is given
+    hours, basis = ((service.hours, "service life with skew") if service is not None else
+                    (wear.hours_to_limit, "wear"))
+    # what does not apply (jump-over on pocket wheels, fatigue without a rating) is in
+    # result.notes, shown by the report section: information, not a warning
+    return drive_life(ctx.drive, ctx["layout"], ctx["loads"], ctx["rating"], float(hours), ctx["vibration"], basis)
+
+
+def _checks(ctx: PartContext, r: DriveLife) -> list[Check]:
+    out: list[Check] = []
+    if r.replacement_limit is not None:
+        out.append(Check("wear elongation limit <= makers' replacement limit", r.elongation_limit,
+                         r.replacement_limit, "-", bool(r.elongation_limit <= r.replacement_limit + 1e-12),
+                         _SOURCE_LIMIT, relation="<="))
+    for name, hold, m in zip(r.wheel_names, r.holding_limit, r.jump_over_margin, strict=True):
+        if hold is None:
+            continue
+        if r.elongation_limit > hold:
+            out.append(Check(f"tooth form of '{name}' holds the chain at the elongation limit", hold,
+                             r.elongation_limit, "-", False, _SOURCE_JUMP, relation=">=",
+                             note="the rollers ride over the tooth corner before the limit"))
+        elif m is not None:
+            out.append(Check(f"jump-over margin on '{name}' at the elongation limit", m, 1.0, "-", bool(m >= 1.0),
+                             _SOURCE_JUMP, note="tight-side tooth load at jump-over / running tooth load"))
+    if r.fatigue_life_hours is not None or r.fatigue_utilisation is not None:
+        out.append(Check("link-plate fatigue: equivalent range / endurance", r.fatigue_utilisation, None, "-", None,
+                         "rainflow (ASTM E1049) + Miner; endurance at the ANSI link-plate line (Tsubaki 1997 "
+                         "Fig. 2.19), FKM S–N slope 5", relation="info",
+                         note="below 1: no fatigue failure" if (r.fatigue_utilisation or 0) < 1 else
+                         f"fatigue life {r.fatigue_life_hours:.0f} h"))
+    if r.resonance_margins is not None:
+        out.append(Check("span resonance over the life: smallest margin to the 0.7…1.4 band", float(np.min(r.resonance_margins)),
+                         None, "-", None, "the tensioner paper's band, span frequencies of the worn chain",
+                         relation="info", note=f"worst: {r.resonance_worst}"))
+    if r.governing != "wear":  # the wear part's check already gives the wear life: one number per life
+        out.append(Check(f"life of the chain (governed by {r.governing})", r.life_hours, None, "h", None,
+                         "wear part, jump-over and fatigue of docs/life.md", relation="info"))
+    if r.efficiency is not None:
+        out.append(Check("efficiency (articulation friction)", r.efficiency, None, "-", None,
+                         "Spicer et al., J. Mech. Des. 123 (2001) 598; calibrated, docs/life.md", relation="info"))
+    return out
+
+
+register_part(Part("life", "The drive over its life", _part, needs=("layout", "loads", "rating", "wear", "service_life", "vibration"),
+                   checks=_checks, order=110, section="chaindrive.workflows.life_section:life_section"))
