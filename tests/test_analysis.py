@@ -163,7 +163,7 @@ def test_every_check_has_unit_source_and_verdict():
 
 
 def test_long_conveyor_fails_the_span_vibration_check_only():
-    # issue 30: the verdict is the forced response (amplification 3.1 of the driving wheel's
+    # issue 30: the verdict is the forced response (amplification 3.5 of the driving wheel's
     # run-out, limit 2.04); the mining conveyor, a mode inside the paper's band but its response
     # amplified 1.9 times, passes
     a = analyze_drive(load_project(EXAMPLES / "long_conveyor.toml"))

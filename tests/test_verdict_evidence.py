@@ -44,13 +44,14 @@ def test_every_verdict_follows_from_its_number(name):
 
 def test_span_vibration_verdict_is_the_forced_response():
     # issue 30 reproducer: the conveyor template FAILed on the band (margin -0.279) while its
-    # forced response was 1.29 mm (amplification 1.88): the verdict is now that number
+    # forced response was 1.29 mm (amplification 1.88; 1.25 mm and 1.82 since the tensioner force
+    # comes from the catenary's end tangents): the verdict is now that number
     a = analyze_drive(parse_project(template("conveyor")), exclude=["remedy"])
     verdict, band = a.checks_of("vibration")
     assert verdict.relation == "<=" and verdict.passed is True
-    assert verdict.value == pytest.approx(1.878, abs=2e-3) and verdict.limit == pytest.approx(2.0417, abs=1e-4)
-    assert "1.29 mm" in verdict.note and "Hz" in verdict.note and "rad/s" in verdict.note
-    assert band.relation == "info" and band.passed is None and band.value == pytest.approx(-0.2794, abs=1e-3)
+    assert verdict.value == pytest.approx(1.818, abs=2e-3) and verdict.limit == pytest.approx(2.0417, abs=1e-4)
+    assert "1.25 mm" in verdict.note and "Hz" in verdict.note and "rad/s" in verdict.note
+    assert band.relation == "info" and band.passed is None and band.value < 0  # a mode inside the band
 
 
 def test_frequencies_in_hz_and_non_uniformity_in_percent():
