@@ -3,8 +3,10 @@
 For roller-chain drives (the roller example, the ``chaindrive new`` roller template and the
 design procedure's drive of issue 19 (12A-1) and its duplex candidate 10B-2) it prints, like with like, the analysis at the
 *nominal* torque (``K_s = 1``: the simulation runs the nominal torque): the tight-side
-tension ``F_tight = T/R + S + q v²``, the dynamic tension ``F_d`` of the polygonal action
-(:func:`chaindrive.analysis.loads.polygonal_spring_mass` +
+tension ``F_tight = T/R + S + q v²``, the analysis's dynamic tension ``F_d``
+(:func:`chaindrive.analysis.dynamic_tension.dynamic_tension`: since issue 29.4 the reduced
+running-tension model; the numbers quoted below were measured with the former spring–mass
+model, :func:`chaindrive.analysis.dynamic_tension.polygonal_spring_mass` +
 :func:`chaindrive.loads.polygonal_dynamic_tension`; the former ``m a_max`` with the whole
 chain beside it) and ``F_max = F_tight + F_d``; and the simulation's tight-span tension
 after settling (mean, median of the per-tooth-period peaks, overall peak;
