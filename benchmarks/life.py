@@ -130,6 +130,10 @@ def main() -> None:
               f"{100 * float(replacement_limit(z)):.2f} %")
     for teeth, elongation in JUMP_CASES:
         jump_over_vs_simulation(teeth, elongation)
+    for teeth, elongation in JUMP_CASES:  # the simulated onset is not a pure ratio: it falls with the load level
+        sim, _rho = simulated_jump_ratio(teeth, elongation, back_force=12000.0)
+        print(f"jump-over, simulation at a 12 kN slide force: z = {teeth}, e = {100 * elongation:g} %: "
+              f"T1/T2 = {sim if sim is None else round(sim)} (3 kN: see above)")
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
         for name in ("roller_industrial", "multi_wheel", "mining_conveyor", "crawler_conveyor"):
