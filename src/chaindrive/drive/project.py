@@ -23,6 +23,7 @@ import tomllib  # noqa: F401 - used by the doctests (Python >= 3.11)
 from pathlib import Path
 from typing import Annotated, Any, Literal
 
+import numpy as np
 from pydantic import (
     BaseModel,
     BeforeValidator,
@@ -39,6 +40,7 @@ from ..limits import MAX_LINKS, MAX_TEETH, warn_implausible
 from ..loads import mean_chain_speed
 from ..units import is_dimensional, parse_quantity, unit_example
 from . import model as _model
+from .clearance import clearance_error
 from .model import Adjustable, Drive, Guide, Load, Tensioner, Wheel
 from .templates import TEMPLATES, template  # the templates of `chaindrive new`
 
@@ -579,7 +581,7 @@ def project_from_mapping(data: dict[str, Any], filename: str = "<project>", *,
         except ChainDriveError as exc:
             raise _located(exc, ("wheels", i), filename, index) from None
     try:
-        return Drive(
+        drive = Drive(
             chain=chain,
             wheels=tuple(wheels),
             speed=_speed_of(proj.drive.speed, chain, wheels, filename, index),
@@ -603,6 +605,11 @@ def project_from_mapping(data: dict[str, Any], filename: str = "<project>", *,
         )
     except ChainDriveError as exc:
         raise _located(exc, _loc_of(exc.field), filename, index) from None
+    try:
+        clearance_error(drive, np.array([w.position for w in drive.wheels], dtype=float))
+    except ChainDriveError as exc:
+        raise _located(exc, _loc_of(exc.field), filename, index) from None
+    return drive
 
 
 def _speed_of(speed: float | ChainSpeedSpec, chain, wheels, filename: str, index: dict) -> float:
