@@ -39,6 +39,7 @@ TOPICS = (
     "crawler",
     "study",
     "life",
+    "cad",
 )
 
 for _topic in TOPICS:
