@@ -636,6 +636,8 @@ API_EXCLUDED = {
     "chaindrive.study.summary": "reads a study folder and writes its summary: tests/test_study_*.py",
     "chaindrive.study.folder": "study folders on disk: tests/test_study_folder.py",
     "chaindrive.study.progress": "progress output of a study run: tests/test_study_folder.py",
+    "chaindrive.cad": "the 3-D assembly of a drive (OCC solids, seconds to minutes a call): exercised by "
+                      "`chaindrive cad` on the cli surface and tests/test_cad*.py",
     "chaindrive.display": "display units of result objects for the presenters (report, CLI, web): exercised "
                           "through the cli, project and web surfaces",
 }
