@@ -325,7 +325,7 @@ def finite_fields(cls: C | None = None, *, allow_infinite: tuple[str, ...] = ())
         return lambda inner: finite_fields(inner, allow_infinite=allow_infinite)
     if getattr(cls, "_finite_fields", False) is cls:  # applied already
         return cls
-    init = cls.__init__
+    init = cls.__init__  # type: ignore[misc]
 
     @functools.wraps(init)
     def __init__(self, *args, **kwargs):
