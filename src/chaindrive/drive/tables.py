@@ -17,10 +17,10 @@ from typing import Any
 
 from ..limits import MAX_LINKS, MAX_TEETH
 from .model import GUIDE_KINDS, TENSIONER_KINDS, TENSIONER_PARTS, WHEEL_KINDS
-from .schema import REQUIRED, Input, InputTable, register_table
+from .schema import REQUIRED, Input, InputTable, all_tables, register_table
 from .specs import RETURN_STRANDS
 
-__all__: list[str] = []
+__all__ = ["table_objects", "table_values", "warn_implausible_inputs"]
 
 
 def _q(name: str, unit: str, default: Any = None, help: str = "", **kw: Any) -> Input:
@@ -228,3 +228,77 @@ register_table(InputTable("conveyor", (
     Input("efficiency", "number", default=1.0, minimum=0.0, open_minimum=True, maximum=1.0,
           help="efficiency of each drive"),
 ), help="scraper conveyor pans, material and drives", order=12))
+
+
+# --------------------------------------------------------------------------- a drive's inputs
+
+
+def table_objects(drive: Any, table: InputTable) -> list[Any]:
+    """The objects of ``drive`` written as ``table`` (an array's entries; none when absent)."""
+    obj: Any = drive
+    if table.name != "drive":
+        for part in table.name.split("."):
+            obj = getattr(obj, part, None)
+    if obj is None:
+        return []
+    return list(obj) if table.array else [obj]
+
+
+def table_values(table: InputTable, obj: Any) -> dict[str, Any]:
+    """The values of ``table``'s fields in ``obj`` (SI; ``None``: not written)."""
+    values = {f.name: getattr(obj, f.name, None) for f in table.fields}
+    if table.name == "chain":  # a catalogue chain: only the fields changed from the catalogue's
+        from ..chains import get
+        from ..errors import UnknownNameError
+
+        try:
+            base = get(obj.name)
+        except UnknownNameError:
+            base = None
+        if base is not None:
+            values = {k: (None if k != "name" and getattr(base, k, None) == v else v) for k, v in values.items()}
+    elif table.name == "tensioner" and obj.mechanism is not None:
+        # described by its parts: the reader reduces them to mass and stiffness again
+        values.update(mass=None, stiffness=None, **dict(obj.parts))
+    return values
+
+
+#: Plausibility check (chaindrive.limits.PLAUSIBLE) by SI unit.
+PLAUSIBLE_KIND = {"rad/s": "angular_velocity", "W": "power", "N": "force"}
+
+
+def warn_implausible_inputs(drive: Any) -> None:
+    """Warn (:class:`~chaindrive.errors.ValidityRangeWarning`) for each input of ``drive``
+    outside its plausible range, as the project-file reader does: speeds, powers, forces
+    and the chain speed ``v = n p ω / 2π`` (:data:`chaindrive.limits.PLAUSIBLE`).
+
+    Examples
+    --------
+    >>> import warnings
+    >>> from chaindrive.chains import get
+    >>> from chaindrive.drive import Drive, Load, Wheel
+    >>> d = Drive(chain=get("16B"), speed=1450.0, load=Load(power=15e3),
+    ...           wheels=(Wheel("a", "sprocket", 19, (0.0, 0.0), driving=True), Wheel("b", "sprocket", 57, (1.0, 0.0))))
+    >>> with warnings.catch_warnings(record=True) as w:
+    ...     warnings.simplefilter("always")
+    ...     warn_implausible_inputs(d)
+    >>> str(w[0].message).startswith("speed = 13846 rpm is implausible")
+    True
+    """
+    from ..limits import warn_implausible
+    from ..loads import mean_chain_speed
+
+    for table in all_tables():
+        for obj in table_objects(drive, table):
+            if table.extra.get("mapping"):
+                continue
+            for f, value in zip(table.fields, table_values(table, obj).values(), strict=True):
+                unit = "rad/s" if f.kind == "speed" else f.unit
+                kind = "pitch" if unit == "m" and f.name == "pitch" else PLAUSIBLE_KIND.get(unit)
+                if value is not None and f.plausible and kind is not None and f.kind in ("quantity", "speed"):
+                    warn_implausible(f.name, value, kind, stacklevel=3)
+    driving = [w for w in drive.wheels if w.driving]
+    if len(driving) == 1 and driving[0].teeth is not None and not warn_implausible(
+            "drive.speed", drive.speed, "angular_velocity", stacklevel=3):
+        v = mean_chain_speed(driving[0].sides_per_turn(drive.chain), drive.chain.pitch, drive.speed)
+        warn_implausible("drive.speed (chain speed n p omega / 2 pi)", v, "chain_speed", stacklevel=3)

@@ -31,6 +31,7 @@ from typing import TYPE_CHECKING, Any
 
 from .model import Drive, Load, Wheel
 from .schema import InputTable, all_tables, field_text, number_text, quantity_text, toml_string
+from .tables import table_objects, table_values
 
 if TYPE_CHECKING:
     from ..selection import Candidate
@@ -57,44 +58,14 @@ class _Lines:
         self.lines.append(f"{key} = {text}" + (f"  # {note}" if note else ""))
 
 
-def _values(table: InputTable, obj: Any) -> dict[str, Any]:
-    """The values of ``table``'s fields in ``obj`` (SI; ``None``: not written)."""
-    values = {f.name: getattr(obj, f.name, None) for f in table.fields}
-    if table.name == "chain":  # a catalogue chain: only the fields changed from the catalogue's
-        from ..chains import get
-        from ..errors import UnknownNameError
-
-        try:
-            base = get(obj.name)
-        except UnknownNameError:
-            base = None
-        if base is not None:
-            values = {k: (None if k != "name" and getattr(base, k, None) == v else v) for k, v in values.items()}
-    elif table.name == "tensioner" and obj.mechanism is not None:
-        # described by its parts: the reader reduces them to mass and stiffness again
-        values.update(mass=None, stiffness=None, **dict(obj.parts))
-    return values
-
-
 def _write_table(out: _Lines, table: InputTable, obj: Any, where: str) -> None:
     """The fields of ``obj`` that are required, differ from their defaults or carry a comment."""
-    for f, value in zip(table.fields, _values(table, obj).values(), strict=True):
+    for f, value in zip(table.fields, table_values(table, obj).values(), strict=True):
         if value is None:
             continue
         if not (f.required or f.shown or value != f.default or f"{where}.{f.name}" in out.comments):
             continue
         out.key(where, f.name, field_text(f, value))
-
-
-def _objects(drive: Drive, table: InputTable) -> list[Any]:
-    """The objects of ``drive`` written as ``table`` (an array's entries; none when absent)."""
-    obj: Any = drive
-    if table.name != "drive":
-        for part in table.name.split("."):
-            obj = getattr(obj, part, None)
-    if obj is None:
-        return []
-    return list(obj) if table.array else [obj]
 
 
 def project_text(drive: Drive, *, header: str | None = None, comments: Mapping[str, str] | None = None) -> str:
@@ -128,7 +99,7 @@ def project_text(drive: Drive, *, header: str | None = None, comments: Mapping[s
     if header:
         out.lines += [ln if ln.startswith("#") or not ln else f"# {ln}" for ln in header.strip("\n").splitlines()]
     for table in all_tables():
-        for i, obj in enumerate(_objects(drive, table)):
+        for i, obj in enumerate(table_objects(drive, table)):
             out.table(table.name, array=table.array)
             if table.extra.get("mapping"):
                 _self_regulating(out, obj)
