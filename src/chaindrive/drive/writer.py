@@ -36,7 +36,7 @@ from .tables import table_objects, table_values
 if TYPE_CHECKING:
     from ..selection import Candidate
 
-__all__ = ["project_text", "drive_to_toml", "candidate_drive", "candidate_project_text", "toml_string",
+__all__ = ["project_text", "mapping_text", "drive_to_toml", "candidate_drive", "candidate_project_text", "toml_string",
            "quantity_text"]
 
 
@@ -105,6 +105,51 @@ def project_text(drive: Drive, *, header: str | None = None, comments: Mapping[s
                 _self_regulating(out, obj)
             else:
                 _write_table(out, table, obj, f"{table.name}.{i}" if table.array else table.name)
+    return "\n".join(out.lines) + "\n"
+
+
+def _value_text(value: Any) -> str:
+    if isinstance(value, str):
+        return toml_string(value)
+    if isinstance(value, (list, tuple)):
+        return "[" + ", ".join(_value_text(v) for v in value) + "]"
+    return number_text(value)
+
+
+def mapping_text(data: Mapping[str, Any], *, header: str | None = None) -> str:
+    """A project mapping (tables of values as typed: ``"64 mm"``, numbers, flags) as TOML text,
+    the declared tables in their order, each key as given.
+
+    :func:`chaindrive.drive.project.project_from_mapping` builds the drive of the same
+    mapping; this is the file a user downloads (the quantities in the units they typed).
+
+    Examples
+    --------
+    >>> print(mapping_text({"load": {"power": "15 kW"}, "drive": {"speed": "960 rpm", "links": 96}}), end="")
+    [drive]
+    speed = "960 rpm"
+    links = 96
+    <BLANKLINE>
+    [load]
+    power = "15 kW"
+    """
+    out = _Lines({})
+    if header:
+        out.lines += [ln if ln.startswith("#") or not ln else f"# {ln}" for ln in header.strip("\n").splitlines()]
+    names = [t.name for t in all_tables()]
+    names += [k for k in data if k not in names]
+    for name in names:
+        parts = name.split(".")
+        table: Any = data
+        for part in parts:
+            table = table.get(part) if isinstance(table, Mapping) else None
+        if table is None:
+            continue
+        for i, entry in enumerate(table if isinstance(table, list) else [table]):
+            out.table(name, array=isinstance(table, list))
+            for key, value in entry.items():
+                if not isinstance(value, Mapping):
+                    out.key(f"{name}.{i}", key, _value_text(value))
     return "\n".join(out.lines) + "\n"
 
 
