@@ -33,6 +33,8 @@ from ..loads import mean_chain_speed
 from . import model as _model
 from ._reader import ChainSpeedSpec, project_model
 from .model import Adjustable, Drive, Guide, Load, Tensioner, Wheel
+from .schema import all_tables, load_providers
+from .tables import further_inputs
 from .templates import TEMPLATES, template  # the templates of `chaindrive new`
 
 __all__ = ["load_project", "parse_project", "project_from_mapping", "line_index", "template", "TEMPLATES"]
@@ -220,6 +222,8 @@ def project_from_mapping(data: dict[str, Any], filename: str = "<project>", *,
     """
     if index is None:
         index = {}
+    if isinstance(data, dict) and set(data) - {t.name.split(".")[0] for t in all_tables()}:
+        load_providers()   # a table an analysis part declares
     try:
         proj: Any = project_model().model_validate(data)
     except ValidationError as exc:
@@ -258,6 +262,7 @@ def project_from_mapping(data: dict[str, Any], filename: str = "<project>", *,
             fretting=None if proj.fretting is None else _model.FrettingSpec(**proj.fretting.model_dump()),
             self_regulating=_self_regulating(proj.self_regulating, filename, index),
             conveyor=None if proj.conveyor is None else _model.Conveyor(**proj.conveyor.model_dump()),
+            extra_inputs=further_inputs(proj),
         )
     except ChainDriveError as exc:
         raise _located(exc, _loc_of(exc.field), filename, index) from None

@@ -25,6 +25,7 @@ Examples
 
 from __future__ import annotations
 
+import importlib
 import json
 import math
 from collections.abc import Callable, Iterator
@@ -33,7 +34,7 @@ from typing import Any
 
 from ..errors import InputError
 
-__all__ = ["REQUIRED", "Input", "InputTable", "register_table", "unregister_table", "get_table", "all_tables",
+__all__ = ["REQUIRED", "Input", "InputTable", "register_table", "unregister_table", "get_table", "all_tables", "load_providers", "TABLE_PROVIDERS",
            "children", "field_text", "number_text", "quantity_text", "toml_string", "docs_table"]
 
 #: The default of a field that must be given.
@@ -130,6 +131,10 @@ class InputTable:
         ``check(model)`` raising ``ValueError`` for rules between fields (message as shown).
     order : float
         Place in a written file.
+    target : callable, optional
+        A further table (not a field of :class:`~chaindrive.drive.model.Drive`): builds its
+        value from the fields, ``target(**fields)`` (default: the validated, frozen model);
+        the drive holds it in ``Drive.extra_inputs`` (:meth:`~chaindrive.drive.model.Drive.input`).
     """
 
     name: str
@@ -141,6 +146,7 @@ class InputTable:
     min_items: int = 0
     check: Callable[[Any], None] | None = None
     order: float = 100.0
+    target: Callable[..., Any] | None = None
     extra: dict[str, Any] = field(default_factory=dict, compare=False)
 
     def field(self, name: str) -> Input:
@@ -174,6 +180,24 @@ def get_table(name: str) -> InputTable:
 def all_tables() -> tuple[InputTable, ...]:
     """Every declared table, in the order of a written file."""
     return tuple(sorted(_TABLES.values(), key=lambda t: t.order))
+
+
+#: ``module:function`` that declare further input tables (the analysis parts' inputs),
+#: called by name (no import: the lower layer names no module above it in code) the first
+#: time a project names a table not declared yet, as :data:`chaindrive._presenters.DEFAULT_PRESENTERS`.
+TABLE_PROVIDERS: list[str] = ["chaindrive.analysis.parts:all_parts"]
+_PROVIDED = False
+
+
+def load_providers() -> None:
+    """Let :data:`TABLE_PROVIDERS` declare their tables (once)."""
+    global _PROVIDED
+    if _PROVIDED:
+        return
+    _PROVIDED = True
+    for spec in TABLE_PROVIDERS:
+        module, _, function = spec.partition(":")
+        getattr(importlib.import_module(module), function)()
 
 
 def children(table: InputTable) -> tuple[InputTable, ...]:
@@ -244,8 +268,10 @@ def docs_rows() -> Iterator[tuple[str, ...]]:
     """(key, kind and unit, range, default, meaning, source) of every declared field."""
     for t in all_tables():
         prefix = f"{t.name}[]" if t.array else t.name
+        if not t.fields:
+            yield (f"`{prefix}.*`", "table", "", "optional", t.help, t.source)
         for f in t.fields:
-            kind = f"{f.kind} [{f.unit}]" if f.unit else f.kind
+            kind = f"{f.kind} [{f.unit}]" if f.unit else ("number" if f.kind == "quantity" else f.kind)
             rng = " / ".join(map(str, f.choices)) if f.choices else f.range_text()
             yield (f"`{prefix}.{f.name}`", kind, rng, _default_text(f), f.help, f.source or t.source)
 

@@ -20,7 +20,7 @@ from .model import GUIDE_KINDS, TENSIONER_KINDS, TENSIONER_PARTS, WHEEL_KINDS
 from .schema import REQUIRED, Input, InputTable, all_tables, register_table
 from .specs import RETURN_STRANDS
 
-__all__ = ["table_objects", "table_values", "warn_implausible_inputs"]
+__all__ = ["table_objects", "table_values", "warn_implausible_inputs", "is_further", "further_inputs"]
 
 
 def _q(name: str, unit: str, default: Any = None, help: str = "", **kw: Any) -> Input:
@@ -236,7 +236,9 @@ register_table(InputTable("conveyor", (
 def table_objects(drive: Any, table: InputTable) -> list[Any]:
     """The objects of ``drive`` written as ``table`` (an array's entries; none when absent)."""
     obj: Any = drive
-    if table.name != "drive":
+    if is_further(table):
+        obj = drive.input(table.name)
+    elif table.name != "drive":
         for part in table.name.split("."):
             obj = getattr(obj, part, None)
     if obj is None:
@@ -302,3 +304,29 @@ def warn_implausible_inputs(drive: Any) -> None:
             "drive.speed", drive.speed, "angular_velocity", stacklevel=3):
         v = mean_chain_speed(driving[0].sides_per_turn(drive.chain), drive.chain.pitch, drive.speed)
         warn_implausible("drive.speed (chain speed n p omega / 2 pi)", v, "chain_speed", stacklevel=3)
+
+
+def is_further(table: InputTable) -> bool:
+    """A table an analysis part declared (held in ``Drive.extra_inputs``), not one of the drive's own."""
+    import dataclasses
+
+    from .model import Drive
+
+    own = {f.name for f in dataclasses.fields(Drive)} | {"drive"}
+    return table.name.split(".")[0] not in own
+
+
+def _built(table: InputTable, model: Any) -> Any:
+    return model if table.target is None else table.target(**dict(model))
+
+
+def further_inputs(project: Any) -> tuple[tuple[str, Any], ...]:
+    """``Drive.extra_inputs`` of a validated project model: each further table's value, built by its
+    ``target`` (default: the frozen model itself)."""
+    out = []
+    for table in all_tables():
+        value = getattr(project, table.name, None) if is_further(table) and "." not in table.name else None
+        if value is None:
+            continue
+        out.append((table.name, tuple(_built(table, v) for v in value) if table.array else _built(table, value)))
+    return tuple(out)
