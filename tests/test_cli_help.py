@@ -16,6 +16,7 @@ NOT_QUANTITIES = {
     "output", "plan", "format", "study", "summary", "template", "sections", "include",
     "exclude", "material", "bore_standard", "keyway", "units", "preset", "scheduler", "write", "strands",
     "driver", "driven_machine", "load_character", "environment", "lubrication",
+    "place", "along", "of",  # layout --place: a wheel name, a direction, a wheel name
 }
 
 

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from html import escape as html_escape
 from pathlib import Path
 
 import pytest
@@ -24,7 +25,7 @@ def test_analysis_repr_html_shows_checks_units_drawing_and_parts(mining):
     html = a._repr_html_()
     assert "at least one check fails" in html                # the demo conveyor's resonance
     for c in a.checks:
-        assert c.name.replace("&", "&amp;") in html or c.name[:20] in html
+        assert html_escape(c.name) in html or c.name.replace("&", "&amp;") in html or c.name[:20] in html
     assert "<svg" in html                                      # the drive drawn to scale, inline
     assert "<td>kN</td>" in html and "<td>mm</td>" in html     # display units of declared fields
     assert "Layout" in html and "Wear life" in html            # each part folded under its title

@@ -43,8 +43,10 @@ __all__ = ["pan_end_clearance", "material_mass_per_length", "strand_resistance",
 
 @dataclass(frozen=True)
 class FreeStrand(Result):
-    """A free (hanging) strand (:func:`free_strand`): tensions, sag and the chain length
-    its catenary takes beyond the chord."""
+    """A free (hanging) strand (:func:`free_strand`): tensions, sag, the chain length
+    its catenary takes beyond the chord, and the directions of the chain at its two ends
+    (``start_angle``, ``end_angle``: angle of the tangent above the horizontal in the
+    direction of travel [rad]; a level chord gives ``start_angle = −end_angle < 0``)."""
 
     horizontal_tension: float = quantity("N")
     start_tension: float = quantity("N")
@@ -52,6 +54,8 @@ class FreeStrand(Result):
     sag: float = quantity("m", display="mm")
     excess_length: float = quantity("m", display="mm")
     lowest_tension: float = quantity("N")
+    start_angle: float = quantity("rad", default=0.0)
+    end_angle: float = quantity("rad", default=0.0)
 
 
 @finite_guard
@@ -362,7 +366,13 @@ def free_strand(chord_length: float, inclination: float, start_tension: float,
         s = \frac{\sinh k(ℓ - x_0) + \sinh k x_0}{k}
 
     The horizontal tension ``H`` is solved (Brent) so that ``T(0)`` is ``start_tension``;
-    the end tension is then ``T(0) + q g h`` exactly.
+    the end tension is then ``T(0) + q g h`` exactly. The chain leaves the start and
+    reaches the end along its tangents, ``\tan φ = y'(x) = \sinh k(x − x_0)``:
+
+    .. math:: φ_0 = −\arctan\sinh k x_0,\quad φ_1 = \arctan\sinh k(ℓ − x_0)
+
+    (the tension at each end acts along these, not along the chord: a wheel held by a
+    free strand is pulled along ``φ``; ``T \cos φ = H`` at both ends).
 
     Parameters
     ----------
@@ -399,6 +409,8 @@ def free_strand(chord_length: float, inclination: float, start_tension: float,
     >>> s = free_strand(28.8, 0.0, 20e3, 6.7)
     >>> round(s.horizontal_tension), round(s.sag, 3), round(s.excess_length * 1e3, 2)
     (19978, 0.341, 10.77)
+    >>> round(math.degrees(s.start_angle), 3), round(math.degrees(s.end_angle), 3)
+    (-2.714, 2.714)
     """
     c = float(check_positive("chord_length", chord_length, "m"))
     gam = float(check_range("inclination", inclination, -math.pi / 2, math.pi / 2, unit="rad"))
@@ -427,4 +439,6 @@ def free_strand(chord_length: float, inclination: float, start_tension: float,
     return FreeStrand(horizontal_tension=float(H), start_tension=T0,
                       end_tension=float(H * math.cosh(k * (span - x0))), sag=sag,
                       excess_length=float(arc - c),
-                      lowest_tension=float(H if 0 < x0 < span else min(T0, H * math.cosh(k * (span - x0)))))
+                      lowest_tension=float(H if 0 < x0 < span else min(T0, H * math.cosh(k * (span - x0)))),
+                      start_angle=float(-math.atan(math.sinh(k * x0))),
+                      end_angle=float(math.atan(math.sinh(k * (span - x0)))))

@@ -24,6 +24,7 @@ gives ``minimum_tension`` at every sprocket exit when running
 
 from __future__ import annotations
 
+import dataclasses
 import math
 from dataclasses import dataclass
 
@@ -33,8 +34,8 @@ from .. import conveyor as C
 from .._results import Result, quantity
 from .._roots import brentq
 from ..drive.model import Drive
-from ..errors import InputError
-from ..layout import GRAVITY
+from ..errors import InfeasibleError, InputError
+from ..layout import GRAVITY, tensioner_travel
 from .checks import Check
 from .layout import DriveLayout, drive_layout
 from .parts import Part, PartContext, register_part
@@ -94,10 +95,20 @@ class ConveyorPull(Result):
     tensioner_force, tensioner_travel : float or None
         Spring tensioner: force on its wheel [N] and slide travel from the position
         where the unstretched chain just fits [m].
+    tensioner_offset : float
+        Where the unstretched chain of the layout's (even) number of links just fits:
+        the tensioner wheel's distance from its drawn position along its travel [m]; the
+        running state (spans, wraps, forces) is computed with the wheel there.
     chain_speed : float
         [m/s].
     source : str
         What sets the tension leaving the head.
+    wheel_tension_in, wheel_tension_out : ndarray
+        Running tension arriving at and leaving each wheel [N] (the drive's wheel order).
+    shaft_loads, shaft_load_angles : ndarray
+        Force of the chain on each wheel's shaft [N] and its direction [rad]: the two
+        spans' tensions of this running state, each along its end tangent (a free
+        strand's catenary tangent, a strand on pans its chord).
     """
 
     tension_profile: TensionProfile
@@ -122,8 +133,13 @@ class ConveyorPull(Result):
     return_sag: float = quantity("m", display="mm", default=0.0)
     tensioner_force: float | None = quantity("N", default=None)
     tensioner_travel: float | None = quantity("m", display="mm", default=None)
+    tensioner_offset: float = quantity("m", display="mm", default=0.0)
     chain_speed: float = quantity("m/s", default=0.0)
     source: str = ""
+    wheel_tension_in: np.ndarray | None = quantity("N", default=None)
+    wheel_tension_out: np.ndarray | None = quantity("N", default=None)
+    shaft_loads: np.ndarray | None = quantity("N", default=None)
+    shaft_load_angles: np.ndarray | None = quantity("rad", default=None)
 
 
 def gravity_direction(drive: Drive) -> np.ndarray:
@@ -181,7 +197,8 @@ def _axial_stiffness(drive: Drive) -> float:
     return AXIAL_STIFFNESS_16B * (float(drive.chain.pitch) / 0.0254) ** 2
 
 
-def conveyor_pull(drive: Drive, layout: DriveLayout | None = None) -> ConveyorPull | None:
+def conveyor_pull(drive: Drive, layout: DriveLayout | None = None, *, fit_tensioner: bool = True
+                  ) -> ConveyorPull | None:
     """Tension along the loop of a scraper conveyor (module notes); ``None`` without ``[conveyor]``.
 
     Parameters
@@ -189,6 +206,9 @@ def conveyor_pull(drive: Drive, layout: DriveLayout | None = None) -> ConveyorPu
     drive : chaindrive.drive.Drive
         With a :class:`~chaindrive.drive.Conveyor`.
     layout : DriveLayout, optional
+    fit_tensioner : bool
+        Move a force tensioner's wheel first to where the unstretched chain of the
+        layout's links just fits (``tensioner_offset``); False: the wheel as drawn.
 
     Returns
     -------
@@ -215,6 +235,12 @@ def conveyor_pull(drive: Drive, layout: DriveLayout | None = None) -> ConveyorPu
         return None
     if layout is None:
         layout = drive_layout(drive)
+    fitted = _fitted_tensioner(drive, layout) if fit_tensioner else None
+    if fitted is not None:
+        moved, offset = fitted
+        pull = conveyor_pull(moved, drive_layout(moved), fit_tensioner=False)
+        assert pull is not None
+        return dataclasses.replace(pull, tensioner_offset=offset)
     q = drive.chain.mass_per_length
     if q is None:
         raise InputError(f"conveyor: chain {drive.chain.name!r} has no mass_per_length (give it in [chain])",
@@ -233,12 +259,14 @@ def conveyor_pull(drive: Drive, layout: DriveLayout | None = None) -> ConveyorPu
 
     # fixed part of every span: kind, length, world inclination in the direction of travel
     spans: dict[int, tuple[str, float, float, float]] = {}
+    chords: dict[int, np.ndarray] = {}
     for kind, j in walk:
         if kind != "span":
             continue
         length = float(wrap.span_length[j])
         ang = float(wrap.span_angle[j]) + (0.0 if sign > 0 else math.pi)
         u = np.array([math.cos(ang), math.sin(ang)])
+        chords[j] = u
         beta = math.asin(max(-1.0, min(1.0, -float(u @ ghat))))
         # the pan stops short of each wheel (pan_end_clearance): the ends hang free
         ends = _pan_ends(drive, layout, j)
@@ -256,13 +284,15 @@ def conveyor_pull(drive: Drive, layout: DriveLayout | None = None) -> ConveyorPu
     head_force = conv.head_share * total
     tail_force = total - head_force
 
-    def profile(s0: float) -> tuple[np.ndarray, np.ndarray, list[float], float, float]:
-        """Positions, tensions, wheel starts, extra length of the free strands, largest free return sag."""
+    def profile(s0: float) -> _Run:
+        """Positions, tensions, wheel starts, extra length of the free strands, largest free
+        return sag, and each span's end directions and tensions."""
         pos, ten, starts = [0.0], [s0], []
         t = s0
         s = 0.0
         excess = 0.0
         sag = 0.0
+        ends: dict[int, tuple[np.ndarray, np.ndarray, float, float]] = {}
         for kind, j in walk:
             if kind == "wheel":
                 starts.append(s)
@@ -275,6 +305,7 @@ def conveyor_pull(drive: Drive, layout: DriveLayout | None = None) -> ConveyorPu
                 ten.append(t)
                 continue
             what, length, beta, dt = spans[j]
+            u_start = u_end = chords[j]
             if what == "free":
                 if not t > 0:
                     raise InputError("conveyor: the chain goes slack (tension <= 0) on a free span",
@@ -283,11 +314,14 @@ def conveyor_pull(drive: Drive, layout: DriveLayout | None = None) -> ConveyorPu
                 excess += strand.excess_length
                 if j != carrying:
                     sag = max(sag, strand.sag)
+                u_start = _tangent(chords[j], ghat, strand.start_angle)
+                u_end = _tangent(chords[j], ghat, strand.end_angle)
+            ends[j] = (u_start, u_end, t, t + dt)
             t += dt
             s += length
             pos.append(s)
             ten.append(t)
-        return np.array(pos), np.array(ten), starts, excess, sag
+        return _Run(np.array(pos), np.array(ten), starts, excess, sag, ends)
 
     # the head's exit tension
     exits = _exit_offsets(walk, spans, head, tail, head_force, tail_force)
@@ -299,7 +333,8 @@ def conveyor_pull(drive: Drive, layout: DriveLayout | None = None) -> ConveyorPu
     lower = _lowest_feasible(walk, spans, q)
     if tens is not None and tens.force is not None and tens.kind in ("spring", "weight", "hydraulic"):
         iw = drive.wheel_index(tens.wheel)
-        # unit vectors of the spans arriving at and leaving the wheel, in the direction of travel
+        # unit vectors of the spans' chords arriving at and leaving the wheel, in the
+        # direction of travel: the path lengthens by (u_in − u_out)·d per unit travel
         u_in = _span_unit(wrap, (iw - 1) % n)
         u_out = _span_unit(wrap, iw)
         if drive.travel == "cw":
@@ -310,18 +345,18 @@ def conveyor_pull(drive: Drive, layout: DriveLayout | None = None) -> ConveyorPu
         if not gproj > 1e-9:
             raise InputError("tensioner: moving its wheel along direction does not take up slack "
                              "(the chain runs straight past it)", field="tensioner.direction")
-        tau_in, tau_out = _offsets_round_wheel(walk, spans, iw, head, tail, head_force, tail_force)
         ea = _axial_stiffness(drive)
         k = float(tens.stiffness) if tens.kind == "spring" else 0.0
         force0 = float(tens.force)
+        around = _around(walk)[iw]
 
         def residual(s0: float) -> float:
-            pos, ten, _, excess, _ = profile(s0)
-            stretch = float(np.sum(0.5 * (ten[1:] + ten[:-1]) * np.diff(pos))) / ea
-            travel = (stretch - excess) / gproj
-            return force0 - k * travel - _chain_on_slide(s0, tau_in, tau_out, u_in, u_out, d)
+            run = profile(s0)
+            travel = (run.stretch(ea) - run.excess) / gproj
+            return force0 - k * travel - _chain_on_slide(run, around, d)
 
         lo = lower
+        tau_in, tau_out = _offsets_round_wheel(walk, spans, iw, head, tail, head_force, tail_force)
         hi = max(2.0 * lo + 1.0, force0 / gproj * 4.0 + abs(tau_in) + abs(tau_out) + 1.0)
         for _ in range(60):
             if residual(hi) < 0:
@@ -331,10 +366,9 @@ def conveyor_pull(drive: Drive, layout: DriveLayout | None = None) -> ConveyorPu
             raise InputError("conveyor: the tensioner cannot hold the chain off the ground "
                              "(raise tensioner.force)", field="tensioner.force")
         s0 = brentq(residual, lo, hi, xtol=1e-6, rtol=1e-12)
-        pos, ten, _, excess, _ = profile(s0)
-        stretch = float(np.sum(0.5 * (ten[1:] + ten[:-1]) * np.diff(pos))) / ea
-        t_travel = (stretch - excess) / gproj
-        t_force = _chain_on_slide(s0, tau_in, tau_out, u_in, u_out, d)
+        run = profile(s0)
+        t_travel = (run.stretch(ea) - run.excess) / gproj
+        t_force = _chain_on_slide(run, around, d)
         source = (f"{tens.kind} tensioner on wheel {tens.wheel!r} with the chain's length fixed"
                   if k > 0 else f"{tens.kind} tensioner force on wheel {tens.wheel!r}")
     elif drive.slack_tension is not None:
@@ -343,10 +377,12 @@ def conveyor_pull(drive: Drive, layout: DriveLayout | None = None) -> ConveyorPu
     else:
         s0 = max(required_s0, lower)
         source = "stated minimum tension at every sprocket exit"
-    pos, ten, starts, _, sag = profile(s0)
+    run = profile(s0)
+    pos, ten, starts, sag = run.position, run.tension, run.starts, run.sag
     i_min = int(np.argmin(ten))
-    pos_req, ten_req, *_ = profile(max(required_s0, lower))
-    pre = C.mean_tension(pos_req, ten_req)
+    req = profile(max(required_s0, lower))
+    pre = C.mean_tension(req.position, req.tension)
+    t_in, t_out, shaft = _wheel_forces(run, _around(walk), n)
     carrying_res = spans[carrying][3]
     return ConveyorPull(
         tension_profile=TensionProfile(pos, ten),
@@ -360,7 +396,39 @@ def conveyor_pull(drive: Drive, layout: DriveLayout | None = None) -> ConveyorPu
         drive_power=_power(total, speed, conv.efficiency), head_power=_power(head_force, speed, conv.efficiency),
         tail_power=_power(tail_force, speed, conv.efficiency), material_load=float(qm),
         return_sag=float(sag), tensioner_force=t_force, tensioner_travel=t_travel,
-        chain_speed=speed, source=source)
+        chain_speed=speed, source=source, wheel_tension_in=t_in, wheel_tension_out=t_out,
+        shaft_loads=np.hypot(shaft[:, 0], shaft[:, 1]), shaft_load_angles=np.arctan2(shaft[:, 1], shaft[:, 0]))
+
+
+def _fitted_tensioner(drive: Drive, layout: DriveLayout) -> tuple[Drive, float] | None:
+    """The drive with its tensioner wheel where the unstretched chain of ``layout.links``
+    just fits the path (the links rounded up to an even number leave chain to take up),
+    and that offset along the travel [m]; ``None`` where no wheel moves (no force
+    tensioner, or the chain fits as drawn)."""
+    tens = drive.tensioner
+    if tens is None or tens.force is None or tens.kind not in ("spring", "weight", "hydraulic"):
+        return None
+    # the chain over the path: the exact polygon length where the layout has it (the length
+    # that set the link count; the simulation's assembly fits the same), else the circles'
+    loop = layout.loop
+    needed = float(loop.links_max) if loop is not None and loop.exact else float(layout.links_required)
+    extra = (float(layout.links) - needed) * drive.pitch
+    if not extra > 1e-6 * drive.pitch:
+        return None
+    iw = drive.wheel_index(tens.wheel)
+    positions = np.array([w.position for w in drive.wheels], dtype=float)
+    try:
+        offset = float(tensioner_travel(positions, layout.pitch_radii, [w.side for w in drive.wheels], iw,
+                                        tens.direction, [0.0], chain_length=layout.links * drive.pitch,
+                                        extra_length=extra)[0])
+    except InfeasibleError as exc:
+        raise InputError(f"conveyor: the tensioner cannot take up the chain of {layout.links} links "
+                         f"({extra * 1e3:.1f} mm longer than the path): {exc}", field="tensioner.direction") from exc
+    d = np.asarray(tens.direction, float) / float(np.hypot(*tens.direction))
+    at = positions[iw] + offset * d
+    moved = dataclasses.replace(drive.with_wheel(tens.wheel, position=(float(at[0]), float(at[1]))),
+                                links=int(layout.links))
+    return moved, offset
 
 
 def _pan_ends(drive: Drive, layout: DriveLayout, span: int) -> float:
@@ -426,10 +494,66 @@ def _offsets_round_wheel(walk, spans, wheel, head, tail, head_force, tail_force)
     raise InputError(f"conveyor: wheel {wheel} is not on the loop")
 
 
-def _chain_on_slide(s0, tau_in, tau_out, u_in, u_out, d) -> float:
+@dataclass(frozen=True)
+class _Run:
+    """One running state of the loop for a head exit tension: the profile, the extra
+    length and largest sag of the free strands, and per span (index in the drive's
+    list) its direction of travel at its start and end and its tensions there."""
+
+    position: np.ndarray
+    tension: np.ndarray
+    starts: list[float]
+    excess: float
+    sag: float
+    ends: dict[int, tuple[np.ndarray, np.ndarray, float, float]]
+
+    def stretch(self, axial_stiffness: float) -> float:
+        """Elastic elongation of the loop ``∮ T ds / EA`` [m]."""
+        p, t = self.position, self.tension
+        return float(np.sum(0.5 * (t[1:] + t[:-1]) * np.diff(p))) / axial_stiffness
+
+
+def _tangent(chord: np.ndarray, ghat: np.ndarray, angle: float) -> np.ndarray:
+    """Unit vector at ``angle`` [rad] above the horizontal in the vertical plane of ``chord``
+    (travel direction), ``up = −ĝ``: a catenary's end tangent in the drive's frame."""
+    up = -ghat
+    h = chord - float(chord @ up) * up
+    h = h / float(np.hypot(*h))
+    return math.cos(angle) * h + math.sin(angle) * up
+
+
+def _around(walk) -> dict[int, tuple[int, int]]:
+    """For each wheel: the span arriving at it and the span leaving it (in travel)."""
+    m = len(walk)
+    return {j: (walk[(p - 1) % m][1], walk[(p + 1) % m][1])
+            for p, (kind, j) in enumerate(walk) if kind == "wheel"}
+
+
+def _wheel_force(run: _Run, around: tuple[int, int]) -> np.ndarray:
+    """Force [N] of the chain on a wheel: ``−T_in u_in + T_out u_out`` with the arriving span's
+    tension and direction at its end and the leaving span's at its start (a free span's
+    catenary tangents; a span on pans along its chord)."""
+    _, u_in, _, t_in = run.ends[around[0]]
+    u_out, _, t_out, _ = run.ends[around[1]]
+    return -t_in * u_in + t_out * u_out
+
+
+def _wheel_forces(run: _Run, around: dict[int, tuple[int, int]], n: int
+                  ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Tension arriving at and leaving each wheel [N] and the force on each shaft (n, 2) [N]."""
+    t_in, t_out, force = np.zeros(n), np.zeros(n), np.zeros((n, 2))
+    for i, (a, b) in around.items():
+        t_in[i], t_out[i] = run.ends[a][3], run.ends[b][2]
+        force[i] = _wheel_force(run, (a, b))
+    return t_in, t_out, force
+
+
+def _chain_on_slide(run: _Run, around: tuple[int, int], d: np.ndarray) -> float:
     """Force [N] the chain puts on a tensioner wheel against its travel ``d``:
-    ``(T_in u_in − T_out u_out)·d`` (the spans pull the wheel along ``−u_in`` and ``u_out``)."""
-    return float((s0 + tau_in) * (u_in @ d) - (s0 + tau_out) * (u_out @ d))
+    ``(T_in u_in − T_out u_out)·d`` (the spans pull the wheel along ``−u_in`` and ``u_out``,
+    each along its end tangent: Irvine, *Cable Structures*, ch. 1, the tension of a
+    cable acts along its tangent)."""
+    return float(-_wheel_force(run, around) @ d)
 
 
 def _lowest_feasible(walk, spans, q) -> float:

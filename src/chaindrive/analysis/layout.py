@@ -14,7 +14,7 @@ from .._results import Result, quantity
 from ..drive.model import Drive
 from ..errors import InfeasibleError, ValidityRangeWarning
 from ._memo import freeze, memo
-from ._wheels import wheel_teeth
+from ._wheels import MINIMUM_POWER_WRAP, clearance_error, wheel_checks, wheel_teeth, wrap_advice
 from .checks import Check
 from .parts import Part, PartContext, register_part
 
@@ -165,6 +165,7 @@ def _geometry(drive: Drive, phases: int) -> DriveLayout:
     chain = drive.chain
     sides = [w.side for w in wheels]
     positions = np.array([w.position for w in wheels], dtype=float)
+    clearance_error(drive, positions)
     links_required, polygon, loop, centre = _required_length(drive, positions, phases)
     needed = loop.links_max if loop is not None and loop.exact else links_required
     links = int(drive.links) if drive.links is not None else int(L.even_links(needed))
@@ -175,6 +176,7 @@ def _geometry(drive: Drive, phases: int) -> DriveLayout:
                                    sides, diameters=[w.diameter for w in wheels], bar_diameter=drive.bar_diameter,
                                    phases=phases)
         positions[idx] = adjustment.position
+        clearance_error(drive, positions)
         links_required, polygon, loop, centre = _required_length(drive, positions, phases)
         needed = loop.links_max if loop is not None and loop.exact else links_required
     wrap = L.wrap_layout(positions, radii, sides)
@@ -273,8 +275,9 @@ def slack_span_sag(drive: Drive, layout: DriveLayout, tension: float) -> float:
                                 tension, drive.mass_per_length))
 
 
-#: Smallest wrap on the driving wheel [rad] (ISO 10823:2004 guidance: 120°).
-MINIMUM_WRAP = math.radians(120.0)
+#: Smallest wrap on the driving wheel [rad] (ISO 10823:2004 guidance: 120°; the one value
+#: for every power sprocket, :data:`chaindrive.analysis._wheels.MINIMUM_POWER_WRAP`).
+MINIMUM_WRAP = MINIMUM_POWER_WRAP
 
 
 def wrap_check(drive: Drive, layout: DriveLayout) -> Check:
@@ -293,7 +296,11 @@ def _layout_part(ctx: PartContext) -> DriveLayout:
 
 
 def _layout_checks(ctx: PartContext, lay: DriveLayout) -> list[Check]:
-    return [wrap_check(ctx.drive, lay)]
+    driving = wrap_check(ctx.drive, lay)
+    if driving.passed is False:   # where to move the driving wheel, or an idler (computed, re-checked)
+        driving = dataclasses.replace(driving, note=wrap_advice(ctx.drive, np.asarray(lay.wrap.centres, float),
+                                                                ctx.drive.driving_index))
+    return [driving, *wheel_checks(ctx.drive, lay.wrap, lay.teeth_in_mesh)]
 
 
 register_part(Part("layout", "Layout: chain length, spans, wraps, take-up", _layout_part, checks=_layout_checks,

@@ -121,6 +121,11 @@ class DriveLoads(Result):
         Stiffness of the spans holding the driven side [N/m] (spring–mass model only).
     dynamic_validity : str
         How far the dynamic model is checked.
+    tension_in, tension_out : ndarray or None
+        Tension arriving at and leaving each wheel [N] where they differ from the span
+        tensions (a conveyor: the running tensions of its chain pull).
+    effective_pull_formula, effective_pull_basis : str
+        How ``effective_pull`` was computed (``K_s T / R``; a conveyor ``K_s F_head``).
     """
 
     torque: float = quantity("N*m")
@@ -147,6 +152,10 @@ class DriveLoads(Result):
     dynamic_source: str = "m a_max"
     dynamic_stiffness: float | None = quantity("N/m", default=None)
     dynamic_validity: str = ""
+    tension_in: np.ndarray | None = quantity("N", default=None)
+    tension_out: np.ndarray | None = quantity("N", default=None)
+    effective_pull_formula: str = "K_s T / R"
+    effective_pull_basis: str = "torque over the pitch radius of the driving wheel"
 
 
 def free_entry_acceleration(drive: Drive) -> float:
@@ -267,11 +276,11 @@ def drive_loads(drive: Drive, layout: DriveLayout | None = None, *,
     v = drive.chain_speed()
     Fc = float(F.centrifugal_tension(q, v))
     if conveyor is not None:
-        Fe = float(conveyor.head_force) * drive.load.service_factor
-        Fs, src = float(conveyor.slack_tension), f"conveyor chain pull ({conveyor.source})"
-    else:
-        Fe = float(F.tight_side_tension(drive.torque(), R)) * drive.load.service_factor
-        Fs, src = _slack_tension(drive, lay)
+        return _conveyor_loads(drive, lay, conveyor, float(conveyor.head_force) * drive.load.service_factor,
+                               float(conveyor.slack_tension), f"conveyor chain pull ({conveyor.source})", Fc, v,
+                               acceleration_peak, acceleration_source, moving_mass)
+    Fe = float(F.tight_side_tension(drive.torque(), R)) * drive.load.service_factor
+    Fs, src = _slack_tension(drive, lay)
     shares = drive.power_shares()
     span_T = span_tensions(Fe, Fs, shares, drive.driving_index, drive.travel)
     tight = float(span_T.max()) + Fc  # the largest span tension (Fe + Fs) plus q v²
@@ -298,6 +307,44 @@ def drive_loads(drive: Drive, layout: DriveLayout | None = None, *,
         wheel_torques=powers / lay.angular_velocities, dynamic_source=dsrc, dynamic_stiffness=kd,
         dynamic_validity=dyn.validity,
     )
+
+
+def _conveyor_loads(drive: Drive, lay: DriveLayout, pull: ConveyorPull, Fe: float, Fs: float, src: str,
+                    Fc: float, v: float, acceleration_peak: float | None, acceleration_source: str,
+                    moving_mass: float | None) -> DriveLoads:
+    """A scraper conveyor's loads from its chain pull (one running state): the tensions in
+    and out of every wheel and the shaft loads are the chain pull's (no service factor),
+    the tight-side tension ``S_0 + K_s F_head + q v²``; the head and a tail drive take
+    their forces ``F v`` at the sprocket, no wheel takes power off."""
+    tight = Fs + Fe + Fc
+    if acceleration_peak is None:
+        a, asrc = free_entry_acceleration(drive), "free entry on the driving wheel, ω² R sin(δ/2) (Dolipiński et al.)"
+    else:
+        a, asrc = float(acceleration_peak), acceleration_source
+    dyn = dynamic_tension(drive, lay, a, moving_mass=moving_mass)
+    m, Fd = dyn.moving_mass, dyn.value
+    n = len(drive.wheels)
+    t_in = np.asarray(pull.wheel_tension_in, float)
+    t_out = np.asarray(pull.wheel_tension_out, float)
+    # span i joins wheel i and i+1 in list order: its tension where it leaves its wheel in travel
+    span_T = t_out.copy() if drive.travel == "ccw" else np.roll(t_out, -1)
+    powers = np.zeros(n)
+    powers[drive.driving_index] = float(pull.head_force) * v
+    head = drive.driving_index
+    tail = (head - 1) % n if drive.travel == "ccw" else (head + 1) % n
+    if tail != head:
+        powers[tail] += float(pull.tail_force) * v
+    return DriveLoads(
+        torque=drive.torque(), design_power=drive.design_power(), chain_speed=v, effective_pull=Fe, slack=Fs,
+        slack_source=src, centrifugal=Fc, tight=tight, acceleration_peak=a, acceleration_source=asrc,
+        moving_mass=m, dynamic=Fd, maximum=tight + Fd, dynamic_factor=float(F.dynamic_factor(tight, Fd)),
+        span_tensions=span_T, shaft_loads=np.asarray(pull.shaft_loads, float),
+        shaft_load_angles=np.asarray(pull.shaft_load_angles, float), wheel_names=lay.wheel_names,
+        power_shares=None, wheel_powers=powers, wheel_torques=powers / lay.angular_velocities,
+        dynamic_source=dyn.model, dynamic_stiffness=dyn.stiffness, dynamic_validity=dyn.validity,
+        tension_in=t_in, tension_out=t_out, effective_pull_formula="K_s F_head",
+        effective_pull_basis="head drive's force of the conveyor chain pull (its friction and material, not the "
+                             "installed torque)")
 
 
 def span_tensions(effective_pull: float, slack: float, shares: np.ndarray, driving: int,

@@ -61,9 +61,17 @@ def new_command(
 def layout_command(
     file: str = typer.Argument(..., help="Project file (TOML), see `chaindrive new`."),
     as_json: bool = typer.Option(False, "--json", help="Print every number as JSON in SI units."),
+    place: str | None = typer.Option(None, "--place", help="Name of a wheel to move until it (or the wheel "
+                                     "named by --of) has the wrap given by --wrap; prints its new position."),
+    wrap: str | None = typer.Option(None, "--wrap", help=unit_help("Wrap requested with --place.", "rad",
+                                                                   "150 deg")),
+    along: str | None = typer.Option(None, "--along", help="Line of travel of the --place wheel as 'dx,dy' "
+                                     "(bare numbers, a direction); default away from the other wheels."),
+    of: str | None = typer.Option(None, "--of", help="Wheel whose wrap --wrap sets (default the --place wheel)."),
 ) -> None:
     """Chain length (polygon model and ISO 10823 approximation), centre distance for a
-    whole even number of links, wraps, spans, tensions, sag and tensioner take-up."""
+    whole even number of links, wraps, spans, tensions, sag and tensioner take-up; with
+    ``--place WHEEL --wrap ANGLE`` the position of a wheel for a requested wrap."""
     from rich.markup import escape
 
     from ..analysis import analyze_drive
@@ -71,6 +79,9 @@ def layout_command(
     from ..drive.project import load_project
 
     drive = load_project(file)
+    if place is not None or wrap is not None:
+        _place(drive, place, wrap, along, of, as_json)
+        return
     analysis = analyze_drive(drive, include=["layout", "loads", "rating"])
     lay, ten = analysis.layout, analysis.loads
     if lay is None or ten is None:  # both asked for above: an analysis always returns them
@@ -126,6 +137,37 @@ def layout_command(
                                           f"[{c.source}] {c.note}"))
     for w in analysis.warnings:
         con.print(f"warning: {w}", markup=False)
+
+
+def _place(drive, place: str | None, wrap: str | None, along: str | None, of: str | None, as_json: bool) -> None:
+    """``layout --place``: a wheel's position for a requested wrap, re-checked."""
+    from ..analysis.placement import place_wheel
+    from ..errors import InputError
+
+    if place is None or wrap is None:
+        raise InputError("--place and --wrap go together, e.g. --place 'machine B' --wrap '130 deg'",
+                         field="place" if place is None else "wrap")
+    direction = None
+    if along is not None:
+        try:
+            parts = [float(x) for x in along.split(",")]
+        except ValueError:
+            parts = []
+        if len(parts) != 2 or not math.hypot(*parts) > 0 or not all(map(math.isfinite, parts)):
+            raise InputError(f"--along must be two numbers 'dx,dy' (a direction, not both 0), got {along!r}",
+                             field="along")
+        direction = (parts[0], parts[1])
+    p = place_wheel(drive, place, quantity(wrap, "rad", "wrap"), along=direction, target=of)
+    if as_json:
+        echo_json({"placement": p})
+        return
+    con = _console()
+    con.print(f"move {p.wheel!r} {p.distance * 1e3:.1f} mm along ({p.direction[0]:.4f}, {p.direction[1]:.4f}):",
+              markup=False)
+    con.print(f'position = ["{p.position[0] * 1e3:.1f} mm", "{p.position[1] * 1e3:.1f} mm"]', markup=False)
+    con.print(f"wrap on {p.target!r} there {math.degrees(p.wrap):.2f}° (requested {math.degrees(p.requested):.2f}°), "
+              f"wheels and spans clear; with the links fitted again {math.degrees(p.refitted_wrap):.2f}°",
+              markup=False)
 
 
 OPTION_ALIASES["select"] = {"teeth_driving": "--teeth", "service_factor": "--service-factor",

@@ -24,6 +24,7 @@ import tomllib  # noqa: F401 - used by the doctests (Python >= 3.11)
 from pathlib import Path
 from typing import Any
 
+import numpy as np
 from pydantic import ValidationError
 
 from ..errors import ChainDriveError, InputError, UnknownNameError
@@ -32,6 +33,7 @@ from ..limits import warn_implausible
 from ..loads import mean_chain_speed
 from . import model as _model
 from ._reader import ChainSpeedSpec, project_model
+from .clearance import clearance_error
 from .model import Adjustable, Drive, Guide, Load, Tensioner, Wheel
 from .schema import all_tables, load_providers
 from .tables import further_inputs
@@ -241,7 +243,7 @@ def project_from_mapping(data: dict[str, Any], filename: str = "<project>", *,
         except ChainDriveError as exc:
             raise _located(exc, ("wheels", i), filename, index) from None
     try:
-        return Drive(
+        drive = Drive(
             chain=chain,
             wheels=tuple(wheels),
             speed=_speed_of(proj.drive.speed, chain, wheels, filename, index),
@@ -266,6 +268,11 @@ def project_from_mapping(data: dict[str, Any], filename: str = "<project>", *,
         )
     except ChainDriveError as exc:
         raise _located(exc, _loc_of(exc.field), filename, index) from None
+    try:
+        clearance_error(drive, np.array([w.position for w in drive.wheels], dtype=float))
+    except ChainDriveError as exc:
+        raise _located(exc, _loc_of(exc.field), filename, index) from None
+    return drive
 
 
 def _speed_of(speed: float | ChainSpeedSpec, chain, wheels, filename: str, index: dict) -> float:

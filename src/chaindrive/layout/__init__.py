@@ -16,6 +16,7 @@ Three models of the chain path are provided:
 All lengths in metres, angles in radians, chain lengths in pitches (links).
 """
 
+from .placement import clearance_problems, place_for_wrap
 from .polygon_loop import (
     LoopAdjustment,
     LoopLength,
@@ -79,5 +80,7 @@ __all__ = [
     "parabolic_sag",
     "tension_for_sag",
     "tensioner_travel",
+    "clearance_problems",
+    "place_for_wrap",
     "centre_distance_travel",
 ]

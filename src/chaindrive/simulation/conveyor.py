@@ -140,6 +140,7 @@ class SteadyState(Result):
     tight_tension_std: float = quantity("N")
     return_sag_std: float = quantity("m", display="mm")
     start: float = quantity("s")
+    tensioner_force: float | None = quantity("N", default=None)
 
 
 def _link_nearest(pos: np.ndarray, point: np.ndarray) -> np.ndarray:
@@ -206,8 +207,37 @@ def steady_state(result: SimulationResult, model: SimulationModel, drive: Drive,
         # span itself (the carrying strand lies above)
         below = np.where(inside & (y < chord + 1e-3) & (chord - y < 0.5 * (hi - lo)), chord - y, 0.0)
         sag = np.max(below, axis=1)
+    force = None
+    if model.tensioner is not None:
+        force = _chain_on_tensioner(pos, ten, c, radii, model, step=1.5 * model.pitch)
     return SteadyState(float(np.mean(slack)), float(np.mean(tight)), float(np.mean(sag)),
-                       float(np.std(slack)), float(np.std(tight)), float(np.std(sag)), t0)
+                       float(np.std(slack)), float(np.std(tight)), float(np.std(sag)), t0, force)
+
+
+def _chain_on_tensioner(pos: np.ndarray, ten: np.ndarray, c: np.ndarray, radii: np.ndarray,
+                        model: SimulationModel, step: float) -> float:
+    """Time mean of the chain's force on the tensioner wheel against its travel [N]:
+    ``(T_in u_in − T_out u_out)·d`` with the tension and the direction of the simulated
+    links ``step`` before and after the wheel's tangent points (the chain's own end
+    tangents, not the chords)."""
+    from .run import _tangent
+
+    assert model.tensioner is not None
+    j = model.tensioner.wheel
+    nw = len(model.wheels)
+    d = np.asarray(model.tensioner.direction, float)
+    d = d / np.hypot(*d)
+    _, p_in, u_in, _ = _tangent(c[(j - 1) % nw], radii[(j - 1) % nw], c[j], radii[j])
+    p_out, _, u_out, _ = _tangent(c[j], radii[j], c[(j + 1) % nw], radii[(j + 1) % nw])
+    rows = np.arange(pos.shape[0])
+    total = np.zeros(pos.shape[0])
+    for point, chord, sign in ((p_in - step * u_in, u_in, 1.0), (p_out + step * u_out, u_out, -1.0)):
+        i = _link_nearest(pos, point)
+        link = pos[rows, (i + 1) % pos.shape[1]] - pos[rows, i]
+        link /= np.hypot(link[:, 0], link[:, 1])[:, None]
+        link *= np.sign(link @ chord)[:, None]       # in the direction of travel
+        total += sign * ten[rows, i] * (link @ d)
+    return float(np.mean(total))
 
 
 def peak_tension_envelope(result: SimulationResult) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
@@ -225,11 +255,15 @@ def peak_tension_envelope(result: SimulationResult) -> tuple[np.ndarray, np.ndar
 
 
 def compare(pull: ConveyorPull, state: SteadyState) -> dict[str, tuple[float, float, float]]:
-    """Analysis, simulation and their difference [%] of slack, tight tension and sag."""
+    """Analysis, simulation and their difference [%] of slack, tight tension, sag and the
+    tensioner force (where both have a tensioner)."""
     out = {}
-    for name, a, s in (("slack tension", pull.slack_tension, state.slack_tension),
-                       ("tight tension", pull.tight_tension, state.tight_tension),
-                       ("sag", pull.return_sag, state.return_sag)):
+    rows = [("slack tension", pull.slack_tension, state.slack_tension),
+            ("tight tension", pull.tight_tension, state.tight_tension),
+            ("sag", pull.return_sag, state.return_sag)]
+    if pull.tensioner_force is not None and state.tensioner_force is not None:
+        rows.append(("tensioner force", pull.tensioner_force, state.tensioner_force))
+    for name, a, s in rows:
         out[name] = (float(a), float(s), 100.0 * (s - a) / a if a else math.nan)
     return out
 

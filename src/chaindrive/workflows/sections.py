@@ -210,12 +210,12 @@ def loads_section(a: DriveAnalysis, fig: _Figures) -> Section | None:
     d = a.drive
     sec = Section("Loads and safety")
     sec.tables.append(Table(
-        "Chain tensions: static F_tight = K_s T / R + S_slack + q v² (the static safety's, Chernavsky et al. "
-        "eq. (7.40)); peak of the running chain F_tight + F_d (the peak-tension check)",
+        f"Chain tensions: static F_tight = {t.effective_pull_formula} + S_slack + q v² (the static safety's, "
+        "Chernavsky et al. eq. (7.40)); peak of the running chain F_tight + F_d (the peak-tension check)",
         ["quantity", "value", "unit", "basis"],
-        [["effective pull K_s T / R", *_q(t, "effective_pull"),
-          f"K_s = {d.load.service_factor:g} (service factor: the driven machine's shock) times the torque over the "
-          "pitch radius of the driving wheel"],
+        [[f"effective pull {t.effective_pull_formula}", *_q(t, "effective_pull"),
+          f"K_s = {d.load.service_factor:g} (service factor: the driven machine's shock) times the "
+          f"{t.effective_pull_basis}"],
          ["slack-side tension S_slack", *_q(t, "slack"), t.slack_source],
          ["centrifugal tension q v²", *_q(t, "centrifugal"), "q v² (ISO 10823:2004)"],
          ["static tight-side tension F_tight", *_q(t, "tight"), "sum of the above: the static safety's denominator"],
@@ -225,21 +225,28 @@ def loads_section(a: DriveAnalysis, fig: _Figures) -> Section | None:
          ["peak tension F_tight + F_d", *_q(t, "maximum"), "the peak-tension check's value (limit F_B / 6)"],
          ["dynamic factor", t.dynamic_factor, "-", "peak / static tight-side tension"]]))
     n = len(t.wheel_names)
-    shares = t.power_shares if t.power_shares is not None else np.zeros(n)
+    shares = t.power_shares if t.power_shares is not None else ["-"] * n
     powers = t.wheel_powers if t.wheel_powers is not None else np.zeros(n)
     torques = t.wheel_torques if t.wheel_torques is not None else np.zeros(n)
+    t_in = np.roll(t.span_tensions, 1) if t.tension_in is None else t.tension_in
+    t_out = t.span_tensions if t.tension_out is None else t.tension_out
+    caption = ("Per wheel: power taken off, span tensions (without centrifugal part) and shaft load "
+               "(vector sum of the two span tensions, with K_s, without q v² and F_d, as the handbook shaft load "
+               "F_t + 2 F_f: Ivanov, Detali mashin); the tension rises across each driven wheel by its share "
+               f"of {t.effective_pull_formula}")
+    if t.tension_in is not None:
+        caption = ("Per wheel: power of the drives at the sprocket (F v), running tensions of the chain pull "
+                   "(same run as the conveyor section, no service factor) and shaft load (vector sum of the two "
+                   "tensions along the chain's end tangents)")
     sec.tables.append(Table(
-        "Per wheel: power taken off, span tensions (without centrifugal part) and shaft load "
-        "(vector sum of the two span tensions, with K_s, without q v² and F_d, as the handbook shaft load "
-        "F_t + 2 F_f: Ivanov, Detali mashin); the tension rises across each driven wheel by its share "
-        "of K_s T / R",
+        caption,
         ["wheel", "power share", f"power [{_col(t, 'wheel_powers')}]", f"torque [{_col(t, 'wheel_torques')}]",
          f"tension in [{_col(t, 'span_tensions')}]", f"tension out [{_col(t, 'span_tensions')}]",
          f"shaft load [{_col(t, 'shaft_loads')}]", f"direction [{_col(t, 'shaft_load_angles')}]"],
         [[name, share, _val(pw, "W"), _val(tq, "N*m"), _val(t_in, "N"), _val(t_out, "N"), _val(f, "N"),
           _val(ang, "rad")]
          for name, share, pw, tq, t_in, t_out, f, ang in zip(
-             t.wheel_names, shares, powers, torques, np.roll(t.span_tensions, 1), t.span_tensions,
+             t.wheel_names, shares, powers, torques, t_in, t_out,
              t.shaft_loads, t.shaft_load_angles, strict=True)]))
     _checks(sec, a, ("loads", "rating"))
     rating = a.rating

@@ -1,0 +1,62 @@
+"""Wheels that cannot be where they are drawn: overlapping pitch circles, a span through a
+wheel (the rule of the drive itself, checked where a project file is read, with its
+line, and by the layout on the positions it draws)."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from .. import layout as L
+from ..errors import InputError
+from .model import Drive
+
+__all__ = ["clearance_error"]
+
+
+def clearance_error(drive: Drive, centres: np.ndarray) -> None:
+    """Refuse overlapping wheels (coincident centres included) and spans crossing a wheel,
+    naming the wheels (:func:`chaindrive.layout.clearance_problems`).
+
+    Parameters
+    ----------
+    drive : Drive
+    centres : ndarray, shape (n, 2)
+        Where the wheels are [m] (as drawn, or as the layout sets an adjustable wheel).
+
+    Raises
+    ------
+    InputError
+        Field ``wheels[i].position`` of the wheel to move.
+
+    References
+    ----------
+    Plane geometry (:func:`chaindrive.layout.clearance_problems`).
+
+    Examples
+    --------
+    >>> from chaindrive.drive.project import load_project
+    >>> d = load_project("examples/multi_wheel.toml")
+    >>> c = np.array([w.position for w in d.wheels]); c[3] = (1.15, -0.05)
+    >>> clearance_error(d, c)
+    Traceback (most recent call last):
+    ...
+    chaindrive.errors.InputError: wheels 'machine A' and 'machine B' overlap: centres 150.0 mm apart, pitch radii 153.8 + 121.5 = 275.3 mm; move 'machine B' so that the centres are at least 275.3 mm apart (the sum of the pitch radii)
+    """
+    radii = drive.pitch_radii()
+    problems = L.clearance_problems(centres, radii, [w.side for w in drive.wheels])
+    if not problems:
+        return
+    kind, i, j, dist = problems[0]
+    names = drive.wheel_names
+    n = len(names)
+    if kind == "overlap":
+        what = ("have the same centre" if dist < 1e-12 else
+                f"overlap: centres {dist * 1e3:.1f} mm apart, pitch radii {radii[i] * 1e3:.1f} + "
+                f"{radii[j] * 1e3:.1f} = {(radii[i] + radii[j]) * 1e3:.1f} mm")
+        raise InputError(f"wheels {names[i]!r} and {names[j]!r} {what}; move {names[j]!r} so that the centres "
+                         f"are at least {(radii[i] + radii[j]) * 1e3:.1f} mm apart (the sum of the pitch radii)",
+                         field=f"wheels[{j}].position")
+    raise InputError(f"the chain from {names[i]!r} to {names[(i + 1) % n]!r} runs through wheel {names[j]!r} "
+                     f"({dist * 1e3:.1f} mm from its centre, pitch radius {radii[j] * 1e3:.1f} mm); move "
+                     f"{names[j]!r}, or list the wheels in the order the chain passes them",
+                     field=f"wheels[{j}].position")
