@@ -35,7 +35,7 @@ from typing import Any
 from ..errors import InputError
 
 __all__ = ["REQUIRED", "Input", "InputTable", "register_table", "unregister_table", "get_table", "all_tables", "load_providers", "TABLE_PROVIDERS",
-           "children", "field_text", "number_text", "quantity_text", "toml_string", "docs_table"]
+           "children", "field_text", "number_text", "value_text", "quantity_text", "toml_string", "docs_table"]
 
 #: The default of a field that must be given.
 REQUIRED: Any = object()
@@ -233,6 +233,19 @@ def number_text(value: float | int) -> str:
     if isinstance(value, int):
         return str(value)
     return repr(float(value))
+
+
+def value_text(value: Any) -> str:
+    """A value as typed (a text, a number, a flag, a list of them) as TOML.
+
+    >>> value_text(["0 mm", 1.5, True])
+    '["0 mm", 1.5, true]'
+    """
+    if isinstance(value, str):
+        return toml_string(value)
+    if isinstance(value, (list, tuple)):
+        return "[" + ", ".join(value_text(v) for v in value) + "]"
+    return number_text(value)
 
 
 def field_text(f: Input, value: Any) -> str:

@@ -30,7 +30,15 @@ from collections.abc import Mapping
 from typing import TYPE_CHECKING, Any
 
 from .model import Drive, Load, Wheel
-from .schema import InputTable, all_tables, field_text, number_text, quantity_text, toml_string
+from .schema import (
+    InputTable,
+    all_tables,
+    field_text,
+    number_text,
+    quantity_text,
+    toml_string,
+    value_text,
+)
 from .tables import table_objects, table_values
 
 if TYPE_CHECKING:
@@ -108,14 +116,6 @@ def project_text(drive: Drive, *, header: str | None = None, comments: Mapping[s
     return "\n".join(out.lines) + "\n"
 
 
-def _value_text(value: Any) -> str:
-    if isinstance(value, str):
-        return toml_string(value)
-    if isinstance(value, (list, tuple)):
-        return "[" + ", ".join(_value_text(v) for v in value) + "]"
-    return number_text(value)
-
-
 def mapping_text(data: Mapping[str, Any], *, header: str | None = None) -> str:
     """A project mapping (tables of values as typed: ``"64 mm"``, numbers, flags) as TOML text,
     the declared tables in their order, each key as given.
@@ -149,7 +149,7 @@ def mapping_text(data: Mapping[str, Any], *, header: str | None = None) -> str:
             out.table(name, array=isinstance(table, list))
             for key, value in entry.items():
                 if not isinstance(value, Mapping):
-                    out.key(f"{name}.{i}", key, _value_text(value))
+                    out.key(f"{name}.{i}", key, value_text(value))
     return "\n".join(out.lines) + "\n"
 
 
