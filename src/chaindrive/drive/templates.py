@@ -49,6 +49,19 @@ def _template(intro: tuple[str, ...], *tables: _T) -> str:
     return "\n".join(lines) + "\n"
 
 
+#: What the round-link chain templates (mining, conveyor) share.
+_LINK_LIMITS = [
+            ('required_static_safety', 3.5, 'mining link chains run at lower static safety than roller chains'),
+            ('elongation_limit', 0.02, 'DIN 22252 chains are replaced at about 2 % elongation'),
+]
+_LINK_CHAIN = _T('chain', [('name', '18x64', 'DIN 22252, t = 64 mm, d = 18 mm')])
+_POCKET_DRIVE = _T('wheels', [('name', 'drive'),
+                       ('kind', 'pocket_wheel'),
+                       ('teeth', 8, 'pockets'),
+                       ('position', ['0 m', '0 m']),
+                       ('driving', True)], array=True)
+
+
 TEMPLATES: dict[str, str] = {
     'roller': _template(
         (),
@@ -78,17 +91,12 @@ TEMPLATES: dict[str, str] = {
         _T('drive', [('name', 'Mining scraper conveyor drive (Dolipiński et al.)'),
             ('description', 'Round link chain 18x64 on two 8-pocket wheels, tangential guide at the entry, tensioner on the slack span'),
             ('speed', '5 rad/s', 'Dolipiński et al. worked case; or the chain speed, "0.815 m/s"'),
-            ('required_static_safety', 3.5, 'mining link chains run at lower static safety than roller chains'),
-            ('elongation_limit', 0.02, 'DIN 22252 chains are replaced at about 2 % elongation'),
+            *_LINK_LIMITS,
             ('wear_coefficient', '2e-16 m**2/N', 'Archard coefficient, illustrative (calibrate from tests)')]),
-        _T('chain', [('name', '18x64', 'DIN 22252, t = 64 mm, d = 18 mm')]),
+        _LINK_CHAIN,
         _T('load', [('power', '25 kW'),
             ('service_factor', 1.5, 'heavy shock')]),
-        _T('wheels', [('name', 'drive'),
-            ('kind', 'pocket_wheel'),
-            ('teeth', 8, 'pockets'),
-            ('position', ['0 m', '0 m']),
-            ('driving', True)], array=True),
+        _POCKET_DRIVE,
         _T('wheels', [('name', 'tensioner'),
             ('kind', 'idler'),
             ('teeth', 6, 'pocket idler inside the loop, pressing the slack span down'),
@@ -112,16 +120,11 @@ TEMPLATES: dict[str, str] = {
         _T('drive', [('name', 'Scraper conveyor, 30 m'),
             ('description', 'Round link chain 18x64 (DIN 22252) on two 8-pocket wheels 30 m apart, the return strand hanging from a spring-loaded pocket idler behind the head'),
             ('speed', '5 rad/s', 'chain speed about 0.82 m/s'),
-            ('required_static_safety', 3.5, 'mining link chains run at lower static safety than roller chains'),
-            ('elongation_limit', 0.02, 'DIN 22252 chains are replaced at about 2 % elongation')]),
-        _T('chain', [('name', '18x64', 'DIN 22252, t = 64 mm, d = 18 mm')]),
+            *_LINK_LIMITS]),
+        _LINK_CHAIN,
         _T('load', [('power', '40 kW', 'installed power of the head drive'),
             ('service_factor', 1.5, 'heavy shock')]),
-        _T('wheels', [('name', 'drive'),
-            ('kind', 'pocket_wheel'),
-            ('teeth', 8, 'pockets'),
-            ('position', ['0 m', '0 m']),
-            ('driving', True)], array=True),
+        _POCKET_DRIVE,
         _T('wheels', [('name', 'tensioner'),
             ('kind', 'idler'),
             ('teeth', 6, 'pocket idler inside the loop, pressing the return strand down'),
