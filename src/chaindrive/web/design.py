@@ -22,7 +22,7 @@ from ..design.link import link_candidates
 from ..design.policy import BASE_TEETH
 from ..errors import ChainDriveError, InputError, ValidityRangeWarning
 from ..units import angular_velocity_to_rpm
-from .fields import FieldError, FieldSpec, parse_field, parse_integer
+from .fields import FieldError, FieldSpec, input_field, parse_field, parse_integer
 from .wheels import EXTRA_CHOICES, EXTRA_DEFAULTS, add_extra_wheels, extra_wheels
 
 __all__ = ["DEFAULTS", "FIELDS", "Design", "service_factor_table", "normalise_state",
@@ -93,32 +93,33 @@ CHOICES: dict[str, tuple[str, ...]] = {
     **EXTRA_CHOICES,
 }
 
-#: Ranges of the numeric fields (SI unit, minimum, maximum, example).
+#: Ranges of the numeric fields (SI unit, minimum, maximum, example); a field that is a
+#: project-file input takes its unit and lower bound from the input's declaration.
 FIELDS: dict[str, FieldSpec] = {
-    "power": FieldSpec("W", 0.0, 5e6, example="7.5 kW"),
-    "speed": FieldSpec("rad/s", 0.0, 1000.0, example="1450 rpm"),
+    "power": input_field("load.power", maximum=5e6, example="7.5 kW"),
+    "speed": input_field("drive.speed", maximum=1000.0, example="1450 rpm"),
     "ratio": FieldSpec("", 0.0, 20.0, example="3"),
     "driven_speed": FieldSpec("rad/s", 0.0, 1000.0, example="480 rpm"),
-    "service_factor": FieldSpec("", 1.0, 5.0, open_minimum=False, example="1.3"),
+    "service_factor": input_field("load.service_factor", maximum=5.0, example="1.3"),
     "hours_per_day": FieldSpec("", 0.0, 24.0, example="8"),
     "centre_distance": FieldSpec("m", 0.0, 50.0, example="500 mm"),
     "idler_position": FieldSpec("", 0.05, 0.95, open_minimum=False, example="0.3"),
     "idler_offset": FieldSpec("m", 0.0, 10.0, open_minimum=False, example="60 mm"),
-    "tensioner_mass": FieldSpec("kg", 0.0, 1e5, example="2 kg"),
-    "tensioner_stiffness": FieldSpec("N/m", 0.0, 1e10, example="20 kN/m"),
-    "tensioner_force": FieldSpec("N", 0.0, 1e7, open_minimum=False, example="200 N"),
+    "tensioner_mass": input_field("tensioner.mass", maximum=1e5, example="2 kg"),
+    "tensioner_stiffness": input_field("tensioner.stiffness", maximum=1e10, example="20 kN/m"),
+    "tensioner_force": input_field("tensioner.force", maximum=1e7, example="200 N"),
     # a tensioner described by its parts (chaindrive.drive.model.Tensioner.from_parts)
-    "tensioner_arm_length": FieldSpec("m", 0.0, 10.0, example="400 mm"),
-    "tensioner_arm_mass": FieldSpec("kg", 0.0, 1e5, open_minimum=False, example="30 kg"),
-    "tensioner_wheel_mass": FieldSpec("kg", 0.0, 1e5, open_minimum=False, example="40 kg"),
-    "tensioner_carriage_mass": FieldSpec("kg", 0.0, 1e5, open_minimum=False, example="25 kg"),
+    "tensioner_arm_length": input_field("tensioner.arm_length", maximum=10.0, example="400 mm"),
+    "tensioner_arm_mass": input_field("tensioner.arm_mass", maximum=1e5, example="30 kg"),
+    "tensioner_wheel_mass": input_field("tensioner.wheel_mass", maximum=1e5, example="40 kg"),
+    "tensioner_carriage_mass": input_field("tensioner.carriage_mass", maximum=1e5, example="25 kg"),
     "tensioner_spring_stiffness": FieldSpec("N/m", 0.0, 1e10, example="600 kN/m"),
-    "tensioner_spring_lever": FieldSpec("m", 0.0, 10.0, open_minimum=False, example="250 mm"),
-    "tensioner_spring_angle": FieldSpec("rad", 0.0, 1.5, open_minimum=False, example="10 deg"),
-    "guide_end": FieldSpec("m", 0.0, 10.0, example="100 mm"),
-    "skew": FieldSpec("rad", 0.0, 0.2, open_minimum=False, example="50 arcmin"),
-    "required_static_safety": FieldSpec("", 1.0, 50.0, open_minimum=False, example="7"),
-    "wear_coefficient": FieldSpec("m**2/N", 0.0, 1e-10, example="2e-16 m**2/N"),
+    "tensioner_spring_lever": input_field("tensioner.spring_lever", maximum=10.0, example="250 mm"),
+    "tensioner_spring_angle": input_field("tensioner.spring_angle", maximum=1.5, example="10 deg"),
+    "guide_end": input_field("guides.end_distance", maximum=10.0, example="100 mm"),
+    "skew": input_field("contact.skew", maximum=0.2, example="50 arcmin"),
+    "required_static_safety": input_field("drive.required_static_safety", minimum=1.0, maximum=50.0, example="7"),
+    "wear_coefficient": input_field("drive.wear_coefficient", maximum=1e-10, example="2e-16 m**2/N"),
 }
 
 TEETH_RANGE = (6, 150)
