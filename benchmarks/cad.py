@@ -1,7 +1,10 @@
 """Manufacturing CAD: time to build the drawing (DXF) and the solid (STEP) of a few wheels,
-and the agreement of OpenCascade's volume with the closed form. Prints figures; no asserts.
+and the agreement of OpenCascade's volume with the closed form; then the whole drive as a
+STEP assembly (``chaindrive cad``) of each example: parts, export time and file size.
+Prints figures; no asserts.
 
-Run: ``.venv/bin/python benchmarks/cad.py`` (needs the extras cad and cad3d).
+Run: ``.venv/bin/python benchmarks/cad.py`` (needs the extras cad and cad3d);
+``--drives-only`` skips the single wheels.
 """
 
 from __future__ import annotations
@@ -49,5 +52,37 @@ def main() -> None:
     print("CPU seconds (process time): the wall time on a shared machine is longer.")
 
 
+#: Examples exported as assemblies (the 2,194-link conveyor of ``simulate --example conveyor`` last).
+DRIVES = ["roller_industrial.toml", "multi_wheel.toml", "mining_conveyor.toml", "scraper_conveyor.toml",
+          "long_conveyor.toml"]
+
+
+def drives() -> None:
+    """Export time (placement, solids, STEP) and size of each example's assembly."""
+    from chaindrive._examples import example_path
+    from chaindrive.cad.assembly import drive_assembly
+    from chaindrive.cad.build import build_shapes, step_bytes
+    from chaindrive.drive.project import load_project
+
+    print(f"{'example':26s} {'links':>6s} {'parts':>6s} {'solids':>6s} {'place s':>8s} {'solids s':>9s} "
+          f"{'STEP s':>7s} {'total s':>8s} {'STEP MB':>8s}")
+    for name in DRIVES:
+        drive = load_project(example_path(name))
+        t0 = time.perf_counter()
+        a = drive_assembly(drive)
+        t1 = time.perf_counter()
+        shapes = build_shapes(a)
+        t2 = time.perf_counter()
+        data = step_bytes(a, shapes)
+        t3 = time.perf_counter()
+        print(f"{name:26s} {a.total_links:6d} {a.part_count:6d} {len(shapes):6d} {t1 - t0:8.2f} {t2 - t1:9.2f} "
+              f"{t3 - t2:7.2f} {t3 - t0:8.2f} {len(data) / 1e6:8.2f}")
+    print("wall seconds (each distinct solid built once, the parts placed copies).")
+
+
 if __name__ == "__main__":
-    main()
+    import sys
+
+    if "--drives-only" not in sys.argv:
+        main()
+    drives()

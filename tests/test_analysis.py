@@ -88,7 +88,9 @@ def test_results_json_numbers_unchanged(name, tmp_path):
         if not (i < len(values) and abs(values[i] - v) <= tol):
             missing.append((path, v))
     assert not missing
-    assert new["passed"] is old["passed"]
+    # the mining conveyor's verdict moved on purpose (issue 30): its slack span's forced response
+    # is amplified 1.9 times (limit 2.04); the band the baseline failed on is information now
+    assert new["passed"] is (True if name == "mining_conveyor" else old["passed"])
 
 
 def _roller(**changes):
@@ -160,11 +162,16 @@ def test_every_check_has_unit_source_and_verdict():
         json.dumps(a.to_dict(), allow_nan=False)
 
 
-def test_mining_conveyor_fails_the_resonance_check_only():
-    a = analyze_drive(load_project(EXAMPLES / "mining_conveyor.toml"))
-    assert [c.name for c in a.failed] == ["resonance margin of the slack span with tensioner, worst pair"]
+def test_long_conveyor_fails_the_span_vibration_check_only():
+    # issue 30: the verdict is the forced response (amplification 3.5 of the driving wheel's
+    # run-out, limit 2.04); the mining conveyor, a mode inside the paper's band but its response
+    # amplified 1.9 times, passes
+    a = analyze_drive(load_project(EXAMPLES / "long_conveyor.toml"))
+    assert [c.name for c in a.failed] == ["largest amplification of the slack span's forced response, worst excitation"]
     assert a.vibration.tensioner is not None and a.vibration.passed is False
     assert a.remedy is not None and a.remedy.found  # a way out (issue 20)
+    m = analyze_drive(load_project(EXAMPLES / "mining_conveyor.toml"))
+    assert m.passed and m.remedy is None
 
 
 def test_check_margin_and_verdict():

@@ -112,21 +112,23 @@ def test_report_pdf(tmp_path):
 
 
 def test_vibration_section(outcomes):
-    # mining conveyor: the tensioner paper check of the slack span with its tensioner, a verdict
+    # mining conveyor: the slack span with its tensioner; the verdict is the forced response's
+    # amplification (issue 30), the tensioner paper's band information beside it
     outcome, folder = outcomes["mining_conveyor"]
     data = json.loads((folder / "results.json").read_text())
     sec = data["sections"]["Span vibration and resonance check"]
-    assert sec["checks"][0]["name"].startswith("resonance margin of the slack span with tensioner")
+    verdict, band = sec["checks"]
+    assert verdict["name"].startswith("largest amplification of the slack span's forced response")
+    assert verdict["relation"] == "<=" and verdict["passed"] == (verdict["value"] <= verdict["limit"])
+    assert band["relation"] == "info" and band["passed"] is None and band["value"] < 0  # a mode in the band
     rows = sec["results"]["check"]
     # the paper's excitations of a round link chain on an 8-pocket wheel at 5 rad/s: ω1, ω2, zω1
-    # (t ± d); the link passing 2zω1 is judged by its forced response (severity table)
+    # (t ± d); the link passing 2zω1 too, every one judged by its forced response (severity table)
     assert sorted({round(r["exciting_frequency"], 9) for r in rows}) == [5.0, 40.0]
-    assert any(c["name"].startswith("amplification of the slack span's response to the link passing")
-               for c in sec["checks"])
     for r in rows:
         assert r["ok"] == (not 0.7 <= r["ratio"] <= 1.4)
-    # the verdict is the check's, and the drive's overall verdict follows it
-    assert sec["passed"] == (all(r["ok"] for r in rows) and all(c["passed"] is not False for c in sec["checks"]))
+    # the section's verdict is the amplification's, whatever the band says
+    assert sec["passed"] is verdict["passed"] is True
     assert (folder / "campbell.png").exists()
     # roller drive without tensioner: free spans for information only
     outcome, folder = outcomes["roller_industrial"]

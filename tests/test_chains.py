@@ -333,7 +333,7 @@ def test_normalize_name():
 
 @pytest.mark.parametrize(
     ("text", "suggested"),
-    [("16C", "16B-1"), ("18x65", "18x64"), ("ANSI 85", "ANSI 80-1"), ("16B-4", "16B-3"), ("80-4", "ANSI 80-3")],
+    [("16C", "16B-1"), ("18x65", "18x64"), ("ANSI 85", "ANSI 80-1"), ("16B-4", "16B-3"), ("80-5", "ANSI 80-4")],
 )
 def test_unknown_name_suggests_close_names(text, suggested):
     with pytest.raises(UnknownNameError, match="closest known names") as info:

@@ -69,7 +69,7 @@ def test_readme_commands_run_in_order(workdir):
     for command in readme_commands():
         words = shlex.split(command)
         r = subprocess.run(exe + words[1:], cwd=workdir, capture_output=True, text=True, env=_env(), timeout=900)
-        # 0: done; 1: a check fails (the demo conveyor's resonance, a vibration check)
+        # 0: done; 1: a check fails (the long conveyor's span vibration)
         assert r.returncode in (0, 1), f"{command}\nexit {r.returncode}\n{r.stderr[-2000:]}"
         assert "error" not in r.stderr.lower(), f"{command}\n{r.stderr[-2000:]}"
 

@@ -12,6 +12,7 @@ from hypothesis import strategies as st
 from chaindrive.errors import InputError
 from chaindrive.vibration import TensionerSpan, tensioner_frequencies
 from chaindrive.vibration.excitation import (
+    AMPLIFICATION_LIMIT,
     forced_span_response,
     polygon_transverse_harmonics,
     runout_tolerance,
@@ -96,12 +97,16 @@ def test_span_excitations_rows_and_errors():
     rows = span_excitations(SPAN, 10.0, ratio=2.0, teeth_driving=17, teeth_driven=34, radius_driving=0.069,
                             radius_driven=0.1376, pitch=0.0254)
     assert [r.name for r in rows] == ["driving sprocket", "driven sprocket", "unequal links (inner/outer)", "meshing"]
-    assert all(r.source for r in rows) and [r.criterion for r in rows] == ["band"] * 3 + ["response"]
+    # every excitation judged by the amplification of its response (issue 30: one criterion)
+    assert all(r.source for r in rows) and [r.criterion for r in rows] == ["response"] * 4
+    assert [r.passed for r in rows] == [r.amplification <= AMPLIFICATION_LIMIT for r in rows]
     assert rows[0].amplification == pytest.approx(1.0, abs=0.1)  # 10 rad/s: far below the first mode
     link = span_excitations(SPAN, 5.0, ratio=1.0, teeth_driving=8, teeth_driven=8, radius_driving=0.1643,
                             radius_driven=0.1643, pitch=0.064, bar_diameter=0.018)
     assert [r.name for r in link][-2:] == ["link pair (t ± d)", "link passing"]
     assert link[-1].criterion == "response" and link[-1].passed is not None
+    # a link chain has no unequal inner/outer links: no amplitude, no verdict
+    assert all(r.passed is None for r in link if r.end_amplitude == 0.0)
     with pytest.raises(InputError, match="damping_ratio"):
         forced_span_response(SPAN, 10.0, 1e-3, damping_ratio=0.0)
     with pytest.raises(InputError, match="frequency"):

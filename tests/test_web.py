@@ -141,7 +141,7 @@ def test_mining_design_has_tensioner_and_resonance_check():
     assert p["errors"] == {}
     assert p["has_tensioner"] and p["chain"]["name"] == "18x64"
     names = [c["name"] for c in p["checks"]]
-    assert any("resonance" in n for n in names)
+    assert any("forced response" in n for n in names) and any("band 0.7" in n for n in names)  # verdict, information
     assert all(c["source"] for c in p["checks"])
     assert "<svg" in p["drawing"] and "tensioner" in p["drawing"]
 

@@ -20,7 +20,7 @@ from .units import RAD_S_PER_RPM
 if TYPE_CHECKING:
     from .analysis.checks import Check
 
-__all__ = ["DISPLAY", "CONVERSIONS", "convert", "display_of", "display", "fmt", "check_line_parts", "check_value_text", "check_limit_text"]
+__all__ = ["verdict_text", "DISPLAY", "CONVERSIONS", "convert", "display_of", "display", "fmt", "check_line_parts", "check_value_text", "check_limit_text"]
 
 #: SI unit -> (display unit, factor).
 DISPLAY: dict[str, tuple[str, float]] = {
@@ -49,6 +49,7 @@ CONVERSIONS: dict[tuple[str, str], float] = {
     ("m^2", "mm^2"): 1e6,
     ("m^3", "cm^3"): 1e6,
     ("1", "%"): 100.0,
+    ("-", "%"): 100.0,
     ("rad", "arcmin"): math.degrees(1.0) * 60.0,
     ("N/m", "kN/m"): 1e-3,
 }
@@ -112,8 +113,8 @@ def fmt(value: Any, digits: int = 4) -> str:
     return str(value)
 
 
-def check_line_parts(value: float | None, unit: str) -> str:
-    v, u = display(value, unit)
+def check_line_parts(value: float | None, unit: str, shown: str | None = None) -> str:
+    v, u = convert(value, unit, shown or None)
     return f"{fmt(v)} {u}".strip() if u != "-" else fmt(v)
 
 
@@ -121,7 +122,7 @@ def check_value_text(check: Check) -> str:
     """The check's value with its display unit (``"—"`` when unknown)."""
     if check.value is None:
         return "unknown"
-    return check_line_parts(check.value, check.unit)
+    return check_line_parts(check.value, check.unit, check.display)
 
 
 def check_limit_text(check: Check) -> str:
@@ -131,6 +132,28 @@ def check_limit_text(check: Check) -> str:
     limit = check.limit
     if isinstance(limit, tuple):  # a "within" range
         lo, hi = limit
-        (a, u), (b, _) = display(lo, check.unit), display(hi, check.unit)
+        (a, u), (b, _) = convert(lo, check.unit, check.display or None), convert(hi, check.unit, check.display or None)
         return f"{fmt(a)} … {fmt(b)} {u if u != '-' else ''}".strip()
-    return f"{check.relation} {check_line_parts(limit, check.unit)}"
+    return f"{check.relation} {check_line_parts(limit, check.unit, check.display)}"
+
+
+def verdict_text(failed: int, warnings: int) -> str:
+    """The overall verdict in words: never "all checks pass" beside a warning.
+
+    Parameters
+    ----------
+    failed : int
+        Checks that fail.
+    warnings : int
+        Warnings of the analysis.
+
+    Examples
+    --------
+    >>> verdict_text(0, 0), verdict_text(0, 3), verdict_text(2, 1)
+    ('passes', 'passes, 3 warnings', 'fails: 2 checks fail, 1 warning')
+    """
+    w = f"{warnings} warning{'s' if warnings != 1 else ''}"
+    if failed:
+        return f"fails: {failed} check{'s' if failed != 1 else ''} fail{'s' if failed == 1 else ''}" + (
+            f", {w}" if warnings else "")
+    return "passes" + (f", {w}" if warnings else "")

@@ -19,6 +19,8 @@ MAX_FRAMES          1 000        frames of an animation
 MAX_STRANDS         100          rows of a multi-row chain (ISO 606: up to 3)
 MAX_SOLID_TEETH     150          teeth of a 3-D solid (STEP); ISO 606 Annex A ends at
                                  150, and OpenCascade takes minutes beyond
+MAX_CAD_PARTS       20 000       parts (solids) of a drive's 3-D assembly: links x
+                                 parts per link + wheels (a 2,000-link roller chain)
 MAX_PRIMITIVES      200 000      lines and arcs of one outline (20 per tooth)
 MAX_ARC_POINTS      10 000       points per arc when an outline is sampled
 ==================  ===========  ===================================================
@@ -49,6 +51,7 @@ __all__ = [
     "MAX_FRAMES",
     "MAX_STRANDS",
     "MAX_SOLID_TEETH",
+    "MAX_CAD_PARTS",
     "MAX_PRIMITIVES",
     "MAX_ARC_POINTS",
     "PLAUSIBLE",
@@ -76,6 +79,11 @@ MAX_STRANDS = 100
 #: Teeth or pockets of a wheel built as a 3-D solid (STEP): ISO 606 Annex A ends at 150,
 #: and an OpenCascade solid of 150 teeth already takes minutes.
 MAX_SOLID_TEETH = 150
+#: Parts (solids) of a drive's 3-D assembly (STEP, glTF): the links times their parts
+#: (7 for a simplex roller chain, 1 for a round link chain) plus wheels, guides and the
+#: tensioner. 20,000 is a 2,800-link roller chain; STEP writes it in seconds (each
+#: distinct solid once, the rest placed copies) but a CAD system's re-import takes minutes.
+MAX_CAD_PARTS = 20_000
 #: Lines and arcs of one outline (drawings, DXF, SVG): 20 per tooth at MAX_TEETH.
 MAX_PRIMITIVES = 20 * MAX_TEETH
 #: Points per arc when an outline is sampled into a polyline.

@@ -232,12 +232,19 @@ def convert_from_si(value: float, si_unit: str, unit: str) -> float:
 
     >>> round(convert_from_si(10.0, "rad/s", "rpm"), 3), convert_from_si(0.5, "m", "mm")
     (95.493, 500.0)
+    >>> round(convert_from_si(2 * math.pi, "rad/s", "Hz"), 12)  # Hz counts turns, as parse_quantity
+    1.0
     """
-    _, f_si, dims_si, _, _ = _unit_info(si_unit)
-    _, f_unit, dims_unit, _, _ = _unit_info(unit)
+    _, f_si, dims_si, rad_si, hz_si = _unit_info(si_unit)
+    _, f_unit, dims_unit, rad_unit, hz_unit = _unit_info(unit)
     if dims_si != dims_unit:
         raise InputError(f"cannot show a value in {si_unit} as {unit}", field="unit")
-    return float(value) * f_si / f_unit
+    factor = f_si / f_unit
+    if hz_unit and rad_si == 1 and not hz_si:  # an angular frequency shown in Hz: turns per second
+        factor /= 2 * math.pi
+    elif hz_si and rad_unit == 1 and not hz_unit:
+        factor *= 2 * math.pi
+    return float(value) * factor
 
 
 def is_dimensional(unit: str) -> bool:

@@ -38,6 +38,9 @@ class Check(Result):
     note : str
         Detail for the reader.
     relation : {">=", "<=", "within", "info"}
+    display : str
+        The unit the value is shown in when not the default display unit of ``unit``
+        (``"%"`` for a ratio, :data:`chaindrive.workflows.display.CONVERSIONS`); empty: the default.
     part : str
         The analysis part that made the check (set by :func:`~chaindrive.analysis.analyze_drive`
         from the part's declaration, :mod:`chaindrive.analysis.parts`).
@@ -58,6 +61,7 @@ class Check(Result):
     note: str = ""
     relation: Literal[">=", "<=", "within", "info"] = ">="
     part: str = ""
+    display: str = ""
 
     @property
     def verdict(self) -> str:

@@ -67,7 +67,7 @@ class CrawlerConveyor(Result):
     sprocket_distance: float = quantity("m", display="mm")
     cam_distance: float = quantity("m", display="mm")
     mean_speed: float = quantity("m/s")
-    speed_nonuniformity: float = quantity("1")
+    speed_nonuniformity: float = quantity("1", display="%")
     acceleration_min: float = quantity("m/s^2")
     acceleration_max: float = quantity("m/s^2")
     transverse_throw: float = quantity("m", display="mm")

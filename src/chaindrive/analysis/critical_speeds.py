@@ -21,6 +21,7 @@ information (relation ``"info"``), with the verdict in words in the note.
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 import numpy as np
@@ -41,11 +42,11 @@ ASSUMED_DISC_THICKNESS = 0.02
 class CriticalSpeeds(Result):
     """Longitudinal and torsional natural frequencies against the tooth frequency."""
 
-    tooth_frequency: float = quantity("rad/s")
+    tooth_frequency: float = quantity("rad/s", display="Hz")
     axial_stiffness: float = quantity("N")
-    longitudinal: float = quantity("rad/s")
+    longitudinal: float = quantity("rad/s", display="Hz")
     longitudinal_ratio: float = quantity("1")
-    torsional: np.ndarray = quantity("rad/s")
+    torsional: np.ndarray = quantity("rad/s", display="Hz")
     torsional_ratio: np.ndarray = quantity("1")
     wheel_names: tuple[str, ...] = ()
     assumed_inertia: np.ndarray = quantity("kg*m**2", default_factory=lambda: np.zeros(0))
@@ -107,15 +108,18 @@ def _verdict(ratio: float) -> str:
 
 def critical_speed_checks(result: CriticalSpeeds) -> list[Check]:
     """Information checks: each natural frequency against the tooth frequency."""
-    out = [Check("longitudinal (wave-type) natural frequency of the tight span", result.longitudinal, None,
-                 "rad/s", None, "S. S. Rao, Mechanical Vibrations, 5th ed., §8.3 (bar fixed at both ends); "
-                 "band: the tensioner paper", note=_verdict(result.longitudinal_ratio) + "; EA estimated",
-                 relation="info")]
+    # a frequency is stated in Hz (f = ω/2π, SI), its angular frequency in the note (issue 30)
+    wl = result.longitudinal
+    out = [Check("longitudinal (wave-type) natural frequency of the tight span", wl / (2 * math.pi), None,
+                 "Hz", None, "S. S. Rao, Mechanical Vibrations, 5th ed., §8.3 (bar fixed at both ends); "
+                 "band: the tensioner paper",
+                 note=f"{wl:.4g} rad/s; " + _verdict(result.longitudinal_ratio) + "; EA estimated", relation="info")]
     for name, f, r in zip(result.wheel_names, result.torsional, result.torsional_ratio, strict=True):
-        out.append(Check(f"torsional (spring-type) natural frequency of wheel {name!r}", float(f), None, "rad/s",
-                         None, "S. S. Rao, Mechanical Vibrations, 5th ed., §2.2 (one-degree-of-freedom torsion)",
-                         note=_verdict(float(r)) + "; EA estimated, inertia of a 20 mm steel disc assumed",
-                         relation="info"))
+        out.append(Check(f"torsional (spring-type) natural frequency of wheel {name!r}", float(f) / (2 * math.pi),
+                         None, "Hz", None,
+                         "S. S. Rao, Mechanical Vibrations, 5th ed., §2.2 (one-degree-of-freedom torsion)",
+                         note=f"{float(f):.4g} rad/s; " + _verdict(float(r))
+                         + "; EA estimated, inertia of a 20 mm steel disc assumed", relation="info"))
     return out
 
 

@@ -130,7 +130,7 @@ def drive_entry(drive: Drive, *, points: int = 361) -> DriveEntry:
 def entry_checks(entry: DriveEntry) -> tuple[Check, ...]:
     """Speed non-uniformity of every entry (information)."""
     return tuple(Check(f"speed non-uniformity, {c.label}", float(c.result.summary["nonuniformity"]), None, "-",
-                       None, "Dolipiński et al.; exact rigid-link model", relation="info")
+                       None, "Dolipiński et al.; exact rigid-link model", relation="info", display="%")
                  for c in entry.cases)
 
 

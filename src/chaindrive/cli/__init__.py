@@ -33,6 +33,7 @@ TOPICS = (
     "crawler",
     "study",
     "life",
+    "cad",
 )
 
 for _topic in TOPICS:

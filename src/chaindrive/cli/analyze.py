@@ -30,6 +30,10 @@ def _run_claimed(project: Path, output: Path, pdf: bool, figures: bool, quiet: b
 
     console = Console(stderr=True, quiet=quiet)
     drive = load_project(project)
+    try:
+        source: str | None = project.read_text(encoding="utf-8")
+    except (OSError, UnicodeError):
+        source = None
     with Progress(TextColumn("[bold]{task.description}"), BarColumn(), TextColumn("{task.completed}/{task.total}"),
                   TimeElapsedColumn(), console=console, transient=True, disable=quiet) as prog:
         task = prog.add_task("analysing", total=None)
@@ -39,9 +43,9 @@ def _run_claimed(project: Path, output: Path, pdf: bool, figures: bool, quiet: b
 
         with atomic_output_dir(output, force=force) as partial:  # moved into place when complete
             outcome = analyze(drive, partial, subtitle=f"Project file: {project}", pdf=pdf, figures=figures,
-                              progress=progress, parallel_figures=True)
+                              progress=progress, parallel_figures=True, source=source)
         outcome.files = {k: output / Path(v).relative_to(partial) for k, v in outcome.files.items()}
-    from ..display import check_limit_text, check_value_text
+    from ..display import check_limit_text, check_value_text, verdict_text
 
     out = Console(quiet=quiet, highlight=False)
     for title, c in outcome.report.checks:
@@ -51,15 +55,15 @@ def _run_claimed(project: Path, output: Path, pdf: bool, figures: bool, quiet: b
         out.print(f"  {mark}  {title}: {c.name} = {check_value_text(c)} (limit {check_limit_text(c)})",
                   markup=True)
     warns = outcome.report.warnings
-    verdict = "[green]all checks pass[/green]" if outcome.passed else "[bold red]at least one check fails[/bold red]"
-    out.print(f"{drive.name}: {verdict}; {len(warns)} warning{'s' if len(warns) != 1 else ''}"
-              + (":" if warns else ""))
+    words = verdict_text(len(outcome.analysis.failed), len(warns))
+    verdict = f"[green]{words}[/green]" if outcome.passed else f"[bold red]{words}[/bold red]"
+    out.print(f"{drive.name}: {verdict}" + (":" if warns else ""))
     for w in warns:
         out.print(f"  warning: {w}", markup=False)
     out.print(f"report: {outcome.files['html']}")
     out.print(f"results: {outcome.files['json']}")
     if "proposal" in outcome.files:
-        out.print(f"proposal (a design that passes the resonance check): {outcome.files['proposal']}")
+        out.print(f"proposal (a design that passes the span-vibration check): {outcome.files['proposal']}")
     if "pdf" in outcome.files:
         out.print(f"pdf: {outcome.files['pdf']}")
     return outcome.exit_code

@@ -195,7 +195,7 @@ def motion_rows(summary: Mapping[str, Any]) -> list[tuple[str, str]]:
         ("mean speed v_mean", f"{s['v_mean']:.6f} m/s"),
         ("minimum speed v_min", f"{s['v_min']:.6f} m/s"),
         ("maximum speed v_max", f"{s['v_max']:.6f} m/s"),
-        ("non-uniformity (vmax - vmin)/vmean", ratio_text(s["nonuniformity"])),
+        ("non-uniformity (vmax - vmin)/vmean", f"{100 * s['nonuniformity']:.4g} %"),
         ("minimum acceleration a_min", f"{s['a_min']:.6f} m/s²"),
         ("maximum acceleration a_max", f"{s['a_max']:.6f} m/s²"),
         ("acceleration changes sign at period end", "yes" if s["sign_change_at_period_end"] else "no"),

@@ -43,6 +43,7 @@ def simulate_command(
     coupling_slip: float = typer.Option(0.03, "--coupling-slip", help="With --coupling: its nominal slip s_n, 0.005 <= s_n <= 0.2 (dimensionless; default 0.03)."),
     coupling_stall: float = typer.Option(1.5, "--coupling-stall", help="With --coupling: its stall-torque ratio k = T(s = 1)/T_n, 1.1 <= k <= 6 and k s_n < 1 (dimensionless; default 1.5)."),
     secondary_inertia: str | None = typer.Option(None, "--secondary-inertia", help=unit_help("With --coupling: coupling secondary and gearbox reduced to the driving wheel's shaft, added to the wheel's, >= 0 (default 0).", "kg*m**2", "209 kg*m**2")),
+    cad_frame: str | None = typer.Option(None, "--cad-frame", help=unit_help("Project files: also write the drive at this instant of the run as a STEP assembly (cad_frame.step in the output directory; wheels, links, guides, tensioner, as `chaindrive cad`).", "s", "0.4 s")),
     force: bool = typer.Option(False, "--force", help="Replace an earlier run in the output directory (the results are built in a temporary folder and moved into place when complete; a failed run leaves an earlier one unchanged)."),
 ) -> None:
     """Simulate the drive: point-mass pins, elastic links (EA), penalty contact of rollers
@@ -57,7 +58,7 @@ def simulate_command(
     with claim_output_dir(output, force=force):
         _simulate(project, example, duration, output, speed, load, ramp, frames, no_plots, as_json, force,
                   DriveProfile(motor, motor_inertia, stop, stop_ramp, ripple, ripple_frequency, coupling,
-                               coupling_slip, coupling_stall, secondary_inertia))
+                               coupling_slip, coupling_stall, secondary_inertia), cad_frame)
 
 
 @dataclass(frozen=True)
@@ -78,7 +79,7 @@ class DriveProfile:
 
 def _simulate(project: Path | None, example: str | None, duration: str | None, output: Path,
               speed: str | None, load: str | None, ramp: str | None, frames: int, no_plots: bool,
-              as_json: bool, force: bool, profile: DriveProfile | None = None) -> None:
+              as_json: bool, force: bool, profile: DriveProfile | None = None, cad_frame: str | None = None) -> None:
     profile = DriveProfile() if profile is None else profile
     motor, motor_inertia, stop, stop_ramp = profile.motor, profile.motor_inertia, profile.stop, profile.stop_ramp
     ripple, ripple_frequency = profile.ripple, profile.ripple_frequency
@@ -94,8 +95,14 @@ def _simulate(project: Path | None, example: str | None, duration: str | None, o
     )
 
     long = example == "conveyor"
+    frame_time = quantity(cad_frame, "s", "cad-frame") if cad_frame else None
+    if frame_time is not None and project is None:
+        raise InputError("--cad-frame needs a project file (the wheels' parts come from the project)")
     dur = check_duration("--duration", quantity(duration or ("3 s" if long else "0.5 s"), "s",
                                                 "duration"))
+    if frame_time is not None and not 0.0 <= frame_time <= dur:
+        raise InputError(f"--cad-frame must lie in [0, {dur:g}] s (the simulated time), got {frame_time:g} s",
+                         field="cad-frame")
     ramp_time = quantity(ramp or ("2 s" if long else "0.1 s"), "s", "ramp")
     check_size("--frames", frames, MAX_FRAMES, minimum=0)
     if (project is None) == (example is None):
@@ -186,6 +193,13 @@ def _simulate(project: Path | None, example: str | None, duration: str | None, o
         _write_outputs(res, output, no_plots, frames)
         if project is not None:
             _write_start_up(res, model, output, no_plots)
+        if frame_time is not None:
+            from ..cad.assembly import frame_assembly
+            from .cad import export_assembly
+
+            typer.echo(f"writing the drive at t = {frame_time:g} s as STEP...", err=True)
+            export_assembly(frame_assembly(drive, res, model, frame_time), output / "cad_frame.step", None,
+                            True, False)
     output = final_output
     _report(res, output, as_json)
 

@@ -17,7 +17,7 @@ value that triggers it, the published limit, the source and, in ``note``, what t
   pitches; clause 8: at most 80 pitches without support) -- above: a guide or idler under
   the long span, or a larger pitch; below: fewer teeth in mesh and more articulations per
   metre: a longer centre distance or a smaller pitch;
-* **hours per day** -- the rating life (15 000 h, ACA) in years at the duty's hours.
+* **rating basis** -- the wear life (15 000 h, ACA) the ratings assume; the drive's own life is the wear check.
 """
 
 from __future__ import annotations
@@ -112,8 +112,10 @@ def drive_advice(duty: Duty, rating: ChainRating, *, smaller_pitch: str | None =
         out.append(_info("centre distance below 30 pitches", centre_pitches, low, "1", _CENTRE_SOURCE,
                          f"{centre_pitches:.0f} pitches: each link articulates often and the wrap on the small "
                          "sprocket shrinks: a longer centre distance or a smaller pitch"))
-    years = RATING_LIFE_HOURS / (duty.hours_per_day * 365.0)
-    out.append(_info("rating life at the duty's hours", years * 365.0 * 24.0 * 3600.0, None, "s",
+    # one life per drive: the ratings' basis is stated in hours, the drive's own life (in
+    # years at the duty's hours) is the wear check of the analysis (issue 30)
+    out.append(_info("rating basis: wear life the ratings assume", RATING_LIFE_HOURS * 3600.0, None, "s",
                      "ACA and ISO 10823:2004 ratings: 15 000 h",
-                     f"15 000 h at {duty.hours_per_day:g} h/day is about {years:.1f} years"))
+                     "the ratings assume 15 000 h of wear life; this drive's own wear life is the wear "
+                     "check of the analysis (hours to the elongation limit)"))
     return tuple(out)

@@ -26,9 +26,11 @@ True
 from __future__ import annotations
 
 import dataclasses
+import math
 from collections.abc import Mapping
 from typing import TYPE_CHECKING, Any
 
+from ..errors import InputError
 from .model import Drive, Load, Wheel
 from .schema import (
     InputTable,
@@ -44,7 +46,8 @@ from .tables import table_objects, table_values
 if TYPE_CHECKING:
     from ..selection import Candidate
 
-__all__ = ["project_text", "mapping_text", "drive_to_toml", "candidate_drive", "candidate_project_text", "toml_string",
+__all__ = ["project_text", "mapping_text", "drive_to_toml", "edit_project_text", "candidate_drive",
+           "candidate_project_text", "toml_string",
            "quantity_text"]
 
 
@@ -225,3 +228,121 @@ def candidate_project_text(candidate: Candidate, *, name: str | None = None) -> 
                "(SI, exact); a bare number is refused for them. Check it with:  chaindrive layout <this file>",
         comments={"drive.speed": "driving (small) sprocket", "drive.links": "even number of pitches",
                   "wheels.1.position": f"centre distance for {c.links} links (ISO 10823)"})
+
+
+#: Display units of the values a proposal may change, when the user's file gives none.
+_EDIT_UNITS = {"mass": "kg", "stiffness": "kN/m", "force": "kN", "position": "m"}
+
+
+def _value_in_unit(value: float, unit: str, si: str) -> str:
+    """``value`` [SI] written in ``unit`` with the digits it needs (at most 6 significant)."""
+    from ..units import parse_quantity
+
+    factor = parse_quantity(f"1 {unit}", si, field="unit")
+    return f"{value / factor:.6g} {unit}"
+
+
+def _user_unit(item: Any, default: str) -> str:
+    """The unit the user wrote for a quantity (``"200 kN/m"`` → ``"kN/m"``)."""
+    text = str(item).strip() if item is not None else ""
+    parts = text.split(None, 1)
+    return parts[1] if len(parts) == 2 else default
+
+
+def _set(table: Any, key: str, value: Any) -> None:
+    """``table[key] = value`` keeping the key's comment in its column."""
+    import tomlkit
+
+    old = table.get(key)
+    width = len(old.as_string()) if old is not None and hasattr(old, "as_string") else None
+    comment_ws = old.trivia.comment_ws if old is not None and hasattr(old, "trivia") else ""
+    table[key] = value
+    new = table.item(key) if hasattr(table, "item") else table[key]
+    if width is not None and old.trivia.comment:
+        new.trivia.comment_ws = " " * max(1, width + len(comment_ws) - len(tomlkit.item(value).as_string()))
+
+
+def _same(a: Drive, b: Drive) -> bool:
+    """Equal drives, the values a proposal writes compared to 1e-9 (they went through a unit)."""
+    def close(x: Any, y: Any) -> bool:
+        if isinstance(x, float) and isinstance(y, float):
+            return math.isclose(x, y, rel_tol=1e-9, abs_tol=1e-12)
+        if isinstance(x, tuple) and isinstance(y, tuple):
+            return len(x) == len(y) and all(close(u, v) for u, v in zip(x, y, strict=True))
+        if dataclasses.is_dataclass(x) and type(x) is type(y):
+            return all(close(getattr(x, f.name), getattr(y, f.name)) for f in dataclasses.fields(x))
+        return bool(x == y)
+
+    return close(a, b)
+
+
+def edit_project_text(text: str, old: Drive, new: Drive, *, header: str = "") -> str:
+    """The user's project file ``text`` (of ``old``) with only what differs in ``new`` changed.
+
+    What a proposal changes is edited in place (tomlkit): the tensioner's mass, stiffness
+    and force, and the positions of wheels; every other line, comment and the order stay
+    as the user wrote them, and each changed quantity keeps the user's unit.
+
+    Parameters
+    ----------
+    text : str
+        The project file ``old`` was read from.
+    old, new : Drive
+        The drive of ``text`` and the changed one.
+    header : str
+        Comment lines put before the file.
+
+    Returns
+    -------
+    str
+        TOML text that :func:`~chaindrive.drive.project.parse_project` reads as ``new``.
+
+    Raises
+    ------
+    InputError
+        ``new`` differs from ``old`` in something else.
+
+    Examples
+    --------
+    >>> from chaindrive.drive.project import parse_project, template
+    >>> import dataclasses
+    >>> text = template("conveyor")
+    >>> d = parse_project(text)
+    >>> t = dataclasses.replace(d.tensioner, stiffness=112e3)
+    >>> out = edit_project_text(text, d, dataclasses.replace(d, tensioner=t))
+    >>> [ln for ln in out.splitlines() if ln.startswith("stiffness")]
+    ['stiffness = "112 kN/m"']
+    >>> parse_project(out).tensioner.stiffness
+    112000.0
+    """
+    import tomlkit
+
+    doc = tomlkit.parse(text)
+    wheels = doc.get("wheels", [])
+    for w0, w1 in zip(old.wheels, new.wheels, strict=True):
+        if w0.position != w1.position:
+            table = next(t for t in wheels if t.get("name") == w0.name)
+            unit = _user_unit(table["position"][0], _EDIT_UNITS["position"])
+            _set(table, "position", [_value_in_unit(v, unit, "m") for v in w1.position])
+    t0, t1 = old.tensioner, new.tensioner
+    if t0 != t1:
+        if t0 is None or t1 is None:
+            raise InputError("a proposal cannot add or remove the tensioner", field="tensioner")
+        table = doc["tensioner"]
+        if t1.mechanism is None and t0.mechanism is not None:  # parts replaced by their reduction
+            for key in ("mechanism", *dict(t0.parts)):
+                if key in table:
+                    del table[key]
+        for key, si in (("mass", "kg"), ("stiffness", "N/m"), ("force", "N")):
+            a, b = getattr(t0, key), getattr(t1, key)
+            if b is not None and (a != b or (t0.mechanism is not None and t1.mechanism is None and key != "force")):
+                _set(table, key, _value_in_unit(b, _user_unit(table.get(key), _EDIT_UNITS[key]), si))
+    from .project import parse_project
+
+    out = tomlkit.dumps(doc)
+    if not _same(parse_project(out), new):
+        raise InputError("the proposal changes more than the tensioner and the wheel positions", field="proposal")
+    if header:
+        lines = [ln if ln.startswith("#") or not ln else f"# {ln}" for ln in header.strip("\n").splitlines()]
+        out = "\n".join(lines) + "\n\n" + out
+    return out

@@ -596,6 +596,9 @@ def part_drawing(part: WheelPart, *, date: str | None = None, sheet: Sheet | Non
     (True, False)
     """
     check_part_size(part)  # bounded before anything is drawn (chaindrive.limits)
+    if getattr(part, "rim", None) is not None:
+        raise InputError("the workshop drawing is of simplex sprockets; a multi-strand rim is a solid only",
+                         field="strands")
     try:
         import ezdxf  # noqa: F401
     except ImportError as exc:  # pragma: no cover - depends on install

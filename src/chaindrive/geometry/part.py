@@ -36,6 +36,7 @@ __all__ = [
     "DEFAULT_MATERIAL",
     "ToothChamfer",
     "Groove",
+    "Rim",
     "WheelPart",
     "side_chamfer_thickness",
     "side_chamfer_moment",
@@ -98,6 +99,31 @@ class Groove:
 
 
 @dataclass(frozen=True)
+class Rim:
+    """Rim of a multi-strand sprocket (m): ``strands`` tooth plates ``pt`` apart on a web.
+
+    Attributes
+    ----------
+    strands : int
+        Tooth plates (chain strands), >= 2.
+    transverse_pitch : float
+        Distance ``pt`` between the plates' middle planes [m] (the chain's).
+    web_radius : float
+        Radius of the web joining the plates [m]: ISO 606's ``dg/2``, below which the
+        chain's plates never come.
+    """
+
+    strands: int
+    transverse_pitch: float
+    web_radius: float
+
+    def offsets(self) -> list[float]:
+        """Axial position of each plate's middle plane [m], the rim centred on z = 0."""
+        n = self.strands
+        return [(k - (n - 1) / 2) * self.transverse_pitch for k in range(n)]
+
+
+@dataclass(frozen=True)
 class WheelPart(Result):
     """A wheel as a part to make: outline, width, chamfer or groove, hub, bore, keyway (m).
 
@@ -129,6 +155,8 @@ class WheelPart(Result):
         ISO 606 tooth gap form of the outline.
     sources : dict
         Source of each dimension.
+    rim : Rim or None
+        Multi-strand sprocket: the plates and their web (``width`` is then one plate's).
     """
 
     kind: str
@@ -144,6 +172,14 @@ class WheelPart(Result):
     dimensions: Any
     form: str | None = None
     sources: dict = field(default_factory=dict)
+    rim: Rim | None = None
+
+    @property
+    def rim_width(self) -> float:
+        """Axial width of the rim [m]: ``(n − 1) pt + bf1`` for ``n`` strands, else ``width``."""
+        if self.rim is None:
+            return self.width
+        return (self.rim.strands - 1) * self.rim.transverse_pitch + self.width
 
     @property
     def tip_radius(self) -> float:
@@ -153,7 +189,7 @@ class WheelPart(Result):
     @property
     def total_width(self) -> float:
         """Plate or rim width plus hub projection [m]."""
-        return self.width + self.hub.hub_length
+        return self.rim_width + self.hub.hub_length
 
     def to_dict(self) -> dict:
         """Numbers of the part in SI units (the outline is summarised)."""
@@ -341,7 +377,9 @@ def part_volume(part: WheelPart) -> float:
     ``V_plate`` from :func:`plate_volume` (outline area ``A`` times width ``w`` less the
     chamfers), the groove (width ``g``, bottom radius ``r_g``, pocket wheels), the bore
     ``R_b`` and keyway ``A_k`` (:func:`~chaindrive.geometry.hub.keyway_area`) through plate
-    and hub, the hub ``R_h`` of projection ``L_h``.
+    and hub, the hub ``R_h`` of projection ``L_h``. A multi-strand rim of ``n`` plates
+    ``pt`` apart counts ``n V_plate + π r_w² (W − n w)`` (web radius ``r_w``, rim width
+    ``W = (n − 1) pt + w``) for ``V_plate`` and ``W`` for ``w`` in the bore term.
 
     Parameters
     ----------
@@ -362,12 +400,15 @@ def part_volume(part: WheelPart) -> float:
     """
     hub = part.hub
     vol = plate_volume(part.outline, part.width, part.chamfer)
+    if part.rim is not None:  # n plates and the web between them (the plates overlap it below r_w)
+        n, rw = part.rim.strands, part.rim.web_radius
+        vol = n * vol + np.pi * rw * rw * (part.rim_width - n * part.width)
     if part.groove is not None:
         area = plate_volume(part.outline, 1.0)
         vol -= part.groove.width * (area - np.pi * part.groove.bottom_radius**2)
     rb = hub.bore / 2
     ak = 0.0 if hub.key is None else float(keyway_area(hub.bore, hub.key.width, hub.key.hub_depth))
-    vol -= (np.pi * rb * rb + ak) * part.width
+    vol -= (np.pi * rb * rb + ak) * part.rim_width
     vol += (np.pi * ((hub.hub_diameter / 2) ** 2 - rb * rb) - ak) * hub.hub_length
     return float(vol)
 
@@ -383,8 +424,9 @@ def sprocket_part(
     hub_length: float | None = None,
     tooth_side_relief: float | None = None,
     material: str = DEFAULT_MATERIAL,
+    transverse_pitch: float | None = None,
 ) -> WheelPart:
-    """A simplex sprocket as a part: ISO 606 teeth, chamfer, hub (type B), bore and keyway.
+    """A sprocket as a part: ISO 606 teeth, chamfer, hub (type B), bore and keyway.
 
     Parameters
     ----------
@@ -401,6 +443,10 @@ def sprocket_part(
         ``ba`` [m], inside ISO 606's ``0.10...0.15 p``; default ``0.10 p``.
     material : str
         Material / heat-treatment note.
+    transverse_pitch : float, optional
+        The chain's transverse pitch ``pt`` [m]: with it a multi-strand sprocket becomes a
+        part (its :class:`Rim`: one tooth plate per strand, ``pt`` apart, joined by a web
+        of radius ``dg/2``), for solids; the workshop drawing is of simplex sprockets only.
 
     Returns
     -------
@@ -420,9 +466,9 @@ def sprocket_part(
     if sprocket.inner_width is None:
         raise InputError("inner_width (b1) is needed for the tooth width bf1 of the drawing and solid "
                          "(ISO 606:2015 5.6); give it or use a catalogue chain")
-    if sprocket.strands != 1:
-        raise InputError(f"strands must be 1 for drawings and solids (multi-strand rims are not drawn), "
-                         f"got {sprocket.strands}")
+    if sprocket.strands != 1 and transverse_pitch is None:
+        raise InputError(f"strands must be 1 for drawings and solids without the transverse pitch (a multi-strand "
+                         f"rim is a solid only, give transverse_pitch), got {sprocket.strands}")
     outline = sprocket.outline(form=form, tip_diameter=tip_diameter)
     dims = sprocket.dimensions()
     p = sprocket.pitch
@@ -450,7 +496,15 @@ def sprocket_part(
         hub_limit, limit_name = float(dims.max_hub_diameter), "ISO 606:2015 5.6.2 dg, chain plate clearance"
     else:
         hub_limit, limit_name = 0.75 * dims.pitch_diameter, "0.75 d without plate_height"
-    hub = design_hub(max_hub_diameter=min(hub_limit, seat_bottom), rim_diameter=seat_bottom, plate_width=width,
+    rim = None
+    if sprocket.strands != 1 and transverse_pitch is not None:  # refused above without it
+        pt = float(check_positive("transverse_pitch", transverse_pitch, "m"))
+        if pt <= width:
+            raise InputError(f"transverse_pitch must exceed the tooth width bf1 = {width / _MM:.3f} mm, got "
+                             f"{pt / _MM:.3f} mm", field="transverse_pitch")
+        rim = Rim(strands=int(sprocket.strands), transverse_pitch=pt, web_radius=0.5 * min(hub_limit, seat_bottom))
+    rim_width = width if rim is None else (rim.strands - 1) * rim.transverse_pitch + width
+    hub = design_hub(max_hub_diameter=min(hub_limit, seat_bottom), rim_diameter=seat_bottom, plate_width=rim_width,
                      bore=bore, hub_diameter=hub_diameter, hub_length=hub_length, limit_name=limit_name)
     chain = sprocket.name or f"p = {p / _MM:g} mm, d1 = {sprocket.roller_diameter / _MM:g} mm"
     return WheelPart(
@@ -466,8 +520,11 @@ def sprocket_part(
         material=material,
         dimensions=dims,
         form=(form or "min") if sprocket.method == "iso606" else None,
+        rim=rim,
         sources={
             **dims.sources,
+            **({"rim": "one tooth plate bf1 per strand, pt apart (ISO 606:2015 5.6), on a web of radius dg/2"}
+               if rim is not None else {}),
             "tooth_chamfer": "ISO 606:2015 5.6.2, rx = p, ba = 0.10...0.15 p (arc tangent to the side face)",
             "keyway": "DIN 6885-1:1968 table 1",
         },

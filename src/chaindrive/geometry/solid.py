@@ -136,6 +136,13 @@ def part_solid(part: WheelPart) -> Any:
     if part.chamfer is not None:
         cutter = _chamfer_cutter(bd, part.chamfer, part.width)
         body = body - cutter - cutter.mirror(bd.Plane.XY)
+    if part.rim is not None:  # one tooth plate per strand on a web
+        plate = body
+        width = part.rim_width * _MM
+        body = bd.Solid.make_cylinder(part.rim.web_radius * _MM, width).moved(bd.Location((0, 0, -width / 2)))
+        for z in part.rim.offsets():
+            body = body + plate.moved(bd.Location((0, 0, z * _MM)))
+        w = width
     if part.groove is not None:
         g = part.groove.width * _MM
         r_out = part.tip_radius * _MM * 1.05

@@ -93,7 +93,7 @@ def crawler_plot(
     axes[1].axhline(0.0, color="0.5", lw=0.6)
     cond = (f"t = {first.pitch * 1e3:g} mm, z = {first.teeth}, "
             f"ω = {first.angular_velocity:.4g} rad/s, R = {first.radius * 1e3:.1f} mm")
-    nu = ", ".join(f"{r.guide}: δ = {r.summary['nonuniformity']:.4f}" for r in items)
+    nu = ", ".join(f"{r.guide}: δ = {100 * r.summary['nonuniformity']:.3g} %" for r in items)
     axes[0].set_title(f"Crawler drive chain velocity ({cond})\nnon-uniformity {nu}", fontsize=9)
     axes[1].set_title("Drive chain acceleration (jump at the seating ψ = 2π/z)", fontsize=9)
     axes[0].set_ylabel("velocity v [m/s]")

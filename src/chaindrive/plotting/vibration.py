@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
@@ -77,6 +77,16 @@ def campbell_plot(result: CampbellResult, *, ax: Axes | None = None) -> Figure:
     p = np.asarray(result.natural_frequencies, dtype=float)
     if p.ndim == 1:
         p = p[:, None]
+    from ..display import CONVERSIONS
+
+    per_hz = CONVERSIONS[("rad/s", "Hz")]  # the display table's factor
+
+    def hz(omega: Any) -> Any:  # [rad/s] -> [Hz]
+        return np.asarray(omega) * per_hz
+
+    def rad_s(frequency: Any) -> Any:  # [Hz] -> [rad/s]
+        return np.asarray(frequency) / per_hz
+
     lo, hi = result.band
     colors = plt.rcParams["axes.prop_cycle"].by_key()["color"]
     ymax = 1.3 * float(np.max(p))
@@ -91,7 +101,8 @@ def campbell_plot(result: CampbellResult, *, ax: Axes | None = None) -> Figure:
     for i in range(p.shape[1]):
         col = mode_colors[i % len(mode_colors)]
         low, high = float(np.min(p[:, i])), float(np.max(p[:, i]))
-        value = f"{low:.3g} rad/s" if high - low <= 1e-3 * high else f"{low:.3g}…{high:.3g} rad/s over the speeds"
+        value = (f"{hz(low):.3g} Hz ({low:.3g} rad/s)" if high - low <= 1e-3 * high
+                 else f"{hz(low):.3g}…{hz(high):.3g} Hz ({low:.3g}…{high:.3g} rad/s) over the speeds")
         ax.plot(x, p[:, i], color=col, lw=2.0, ls=["-", "-.", ":"][i] if i < 3 else "-",
                 label=f"natural frequency P{i + 1} = {value}")
     bad = np.asarray(result.min_margin) <= 0
@@ -99,7 +110,7 @@ def campbell_plot(result: CampbellResult, *, ax: Axes | None = None) -> Figure:
     for n, (a, b) in enumerate(_runs(bad)):
         x0, x1 = max(x[0], x[a] - step / 2), min(x[-1], x[b] + step / 2)
         ax.axvspan(x0, x1, facecolor="red", alpha=0.07, lw=0, zorder=0,
-                   label="forbidden speeds: a P_i inside a band" if n == 0 else None)
+                   label="speeds with a P_i inside the paper's band" if n == 0 else None)
     if result.design_speed is not None:
         ax.axvline(result.design_speed, color="0.3", lw=1, ls=":",
                    label=f"design speed {result.design_speed:.3g} rad/s "
@@ -110,10 +121,12 @@ def campbell_plot(result: CampbellResult, *, ax: Axes | None = None) -> Figure:
     ax.set_ylabel("frequency [rad/s]")
     top = ax.secondary_xaxis("top", functions=(angular_velocity_to_rpm, rpm_to_angular_velocity))
     top.set_xlabel("n₁ [rpm]")
+    right = ax.secondary_yaxis("right", functions=(hz, rad_s))  # the frequencies in Hz beside
+    right.set_ylabel("frequency [Hz]")
     ax.set_title("Campbell diagram: slack span with tensioner (the tensioner paper)\n"
-                 f"shaded round each excitation: forbidden {lo:g} ≤ P/ω ≤ {hi:g}", fontsize=10)
+                 f"shaded round each excitation: the paper's band {lo:g} ≤ P/ω ≤ {hi:g} (information)", fontsize=10)
     ax.grid(True, alpha=0.3)
-    ax.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), borderaxespad=0.0, fontsize=8, framealpha=0.9)
+    ax.legend(loc="upper left", bbox_to_anchor=(1.12, 1.0), borderaxespad=0.0, fontsize=8, framealpha=0.9)
     if fig.get_layout_engine() is None:
         fig.tight_layout()
     return fig

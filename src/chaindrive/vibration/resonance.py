@@ -302,8 +302,8 @@ class ResonanceCheck(Result):
 
     mode: np.ndarray = quantity("1")
     excitation: list
-    natural_frequency: np.ndarray = quantity("rad/s", display="rad/s")
-    exciting_frequency: np.ndarray = quantity("rad/s", display="rad/s")
+    natural_frequency: np.ndarray = quantity("rad/s", display="Hz")
+    exciting_frequency: np.ndarray = quantity("rad/s", display="Hz")
     ratio: np.ndarray = quantity("1")
     margin: np.ndarray = quantity("1")
     ok: np.ndarray = quantity("1")

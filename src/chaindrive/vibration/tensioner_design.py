@@ -46,7 +46,7 @@ class CampbellResult(Result):
     """Natural and exciting frequencies against driving speed (rad/s)."""
 
     speed: np.ndarray = quantity("rad/s")
-    natural_frequencies: np.ndarray = quantity("rad/s", display="rad/s")  # (speeds, modes)
+    natural_frequencies: np.ndarray = quantity("rad/s", display="Hz")  # (speeds, modes)
     excitation_names: list
     excitation_multipliers: np.ndarray = quantity("1")
     band: tuple[float, float] = quantity("1")
@@ -95,10 +95,10 @@ class SafeTensioner(Result):
 class SpanVibration(Result):
     """Everything the tensioner paper check gives for one design (SI units); ``.plot()`` = Campbell."""
 
-    frequencies_rad_s: np.ndarray = quantity("rad/s", display="rad/s")
+    frequencies_rad_s: np.ndarray = quantity("rad/s", display="Hz")
     frequencies_hz: np.ndarray = quantity("Hz")
     static_rod_force: float = quantity("N")
-    heavy_tensioner_frequency: float | None = quantity("rad/s", display="rad/s")
+    heavy_tensioner_frequency: float | None = quantity("rad/s", display="Hz")
     check: ResonanceCheck | None
     campbell: CampbellResult | None
 

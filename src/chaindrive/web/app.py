@@ -87,7 +87,7 @@ def create_app(*, max_jobs: int = 4, job_workers: int = 2, job_time_limit: float
     from fastapi.staticfiles import StaticFiles
     from fastapi.templating import Jinja2Templates
 
-    from . import api, expert, studio
+    from . import api, expert, studio, view3d
 
     env = jinja2.Environment(loader=jinja2.FileSystemLoader(str(_HERE / "templates")),
                              autoescape=jinja2.select_autoescape(["html", "xml"], default=True))
@@ -146,6 +146,7 @@ def create_app(*, max_jobs: int = 4, job_workers: int = 2, job_time_limit: float
     app.include_router(studio.router(ctx))
     app.include_router(expert.router(ctx))
     app.include_router(api.router(ctx))
+    app.include_router(view3d.router(ctx))
 
     @app.get("/health", include_in_schema=False)
     def health():

@@ -75,7 +75,7 @@ def _check_dict(group: str, c: Any) -> dict[str, Any]:
         value = _finite(value)
     return {"group": group, "name": c.name, "value": value, "limit": c.limit,
             "relation": getattr(c, "relation", ">=" if passed is not None else "info"),
-            "unit": getattr(c, "unit", ""), "passed": passed, "verdict": verdict,
+            "unit": getattr(c, "unit", ""), "display": getattr(c, "display", ""), "passed": passed, "verdict": verdict,
             "margin": margin, "source": source, "note": note}
 
 

@@ -188,7 +188,7 @@ def simulation_rows(summary: dict[str, Any]) -> list[tuple[str, str, str]]:
     Examples
     --------
     >>> simulation_rows({"tight_side_tension_mean": 12500.0, "wheel_speed_mean": [5.0, 5.0]})
-    [('tight-side tension, mean', '12.5', 'kN'), ('wheel speeds, mean', '5, 5 (47.75, 47.75 rpm)', 'rad/s')]
+    [('tight-side tension, mean', '12.5', 'kN'), ('wheel speeds, mean', '47.75, 47.75', 'rpm')]
     """
     from ..simulation.run import SUMMARY_QUANTITIES
 
@@ -198,10 +198,8 @@ def simulation_rows(summary: dict[str, Any]) -> list[tuple[str, str, str]]:
             continue
         value = summary[key]
         values = value if isinstance(value, list) else [value]
-        if unit == "rad/s":
-            text = ", ".join(_shown(v, "rad/s", "rad/s")[0] for v in values)
-            rpm = ", ".join(_shown(v, "rad/s", "rpm")[0] for v in values)
-            rows.append((label, f"{text} ({rpm} rpm)", "rad/s"))
+        if unit == "rad/s":  # shaft speeds: in rpm, one unit per quantity (issue 30)
+            rows.append((label, ", ".join(_shown(v, "rad/s", "rpm")[0] for v in values), "rpm"))
             continue
         cells = [_shown(v, unit) for v in values]
         rows.append((label, ", ".join(c[0] for c in cells), cells[0][1] if cells else ""))

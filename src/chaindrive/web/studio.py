@@ -23,6 +23,7 @@ from starlette.datastructures import UploadFile as StarletteUpload
 
 from .._results import jsonable
 from ..analysis.loads import REQUIRED_STATIC_SAFETY
+from ..display import verdict_text
 from ..errors import ChainDriveError, InputError
 from ..units import angular_velocity_to_rpm
 from .design import (
@@ -63,8 +64,14 @@ def state_query(state: dict[str, str]) -> str:
 def _checks_for_page(checks: list[dict], units: str) -> list[dict]:
     """Value, limit and margin texts of the checks in the page's units (names from the checks)."""
     out = []
+    from ..display import convert
+
     for c in checks:
-        value, unit = show(c["value"], c["unit"], units)
+        if c.get("display") and isinstance(c["value"], (int, float)):  # a declared display unit ("%")
+            shown = convert(float(c["value"]), c["unit"], c["display"])
+            value, unit = fmt(shown[0]), shown[1]
+        else:
+            value, unit = show(c["value"], c["unit"], units)
         limit, relation = c["limit"], c.get("relation", ">=")
         if relation == "info" or limit is None:
             limit_text = "" if limit is None or relation == "info" else str(limit)
@@ -179,6 +186,8 @@ def studio_payload(state: dict[str, str]) -> dict[str, Any]:
     out["checks"] = checks
     out["warnings"] = analysis.warnings
     out["passed"] = analysis.passed
+    failed = sum(1 for c in analysis.checks if c["passed"] is False)
+    out["verdict"] = verdict_text(failed, len(analysis.warnings))  # "passes, 2 warnings" (issue 30)
     out["downloads"] = {name: f"/download/{name}?{out['query']}" for name in DOWNLOADS}
     out["has_tensioner"] = drive.tensioner is not None
     out["elapsed_ms"] = round((time.perf_counter() - t0) * 1e3, 1)

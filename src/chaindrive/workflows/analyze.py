@@ -57,17 +57,24 @@ def report_from_analysis(analysis: DriveAnalysis, *, title: str | None = None, s
     return report, timings
 
 
-def _proposal_text(analysis: DriveAnalysis) -> str | None:
-    """The project file of the analysis' passing remedy (None when there is none)."""
+def _proposal_text(analysis: DriveAnalysis, source: str | None = None) -> str | None:
+    """The project file of the analysis' passing remedy (None when there is none): the user's
+    file ``source`` with only the changed values edited (comments and order kept), or the
+    whole drive written when there is no file."""
     remedy = analysis["remedy"]
     if remedy is None or not remedy.found:
         return None
-    from ..drive.writer import drive_to_toml
+    from ..drive.writer import drive_to_toml, edit_project_text
     from ..errors import InputError
 
-    header = ("chaindrive proposal: the nearest design that passes the resonance check of the slack span\n"
-              f"with its tensioner, for {analysis.drive.name!r}. Changes:\n"
-              + "\n".join(f"  - {c}" for c in remedy.changes))
+    header = ("chaindrive proposal: the nearest design that passes the span-vibration check (largest\n"
+              f"amplification of the slack span's forced response {remedy.amplification:.3g}), for "
+              f"{analysis.drive.name!r}. Changes:\n" + "\n".join(f"  - {c}" for c in remedy.changes))
+    if source is not None:
+        try:
+            return edit_project_text(source, analysis.drive, remedy.drive, header=header)
+        except (InputError, KeyError, StopIteration):  # e.g. a file of another shape: the whole drive below
+            pass
     try:
         return drive_to_toml(remedy.drive, header=header)
     except InputError:  # a drive the writer cannot write yet (e.g. [self_regulating]): the report has the changes
@@ -85,6 +92,7 @@ def analyze(
     progress: Callable[[str, int, int], None] | None = None,
     include: Iterable[str] | None = None,
     parallel_figures: bool = False,
+    source: str | None = None,
 ) -> AnalysisOutcome:
     """Analyse ``drive`` and write its calculation report.
 
@@ -93,8 +101,8 @@ def analyze(
     drive : chaindrive.drive.Drive
     output : path, optional
         Folder for ``report.html``, ``results.json``, PNG figures (and ``report.pdf``),
-        and ``proposal.toml`` when the resonance check fails and a design within the
-        searched ranges passes (:mod:`chaindrive.analysis.vibration_remedy`);
+        and ``proposal.toml`` when the span-vibration check fails and a design within the
+        searched ranges passes, verified by its own analysis (:mod:`chaindrive.analysis.vibration_remedy`);
         nothing is written when ``None``. The caller chooses the folder: the command line
         builds it in a temporary folder and moves it into place when complete.
     pdf : bool
@@ -110,6 +118,9 @@ def analyze(
         has two processors or more (Linux) and, on average, one of them idle; the report is
         the same, the process about a tenth faster. For a program of its own (``chaindrive
         analyze`` sets it), not for one that runs threads or a server.
+    source : str, optional
+        The text of the project file ``drive`` was read from: ``proposal.toml`` is then
+        that file with only the changed values edited.
 
     Returns
     -------
@@ -136,7 +147,7 @@ def analyze(
         files["json"].write_text(json.dumps(jsonable(data), indent=2), encoding="utf-8")
         for p in report.write_figures(out):
             files[p.name] = p
-        proposal = _proposal_text(analysis)
+        proposal = _proposal_text(analysis, source)
         if proposal is not None:
             files["proposal"] = out / "proposal.toml"
             files["proposal"].write_text(proposal, encoding="utf-8")

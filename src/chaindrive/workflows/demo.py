@@ -50,7 +50,7 @@ def run_demo(output: Path, *, analysis: bool = True, shown: Path | None = None) 
         for entry, s in summary[model].items():
             print(
                 f"  {model:5s} {entry:10s} v = {s['v_min']:.4f}..{s['v_max']:.4f} m/s, "
-                f"non-uniformity {s['nonuniformity']:.4f}, a = {s['a_min']:+.3f}..{s['a_max']:+.3f} m/s²"
+                f"non-uniformity {100 * s['nonuniformity']:.3g} %, a = {s['a_min']:+.3f}..{s['a_max']:+.3f} m/s²"
             )
     if analysis:
         _maybe_analysis(output, files, shown)
@@ -77,8 +77,11 @@ def _maybe_analysis(output: Path, files: list, shown: Path) -> None:
         return
     drive = load_project(example)
     outcome = analyze(drive, output, subtitle=f"Project file: {example.name}")
-    verdict = ("all checks pass" if outcome.passed else
-               "at least one check fails, as intended: the report says which and why "
+    from ..display import verdict_text
+
+    words = verdict_text(len(outcome.analysis.failed), len(outcome.report.warnings))
+    verdict = (words if outcome.passed else
+               f"{words}, as intended: the report says which and why "
                f"(`chaindrive analyze {example.name}` exits 1 for it; the demo itself exits 0)")
     print(f"chaindrive demo: analysis of {example.name}: {verdict}; report: {shown / 'report.html'}")
     files.extend(outcome.files.values())

@@ -190,8 +190,11 @@ def drive_html(drive: Any) -> str:
 def analysis_html(analysis: Any) -> str:
     """An analysis: verdict, every check with its value, limit and source, the drawing,
     and each part folded as its table."""
-    verdict = ("<span class='cd-pass'>all checks pass</span>" if analysis.passed
-               else "<span class='cd-fail'>at least one check fails</span>")
+    from ..display import verdict_text
+
+    words = escape(verdict_text(len(analysis.failed), len(analysis.warnings)))
+    verdict = (f"<span class='cd-pass'>{words}</span>" if analysis.passed
+               else f"<span class='cd-fail'>{words}</span>")
     from ..analysis.parts import get_part
 
     parts = []

@@ -14,9 +14,9 @@ import sys
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
+from .. import display as _display
 from .._results import Result, jsonable
 from ..analysis.checks import Check
-from . import display as _display
 
 if TYPE_CHECKING:
     from matplotlib.figure import Figure as MatplotlibFigure
@@ -194,6 +194,15 @@ class Report:
         if self.analysis is not None:
             return bool(self.analysis.passed)
         return all(s.passed for s in self.sections)
+
+    @property
+    def verdict(self) -> str:
+        """The overall verdict in words (``"passes, 3 warnings"``): :func:`~.display.verdict_text`."""
+        from ..display import verdict_text
+
+        failed = sum(1 for _, c in self.checks if c.passed is False)
+        warnings = dict.fromkeys([*self.warnings, *(w for s in self.sections for w in s.warnings)])
+        return verdict_text(failed, len(warnings))
 
     def to_dict(self) -> dict[str, Any]:
         return {

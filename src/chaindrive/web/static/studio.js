@@ -148,7 +148,7 @@
     }
     const ov = $("overall");
     if (d.checks) {
-      text(ov, d.passed ? "all checks pass" : "a check fails");
+      text(ov, d.verdict || (d.passed ? "passes" : "a check fails"));
       ov.className = "verdict " + (d.passed ? "pass" : "fail");
     }
     const wl = $("warnings");
