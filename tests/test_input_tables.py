@@ -105,3 +105,21 @@ def test_a_part_declares_its_own_table():
 def test_mapping_text_reads_back_as_the_mapping():
     data = tomllib.loads(template("mining"))
     assert tomllib.loads(mapping_text(data)) == data
+
+
+def test_designed_drives_are_built_in_code_and_written_exactly():
+    # the design procedure builds its drives (no TOML text parsed back); the file it writes
+    # reads back to the same drive
+    from chaindrive.design import Duty, design_drive
+
+    result = design_drive(Duty(7.5e3, 1450 * 3.141592653589793 / 30, ratio=3.0, service_factor=1.3), limit=2)
+    for c in result.candidates:
+        assert c.built is not None and parse_project(c.project_text) == c.drive()
+
+
+def test_studio_file_reads_back_as_its_drive():
+    from chaindrive.web.design import design_from_state, normalise_state, state_from_project
+
+    for state in (normalise_state({}), normalise_state(state_from_project(template("mining")))):
+        d, errors = design_from_state(state)
+        assert errors == {} and parse_project(d.project_text) == d.drive
