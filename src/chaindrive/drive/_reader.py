@@ -13,7 +13,6 @@ Examples
 from __future__ import annotations
 
 import functools
-import math
 from typing import Annotated, Any, Literal
 
 from pydantic import BaseModel, BeforeValidator, ConfigDict, Field, ValidationInfo, create_model
@@ -50,21 +49,10 @@ _PLAUSIBLE_KIND = {"rad/s": "angular_velocity", "W": "power", "N": "force"}
 
 
 def _bounded(f: Input, name: str, x: float) -> None:
-    """The range check of a quantity, with today's messages."""
-    lo, hi, unit = f.minimum, f.maximum, f.unit
-    if lo == 0 and hi is None:
-        if f.open_minimum and not x > 0:
-            raise ValueError(f"{name} must be positive (0 < {name} < inf {unit}), got {x:g}")
-        if not f.open_minimum and not x >= 0:
-            raise ValueError(f"{name} must be non-negative (0 <= {name} < inf {unit}), got {x:g}")
-    elif lo is not None or hi is not None:
-        ok = ((lo is None or (x > lo if f.open_minimum else x >= lo))
-              and (hi is None or (x < hi if f.open_maximum else x <= hi)))
-        if not ok:
-            verb = "lie in " if lo is not None and hi is not None else "be "
-            raise ValueError(f"{name} must {verb}{f.range_text()}, got {x:g}")
-    if x != x or x in (math.inf, -math.inf):
-        raise ValueError(f"{name} must be finite, got {x}")
+    """The range check of a quantity (:meth:`Input.bound_error`)."""
+    message = f.bound_error(name, x)
+    if message:
+        raise ValueError(message)
 
 
 def _quantity(f: Input) -> BeforeValidator:

@@ -35,7 +35,7 @@ from typing import Any
 from ..errors import InputError
 
 __all__ = ["REQUIRED", "Input", "InputTable", "register_table", "unregister_table", "get_table", "all_tables", "load_providers", "TABLE_PROVIDERS",
-           "children", "field_text", "number_text", "value_text", "quantity_text", "toml_string", "docs_table"]
+           "children", "check_declared", "field_text", "number_text", "value_text", "quantity_text", "toml_string", "docs_table"]
 
 #: The default of a field that must be given.
 REQUIRED: Any = object()
@@ -96,6 +96,28 @@ class Input:
     @property
     def required(self) -> bool:
         return self.default is REQUIRED
+
+    def bound_error(self, name: str, x: float) -> str | None:
+        """What is wrong with the value ``x`` of this field named ``name`` (``None``: it is valid).
+
+        >>> Input("efficiency", "number", minimum=0.0, open_minimum=True, maximum=1.0).bound_error("efficiency", 2.0)
+        'efficiency must lie in (0, 1], got 2'
+        """
+        lo, hi, unit = self.minimum, self.maximum, self.unit
+        if lo == 0 and hi is None:
+            if self.open_minimum and not x > 0:
+                return f"{name} must be positive (0 < {name} < inf {unit}), got {x:g}"
+            if not self.open_minimum and not x >= 0:
+                return f"{name} must be non-negative (0 <= {name} < inf {unit}), got {x:g}"
+        elif lo is not None or hi is not None:
+            ok = ((lo is None or (x > lo if self.open_minimum else x >= lo))
+                  and (hi is None or (x < hi if self.open_maximum else x <= hi)))
+            if not ok:
+                verb = "lie in " if lo is not None and hi is not None else "be "
+                return f"{name} must {verb}{self.range_text()}, got {x:g}"
+        if x != x or x in (math.inf, -math.inf):
+            return f"{name} must be finite, got {x}"
+        return None
 
     def range_text(self) -> str:
         """The valid range in words, e.g. ``"(0, 0.2]"`` or ``">= 1"`` (``""``: unbounded)."""
@@ -198,6 +220,26 @@ def load_providers() -> None:
     for spec in TABLE_PROVIDERS:
         module, _, function = spec.partition(":")
         getattr(importlib.import_module(module), function)()
+
+
+def check_declared(obj: Any, table: str, names: tuple[str, ...]) -> None:
+    """Check the fields ``names`` of a drive-description object against the bounds declared
+    for ``[table]`` (an object built in code gets the reader's checks); each value made a
+    float. Raises :class:`~chaindrive.errors.InputError` naming ``table.field``."""
+    decl = _TABLES[table]
+    for name in names:
+        value = getattr(obj, name)
+        if value is None:
+            continue
+        path = f"{table}.{name}"
+        try:
+            x = float(value)
+        except (TypeError, ValueError):
+            raise InputError(f"{path} must be a number, got {value!r}", field=path) from None
+        message = decl.field(name).bound_error(path, x)
+        if message:
+            raise InputError(message, field=path)
+        object.__setattr__(obj, name, x)
 
 
 def children(table: InputTable) -> tuple[InputTable, ...]:

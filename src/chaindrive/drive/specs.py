@@ -277,22 +277,13 @@ class Conveyor:
     efficiency: float = 1.0
 
     def __post_init__(self) -> None:
-        for name in ("chain_friction", "material_friction"):
-            x = _finite(getattr(self, name), f"conveyor.{name}", nonnegative=True)
-            if x > 1.5:
-                raise InputError(f"conveyor.{name} must lie in [0, 1.5], got {x:g}", field=f"conveyor.{name}")
-            object.__setattr__(self, name, x)
-        if self.return_friction is not None:
-            x = _finite(self.return_friction, "conveyor.return_friction", nonnegative=True)
-            if x > 1.5:
-                raise InputError(f"conveyor.return_friction must lie in [0, 1.5], got {x:g}",
-                                 field="conveyor.return_friction")
-            object.__setattr__(self, "return_friction", x)
+        from .schema import check_declared
+
         if self.material_load is not None and self.capacity is not None:
             raise InputError("conveyor: give material_load or capacity, not both", field="conveyor.capacity")
-        for name in ("material_load", "capacity"):
-            if getattr(self, name) is not None:
-                object.__setattr__(self, name, _finite(getattr(self, name), f"conveyor.{name}", nonnegative=True))
+        # bounds declared once, for the reader too (chaindrive.drive.tables)
+        check_declared(self, "conveyor", ("chain_friction", "material_friction", "return_friction", "material_load",
+                                          "capacity", "head_share", "minimum_tension", "efficiency"))
         a = _finite(self.inclination, "conveyor.inclination")
         if abs(a) > math.pi / 4:
             raise InputError(f"conveyor.inclination must lie in [-45°, 45°], got {math.degrees(a):.4g}°",
@@ -301,16 +292,6 @@ class Conveyor:
         if self.return_strand not in RETURN_STRANDS:
             raise InputError(f"conveyor.return_strand must be one of {', '.join(RETURN_STRANDS)}, got "
                              f"{self.return_strand!r}", field="conveyor.return_strand")
-        share = _finite(self.head_share, "conveyor.head_share")
-        if not 0 < share <= 1:
-            raise InputError(f"conveyor.head_share must lie in (0, 1], got {share:g}", field="conveyor.head_share")
-        object.__setattr__(self, "head_share", share)
-        object.__setattr__(self, "minimum_tension",
-                           _finite(self.minimum_tension, "conveyor.minimum_tension", nonnegative=True))
-        eta = _finite(self.efficiency, "conveyor.efficiency")
-        if not 0 < eta <= 1:
-            raise InputError(f"conveyor.efficiency must lie in (0, 1], got {eta:g}", field="conveyor.efficiency")
-        object.__setattr__(self, "efficiency", eta)
 
     @property
     def return_on_pans(self) -> bool:
