@@ -123,3 +123,27 @@ def test_studio_file_reads_back_as_its_drive():
     for state in (normalise_state({}), normalise_state(state_from_project(template("mining")))):
         d, errors = design_from_state(state)
         assert errors == {} and parse_project(d.project_text) == d.drive
+
+
+@pytest.mark.parametrize("table, cls", [
+    ("contact", "ContactSpec"), ("track", "TrackSpec"), ("track.bolts", "RimBoltsSpec"), ("crawler", "CrawlerSpec"),
+    ("fretting", "FrettingSpec"), ("conveyor", "Conveyor"), ("load", "Load"), ("guides", "Guide"),
+    ("adjustable", "Adjustable"), ("wheels", "Wheel"),
+])
+def test_declarations_match_the_drive_objects(table, cls):
+    # the objects a table becomes have the declared fields and defaults (no drift between them)
+    import dataclasses
+
+    from chaindrive.drive import model
+
+    fields = {f.name: f for f in dataclasses.fields(getattr(model, cls))}
+    decl = get_table(table)
+    for f in decl.fields:
+        assert f.name in fields, f"{table}.{f.name} is no field of {cls}"
+        default = fields[f.name].default
+        if f.required:
+            assert default is dataclasses.MISSING, f"{table}.{f.name}"
+        elif default is not dataclasses.MISSING:  # (a positional argument in code may be None in a file)
+            assert default == f.default, f"{table}.{f.name}: {cls} default {default!r}, declared {f.default!r}"
+    nested = {c.name.rsplit(".", 1)[1] for c in all_tables() if c.name.startswith(table + ".")}
+    assert set(fields) - {f.name for f in decl.fields} <= nested
