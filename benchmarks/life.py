@@ -9,8 +9,9 @@ Prints
   holds (the roller centre at the tooth corner) next to the makers' replacement limit;
 * ``jump-over, analysis vs simulation: CASE X %``: the worn chain in the dynamic
   simulation (``SimulationModel.wheel_pitch``), its slack side slackening as the load
-  grows, driven until a tooth is skipped: its tension ratio at the onset against the
-  analysis' jump ratio ``β^-n`` (docs/life.md, "Jump-over");
+  grows, driven until a tooth is skipped: the span tensions' ratio ``T1/T2`` at the onset
+  against the analysis' jump ratio ``β^-n``, five cases (``JUMP_CASES``; docs/life.md,
+  "Jump-over");
 * the lives by mechanism of the example drives (``chaindrive life``).
 
 Run: ``PYTHONPATH=src python benchmarks/life.py``.
@@ -52,7 +53,8 @@ def bicycle_efficiency(power: float, cadence: float, front: int, rear: int) -> f
 def _run_worn(teeth, elongation, tight, back_force, duration=0.8):
     """The worn chain on two ``teeth`` wheels (16B, no friction, no gravity), the driven wheel on a
     slide pulled by ``back_force`` (a soft spring), the load torque for the tight tension ``tight``.
-    Returns (teeth skipped over the run, median T1/T2 over its second half)."""
+    Returns (teeth skipped over the run, T1/T2 over its second half: the medians of the tensions of
+    the links in the middle of the tight and of the slack span, the analysis' ``T_1`` and ``T_2``)."""
     import numpy as np
 
     from chaindrive.simulation import simulate
@@ -68,39 +70,53 @@ def _run_worn(teeth, elongation, tight, back_force, duration=0.8):
                        tensioner=slide)
     r = simulate(m, duration, samples=400, state=assemble(m, method="relaxation"))
     rel = (r.wheel_angle[:, 1] - r.wheel_angle[:, 0]) * teeth / (2 * np.pi)
-    t = r.tension[len(r.tension) // 2:]
-    return float(np.ptp(rel)), float(np.median(t.max(axis=1)) / max(float(np.median(t.min(axis=1))), 1e-9))
+    half = len(r.time) // 2
+    t1 = float(np.median(r.tight_side_tension()[half:]))
+    t2 = float(np.median(r.slack_side_tension()[half:]))
+    return float(np.ptp(rel)), t1 / max(t2, 1e-9)
 
 
-def jump_over_vs_simulation(teeth: int = 11, elongation: float = 0.2, back_force: float = 3000.0) -> None:
-    """The worn chain in the simulation (``SimulationModel.wheel_pitch``), the driven wheel on a
-    slide pulled by a constant force ``F`` (so the slack side slackens as the load grows,
-    ``T_2 ≈ F − T_1``), driven at growing load until a tooth is skipped (bisection on the load).
-    The tension ratio ``T_1/T_2`` of the last run that skipped no tooth is the simulated
-    jump-over ratio; the analysis' is ``β(e)^-n`` (frictionless, ``n`` the rollers seated in
-    the 180° wrap, as the layout counts them)."""
+#: (teeth, elongation) of the jump-over cases (each well inside the tooth form's holding limit).
+JUMP_CASES = ((9, 0.2), (11, 0.2), (11, 0.1), (13, 0.15), (17, 0.1))
+
+
+def simulated_jump_ratio(teeth: int, elongation: float, back_force: float = 3000.0, steps: int = 8):
+    """The tension ratio ``T_1/T_2`` at which the simulated worn chain skips a tooth: the driven
+    wheel on a slide pulled by ``F`` (``T_2 ≈ F − T_1``: the slack side slackens as the load grows),
+    the load set for a ratio ``ρ`` (``T_1 = F ρ / (1 + ρ)``), ``ρ`` bisected geometrically between 2
+    (held) and 1.5 times the analysis' ratio. Returns (the measured ``T_1/T_2`` of the highest load
+    that skipped no tooth, or ``None``, and that ``ρ``)."""
     from chaindrive.layout import teeth_in_mesh
     from chaindrive.life import tension_ratio
 
     seated = int(teeth_in_mesh(math.pi, teeth))
-    analysis = tension_ratio(0.0254, teeth, 0.01588, elongation) ** -seated
-    lo, hi = 0.85 * back_force, 0.97 * back_force  # no skip at lo, a skip at hi (checked)
-    ok_lo, ratio_lo = _run_worn(teeth, elongation, lo, back_force)
-    ok_hi, _ = _run_worn(teeth, elongation, hi, back_force)
-    if ok_lo >= 1.0 or ok_hi < 1.0:
-        print(f"jump-over, analysis vs simulation: z = {teeth}, e = {100 * elongation:g} %: no bracket "
-              f"(skipped {ok_lo:.2f} teeth at {lo:.0f} N, {ok_hi:.2f} at {hi:.0f} N)")
-        return
-    for _ in range(5):
-        mid = 0.5 * (lo + hi)
-        skipped, ratio = _run_worn(teeth, elongation, mid, back_force)
-        if skipped >= 1.0:
-            hi = mid
+    lo, hi = 2.0, 1.5 * float(tension_ratio(0.0254, teeth, 0.01588, elongation)) ** -seated
+    held = None
+    for _ in range(steps):
+        rho = math.sqrt(lo * hi)
+        skipped, ratio = _run_worn(teeth, elongation, back_force * rho / (1 + rho), back_force)
+        if skipped >= 0.5:  # half a tooth: the chain is riding over
+            hi = rho
         else:
-            lo, ratio_lo = mid, ratio
+            lo, held = rho, ratio
+    return held, lo
+
+
+def jump_over_vs_simulation(teeth: int = 11, elongation: float = 0.2) -> None:
+    """Print the analysis' jump ratio ``β(e)^-n`` (frictionless, ``n`` the rollers seated in the
+    180° wrap, as the layout counts them) against :func:`simulated_jump_ratio`."""
+    from chaindrive.layout import teeth_in_mesh
+    from chaindrive.life import tension_ratio
+
+    seated = int(teeth_in_mesh(math.pi, teeth))
+    analysis = float(tension_ratio(0.0254, teeth, 0.01588, elongation)) ** -seated
+    sim, _rho = simulated_jump_ratio(teeth, elongation)
+    if sim is None:
+        print(f"jump-over, analysis vs simulation: z = {teeth}, e = {100 * elongation:g} %: no load held")
+        return
     print(f"jump-over, analysis vs simulation: z = {teeth}, e = {100 * elongation:g} %, n = {seated} (16B, no friction): "
-          f"{100 * (analysis / ratio_lo - 1):+.1f} % (jump ratio T1/T2: analysis {analysis:.0f}, simulation "
-          f"{ratio_lo:.0f}, the last load without a skipped tooth, T1 = {lo:.0f} N)")
+          f"{100 * (analysis / sim - 1):+.1f} % (jump ratio T1/T2: analysis {analysis:.0f}, simulation "
+          f"{sim:.0f}, the last load without a skipped tooth)")
 
 
 def main() -> None:
@@ -112,8 +128,12 @@ def main() -> None:
         h = holding_limit(0.0254, z, 0.01588)
         print(f"holding limit vs makers' rule: z = {z}: ISO 606 form holds {100 * h:.2f} %, makers replace at "
               f"{100 * float(replacement_limit(z)):.2f} %")
-    for teeth, elongation in ((11, 0.2), (11, 0.1), (9, 0.2)):
+    for teeth, elongation in JUMP_CASES:
         jump_over_vs_simulation(teeth, elongation)
+    for teeth, elongation in JUMP_CASES:  # the simulated onset is not a pure ratio: it falls with the load level
+        sim, _rho = simulated_jump_ratio(teeth, elongation, back_force=12000.0)
+        print(f"jump-over, simulation at a 12 kN slide force: z = {teeth}, e = {100 * elongation:g} %: "
+              f"T1/T2 = {sim if sim is None else round(sim)} (3 kN: see above)")
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
         for name in ("roller_industrial", "multi_wheel", "mining_conveyor", "crawler_conveyor"):

@@ -206,9 +206,6 @@ def test_roller_example_step_reimport(examples_dir, tmp_path):
 
 
 @pytest.mark.slow
-@pytest.mark.xfail(raises=__import__("chaindrive.errors", fromlist=["ConvergenceError"]).ConvergenceError,
-                   strict=False, reason="main since c6e31ae: the static assembly of multi_wheel.toml does not "
-                   "converge (chaindrive.simulation.assemble); this test passed before (branch cad, aec6fd9)")
 def test_multi_wheel_step_reimport(examples_dir, tmp_path):
     a, clear = _check_example(examples_dir, tmp_path, "multi_wheel.toml")
     assert a.summary()["groups"]["wheels"] == 4

@@ -59,7 +59,7 @@ def test_chain_crossing_a_wheel_is_refused(multi):
 def test_refusal_at_the_cli_names_the_wheel(tmp_path, capsys):
     from chaindrive.cli import main
 
-    text = EXAMPLE.read_text(encoding="utf-8").replace('position = ["764 mm", "791 mm"]',
+    text = EXAMPLE.read_text(encoding="utf-8").replace('position = ["800 mm", "800 mm"]',
                                                         'position = ["0 mm", "0 mm"]')
     f = tmp_path / "d.toml"
     f.write_text(text, encoding="utf-8")

@@ -440,19 +440,46 @@ def test_simulation_runs_an_elongated_chain_without_skipping():
     assert ratio < tension_ratio(p, z, 0.01588, e) ** -5
 
 
-@pytest.mark.slow
-def test_simulated_jump_over_brackets_the_analysis():
-    # the worn chain (z = 11, e = 20 %) with its slack side slackening as the load grows (the
-    # driven wheel on a slide pulled by 3 kN): below the analysis' jump ratio β^-5 ≈ 198 no tooth
-    # is skipped, past it one is (benchmarks/life.py bisects the onset: 182 vs 198, +9 %)
+def _bench_life():
     import importlib.util
     from pathlib import Path
 
     spec = importlib.util.spec_from_file_location("bench_life", Path(__file__).parents[1] / "benchmarks" / "life.py")
     bench = importlib.util.module_from_spec(spec)
     spec.loader.exec_module(bench)
+    return bench
+
+
+@pytest.mark.slow
+def test_simulated_jump_over_brackets_the_analysis():
+    # the worn chain (z = 11, e = 20 %) with its slack side slackening as the load grows (the
+    # driven wheel on a slide pulled by 3 kN): at T1 = 0.85 F no tooth is skipped and the span
+    # tensions' ratio T1/T2 lies below the analysis' jump ratio β^-5 ≈ 198; at 0.97 F a tooth is
+    # skipped (benchmarks/life.py bisects the onset: 160 vs 198)
+    bench = _bench_life()
     analysis = tension_ratio(P16B, 11, D16B, 0.2) ** -5
     skipped, ratio = bench._run_worn(11, 0.2, 0.85 * 3000.0, 3000.0)
-    assert skipped < 1.0 and ratio < analysis
+    assert skipped < 0.5 and ratio < analysis
     skipped, _ = bench._run_worn(11, 0.2, 0.97 * 3000.0, 3000.0)
     assert skipped >= 1.0
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("teeth, elongation", [
+    (11, 0.1), (17, 0.1),
+    pytest.param(9, 0.2, marks=pytest.mark.xfail(strict=True, reason=(
+        "9 teeth at 20 %: the simulated chain skips at T1/T2 = 109 against the analysis' 266; the rollers "
+        "of the worn chain seat unevenly (docs/life.md, 'Jump-over'), which the uniform ride-up ignores"))),
+])
+def test_jump_over_analysis_within_10_percent_of_the_simulation(teeth, elongation):
+    # the analysis' jump ratio β(e)^-n against the simulated onset (benchmarks/life.py, the ratio
+    # of the span tensions at the highest load that skipped no tooth; 8 bisection steps, ~2.4 %
+    # resolution): 11 teeth at 10 % +3.9 %, 17 teeth at 10 % −2.2 %. This holds the benchmark's load
+    # level (slide force 3 kN) only: at 12 kN the simulated onset is 2–3 times lower (docs/life.md)
+    from chaindrive.layout import teeth_in_mesh
+
+    bench = _bench_life()
+    analysis = tension_ratio(P16B, teeth, D16B, elongation) ** -int(teeth_in_mesh(math.pi, teeth))
+    simulated, _rho = bench.simulated_jump_ratio(teeth, elongation)
+    assert simulated is not None
+    assert analysis == pytest.approx(simulated, rel=0.10)

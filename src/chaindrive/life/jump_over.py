@@ -32,7 +32,12 @@ and at any tension once the roller centre passes the tooth corner: the elongatio
 tooth form can hold at all (:func:`holding_limit`).
 
 The model is frictionless (friction at the flank helps to hold the chain: conservative)
-and quasi-static (no impact, no centrifugal lift of the rollers).
+and quasi-static (no impact, no centrifugal lift of the rollers). It assumes every seated
+roller rides up alike; a worn chain seats unevenly (the tight-end rollers highest, one at
+the bottom of its gap, the rest on the back flank), and the holding is very sensitive to
+that seating, so ``β^-n`` is an upper bound of the ratio the wrap holds: the dynamic
+simulation skips at 0.4–1.2 times it at a 3 kN load level and lower at 12 kN
+(``benchmarks/life.py``, docs/life.md "Jump-over"). The holding limit is the robust criterion.
 """
 
 from __future__ import annotations
