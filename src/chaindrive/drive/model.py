@@ -327,16 +327,11 @@ class Load:
     service_factor: float = 1.0
 
     def __post_init__(self) -> None:
-        if (self.power is None) == (self.torque is None):
-            raise InputError("load: give exactly one of power and torque", field="load")
-        if self.power is not None:
-            object.__setattr__(self, "power", _finite(self.power, "load.power", positive=True))
-        if self.torque is not None:
-            object.__setattr__(self, "torque", _finite(self.torque, "load.torque", positive=True))
-        sf = _finite(self.service_factor, "load.service_factor")
-        if sf < 1:
-            raise InputError(f"load.service_factor must be >= 1, got {sf:g}", field="load.service_factor")
-        object.__setattr__(self, "service_factor", sf)
+        from .schema import check_declared, check_rules
+
+        # the rules and bounds declared for the reader too (chaindrive.drive.tables)
+        check_rules(self, "load")
+        check_declared(self, "load", ("power", "torque", "service_factor"))
 
 
 @dataclass(frozen=True)

@@ -35,7 +35,7 @@ from typing import Any
 from ..errors import InputError
 
 __all__ = ["REQUIRED", "Input", "InputTable", "register_table", "unregister_table", "get_table", "all_tables", "load_providers", "TABLE_PROVIDERS",
-           "children", "check_declared", "field_text", "number_text", "value_text", "quantity_text", "toml_string", "docs_table"]
+           "children", "check_declared", "check_rules", "field_text", "number_text", "value_text", "quantity_text", "toml_string", "docs_table"]
 
 #: The default of a field that must be given.
 REQUIRED: Any = object()
@@ -220,6 +220,18 @@ def load_providers() -> None:
     for spec in TABLE_PROVIDERS:
         module, _, function = spec.partition(":")
         getattr(importlib.import_module(module), function)()
+
+
+def check_rules(obj: Any, table: str) -> None:
+    """The rules between the fields of ``[table]`` (its declared ``check``) on an object built
+    in code; :class:`~chaindrive.errors.InputError` ``"table: ..."`` naming the table."""
+    check = _TABLES[table].check
+    if check is None:
+        return
+    try:
+        check(obj)
+    except ValueError as exc:
+        raise InputError(f"{table}: {exc}", field=table) from None
 
 
 def check_declared(obj: Any, table: str, names: tuple[str, ...]) -> None:

@@ -41,12 +41,9 @@ class ContactSpec:
     contact_length: float | None = None
 
     def __post_init__(self) -> None:
-        if self.skew is None and (self.skew_height_difference is None or self.skew_base is None):
-            raise InputError("contact: give skew, or both skew_height_difference and skew_base",
-                             field="contact")
-        if self.skew is not None and self.skew_height_difference is not None:
-            raise InputError("contact: give skew or the measurement (skew_height_difference, "
-                             "skew_base), not both", field="contact")
+        from .schema import check_rules
+
+        check_rules(self, "contact")  # the rules declared for the reader too (chaindrive.drive.tables)
 
 
 @dataclass(frozen=True)
