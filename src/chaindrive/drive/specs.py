@@ -100,8 +100,11 @@ class RimBoltsSpec:
         if isinstance(self.count, bool) or int(self.count) != self.count or not 1 <= self.count <= 1000:
             raise InputError(f"track.bolts.count must be a whole number in [1, 1000], got {self.count!r}",
                              field="track.bolts.count")
-        _finite(self.circle_radius, "track.bolts.circle_radius", positive=True)
-        _finite(self.diameter, "track.bolts.diameter", positive=True)
+        from .schema import check_declared
+
+        check_declared(self, "track.bolts", ("circle_radius", "diameter", "plate_thickness", "allowable_shear",
+                                             "allowable_bearing", "friction", "slip_safety", "thread_pitch",
+                                             "yield_strength"))  # declared once (chaindrive.drive.tables)
 
 
 @dataclass(frozen=True)
@@ -179,7 +182,9 @@ class CrawlerSpec:
     return_guide: str = "none"
 
     def __post_init__(self) -> None:
-        _finite(self.stiffness, "crawler.stiffness", positive=True)
+        from .schema import check_declared
+
+        check_declared(self, "crawler", ("stiffness",))  # declared once (chaindrive.drive.tables)
         for name in ("guide", "return_guide"):
             if getattr(self, name) not in ("tangent", "none"):
                 raise InputError(f"crawler.{name} must be 'tangent' or 'none', got {getattr(self, name)!r}",
