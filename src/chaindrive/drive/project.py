@@ -134,7 +134,7 @@ def _field_info(loc: tuple) -> Any:
     import types
     import typing
 
-    model: Any = Project
+    model: Any = project_model()
     info = None
     for part in loc:
         if isinstance(part, int):
@@ -155,6 +155,24 @@ def _field_info(loc: tuple) -> Any:
     return info
 
 
+def _constraints(info: Any) -> list:
+    """Bounds of a field: its metadata and those inside ``Annotated[...]`` in its annotation."""
+    import typing
+
+    found = list(getattr(info, "metadata", ()) or ())
+    stack = [info.annotation]
+    while stack:
+        t = stack.pop()
+        args = typing.get_args(t)
+        if typing.get_origin(t) is typing.Annotated:
+            for extra in args[1:]:
+                found.extend(getattr(extra, "metadata", None) or [extra])
+            stack.append(args[0])
+        else:
+            stack.extend(a for a in args if a is not type(None))
+    return found
+
+
 def _bound_message(loc: tuple, value: Any, kind: str) -> str | None:
     """``must be a whole number in [3, 10000], got 1e+300`` for a field with bounds."""
     info = _field_info(loc)
@@ -162,7 +180,7 @@ def _bound_message(loc: tuple, value: Any, kind: str) -> str | None:
         return None
     low = high = None
     low_open = high_open = False
-    for m in info.metadata:
+    for m in _constraints(info):
         if getattr(m, "ge", None) is not None or getattr(m, "gt", None) is not None:
             low_open = getattr(m, "ge", None) is None
             low = m.gt if low_open else m.ge
