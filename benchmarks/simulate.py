@@ -89,8 +89,12 @@ same closed loop of springs and masses in the vectorised layout, separate x/y ar
 symplectic Euler, no contacts, no records) as the ceiling of a link-steps/s figure on this
 machine.
 
+Steady state (``--steady``, also in the default run): ``steady_state`` of the same drive
+from nothing against a long explicit run (benchmarks/_steady.py), printing
+``steady state, 16B 100 links: X s CPU, within Y % of the reference``.
+
 Run:  .venv/bin/python benchmarks/simulate.py [--mujoco] [--duration 0.3] [--no-mujoco]
-                                              [--quick] [--no-scaling]
+                                              [--quick] [--no-scaling] [--steady]
       .venv/bin/python benchmarks/simulate.py --scaling        (the scaling only)
 """
 
@@ -559,9 +563,21 @@ def main():
                          "links, and the plain point-mass chain")
     ap.add_argument("--no-scaling", action="store_true",
                     help="only the comparison (the default runs both, `make bench`)")
+    ap.add_argument("--steady", action="store_true",
+                    help="only the steady state against its long reference run "
+                         "(benchmarks/_steady.py; also part of the default run)")
     args = ap.parse_args()
     if args.scaling:
         scaling()
+        return
+    import sys
+    from pathlib import Path
+
+    sys.path.insert(0, str(Path(__file__).parent))
+    from _steady import steady_lines
+
+    if args.steady:
+        steady_lines()
         return
     import os
 
@@ -649,6 +665,8 @@ def main():
                   f"{'' if near and imp_near else '  (not at equal accuracy: see the lines above)'}")
     if args.diagnose and stiff_rows:
         diagnose(model, state, args.duration, stiff_rows[0]["dt"], own)
+    print()
+    steady_lines()
     if not args.no_scaling:
         print()
         scaling()

@@ -20,8 +20,12 @@ in-process rate of the same variants without dask. The study: the 16B roller dri
 ``examples/roller_industrial.toml``, Latin hypercube over speed 300...1500 rpm, power
 5...25 kW and skew 42...206 arcmin (Garshniev & Maksymovych's measured range); outputs contact
 stress, maximum chain force, wear life, verdict.
-Usage: ``python benchmarks/study.py [--variants N] [--million] [--per-core]`` (``--per-core``:
-only the three per-core figures).
+Dynamic study (``--dynamic N``): N variants of the same drive (speed 300...1500 rpm, power
+5...25 kW) with the outputs ``dynamics.peak_tension`` and ``dynamics.mean_tension`` (the
+running drive's steady state per variant) on 2 workers: ``dynamic study, N variants: T s on
+W workers`` (aim: 1,000 variants in < 2 min on 2 cores).
+Usage: ``python benchmarks/study.py [--variants N] [--million] [--per-core] [--dynamic N]``
+(``--per-core``: only the three per-core figures).
 """
 
 from __future__ import annotations
@@ -93,6 +97,38 @@ high = 206
 """
 
 
+DYNAMIC = """
+[study]
+name = "benchmark: dynamic tension of the 16B drive, speed x power"
+base = "roller_industrial.toml"
+outputs = ["dynamics.peak_tension", "dynamics.mean_tension", "dynamics.settled"]
+[plan]
+kind = "latin_hypercube"
+samples = {samples}
+seed = 5
+""" + STUDY[STUDY.index("[[vary]]"):STUDY.index("[[vary]]\npath = \"contact.skew\"")]
+
+
+def dynamic_study(variants: int, workers: int = 2) -> None:
+    """The running drive's steady state (``dynamics.*`` outputs, one
+    :func:`chaindrive.simulation.steady_state` per variant) of ``variants`` variants on
+    ``workers`` dask workers: wall time, the workers' CPU time inside the variants."""
+    study = parse_study(DYNAMIC.format(samples=variants), filename="dynamic.toml",
+                        folder=ROOT / "examples")
+    load0 = os.getloadavg()[0]
+    with tempfile.TemporaryDirectory() as tmp:
+        run = run_study(study, Path(tmp) / "out", workers=workers, progress=False)
+        table = read_results(Path(tmp) / "out")
+        cpu = sum(table.column("cpu_seconds").to_pylist())
+        settled = sum(bool(x) for x in table.column("dynamics.settled").to_pylist())
+    print(f"dynamic study, {run.computed} variants: {run.seconds:.1f} s on {run.workers} workers "
+          f"(compute {run.compute_seconds:.1f} s; {run.failed} failed; CPU inside the variants "
+          f"{cpu:.1f} s = {1e3 * cpu / max(run.computed, 1):.0f} ms per variant, "
+          f"{run.computed / max(cpu, 1e-9) * workers:.1f} variants/s on {workers} free cores; "
+          f"{settled} settled within 40 tooth periods; load average {load0:.1f} before, "
+          f"{os.getloadavg()[0]:.1f} after)", flush=True)
+
+
 def _per_core(study, count: int, batched: bool) -> float:
     from chaindrive.study.batch import evaluate_columns
 
@@ -153,10 +189,15 @@ def main() -> None:
     parser = argparse.ArgumentParser()
     parser.add_argument("--variants", type=int, default=1000)
     parser.add_argument("--million", action="store_true", help="also run the 1,000,000-variant Monte Carlo")
+    parser.add_argument("--dynamic", type=int, default=0, metavar="N",
+                        help="only the dynamic study of N variants on 2 workers (dynamics.* outputs)")
     parser.add_argument("--per-core", action="store_true",
                         help="only the three per-core figures (and the CPU time they took), no dask")
     args = parser.parse_args()
     print(f"machine: {os.cpu_count()} cores, load average {os.getloadavg()[0]:.1f}")
+    if args.dynamic:
+        dynamic_study(args.dynamic)
+        return
     c0 = time.process_time()
     per_core_rates()
     if args.per_core:

@@ -28,7 +28,7 @@ words = st.text(st.characters(blacklist_characters="[]", blacklist_categories=("
 @st.composite
 def drives(draw: st.DrawFn) -> Drive:
     chain = get(draw(st.sampled_from(["16B", "10A-1", "ANSI 40", "12B-2"])))
-    x = draw(st.floats(0.3, 5.0))
+    x = draw(st.floats(1.5, 5.0))  # wheels apart (the reader refuses overlapping wheels)
     wheels = [Wheel("motor", "sprocket", draw(st.integers(9, 40)), (0.0, 0.0), driving=True),
               Wheel("fan", "sprocket", draw(st.integers(9, 120)), (x, draw(st.floats(-0.2, 0.2))))]
     tensioner = None

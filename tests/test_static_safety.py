@@ -162,8 +162,11 @@ def test_the_dynamic_tension_has_one_entry():
 
     d = load_project("examples/roller_industrial.toml")
     lay = drive_layout(d)
-    one = D.dynamic_tension(d, lay, AL.free_entry_acceleration(d))
-    assert AL.drive_loads(d, lay).dynamic == one.value and one.validity == D.SPRING_MASS_VALIDITY
+    lo = AL.drive_loads(d, lay)
+    one = D.dynamic_tension(d, lay, AL.free_entry_acceleration(d), tight=lo.tight)
+    assert lo.dynamic == one.value and one.validity == D.RUNNING_VALIDITY
+    # without the tight-side tension, the spring-mass model
+    assert D.dynamic_tension(d, lay, AL.free_entry_acceleration(d)).validity == D.SPRING_MASS_VALIDITY
     assert AL.dynamic_tension is D.dynamic_tension
 
 
@@ -196,9 +199,9 @@ def test_four_doors_one_static_safety_one_dynamic_tension(tmp_path, capsys):
 
     row = design_outputs(DUTY)   # the studies' door
     assert row["static_safety"] == api.static_safety and row["dynamic_tension"] == api.dynamic_tension
-    # regression: 17.49 against 13.54; F_d 3.02 kN, peak 4.80 kN against F_B / 6 = 5.21 kN
+    # regression: 17.49 against 13.54; F_d 3.12 kN (the running-tension model), peak 4.91 kN against F_B / 6 = 5.21 kN
     assert (round(api.static_safety, 2), api.required_static_safety) == (17.49, 13.54)
-    assert round(api.dynamic_tension) == 3016 and round(api.peak_tension) == 4803
+    assert round(api.dynamic_tension) == 3119 and round(api.peak_tension) == 4906
 
 
 def test_select_json_has_finite_numbers(capsys):
@@ -251,8 +254,9 @@ def test_no_near_miss_when_the_smallest_chain_carries_it():
 
 
 def test_studio_names_the_near_miss():
-    """The studio (both families) for the issue-19 duty: 10B-1 carries 95.6 % of the design power; up to
-    four more teeth do not make it pass every check, and the note says which check stops it."""
+    """The studio (both families) for the issue-19 duty: 10B-1 carries 95.6 % of the design power; three
+    more teeth make it pass every check (with the running-tension model's dynamic tension; with the
+    former spring-mass model the peak-tension check stopped it up to 23 teeth)."""
     from chaindrive.web.design import design_from_state, normalise_state
 
     d, errors = design_from_state(normalise_state({
@@ -260,7 +264,8 @@ def test_studio_names_the_near_miss():
         "centre_distance": "600 mm"}))
     assert errors == {} and d.chain.name == "12A-1"
     assert "Near miss: 10B-1 on 19 teeth carries 95.6% of the design power" in d.candidate_note
-    assert "no change of up to 4 more small-sprocket teeth passes (with 23 teeth: peak tension" in d.candidate_note
+    assert ("remedy: 22 teeth on the small sprocket instead of 19 (3 more), 67 on the large: rated 16.01 kW for "
+            "14.3 kW, every check passes" in d.candidate_note)
 
 
 # ------------------------------------------------------------------ one name for the load character

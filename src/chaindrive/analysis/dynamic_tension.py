@@ -19,13 +19,18 @@ from ..drive.model import Drive
 from ._wheels import wheel_teeth
 from .layout import DriveLayout
 
-__all__ = ["DynamicTension", "dynamic_tension", "polygonal_spring_mass", "SPRING_MASS_VALIDITY", "RIGID_VALIDITY"]
+__all__ = ["DynamicTension", "dynamic_tension", "polygonal_spring_mass", "SPRING_MASS_VALIDITY", "RIGID_VALIDITY",
+           "RUNNING_VALIDITY"]
 
 #: What the spring–mass model is worth, said where its number is shown (docs/design.md, "The
 #: dynamic load and the simulation").
 SPRING_MASS_VALIDITY = ("not validated against measurement: within 5-12 % of the simulated peak on the three "
                         "drives it was accepted on, -37 % to +161 % elsewhere (docs/design.md, 'The dynamic load "
                         "and the simulation'); EA, the wheel inertia and the damping ratio are assumed")
+#: What the reduced running-tension model is worth (docs/design.md, "The running peak tension").
+RUNNING_VALIDITY = ("reduced model calibrated against the simulation over 64 two-sprocket drives (rms 10.6 %, "
+                    "worst 35.9 % low at a span resonance); the simulation itself is not validated against "
+                    "measurement (docs/design.md, 'The running peak tension')")
 #: What the rigid-chain estimate is worth.
 RIGID_VALIDITY = ("rigid-chain inertia force: a lower bound of the polygonal action's peak (no elastic "
                   "response, no seating impact); not validated against measurement")
@@ -57,14 +62,20 @@ class DynamicTension(Result):
 
 
 def dynamic_tension(drive: Drive, layout: DriveLayout, acceleration_peak: float, *,
-                    moving_mass: float | None = None) -> DynamicTension:
+                    moving_mass: float | None = None, tight: float | None = None) -> DynamicTension:
     r"""Peak dynamic tension of the running chain's tight span: the one entry of the model.
 
     .. math:: F_{peak} = F_{tight} + F_d
 
     Where it applies (free entry on a roller-chain sprocket that drives a load taken off at the
-    wheel the tight span leaves) the periodic response of the driven side on its spans
-    (:func:`polygonal_spring_mass`, :func:`chaindrive.loads.polygonal_dynamic_tension`); else
+    wheel the tight span leaves) and the tight-side tension ``tight`` is given (the loads part
+    gives it): the reduced model of the running peak tension,
+    ``F_d = running_peak_tension(F_t, ω, p, z₁, q, k_c) − F_t``
+    (:func:`chaindrive.vibration.running_tension.running_peak_tension`: the seating impact of
+    a link on its seat, calibrated against the simulation over a sweep of 64 drives;
+    docs/design.md, "The running peak tension"), with a ``ValidityRangeWarning`` outside the
+    sweep; without ``tight``, the periodic response of the driven side on its spans
+    (:func:`polygonal_spring_mass`, :func:`chaindrive.loads.polygonal_dynamic_tension`). Else
     ``F_d = m a_max`` with the whole chain moved rigidly (or ``moving_mass`` when given).
 
     Parameters
@@ -75,6 +86,8 @@ def dynamic_tension(drive: Drive, layout: DriveLayout, acceleration_peak: float,
         Peak chain acceleration of the entry [m/s²] (the rigid estimate uses it).
     moving_mass : float, optional
         Mass moved rigidly [kg]: then ``F_d = m a_max``.
+    tight : float, optional
+        Tight-side tension ``F_t = K_s T/R + S + q v²`` [N]: then the reduced model.
 
     Returns
     -------
@@ -83,7 +96,8 @@ def dynamic_tension(drive: Drive, layout: DriveLayout, acceleration_peak: float,
     References
     ----------
     Dolipiński et al., eqs (1)–(13) (polygonal speed of free entry); S. S. Rao, Mechanical
-    Vibrations, 5th ed., §§2.6, 3.6, 4.2; docs/design.md, "The dynamic load and the simulation".
+    Vibrations, 5th ed., §§2.6, 3.6, 4.2; docs/design.md, "The dynamic load and the simulation"
+    and "The running peak tension".
 
     Examples
     --------
@@ -92,6 +106,8 @@ def dynamic_tension(drive: Drive, layout: DriveLayout, acceleration_peak: float,
     >>> d = load_project("examples/roller_industrial.toml")
     >>> round(dynamic_tension(d, drive_layout(d), 127.0).value)
     3934
+    >>> round(dynamic_tension(d, drive_layout(d), 127.0, tight=2254.09).value)
+    4697
     """
     sm = None if moving_mass is not None else polygonal_spring_mass(drive, layout)
     if sm is None:
@@ -99,6 +115,9 @@ def dynamic_tension(drive: Drive, layout: DriveLayout, acceleration_peak: float,
         return DynamicTension(value=float(F.dynamic_tension(m, acceleration_peak)), moving_mass=m, stiffness=None,
                               model="m a_max, the whole chain moved rigidly", validity=RIGID_VALIDITY)
     j, m, k = sm
+    if tight is not None and drive.chain.inner_width is not None and drive.chain.breaking_force is not None:
+        return _running_tension(drive, layout, tight, j, m, float(drive.chain.inner_width),
+                                float(drive.chain.breaking_force))
     R = float(layout.pitch_radii[drive.driving_index])
     Fd = float(F.polygonal_dynamic_tension(drive.speed, R, math.pi / wheel_teeth(drive.driving_wheel, "the driving wheel"),
                                            k, m))
@@ -107,6 +126,29 @@ def dynamic_tension(drive: Drive, layout: DriveLayout, acceleration_peak: float,
         model=(f"wheel {drive.wheels[j].name!r} as a mass on its spans, driven by the polygonal speed "
                f"(periodic response, ζ = {F.POLYGONAL_DAMPING_RATIO:g})"),
         validity=SPRING_MASS_VALIDITY)
+
+
+def _running_tension(drive: Drive, layout: DriveLayout, tight: float, j: int, m: float, width: float,
+                     breaking_force: float) -> DynamicTension:
+    """``F_d = F_peak − F_t`` of :func:`chaindrive.vibration.running_tension.running_peak_tension`
+    (the seats at :func:`~chaindrive.vibration.running_tension.seat_contact_stiffness`, each of
+    ``n`` strands a simplex chain at ``F_t / n``); a ``ValidityRangeWarning`` outside its
+    calibration sweep."""
+    from ..vibration import running_tension as RT
+
+    n = drive.chain.strands
+    z0 = wheel_teeth(drive.driving_wheel, "the driving wheel")
+    kc = n * float(RT.seat_contact_stiffness(tight / n, width))
+    R = float(layout.pitch_radii[drive.driving_index])
+    RT.check_running_tension_range(
+        pitch=drive.pitch, teeth=z0, teeth_driven=wheel_teeth(drive.wheels[j], "the driven wheel"),
+        angular_velocity=drive.speed, centre_distance=float(layout.wrap.span_length[layout.tight_span]),
+        pull=float(drive.torque()) / R, breaking_force=breaking_force, wheels=len(drive.wheels), stacklevel=5)
+    peak = float(RT.running_peak_tension(tight, drive.speed, drive.pitch, z0, drive.mass_per_length, kc))
+    return DynamicTension(
+        value=peak - tight, moving_mass=m, stiffness=kc, validity=RUNNING_VALIDITY,
+        model=(f"seating impact of a link on its seat (k_c = {kc:.3g} N/m, Palmgren), reduced model calibrated "
+               f"against the simulation (running_peak_tension)"))
 
 
 def polygonal_spring_mass(drive: Drive, layout: DriveLayout) -> tuple[int, float, float] | None:

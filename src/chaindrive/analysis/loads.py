@@ -288,7 +288,7 @@ def drive_loads(drive: Drive, layout: DriveLayout | None = None, *,
         a, asrc = free_entry_acceleration(drive), "free entry on the driving wheel, ω² R sin(δ/2) (Dolipiński et al.)"
     else:
         a, asrc = float(acceleration_peak), acceleration_source
-    dyn = dynamic_tension(drive, lay, a, moving_mass=moving_mass)
+    dyn = dynamic_tension(drive, lay, a, moving_mass=moving_mass, tight=tight)
     m, Fd, dsrc, kd = dyn.moving_mass, dyn.value, dyn.model, dyn.stiffness
     ang = lay.wrap.span_angle
     # wheel i: pulled back along incoming span i-1, forward along outgoing span i

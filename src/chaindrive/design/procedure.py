@@ -49,8 +49,8 @@ if TYPE_CHECKING:
     from ..chains import Chain
     from ..drive.model import Drive
 
-__all__ = ["DesignCandidate", "DesignResult", "NearMiss", "design_drive", "project_text", "DEFAULT_CENTRE_PITCHES",
-           "NEAR_MISS_BAND"]
+__all__ = ["DesignCandidate", "DesignResult", "NearMiss", "design_drive", "project_text", "two_sprocket_drive",
+           "DEFAULT_CENTRE_PITCHES", "NEAR_MISS_BAND"]
 
 #: Default centre distance [pitches] (ISO 10823:2004: 30 ... 50 pitches).
 DEFAULT_CENTRE_PITCHES = 40
@@ -92,6 +92,7 @@ class DesignCandidate(Result):
     advice: tuple[Any, ...] = ()
     notes: tuple[str, ...] = ()
     project_text: str = field(default="", repr=False)
+    built: Drive | None = field(default=None, repr=False, compare=False)
 
     def summary(self) -> dict[str, Any]:
         """The row as JSON data in SI units (the shape of ``select --json``)."""
@@ -111,7 +112,9 @@ class DesignCandidate(Result):
         }
 
     def drive(self) -> Drive:
-        """The candidate's drive (parsed from its project file)."""
+        """The candidate's drive (built in code; parsed from its project file when only that is given)."""
+        if self.built is not None:
+            return self.built
         from ..drive.project import parse_project
 
         return parse_project(self.project_text, filename="design.toml")
@@ -139,56 +142,57 @@ class DesignResult(Result):
                 "near_misses": [m.summary() for m in self.near_misses]}
 
 
-def _toml_string(text: str) -> str:
-    return '"' + text.replace("\\", "\\\\").replace('"', '\\"') + '"'
+def two_sprocket_drive(chain: str | Chain, teeth: tuple[int, int], centre_distance: float, links: int,
+                       speed: float, power: float, service_factor: float, *, name: str = "",
+                       description: str = "", required_static_safety: float | None = None) -> Drive:
+    """The two-sprocket :class:`~chaindrive.drive.model.Drive` of a design, built in code: the
+    driving sprocket at the origin, the driven one on the x axis at ``centre_distance`` [m].
+
+    Examples
+    --------
+    >>> d = two_sprocket_drive("16B-1", (19, 58), 0.6, 84, 152.89, 11e3, 1.3)
+    >>> d.links, d.wheels[1].position, d.load.service_factor
+    (84, (0.6, 0.0), 1.3)
+    """
+    from ..chains import get
+    from ..drive.model import Drive, Load, Wheel
+
+    c = get(chain) if isinstance(chain, str) else chain
+    return Drive(
+        chain=c, speed=float(speed), links=int(links),
+        load=Load(power=float(power), service_factor=float(service_factor)),
+        wheels=(Wheel("driving", "sprocket", int(teeth[0]), (0.0, 0.0), driving=True),
+                Wheel("driven", "sprocket", int(teeth[1]), (float(centre_distance), 0.0))),
+        name=name or f"{c.name} chain drive, {teeth[0]}/{teeth[1]} teeth", description=description,
+        required_static_safety=required_static_safety)
 
 
 def project_text(chain: str, teeth: tuple[int, int], centre_distance: float, links: int, speed: float,
-                 power: float, service_factor: float, *, name: str = "", description: str = "") -> str:
-    """A complete project file (TOML) for a two-sprocket drive on a horizontal line.
+                 power: float, service_factor: float, *, name: str = "", description: str = "",
+                 required_static_safety: float | None = None) -> str:
+    """A complete project file (TOML) for a two-sprocket drive on a horizontal line: the
+    :func:`two_sprocket_drive` written by :func:`chaindrive.drive.writer.project_text`.
 
     Examples
     --------
     >>> text = project_text("16B-1", (19, 58), 0.6, 84, 152.89, 11e3, 1.3)
-    >>> "links = 84" in text and 'position = ["600.000000 mm", "0 mm"]' in text
+    >>> "links = 84" in text and 'position = ["0.6 m", "0.0 m"]' in text
     True
     """
-    title = name or f"{chain} chain drive, {teeth[0]}/{teeth[1]} teeth"
-    lines = [
-        "# chaindrive project file written by the design procedure (TOML). Quantities carry units;",
-        "# a bare number is refused for them. Check it with:  chaindrive analyze <this file>",
-        "",
-        "[drive]",
-        f"name = {_toml_string(title)}",
-    ]
-    if description:
-        lines.append(f"description = {_toml_string(description)}")
-    lines += [
-        f'speed = "{angular_velocity_to_rpm(speed):.12g} rpm"     # driving (small) sprocket',
-        f"links = {int(links)}                      # even number of pitches",
-        "",
-        "[chain]",
-        f"name = {_toml_string(chain)}",
-        "",
-        "[load]",
-        f'power = "{power / 1e3:.12g} kW"',
-        f"service_factor = {service_factor:.12g}",
-        "",
-        "[[wheels]]",
-        'name = "driving"',
-        'kind = "sprocket"',
-        f"teeth = {int(teeth[0])}",
-        'position = ["0 mm", "0 mm"]',
-        "driving = true",
-        "",
-        "[[wheels]]",
-        'name = "driven"',
-        'kind = "sprocket"',
-        f"teeth = {int(teeth[1])}",
-        f'position = ["{centre_distance * 1e3:.6f} mm", "0 mm"]   # exact centre distance for {links} links',
-        "",
-    ]
-    return "\n".join(lines)
+    return _written(two_sprocket_drive(chain, teeth, centre_distance, links, speed, power, service_factor,
+                                       name=name, description=description,
+                                       required_static_safety=required_static_safety))
+
+
+def _written(drive: Drive) -> str:
+    """The project file of a designed drive, with its comments."""
+    from ..drive.writer import project_text as write
+
+    return write(drive, header="chaindrive project file written by the design procedure (TOML). Quantities "
+                               "carry units;\na bare number is refused for them. Check it with:  chaindrive "
+                               "analyze <this file>",
+                 comments={"drive.speed": "driving (small) sprocket", "drive.links": "even number of pitches",
+                           "wheels.1.position": f"exact centre distance for {drive.links} links"})
 
 
 def _outside_diameter(pitch: float, teeth: int) -> float:
@@ -290,16 +294,15 @@ def _laid_out(rated: _Rated, duty: Duty, factors: tuple[Factor, ...], ks: float,
             exact = float(centre_distance_polygon(chain.pitch, z1, z2, links).taut)
         except InputError:
             exact = float(centre_distance_approx(chain.pitch, z1, z2, links))
-    text = project_text(chain.name, (z1, z2), exact, links, duty.speed, duty.power, ks,
-                        description=f"{chain.name}: rated {r.rated_power / 1e3:.4g} kW ({r.method}) for a "
-                                    f"design power of {design / 1e3:.4g} kW")
-    if required is not None:
-        text = text.replace("[chain]", f"required_static_safety = {required:g}\n\n[chain]", 1)
-    from ..drive.project import parse_project
+    from ..drive.tables import warn_implausible_inputs
 
+    drive = two_sprocket_drive(chain, (z1, z2), exact, links, duty.speed, duty.power, ks,
+                               description=f"{chain.name}: rated {r.rated_power / 1e3:.4g} kW ({r.method}) for a "
+                                           f"design power of {design / 1e3:.4g} kW", required_static_safety=required)
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always")
-        drive = parse_project(text, filename="design.toml")   # e.g. an implausible chain speed: a note of the row
+        warn_implausible_inputs(drive)   # e.g. an implausible chain speed: a note of the row
+    text = _written(drive)
     notes = list(dict.fromkeys([*r.warnings, *(str(w.message) for w in caught)]))
     checks: tuple[Check, ...] = ()
     static_value, tensions, peak_limit = None, (0.0, 0.0, 0.0), None
@@ -339,7 +342,8 @@ def _laid_out(rated: _Rated, duty: Duty, factors: tuple[Factor, ...], ks: float,
         static_safety=static_value, required_static_safety=drive.static_safety_required,
         static_tension=tensions[0], dynamic_tension=tensions[1], peak_tension=tensions[2],
         peak_tension_limit=peak_limit, teeth_rule=why, factors=cand_factors,
-        checks=checks, advice=drive_advice(duty, r, centre_pitches=exact / chain.pitch), notes=tuple(notes), project_text=text)
+        checks=checks, advice=drive_advice(duty, r, centre_pitches=exact / chain.pitch), notes=tuple(notes), project_text=text,
+        built=drive)
 
 
 _MESSAGE_UNITS = {"rad/s": (1.0 / angular_velocity_to_rpm(1.0), "rpm"), "W": (1e3, "kW"), "N": (1e3, "kN"),

@@ -20,6 +20,7 @@ Examples
 
 from typing import Any
 
+from . import tables as _tables  # noqa: F401 - declares the input tables
 from .model import (
     Adjustable,
     ContactSpec,

@@ -327,16 +327,11 @@ class Load:
     service_factor: float = 1.0
 
     def __post_init__(self) -> None:
-        if (self.power is None) == (self.torque is None):
-            raise InputError("load: give exactly one of power and torque", field="load")
-        if self.power is not None:
-            object.__setattr__(self, "power", _finite(self.power, "load.power", positive=True))
-        if self.torque is not None:
-            object.__setattr__(self, "torque", _finite(self.torque, "load.torque", positive=True))
-        sf = _finite(self.service_factor, "load.service_factor")
-        if sf < 1:
-            raise InputError(f"load.service_factor must be >= 1, got {sf:g}", field="load.service_factor")
-        object.__setattr__(self, "service_factor", sf)
+        from .schema import check_declared, check_rules
+
+        # the rules and bounds declared for the reader too (chaindrive.drive.tables)
+        check_rules(self, "load")
+        check_declared(self, "load", ("power", "torque", "service_factor"))
 
 
 @dataclass(frozen=True)
@@ -387,6 +382,9 @@ class Drive:
         Scraper conveyor: pans, material, drives (a mapping of its fields is accepted).
     adjustable : Adjustable, optional
         The wheel moved to fit the link count (a mapping of its fields is accepted).
+    extra_inputs : tuple of (str, object)
+        Further input tables declared by analysis parts (:func:`chaindrive.drive.schema.register_table`),
+        ``(("table", value), ...)``; read with :meth:`input`.
 
     Examples
     --------
@@ -426,9 +424,11 @@ class Drive:
     fretting: FrettingSpec | None = None
     conveyor: Conveyor | None = None
     adjustable: Adjustable | None = None
+    extra_inputs: tuple[tuple[str, Any], ...] = field(default=(), metadata={"omit_empty": True})
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "wheels", tuple(self.wheels))
+        object.__setattr__(self, "extra_inputs", tuple(sorted(dict(self.extra_inputs).items())))
         object.__setattr__(self, "conveyor", _spec(self.conveyor, Conveyor, "conveyor"))
         object.__setattr__(self, "adjustable", _spec(self.adjustable, Adjustable, "adjustable"))
         object.__setattr__(self, "guides", tuple(self.guides))
@@ -483,6 +483,11 @@ class Drive:
             _finite(self.wear_coefficient, "drive.wear_coefficient", positive=True)
 
     # ------------------------------------------------------------------ editing
+
+    def input(self, table: str) -> Any:
+        """The value of a further input table ``[table]`` (one an analysis part declared with
+        :func:`chaindrive.drive.schema.register_table`), or ``None`` when the drive has none."""
+        return dict(self.extra_inputs).get(table)
     def with_wheel(self, name: str, **changes: Any) -> Drive:
         """A copy of the drive with the wheel ``name`` changed (``teeth=21``, ...)."""
         w = self.wheel(name)

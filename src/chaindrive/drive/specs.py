@@ -41,12 +41,9 @@ class ContactSpec:
     contact_length: float | None = None
 
     def __post_init__(self) -> None:
-        if self.skew is None and (self.skew_height_difference is None or self.skew_base is None):
-            raise InputError("contact: give skew, or both skew_height_difference and skew_base",
-                             field="contact")
-        if self.skew is not None and self.skew_height_difference is not None:
-            raise InputError("contact: give skew or the measurement (skew_height_difference, "
-                             "skew_base), not both", field="contact")
+        from .schema import check_rules
+
+        check_rules(self, "contact")  # the rules declared for the reader too (chaindrive.drive.tables)
 
 
 @dataclass(frozen=True)
@@ -103,8 +100,11 @@ class RimBoltsSpec:
         if isinstance(self.count, bool) or int(self.count) != self.count or not 1 <= self.count <= 1000:
             raise InputError(f"track.bolts.count must be a whole number in [1, 1000], got {self.count!r}",
                              field="track.bolts.count")
-        _finite(self.circle_radius, "track.bolts.circle_radius", positive=True)
-        _finite(self.diameter, "track.bolts.diameter", positive=True)
+        from .schema import check_declared
+
+        check_declared(self, "track.bolts", ("circle_radius", "diameter", "plate_thickness", "allowable_shear",
+                                             "allowable_bearing", "friction", "slip_safety", "thread_pitch",
+                                             "yield_strength"))  # declared once (chaindrive.drive.tables)
 
 
 @dataclass(frozen=True)
@@ -182,7 +182,9 @@ class CrawlerSpec:
     return_guide: str = "none"
 
     def __post_init__(self) -> None:
-        _finite(self.stiffness, "crawler.stiffness", positive=True)
+        from .schema import check_declared
+
+        check_declared(self, "crawler", ("stiffness",))  # declared once (chaindrive.drive.tables)
         for name in ("guide", "return_guide"):
             if getattr(self, name) not in ("tangent", "none"):
                 raise InputError(f"crawler.{name} must be 'tangent' or 'none', got {getattr(self, name)!r}",
@@ -277,22 +279,13 @@ class Conveyor:
     efficiency: float = 1.0
 
     def __post_init__(self) -> None:
-        for name in ("chain_friction", "material_friction"):
-            x = _finite(getattr(self, name), f"conveyor.{name}", nonnegative=True)
-            if x > 1.5:
-                raise InputError(f"conveyor.{name} must lie in [0, 1.5], got {x:g}", field=f"conveyor.{name}")
-            object.__setattr__(self, name, x)
-        if self.return_friction is not None:
-            x = _finite(self.return_friction, "conveyor.return_friction", nonnegative=True)
-            if x > 1.5:
-                raise InputError(f"conveyor.return_friction must lie in [0, 1.5], got {x:g}",
-                                 field="conveyor.return_friction")
-            object.__setattr__(self, "return_friction", x)
+        from .schema import check_declared
+
         if self.material_load is not None and self.capacity is not None:
             raise InputError("conveyor: give material_load or capacity, not both", field="conveyor.capacity")
-        for name in ("material_load", "capacity"):
-            if getattr(self, name) is not None:
-                object.__setattr__(self, name, _finite(getattr(self, name), f"conveyor.{name}", nonnegative=True))
+        # bounds declared once, for the reader too (chaindrive.drive.tables)
+        check_declared(self, "conveyor", ("chain_friction", "material_friction", "return_friction", "material_load",
+                                          "capacity", "head_share", "minimum_tension", "efficiency"))
         a = _finite(self.inclination, "conveyor.inclination")
         if abs(a) > math.pi / 4:
             raise InputError(f"conveyor.inclination must lie in [-45°, 45°], got {math.degrees(a):.4g}°",
@@ -301,16 +294,6 @@ class Conveyor:
         if self.return_strand not in RETURN_STRANDS:
             raise InputError(f"conveyor.return_strand must be one of {', '.join(RETURN_STRANDS)}, got "
                              f"{self.return_strand!r}", field="conveyor.return_strand")
-        share = _finite(self.head_share, "conveyor.head_share")
-        if not 0 < share <= 1:
-            raise InputError(f"conveyor.head_share must lie in (0, 1], got {share:g}", field="conveyor.head_share")
-        object.__setattr__(self, "head_share", share)
-        object.__setattr__(self, "minimum_tension",
-                           _finite(self.minimum_tension, "conveyor.minimum_tension", nonnegative=True))
-        eta = _finite(self.efficiency, "conveyor.efficiency")
-        if not 0 < eta <= 1:
-            raise InputError(f"conveyor.efficiency must lie in (0, 1], got {eta:g}", field="conveyor.efficiency")
-        object.__setattr__(self, "efficiency", eta)
 
     @property
     def return_on_pans(self) -> bool:

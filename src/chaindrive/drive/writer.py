@@ -1,5 +1,6 @@
 """The one project-file writer: a :class:`~chaindrive.drive.model.Drive` (plus comments) as
-TOML text that :func:`chaindrive.drive.project.parse_project` reads back to an equal Drive.
+TOML text that :func:`chaindrive.drive.project.parse_project` reads back to an equal Drive,
+generated from the input tables' declarations (:mod:`chaindrive.drive.tables`).
 
 ``chaindrive new`` (:func:`chaindrive.drive.project.template`), ``chaindrive select --write``
 (:func:`candidate_project_text`) write through it. Every quantity is written in
@@ -25,46 +26,29 @@ True
 from __future__ import annotations
 
 import dataclasses
-import json
 import math
 from collections.abc import Mapping
 from typing import TYPE_CHECKING, Any
 
 from ..errors import InputError
-from .model import TENSIONER_PARTS, Drive, Load, Wheel
+from .model import Drive, Load, Wheel
+from .schema import (
+    InputTable,
+    all_tables,
+    field_text,
+    number_text,
+    quantity_text,
+    toml_string,
+    value_text,
+)
+from .tables import table_objects, table_values
 
 if TYPE_CHECKING:
     from ..selection import Candidate
 
-__all__ = ["project_text", "drive_to_toml", "edit_project_text", "candidate_drive", "candidate_project_text", "toml_string",
+__all__ = ["project_text", "mapping_text", "drive_to_toml", "edit_project_text", "candidate_drive",
+           "candidate_project_text", "toml_string",
            "quantity_text"]
-
-
-def toml_string(text: str) -> str:
-    """A TOML basic string (JSON escapes are valid TOML)."""
-    # JSON escapes are TOML escapes; DEL (U+007F), a control character TOML refuses raw, is
-    # the one JSON leaves as it is
-    return json.dumps(str(text), ensure_ascii=False).replace("\x7f", "\\u007f")
-
-
-def quantity_text(value: float, unit: str) -> str:
-    """``"<value> <unit>"`` as a TOML string, the value exact (``repr``).
-
-    >>> quantity_text(0.0254, "m")
-    '"0.0254 m"'
-    """
-    v = float(value)
-    if not math.isfinite(v):
-        raise InputError(f"cannot write a non-finite quantity ({value!r} {unit}) to a project file")
-    return toml_string(f"{v!r} {unit}")
-
-
-def _number(value: float | int) -> str:
-    if isinstance(value, bool):
-        return "true" if value else "false"
-    if isinstance(value, int):
-        return str(value)
-    return repr(float(value))
 
 
 class _Lines:
@@ -85,78 +69,22 @@ class _Lines:
         self.lines.append(f"{key} = {text}" + (f"  # {note}" if note else ""))
 
 
-_CHAIN_FIELDS = {"pitch": "m", "roller_diameter": "m", "bar_diameter": "m", "strands": None, "inner_width": "m",
-                 "pin_diameter": "m", "plate_height": "m", "breaking_force": "N", "mass_per_length": "kg/m",
-                 "source": ""}
-
-
-def _chain(out: _Lines, chain: Any) -> None:
-    from ..chains import get
-    from ..errors import UnknownNameError
-
-    out.table("chain")
-    out.key("chain", "name", toml_string(chain.name))
-    try:
-        base = get(chain.name)
-    except UnknownNameError:
-        base = None
-    for key, unit in _CHAIN_FIELDS.items():
-        value = getattr(chain, key)
-        if value is None or (base is not None and getattr(base, key) == value):
-            continue
-        if unit is None:
-            out.key("chain", key, str(int(value)))
-        elif unit == "":
-            out.key("chain", key, toml_string(value))
-        else:
-            out.key("chain", key, quantity_text(value, unit))
-
-
-def _pair(values: tuple[float, float], unit: str) -> str:
-    return "[" + ", ".join(quantity_text(v, unit) if unit else _number(float(v)) for v in values) + "]"
-
-
-def _optional_fields(out: _Lines, table: str, obj: Any, units: Mapping[str, str | None]) -> None:
-    """The fields of ``obj`` that differ from their defaults (required ones always)."""
-    for f in dataclasses.fields(obj):
-        if f.name not in units:
-            continue
-        value = getattr(obj, f.name)
-        default = f.default
-        if f.default is not dataclasses.MISSING and value == default:
-            continue
+def _write_table(out: _Lines, table: InputTable, obj: Any, where: str) -> None:
+    """The fields of ``obj`` that are required, differ from their defaults or carry a comment."""
+    for f, value in zip(table.fields, table_values(table, obj).values(), strict=True):
         if value is None:
             continue
-        unit = units[f.name]
-        if isinstance(value, tuple):
-            out.key(table, f.name, _pair(value, unit or ""))
-        elif isinstance(value, str):
-            out.key(table, f.name, toml_string(value))
-        elif unit:
-            out.key(table, f.name, quantity_text(value, unit))
-        else:
-            out.key(table, f.name, _number(value))
-
-
-#: The SI unit of the physical fields of the tables written generically (the others are numbers or text).
-_SPEC_UNITS: dict[str, dict[str, str]] = {
-    "track.bolts": {"circle_radius": "m", "diameter": "m", "plate_thickness": "m", "allowable_shear": "Pa",
-                    "allowable_bearing": "Pa", "thread_pitch": "m", "yield_strength": "Pa"},
-    "crawler": {"stiffness": "N", "cam_distance": "m", "engagement_distance": "m", "cam_pitch": "m",
-                "cam_face_angle": "rad"},
-    "fretting": {"roughness": "m", "latent_coefficient": "s/m", "decay_coefficient": "s/N", "frequency": "Hz"},
-    "conveyor": {"material_load": "kg/m", "capacity": "kg/s", "inclination": "rad", "minimum_tension": "N"},
-}
-
-
-def _all_fields(spec: Any, units: Mapping[str, str]) -> dict[str, str | None]:
-    """Every field of a spec with its unit (``None``: a number, a flag or text)."""
-    return {f.name: units.get(f.name) for f in dataclasses.fields(spec)}
+        if not (f.required or f.shown or value != f.default or f"{where}.{f.name}" in out.comments):
+            continue
+        out.key(where, f.name, field_text(f, value))
 
 
 def project_text(drive: Drive, *, header: str | None = None, comments: Mapping[str, str] | None = None) -> str:
     """The project file (TOML) of ``drive``: :func:`~chaindrive.drive.project.parse_project`
     reads it back to an equal :class:`Drive`.
+
+    Every declared input table (:mod:`chaindrive.drive.tables`) present in the drive is
+    written, its fields in their declared units and order.
 
     Parameters
     ----------
@@ -181,99 +109,81 @@ def project_text(drive: Drive, *, header: str | None = None, comments: Mapping[s
     out = _Lines(comments or {})
     if header:
         out.lines += [ln if ln.startswith("#") or not ln else f"# {ln}" for ln in header.strip("\n").splitlines()]
-    d = drive
-    out.table("drive")
-    out.key("drive", "name", toml_string(d.name))
-    if d.description:
-        out.key("drive", "description", toml_string(d.description))
-    out.key("drive", "speed", quantity_text(d.speed, "rad/s"))
-    if d.links is not None:
-        out.key("drive", "links", str(int(d.links)))
-    if d.slack_tension is not None:
-        out.key("drive", "slack_tension", quantity_text(d.slack_tension, "N"))
-    defaults = {f.name: f.default for f in dataclasses.fields(Drive)}
-    for key in ("slack_sag_ratio", "required_static_safety", "elongation_limit"):
-        if getattr(d, key) != defaults[key] or f"drive.{key}" in out.comments:
-            out.key("drive", key, _number(getattr(d, key)))
-    if d.wear_coefficient is not None:
-        out.key("drive", "wear_coefficient", quantity_text(d.wear_coefficient, "m**2/N"))
-    if d.travel != "ccw" or "drive.travel" in out.comments:
-        out.key("drive", "travel", toml_string(d.travel))
-    _chain(out, d.chain)
-    out.table("load")
-    if d.load.power is not None:
-        out.key("load", "power", quantity_text(d.load.power, "W"))
-    if d.load.torque is not None:
-        out.key("load", "torque", quantity_text(d.load.torque, "N*m"))
-    out.key("load", "service_factor", _number(d.load.service_factor))
-    for i, w in enumerate(d.wheels):
-        out.table("wheels", array=True)
-        where = f"wheels.{i}"
-        out.key(where, "name", toml_string(w.name))
-        out.key(where, "kind", toml_string(w.kind))
-        if w.teeth is not None:
-            out.key(where, "teeth", str(int(w.teeth)))
-        if w.diameter is not None:
-            out.key(where, "diameter", quantity_text(w.diameter, "m"))
-        out.key(where, "position", _pair(w.position, "m"))
-        if w.driving:
-            out.key(where, "driving", "true")
-        if w.side != 1:
-            out.key(where, "side", str(int(w.side)))
-        if w.power_share is not None:
-            out.key(where, "power_share", _number(w.power_share))
-    if d.adjustable is not None:
-        out.table("adjustable")
-        out.key("adjustable", "wheel", toml_string(d.adjustable.wheel))
-        out.key("adjustable", "direction", _pair(d.adjustable.direction, ""))
-    if d.tensioner is not None:
-        t = d.tensioner
-        out.table("tensioner")
-        if t.mechanism is None:
-            _optional_fields(out, "tensioner", t, {"wheel": None, "mass": "kg", "stiffness": "N/m",
-                                                  "kind": None, "direction": "", "force": "N"})
-        else:  # described by its parts: the reader reduces them to mass and stiffness again
-            _optional_fields(out, "tensioner", t, {"wheel": None, "kind": None, "direction": "", "force": "N",
-                                                  "mechanism": None})
-            units = TENSIONER_PARTS[t.mechanism]
-            for key, value in t.parts:
-                out.key("tensioner", key, quantity_text(value, units[key]))
-    for i, g in enumerate(d.guides):
-        out.table("guides", array=True)
-        out.key(f"guides.{i}", "wheel", toml_string(g.wheel))
-        out.key(f"guides.{i}", "kind", toml_string(g.kind))
-        out.key(f"guides.{i}", "end_distance", quantity_text(g.end_distance, "m"))
-        if g.height is not None:
-            out.key(f"guides.{i}", "height", quantity_text(g.height, "m"))
-    if d.contact is not None:
-        out.table("contact")
-        _optional_fields(out, "contact", d.contact, {"skew": "rad", "skew_height_difference": "m", "skew_base": "m",
-                                                      "wear_factor": None, "seat_radius": "m", "contact_length": "m"})
-    if d.track is not None:
-        out.table("track")
-        _optional_fields(out, "track", d.track, {"tractor_weight": "N", "tooth_width": "m", "pin_radius": "m",
-                                                  "adhesion": None, "rims": None, "link": None, "hardness": None,
-                                                  "allowable_bending": "Pa", "allowable_contact": "Pa"})
-    bolts = getattr(d.track, "bolts", None) if d.track is not None else None
-    if bolts is not None:
-        out.table("track.bolts")
-        _optional_fields(out, "track.bolts", bolts, _all_fields(bolts, _SPEC_UNITS["track.bolts"]))
-    for name in ("crawler", "fretting", "conveyor"):
-        spec = getattr(d, name, None)
-        if spec is not None:
-            out.table(name)
-            _optional_fields(out, name, spec, _all_fields(spec, _SPEC_UNITS[name]))
-    if d.self_regulating is not None:
-        sr = d.self_regulating
-        pivot = sr.kind == "pivot"
-        out.table("self_regulating")
-        _optional_fields(out, "self_regulating", sr, {
-            "wheel": None, "kind": None, "pivot": "m", "direction": "", "torque_reaction": None,
-            "weight": "N", "weight_offset": "m", "stiffness": "N*m/rad" if pivot else "N/m",
-            "preload": "N*m" if pivot else "N", "load_max_factor": None, "load_steps": None,
-            "elongation_steps": None, "sag_allowance": None, "psi_tolerance": None, "numerical": None,
-            "inertia": "kg*m^2" if pivot else "kg", "axial_stiffness": "N"})
+    for table in all_tables():
+        for i, obj in enumerate(table_objects(drive, table)):
+            out.table(table.name, array=table.array)
+            if table.extra.get("mapping"):
+                _self_regulating(out, obj)
+            else:
+                _write_table(out, table, obj, f"{table.name}.{i}" if table.array else table.name)
     return "\n".join(out.lines) + "\n"
+
+
+def mapping_text(data: Mapping[str, Any], *, header: str | None = None) -> str:
+    """A project mapping (tables of values as typed: ``"64 mm"``, numbers, flags) as TOML text,
+    the declared tables in their order, each key as given.
+
+    :func:`chaindrive.drive.project.project_from_mapping` builds the drive of the same
+    mapping; this is the file a user downloads (the quantities in the units they typed).
+
+    Examples
+    --------
+    >>> print(mapping_text({"load": {"power": "15 kW"}, "drive": {"speed": "960 rpm", "links": 96}}), end="")
+    [drive]
+    speed = "960 rpm"
+    links = 96
+    <BLANKLINE>
+    [load]
+    power = "15 kW"
+    """
+    out = _Lines({})
+    if header:
+        out.lines += [ln if ln.startswith("#") or not ln else f"# {ln}" for ln in header.strip("\n").splitlines()]
+    names = [t.name for t in all_tables()]
+    names += [k for k in data if k not in names]
+    for name in names:
+        parts = name.split(".")
+        table: Any = data
+        for part in parts:
+            table = table.get(part) if isinstance(table, Mapping) else None
+        if table is None:
+            continue
+        for i, entry in enumerate(table if isinstance(table, list) else [table]):
+            out.table(name, array=isinstance(table, list))
+            for key, value in entry.items():
+                if not isinstance(value, Mapping):
+                    out.key(f"{name}.{i}", key, value_text(value))
+    return "\n".join(out.lines) + "\n"
+
+
+def _pair(values: tuple[float, float], unit: str) -> str:
+    return "[" + ", ".join(quantity_text(v, unit) if unit else number_text(float(v)) for v in values) + "]"
+
+
+def _self_regulating(out: _Lines, sr: Any) -> None:
+    """The ``[self_regulating]`` table (its units depend on its kind)."""
+    pivot = sr.kind == "pivot"
+    units: dict[str, str | None] = {
+        "wheel": None, "kind": None, "pivot": "m", "direction": "", "torque_reaction": None,
+        "weight": "N", "weight_offset": "m", "stiffness": "N*m/rad" if pivot else "N/m",
+        "preload": "N*m" if pivot else "N", "load_max_factor": None, "load_steps": None,
+        "elongation_steps": None, "sag_allowance": None, "psi_tolerance": None, "numerical": None,
+        "inertia": "kg*m^2" if pivot else "kg", "axial_stiffness": "N"}
+    for f in dataclasses.fields(sr):
+        if f.name not in units:
+            continue
+        value = getattr(sr, f.name)
+        if value is None or (f.default is not dataclasses.MISSING and value == f.default):
+            continue
+        unit = units[f.name]
+        if isinstance(value, tuple):
+            out.key("self_regulating", f.name, _pair(value, unit or ""))
+        elif isinstance(value, str):
+            out.key("self_regulating", f.name, toml_string(value))
+        elif unit:
+            out.key("self_regulating", f.name, quantity_text(value, unit))
+        else:
+            out.key("self_regulating", f.name, number_text(value))
 
 
 def drive_to_toml(drive: Drive, *, header: str = "") -> str:

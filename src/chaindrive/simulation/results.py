@@ -21,7 +21,7 @@ if TYPE_CHECKING:
 
     from .run import State
 
-__all__ = ["SimulationResult", "SUMMARY_QUANTITIES", "default_probes", "tight_span", "slack_span"]
+__all__ = ["SimulationResult", "SUMMARY_QUANTITIES", "default_probes", "tight_span", "slack_span", "span_tension"]
 
 
 @dataclass(frozen=True)
@@ -106,22 +106,8 @@ class SimulationResult(Result):
         return self._span_tension(self.slack_span)
 
     def _span_tension(self, span) -> np.ndarray:
-        # the link nearest the span's mid-point among the links nearer to this span's line
-        # than to the other's (a deeply sagging span lies nearer another span's mid-point)
         other = self.slack_span if span is self.tight_span else self.tight_span
-        mid = 0.5 * (span[0] + span[1])
-        pos = self.positions
-        lm = 0.5 * (pos + np.roll(pos, -1, axis=1))
-
-        def to_segment(seg):
-            u = seg[1] - seg[0]
-            t = np.clip(((lm - seg[0]) @ u) / (u @ u), 0.0, 1.0)
-            return np.sum((lm - seg[0] - t[..., None] * u) ** 2, axis=2)
-
-        d = np.sum((lm - mid) ** 2, axis=2)
-        d = np.where(to_segment(span) <= to_segment(other), d, np.inf)
-        idx = np.argmin(d, axis=1)
-        return self.tension[np.arange(len(idx)), idx]
+        return span_tension(self.positions, self.tension, span, other)
 
     def save_npz(self, path: str | os.PathLike[str]) -> None:
         """Write every array (and scalars) to a ``.npz`` file."""
@@ -131,6 +117,28 @@ class SimulationResult(Result):
     def plot(self, *, ax: Sequence[Axes] | None = None) -> Figure:
         """Standard views (see :func:`chaindrive.plotting.simulation.simulation_plot`)."""
         return view("plot", self, ax=ax)
+
+
+def span_tension(positions: np.ndarray, tension: np.ndarray, span: np.ndarray,
+                 other: np.ndarray) -> np.ndarray:
+    """Tension [N] of the link nearest the middle of ``span`` in each record.
+
+    The link nearest the span's mid-point among the links nearer to this span's line
+    than to the ``other`` span's (a deeply sagging span lies nearer another span's
+    mid-point). ``positions`` (R, N, 2) [m], ``tension`` (R, N) [N], spans (2, 2) [m].
+    """
+    mid = 0.5 * (span[0] + span[1])
+    lm = 0.5 * (positions + np.roll(positions, -1, axis=1))
+
+    def to_segment(seg):
+        u = seg[1] - seg[0]
+        t = np.clip(((lm - seg[0]) @ u) / (u @ u), 0.0, 1.0)
+        return np.sum((lm - seg[0] - t[..., None] * u) ** 2, axis=2)
+
+    d = np.sum((lm - mid) ** 2, axis=2)
+    d = np.where(to_segment(span) <= to_segment(other), d, np.inf)
+    idx = np.argmin(d, axis=1)
+    return tension[np.arange(len(idx)), idx]
 
 
 #: Every key of :attr:`SimulationResult.summary`: its label and SI unit ("1": a count or

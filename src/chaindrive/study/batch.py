@@ -159,6 +159,9 @@ class _Outputs:
         self.parts = {head: get_part(head) for _, head, _ in self.plan if head in names}
         self._cache: dict[int, list[Any]] = {}  # id -> [result, its JSON or _MISSING, {output: value}]
         self._names: dict[type, frozenset[str]] = {}
+        from ._dynamics import wanted
+
+        self.dynamics = wanted(outputs)
 
     def _field(self, part: Any, result: Any, head: str, rest: str | None, out: str) -> Any:
         """The output read from the JSON of the one field it starts with, where the part's
@@ -179,6 +182,17 @@ class _Outputs:
     def fill(self, columns: dict[str, list[Any]], i: int, analysis: Any) -> None:
         """Put the outputs of ``analysis`` at row ``i`` of ``columns``."""
         special: dict[str, Any] = {}
+        if self.dynamics:
+            # as evaluate_variant: a drive that cannot be simulated is the row's error,
+            # every output of the row empty
+            from ._dynamics import HEAD, dynamics_result
+            from .run import _one_line
+
+            try:
+                special[HEAD] = dynamics_result(analysis.drive)
+            except Exception as exc:  # noqa: BLE001 - a failing variant is a result, not a stop
+                columns["error"][i] = _one_line(exc)
+                return
         for out, head, rest in self.plan:
             part = self.parts.get(head)
             if part is not None:
@@ -210,6 +224,7 @@ class _Outputs:
                     special[head] = list(analysis.warnings)
                 elif head == "inputs":
                     special[head] = analysis.drive.inputs()
+
                 else:  # not a head of the analysis' dict
                     special[head] = None
             columns[out][i] = self.lookup({head: special[head]}, out)

@@ -196,6 +196,7 @@ def evaluate_variant(base: dict, inputs: dict[str, Any], outputs: Sequence[str],
     import copy
 
     from ..drive.project import project_from_mapping
+    from . import _dynamics as dynamics
 
     row: dict[str, Any] = dict.fromkeys(outputs)
     row["error"] = None
@@ -216,6 +217,8 @@ def evaluate_variant(base: dict, inputs: dict[str, Any], outputs: Sequence[str],
                 sim = simulate(model_from_drive(drive), simulation["duration"],
                                samples=simulation["samples"])
                 result["simulation"] = jsonable(sim.summary)
+            if dynamics.wanted(outputs):
+                result[dynamics.HEAD] = dynamics.dynamics_result(drive)
             noted = [str(w) for w in result.get("warnings") or ()]
             for out in outputs:
                 row[out] = lookup(result, out)

@@ -54,7 +54,7 @@ __all__ = ["Study", "load_study", "parse_study", "RESULT_KEYS", "result_heads", 
            "MAXIMUM_SIMULATION_DURATION", "set_path", "remove_path", "canonical_hash"]
 
 #: Top-level names of an analysis result that are not analysis parts.
-RESULT_KEYS = ("inputs", "checks", "warnings", "passed", "simulation")
+RESULT_KEYS = ("inputs", "checks", "warnings", "passed", "simulation", "dynamics")
 
 
 def result_heads() -> tuple[str, ...]:

@@ -10,7 +10,6 @@ naming the form field.
 from __future__ import annotations
 
 import dataclasses
-import json
 import math
 import warnings
 from dataclasses import dataclass, field
@@ -23,7 +22,7 @@ from ..design.link import link_candidates
 from ..design.policy import BASE_TEETH
 from ..errors import ChainDriveError, InputError, ValidityRangeWarning
 from ..units import angular_velocity_to_rpm
-from .fields import FieldError, FieldSpec, parse_field, parse_integer
+from .fields import FieldError, FieldSpec, input_field, parse_field, parse_integer
 from .wheels import EXTRA_CHOICES, EXTRA_DEFAULTS, add_extra_wheels, extra_wheels
 
 __all__ = ["DEFAULTS", "FIELDS", "Design", "service_factor_table", "normalise_state",
@@ -94,32 +93,33 @@ CHOICES: dict[str, tuple[str, ...]] = {
     **EXTRA_CHOICES,
 }
 
-#: Ranges of the numeric fields (SI unit, minimum, maximum, example).
+#: Ranges of the numeric fields (SI unit, minimum, maximum, example); a field that is a
+#: project-file input takes its unit and lower bound from the input's declaration.
 FIELDS: dict[str, FieldSpec] = {
-    "power": FieldSpec("W", 0.0, 5e6, example="7.5 kW"),
-    "speed": FieldSpec("rad/s", 0.0, 1000.0, example="1450 rpm"),
+    "power": input_field("load.power", maximum=5e6, example="7.5 kW"),
+    "speed": input_field("drive.speed", maximum=1000.0, example="1450 rpm"),
     "ratio": FieldSpec("", 0.0, 20.0, example="3"),
     "driven_speed": FieldSpec("rad/s", 0.0, 1000.0, example="480 rpm"),
-    "service_factor": FieldSpec("", 1.0, 5.0, open_minimum=False, example="1.3"),
+    "service_factor": input_field("load.service_factor", maximum=5.0, example="1.3"),
     "hours_per_day": FieldSpec("", 0.0, 24.0, example="8"),
     "centre_distance": FieldSpec("m", 0.0, 50.0, example="500 mm"),
     "idler_position": FieldSpec("", 0.05, 0.95, open_minimum=False, example="0.3"),
     "idler_offset": FieldSpec("m", 0.0, 10.0, open_minimum=False, example="60 mm"),
-    "tensioner_mass": FieldSpec("kg", 0.0, 1e5, example="2 kg"),
-    "tensioner_stiffness": FieldSpec("N/m", 0.0, 1e10, example="20 kN/m"),
-    "tensioner_force": FieldSpec("N", 0.0, 1e7, open_minimum=False, example="200 N"),
+    "tensioner_mass": input_field("tensioner.mass", maximum=1e5, example="2 kg"),
+    "tensioner_stiffness": input_field("tensioner.stiffness", maximum=1e10, example="20 kN/m"),
+    "tensioner_force": input_field("tensioner.force", maximum=1e7, example="200 N"),
     # a tensioner described by its parts (chaindrive.drive.model.Tensioner.from_parts)
-    "tensioner_arm_length": FieldSpec("m", 0.0, 10.0, example="400 mm"),
-    "tensioner_arm_mass": FieldSpec("kg", 0.0, 1e5, open_minimum=False, example="30 kg"),
-    "tensioner_wheel_mass": FieldSpec("kg", 0.0, 1e5, open_minimum=False, example="40 kg"),
-    "tensioner_carriage_mass": FieldSpec("kg", 0.0, 1e5, open_minimum=False, example="25 kg"),
+    "tensioner_arm_length": input_field("tensioner.arm_length", maximum=10.0, example="400 mm"),
+    "tensioner_arm_mass": input_field("tensioner.arm_mass", maximum=1e5, example="30 kg"),
+    "tensioner_wheel_mass": input_field("tensioner.wheel_mass", maximum=1e5, example="40 kg"),
+    "tensioner_carriage_mass": input_field("tensioner.carriage_mass", maximum=1e5, example="25 kg"),
     "tensioner_spring_stiffness": FieldSpec("N/m", 0.0, 1e10, example="600 kN/m"),
-    "tensioner_spring_lever": FieldSpec("m", 0.0, 10.0, open_minimum=False, example="250 mm"),
-    "tensioner_spring_angle": FieldSpec("rad", 0.0, 1.5, open_minimum=False, example="10 deg"),
-    "guide_end": FieldSpec("m", 0.0, 10.0, example="100 mm"),
-    "skew": FieldSpec("rad", 0.0, 0.2, open_minimum=False, example="50 arcmin"),
-    "required_static_safety": FieldSpec("", 1.0, 50.0, open_minimum=False, example="7"),
-    "wear_coefficient": FieldSpec("m**2/N", 0.0, 1e-10, example="2e-16 m**2/N"),
+    "tensioner_spring_lever": input_field("tensioner.spring_lever", maximum=10.0, example="250 mm"),
+    "tensioner_spring_angle": input_field("tensioner.spring_angle", maximum=1.5, example="10 deg"),
+    "guide_end": input_field("guides.end_distance", maximum=10.0, example="100 mm"),
+    "skew": input_field("contact.skew", maximum=0.2, example="50 arcmin"),
+    "required_static_safety": input_field("drive.required_static_safety", minimum=1.0, maximum=50.0, example="7"),
+    "wear_coefficient": input_field("drive.wear_coefficient", maximum=1e-10, example="2e-16 m**2/N"),
 }
 
 TEETH_RANGE = (6, 150)
@@ -272,83 +272,75 @@ def _candidate_rows(result: Any) -> list[dict]:
             for c in result.candidates]
 
 
-def _toml_string(text: str) -> str:
-    return json.dumps(text, ensure_ascii=False)
-
-
 #: The parts of each tensioner mechanism the studio offers (a subset of chaindrive.drive.model.TENSIONER_PARTS).
 _TENSIONER_PARTS = {"lever": ("arm_length", "arm_mass", "wheel_mass", "spring_stiffness", "spring_lever",
                               "spring_angle"),
                     "sliding": ("carriage_mass", "wheel_mass", "spring_stiffness", "spring_angle")}
 
 
-def _project_text(d: Design, state: dict[str, str], positions: list, idler: tuple | None,
-                  links: int | None) -> str:
+#: The header of the studio's project file.
+_HEADER = ("chaindrive project file written by the web studio (TOML). Quantities carry units;\n"
+           "a physical quantity without its unit is refused. Check it with:  chaindrive layout <file>")
+
+
+def _project_data(d: Design, state: dict[str, str], positions: list, idler: tuple | None,
+                  links: int | None) -> dict[str, Any]:
+    """The project mapping of the design (the quantities as typed): the drive is built from it
+    by :func:`chaindrive.drive.project.project_from_mapping`, its file written by
+    :func:`chaindrive.drive.writer.mapping_text`."""
     kind_wheel = "pocket_wheel" if d.chain.is_link_chain else "sprocket"
-    lines = [
-        "# chaindrive project file written by the web studio (TOML). Quantities carry units;",
-        "# a physical quantity without its unit is refused. Check it with:  chaindrive layout <file>",
-        "",
-        "[drive]",
-        f"name = {_toml_string(state['name'] or 'Chain drive')}",
-        f"description = {_toml_string('driven machine: ' + service_factor_table()['driven_machines'][state['driven']][0])}",
-        f"speed = {_toml_string(state['speed'].strip())}",
-    ]
+    drive: dict[str, Any] = {
+        "name": state["name"] or "Chain drive",
+        "description": "driven machine: " + service_factor_table()["driven_machines"][state["driven"]][0],
+        "speed": state["speed"].strip()}
     if links is not None:
-        lines.append(f"links = {int(links)}")
+        drive["links"] = int(links)
     if state["required_static_safety"].strip():
-        lines.append(f"required_static_safety = {_toml_string(state['required_static_safety'].strip())}")
+        drive["required_static_safety"] = state["required_static_safety"].strip()
     elif d.chain.is_link_chain:
-        lines.append(f"required_static_safety = {required_static_safety(d.chain):g}")
+        drive["required_static_safety"] = float(f"{required_static_safety(d.chain):g}")
     if state["wear_coefficient"].strip():
-        lines.append(f"wear_coefficient = {_toml_string(state['wear_coefficient'].strip())}")
+        drive["wear_coefficient"] = state["wear_coefficient"].strip()
     if d.chain.is_link_chain:
-        lines.append("elongation_limit = 0.02")
-    lines += ["", "[chain]", f"name = {_toml_string(d.chain.name)}", "",
-              "[load]", f"power = {_toml_string(state['power'].strip())}",
-              f"service_factor = {d.service_factor:g}", ""]
+        drive["elongation_limit"] = 0.02
+    data: dict[str, Any] = {"drive": drive, "chain": {"name": d.chain.name},
+                            "load": {"power": state["power"].strip(),
+                                     "service_factor": float(f"{d.service_factor:g}")}}
     names = ["driving", "driven"]
     teeth = [d.teeth_driving, d.teeth_driven]
     wheels = [(names[0], kind_wheel, teeth[0], positions[0], True)]
     if idler is not None:
         wheels.append(("tensioner", "idler", idler[0], idler[1], False))
     wheels.append((names[1], kind_wheel, teeth[1], positions[1], False))
-    for name, kind, z, (x, y), driving in wheels:
-        lines += ["[[wheels]]", f"name = {_toml_string(name)}", f"kind = {_toml_string(kind)}",
-                  f"teeth = {int(z)}", f'position = ["{x * 1e3:.4f} mm", "{y * 1e3:.4f} mm"]']
-        if driving:
-            lines.append("driving = true")
-        lines.append("")
+    data["wheels"] = [{"name": name, "kind": kind, "teeth": int(z), "position": [f"{x * 1e3:.4f} mm", f"{y * 1e3:.4f} mm"],
+                       **({"driving": True} if driving else {})} for name, kind, z, (x, y), driving in wheels]
     if idler is not None:
         mechanism = state["tensioner_mechanism"]
+        tensioner: dict[str, Any] = {"wheel": "tensioner"}
         if mechanism:  # described by its parts: the project file reduces them to the axis
-            reduced = [f"mechanism = {_toml_string(mechanism)}"] + [
-                f"{k} = {_toml_string(state['tensioner_' + k].strip())}" for k in _TENSIONER_PARTS[mechanism]
-                if state["tensioner_" + k].strip()]
+            tensioner["mechanism"] = mechanism
+            tensioner.update({k: state["tensioner_" + k].strip() for k in _TENSIONER_PARTS[mechanism]
+                              if state["tensioner_" + k].strip()})
         else:
-            reduced = [f"mass = {_toml_string(state['tensioner_mass'].strip())}",
-                       f"stiffness = {_toml_string(state['tensioner_stiffness'].strip())}"]
-        lines += ["[tensioner]", 'wheel = "tensioner"', *reduced,
-                  'kind = "spring"', "direction = [0, -1]",
-                  f"force = {_toml_string(state['tensioner_force'].strip())}", ""]
+            tensioner.update(mass=state["tensioner_mass"].strip(), stiffness=state["tensioner_stiffness"].strip())
+        tensioner.update(kind="spring", direction=[0, -1], force=state["tensioner_force"].strip())
+        data["tensioner"] = tensioner
     if state["guide"]:
-        lines += ["[[guides]]", 'wheel = "driving"', f"kind = {_toml_string(state['guide'])}",
-                  f"end_distance = {_toml_string(state['guide_end'].strip())}", ""]
+        data["guides"] = [{"wheel": "driving", "kind": state["guide"], "end_distance": state["guide_end"].strip()}]
     if state["skew"].strip() and not d.chain.is_link_chain:
-        lines += ["[contact]", f"skew = {_toml_string(state['skew'].strip())}",
-                  "wear_factor = 0.65", ""]
+        data["contact"] = {"skew": state["skew"].strip(), "wear_factor": 0.65}
     if state.get("conveyor", "").strip():
-        lines += ["[conveyor]", *_conveyor_lines(state["conveyor"]), ""]
-    return "\n".join(lines)
+        data["conveyor"] = _conveyor_table(state["conveyor"])
+    return data
 
 
 #: [conveyor] keys written as TOML numbers (dimensionless); the others are quantities or text.
 _CONVEYOR_NUMBERS = ("chain_friction", "material_friction", "return_friction", "head_share", "efficiency")
 
 
-def _conveyor_lines(text: str) -> list[str]:
-    """TOML lines of the state's ``conveyor`` text ``key=value;...`` (parse_project checks them)."""
-    out = []
+def _conveyor_table(text: str) -> dict[str, Any]:
+    """The ``[conveyor]`` table of the state's ``conveyor`` text ``key=value;...`` (the reader checks it)."""
+    out: dict[str, Any] = {}
     for item in text.split(";"):
         key, _, value = item.partition("=")
         key, value = key.strip(), value.strip()
@@ -356,11 +348,11 @@ def _conveyor_lines(text: str) -> list[str]:
             continue
         if key in _CONVEYOR_NUMBERS:
             try:
-                out.append(f"{key} = {float(value)!r}")
+                out[key] = float(value)
+                continue
             except ValueError:
-                out.append(f"{key} = {_toml_string(value)}")
-        else:
-            out.append(f"{key} = {_toml_string(value)}")
+                pass
+        out[key] = value
     return out
 
 
@@ -489,7 +481,8 @@ def design_from_state(state: dict[str, str]) -> tuple[Design | None, dict[str, s
                service_factor_source=ks_source, load_character=character,
                design_power=power * ks, hours_per_day=hours, teeth_driving=z1, teeth_driven=z2,
                chain=chain, candidates=candidates, candidate_note=note, centre_distance=centre)
-    from ..drive.project import parse_project
+    from ..drive.project import project_from_mapping
+    from ..drive.writer import mapping_text
 
     # first pass: the centre distance as given -> links (even) -> exact centre distance
     r1 = _pitch_radius(chain, z1)
@@ -504,21 +497,22 @@ def design_from_state(state: dict[str, str]) -> tuple[Design | None, dict[str, s
     try:
         wheel_kind = "pocket_wheel" if chain.is_link_chain else "sprocket"
 
-        def project(links: int | None) -> str:
-            return add_extra_wheels(_project_text(d, state, positions, idler, links), extras,
+        def project(links: int | None) -> dict[str, Any]:
+            return add_extra_wheels(_project_data(d, state, positions, idler, links), extras,
                                     wheel_kind=wheel_kind, adjustable=idler is None)
 
-        text = project(None)
+        data = project(None)
         geometry = (chain.name, z1, z2, centre, idler, state["guide"], state["guide_end"], tuple(extras))
         if (chosen is not None and idler is None and not extras
                 and (chosen["teeth_driving"], chosen["teeth_driven"]) == (z1, z2)):
             links, exact = chosen["links"], chosen["centre_distance"]  # the design procedure's layout
         else:
-            links, exact = _links_and_centre(geometry, text, idler is None and not extras)
+            links, exact = _links_and_centre(geometry, data, idler is None and not extras)
         if exact is not None:
             positions = [(0.0, 0.0), (exact, 0.0)]
-        text = project(links)
-        drive = parse_project(text, filename="studio.toml")
+        data = project(links)
+        drive = project_from_mapping(data, filename="studio.toml")
+        text = mapping_text(data, header=_HEADER)
     except ChainDriveError as exc:
         errors[_field_of(str(exc))] = str(exc).removeprefix("studio.toml: ")
         return None, errors
@@ -531,18 +525,18 @@ def design_from_state(state: dict[str, str]) -> tuple[Design | None, dict[str, s
 _LINKS_CACHE: dict[tuple, tuple[int, float | None]] = {}
 
 
-def _links_and_centre(geometry: tuple, text: str, exact: bool) -> tuple[int, float | None]:
+def _links_and_centre(geometry: tuple, data: dict[str, Any], exact: bool) -> tuple[int, float | None]:
     """Links (even) of the drive at the given positions and the centre distance that fits them.
 
     Cached by the geometry (chain, teeth, centre distance, idler): edits of the duty or the
     tensioner do not lay the drive out again.
     """
-    from ..drive.project import parse_project
+    from ..drive.project import project_from_mapping
     from .engine import layout_summary
 
     key = (geometry, exact)
     if key not in _LINKS_CACHE:
-        lay = layout_summary(parse_project(text, filename="studio.toml"))
+        lay = layout_summary(project_from_mapping(data, filename="studio.toml"))
         cd = lay["centre_distance_for_links"] if exact else None
         if len(_LINKS_CACHE) > 512:
             _LINKS_CACHE.clear()

@@ -15,7 +15,7 @@ from dataclasses import dataclass
 from ..errors import InputError
 from ..units import parse_quantity
 
-__all__ = ["FieldError", "FieldSpec", "parse_field", "parse_integer", "BARE_NUMBER"]
+__all__ = ["FieldError", "FieldSpec", "input_field", "parse_field", "parse_integer", "BARE_NUMBER"]
 
 #: A number with no unit after it.
 BARE_NUMBER = re.compile(r"^\s*[-+]?(\d+\.?\d*|\.\d+)([eE][-+]?\d+)?\s*$")
@@ -59,6 +59,34 @@ class FieldSpec:
     maximum: float
     open_minimum: bool = True
     example: str = ""
+
+
+def input_field(path: str, *, maximum: float, example: str, minimum: float | None = None) -> FieldSpec:
+    """The form field of a project-file input ``"table.key"``: its SI unit and lower bound from
+    the input's declaration (:mod:`chaindrive.drive.tables`), the page's upper bound
+    ``maximum`` (a size cap; the smaller of it and the declared one), and an example.
+
+    ``minimum`` narrows the declared lower bound for the page (inclusive).
+
+    Examples
+    --------
+    >>> input_field("load.power", maximum=5e6, example="7.5 kW")
+    FieldSpec(unit='W', minimum=0.0, maximum=5000000.0, open_minimum=True, example='7.5 kW')
+    >>> input_field("tensioner.force", maximum=1e7, example="200 N").open_minimum
+    False
+    """
+    from ..drive.schema import get_table
+
+    table, _, key = path.rpartition(".")
+    f = get_table(table).field(key)
+    unit = "rad/s" if f.kind == "speed" else f.unit
+    top = maximum if f.maximum is None else min(maximum, f.maximum)
+    if minimum is not None:
+        return FieldSpec(unit, minimum, top, open_minimum=False, example=example)
+    low = 0.0 if f.kind == "speed" else f.minimum
+    if low is None:
+        raise ValueError(f"{path} has no lower bound: give minimum")
+    return FieldSpec(unit, low, top, open_minimum=f.kind == "speed" or f.open_minimum, example=example)
 
 
 def parse_field(name: str, text: str, spec: FieldSpec) -> float:

@@ -16,6 +16,7 @@ the drive (shares in (0, 1] summing to 1, one driving wheel, a chain path) is ch
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import Any
 
 from .fields import FieldError, FieldSpec, parse_field, parse_integer
 
@@ -112,32 +113,32 @@ def extra_wheels(state: dict[str, str], errors: dict[str, str], kind: str = "rol
     return out
 
 
-def add_extra_wheels(text: str, extras: list[ExtraWheel], *, wheel_kind: str, adjustable: bool) -> str:
-    """The studio's project text with the further wheels after the driven wheel.
+def add_extra_wheels(data: dict[str, Any], extras: list[ExtraWheel], *, wheel_kind: str,
+                     adjustable: bool) -> dict[str, Any]:
+    """The studio's project mapping with the further wheels after the driven wheel.
 
     Gives the driven wheel the ``power_share`` the further wheels leave (all of it when
     they take none), and an ``[adjustable]`` table moving the driven wheel along the line of
     centres when ``adjustable``.
     """
     if not extras:
-        return text
-    head, sep, rest = text.partition('[[wheels]]\nname = "driven"\n')
-    if not sep:
-        raise ValueError("the studio's project text has no driven wheel")
-    block, _, tail = rest.partition("\n\n")
-    block = block.rstrip("\n")
+        return data
+    wheels = [dict(w) for w in data["wheels"]]
+    at = next((i for i, w in enumerate(wheels) if w.get("name") == "driven"), None)
+    if at is None:
+        raise ValueError("the studio's project has no driven wheel")
     shares = [w.share for w in extras if w.share is not None]
-    block += f"\npower_share = {1.0 - sum(shares):.12g}"  # all of it without further driven wheels
-    lines = [block, ""]
+    wheels[at]["power_share"] = float(f"{1.0 - sum(shares):.12g}")  # all of it without further driven wheels
+    added = []
     for w in extras:
-        kind = wheel_kind if w.kind == "sprocket" else "idler"
-        lines += ["[[wheels]]", f'name = "{w.name}"', f'kind = "{kind}"', f"teeth = {w.teeth}",
-                  f'position = ["{w.x * 1e3:.4f} mm", "{w.y * 1e3:.4f} mm"]']
+        entry: dict[str, Any] = {"name": w.name, "kind": wheel_kind if w.kind == "sprocket" else "idler",
+                                 "teeth": w.teeth, "position": [f"{w.x * 1e3:.4f} mm", f"{w.y * 1e3:.4f} mm"]}
         if w.side != 1:
-            lines.append(f"side = {w.side}")
+            entry["side"] = w.side
         if w.share is not None:
-            lines.append(f"power_share = {w.share:.12g}")
-        lines.append("")
+            entry["power_share"] = float(f"{w.share:.12g}")
+        added.append(entry)
+    out = {**data, "wheels": wheels[:at + 1] + added + wheels[at + 1:]}
     if adjustable:
-        lines += ["[adjustable]", 'wheel = "driven"', "direction = [1, 0]", ""]
-    return head + sep + "\n".join(lines) + "\n" + tail
+        out["adjustable"] = {"wheel": "driven", "direction": [1, 0]}
+    return out

@@ -1,0 +1,221 @@
+"""The sweep of roller drives behind the reduced running-tension model (issue 29.4).
+
+``sweep_drives()`` lays out the calibration drives (a scrambled Halton design over chain
+pitch, driving teeth, ratio, speed, centre distance and load, fixed seed); ``run_sweep``
+simulates each (:func:`chaindrive.simulation.simulate` with the seats' contact stiffness of
+:func:`chaindrive.vibration.running_tension.seat_contact_stiffness`, ``EA`` of all strands)
+(:func:`settled_run`) and caches one row per drive in ``benchmarks/data/dynamic_sweep.csv``; the cache is read
+back by ``benchmarks/dynamic_load.py --sweep`` and by the calibration
+(``scripts/calibrate_running_tension.py``). Not imported by the package.
+"""
+
+from __future__ import annotations
+
+import csv
+import math
+import time
+import warnings
+from collections.abc import Iterator
+from dataclasses import asdict, dataclass
+from pathlib import Path
+
+import numpy as np
+
+ROOT = Path(__file__).resolve().parents[1]
+CACHE = ROOT / "benchmarks" / "data" / "dynamic_sweep.csv"
+
+#: chains of the sweep: ISO 606 B series simplex, 12.7 … 31.75 mm pitch
+CHAINS = ("08B-1", "10B-1", "12B-1", "16B-1", "20B-1")
+
+
+@dataclass(frozen=True)
+class SweepDrive:
+    """One drive of the sweep (inputs only)."""
+    name: str
+    chain: str
+    teeth_driving: int
+    teeth_driven: int
+    rpm: float                 # driving wheel [rpm]
+    centre_pitches: float      # centre distance / pitch
+    pull_ratio: float          # T/R over the chain's breaking force F_B
+
+
+@dataclass(frozen=True)
+class SweepRow:
+    """One simulated drive: its inputs, the analysis' static tensions and the simulation's."""
+    name: str
+    chain: str
+    pitch: float
+    teeth_driving: int
+    teeth_driven: int
+    rpm: float
+    centre_distance: float
+    links: int
+    torque: float
+    pull: float
+    slack: float
+    centrifugal: float
+    tight: float
+    mass_per_length: float
+    axial_stiffness: float
+    roller_width: float
+    contact_stiffness: float
+    tight_span: float
+    sim_mean: float
+    sim_peak: float            # median of the per-tooth-period peaks
+    sim_p90: float             # 90th percentile of the per-tooth-period peaks
+    sim_max: float
+    wall_seconds: float
+
+
+def sweep_drives(count: int = 48, seed: int = 29) -> list[SweepDrive]:
+    """``count`` drives of a scrambled Halton design (fixed ``seed``): chain (5 pitches),
+    driving teeth 13…27, ratio 1…3.5, speed 100…1800 rpm (log-uniform, chain speed capped
+    at 12 m/s), centre distance 25…60 pitches, pull 2…12 % of F_B (log-uniform)."""
+    from scipy.stats import qmc
+
+    from chaindrive.chains import get
+
+    u = qmc.Halton(d=6, scramble=True, seed=seed).random(count)
+    out = []
+    for i, (c, z, r, n, a, f) in enumerate(u):
+        chain = CHAINS[min(int(c * len(CHAINS)), len(CHAINS) - 1)]
+        z1 = 13 + int(round(z * 14))
+        z2 = max(z1, int(round(z1 * (1.0 + 2.5 * r))))
+        rpm = 100.0 * 18.0 ** n
+        p = float(get(chain).pitch)
+        rpm = min(rpm, 12.0 * 60.0 / (z1 * p))              # chain speed <= 12 m/s
+        out.append(SweepDrive(f"S{i:02d}", chain, z1, z2, round(float(rpm), 1), round(float(25 + 35 * a), 2),
+                              round(float(0.02 * 6.0 ** f), 5)))
+    return out
+
+
+def drive_of(s: SweepDrive):  # -> chaindrive.drive.Drive
+    """The project drive of a sweep drive (two sprockets on a horizontal line, nominal torque)."""
+    from chaindrive.chains import get
+    from chaindrive.drive.project import parse_project
+
+    chain = get(s.chain)
+    p = float(chain.pitch)
+    r1 = p / (2 * math.sin(math.pi / s.teeth_driving))
+    torque = s.pull_ratio * float(chain.breaking_force) * r1
+    text = f"""
+[drive]
+name = "{s.name}"
+speed = "{s.rpm} rpm"
+slack_sag_ratio = 0.02
+[chain]
+name = "{s.chain}"
+[load]
+torque = "{torque:.6g} N*m"
+service_factor = 1.0
+[[wheels]]
+name = "driver"
+kind = "sprocket"
+teeth = {s.teeth_driving}
+position = ["0 mm", "0 mm"]
+driving = true
+[[wheels]]
+name = "driven"
+kind = "sprocket"
+teeth = {s.teeth_driven}
+position = ["{s.centre_pitches * p * 1e3:.3f} mm", "0 mm"]
+"""
+    return parse_project(text)
+
+
+def periods_and_settle(drive) -> tuple[int, float]:
+    """Tooth periods to sample and settling time [s]: about 0.25 s of samples, at least 12
+    and at most 80 tooth periods, after 2.5 s of settling (the 0.2 s ramp included).
+    Measured on the slowest drive of the sweep (S41, 20B, 13 teeth, 171 rpm): after
+    0.4 s its window medians still drifted 7263 → 6259 → 5075 N, after 1 s 6189 → 5335
+    → 4966 N, after 2.5 s they scatter 5952 / 5395 / 5849 N (quasi-periodic, ±5 %)."""
+    tooth = 2 * math.pi / drive.speed / drive.driving_wheel.teeth
+    return int(min(80, max(12, math.ceil(0.25 / tooth)))), 2.5
+
+
+def settled_run(drive, periods: int, settle: float, spacing: float = 8e-6,
+                **kwargs) -> tuple[np.ndarray, np.ndarray]:
+    """Simulated time [s] and tight-span tension [N] over ``periods`` tooth periods after
+    ``settle`` [s]: the settling run keeps few samples, the window continues from its final
+    state with samples every ``spacing`` [s] (at most 40,000; a seating impact lasts
+    ``π √(m/k_c)`` ≈ 50 µs, and samples spread over the settling too came every 140 µs,
+    nearly in step with the tooth period: the window's mean and peaks were aliased,
+    +30 % and +75 % on S35). ``kwargs``: model fields."""
+    import sys
+
+    sys.path.insert(0, str(ROOT / "benchmarks"))
+    from dynamic_load import sim_model
+
+    from chaindrive.simulation import simulate
+
+    model = sim_model(drive, **kwargs)
+    first = simulate(model, settle, samples=50)
+    window = periods * 2 * math.pi / drive.speed / drive.driving_wheel.teeth
+    res = simulate(model, window, state=first.final_state, samples=int(min(40000, max(20000, window / spacing))))
+    return np.asarray(res.time), res.tight_side_tension()
+
+
+def simulate_row(s: SweepDrive) -> SweepRow:
+    """Simulate one sweep drive and collect its row."""
+    import sys
+
+    sys.path.insert(0, str(ROOT / "benchmarks"))
+    from dynamic_load import tooth_peaks
+
+    from chaindrive.analysis import analyze_drive
+    from chaindrive.analysis.layout import drive_layout
+    from chaindrive.chains.stiffness import chain_axial_stiffness
+    from chaindrive.vibration.running_tension import seat_contact_stiffness
+
+    warnings.simplefilter("ignore")
+    d = drive_of(s)
+    lo = analyze_drive(d, include=["loads"]).loads
+    lay = drive_layout(d)
+    width = float(d.chain.inner_width)
+    kc = float(seat_contact_stiffness(lo.tight, width))
+    periods, settle = periods_and_settle(d)
+    t0 = time.perf_counter()
+    t, ts = settled_run(d, periods, settle, contact_stiffness=kc)
+    peaks = tooth_peaks(d, t, ts)
+    wall = time.perf_counter() - t0
+    return SweepRow(s.name, s.chain, float(d.chain.pitch), s.teeth_driving, s.teeth_driven, s.rpm,
+                    s.centre_pitches * float(d.chain.pitch), int(lay.links), float(d.torque()),
+                    float(lo.effective_pull), float(lo.slack), float(lo.centrifugal), float(lo.tight),
+                    float(d.mass_per_length), chain_axial_stiffness(d.chain) * d.chain.strands, width, kc,
+                    float(lay.wrap.span_length[lay.tight_span]), float(ts.mean()), float(np.median(peaks)),
+                    float(np.quantile(peaks, 0.9)), float(ts.max()), wall)
+
+
+def read_cache(path: Path = CACHE) -> list[dict[str, float | str]]:
+    """The cached rows (numbers as floats)."""
+    with path.open() as f:
+        rows = list(csv.DictReader(f))
+    return [{k: (v if k in ("name", "chain") else float(v)) for k, v in r.items()} for r in rows]
+
+
+def run_sweep(drives: list[SweepDrive], path: Path = CACHE) -> Iterator[SweepRow]:
+    """Simulate the drives not yet in the cache, appending each row as it is done."""
+    path.parent.mkdir(parents=True, exist_ok=True)
+    done = {r["name"] for r in read_cache(path)} if path.exists() else set()
+    for s in drives:
+        if s.name in done:
+            continue
+        row = simulate_row(s)
+        new = not path.exists()
+        with path.open("a", newline="") as f:
+            w = csv.DictWriter(f, fieldnames=list(asdict(row)))
+            if new:
+                w.writeheader()
+            w.writerow(asdict(row))
+        yield row
+
+
+if __name__ == "__main__":
+    import sys
+
+    n = int(sys.argv[1]) if len(sys.argv) > 1 else 48
+    for row in run_sweep(sweep_drives(n)):
+        print(f"{row.name} {row.chain} {row.teeth_driving}/{row.teeth_driven} {row.rpm:7.1f} rpm "
+              f"tight {row.tight:7.0f} mean {row.sim_mean:7.0f} peak {row.sim_peak:7.0f} "
+              f"({row.sim_peak / row.tight:4.2f}) {row.wall_seconds:5.1f} s", flush=True)
