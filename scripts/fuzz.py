@@ -623,7 +623,7 @@ API_MODULES = ("chaindrive.kinematics", "chaindrive.vibration", "chaindrive.stre
                "chaindrive.layout", "chaindrive.chains")
 #: Single functions of modules not yet swept whole (the drive formulas that moved out of chaindrive.drive).
 API_EXTRA = ("chaindrive.selection.select", "chaindrive.selection.ansi_rated_power",
-             "chaindrive.selection.lubrication_type", "chaindrive.wear.wear_life")
+             "chaindrive.selection.lubrication_type", "chaindrive.life.wear.wear_life")
 #: Public names not called directly: file readers and the drive description (fuzzed on the
 #: project surface), the entry solver's internals (reached through chain_entry), geometric
 #: primitives and result containers (plain records, no inputs of their own).
