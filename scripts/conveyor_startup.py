@@ -35,7 +35,7 @@ def main() -> None:
     matplotlib.use("Agg")
     from chaindrive.analysis.conveyor import conveyor_pull
     from chaindrive.drive.project import load_project
-    from chaindrive.motor import Motor
+    from chaindrive.drivetrain.motor import Motor
     from chaindrive.plotting.conveyor import conveyor_plot, startup_plot
     from chaindrive.simulation.profiles import link_chain_axial_stiffness
     from chaindrive.simulation.startup import start_up
@@ -56,7 +56,7 @@ def main() -> None:
     inertia = args.inertia_factor * ROTOR_INERTIA * ratio**2
     coupling = None
     if args.coupling:
-        from chaindrive.coupling import FluidCoupling
+        from chaindrive.drivetrain.coupling import FluidCoupling
 
         coupling = FluidCoupling.sized(float(drive.load.power) / drive.speed, drive.speed,
                                        nominal_slip=args.coupling_slip, stall_ratio=args.coupling_stall)

@@ -17,6 +17,7 @@ NOT_QUANTITIES = {
     "exclude", "material", "bore_standard", "keyway", "units", "preset", "scheduler", "write", "strands",
     "driver", "driven_machine", "load_character", "environment", "lubrication",
     "place", "along", "of",  # layout --place: a wheel name, a direction, a wheel name
+    "links",  # cad --links FIRST:COUNT: a section of the chain by link indices
 }
 
 

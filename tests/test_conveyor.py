@@ -1,5 +1,5 @@
 """Chain pull of scraper conveyors: formulas (chaindrive.conveyor), the motor curve
-(chaindrive.motor), the Conveyor spec and the [conveyor] table, the chain pull along the
+(chaindrive.drivetrain.motor), the Conveyor spec and the [conveyor] table, the chain pull along the
 loop (chaindrive.analysis.conveyor)."""
 
 from __future__ import annotations
@@ -16,9 +16,9 @@ from chaindrive import conveyor as C
 from chaindrive.analysis.conveyor import conveyor_checks, conveyor_pull
 from chaindrive.drive import Conveyor
 from chaindrive.drive.project import load_project, parse_project
+from chaindrive.drivetrain.motor import Motor, breakdown_slip, kloss_torque
 from chaindrive.errors import InputError
 from chaindrive.layout import GRAVITY, catenary_sag
-from chaindrive.motor import Motor, breakdown_slip, kloss_torque
 from chaindrive.simulation.from_drive import conveyor_drive
 
 G = GRAVITY

@@ -1,4 +1,4 @@
-"""The constant-fill fluid coupling (chaindrive.coupling) and the start-up through it in
+"""The constant-fill fluid coupling (chaindrive.drivetrain.coupling) and the start-up through it in
 the simulation: the formula against its defining points and the similarity law, the
 motor-coupling-load system against an independent integration (scipy solve_ivp of the
 two-inertia system), the stiff-coupling limit (direct drive), the error paths."""
@@ -13,9 +13,9 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from chaindrive.coupling import FluidCoupling, coupling_torque, slip_shape
+from chaindrive.drivetrain.coupling import FluidCoupling, coupling_torque, slip_shape
+from chaindrive.drivetrain.motor import Motor
 from chaindrive.errors import InputError
-from chaindrive.motor import Motor
 from chaindrive.simulation import SimWheel, simulate
 from chaindrive.simulation.conveyor import with_drive_profile
 from chaindrive.simulation.examples import roller_example

@@ -1,4 +1,4 @@
-"""Tests of chaindrive.loads and chaindrive.wear."""
+"""Tests of chaindrive.loads and chaindrive.life.wear."""
 
 from __future__ import annotations
 
@@ -11,8 +11,8 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from chaindrive import loads as F
-from chaindrive import wear as W
 from chaindrive.errors import InputError, UnknownNameError
+from chaindrive.life import wear as W
 
 RPM = 2 * math.pi / 60
 

@@ -13,8 +13,8 @@ import pytest
 from chaindrive import chains
 from chaindrive.analysis.conveyor import conveyor_pull
 from chaindrive.drive.model import Conveyor, Drive, Load, Tensioner, Wheel
+from chaindrive.drivetrain.motor import Motor
 from chaindrive.errors import InputError
-from chaindrive.motor import Motor
 from chaindrive.simulation import SimWheel, simulate
 from chaindrive.simulation.conveyor import compare, steady_state
 from chaindrive.simulation.from_drive import model_from_drive

@@ -14,6 +14,9 @@ former name                                     new name
 ``chaindrive.strength.seed_contact_stress``     ``chaindrive.strength.skew_paper_contact_stress``
 ``chaindrive.strength.seed_contact_coefficient``  ``chaindrive.strength.skew_paper_contact_coefficient``
 ``chaindrive.kinematics.seed002_case``          ``chaindrive.kinematics.dolipinski_worked_case``
+``chaindrive.static_safety``                    ``chaindrive.loads.safety`` (all names also in ``chaindrive.loads``)
+``chaindrive.motor``, ``chaindrive.coupling``   ``chaindrive.drivetrain.motor``, ``chaindrive.drivetrain.coupling``
+``chaindrive.wear``, ``chaindrive.drive.wear``  ``chaindrive.life.wear``
 ==============================================  ==================================================
 """
 

@@ -25,6 +25,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 import numpy as np
 
@@ -41,6 +42,13 @@ from ..vibration.string import moving_string_frequencies
 from ._memo import memo
 from .checks import Check
 from .parts import Part, PartContext, register_part
+
+if TYPE_CHECKING:
+    from ..drive.model import Drive
+    from .layout import DriveLayout
+    from .loads import DriveLoads
+    from .rating import DriveRating
+    from .vibration import DriveVibration
 
 __all__ = ["DriveLife", "WornState", "drive_life", "worn_state", "ELONGATION_STEPS"]
 
@@ -87,7 +95,7 @@ class DriveLife(Result):
     notes: tuple[str, ...] = ()
 
 
-def _tooth_form_wheels(drive, layout):
+def _tooth_form_wheels(drive: Drive, layout: DriveLayout) -> list[tuple[int, int, int]]:
     """(index, teeth, teeth in mesh) of the ISO 606 sprockets of a roller chain."""
     chain = drive.chain
     if chain.roller_diameter is None or chain.bar_diameter is not None:
@@ -256,7 +264,8 @@ def _life_key(drive, layout, loads, rating, wear_hours, vibration=None, wear_bas
 
 
 @memo(maxsize=64, key=_life_key)
-def drive_life(drive, layout, loads, rating, wear_hours, vibration=None, wear_basis="wear") -> DriveLife:
+def drive_life(drive: Drive, layout: DriveLayout, loads: DriveLoads, rating: DriveRating | None, wear_hours: float,
+               vibration: DriveVibration | None = None, wear_basis: str = "wear") -> DriveLife:
     """The drive over its life (see the module notes).
 
     ``wear_hours`` are the hours to the drive's elongation limit as the wear part (or, with
@@ -328,7 +337,7 @@ class WornState(Result):
     span_frequencies: np.ndarray | None = quantity("rad/s", display="rad/s", default=None)
 
 
-def worn_state(drive, layout, loads, life: DriveLife, *, hours: float | None = None,
+def worn_state(drive: Drive, layout: DriveLayout, loads: DriveLoads, life: DriveLife, *, hours: float | None = None,
                elongation: float | None = None) -> WornState:
     """The chain after ``hours`` of running, or at ``elongation`` (exactly one of them).
 
@@ -361,6 +370,7 @@ def worn_state(drive, layout, loads, life: DriveLife, *, hours: float | None = N
     tens = _wheel_tensions(loads, n)
     p, d1 = drive.pitch, drive.chain.roller_diameter
     for i, z, seated in _tooth_form_wheels(drive, layout):
+        assert d1 is not None  # _tooth_form_wheels yields the sprockets of roller chains only
         seat = JO.worn_seat(p, z, d1, e)  # refuses an elongation the tooth form cannot hold
         rise[i] = float(seat.rise)
         hi, lo = max(tens[i]), min(tens[i])

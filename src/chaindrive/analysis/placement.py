@@ -96,7 +96,7 @@ def place_wheel(drive: Drive, wheel: str, wrap: float, *, along: tuple[float, fl
     >>> d = load_project("examples/multi_wheel.toml")
     >>> p = place_wheel(d, "machine B", math.radians(125))
     >>> round(math.degrees(p.wrap), 6), round(p.distance * 1e3)
-    (125.0, 81)
+    (125.0, 57)
     """
     names = list(drive.wheel_names)
     if wheel not in names:

@@ -1,7 +1,7 @@
 r"""Service life of the chain with skew against the life its rating promises.
 
 The ANSI/ACA power ratings are set for 15 000 h of life with at most 3 % elongation
-(:data:`chaindrive.wear.RATING_LIFE_HOURS`; Shigley, 10th ed., §17-5): a drive loaded at
+(:data:`chaindrive.life.wear.RATING_LIFE_HOURS`; Shigley, 10th ed., §17-5): a drive loaded at
 its rated power reaches the life the wear part computes for ``P = P_r`` (its link count,
 wheels and elongation limit included). The wear part gives the hours to the elongation
 limit at the design power without skew; the contact part the life with skew relative to
@@ -20,8 +20,8 @@ from __future__ import annotations
 from collections.abc import Sequence
 from dataclasses import dataclass
 
-from .. import wear as W
 from .._results import Result, quantity
+from ..life import wear as W
 from .checks import Check
 from .parts import Part, PartContext, register_part
 

@@ -2,9 +2,9 @@
 
 from __future__ import annotations
 
-from .. import wear as W
 from ..drive.model import Drive
 from ..errors import InputError
+from ..life import wear as W
 from .checks import Check
 from .layout import DriveLayout
 from .loads import DriveLoads
@@ -24,7 +24,7 @@ def drive_wear(drive: Drive, layout: DriveLayout, loads: DriveLoads, rating: Dri
 
     References
     ----------
-    docs/drive.md (wear life); :func:`chaindrive.wear.wear_life`.
+    docs/drive.md (wear life); :func:`chaindrive.life.wear.wear_life`.
     """
     nw = len(drive.wheels)
     if model is None:

@@ -20,7 +20,7 @@ from typing import Any
 
 import numpy as np
 
-from ..errors import InputError
+from ..geometry.export import new_dxf_document
 from .assembly import DriveAssembly
 
 __all__ = ["assembly_document", "write_dxf", "contour_gaps", "LAYERS"]
@@ -59,13 +59,7 @@ def assembly_document(assembly: DriveAssembly) -> Any:
     >>> # assembly_document(drive_assembly(drive)).audit().has_errors
     False
     """
-    try:
-        import ezdxf
-    except ImportError as exc:  # pragma: no cover - depends on install
-        raise InputError("DXF export needs ezdxf: pip install 'chaindrive[cad]'") from exc
-    doc = ezdxf.new("R2010", setup=True)
-    doc.units = ezdxf.units.MM
-    doc.header["$MEASUREMENT"] = 1
+    doc = new_dxf_document()
     for name, colour in LAYERS.items():
         doc.layers.add(name, color=colour)
     doc.layers.get("PITCH_CIRCLES").dxf.linetype = "CENTER"

@@ -33,13 +33,13 @@ def simulate_command(
     frames: int = typer.Option(60, "--frames", help=f"Frames of the GIF animation, 0...{MAX_FRAMES} (dimensionless count; 0: none)."),
     no_plots: bool = typer.Option(False, "--no-plots", help="Skip PNGs and GIF."),
     as_json: bool = typer.Option(False, "--json", help="Print the summary as JSON (SI units)."),
-    motor: bool = typer.Option(False, "--motor", help="Project files: drive the driving wheel with an induction motor on the Kloss curve, rated at [load] power at the drive speed (chaindrive.motor.Motor.rated: rated slip and breakdown-torque ratio of a high-slip mining motor), switched on direct at t = 0, instead of the prescribed speed ramp."),
+    motor: bool = typer.Option(False, "--motor", help="Project files: drive the driving wheel with an induction motor on the Kloss curve, rated at [load] power at the drive speed (chaindrive.drivetrain.motor.Motor.rated: rated slip and breakdown-torque ratio of a high-slip mining motor), switched on direct at t = 0, instead of the prescribed speed ramp."),
     motor_inertia: str | None = typer.Option(None, "--motor-inertia", help=unit_help("With --motor: rotor and coupling inertia reduced to the driving wheel's shaft (J_motor times the gear ratio squared), added to the wheel's (default 0); with --coupling the inertia of the motor's own degree of freedom (required, > 0).", "kg*m**2", "835 kg*m**2")),
     stop: str | None = typer.Option(None, "--stop", help=unit_help("Project files: from this time the motor is switched off (--motor) or the prescribed speed falls to rest over --stop-ramp (default: no stop).", "s", "3 s")),
     stop_ramp: str | None = typer.Option(None, "--stop-ramp", help=unit_help("Project files: time for the prescribed speed to fall to rest after --stop (default 0: at once).", "s", "1 s")),
     ripple: float = typer.Option(0.0, "--ripple", help="Project files: relative amplitude a of a ripple 1 + a sin(Omega t) of the motor torque (--motor) or of the prescribed speed, -1 < a < 1 (dimensionless; default 0)."),
     ripple_frequency: str | None = typer.Option(None, "--ripple-frequency", help=unit_help("Angular frequency Omega of the --ripple (default 0).", "rad/s or Hz", "50 Hz")),
-    coupling: bool = typer.Option(False, "--coupling", help="With --motor: the motor drives through a constant-fill fluid coupling sized on its rated point (nominal torque = [load] power over the drive speed, at the drive speed; chaindrive.coupling); the motor rotor and coupling primary (--motor-inertia, then required) turn at their own speed."),
+    coupling: bool = typer.Option(False, "--coupling", help="With --motor: the motor drives through a constant-fill fluid coupling sized on its rated point (nominal torque = [load] power over the drive speed, at the drive speed; chaindrive.drivetrain.coupling); the motor rotor and coupling primary (--motor-inertia, then required) turn at their own speed."),
     coupling_slip: float = typer.Option(0.03, "--coupling-slip", help="With --coupling: its nominal slip s_n, 0.005 <= s_n <= 0.2 (dimensionless; default 0.03)."),
     coupling_stall: float = typer.Option(1.5, "--coupling-stall", help="With --coupling: its stall-torque ratio k = T(s = 1)/T_n, 1.1 <= k <= 6 and k s_n < 1 (dimensionless; default 1.5)."),
     secondary_inertia: str | None = typer.Option(None, "--secondary-inertia", help=unit_help("With --coupling: coupling secondary and gearbox reduced to the driving wheel's shaft, added to the wheel's, >= 0 (default 0).", "kg*m**2", "209 kg*m**2")),
@@ -148,7 +148,7 @@ def _simulate(project: Path | None, example: str | None, duration: str | None, o
         model = model_from_drive(drive, ramp_time=ramp_time)
         motor_spec = None
         if motor:
-            from ..motor import Motor
+            from ..drivetrain.motor import Motor
 
             if drive.load.power is None:
                 raise InputError("--motor needs the installed power: give [load] power in the project")
@@ -207,7 +207,7 @@ def _simulate(project: Path | None, example: str | None, duration: str | None, o
 
 def _coupling(profile: DriveProfile, drive: Any, motor: Any) -> Any:
     """The fluid coupling of ``--coupling`` (sized on the motor's rated point), or None."""
-    from ..coupling import NOMINAL_SLIP_RANGE, STALL_RATIO_RANGE, FluidCoupling
+    from ..drivetrain.coupling import NOMINAL_SLIP_RANGE, STALL_RATIO_RANGE, FluidCoupling
 
     if not profile.coupling:
         return None

@@ -1,7 +1,7 @@
 """The drive description: the immutable :class:`Drive` and its parts, and project files.
 
 The formulas live in their topic modules (:mod:`chaindrive.layout`, :mod:`chaindrive.loads`,
-:mod:`chaindrive.selection`, :mod:`chaindrive.wear`); the thin objects
+:mod:`chaindrive.selection`, :mod:`chaindrive.life.wear`); the thin objects
 (:class:`Drive`, :class:`Wheel`, :class:`Tensioner`, :class:`Guide`, :class:`Load`), immutable, in
 :mod:`~chaindrive.drive.model`; their analysis in :mod:`chaindrive.analysis`; TOML project files in :mod:`~chaindrive.drive.project`.
 Models and sources: ``docs/drive.md``.

@@ -40,6 +40,24 @@ def _bulge_vertices(outline: Outline) -> list[tuple[float, float, float]]:
     return verts
 
 
+def new_dxf_document() -> Drawing:
+    """An empty DXF document (R2010) in millimetres, metric header; ezdxf is required.
+
+    Raises
+    ------
+    InputError
+        ezdxf is not installed (the ``cad`` extra).
+    """
+    try:
+        import ezdxf
+    except ImportError as exc:  # pragma: no cover - depends on install
+        raise InputError("DXF export needs ezdxf: pip install 'chaindrive[cad]'") from exc
+    doc = ezdxf.new("R2010", setup=True)
+    doc.units = ezdxf.units.MM
+    doc.header["$MEASUREMENT"] = 1
+    return doc
+
+
 def dxf_document(outline: Outline, title: str = "") -> Drawing:
     """Build the ezdxf document of an outline (mm).
 
@@ -50,13 +68,7 @@ def dxf_document(outline: Outline, title: str = "") -> Drawing:
     >>> [e.dxftype() for e in doc.modelspace()][:2]
     ['LWPOLYLINE', 'CIRCLE']
     """
-    try:
-        import ezdxf
-    except ImportError as exc:  # pragma: no cover - depends on install
-        raise InputError("DXF export needs ezdxf: pip install 'chaindrive[cad]'") from exc
-    doc = ezdxf.new("R2010", setup=True)
-    doc.units = ezdxf.units.MM
-    doc.header["$MEASUREMENT"] = 1
+    doc = new_dxf_document()
     layers = ["OUTLINE", "PITCH_CIRCLE", "CENTRES", *outline.circles.keys(), "TEXT"]
     for name in layers:
         if name not in doc.layers:

@@ -236,12 +236,7 @@ def side_chamfer_thickness(radius: ArrayLike, width: float, tip_radius: float, s
     >>> round(float(side_chamfer_thickness(0.08509, 0.016169, 0.08509, 0.0254, 0.00254)) * 1e3, 3)
     11.089
     """
-    r = as_float_array("radius", radius)
-    w, rx, ba = _chamfer_args(width, side_radius, side_relief)
-    rt = float(tip_radius) - np.sqrt(2 * rx * ba - ba * ba)
-    u = np.clip(r - rt, 0.0, None)
-    if np.any(u > rx):
-        raise InputError(f"radius must stay below r_t + rx = {(rt + rx) * 1e3:.3f} mm for the chamfer arc")
+    r, w, rx, rt, u = _chamfer_arc(radius, width, tip_radius, side_radius, side_relief)
     return w - 2.0 * (rx - np.sqrt(rx * rx - u * u))
 
 
@@ -255,6 +250,18 @@ def _chamfer_args(width, side_radius, side_relief):
             f"the tooth width), got {ba * 1e3:.3f} mm"
         )
     return w, rx, ba
+
+
+def _chamfer_arc(radius, width, tip_radius, side_radius, side_relief):
+    """Radius ``r``, width ``w``, side radius ``rx``, arc start ``r_t`` and ``u = max(r − r_t, 0)``
+    of the chamfer arc, the radius checked to stay on the arc."""
+    r = as_float_array("radius", radius)
+    w, rx, ba = _chamfer_args(width, side_radius, side_relief)
+    rt = float(tip_radius) - np.sqrt(2 * rx * ba - ba * ba)
+    u = np.clip(r - rt, 0.0, None)
+    if np.any(u > rx):
+        raise InputError(f"radius must stay below r_t + rx = {(rt + rx) * 1e3:.3f} mm for the chamfer arc")
+    return r, w, rx, rt, u
 
 
 def side_chamfer_moment(radius: ArrayLike, width: float, tip_radius: float, side_radius: float,
@@ -291,12 +298,7 @@ def side_chamfer_moment(radius: ArrayLike, width: float, tip_radius: float, side
     >>> float(g)
     0.0
     """
-    r = as_float_array("radius", radius)
-    w, rx, ba = _chamfer_args(width, side_radius, side_relief)
-    rt = float(tip_radius) - np.sqrt(2 * rx * ba - ba * ba)
-    u = np.clip(r - rt, 0.0, None)
-    if np.any(u > rx):
-        raise InputError(f"radius must stay below r_t + rx = {(rt + rx) * 1e3:.3f} mm for the chamfer arc")
+    r, w, rx, rt, u = _chamfer_arc(radius, width, tip_radius, side_radius, side_relief)
     root = np.sqrt(rx * rx - u * u)
     removed = rx * (u * u / 2 + rt * u) + (root**3 - rx**3) / 3.0 - rt * (u * root / 2 + rx * rx / 2 * np.arcsin(u / rx))
     return w * r * r / 2.0 - 2.0 * removed

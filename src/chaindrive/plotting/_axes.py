@@ -2,7 +2,8 @@
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, Any, Literal
+from collections.abc import Iterable, Mapping
+from typing import TYPE_CHECKING, Any, Literal, TypeVar
 
 from ..errors import InputError
 
@@ -10,7 +11,9 @@ if TYPE_CHECKING:
     from matplotlib.axes import Axes
     from matplotlib.figure import Figure
 
-__all__ = ["figure_of", "subplots"]
+__all__ = ["figure_of", "results_list", "subplots"]
+
+R = TypeVar("R")
 
 
 def figure_of(ax: Axes) -> Figure:
@@ -43,6 +46,22 @@ def figure_of(ax: Axes) -> Figure:
     if fig is None:
         raise InputError("ax must be a matplotlib Axes placed in a figure (plt.subplots() gives one)")
     return fig
+
+
+def results_list(results: R | Mapping[str, R] | Iterable[R], kind: type[R]) -> list[R]:
+    """The results a plot function was given, one (an instance of ``kind``), a dict of
+    them (its values) or a sequence of them, as a list.
+
+    Examples
+    --------
+    >>> results_list({"a": 1.0, "b": 2.0}, float), results_list(1.0, float), results_list((1.0,), float)
+    ([1.0, 2.0], [1.0], [1.0])
+    """
+    if isinstance(results, Mapping):
+        return list(results.values())
+    if isinstance(results, kind):
+        return [results]
+    return list(results)  # type: ignore[arg-type]
 
 
 def subplots(nrows: int = 1, ncols: int = 1, *, figsize: tuple[float, float],

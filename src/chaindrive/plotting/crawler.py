@@ -7,7 +7,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from ._axes import figure_of
+from ._axes import figure_of, results_list
 
 if TYPE_CHECKING:
     from matplotlib.axes import Axes
@@ -59,13 +59,7 @@ def crawler_plot(
     from ..errors import InputError
     from ..kinematics.crawler import CrawlerKinematics
 
-    items: list[CrawlerKinematics]
-    if isinstance(result_or_results, Mapping):
-        items = list(result_or_results.values())
-    elif isinstance(result_or_results, CrawlerKinematics):
-        items = [result_or_results]
-    else:
-        items = list(result_or_results)
+    items = results_list(result_or_results, CrawlerKinematics)
     if not items:
         raise InputError("crawler_plot needs at least one result")
     with_force = any(r.force is not None for r in items)

@@ -17,8 +17,8 @@ if TYPE_CHECKING:
     from ..analysis.layout import DriveLayout
     from ..analysis.loads import DriveLoads
     from ..drive.model import Drive
+    from ..life.wear import WearLife
     from ..selection import ChainRating
-    from ..wear import WearLife
 
 __all__ = ["layout_plot", "wear_plot", "rating_plot"]
 
@@ -143,7 +143,7 @@ def wear_plot(result: WearLife, *, ax: Axes | None = None) -> Figure:
 
     Parameters
     ----------
-    result : chaindrive.wear.WearLife
+    result : chaindrive.life.wear.WearLife
     ax : matplotlib.axes.Axes, optional
 
     Returns

@@ -7,7 +7,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from ._axes import figure_of, subplots
+from ._axes import figure_of, results_list, subplots
 
 if TYPE_CHECKING:
     from matplotlib.axes import Axes
@@ -58,13 +58,7 @@ def kinematics_plot(
 
     from ..kinematics.entry import EntryKinematics
 
-    items: list[EntryKinematics]
-    if isinstance(results, Mapping):
-        items = list(results.values())
-    elif isinstance(results, EntryKinematics):
-        items = [results]
-    else:
-        items = list(results)
+    items = results_list(results, EntryKinematics)
     if ax is None:
         fig, axes = subplots(2, 1, sharex=True, figsize=(7.5, 7.0))
     else:

@@ -28,9 +28,9 @@ from .model import SimGuide, SimulationModel
 
 if TYPE_CHECKING:
     from ..analysis.conveyor import ConveyorPull
-    from ..coupling import FluidCoupling
     from ..drive.model import Drive
-    from ..motor import Motor
+    from ..drivetrain.coupling import FluidCoupling
+    from ..drivetrain.motor import Motor
     from .run import SimulationResult
 
 #: Clearance of a pan below the tangent line of its span, in bar (roller) radii.

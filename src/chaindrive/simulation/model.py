@@ -57,9 +57,9 @@ from ..drive.model import Tensioner, Wheel, sides_per_turn
 from ..errors import InputError
 
 if TYPE_CHECKING:
-    from ..coupling import FluidCoupling
+    from ..drivetrain.coupling import FluidCoupling
+    from ..drivetrain.motor import Motor
     from ..geometry.sprocket import IsoToothForm
-    from ..motor import Motor
 
 from .profiles import (  # noqa: F401 - re-exported: chaindrive.simulation.model is where they were
     AXIAL_STIFFNESS_16B,
@@ -114,7 +114,7 @@ class SimWheel:
         Applied torque [N m] (counter-clockwise positive): a load is negative.
     damping : float
         Viscous bearing damping [N m s/rad].
-    motor : chaindrive.motor.Motor, optional
+    motor : chaindrive.drivetrain.motor.Motor, optional
         Mode ``"motor"``: the wheel is driven by this motor (Kloss curve, reduced to the
         wheel; add the motor's reduced inertia to ``inertia``).
     stop_time : float
@@ -127,7 +127,7 @@ class SimWheel:
         ripple ``1 + a sin(Ω t)``, ``|a| < 1``.
     ripple_frequency : float
         ``Ω`` [rad/s].
-    coupling : chaindrive.coupling.FluidCoupling, optional
+    coupling : chaindrive.drivetrain.coupling.FluidCoupling, optional
         Mode ``"motor"``: the motor drives the wheel through this constant-fill fluid
         coupling (reduced to the wheel); the motor rotor and the coupling's primary are
         then their own degree of freedom of inertia ``motor_inertia`` (not in

@@ -12,9 +12,9 @@ from .from_drive import model_from_drive
 from .run import simulate
 
 if TYPE_CHECKING:
-    from ..coupling import FluidCoupling
     from ..drive.model import Drive
-    from ..motor import Motor
+    from ..drivetrain.coupling import FluidCoupling
+    from ..drivetrain.motor import Motor
     from .model import SimulationModel
     from .results import SimulationResult
 
@@ -34,7 +34,7 @@ def start_up(drive: Drive, duration: float, *, motor: Motor | None = None, motor
     from ``stop_time``. ``ripple`` (relative amplitude) and ``ripple_frequency`` [rad/s]
     modulate the motor torque (or the prescribed speed).
 
-    With ``coupling`` (a :class:`chaindrive.coupling.FluidCoupling` reduced to the head)
+    With ``coupling`` (a :class:`chaindrive.drivetrain.coupling.FluidCoupling` reduced to the head)
     the motor drives the head through it: the motor rotor and coupling primary, of
     inertia ``motor_inertia`` (> 0), turn at their own speed ``ω_m``; the coupling's
     secondary and the gearbox (``secondary_inertia`` [kg m²], reduced) turn with the head,
@@ -43,7 +43,7 @@ def start_up(drive: Drive, duration: float, *, motor: Motor | None = None, motor
         J_m \dot ω_m = T_{Kloss}(ω_m) − T_c(ω_m, ω), \qquad
         J \dot ω = T_c(ω_m, ω) + T_{chain}
 
-    with the coupling torque ``T_c`` of :func:`chaindrive.coupling.coupling_torque`
+    with the coupling torque ``T_c`` of :func:`chaindrive.drivetrain.coupling.coupling_torque`
     (implicit in the slip in each time step: the coupling is a stiff damper).
 
     Parameters
