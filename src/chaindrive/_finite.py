@@ -338,7 +338,8 @@ def finite_fields(cls: C | None = None, *, allow_infinite: tuple[str, ...] = ())
 
 
 def guard_public(module: str, *, skip: tuple[str, ...] = (), allow_infinite: tuple[str, ...] = ()) -> None:
-    """Guard every public function and dataclass of ``module`` (its ``__all__``) at once.
+    """Guard every public function and dataclass of ``module`` (its ``__all__``, or without
+    one the public names defined there) at once.
 
     Call it as the last line of a formula module (``guard_public(__name__)``): each public
     function defined there gets :func:`finite_guard` (NaN/inf arguments refused by name,
@@ -356,7 +357,10 @@ def guard_public(module: str, *, skip: tuple[str, ...] = (), allow_infinite: tup
         Parameters and fields that may be infinite by their documented meaning.
     """
     mod = sys.modules[module]
-    for name in getattr(mod, "__all__", ()):
+    names = getattr(mod, "__all__", None)
+    if names is None:  # no __all__: the public names defined in the module
+        names = [n for n in list(vars(mod)) if not n.startswith("_")]
+    for name in names:
         if name in skip:
             continue
         obj = getattr(mod, name, None)
