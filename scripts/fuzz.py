@@ -122,6 +122,7 @@ class Tally:
     bad_exit: int = 0
     nonfinite: int = 0
     slow: int = 0
+    http500: int = 0
     seconds: float = 0.0
     outcomes: dict = dataclasses.field(default_factory=dict)
     examples: dict = dataclasses.field(default_factory=lambda: {"tracebacks": [], "bad_exit": [],
@@ -140,7 +141,9 @@ class Tally:
     def line(self) -> str:
         return (f"{self.surface:8s} inputs {self.inputs:6d}  tracebacks {self.tracebacks:4d}  "
                 f"exit codes outside 0/1/2/3 {self.bad_exit:4d}  NaN/inf {self.nonfinite:4d}  "
-                f"calls over {SLOW_S:.0f} s {self.slow:3d}  ({self.seconds:.0f} s; outcomes "
+                f"calls over {SLOW_S:.0f} s {self.slow:3d}  "
+                + (f"HTTP 500s {self.http500:4d}  " if self.surface in ("web", "openapi") else "")
+                + f"({self.seconds:.0f} s; outcomes "
                 + ", ".join(f"{k} {v}" for k, v in sorted(self.outcomes.items())) + ")")
 
     @property
@@ -619,11 +622,31 @@ def fuzz_project(n: int, rnd: random.Random, progress: bool = True) -> Tally:
 
 # --------------------------------------------------------------------------- public API
 
+#: The public API is enumerated from the package (every module's ``__all__``; see
+#: :func:`api_functions`), not listed by hand. These parts of it are not called with
+#: generated arguments, each for the reason given (their inputs come through another surface).
+API_EXCLUDED = {
+    "chaindrive.cli": "the command-line commands (typer callbacks): fuzzed on the cli surface",
+    "chaindrive.web": "web routes and the app factory: fuzzed on the web and openapi surfaces",
+    "chaindrive.workflows": "write report folders for a Drive: exercised on the project surface and by "
+                            "`analyze` on the cli surface",
+    "chaindrive.plotting": "draw result objects made by the analysis (no numeric input of their own); drawn "
+                           "through the cli and project surfaces",
+    "chaindrive.study.run": "starts dask clusters and writes study folders: tests/test_study_*.py",
+    "chaindrive.study.summary": "reads a study folder and writes its summary: tests/test_study_*.py",
+    "chaindrive.study.folder": "study folders on disk: tests/test_study_folder.py",
+    "chaindrive.study.progress": "progress output of a study run: tests/test_study_folder.py",
+    "chaindrive.cad": "the 3-D assembly of a drive (OCC solids, seconds to minutes a call): exercised by "
+                      "`chaindrive cad` on the cli surface and tests/test_cad*.py",
+    "chaindrive.drive.schema": "declarations of the project file's tables (a part declares its table at import): "
+                               "exercised through the project surface",
+    "chaindrive.drive.tables": "the declared tables of the project file: exercised through the project surface",
+    "chaindrive.display": "display units of result objects for the presenters (report, CLI, web): exercised "
+                          "through the cli, project and web surfaces",
+}
+#: Kept for the older bounded tests: the packages swept before the whole package was.
 API_MODULES = ("chaindrive.kinematics", "chaindrive.vibration", "chaindrive.strength", "chaindrive.geometry",
                "chaindrive.layout", "chaindrive.chains")
-#: Single functions of modules not yet swept whole (the drive formulas that moved out of chaindrive.drive).
-API_EXTRA = ("chaindrive.selection.select", "chaindrive.selection.ansi_rated_power",
-             "chaindrive.selection.lubrication_type", "chaindrive.life.wear.wear_life")
 #: Public names not called directly: file readers and the drive description (fuzzed on the
 #: project surface), the entry solver's internals (reached through chain_entry), geometric
 #: primitives and result containers (plain records, no inputs of their own).
@@ -633,16 +656,30 @@ API_SKIP = {"load_project", "Project", "layout", "loads", "selection", "wear", "
             "SprocketDimensions", "PocketWheelDimensions", "TrackDriveWheelDimensions", "CampbellResult",
             "ResonanceCheck", "ResonanceMapResult", "SpanVibration", "SafeTensioner", "ReducedTensioner",
             "PinBendingResult", "BeamSolution", "FrettingComparison", "RollerContactResult", "TrackToothResult",
-            "FittedBoltResult", "FrictionBoltResult", "Chain"}
+            "FittedBoltResult", "FrictionBoltResult", "Chain",
+            # a container analyze_variants fills with the analyses of its variants
+            "VariantAnalyses",
+            # change process-wide registries (analysis parts, table providers, method registries):
+            # a generated call would change what every later analysis computes
+            "register_part", "unregister_part", "temporary_part", "load_providers", "register", "register_table",
+            "register_method", "register_standard",
+            # the static solver's Newton kernel on a model's packed arrays (13 arrays that only
+            # assemble() makes consistently): reached through assemble/simulate
+            "solve_static"}
 
 #: (callable, result field) where +inf is a documented value passed through (a fixed
 #: tensioner has infinite stiffness), not an overflow.
 API_INFINITE_OK = {("TensionerSpan", "stiffness")}
+#: Functions whose result is +inf by its documented meaning: the reason.
+API_INFINITE_RESULT = {"cycles_to_failure": "+inf cycles below the endurance range (no fatigue damage), as "
+                                            "documented; the life analysis reads it as no damage",
+                       "jump_over_tension": "+inf when a seated roller takes the whole load (ratio 0), as "
+                                            "documented: the chain cannot ride over"}
 
 _F_TYPICAL = {
     "length": (1e-3, 3.0), "angle": (-1.0, 1.5), "speed": (0.1, 200.0), "force": (1.0, 1e6),
     "mass": (0.1, 100.0), "mpl": (0.05, 50.0), "stiffness": (1e2, 1e8), "pressure": (1e8, 3e11),
-    "time": (1e-3, 10.0), "ratio": (0.1, 10.0), "power": (10.0, 1e6), "torque": (1.0, 1e5),
+    "time": (1e-3, 0.5), "ratio": (0.1, 10.0), "power": (10.0, 1e6), "torque": (1.0, 1e5),
     "factor": (0.1, 2.0), "small": (1e-4, 0.5), "generic": (0.01, 100.0),
 }
 _KIND_BY_NAME = [
@@ -717,23 +754,62 @@ def api_value(name: str, default, rnd: random.Random, arrays: bool = True):
     return v
 
 
+def api_modules() -> list[str]:
+    """Every public module of chaindrive (no part of its dotted name private), sorted."""
+    import pkgutil
+
+    import chaindrive
+
+    names = ["chaindrive"]
+    for info in pkgutil.walk_packages(chaindrive.__path__, "chaindrive."):
+        if not any(part.startswith("_") for part in info.name.split(".")[1:]):
+            names.append(info.name)
+    return sorted(names)
+
+
+def api_excluded(modname: str) -> str | None:
+    """The reason a module's callables are not fuzzed here (None: they are)."""
+    for prefix, reason in API_EXCLUDED.items():
+        if modname == prefix or modname.startswith(prefix + "."):
+            return reason
+    return None
+
+
 def api_functions() -> list[tuple[str, Any]]:
-    """Public callables of the topic packages, as (qualified name, object)."""
-    out = []
-    for modname in API_MODULES:
-        mod = importlib.import_module(modname)
-        for name in getattr(mod, "__all__", []):
-            if name in API_SKIP or name.isupper():
+    """Every public callable of the package, as (qualified name, object), each object once.
+
+    Enumerated: every public module's ``__all__`` (modules without one: their public
+    functions and classes defined there). Left out, each with its reason: the modules of
+    :data:`API_EXCLUDED`, the names of :data:`API_SKIP`, exceptions, result classes (outputs,
+    not inputs) and constants.
+    """
+    out, seen = [], set()
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        for modname in api_modules():
+            if api_excluded(modname):
                 continue
-            obj = getattr(mod, name, None)
-            if obj is None or inspect.ismodule(obj) or not callable(obj):
+            try:
+                mod = importlib.import_module(modname)
+            except ImportError:  # an optional extra not installed
                 continue
-            if inspect.isclass(obj) and (issubclass(obj, BaseException) or _is_result_class(obj)):
-                continue
-            out.append((f"{modname}.{name}", obj))
-    for qualname in API_EXTRA:
-        modname, name = qualname.rsplit(".", 1)
-        out.append((qualname, getattr(importlib.import_module(modname), name)))
+            names = getattr(mod, "__all__", None)
+            if names is None:
+                names = [n for n, o in vars(mod).items() if not n.startswith("_")
+                         and (inspect.isfunction(o) or inspect.isclass(o)) and o.__module__ == modname]
+            for name in names:
+                if name in API_SKIP or name.isupper():
+                    continue
+                obj = getattr(mod, name, None)
+                if obj is None or inspect.ismodule(obj) or not callable(obj) or id(obj) in seen:
+                    continue
+                if inspect.isclass(obj) and (issubclass(obj, BaseException) or _is_result_class(obj)):
+                    continue
+                home = getattr(obj, "__module__", "") or ""
+                if home.startswith("chaindrive") and api_excluded(home):
+                    continue
+                seen.add(id(obj))
+                out.append((f"{modname}.{name}", obj))
     return out
 
 
@@ -753,16 +829,191 @@ def _special_args(qualname: str, rnd: random.Random) -> dict | None:
     return None
 
 
+#: Words of a type annotation that mean "a number or an array of numbers".
+_NUMERIC_WORDS = {"float", "int", "np", "numpy", "ndarray", "ArrayLike", "npt", "NDArray", "floating", "float64",
+                  "Number", "Real", "complex", "None", "Optional", "Union", "Sequence", "list", "tuple", "Any",
+                  "Iterable", "integer", "typing", "collections", "abc", "ArrayF", "Array", "FloatArray",
+                  "Float", "Vector", "bool"}
+_TEXT_WORDS = {"str", "None", "Literal", "Optional"}
+_PATH_WORDS = {"Path", "PathLike", "os", "pathlib"}
+
+#: Parameter names of the analysis functions and the result class each stands for.
+_PART_PARAMS = {"layout": "DriveLayout", "loads": "DriveLoads", "rating": "DriveRating",
+                "vibration": "DriveVibration", "entry": "DriveEntry", "drive": "Drive"}
+
+#: Why a public callable was not reached (filled by :func:`api_call_args`): ``{name: reason}``.
+API_UNREACHED: dict[str, str] = {}
+
+
+def _annotation_text(obj, p) -> str:
+    ann = p.annotation
+    if ann is p.empty:
+        return ""
+    return ann if isinstance(ann, str) else getattr(ann, "__name__", None) or str(ann)
+
+
+_POOL: dict[str, list] = {}
+#: One pool per template drive: the drive and its own analysis (a call taking a drive and
+#: its layout gets the layout of that drive).
+_GROUPS: list[dict[str, list]] = []
+
+
+def _group_of(drive) -> dict[str, list]:
+    """Objects of one drive: the drive, its parts, its analysis results."""
+    from chaindrive.analysis import analyze_drive
+
+    group: dict[str, list] = {}
+
+    def put(obj, depth: int = 0) -> None:
+        if obj is None or depth > 3 or isinstance(obj, (str, bytes, int, float, bool, np.ndarray, np.generic)):
+            return
+        if isinstance(obj, (list, tuple)):
+            for v in obj[:6]:
+                put(v, depth + 1)
+            return
+        if not (type(obj).__module__ or "").startswith("chaindrive"):
+            return
+        for cls in type(obj).__mro__:
+            if (cls.__module__ or "").startswith("chaindrive"):
+                group.setdefault(cls.__name__, []).append(obj)
+        if dataclasses.is_dataclass(obj):
+            for f in dataclasses.fields(obj):
+                put(getattr(obj, f.name, None), depth + 1)
+
+    put(drive)
+    with contextlib.suppress(Exception):
+        analysis = analyze_drive(drive)
+        for name in getattr(analysis, "parts", None) or ():
+            with contextlib.suppress(Exception):
+                put(analysis[name])
+    return group
+
+
+def object_pool() -> dict[str, list]:
+    """Valid library objects by class name (and their bases' names), for parameters typed
+    with a class: the drives of the project templates, everything reachable from them as
+    dataclass fields, their analyses (results of every part), the simulation models."""
+    if _POOL:
+        return _POOL
+    from chaindrive.analysis import analyze_drive
+    from chaindrive.drive.project import parse_project
+
+    def add(obj, depth: int = 0) -> None:
+        if obj is None or isinstance(obj, (str, bytes, int, float, bool, np.ndarray, np.generic)) or depth > 4:
+            return
+        if isinstance(obj, (list, tuple)):
+            for v in obj[:6]:
+                add(v, depth + 1)
+            return
+        if isinstance(obj, dict):
+            for v in list(obj.values())[:20]:
+                add(v, depth + 1)
+            return
+        mod = type(obj).__module__ or ""
+        if not mod.startswith("chaindrive"):
+            return
+        for cls in type(obj).__mro__:
+            if (cls.__module__ or "").startswith("chaindrive"):
+                bucket = _POOL.setdefault(cls.__name__, [])
+                if len(bucket) < 8 and all(o is not obj for o in bucket):
+                    bucket.append(obj)
+        if dataclasses.is_dataclass(obj):
+            for f in dataclasses.fields(obj):
+                add(getattr(obj, f.name, None), depth + 1)
+
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        for kind in ("roller", "mining", "track", "crawler-conveyor"):
+            with contextlib.suppress(Exception):
+                drive = parse_project(_template(kind))
+                _GROUPS.append(_group_of(drive))
+                add(drive)
+                analysis = analyze_drive(drive)
+                add(analysis)
+                for name in getattr(analysis, "parts", None) or ():
+                    with contextlib.suppress(Exception):
+                        add(analysis[name])
+                with contextlib.suppress(Exception):
+                    from chaindrive.simulation import model_from_drive
+
+                    add(model_from_drive(drive))
+        for path in sorted((ROOT / "examples").glob("*.toml")):
+            with contextlib.suppress(Exception):
+                add(parse_project(path.read_text(encoding="utf-8"), filename=path.name))
+        with contextlib.suppress(Exception):
+            from chaindrive.simulation import roller_example, simulate
+
+            model = roller_example()
+            add(model)
+            result = simulate(model, 0.02, samples=20)
+            add(result)
+            state = getattr(result, "final_state", None)
+            add(state)
+            _POOL.setdefault("(model, state)", []).append((model, state))
+            _POOL.setdefault("(model, result)", []).append((model, result))
+        _more_objects(add)
+    return _POOL
+
+
+def _more_objects(add) -> None:
+    """Objects the templates' analyses do not hold: a duty, wheel parts and outlines, a
+    study variable, a simulation state, a carrier geometry, candidates of the design."""
+    from chaindrive.design import Duty
+
+    duty = Duty(11e3, 1460 * math.pi / 30, driven_speed=480 * math.pi / 30, driven_machine="varying_conveyor",
+                centre_distance=0.6)
+    add(duty)
+    attempts = [
+        lambda: add(__import__("chaindrive.design", fromlist=["design_drive"]).design_drive(duty)),
+        lambda: [add(w) for w in _POOL.get("Sprocket", [])[:2] for w in (w.outline(),)],
+        lambda: [add(__import__("chaindrive.geometry.part", fromlist=["x"]).sprocket_part(w))
+                 for w in _POOL.get("Sprocket", [])[:2]],
+        lambda: [add(w.outline()) for w in _POOL.get("PocketWheel", [])[:1] + _POOL.get("TrackDriveWheel", [])[:1]],
+        lambda: add(__import__("chaindrive.study", fromlist=["Variable"]).Variable("contact.skew", "arcmin",
+                                                                                    low=40.0, high=200.0, count=3)),
+        lambda: add(__import__("chaindrive.study", fromlist=["Variable"]).Variable("wheels.0.teeth",
+                                                                                    values=(17, 19, 21))),
+        lambda: add(__import__("chaindrive.simulation.run", fromlist=["x"]).initial_state(
+            _POOL["SimulationModel"][0])),
+        lambda: _self_regulating(add),
+    ]
+    for attempt in attempts:
+        with contextlib.suppress(Exception):
+            attempt()
+
+
+def _self_regulating(add) -> None:
+    from chaindrive.analysis import analyze_drive
+    from chaindrive.drive.project import parse_project
+
+    path = ROOT / "examples" / "self_regulating.toml"
+    analysis = analyze_drive(parse_project(path.read_text(encoding="utf-8"), filename=path.name))
+    add(analysis["self_regulating"])
+    add(getattr(analysis["self_regulating"], "geometry", None))
+
+
+def _pooled(words: set[str]) -> list[str]:
+    pool = object_pool()
+    return [w for w in words if w in pool]
+
+
 def api_call_args(qualname: str, obj, rnd: random.Random) -> tuple[list, dict] | None:
+    """Generated arguments of a public callable by its parameters' annotations: numbers
+    (typical, edge, hostile: 5e-324, 1e-300, NaN, inf, 1e300, negative, zero, arrays) where a
+    number is meant, text where text is, a valid library object where one is (from
+    :func:`object_pool`). None when an argument cannot be made (reason in API_UNREACHED)."""
     special = _special_args(qualname, rnd)
     if special is not None:
         return [], special
     try:
         sig = inspect.signature(obj)
     except (TypeError, ValueError):
+        API_UNREACHED[qualname] = "no signature"
         return None
     args, kwargs = [], {}
     doc_types = documented_types(obj)
+    object_pool()
+    group = rnd.choice(_GROUPS) if _GROUPS else {}
     for p in sig.parameters.values():
         if p.kind in (p.VAR_POSITIONAL, p.VAR_KEYWORD):
             continue
@@ -770,27 +1021,90 @@ def api_call_args(qualname: str, obj, rnd: random.Random) -> tuple[list, dict] |
         if not required and rnd.random() > 0.3:
             continue
         default = None if required else p.default
-        builder = SPECIAL_PARAMS.get(p.name)
-        if builder is not None:
+        ann = _annotation_text(obj, p)
+        words = set(re.findall(r"[A-Za-z_]\w*", ann))
+        if not ann and p.name in _PART_PARAMS and inspect.getmodule(obj).__name__.startswith("chaindrive.analysis"):
+            words = {_PART_PARAMS[p.name]}  # an analysis function without annotations: its parts by name
+        objects = _pooled(words - _NUMERIC_WORDS - _TEXT_WORDS)
+        text_only = bool(words) and words <= _TEXT_WORDS | {"None", "Sequence", "list", "tuple", "Iterable"}
+        numeric_only = bool(words) and words <= _NUMERIC_WORDS and not objects
+        builder = (SPECIAL_PARAMS.get(p.name) if (not objects or p.name in ("span", "pin")) and not text_only
+                   and not (numeric_only and p.name in ("wheel", "chain", "drive"))
+                   and not (p.name == "direction" and "Array" not in ann and "ndarray" not in ann) else None)
+        many = re.match(r"^\s*(list|Sequence|tuple|Iterable|collections\.abc\.Sequence)\[", ann) is not None
+        if objects and many:
+            value = [_object(rnd, group, objects) for _ in range(rnd.choice((1, 2, 3)))]
+        elif many and "str" in words and not objects:
+            value = [rnd.choice(WORDS) for _ in range(rnd.choice((0, 1, 2)))]
+        elif re.match(r"^\s*(list|Sequence|tuple)\[(int|float)", ann):  # one per wheel: as many as the centres
+            n = len(next(iter(_WHEEL_SETS.values()))[0]) if _WHEEL_SETS else rnd.choice((2, 3))
+            if "[int" in ann:
+                value = [api_value("teeth", None, rnd) if rnd.random() < 0.2 else rnd.choice((9, 12, 17, 19, 25, 40))
+                         for _ in range(n)]
+            else:
+                value = [api_value(p.name, None, rnd, arrays=False) for _ in range(n)]
+        elif re.match(r"^\s*(list|Sequence)\[(list|Sequence)\[", ann):
+            value = [[api_value("generic", None, rnd, arrays=False) for _ in range(rnd.choice((1, 2, 3)))]
+                     for _ in range(rnd.choice((1, 2)))]
+        elif words and words <= {"np", "ndarray", "NDArray", "npt", "float64", "None"} and "ndarray" in ann:
+            value = _array(p.name)(rnd)
+        elif builder is not None:
             try:
                 value = builder(rnd)
             except Exception:  # noqa: BLE001 - the generator's own invalid object: skip this call
                 return None
         elif p.name in ("callback", "progress", "ax", "rng"):
             continue
-        elif "tuple" in str(p.annotation):
+        elif objects:
+            value = _object(rnd, group, objects)
+        elif words & _PATH_WORDS or (not words and p.name in ("folder", "directory", "filename", "file")):
+            if not required:
+                continue
+            API_UNREACHED[qualname] = f"parameter {p.name}: a file or folder (fuzzed on the cli surface)"
+            return None
+        elif words and not words <= (_NUMERIC_WORDS | _TEXT_WORDS) and not objects:
+            unknown = sorted(words - _NUMERIC_WORDS - _TEXT_WORDS - {"dict", "Mapping", "Callable", "set",
+                                                                     "frozenset", "type", "object"})
+            if unknown or "Callable" in words:
+                if not required:
+                    continue
+                API_UNREACHED[qualname] = (f"parameter {p.name}: a {' | '.join(unknown) or ann} (no valid "
+                                           "object of that type among the templates' drives and analyses)")
+                return None
+            if not required:
+                continue
+            API_UNREACHED[qualname] = f"parameter {p.name}: {ann} (no generator)"
+            return None
+        elif words and words <= _TEXT_WORDS | {"None"} and "str" in words:
+            if isinstance(default, str) or rnd.random() < 0.5:
+                value = rnd.choice(WORDS + [default] * 4 if isinstance(default, str) else WORDS + CHAINS)
+            else:
+                value = rnd.choice(GENERIC + CHAINS)
+        elif "tuple" in ann:
             value = tuple(sorted(api_value(p.name, None, rnd, arrays=False) for _ in range(2)))
-        elif str(p.annotation).startswith("int"):
+        elif ann.startswith("int"):
             value = api_value("teeth", None, rnd)
+        elif ann.startswith("bool"):
+            value = rnd.random() < 0.5
         elif default is None and p.name in ("method", "model", "entry", "form", "contact", "kind", "link"):
             value = rnd.choice(WORDS)
         else:
-            value = api_value(p.name, default, rnd, arrays="array" in doc_types.get(p.name, ""))
+            value = api_value(p.name, default, rnd, arrays="array" in doc_types.get(p.name, "")
+                              or "ndarray" in ann or "ArrayLike" in ann)
         if p.kind == p.POSITIONAL_ONLY:
             args.append(value)
         else:
             kwargs[p.name] = value
+    for other in ("state", "result"):  # a state or result of its own model
+        if other in kwargs and "model" in kwargs and object_pool().get(f"(model, {other})"):
+            kwargs["model"], kwargs[other] = rnd.choice(object_pool()[f"(model, {other})"])
     return args, kwargs
+
+
+def _object(rnd: random.Random, group: dict, names: list[str]):
+    """A pooled object of one of the classes ``names``, from the call's drive group when it has one."""
+    name = rnd.choice(sorted(names))
+    return rnd.choice(group.get(name) or object_pool()[name])
 
 
 def _tensioner_span(rnd: random.Random):
@@ -846,7 +1160,36 @@ def _beam_loads(rnd: random.Random):
             for _ in range(rnd.choice((0, 1, 2)))]
 
 
+def _wheel_set(rnd: random.Random, n: int | None = None):
+    """Centres (n, 2), pitch radii (n,), sides (n,) of n wheels: mostly valid, sometimes hostile."""
+    n = n or rnd.choice((2, 3, 4))
+    centres = np.array([[rnd.uniform(-1.0, 1.0), rnd.uniform(-1.0, 1.0)] for _ in range(n)])
+    radii = np.array([rnd.uniform(0.02, 0.3) for _ in range(n)])
+    if rnd.random() < 0.2:
+        centres.ravel()[rnd.randrange(centres.size)] = rnd.choice([math.nan, math.inf, 1e300, 5e-324, 0.0])
+    if rnd.random() < 0.1:
+        radii[rnd.randrange(n)] = rnd.choice([0.0, -0.1, math.inf, 1e-300])
+    return centres, radii, np.array([rnd.choice((1.0, -1.0)) for _ in range(n)])
+
+
+_WHEEL_SETS: dict[int, tuple] = {}
+
+
+def _wheel_part(k: int):
+    def make(rnd: random.Random):
+        key = id(rnd)
+        if key not in _WHEEL_SETS or k == 0:
+            _WHEEL_SETS.clear()
+            _WHEEL_SETS[key] = _wheel_set(rnd)
+        return _WHEEL_SETS[key][k]
+    return make
+
+
 SPECIAL_PARAMS = {
+    "centres": _wheel_part(0),
+    "radii": _wheel_part(1),
+    "sides": _wheel_part(2),
+    "direction": lambda rnd: np.array([rnd.uniform(-1, 1), rnd.uniform(-1, 1)]),
     "chain": _chain,
     "span": lambda rnd: _tensioner_span(rnd),
     "drive": lambda rnd: _drive(rnd),
@@ -887,6 +1230,9 @@ def run_api(qualname: str, obj, tally: Tally, rnd: random.Random) -> None:
                 bad = nonfinite_in(result.to_dict())
             if bad and (qualname.rsplit(".", 1)[1], bad.split(":")[0].lstrip(".")) in API_INFINITE_OK:
                 bad = None
+            if bad and qualname.rsplit(".", 1)[1] in API_INFINITE_RESULT and not np.any(np.isnan(
+                    np.asarray(result, dtype=float))) and np.all(np.asarray(result, dtype=float) > 0):
+                bad = None
             if bad:
                 finite_in = all(nonfinite_in(v) is None for v in list(args) + list(kwargs.values()))
                 if finite_in:
@@ -917,8 +1263,14 @@ def _short(v) -> str:
 
 
 def fuzz_api(n: int, rnd: random.Random, progress: bool = True) -> Tally:
+    with tempfile.TemporaryDirectory() as place, contextlib.chdir(place):  # a function may write a file
+        return _fuzz_api(n, rnd, progress)
+
+
+def _fuzz_api(n: int, rnd: random.Random, progress: bool = True) -> Tally:
     tally = Tally("api")
     funcs = api_functions()
+    object_pool()
     i = 0
     while tally.inputs < n:
         qualname, obj = funcs[i % len(funcs)] if i < len(funcs) else rnd.choice(funcs)
@@ -1006,7 +1358,18 @@ def _schema_value(name: str, sch: dict, rnd: random.Random, texts: list[str]):
 WEB_WEIGHTS = {"/api/jobs/simulate": 0.1}
 
 
+#: Raw JSON bodies: not JSON, JSON of the wrong shape, deep, huge numbers (issue 34: null, "x", [],
+#: 5 gave HTTP 500; `[1,2` started a default job).
+RAW_BODIES = [b"null", b'"x"', b"[]", b"5", b"[1,2", b"{", b"{}[]", b"\xff\xfe\x00", b'{"a":', b"[" * 3000 + b"]" * 3000,
+              b'{"speed": {"x": [1]}}', b'{"frames": 1e999}', b'{"frames": -1}', b'{"duration": "1e300 s"}',
+              b'{"example": null, "design": 5}', b"true", b'{"speed": "NaN rad/s"}', b'{"load": "' + b"9" * 400 + b' N*m"}']
+
+
 def web_request(rnd: random.Random, routes, texts, fields=()):
+    json_routes = [r for r in routes if r[0] == "post" and r[3] is not None and "json" in r[3]["type"]]
+    if json_routes and rnd.random() < 0.06:  # a hostile raw body to a JSON route (never a valid one)
+        method, path, _, _ = rnd.choice(json_routes)
+        return method, path, {}, rnd.choice(RAW_BODIES), None
     weights = [WEB_WEIGHTS.get(r[1], 1.0) for r in routes]
     method, path, params, body = rnd.choices(routes, weights)[0]
     query, url = {}, path
@@ -1029,6 +1392,8 @@ def web_request(rnd: random.Random, routes, texts, fields=()):
             data = chosen
         else:
             json_body = chosen
+    if method == "post" and (body is not None or fields) and rnd.random() < 0.15:
+        return method, url, query, rnd.choice(RAW_BODIES), None  # hostile raw bytes as a JSON body
     if body is not None:
         props = body["schema"].get("properties", {})
         required = set(body["schema"].get("required", []))
@@ -1053,7 +1418,10 @@ def run_web(client, req, tally: Tally) -> None:
         warnings.simplefilter("ignore")
         try:
             kw = {"params": query}
-            if data is not None:
+            if isinstance(data, bytes):
+                kw["content"] = data
+                kw["headers"] = {"content-type": "application/json"}
+            elif data is not None:
                 kw["data"] = data
             if json_body is not None:
                 kw["json"] = json_body
@@ -1065,6 +1433,7 @@ def run_web(client, req, tally: Tally) -> None:
     code = resp.status_code
     tally.outcomes[f"HTTP {code}"] = tally.outcomes.get(f"HTTP {code}", 0) + 1
     if code >= 500 and code != 503:  # 503: the server's job queue is full (by design)
+        tally.http500 += 1
         tally.add("tracebacks", what, f"HTTP {code}: {resp.text[:300]!r}")
     if "Traceback (most recent call last)" in resp.text:
         tally.add("tracebacks", what, "traceback in the response body")
@@ -1151,6 +1520,7 @@ def run_openapi_case(case, tally: Tally) -> None:
     tally.outcomes[f"HTTP {code}"] = tally.outcomes.get(f"HTTP {code}", 0) + 1
     text = resp.text if isinstance(resp.text, str) else ""
     if code >= 500 and code != 503:
+        tally.http500 += 1
         tally.add("tracebacks", what, f"HTTP {code}: {text[:300]!r}")
     if "Traceback (most recent call last)" in text:
         tally.add("tracebacks", what, "traceback in the response body")

@@ -31,7 +31,7 @@ LAYERS: tuple[tuple[str, tuple[str, ...]], ...] = (
     ("foundation", ("chaindrive.errors", "chaindrive._typing", "chaindrive._deprecation", "chaindrive._roots",
                     "chaindrive._registry", "chaindrive._presenters", "chaindrive._examples", "chaindrive.units",
                     "chaindrive.limits", "chaindrive._validation", "chaindrive._finite", "chaindrive._results",
-                    "chaindrive._io", "chaindrive._folders", "chaindrive.display")),
+                    "chaindrive._io", "chaindrive._folders", "chaindrive.display", "chaindrive._interrupt")),
     ("formulas", ("chaindrive.kinematics", "chaindrive.vibration", "chaindrive.strength", "chaindrive.geometry",
                   "chaindrive.layout", "chaindrive.loads", "chaindrive.selection", "chaindrive.wear",
                   "chaindrive.chains", "chaindrive.self_regulating", "chaindrive.rating", "chaindrive.motor",

@@ -196,7 +196,7 @@ def test_run_errors(study_file, tmp_path, local_run):
         run_study(study, tmp_path / "b", scheduler=f"tcp://127.0.0.1:{free_port()}", progress=False,
                   wait_for_workers=1)
     other = load_study(EXAMPLES / "skew_study.toml")
-    with pytest.raises(InputError, match="holds another study"):
+    with pytest.raises(InputError, match="holds the results of another plan"):
         run_study(other, local_run[0], progress=False)
 
 

@@ -175,7 +175,7 @@ def test_parse_wheel_speed():
         chain_speed_to_angular_velocity(1.0, -0.01, 19)
     with pytest.raises(InputError, match=r"teeth must be a whole number >= 2"):
         chain_speed_to_angular_velocity(1.0, 0.01, 1)
-    with pytest.raises(InputError, match=r"chain_speed must be a finite"):
+    with pytest.raises(InputError, match=r"chain_speed (must be a finite|must not be NaN)"):
         chain_speed_to_angular_velocity(float("nan"), 0.01, 19)
 
 

@@ -17,7 +17,12 @@ Layers (docs/architecture.md; tests/test_architecture.py keeps them apart)
 All quantities are SI (m, N, s, rad, kg, Pa, W) inside.
 """
 
-from .errors import (
+from . import _interrupt
+
+if _interrupt.is_command():  # Ctrl-C while the command starts: one line, exit 130
+    _interrupt.install_early()
+
+from .errors import (  # noqa: E402
     ChainDriveError,
     ChainDriveWarning,
     ConvergenceError,

@@ -23,6 +23,7 @@ import dataclasses
 import functools
 import inspect
 import math
+import sys
 import threading
 from collections.abc import Callable
 from typing import Any, TypeVar, cast, overload
@@ -31,7 +32,7 @@ import numpy as np
 
 from .errors import ChainDriveError, ConvergenceError, InfeasibleError, InputError
 
-__all__ = ["finite_guard", "first_nonfinite", "check_finite_fields"]
+__all__ = ["finite_guard", "first_nonfinite", "check_finite_fields", "finite_fields", "guard_public"]
 
 F = TypeVar("F", bound=Callable[..., Any])
 
@@ -110,7 +111,8 @@ def _show(value: Any) -> str:
     return repr(value)
 
 
-def check_finite_fields(obj: Any, names: tuple[str, ...] | None = None) -> None:
+def check_finite_fields(obj: Any, names: tuple[str, ...] | None = None,
+                        allow_infinite: tuple[str, ...] = ()) -> None:
     """Refuse NaN/inf in the numeric fields of a dataclass (for ``__post_init__``).
 
     Examples
@@ -128,6 +130,8 @@ def check_finite_fields(obj: Any, names: tuple[str, ...] | None = None) -> None:
             continue
         value = getattr(obj, f.name, None)
         if _nonfinite_number(value):
+            if f.name in allow_infinite and not _has_nan(value):
+                continue
             raise InputError(f"{f.name} must be finite (a number, not NaN or inf), got {_show(value)}")
 
 
@@ -185,6 +189,9 @@ def finite_guard(function: F | None = None, *, check_result: bool = True,
         except (TypeError, ValueError):  # pragma: no cover - builtins
             return []
 
+    if getattr(function, "_finite_guarded", False):  # guarded already
+        return function
+
     @functools.wraps(function)
     def wrapper(*args, **kwargs):
         for i, value in enumerate(args):
@@ -227,6 +234,9 @@ def finite_guard(function: F | None = None, *, check_result: bool = True,
             # numpy/scipy refusing a value the function did not check itself (e.g. a
             # negative sample count, an empty range): an input outside its range
             raise InputError(f"{label}: an input is outside its valid range ({text.strip()})") from None
+        except IndexError as exc:  # an index or a count argument outside the arrays it indexes
+            raise InputError(f"{label}: an index or count argument is out of range for the other "
+                             f"arguments ({str(exc).strip()})") from None
         except RuntimeError as exc:  # e.g. scipy's QhullError: a degenerate geometry
             if type(exc).__name__ in ("QhullError",):
                 raise InfeasibleError(f"{label}: the geometry is degenerate for these inputs (the points are "
@@ -241,6 +251,7 @@ def finite_guard(function: F | None = None, *, check_result: bool = True,
                     "formula is defined, or the numbers overflow double precision")
         return result
 
+    wrapper._finite_guarded = True  # type: ignore[attr-defined]
     return cast(F, wrapper)  # functools.wraps keeps the signature
 
 
@@ -283,3 +294,79 @@ def _walk(obj: Any, where: str) -> Any:
             else:
                 obj = np.asarray(obj).ravel()[int(key)] if isinstance(obj, np.ndarray) else obj[int(key)]
     return obj
+
+
+C = TypeVar("C", bound=type)
+
+
+def finite_fields(cls: C | None = None, *, allow_infinite: tuple[str, ...] = ()) -> Any:
+    """Class decorator (above ``@dataclass``, or applied after it): the constructor refuses
+    NaN/inf in any numeric field with :class:`~chaindrive.errors.InputError` naming the field.
+
+    Parameters
+    ----------
+    cls : type
+        A dataclass.
+    allow_infinite : tuple of str
+        Fields that may be ``+inf`` or ``-inf`` by their documented meaning (never NaN).
+
+    Examples
+    --------
+    >>> @finite_fields
+    ... @dataclasses.dataclass(frozen=True)
+    ... class Span:
+    ...     length: float
+    >>> Span(float("nan"))
+    Traceback (most recent call last):
+    ...
+    chaindrive.errors.InputError: length must be finite (a number, not NaN or inf), got nan
+    """
+    if cls is None:
+        return lambda inner: finite_fields(inner, allow_infinite=allow_infinite)
+    if getattr(cls, "_finite_fields", False) is cls:  # applied already
+        return cls
+    init = cls.__init__  # type: ignore[misc]
+
+    @functools.wraps(init)
+    def __init__(self, *args, **kwargs):
+        init(self, *args, **kwargs)
+        check_finite_fields(self, allow_infinite=allow_infinite)
+
+    cls.__init__ = __init__  # type: ignore[misc]
+    cls._finite_fields = cls  # type: ignore[attr-defined]
+    return cls
+
+
+def guard_public(module: str, *, skip: tuple[str, ...] = (), allow_infinite: tuple[str, ...] = ()) -> None:
+    """Guard every public function and dataclass of ``module`` (its ``__all__``, or without
+    one the public names defined there) at once.
+
+    Call it as the last line of a formula module (``guard_public(__name__)``): each public
+    function defined there gets :func:`finite_guard` (NaN/inf arguments refused by name,
+    NaN/inf results and numerical failures raised as chaindrive errors), each public
+    dataclass :func:`finite_fields`. Names already guarded are left as they are; ``skip``
+    names the exceptions (say why beside the call).
+
+    Parameters
+    ----------
+    module : str
+        The module's ``__name__``.
+    skip : tuple of str
+        Public names left unguarded.
+    allow_infinite : tuple of str
+        Parameters and fields that may be infinite by their documented meaning.
+    """
+    mod = sys.modules[module]
+    names = getattr(mod, "__all__", None)
+    if names is None:  # no __all__: the public names defined in the module
+        names = [n for n in list(vars(mod)) if not n.startswith("_")]
+    for name in names:
+        if name in skip:
+            continue
+        obj = getattr(mod, name, None)
+        if getattr(obj, "__module__", None) != module:
+            continue
+        if inspect.isfunction(obj):
+            setattr(mod, name, finite_guard(obj, allow_infinite=allow_infinite))
+        elif inspect.isclass(obj) and dataclasses.is_dataclass(obj):
+            finite_fields(obj, allow_infinite=allow_infinite)

@@ -7,11 +7,14 @@ in the commands' help:
 
 * a new or empty ``DIR`` is simply filled;
 * a ``DIR`` that holds an earlier run (it has the marker file ``.chaindrive-run``, which
-  lists the files of that run) is replaced only with ``--force``; without it the command
-  stops before any work;
+  lists the files of that run with the SHA-256 of each) is replaced only with ``--force``;
+  without it the command stops before any work;
 * a ``DIR`` that holds files chaindrive did not write (no marker, or files the marker does
-  not list) is never replaced, not even with ``--force``: chaindrive deletes only files it
-  listed as its own;
+  not list) or files changed since chaindrive wrote them (their content no longer matches
+  the marker's hash) is never replaced, not even with ``--force``: chaindrive deletes only
+  files it wrote and that are unchanged since; the message names the files;
+* a ``DIR`` that holds the command's own input (``chaindrive analyze DIR/proposal.toml -o
+  DIR --force``) is never replaced: refused with the file's name;
 * one run at a time per folder: the run holds an advisory lock (``fcntl.flock`` on the
   file ``.DIR.lock`` beside the folder) from its start to the move; a second run into a
   folder in use is refused at once with one line;
@@ -23,13 +26,19 @@ in the commands' help:
 * when a run fails or is interrupted, the earlier results are left untouched and the
   message says so; the half-built folder is removed. What a killed run left behind
   (``.DIR.*.partial``, ``.DIR.*.old``) is cleaned by the next run into that place; an
-  earlier run moved aside and not yet replaced is put back first.
+  earlier run moved aside and not yet replaced is put back first;
+* the final swap exchanges the new folder and ``DIR`` in one atomic step where the system
+  offers it (Linux ``renameat2(RENAME_EXCHANGE)``), so a reader always finds a complete
+  ``DIR``, even when the run is killed in the middle; elsewhere ``DIR`` is renamed aside
+  (``.DIR.*.old``) and the new folder renamed to ``DIR``, and :func:`recover_output_dir`
+  (called by the next run, and by readers) puts a complete run back at once.
 """
 
 from __future__ import annotations
 
 import contextlib
 import errno
+import hashlib
 import json
 import os
 import re
@@ -38,6 +47,7 @@ import tempfile
 import warnings
 from collections.abc import Iterator
 from pathlib import Path
+from typing import Any
 
 from .errors import ChainDriveError, ChainDriveWarning, InputError
 
@@ -55,6 +65,9 @@ __all__ = [
     "earlier_run_note",
     "resolve_output_dir",
     "show_path",
+    "recover_output_dir",
+    "run_marker",
+    "protect_inputs",
 ]
 
 #: Marker file that identifies a folder written by chaindrive (a "run folder").
@@ -101,6 +114,60 @@ def _listed_files(folder: Path) -> set[str] | None:
     if not isinstance(files, list) or not all(isinstance(f, str) for f in files):
         return None
     return {f for f in files if f and not os.path.isabs(f) and ".." not in Path(f).parts}
+
+
+def _hashes(folder: Path) -> dict[str, str] | None:
+    """``{file: sha256}`` of the marker of ``folder`` (None: an earlier marker without hashes)."""
+    try:
+        data = json.loads((folder / RUN_MARKER).read_text(encoding="utf-8"))
+    except (OSError, ValueError):
+        return None
+    found = data.get("sha256") if isinstance(data, dict) else None
+    if not isinstance(found, dict):
+        return None
+    return {k: v for k, v in found.items() if isinstance(k, str) and isinstance(v, str)}
+
+
+def _sha256(path: Path) -> str | None:
+    digest = hashlib.sha256()
+    try:
+        with open(path, "rb") as fh:
+            for block in iter(lambda: fh.read(1 << 20), b""):
+                digest.update(block)
+    except OSError:
+        return None
+    return digest.hexdigest()
+
+
+def _edited(folder: Path) -> list[str]:
+    """Files the marker of ``folder`` lists whose content changed since chaindrive wrote them."""
+    hashes = _hashes(folder)
+    if not hashes:
+        return []
+    return sorted(f for f, h in hashes.items()
+                  if (folder / f).is_file() and not (folder / f).is_symlink() and _sha256(folder / f) != h
+                  and ".." not in Path(f).parts and not os.path.isabs(f))
+
+
+def run_marker(folder: Path) -> str:
+    """The text of the marker of a run built in ``folder``: its files and their SHA-256."""
+    files = sorted(str(q.relative_to(folder)) for q in folder.rglob("*")
+                   if q.is_file() and q.name != RUN_MARKER)
+    return json.dumps({"files": files, "sha256": {f: _sha256(folder / f) for f in files}}, indent=1) + "\n"
+
+
+def protect_inputs(real: Path, inputs, option: str, shown: str) -> None:
+    """Refuse a run folder that holds one of the command's input files."""
+    for given in inputs or ():
+        try:
+            where = Path(os.path.realpath(given))
+        except (OSError, ValueError):
+            continue
+        if where == real or real in where.parents:
+            raise InputError(
+                f"{option}: the folder {shown} holds the input file {show_path(given)}; chaindrive "
+                "does not replace a folder holding its own input: copy the file elsewhere, or give "
+                "another folder")
 
 
 def _foreign(folder: Path) -> list[str]:
@@ -157,7 +224,8 @@ def resolve_output_dir(path: str | os.PathLike, option: str = "--output") -> Pat
     return real
 
 
-def check_output_dir(path: str | os.PathLike, *, force: bool, option: str = "--output") -> Path:
+def check_output_dir(path: str | os.PathLike, *, force: bool, option: str = "--output",
+                     inputs: tuple = ()) -> Path:
     """Check, before any work, that a run folder may be (re)written; see the module policy.
 
     Parameters
@@ -168,6 +236,8 @@ def check_output_dir(path: str | os.PathLike, *, force: bool, option: str = "--o
         Replace an earlier run found there.
     option : str
         Option named in messages.
+    inputs : tuple of path
+        The command's input files: a folder holding one is refused.
 
     Returns
     -------
@@ -178,7 +248,8 @@ def check_output_dir(path: str | os.PathLike, *, force: bool, option: str = "--o
     ------
     InputError
         The path is a file; it holds an earlier run and ``force`` is false; it holds
-        files chaindrive did not write; the parent cannot be created or written.
+        files chaindrive did not write, files changed since it wrote them, or an input
+        of the command; the parent cannot be created or written.
 
     Examples
     --------
@@ -197,6 +268,7 @@ def check_output_dir(path: str | os.PathLike, *, force: bool, option: str = "--o
                                  "chaindrive run with --force)")
             entries = _entries(real)
             if entries:
+                protect_inputs(real, inputs, option, shown)
                 if RUN_MARKER not in entries:
                     raise InputError(
                         f"{option}: the folder {shown} is not empty and was not written by chaindrive "
@@ -208,6 +280,12 @@ def check_output_dir(path: str | os.PathLike, *, force: bool, option: str = "--o
                         f"{option}: the folder {shown} holds an earlier run and files chaindrive did not "
                         f"write ({_names(foreign)}); chaindrive does not delete them: move them away or "
                         "give another folder")
+                edited = _edited(real)
+                if edited:
+                    raise InputError(
+                        f"{option}: the folder {shown} holds an earlier run with files changed since "
+                        f"chaindrive wrote them ({_names(edited)}); chaindrive does not delete them: "
+                        "move them away or give another folder")
                 if not force:
                     raise InputError(f"{option}: the folder {shown} holds an earlier run; use --force to "
                                      "replace it, or give another folder")
@@ -386,16 +464,20 @@ def _leftover_pattern(real: Path) -> re.Pattern[str]:
 def _remove_run(folder: Path) -> list[str]:
     """Delete the files the marker of ``folder`` lists, then the emptied folders.
 
-    Returns what is left (files chaindrive did not write); the folder itself is removed
-    when empty.
+    Returns what is left (files chaindrive did not write, or changed since); the folder
+    itself is removed when empty.
     """
     listed = _listed_files(folder)
     if listed is None:
         listed = {e for e in _entries(folder) if (folder / e).is_file()}
+    hashes = _hashes(folder)
     for f in sorted(listed, key=lambda s: -len(Path(s).parts)):
         with contextlib.suppress(OSError):
-            if not (folder / f).is_dir():
-                (folder / f).unlink()
+            if (folder / f).is_dir():
+                continue
+            if hashes is not None and (folder / f).is_file() and _sha256(folder / f) != hashes.get(f):
+                continue  # edited since chaindrive wrote it: kept (then foreign: no marker)
+            (folder / f).unlink()
     with contextlib.suppress(OSError):
         (folder / RUN_MARKER).unlink()
     for root, _dirs, _files in sorted(os.walk(folder, topdown=False), key=lambda t: -len(t[0])):
@@ -442,9 +524,9 @@ def clean_leftovers(real: Path) -> None:
             names.remove(olds[0])
     for n in names:
         p = real.parent / n
-        if n.endswith(".partial"):
+        if n.endswith(".partial") and not _is_run(p):  # a half-built run
             shutil.rmtree(p, ignore_errors=True)
-        elif _remove_run(p):  # files of the user in an old run: kept, visible
+        elif _remove_run(p):  # an earlier run moved aside, or swapped out by an exchange  # files of the user in an old run: kept, visible
             with contextlib.suppress(OSError, InputError):
                 kept = _keep_aside(p, real, "kept")
                 warnings.warn(f"files chaindrive did not write were found in an earlier run of "
@@ -453,11 +535,13 @@ def clean_leftovers(real: Path) -> None:
 
 
 @contextlib.contextmanager
-def claim_output_dir(path: str | os.PathLike, *, force: bool, option: str = "--output") -> Iterator[Path]:
+def claim_output_dir(path: str | os.PathLike, *, force: bool, option: str = "--output",
+                     inputs: tuple = ()) -> Iterator[Path]:
     """Lock the run folder, clean leftovers of killed runs, check the policy; for a whole command.
 
     Hold it around everything a command does, so that a second run into the same folder
     is refused at once. An interrupt (Ctrl-C) inside gets a note saying what is kept.
+    ``inputs``: the command's input files (a folder holding one is refused).
 
     Yields
     ------
@@ -466,7 +550,7 @@ def claim_output_dir(path: str | os.PathLike, *, force: bool, option: str = "--o
     """
     with folder_lock(path, option=option) as real:
         clean_leftovers(real)
-        check_output_dir(path, force=force, option=option)
+        check_output_dir(path, force=force, option=option, inputs=inputs)
         had_run = _is_run(real)
         try:
             yield Path(os.fspath(path))
@@ -489,7 +573,7 @@ def _map_filename(exc: OSError, tmp: Path, text: str) -> str:
 
 @contextlib.contextmanager
 def atomic_output_dir(path: str | os.PathLike, *, force: bool = False,
-                      option: str = "--output") -> Iterator[Path]:
+                      option: str = "--output", inputs: tuple = ()) -> Iterator[Path]:
     """Build a run folder in a hidden sibling folder and move it into place when complete.
 
     Parameters
@@ -501,6 +585,8 @@ def atomic_output_dir(path: str | os.PathLike, *, force: bool = False,
         Replace an earlier chaindrive run in ``path``.
     option : str
         Option named in messages.
+    inputs : tuple of path
+        The command's input files: a folder holding one is never replaced.
 
     Yields
     ------
@@ -527,7 +613,7 @@ def atomic_output_dir(path: str | os.PathLike, *, force: bool = False,
     (['run'], ['.chaindrive-run', 'a.json'])
     """
     text = os.fspath(path)
-    with claim_output_dir(path, force=force, option=option):
+    with claim_output_dir(path, force=force, option=option, inputs=inputs):
         real = resolve_output_dir(text, option)
         had_run = _is_run(real)
         try:
@@ -542,9 +628,7 @@ def atomic_output_dir(path: str | os.PathLike, *, force: bool = False,
         try:
             try:
                 yield tmp
-                files = sorted(str(q.relative_to(tmp)) for q in tmp.rglob("*") if q.is_file())
-                (tmp / RUN_MARKER).write_text(json.dumps({"files": files}, indent=1) + "\n",
-                                              encoding="utf-8")
+                (tmp / RUN_MARKER).write_text(run_marker(tmp), encoding="utf-8")
             except ChainDriveError as exc:
                 if had_run and "earlier run" not in str(exc):
                     raise type(exc)(f"{exc}; {earlier_run_note(text)}") from None
@@ -558,7 +642,7 @@ def atomic_output_dir(path: str | os.PathLike, *, force: bool = False,
                         "nothing was written" in n for n in notes):
                     exc.add_note(_nothing_note(text, had_run))
                 raise
-            moved = _move_into_place(tmp, real, text, force=force, option=option)
+            moved = _move_into_place(tmp, real, text, force=force, option=option, inputs=inputs)
         finally:
             if not moved:
                 shutil.rmtree(tmp, ignore_errors=True)
@@ -576,8 +660,76 @@ def _as_given(sibling: Path, text: str) -> Path:
     return sibling
 
 
-def _move_into_place(tmp: Path, real: Path, text: str, *, force: bool, option: str) -> bool:
-    """Check the rules again and move ``tmp`` to ``real``; returns True (or raises)."""
+def _renameat2():
+    """libc's ``renameat2`` (Linux, glibc >= 2.28), or None."""
+    global _RENAMEAT2
+    if _RENAMEAT2 is None:
+        _RENAMEAT2 = False
+        try:
+            import ctypes
+
+            function = ctypes.CDLL(None, use_errno=True).renameat2
+            function.argtypes = [ctypes.c_int, ctypes.c_char_p, ctypes.c_int, ctypes.c_char_p, ctypes.c_uint]
+            function.restype = ctypes.c_int
+            _RENAMEAT2 = function
+        except (OSError, AttributeError, ImportError):
+            pass
+    return _RENAMEAT2 or None
+
+
+_RENAMEAT2: Any = None
+
+
+def exchange(a: Path, b: Path) -> bool:
+    """Swap two folders in one atomic step (``renameat2(RENAME_EXCHANGE)``); False where the
+    system or the file system does not offer it (nothing is changed then)."""
+    function = _renameat2()
+    if function is None:
+        return False
+    import ctypes
+
+    at_fdcwd, rename_exchange = -100, 2
+    if function(at_fdcwd, os.fsencode(a), at_fdcwd, os.fsencode(b), rename_exchange) == 0:
+        return True
+    err = ctypes.get_errno()
+    if err in (errno.ENOSYS, errno.EINVAL, errno.EOPNOTSUPP, errno.ENOTSUP, errno.EPERM):
+        return False
+    raise OSError(err, os.strerror(err), os.fspath(b))
+
+
+def recover_output_dir(path: str | os.PathLike) -> None:
+    """Put back an earlier run moved aside by a run killed in the middle of its final swap
+    (only where the atomic exchange is not available); nothing to do otherwise."""
+    try:
+        real = Path(os.path.realpath(path))
+        if real.exists() or real.is_symlink() or not real.parent.is_dir():
+            return
+        pattern = _leftover_pattern(real)
+        olds = sorted(n for n in os.listdir(real.parent) if pattern.match(n) and n.endswith(".old"))
+        if olds:
+            os.rename(real.parent / olds[0], real)
+    except OSError:
+        pass
+
+
+def _drop_earlier(old: Path, real: Path, text: str) -> None:
+    """Delete the earlier run swapped out to ``old``; files of the user are kept aside."""
+    left = _remove_run(old)
+    if left:
+        kept = _keep_aside(old, real, "kept")
+        warnings.warn(f"files chaindrive did not write were in the earlier run of {show_path(text)} "
+                      f"({_names(left)}); they are kept in {show_path(_as_given(kept, text))}",
+                      ChainDriveWarning, stacklevel=5)
+
+
+def _move_into_place(tmp: Path, real: Path, text: str, *, force: bool, option: str,
+                     inputs: tuple = ()) -> bool:
+    """Check the rules again and move ``tmp`` to ``real``; returns True (or raises).
+
+    With an earlier run in ``real``, the two folders are exchanged atomically where the
+    system can (:func:`exchange`): ``real`` is a complete run at every instant; ``tmp``
+    then holds the earlier run, whose files are deleted (the user's are kept aside).
+    """
     shown = show_path(text)
 
     def keep(reason: str) -> None:
@@ -592,10 +744,20 @@ def _move_into_place(tmp: Path, real: Path, text: str, *, force: bool, option: s
             foreign = _foreign(real)
             if foreign:
                 keep(f"files chaindrive did not write appeared in {shown} during the run ({_names(foreign)})")
+            edited = _edited(real)
+            if edited:
+                keep(f"files of the earlier run in {shown} were changed during the run ({_names(edited)})")
+            try:
+                protect_inputs(real, inputs, option, shown)
+            except InputError:
+                keep(f"{shown} holds an input file of the command")
             if _is_run(real) and not force:
                 keep(f"an earlier run appeared in {shown} during the run (use --force to replace one)")
         old = None
         if real.exists() and _entries(real):
+            if exchange(tmp, real):  # atomic: DIR is the new run, tmp the earlier one
+                _drop_earlier(tmp, real, text)
+                return True
             old = Path(tempfile.mkdtemp(prefix=f".{real.name[:200]}.", suffix=".old", dir=real.parent))
             os.rmdir(old)
             os.rename(real, old)
@@ -614,12 +776,7 @@ def _move_into_place(tmp: Path, real: Path, text: str, *, force: bool, option: s
                 keep(f"files appeared in {shown} during the run")
             raise
         if old is not None:
-            left = _remove_run(old)
-            if left:
-                kept = _keep_aside(old, real, "kept")
-                warnings.warn(f"files chaindrive did not write were in the earlier run of {shown} "
-                              f"({_names(left)}); they are kept in {show_path(_as_given(kept, text))}",
-                              ChainDriveWarning, stacklevel=4)
+            _drop_earlier(old, real, text)
     except OSError as exc:
         raise InputError(f"{option}: cannot move the results into {shown}: {_reason(exc)}") from None
     return True

@@ -29,6 +29,7 @@ from ._folders import (
     claim_output_dir,
     earlier_run_note,
     folder_lock,
+    recover_output_dir,
     show_path,
 )
 from .errors import ChainDriveError, InputError
@@ -328,6 +329,9 @@ def read_text_file(path: str | os.PathLike, *, what: str = "project file",
     text = os.fspath(path)
     if not str(text).strip():
         raise InputError(f"{what}: empty file name; give the path of a TOML file")
+    with contextlib.suppress(OSError, ValueError):
+        if not os.path.exists(text):  # a run folder swapped out by a killed run: put back
+            recover_output_dir(os.path.dirname(os.path.abspath(text)))
     p = Path(text)
     try:
         if p.is_dir():

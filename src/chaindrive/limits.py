@@ -57,6 +57,7 @@ __all__ = [
     "PLAUSIBLE",
     "check_size",
     "check_duration",
+    "check_links_needed",
     "warn_implausible",
 ]
 
@@ -144,6 +145,36 @@ def check_size(name: str, value: float, maximum: int, minimum: int = 1) -> int:
     if not ok or not minimum <= value <= maximum:
         raise InputError(f"{name} must be a whole number in [{minimum}, {maximum}], got {value!r}")
     return int(value)
+
+
+def check_links_needed(needed: float, what: str = "the wheel positions") -> None:
+    """Refuse a layout whose chain needs more than :data:`MAX_LINKS` links (every door:
+    ``layout``, ``analyze``, ``simulate``, the web, studies).
+
+    Parameters
+    ----------
+    needed : float
+        Chain length the layout needs [pitches].
+    what : str
+        What sets it, for the message.
+
+    Raises
+    ------
+    InputError
+        More than :data:`MAX_LINKS` links (or not a finite number).
+
+    Examples
+    --------
+    >>> check_links_needed(122.3)
+    >>> check_links_needed(78740196.0)
+    Traceback (most recent call last):
+    ...
+    chaindrive.errors.InputError: links: the chain of this layout needs 78,740,196 links; at most 10,000 (chaindrive.limits.MAX_LINKS): check the wheel positions and their units
+    """
+    if not (math.isfinite(needed) and needed <= MAX_LINKS):
+        shown = f"{needed:,.0f}" if math.isfinite(needed) else str(needed)
+        raise InputError(f"links: the chain of this layout needs {shown} links; at most {MAX_LINKS:,} "
+                         f"(chaindrive.limits.MAX_LINKS): check {what} and their units", field="links")
 
 
 def check_duration(name: str, value: float, maximum: float = MAX_DURATION) -> float:

@@ -227,6 +227,21 @@ def _unit_info(unit: str) -> tuple[Any, float, Any, int, bool]:
     return parsed, float(factor), ureg.Quantity(1.0, parsed).dimensionality, radians, hertz
 
 
+def _known_unit(unit: str, field: str) -> tuple[Any, float, Any, int, bool]:
+    """:func:`_unit_info`, a unit pint cannot read refused with InputError naming ``field``."""
+    if not isinstance(unit, str):
+        raise InputError(f"{field} must be a unit as text, e.g. 'mm', got {unit!r}")
+    try:
+        return _unit_info(unit)
+    except Exception as exc:  # noqa: BLE001 - pint's undefined-unit and syntax errors
+        raise InputError(f"{field}: {unit!r} is not a unit chaindrive reads ({_one_line(exc)}); "
+                         "e.g. 'mm', 'kN', 'rpm'") from None
+
+
+def _one_line(exc: BaseException) -> str:
+    return " ".join(str(exc).split())[:120] or type(exc).__name__
+
+
 def convert_from_si(value: float, si_unit: str, unit: str) -> float:
     """``value`` [``si_unit``] expressed in ``unit`` (presenters' display units).
 
@@ -235,8 +250,8 @@ def convert_from_si(value: float, si_unit: str, unit: str) -> float:
     >>> round(convert_from_si(2 * math.pi, "rad/s", "Hz"), 12)  # Hz counts turns, as parse_quantity
     1.0
     """
-    _, f_si, dims_si, rad_si, hz_si = _unit_info(si_unit)
-    _, f_unit, dims_unit, rad_unit, hz_unit = _unit_info(unit)
+    _, f_si, dims_si, rad_si, hz_si = _known_unit(si_unit, "si_unit")
+    _, f_unit, dims_unit, rad_unit, hz_unit = _known_unit(unit, "unit")
     if dims_si != dims_unit:
         raise InputError(f"cannot show a value in {si_unit} as {unit}", field="unit")
     factor = f_si / f_unit
@@ -255,7 +270,7 @@ def is_dimensional(unit: str) -> bool:
     """
     if unit in ("", "dimensionless"):
         return False
-    _, _, dims, radians, _ = _unit_info(unit)
+    _, _, dims, radians, _ = _known_unit(unit, "unit")
     return bool(dims) or radians != 0
 
 

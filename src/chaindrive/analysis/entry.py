@@ -165,3 +165,8 @@ def _entry_batch(contexts: Sequence[PartContext]) -> list[DriveEntry]:
 register_part(Part("entry", "Entry kinematics of the driving and the guided wheels", _entry_part,
                    checks=lambda ctx, entry: entry_checks(entry), order=40,
                    section="chaindrive.workflows.sections:entry_section", batch=_entry_batch))
+
+
+from chaindrive._finite import guard_public  # noqa: E402
+
+guard_public(__name__)  # every public function and dataclass: NaN/inf in or out refused

@@ -10,9 +10,11 @@ from dataclasses import dataclass
 import numpy as np
 
 from .. import layout as L
+from .._finite import finite_guard
 from .._results import Result, quantity
 from ..drive.model import Drive
 from ..errors import InfeasibleError, ValidityRangeWarning
+from ..limits import check_links_needed
 from ._memo import freeze, memo
 from ._wheels import MINIMUM_POWER_WRAP, clearance_error, wheel_checks, wheel_teeth, wrap_advice
 from .checks import Check
@@ -168,6 +170,7 @@ def _geometry(drive: Drive, phases: int) -> DriveLayout:
     clearance_error(drive, positions)
     links_required, polygon, loop, centre = _required_length(drive, positions, phases)
     needed = loop.links_max if loop is not None and loop.exact else links_required
+    check_links_needed(needed)  # chaindrive.limits: the documented maximum at every door
     links = int(drive.links) if drive.links is not None else int(L.even_links(needed))
     adjustment = None
     if drive.adjustable is not None:
@@ -256,6 +259,7 @@ def _required_length(drive: Drive, positions: np.ndarray, phases: int):
     return required, None, loop, None
 
 
+@finite_guard  # NaN/inf and out-of-range arguments refused (chaindrive._finite)
 def span_inclination(direction: float) -> float:
     """Inclination of a span's chord above the horizontal, in (-π/2, π/2] [rad].
 

@@ -10,6 +10,7 @@ import numpy as np
 
 from .. import layout as L
 from .. import loads as F
+from .._finite import finite_guard
 from .._results import Result, quantity
 from ..chains import Chain
 from ..drive.model import Drive
@@ -214,6 +215,7 @@ def _tension_for_sag(span: float, inclination: float, sag: float, mass_per_lengt
     return float(L.tension_for_sag(span, inclination, sag, mass_per_length))
 
 
+@finite_guard  # NaN/inf arguments (acceleration_peak, ...) refused (chaindrive._finite)
 def drive_loads(drive: Drive, layout: DriveLayout | None = None, *,
                 acceleration_peak: float | None = None, acceleration_source: str = "given",
                 moving_mass: float | None = None, conveyor: ConveyorPull | None = None) -> DriveLoads:
@@ -347,6 +349,7 @@ def _conveyor_loads(drive: Drive, lay: DriveLayout, pull: ConveyorPull, Fe: floa
                              "installed torque)")
 
 
+@finite_guard  # NaN/inf and out-of-range arguments refused (chaindrive._finite)
 def span_tensions(effective_pull: float, slack: float, shares: np.ndarray, driving: int,
                   travel: str = "ccw") -> np.ndarray:
     r"""Static tension of every span [N] with the power taken off at several wheels.

@@ -30,6 +30,7 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
+from .._finite import finite_guard
 from .._results import Result, quantity
 from ..drive.model import Drive
 from ..errors import ChainDriveError
@@ -104,6 +105,7 @@ def _ranges_text() -> str:
             f"the span ±{100 * r['shift'][1]:.0f} % of its chord")
 
 
+@finite_guard  # NaN/inf and out-of-range arguments refused (chaindrive._finite)
 def round_significant(x: float, digits: int = SIGNIFICANT_DIGITS) -> float:
     """``x`` rounded to ``digits`` significant digits, as a designer writes it.
 

@@ -10,11 +10,17 @@ traceback).
 
 from __future__ import annotations
 
-import importlib
-import sys
+from .. import _interrupt
 
-from ..errors import ChainDriveError
-from .app import app
+# Ctrl-C during the imports below (a few hundred ms) ends the command with one line, not a
+# traceback; main() installs its own handler, and a library import gets the previous one back
+_BEFORE = _interrupt.install_early()
+
+import importlib  # noqa: E402
+import sys  # noqa: E402
+
+from ..errors import ChainDriveError  # noqa: E402
+from .app import app  # noqa: E402
 
 __all__ = ["main", "TOPICS"]
 
@@ -42,11 +48,21 @@ for _topic in TOPICS:
     except ModuleNotFoundError as exc:  # a topic module not written yet
         if exc.name != f"{__name__}.{_topic}":
             raise
+if not _interrupt.is_command():
+    _interrupt.restore(_BEFORE)
+
+
+#: Warnings printed by the current command (each text once, whatever the place it comes from).
+_SHOWN: set[str] = set()
 
 
 def _show_warning(message, category, filename, lineno, file=None, line=None):  # noqa: ARG001
-    """Print a warning as one line ``warning: ...`` on stderr (no source line)."""
-    print(f"warning: {message}", file=sys.stderr if file is None else file)
+    """Print a warning as one line ``warning: ...`` on stderr (no source line), each text once."""
+    text = str(message)
+    if text in _SHOWN:
+        return
+    _SHOWN.add(text)
+    print(f"warning: {text}", file=sys.stderr if file is None else file)
 
 
 #: Longest error message printed (lines); the rest is summarised.
@@ -133,6 +149,7 @@ def main(argv: list[str] | None = None) -> int:
     import threading
 
     warnings.showwarning = _show_warning
+    _SHOWN.clear()
     previous = None
     if threading.current_thread() is threading.main_thread():
         previous = signal.signal(signal.SIGINT, _interrupt)

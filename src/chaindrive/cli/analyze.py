@@ -16,7 +16,7 @@ def _run(project: Path, output: Path, pdf: bool, figures: bool, quiet: bool, for
 
     # before any work: the folder locked (a second run into it is refused), an earlier run
     # needs --force, a folder with other files is refused
-    with claim_output_dir(output, force=force):
+    with claim_output_dir(output, force=force, inputs=(project,)):
         return _run_claimed(project, output, pdf, figures, quiet, force)
 
 
@@ -41,7 +41,7 @@ def _run_claimed(project: Path, output: Path, pdf: bool, figures: bool, quiet: b
         def progress(title: str, i: int, n: int) -> None:
             prog.update(task, description=title, completed=i, total=n)
 
-        with atomic_output_dir(output, force=force) as partial:  # moved into place when complete
+        with atomic_output_dir(output, force=force, inputs=(project,)) as partial:  # moved into place when complete
             outcome = analyze(drive, partial, subtitle=f"Project file: {project}", pdf=pdf, figures=figures,
                               progress=progress, parallel_figures=True, source=source)
         outcome.files = {k: output / Path(v).relative_to(partial) for k, v in outcome.files.items()}

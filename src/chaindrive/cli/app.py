@@ -82,7 +82,28 @@ def command_options(argv: Sequence[str]) -> tuple[dict[str, str], dict[str, str]
             if (getattr(p, "param_type_name", "") == "option" and p.name and p.opts
                     and not getattr(p, "is_flag", False)):
                 names[p.name] = max(p.opts, key=len)
-    return names, OPTION_ALIASES.get(name or "", {})
+    found = _passed_as(getattr(command, "callback", None), names)
+    return names, {**found, **OPTION_ALIASES.get(name or "", {})}
+
+
+def _passed_as(callback: Any, names: Mapping[str, str]) -> dict[str, str]:
+    """Formula parameters a command passes its options to under another name
+    (``stress_concentration=kt`` -> ``{"stress_concentration": "--kt"}``), read from its source."""
+    import ast
+    import inspect
+    import textwrap
+
+    try:
+        tree = ast.parse(textwrap.dedent(inspect.getsource(inspect.unwrap(callback))))
+    except (TypeError, OSError, SyntaxError, ValueError):
+        return {}
+    out: dict[str, str] = {}
+    for node in ast.walk(tree):
+        if isinstance(node, ast.keyword) and node.arg and isinstance(node.value, ast.Name):
+            option = names.get(node.value.id)
+            if option and node.arg != node.value.id and node.arg not in names:
+                out[node.arg] = option
+    return out
 
 
 def name_options(message: str, names: Mapping[str, str], aliases: Mapping[str, str] | None = None) -> str:

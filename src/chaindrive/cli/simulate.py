@@ -55,7 +55,7 @@ def simulate_command(
 
     # before any work: the folder locked (a second run into it is refused), an earlier run
     # needs --force, a folder with other files is refused
-    with claim_output_dir(output, force=force):
+    with claim_output_dir(output, force=force, inputs=(project,) if project is not None else ()):
         _simulate(project, example, duration, output, speed, load, ramp, frames, no_plots, as_json, force,
                   DriveProfile(motor, motor_inertia, stop, stop_ramp, ripple, ripple_frequency, coupling,
                                coupling_slip, coupling_stall, secondary_inertia), cad_frame)
@@ -189,7 +189,8 @@ def _simulate(project: Path | None, example: str | None, duration: str | None, o
         res = simulate(model, dur, samples=samples,
                        progress=lambda done, total: prog.update(task, completed=done / total))
     final_output = output
-    with atomic_output_dir(final_output, force=force) as output:  # moved into place when complete
+    with atomic_output_dir(final_output, force=force,
+                           inputs=(project,) if project is not None else ()) as output:  # moved into place when complete
         _write_outputs(res, output, no_plots, frames)
         if project is not None:
             _write_start_up(res, model, output, no_plots)

@@ -28,7 +28,13 @@ def study_cmd(
     batch_size: int = typer.Option(None, "--batch-size", min=1, max=20_000,
                                    help="Variants per dask task [-] (at most 20,000; default about 8 "
                                         "tasks per worker, at most 5,000 variants each)."),
-    quiet: bool = typer.Option(False, "--quiet", "-q", help="No progress bar, no summary line."),
+    force: bool = typer.Option(False, "--force",
+                               help="Start over in a study folder that holds the results of another "
+                                    "plan (a changed study file or base project): its results are "
+                                    "deleted. Without it such a folder is refused."),
+    quiet: bool = typer.Option(False, "--quiet", "-q",
+                               help="No progress bar, no summary line (a study of 10,000 variants or "
+                                    "more still prints a progress line a minute)."),
 ) -> None:
     """Run a design study on dask.distributed, or summarise one (--summary DIR).
 
@@ -36,7 +42,8 @@ def study_cmd(
     `chaindrive analyze` (the papers and standards cited there); the outputs are dotted
     paths into the analysis results (SI units). Results are appended to Parquet as the
     batches finish; a rerun skips the variants already in the folder; a failing variant
-    records its error in its row. Exit code 0 when the study ran (failed variants are
+    records its error in its row. A study folder belongs to one plan: a changed study
+    file or base project is refused there (a new folder, or --force). Exit code 0 when the study ran (failed variants are
     results), 2 on bad input.
     """
     import sys
@@ -67,7 +74,7 @@ def study_cmd(
 
     study = load_study(study_file)
     run = run_study(study, output, scheduler=scheduler, workers=workers, batch_size=batch_size,
-                    progress=not quiet)
+                    progress=not quiet, force=force)
     out.print(f"{study.name}: {run.computed} variants computed ({run.failed} failed), "
               f"{run.skipped} already in {output}"
               + (f"; {run.rate:.1f} variants/s on {run.workers} worker{'s' if run.workers != 1 else ''}"

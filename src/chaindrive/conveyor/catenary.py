@@ -174,3 +174,8 @@ def free_strand(chord_length: float, inclination: float, start_tension: float,
                       lowest_tension=float(H if 0 < x0 < span else min(T0, H * math.cosh(k * (span - x0)))),
                       start_angle=float(-math.atan(math.sinh(k * x0))),
                       end_angle=float(math.atan(math.sinh(k * (span - x0)))))
+
+
+from chaindrive._finite import guard_public  # noqa: E402
+
+guard_public(__name__)  # every public function and dataclass: NaN/inf in or out refused

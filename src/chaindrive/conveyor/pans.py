@@ -285,3 +285,8 @@ def pretension_for_minimum(minimum: float, lowest: float, mean: float) -> float:
     """
     m = float(check_nonnegative("minimum", minimum, "N"))
     return float(mean) + (m - float(lowest))
+
+
+from chaindrive._finite import guard_public  # noqa: E402
+
+guard_public(__name__)  # every public function and dataclass: NaN/inf in or out refused

@@ -119,3 +119,8 @@ def drive_advice(duty: Duty, rating: ChainRating, *, smaller_pitch: str | None =
                      "the ratings assume 15 000 h of wear life; this drive's own wear life is the wear "
                      "check of the analysis (hours to the elongation limit)"))
     return tuple(out)
+
+
+from chaindrive._finite import guard_public  # noqa: E402
+
+guard_public(__name__)  # every public function and dataclass: NaN/inf in or out refused

@@ -232,3 +232,8 @@ def duty_factors(duty: Duty) -> tuple[Factor, ...]:
             if duty.driven_machine is not None and duty.load_character is None else character)
     return (Factor("service factor", "K_s", service_factor(character, duty.driver), table["source"],
                    note=f"{what}, {table['drivers'][duty.driver]}"),)
+
+
+from chaindrive._finite import guard_public  # noqa: E402
+
+guard_public(__name__)  # every public function and dataclass: NaN/inf in or out refused

@@ -116,3 +116,8 @@ def power_at_safety(chain: Chain, teeth: int, angular_velocity: ArrayLike,
         raise InputError(f"chain {chain.name} has no breaking force", field="chain")
     v = mean_chain_speed(sides_per_turn(teeth, True), chain.pitch, np.asarray(angular_velocity, dtype=float))
     return chain.breaking_force / need * v
+
+
+from chaindrive._finite import guard_public  # noqa: E402
+
+guard_public(__name__)  # every public function and dataclass: NaN/inf in or out refused

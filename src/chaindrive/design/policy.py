@@ -101,3 +101,8 @@ def driven_teeth(teeth_driving: int, ratio: float) -> int:
     58
     """
     return int(round(teeth_driving * ratio))
+
+
+from chaindrive._finite import guard_public  # noqa: E402
+
+guard_public(__name__)  # every public function and dataclass: NaN/inf in or out refused

@@ -663,3 +663,10 @@ class Drive:
             "adjustable": None if self.adjustable is None else dataclasses.asdict(self.adjustable),
         }
 
+
+
+from chaindrive._finite import guard_public  # noqa: E402
+
+# every public function and dataclass: NaN/inf in or out refused; a Drive is built from parts
+# checked here, its own numbers by its __post_init__ (a study builds millions: no second pass)
+guard_public(__name__, skip=("Drive",))

@@ -124,6 +124,83 @@ def _where(filename: str, line: int | None) -> str:
     return f"{filename}:{line}" if line else filename
 
 
+#: pydantic errors of a number outside its field's bounds (answered with the bounds, one line).
+_BOUND_ERRORS = ("int_parsing_size", "less_than_equal", "greater_than_equal", "less_than", "greater_than",
+                 "int_from_float", "finite_number")
+
+
+def _field_info(loc: tuple) -> Any:
+    """The pydantic FieldInfo of the project field at ``loc`` (None when not found)."""
+    import types
+    import typing
+
+    model: Any = project_model()
+    info = None
+    for part in loc:
+        if isinstance(part, int):
+            continue
+        fields = getattr(model, "model_fields", None)
+        if not fields or part not in fields:
+            return None
+        info = fields[part]
+        model = None
+        stack = [info.annotation]
+        while stack:  # the model class inside Optional[...] / list[...] / tuple[...]
+            t = stack.pop()
+            if isinstance(t, type) and hasattr(t, "model_fields"):
+                model = t
+                break
+            if isinstance(t, (types.UnionType,)) or typing.get_origin(t) is not None:
+                stack.extend(typing.get_args(t))
+    return info
+
+
+def _constraints(info: Any) -> list:
+    """Bounds of a field: its metadata and those inside ``Annotated[...]`` in its annotation."""
+    import typing
+
+    found = list(getattr(info, "metadata", ()) or ())
+    stack = [info.annotation]
+    while stack:
+        t = stack.pop()
+        args = typing.get_args(t)
+        if typing.get_origin(t) is typing.Annotated:
+            for extra in args[1:]:
+                found.extend(getattr(extra, "metadata", None) or [extra])
+            stack.append(args[0])
+        else:
+            stack.extend(a for a in args if a is not type(None))
+    return found
+
+
+def _bound_message(loc: tuple, value: Any, kind: str) -> str | None:
+    """``must be a whole number in [3, 10000], got 1e+300`` for a field with bounds."""
+    info = _field_info(loc)
+    if info is None:
+        return None
+    low = high = None
+    low_open = high_open = False
+    for m in _constraints(info):
+        if getattr(m, "ge", None) is not None or getattr(m, "gt", None) is not None:
+            low_open = getattr(m, "ge", None) is None
+            low = m.gt if low_open else m.ge
+        if getattr(m, "le", None) is not None or getattr(m, "lt", None) is not None:
+            high_open = getattr(m, "le", None) is None
+            high = m.lt if high_open else m.le
+    whole = "int" in str(info.annotation)
+    if low is None and high is None and not whole:
+        return None
+    shown = f"{value:g}" if isinstance(value, float) else repr(value)
+    what = "a whole number" if whole else "a number"
+    if low is not None and high is not None:
+        return f"must be {what} in {'(' if low_open else '['}{low:g}, {high:g}{')' if high_open else ']'}, got {shown}"
+    if low is not None:
+        return f"must be {what} {'>' if low_open else '>='} {low:g}, got {shown}"
+    if high is not None:
+        return f"must be {what} {'<' if high_open else '<='} {high:g}, got {shown}"
+    return f"must be {what}, got {shown}"
+
+
 def _format_errors(exc: ValidationError, index: dict, filename: str) -> str:
     lines = []
     for err in exc.errors(include_url=False):
@@ -142,6 +219,8 @@ def _format_errors(exc: ValidationError, index: dict, filename: str) -> str:
             continue
         if err["type"] == "extra_forbidden":
             msg = "unknown field (check the spelling; see `chaindrive new` for a template)"
+        elif err["type"] in _BOUND_ERRORS:
+            msg = _bound_message(loc, err.get("input"), err["type"]) or msg
         lines.append(f"{_where(filename, _line_for(loc, index))}: {_path(loc)}: {msg}")
     from .._io import cap_lines
 
@@ -301,18 +380,26 @@ def _self_regulating(table: dict[str, Any] | None, filename: str, index: dict) -
         return None
     from .carrier import SelfRegulatingSpec
 
-    for key in ("pivot", "weight", "weight_offset", "stiffness", "preload"):
+    for key, unit in _CARRIER_UNITS.items():
         values = table.get(key)
         for v in values if isinstance(values, (list, tuple)) else [values]:
             if isinstance(v, (int, float)) and not isinstance(v, bool) and v != 0:
+                shown = f"{v:g}" if isinstance(v, float) else str(v)
+                example = f'["{shown} {unit}", "0 {unit}"]' if isinstance(values, (list, tuple)) else f'"{shown} {unit}"'
                 raise InputError(f"{_where(filename, _line_for(('self_regulating', key), index))}: "
-                                 f"self_regulating.{key}: give a unit, e.g. {key} = \"{v} mm\" or \"{v} N\" "
-                                 "as the field needs (see docs/self_regulating.md)", field=f"self_regulating.{key}")
+                                 f"self_regulating.{key}: give a unit, e.g. {key} = {example} "
+                                 "(see docs/self_regulating.md)", field=f"self_regulating.{key}")
 
     try:
         return SelfRegulatingSpec.from_table(table)
     except ChainDriveError as exc:
-        raise _located(exc, ("self_regulating",), filename, index) from None
+        named = re.match(r"self_regulating\.(\w+)", str(exc))  # the key the message is about
+        loc = _loc_of(exc.field) or (("self_regulating", named.group(1)) if named else ("self_regulating",))
+        raise _located(exc, loc, filename, index) from None
+
+
+#: The unit of each quantity of the [self_regulating] table (for the example of a bare number).
+_CARRIER_UNITS = {"pivot": "mm", "weight": "N", "weight_offset": "mm", "stiffness": "N/m", "preload": "N"}
 
 
 def _loc_of(field: str | None) -> tuple:
@@ -330,7 +417,10 @@ def _loc_of(field: str | None) -> tuple:
 
 
 def _located(exc: ChainDriveError, loc: tuple, filename: str, index: dict) -> ChainDriveError:
-    """``exc`` with ``filename:line`` of ``loc`` in front of its message."""
+    """``exc`` with ``filename:line`` of ``loc`` in front of its message (once: a message
+    located already is returned as it is)."""
+    if str(exc).startswith(f"{filename}:"):
+        return exc
     return type(exc)(f"{_where(filename, _line_for(loc, index) if loc else None)}: {exc}", field=exc.field)
 
 

@@ -327,3 +327,8 @@ def _spec(value: Any, cls: type, what: str) -> Any:
                              field=what)
         return cls(**value)
     raise InputError(f"{what} must be a {cls.__name__}, got {type(value).__name__}", field=what)
+
+
+from chaindrive._finite import guard_public  # noqa: E402
+
+guard_public(__name__)  # every public function and dataclass: NaN/inf in or out refused

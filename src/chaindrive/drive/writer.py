@@ -317,7 +317,10 @@ def edit_project_text(text: str, old: Drive, new: Drive, *, header: str = "") ->
     """
     import tomlkit
 
-    doc = tomlkit.parse(text)
+    try:
+        doc = tomlkit.parse(text)
+    except tomlkit.exceptions.ParseError as exc:  # not the project's text: one line, not tomlkit's
+        raise InputError(f"text: not a TOML project file ({exc})", field="text") from None
     wheels = doc.get("wheels", [])
     for w0, w1 in zip(old.wheels, new.wheels, strict=True):
         if w0.position != w1.position:

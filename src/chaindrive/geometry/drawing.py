@@ -698,3 +698,8 @@ def render_png(document: Drawing, path: str | os.PathLike[str], *, dpi: int = 15
     config = Configuration(lineweight_policy=LineweightPolicy.ABSOLUTE, lineweight_scaling=1.0)
     dxf_mpl.qsave(document.modelspace(), str(path), bg="#FFFFFF", fg="#000000", dpi=dpi, config=config,
                   size_inches=(16.0, 16.0 * height / width))
+
+
+from chaindrive._finite import guard_public  # noqa: E402
+
+guard_public(__name__)  # every public function and dataclass: NaN/inf in or out refused

@@ -215,7 +215,7 @@ def bore_limits(outer_diameter: float, *, keyway: bool = True) -> tuple[float, f
     Returns
     -------
     bore_min, bore_max : float
-        [m]; ``bore_max < bore_min`` when nothing fits.
+        [m]; ``bore_max < bore_min`` (0) when nothing fits.
 
     Notes
     -----
@@ -244,7 +244,7 @@ def bore_limits(outer_diameter: float, *, keyway: bool = True) -> tuple[float, f
         cand = min(row.shaft_up_to, fit)
         if cand > row.shaft_over:
             best = max(best, cand)
-    return lo, best
+    return lo, best if math.isfinite(best) else 0.0  # nothing fits: 0 < bore_min, never -inf
 
 
 @dataclass(frozen=True)
@@ -390,3 +390,8 @@ def design_hub(
         bore_range=(lo, hi),
         hub_diameter_range=(hub_min, rim if plain else dmax),
     )
+
+
+from chaindrive._finite import guard_public  # noqa: E402
+
+guard_public(__name__)  # every public function and dataclass: NaN/inf in or out refused

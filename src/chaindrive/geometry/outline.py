@@ -14,12 +14,14 @@ from typing import Any
 import numpy as np
 from numpy.typing import ArrayLike
 
+from .._finite import finite_guard
 from ..errors import InputError
 from ..limits import MAX_ARC_POINTS, MAX_PRIMITIVES, MAX_TEETH, check_size
 
 __all__ = ["Line", "Arc", "Outline", "Primitive", "rotate_points", "check_outline_size"]
 
 
+@finite_guard  # NaN/inf and out-of-range arguments refused (chaindrive._finite)
 def rotate_points(points: ArrayLike, angle: float) -> np.ndarray:
     """Rotate ``(..., 2)`` points counter-clockwise about the origin by ``angle`` [rad].
 

@@ -276,7 +276,9 @@ def side_chamfer_moment(radius: ArrayLike, width: float, tip_radius: float, side
 
     Parameters
     ----------
-    radius, width, tip_radius, side_radius, side_relief : float or array_like
+    radius : float or array_like
+        As in :func:`side_chamfer_thickness` [m].
+    width, tip_radius, side_radius, side_relief : float
         As in :func:`side_chamfer_thickness` [m].
 
     Returns
@@ -605,3 +607,8 @@ def pocket_wheel_part(
             "keyway": "DIN 6885-1:1968 table 1",
         },
     )
+
+
+from chaindrive._finite import guard_public  # noqa: E402
+
+guard_public(__name__)  # every public function and dataclass: NaN/inf in or out refused

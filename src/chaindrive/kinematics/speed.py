@@ -133,3 +133,8 @@ def parse_wheel_speed(text: Any, *, pitch: float, teeth: int, link_chain: bool =
                          mean_chain_speed(sides_per_turn(int(teeth), link_chain), float(pitch), w),
                          "chain_speed", stacklevel=3)
     return w
+
+
+from chaindrive._finite import guard_public  # noqa: E402
+
+guard_public(__name__)  # every public function: NaN/inf in or out refused

@@ -225,3 +225,8 @@ def place_for_wrap(centres: ArrayLike, radii: ArrayLike, sides: ArrayLike | None
     raise InputError(f"no position within ±{reach:.6g} m along ({d[0]:.6g}, {d[1]:.6g}) gives wheel {tgt} a wrap "
                      f"of {math.degrees(float(wrap)):.6g}° with the wheels and spans clear of each other",
                      field="wrap")
+
+
+from chaindrive._finite import guard_public  # noqa: E402
+
+guard_public(__name__)  # every public function: NaN/inf in or out refused, numerical failures one line

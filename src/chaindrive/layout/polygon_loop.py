@@ -571,3 +571,8 @@ def adjust_loop(
     exact = loop(taut).exact and loop(loose).exact
     return LoopAdjustment(links=N, wheel=m, direction=u, taut=float(taut), loose=float(loose), circles=float(x_c),
                           position=moved(taut)[m], exact=exact)
+
+
+from chaindrive._finite import guard_public  # noqa: E402
+
+guard_public(__name__)  # every public function and dataclass: NaN/inf in or out refused

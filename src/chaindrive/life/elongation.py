@@ -149,3 +149,8 @@ def hours_to_elongation(elongation: ArrayLike, hours_to_limit: ArrayLike, limit:
     tl = check_positive("hours_to_limit", hours_to_limit, "h")
     lim = check_positive("limit", limit)
     return tl * e / lim
+
+
+from chaindrive._finite import guard_public  # noqa: E402
+
+guard_public(__name__)  # every public function and dataclass: NaN/inf in or out refused

@@ -190,3 +190,10 @@ def miner_damage(cycles: FatigueCycles, endurance_range: float, *, knee: float =
     eq = equivalent_range(cycles.ranges, cycles.means)
     n = cycles_to_failure(eq, endurance_range, knee=knee, exponent=exponent)
     return float(np.sum(np.where(np.isfinite(n), cycles.counts / n, 0.0)))
+
+
+from chaindrive._finite import guard_public  # noqa: E402
+
+# every public function and dataclass: NaN/inf in or out refused; cycles_to_failure is +inf
+# below the endurance range by its documented meaning; rainflow_cycles checks its samples itself
+guard_public(__name__, skip=("cycles_to_failure", "rainflow_cycles"))

@@ -305,3 +305,9 @@ def jump_over_tension(back_tension: float, ratio: float, seated: int) -> float:
     if b == 0.0:
         return math.inf
     return t2 * b ** (-n)
+
+
+from chaindrive._finite import finite_guard  # noqa: E402
+
+# NaN/inf arguments refused, an overflow one line; +inf stays the documented answer of ratio 0
+jump_over_tension = finite_guard(jump_over_tension, check_result=False)

@@ -296,3 +296,8 @@ def wear_life(model: str = "rating", *, elongation_limit: float=0.03, wheels: in
          else check_nonnegative("hours", hours, "h"))
     return WearLife(model=model, hours=t, elongation=e * t / t_lim, elongation_limit=e,
                     hours_to_limit=float(t_lim))
+
+
+from chaindrive._finite import guard_public  # noqa: E402
+
+guard_public(__name__)  # every public function and dataclass: NaN/inf in or out refused

@@ -275,3 +275,8 @@ def dynamic_factor(tension: ArrayLike, dynamic_tension: ArrayLike) -> FloatOrArr
     F = check_positive("tension", tension, "N")
     Fd = check_nonnegative("dynamic_tension", dynamic_tension, "N")
     return 1.0 + Fd / F
+
+
+from chaindrive._finite import guard_public  # noqa: E402
+
+guard_public(__name__)  # every public function and dataclass: NaN/inf in or out refused

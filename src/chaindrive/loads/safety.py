@@ -267,3 +267,8 @@ def static_safety_factor(breaking_force: ArrayLike, tension: ArrayLike) -> Float
     Fb = check_positive("breaking_force", breaking_force, "N")
     F = check_positive("tension", tension, "N")
     return Fb / F
+
+
+from chaindrive._finite import guard_public  # noqa: E402
+
+guard_public(__name__)  # every public function and dataclass: NaN/inf in or out refused

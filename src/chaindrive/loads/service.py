@@ -52,3 +52,8 @@ def service_factor(load: str = "smooth", driver: str = "electric_motor") -> floa
     for k, v in row.items():
         drivers.add(k, v)
     return float(drivers.get(driver))
+
+
+from chaindrive._finite import guard_public  # noqa: E402
+
+guard_public(__name__)  # every public function and dataclass: NaN/inf in or out refused

@@ -132,3 +132,8 @@ def chain_speed(pitch: ArrayLike, teeth: ArrayLike, angular_velocity: ArrayLike)
     z = check_teeth("teeth", teeth, minimum=2)
     w = check_positive("angular_velocity", angular_velocity, "rad/s")
     return mean_chain_speed(z, p, w)
+
+
+from chaindrive._finite import guard_public  # noqa: E402
+
+guard_public(__name__)  # every public function and dataclass: NaN/inf in or out refused

@@ -128,3 +128,8 @@ def shaft_load(tensions: ArrayLike, directions: ArrayLike) -> tuple[FloatOrArray
     fx = np.sum(F * np.cos(a), axis=-1)
     fy = np.sum(F * np.sin(a), axis=-1)
     return np.hypot(fx, fy), np.arctan2(fy, fx)
+
+
+from chaindrive._finite import guard_public  # noqa: E402
+
+guard_public(__name__)  # every public function and dataclass: NaN/inf in or out refused

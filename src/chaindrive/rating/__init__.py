@@ -524,3 +524,8 @@ def rated_power_curve(chain: Chain | str, teeth: int, angular_velocity: np.ndarr
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", ValidityRangeWarning)
         return RATING_CURVES.get(name)(ch, int(teeth), np.asarray(angular_velocity, dtype=float))
+
+
+from chaindrive._finite import guard_public  # noqa: E402
+
+guard_public(__name__)  # every public function and dataclass: NaN/inf in or out refused

@@ -623,3 +623,8 @@ def lubrication_type(chain_speed: ArrayLike, pitch: ArrayLike) -> np.ndarray:
     for r in rec:
         warnings.warn(str(r.message), ValidityRangeWarning, stacklevel=2)
     return np.where(v <= va, "I", np.where(v <= vb, "II", "III"))
+
+
+from chaindrive._finite import guard_public  # noqa: E402
+
+guard_public(__name__)  # every public function and dataclass: NaN/inf in or out refused

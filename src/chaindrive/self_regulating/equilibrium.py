@@ -510,3 +510,8 @@ def rational_pivot(geometry: CarrierGeometry, coefficient: float,
     pivot = pivot_at(v)
     dev = float(np.max(np.abs(_geometric_psi(geo, np.linspace(e0, e1, 9), pivot) - psi_star)))
     return pivot, dev
+
+
+from chaindrive._finite import guard_public  # noqa: E402
+
+guard_public(__name__)  # every public function and dataclass: NaN/inf in or out refused

@@ -239,3 +239,8 @@ def carrier_natural_frequency(stiffness: ArrayLike, inertia: ArrayLike) -> np.nd
             "equilibrium is statically unstable")
     J = check_positive("inertia", inertia)
     return np.sqrt(K / J)
+
+
+from chaindrive._finite import guard_public  # noqa: E402
+
+guard_public(__name__)  # every public function and dataclass: NaN/inf in or out refused

@@ -573,3 +573,8 @@ def _kappa(reference_centre, fixed_centre, kind, pivot, direction):
         raise InputError("direction: a sliding carrier needs the slide direction (x, y)")
     u = _unit("direction", direction)
     return np.where(np.sum(u * n_ref, axis=-1) >= 0, 1.0, -1.0)
+
+
+from chaindrive._finite import guard_public  # noqa: E402
+
+guard_public(__name__)  # every public function and dataclass: NaN/inf in or out refused

@@ -115,3 +115,8 @@ def link_example(*, chain: str = "18x64", teeth: int = 8, links: int = 60,
                 gravity=(0.0, -9.81) if gravity else (0.0, 0.0))
     opts.update(kwargs)
     return SimulationModel(**opts)
+
+
+from chaindrive._finite import guard_public  # noqa: E402
+
+guard_public(__name__)  # every public function and dataclass: NaN/inf in or out refused

@@ -421,3 +421,8 @@ def conveyor_example(*, ramp_time: float = 2.0, **kwargs: Any) -> SimulationMode
     (2194, True, 1)
     """
     return model_from_drive(conveyor_drive(**kwargs), ramp_time=ramp_time)
+
+
+from chaindrive._finite import guard_public  # noqa: E402
+
+guard_public(__name__)  # every public function and dataclass: NaN/inf in or out refused

@@ -659,3 +659,8 @@ class SimulationModel:
         if rate > 0.0:
             dt = min(dt, 2.0 * math.pi / (per_seat * rate))
         return dt
+
+
+from chaindrive._finite import guard_public  # noqa: E402
+
+guard_public(__name__)  # every public function and dataclass: NaN/inf in or out refused

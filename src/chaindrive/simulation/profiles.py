@@ -147,3 +147,8 @@ def iso_flank(pitch: float, teeth: int, roller_radius: float, seat_radius: float
     d = (corner - ce) / re
     return (float(re), float(ce[0]), float(ce[1]), float(corner[0]), float(corner[1]),
             float(d[0]), float(d[1]))
+
+
+from chaindrive._finite import guard_public  # noqa: E402
+
+guard_public(__name__)  # every public function and dataclass: NaN/inf in or out refused

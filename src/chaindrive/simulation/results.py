@@ -9,6 +9,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
+from .._finite import finite_guard
 from .._presenters import view
 from .._results import Result, quantity
 from . import _kernel as K
@@ -119,6 +120,7 @@ class SimulationResult(Result):
         return view("plot", self, ax=ax)
 
 
+@finite_guard  # NaN/inf and out-of-range arguments refused (chaindrive._finite)
 def span_tension(positions: np.ndarray, tension: np.ndarray, span: np.ndarray,
                  other: np.ndarray) -> np.ndarray:
     """Tension [N] of the link nearest the middle of ``span`` in each record.

@@ -727,3 +727,8 @@ def conservative(state: State) -> State:
     return State(state.pos.copy(), state.vel.copy(), state.ws.copy(), wp, state.gd.copy(), par,
                  state.relax_time, state.relax_steps, state.time)
 
+
+
+from chaindrive._finite import guard_public  # noqa: E402
+
+guard_public(__name__)  # every public function and dataclass: NaN/inf in or out refused

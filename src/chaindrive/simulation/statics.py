@@ -285,3 +285,8 @@ def solve_static(x0: np.ndarray, npins: int, wp: np.ndarray, theta: np.ndarray,
         f"{max_iterations} iterations (largest residual force {res:.3g} N, tolerance "
         f"{force_tolerance:.3g} N); a drive whose chain can hang off a wheel or whose wheels "
         f"have no seated roller has no single static state")
+
+
+from chaindrive._finite import guard_public  # noqa: E402
+
+guard_public(__name__)  # every public function and dataclass: NaN/inf in or out refused

@@ -361,3 +361,8 @@ def plan_rows(kind: str, variables: Sequence[Variable], *, samples: int | None =
     columns = [transform(u[:, j], v) for j, v in enumerate(variables)]
     return [tuple(_round(float(c[i]), v.integer) for c, v in zip(columns, variables, strict=True))
             for i in range(u.shape[0])]
+
+
+from chaindrive._finite import guard_public  # noqa: E402
+
+guard_public(__name__)  # every public function and dataclass: NaN/inf in or out refused

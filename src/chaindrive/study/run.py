@@ -27,11 +27,14 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
-from .._io import atomic_write_bytes, atomic_write_text, folder_lock
+from .._io import atomic_write_bytes, folder_lock
 from .._results import jsonable
 from ..errors import InfeasibleError, InputError
 from ._columns import array as _array
 from ._columns import column_type as _column_type
+from .folder import META_KEY as _META_KEY
+from .folder import fingerprint, plan_parts, prepare_folder, read_part
+from .progress import LONG_STUDY, QuietProgress, progress_bar
 from .spec import MAXIMUM_BATCH_SIZE, Study, set_path
 
 if TYPE_CHECKING:
@@ -47,8 +50,6 @@ __all__ = ["analysis_result", "lookup", "evaluate_variant", "run_batch", "run_ba
 #: its variants are evaluated together (chaindrive.study.batch: the fixed cost of a batch is a
 #: few project reads and one analysis of the base drive, about 20 ms).
 DEFAULT_BATCH_SIZE = 5000
-
-_META_KEY = b"chaindrive.study"
 
 #: Error prefix of the rows of a batch lost on the cluster (computed again on a rerun).
 CLUSTER_FAILURE = "batch failed on the cluster"
@@ -191,7 +192,7 @@ def evaluate_variant(base: dict, inputs: dict[str, Any], outputs: Sequence[str],
     >>> round(row["loads.chain_speed"], 3), row["error"]
     (11.663, None)
     >>> evaluate_variant(base, {"wheels.0.teeth": 2}, ["loads.maximum"])["error"]
-    'InputError: variant: wheels[0].teeth: Input should be greater than or equal to 3'
+    'InputError: variant: wheels[0].teeth: must be a whole number in [3, 10000], got 2'
     """
     import copy
 
@@ -309,20 +310,19 @@ def _parquet():
     return pa, pq
 
 
-def _parts(directory: Path) -> list[Path]:
-    return sorted((Path(directory) / "results").glob("part-*.parquet"))
-
-
 def existing_keys(directory: str | Path) -> set[str]:
     """Keys of the variants done in a study folder.
 
     A row of a batch lost on the cluster (error ``"batch failed on the cluster: ..."``)
     does not count: a rerun computes that variant again.
     """
-    _, pq = _parquet()
+    _parquet()
     keys: set[str] = set()
-    for f in _parts(Path(directory)):
-        part = pq.read_table(f, columns=["key", "error"]).to_pydict()
+    for f in plan_parts(Path(directory)):
+        table = read_part(f, ["key", "error"])
+        if table is None:
+            continue
+        part = table.to_pydict()
         keys.update(k for k, e in zip(part["key"], part["error"], strict=True)
                     if not (e or "").startswith(CLUSTER_FAILURE))
     return keys
@@ -331,20 +331,20 @@ def existing_keys(directory: str | Path) -> set[str]:
 def read_results(directory: str | Path) -> pa.Table:
     """All rows of a study folder as one :class:`pyarrow.Table` (each key once).
 
-    Part files written by different runs are unified (a column missing from a part is
-    null there). A key written more than once (a variant of a lost batch computed again)
-    keeps its newest row. Rows are sorted by variant number.
+    Only the parts of the folder's plan are read (:mod:`chaindrive.study.folder`); a damaged
+    part is left out with a warning. Part files written by different runs are unified (a
+    column missing from a part is null there). A key written more than once (a variant of a
+    lost batch computed again) keeps its newest row. Rows are sorted by variant number.
 
     Raises
     ------
     InputError
         No results in the folder.
     """
-    pa, pq = _parquet()
-    files = _parts(Path(directory))
-    if not files:
+    pa, _ = _parquet()
+    tables = [t for t in (read_part(f) for f in plan_parts(Path(directory))) if t is not None]
+    if not tables:
         raise InputError(f"study folder {str(directory)!r} holds no results (results/part-*.parquet)")
-    tables = [pq.read_table(f) for f in files]
     schema = pa.unify_schemas([t.schema for t in tables], promote_options="permissive")
     columns: dict[str, list] = {f.name: [] for f in schema}
     for t in tables:
@@ -386,13 +386,14 @@ class _PartWriter:
             else:
                 self.input_types[v.path] = pa.float64()
         self.output_types: dict[str, Any] = {}
-        for f in _parts(Path(directory)):
+        for f in plan_parts(Path(directory)):
             schema = self.pq.read_schema(f)
             for name in study.outputs:
                 if name in schema.names and not pa.types.is_null(schema.field(name).type):
                     self.output_types.setdefault(name, schema.field(name).type)
         meta = {"name": study.name, "units": {v.path: v.unit for v in study.variables},
-                "inputs": [v.path for v in study.variables], "outputs": list(study.outputs)}
+                "inputs": [v.path for v in study.variables], "outputs": list(study.outputs),
+                "fingerprint": fingerprint(study)}
         self.metadata = {_META_KEY: json.dumps(meta).encode("utf-8")}
 
     def write(self, columns: dict[str, list], values: dict[str, tuple]) -> Path:
@@ -508,30 +509,6 @@ class StudyRun:
         return self.computed / self.compute_seconds if self.compute_seconds > 0 else 0.0
 
 
-def _prepare(directory: Path, study: Study) -> None:
-    """Create the folder, refuse one that holds another study, write ``study.json``."""
-    described = jsonable(study.describe())
-    if directory.exists() and not directory.is_dir():
-        raise InputError(f"--output: {str(directory)!r} is a file; give a folder")
-    try:
-        directory.mkdir(parents=True, exist_ok=True)
-    except OSError as exc:
-        raise InputError(f"--output: cannot create the folder {str(directory)!r}: "
-                         f"{exc.strerror or exc}") from None
-    previous = directory / "study.json"
-    if previous.exists():
-        try:
-            old = json.loads(previous.read_text(encoding="utf-8"))
-        except (OSError, ValueError):
-            old = {}
-        same = ([v.get("path") for v in old.get("variables", [])] ==
-                [v["path"] for v in described["variables"]])
-        if not same:
-            raise InputError(f"--output: {str(directory)!r} holds another study (varying "
-                             f"{[v.get('path') for v in old.get('variables', [])]}); give a new folder")
-    atomic_write_text(previous, json.dumps(described, indent=2), force=True, option="--output")
-
-
 def _check_address(scheduler: str) -> None:
     if not scheduler.startswith(("tcp://", "tls://", "inproc://", "ucx://", "ws://", "wss://")):
         raise InputError(f"--scheduler: give the address as tcp://HOST:PORT, got {scheduler!r}")
@@ -566,28 +543,9 @@ def _client(scheduler: str | None, workers: int | None, timeout: float = 10.0):
     return Client(cluster), cluster
 
 
-def _progress(enabled: bool):
-    if not enabled:
-        return None
-    from rich.console import Console
-    from rich.progress import (
-        BarColumn,
-        MofNCompleteColumn,
-        Progress,
-        TextColumn,
-        TimeElapsedColumn,
-        TimeRemainingColumn,
-    )
-
-    return Progress(TextColumn("{task.description}"), BarColumn(), MofNCompleteColumn(),
-                    TextColumn("{task.fields[rate]}"), TimeElapsedColumn(),
-                    TextColumn("ETA"), TimeRemainingColumn(),
-                    console=Console(stderr=True), refresh_per_second=4)
-
-
 def run_study(study: Study, directory: str | Path, *, scheduler: str | None = None,
               workers: int | None = None, batch_size: int | None = None,
-              progress: bool = True, wait_for_workers: float = 60.0) -> StudyRun:
+              progress: bool = True, wait_for_workers: float = 60.0, force: bool = False) -> StudyRun:
     """Run every variant of ``study`` not yet in ``directory`` on a dask cluster.
 
     Parameters
@@ -608,6 +566,9 @@ def run_study(study: Study, directory: str | Path, *, scheduler: str | None = No
     wait_for_workers : float
         How long to wait for the first worker of an existing cluster [s] (and, within
         3...10 s, for the scheduler to answer).
+    force : bool
+        Start over in a folder holding the results of another plan (they are deleted);
+        without it such a folder is refused (:mod:`chaindrive.study.folder`).
 
     Returns
     -------
@@ -616,7 +577,7 @@ def run_study(study: Study, directory: str | Path, *, scheduler: str | None = No
     Raises
     ------
     InputError
-        Bad batch size, worker count or scheduler address.
+        Bad batch size, worker count or scheduler address; the folder holds another plan.
     InfeasibleError
         No worker joined the scheduler in time.
 
@@ -635,12 +596,13 @@ def run_study(study: Study, directory: str | Path, *, scheduler: str | None = No
     # compute every variant again); the lock is the run folders' (.NAME.lock beside it)
     with folder_lock(directory, option="--output", what="study"):
         return _run_study(study, directory, t_start, scheduler=scheduler, workers=workers,
-                          batch_size=batch_size, progress=progress, wait_for_workers=wait_for_workers)
+                          batch_size=batch_size, progress=progress, wait_for_workers=wait_for_workers,
+                          force=force)
 
 
 def _run_study(study: Study, directory: Path, t_start: float, *, scheduler: str | None,
                workers: int | None, batch_size: int | None, progress: bool,
-               wait_for_workers: float) -> StudyRun:
+               wait_for_workers: float, force: bool = False) -> StudyRun:
     batch_size = batch_size if batch_size is not None else study.batch_size
     if batch_size is not None and not 1 <= batch_size <= MAXIMUM_BATCH_SIZE:
         raise InputError(f"batch_size must lie in [1, {MAXIMUM_BATCH_SIZE}], got {batch_size}")
@@ -648,14 +610,15 @@ def _run_study(study: Study, directory: Path, t_start: float, *, scheduler: str 
         raise InputError(f"workers must lie in [1, 256], got {workers}")
     if scheduler:
         _check_address(scheduler)
-    bar = _progress(progress)
+    bar = progress_bar(progress)
     if bar is not None:
         bar.start()
         task = bar.add_task("planning", total=None, rate="")
     client = cluster = None
     try:
         rows = study.rows()
-        _prepare(directory, study)
+        prepare_folder(directory, study, force=force)
+        plan_parts(directory, on_damaged="recompute")  # a damaged part: moved aside, computed again
         done = existing_keys(directory)
         values: dict[str, tuple] = {}
 
@@ -679,6 +642,7 @@ def _run_study(study: Study, directory: Path, t_start: float, *, scheduler: str 
             run.seconds = time.perf_counter() - t_start
             return run
         estimate = len(rows) - len(done)  # at most this many to compute (known when planned)
+        quiet = QuietProgress(estimate) if bar is None and estimate >= LONG_STUDY else None
         if bar is not None:
             bar.update(task, description="starting the cluster", total=estimate, completed=0)
         client, cluster = _client(scheduler, workers, timeout=min(10.0, max(3.0, wait_for_workers)))
@@ -721,6 +685,8 @@ def _run_study(study: Study, directory: Path, t_start: float, *, scheduler: str 
             run.compute_seconds = time.perf_counter() - t0
             if bar is not None:
                 bar.update(task, completed=run.computed, rate=f"{run.rate:.1f} variants/s")
+            if quiet is not None:
+                quiet.update(run.computed, run.rate)
 
         # batches go to the cluster as they are planned (the workers start on the first
         # while the client makes the keys of the next); finished ones are written meanwhile

@@ -100,3 +100,8 @@ def torsional_frequency(inertia: ArrayLike, radius: ArrayLike, stiffness: ArrayL
     r = check_positive("radius", radius, "m")
     k = check_positive("stiffness", stiffness, "N/m")
     return r * np.sqrt(k / j)
+
+
+from chaindrive._finite import guard_public  # noqa: E402
+
+guard_public(__name__)  # every public function and dataclass: NaN/inf in or out refused

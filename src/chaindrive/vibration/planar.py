@@ -218,3 +218,8 @@ def planar_forced_response(
     amp = [abs(end_amplitude)] + [abs(x[dof[j]] @ normal_1) for j in range(1, n)]
     amp += [abs(x[dof[j]] @ normal_2) for j in range(n + 1, 2 * n)]
     return float(max(amp)), float(abs(x[dof[n, 1]]))
+
+
+from chaindrive._finite import guard_public  # noqa: E402
+
+guard_public(__name__)  # every public function and dataclass: NaN/inf in or out refused

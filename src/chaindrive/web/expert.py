@@ -17,6 +17,7 @@ from fastapi import APIRouter, Request
 from fastapi.responses import HTMLResponse, JSONResponse, Response
 
 from ..errors import ChainDriveError
+from .bodies import SimulationBody, openapi_body, read_body
 from .fields import FieldError, FieldSpec, parse_field, parse_integer
 
 __all__ = ["router", "kinematics_result", "crawler_result", "wheel_result", "summary_table", "dimension_rows",
@@ -419,17 +420,14 @@ def router(ctx: Any) -> APIRouter:
         return ctx.render(request, "expert.html", page="simulation", pages=PAGES, state=state, errors={},
                           result=None, choices=CHOICES)
 
-    @r.post("/api/jobs/simulate")
+    @r.post("/api/jobs/simulate", openapi_extra=openapi_body(SimulationBody))
     async def start_simulation(request: Request):
         from .tasks import MAX_FRAMES, MAX_SIMULATED_TIME
 
-        form = dict(await request.form()) if "form" in request.headers.get("content-type", "") else {}
-        if not form:
-            try:
-                form = await request.json()
-            except ValueError:
-                form = {}
-        state = _state("simulation", {k: str(v) for k, v in form.items()})
+        form, refused = await read_body(request, SimulationBody)  # 400 malformed, 422 by field
+        if refused is not None:
+            return refused
+        state = _state("simulation", {k: str(v) for k, v in (form or {}).items() if v is not None})
         errors = {}
         payload: dict[str, Any] = {"example": state["example"]}
         for key, spec in (("speed", FieldSpec("rad/s", 0.0, 60.0, example="5 rad/s")),

@@ -13,6 +13,8 @@ Work that is quick but not free (the live analysis of the studio) goes through
 from __future__ import annotations
 
 import asyncio
+import contextlib
+import gc
 import multiprocessing
 import os
 import shutil
@@ -329,7 +331,8 @@ class Gate:
                 self._count -= 1
 
     def close(self) -> None:
-        """Stop the worker processes."""
+        """Stop the worker processes and release the pool's queues (their semaphores are
+        unlinked now, not reported as leaked by multiprocessing's resource tracker at exit)."""
         pool, self._pool = self._pool, None
         if pool is not None:
             procs = list(getattr(pool, "_processes", {}).values())
@@ -339,3 +342,10 @@ class Gate:
                     proc.kill()
                 except (AttributeError, OSError, ValueError):  # gone already
                     pass
+            for proc in procs:
+                with contextlib.suppress(AttributeError, OSError, ValueError, AssertionError):
+                    proc.join(timeout=5)
+            with contextlib.suppress(Exception):  # the manager thread notices the killed workers
+                pool.shutdown(wait=True, cancel_futures=True)
+            del pool, procs
+            gc.collect()

@@ -452,3 +452,8 @@ def elastic_loop(psi: ArrayLike, pitch: float, teeth: int, stiffness: float, spr
     rigid = cam_force(E, A, l, uz, up, leaving_displacement(p, t, z, kind))
     return ElasticLoop(psi=p, force=Tb - Ta, rigid_force=np.asarray(rigid), lag=theta - p,
                        tension_tensioning_side=Ta, tension_driving_side=Tb, tension_return=Tc)
+
+
+from chaindrive._finite import guard_public  # noqa: E402
+
+guard_public(__name__)  # every public function and dataclass: NaN/inf in or out refused

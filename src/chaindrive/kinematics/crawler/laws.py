@@ -527,3 +527,8 @@ def leaving_displacement(sprocket_angle: ArrayLike, pitch: float, teeth: int, gu
     return _out(n * t + t - u_in)
 
 
+
+
+from chaindrive._finite import guard_public  # noqa: E402
+
+guard_public(__name__)  # every public function and dataclass: NaN/inf in or out refused
