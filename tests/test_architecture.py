@@ -51,10 +51,7 @@ LAYERS: tuple[tuple[str, tuple[str, ...]], ...] = (
 
 #: Circles still to be taken apart (a ratchet: a new circle fails, and so does an entry
 #: here that no longer exists; the list only shrinks).
-KNOWN_CIRCLES: list[list[str]] = [
-    ["chaindrive.study.batch", "chaindrive.study.run", "chaindrive.study.summary"],
-    ["chaindrive.web.expert", "chaindrive.web.jobs", "chaindrive.web.studio", "chaindrive.web.tasks"],
-]
+KNOWN_CIRCLES: list[list[str]] = []
 
 MAX_LINES = 800
 #: Modules allowed over MAX_LINES: the numba kernel (one jitted unit) only.

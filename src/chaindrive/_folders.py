@@ -45,7 +45,7 @@ import re
 import shutil
 import tempfile
 import warnings
-from collections.abc import Iterator
+from collections.abc import Iterable, Iterator
 from pathlib import Path
 from typing import Any
 
@@ -156,7 +156,7 @@ def run_marker(folder: Path) -> str:
     return json.dumps({"files": files, "sha256": {f: _sha256(folder / f) for f in files}}, indent=1) + "\n"
 
 
-def protect_inputs(real: Path, inputs, option: str, shown: str) -> None:
+def protect_inputs(real: Path, inputs: Iterable[str | os.PathLike[str]] | None, option: str, shown: str) -> None:
     """Refuse a run folder that holds one of the command's input files."""
     for given in inputs or ():
         try:

@@ -29,6 +29,7 @@ from typing import Any
 
 from .._results import Result, jsonable
 from .spec import set_path
+from .variant import evaluate_variant, lookup, one_line
 
 __all__ = ["evaluate_batch", "evaluate_columns", "probe_path"]
 
@@ -151,7 +152,6 @@ class _Outputs:
 
     def __init__(self, outputs: Sequence[str]) -> None:
         from ..analysis.parts import get_part, part_names
-        from .run import lookup
 
         self.lookup = lookup
         names = set(part_names())
@@ -186,12 +186,11 @@ class _Outputs:
             # as evaluate_variant: a drive that cannot be simulated is the row's error,
             # every output of the row empty
             from ._dynamics import HEAD, dynamics_result
-            from .run import _one_line
 
             try:
                 special[HEAD] = dynamics_result(analysis.drive)
             except Exception as exc:  # noqa: BLE001 - a failing variant is a result, not a stop
-                columns["error"][i] = _one_line(exc)
+                columns["error"][i] = one_line(exc)
                 return
         for out, head, rest in self.plan:
             part = self.parts.get(head)
@@ -258,7 +257,6 @@ def evaluate_columns(base: dict, variants: Sequence[dict[str, Any]], outputs: Se
     Parquet part file stores; no dict per variant)."""
     from ..analysis.batch import analyze_variants
     from ..drive.project import project_from_mapping
-    from .run import _one_line
 
     n = len(variants)
     columns: dict[str, list[Any]] = {name: [None] * n for name in [*outputs, "error", "warnings"]}
@@ -326,14 +324,13 @@ def evaluate_columns(base: dict, variants: Sequence[dict[str, Any]], outputs: Se
         for i, analysis in rows_of_group:
             if isinstance(analysis, BaseException):
                 if len(members) > 1 or fast:
-                    from .run import evaluate_variant
 
                     row = evaluate_variant(base, variants[i], outputs, parts=parts)  # the exact message
                     for name in [*outputs, "error", "warnings"]:
                         columns[name][i] = row[name]
                     timed[i] = (row["seconds"], row["cpu_seconds"])
                 else:
-                    columns["error"][i] = _one_line(analysis)
+                    columns["error"][i] = one_line(analysis)
                 continue
             outs.fill(columns, i, analysis)
             own = analysis.warnings

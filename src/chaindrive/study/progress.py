@@ -5,6 +5,10 @@ from __future__ import annotations
 
 import sys
 import time
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:
+    from rich.progress import Progress
 
 __all__ = ["LONG_STUDY", "progress_bar", "QuietProgress"]
 
@@ -16,7 +20,7 @@ LONG_STUDY = 10_000
 LINE_EVERY = 60.0
 
 
-def progress_bar(enabled: bool):
+def progress_bar(enabled: bool) -> Progress | None:
     """The rich progress bar with ETA on stderr (None when disabled)."""
     if not enabled:
         return None

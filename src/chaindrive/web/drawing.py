@@ -13,7 +13,7 @@ from xml.sax.saxutils import escape
 if TYPE_CHECKING:
     from ..drive.model import Drive
 
-__all__ = ["drive_svg"]
+__all__ = ["drive_svg", "workshop_drawing"]
 
 _COLOURS = {"tight": "#c0392b", "slack": "#2471a3", "": "#555"}
 
@@ -178,3 +178,18 @@ def drive_svg(layout: dict[str, Any], drive: Drive, *, units: str = "metric", wi
                    f'{layout["links"]} links</text>')
     out.append("</svg>")
     return "".join(out)
+
+
+def workshop_drawing(wheel: Any) -> bytes:
+    """The workshop drawing of a sprocket or a pocket wheel as DXF (what ``chaindrive
+    sprocket --dxf`` / ``pocket-wheel --dxf`` write: views, bore, keyway, tables, title block)."""
+    import io
+
+    from ..geometry import PocketWheel
+    from ..geometry.drawing import part_drawing
+    from ..geometry.part import pocket_wheel_part, sprocket_part
+
+    part = pocket_wheel_part(wheel) if isinstance(wheel, PocketWheel) else sprocket_part(wheel)
+    buf = io.StringIO()
+    part_drawing(part).write(buf)
+    return buf.getvalue().encode("utf-8")

@@ -18,10 +18,16 @@ from fastapi.responses import HTMLResponse, JSONResponse, Response
 
 from ..errors import ChainDriveError
 from .bodies import SimulationBody, openapi_body, read_body
+from .drawing import workshop_drawing
 from .fields import FieldError, FieldSpec, parse_field, parse_integer
 
 __all__ = ["router", "kinematics_result", "crawler_result", "wheel_result", "summary_table", "dimension_rows",
-           "workshop_drawing", "simulation_rows", "MAX_POINTS"]
+           "simulation_rows", "MAX_POINTS"]
+
+#: Longest simulated time a web job may ask for [s].
+MAX_SIMULATED_TIME = 3.0
+#: Most animation frames a web job may ask for.
+MAX_FRAMES = 60
 
 #: Samples per period on the expert pages and in ``/api/kinematics``.
 MAX_POINTS = 5001
@@ -310,21 +316,6 @@ def wheel_result(page: str, state: dict[str, str]) -> dict[str, Any]:
             "sources": list(sources.values()), "drawing": page == "pocket-wheel"}
 
 
-def workshop_drawing(wheel: Any) -> bytes:
-    """The workshop drawing of a sprocket or a pocket wheel as DXF (what ``chaindrive
-    sprocket --dxf`` / ``pocket-wheel --dxf`` write: views, bore, keyway, tables, title block)."""
-    import io
-
-    from ..geometry import PocketWheel
-    from ..geometry.drawing import part_drawing
-    from ..geometry.part import pocket_wheel_part, sprocket_part
-
-    part = pocket_wheel_part(wheel) if isinstance(wheel, PocketWheel) else sprocket_part(wheel)
-    buf = io.StringIO()
-    part_drawing(part).write(buf)
-    return buf.getvalue().encode("utf-8")
-
-
 def wheel_file(page: str, state: dict[str, str], kind: str) -> bytes:
     """The wheel of an expert page: the workshop drawing (pocket wheel) or the outline
     (track wheel) as DXF in mm, or the outline as SVG."""
@@ -422,8 +413,6 @@ def router(ctx: Any) -> APIRouter:
 
     @r.post("/api/jobs/simulate", openapi_extra=openapi_body(SimulationBody))
     async def start_simulation(request: Request):
-        from .tasks import MAX_FRAMES, MAX_SIMULATED_TIME
-
         form, refused = await read_body(request, SimulationBody)  # 400 malformed, 422 by field
         if refused is not None:
             return refused

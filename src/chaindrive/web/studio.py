@@ -276,7 +276,7 @@ def _wheel_file(design: Any, kind: str) -> bytes:
     writes), or its outline as SVG."""
     from ..geometry import PocketWheel, Sprocket
     from ..geometry.export import svg_text
-    from .expert import workshop_drawing
+    from .drawing import workshop_drawing
 
     chain = design.chain
     z = design.teeth_driving

@@ -25,10 +25,8 @@ from ..workflows import analyze as _analyze  # noqa: E402,F401
 
 __all__ = ["run_task", "TASKS"]
 
-#: Longest simulated time a web job may ask for [s].
-MAX_SIMULATED_TIME = 3.0
-#: Most animation frames a web job may ask for.
-MAX_FRAMES = 60
+from .expert import simulation_rows  # noqa: E402
+from .workers import worker_setup  # noqa: E402
 
 
 def _report(send: Any, payload: dict[str, Any], folder: Path) -> tuple[dict, dict]:
@@ -78,8 +76,6 @@ def _simulate(send: Any, payload: dict[str, Any], folder: Path) -> tuple[dict, d
     summary = jsonable(res.summary)
     (folder / "simulation.json").write_text(json.dumps(summary, indent=2), encoding="utf-8")
     files["simulation.json"] = str(folder / "simulation.json")
-    from .expert import simulation_rows
-
     return files, {"summary": summary, "rows": simulation_rows(summary)}
 
 
@@ -88,8 +84,6 @@ TASKS = {"report": _report, "simulate": _simulate}
 
 def run_task(send: Any, kind: str, payload: dict[str, Any], folder: str, server_pid: int | None = None) -> None:
     """Entry point of a worker process: run task ``kind`` and report through ``send``."""
-    from .jobs import worker_setup
-
     worker_setup(server_pid)
     try:
         files, result = TASKS[kind](send, payload, Path(folder))
