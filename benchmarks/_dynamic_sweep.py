@@ -18,8 +18,13 @@ import warnings
 from collections.abc import Iterator
 from dataclasses import asdict, dataclass
 from pathlib import Path
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
+
+if TYPE_CHECKING:
+    from chaindrive.drive import Drive
+    from chaindrive.simulation import SimulationModel
 
 ROOT = Path(__file__).resolve().parents[1]
 CACHE = ROOT / "benchmarks" / "data" / "dynamic_sweep.csv"
@@ -134,6 +139,23 @@ def periods_and_settle(drive) -> tuple[int, float]:
     return int(min(80, max(12, math.ceil(0.25 / tooth)))), 2.5
 
 
+def sim_model(drive: Drive, **kwargs: Any) -> SimulationModel:
+    """The simulation model of ``drive`` with ``EA`` of all strands, as the analysis
+    (model_from_drive's default is one strand's); ``kwargs`` as model fields."""
+    from chaindrive.chains.stiffness import chain_axial_stiffness
+    from chaindrive.simulation import model_from_drive
+
+    return model_from_drive(drive, axial_stiffness=chain_axial_stiffness(drive.chain) * drive.chain.strands, **kwargs)
+
+
+def tooth_peaks(drive: Drive, t: np.ndarray, tension: np.ndarray, start: float | None = None) -> np.ndarray:
+    """The largest tension of each whole tooth period of the window from ``start`` [s]
+    (default its first sample) [N]."""
+    tooth = 2 * math.pi / drive.speed / drive.driving_wheel.teeth
+    t0s = np.arange(t[0] if start is None else start, t[-1] - tooth, tooth)
+    return np.array([tension[(t >= t0) & (t < t0 + tooth)].max() for t0 in t0s])
+
+
 def settled_run(drive, periods: int, settle: float, spacing: float = 8e-6,
                 **kwargs) -> tuple[np.ndarray, np.ndarray]:
     """Simulated time [s] and tight-span tension [N] over ``periods`` tooth periods after
@@ -142,11 +164,6 @@ def settled_run(drive, periods: int, settle: float, spacing: float = 8e-6,
     ``π √(m/k_c)`` ≈ 50 µs, and samples spread over the settling too came every 140 µs,
     nearly in step with the tooth period: the window's mean and peaks were aliased,
     +30 % and +75 % on S35). ``kwargs``: model fields."""
-    import sys
-
-    sys.path.insert(0, str(ROOT / "benchmarks"))
-    from dynamic_load import sim_model
-
     from chaindrive.simulation import simulate
 
     model = sim_model(drive, **kwargs)
@@ -158,11 +175,6 @@ def settled_run(drive, periods: int, settle: float, spacing: float = 8e-6,
 
 def simulate_row(s: SweepDrive) -> SweepRow:
     """Simulate one sweep drive and collect its row."""
-    import sys
-
-    sys.path.insert(0, str(ROOT / "benchmarks"))
-    from dynamic_load import tooth_peaks
-
     from chaindrive.analysis import analyze_drive
     from chaindrive.analysis.layout import drive_layout
     from chaindrive.chains.stiffness import chain_axial_stiffness

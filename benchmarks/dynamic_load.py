@@ -55,13 +55,14 @@ from pathlib import Path
 from typing import Any
 
 import numpy as np
+from _dynamic_sweep import sim_model, tooth_peaks  # noqa: E402,F401 - the shared helpers (tests import them from here)
 
 from chaindrive import loads as F
 from chaindrive.analysis import analyze_drive
 from chaindrive.chains.stiffness import chain_axial_stiffness
 from chaindrive.drive import Drive
 from chaindrive.drive.project import load_project, parse_project, template
-from chaindrive.simulation import SimulationModel, model_from_drive, simulate
+from chaindrive.simulation import SimulationModel, simulate
 
 ROOT = Path(__file__).resolve().parents[1]
 
@@ -103,12 +104,6 @@ def nominal(drive: Drive) -> Drive:
     return drive.replace(load=dataclasses.replace(drive.load, service_factor=1.0))
 
 
-def sim_model(drive: Drive, **kwargs: Any) -> SimulationModel:
-    """The simulation model of ``drive`` with ``EA`` of all strands, as the analysis
-    (model_from_drive's default is one strand's); ``kwargs`` as model fields."""
-    return model_from_drive(drive, axial_stiffness=chain_axial_stiffness(drive.chain) * drive.chain.strands, **kwargs)
-
-
 def simulated_run(drive: Drive, periods: int = 57, settle: float = 0.3,
                   **kwargs: Any) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """Simulated time [s], tight-span tension [N] and driving-wheel angle [rad] after
@@ -118,14 +113,6 @@ def simulated_run(drive: Drive, periods: int = 57, settle: float = 0.3,
     t = np.asarray(res.time)
     keep = t > settle
     return t[keep], res.tight_side_tension()[keep], np.asarray(res.wheel_angle)[keep, 0]
-
-
-def tooth_peaks(drive: Drive, t: np.ndarray, tension: np.ndarray, start: float | None = None) -> np.ndarray:
-    """The largest tension of each whole tooth period of the window from ``start`` [s]
-    (default its first sample) [N]."""
-    tooth = 2 * math.pi / drive.speed / drive.driving_wheel.teeth
-    t0s = np.arange(t[0] if start is None else start, t[-1] - tooth, tooth)
-    return np.array([tension[(t >= t0) & (t < t0 + tooth)].max() for t0 in t0s])
 
 
 def simulated_tension(drive: Drive, periods: int = 57, settle: float = 0.3) -> tuple[float, float, float]:

@@ -127,7 +127,7 @@ class Interrupted(BaseException):
     does not swallow it, and the message can say what is kept."""
 
 
-def _interrupt(signum, frame):  # noqa: ARG001
+def _on_interrupt(signum: int, frame: object) -> None:  # noqa: ARG001
     raise Interrupted
 
 
@@ -152,7 +152,7 @@ def main(argv: list[str] | None = None) -> int:
     _SHOWN.clear()
     previous = None
     if threading.current_thread() is threading.main_thread():
-        previous = signal.signal(signal.SIGINT, _interrupt)
+        previous = signal.signal(signal.SIGINT, _on_interrupt)
     try:
         return _main(argv, debug)
     finally:

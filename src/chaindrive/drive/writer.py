@@ -28,7 +28,7 @@ from __future__ import annotations
 import dataclasses
 import math
 from collections.abc import Mapping
-from typing import TYPE_CHECKING, Any
+from typing import Any, Protocol
 
 from ..errors import InputError
 from .model import Drive, Load, Wheel
@@ -43,8 +43,25 @@ from .schema import (
 )
 from .tables import table_objects, table_values
 
-if TYPE_CHECKING:
-    from ..selection import Candidate
+
+class Candidate(Protocol):
+    """What the writer reads of a selection row (:class:`chaindrive.selection.Candidate`):
+    the chain, the wheels, the duty and the rating's lubrication."""
+
+    chain: str
+    names: tuple[str, ...]
+    speed: float
+    power: float
+    service_factor: float
+    rated_power: float
+    design_power: float
+    power_margin: float
+    lubrication: str
+    lubrication_method: str
+    centre_distance: float
+    links: int
+    teeth_driving: int
+    teeth_driven: int
 
 __all__ = ["project_text", "mapping_text", "drive_to_toml", "edit_project_text", "candidate_drive",
            "candidate_project_text", "toml_string",

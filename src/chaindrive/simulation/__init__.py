@@ -23,8 +23,9 @@ from .model import (
     SimWheel,
 )
 from .run import SimulationResult, State, assemble, simulate
+from .startup import start_up
 from .steady import SteadyState, steady_state
 
-__all__ = ["AXIAL_STIFFNESS_16B", "SimGuide", "SimTensioner", "SimulationModel", "SimWheel",
+__all__ = ["start_up", "AXIAL_STIFFNESS_16B", "SimGuide", "SimTensioner", "SimulationModel", "SimWheel",
            "roller_example", "link_example", "conveyor_drive", "conveyor_example", "model_from_drive", "guide_channel", "channel_guides", "SimulationResult", "State", "assemble", "simulate",
            "SteadyState", "steady_state"]

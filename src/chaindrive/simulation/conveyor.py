@@ -411,6 +411,6 @@ def __getattr__(name: str) -> Any:
 
         from .._deprecation import warn_renamed
 
-        warn_renamed(f"{__name__}.start_up", "chaindrive.simulation.startup.start_up")
-        return importlib.import_module("chaindrive.simulation.startup").start_up
+        warn_renamed(f"{__name__}.start_up", "chaindrive.simulation.start_up")
+        return importlib.import_module("chaindrive.simulation").start_up
     raise AttributeError(f"module {__name__!r} has no attribute {name!r}")

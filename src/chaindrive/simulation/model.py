@@ -81,8 +81,8 @@ def __getattr__(name: str) -> Any:
 
         from .._deprecation import warn_renamed
 
-        warn_renamed(f"{__name__}.{name}", f"chaindrive.simulation.examples.{name}")
-        return getattr(importlib.import_module("chaindrive.simulation.examples"), name)
+        warn_renamed(f"{__name__}.{name}", f"chaindrive.simulation.{name}")
+        return getattr(importlib.import_module("chaindrive.simulation"), name)
     raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
 
 _MODES = ("speed", "torque", "free", "motor")

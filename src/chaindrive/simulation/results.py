@@ -20,9 +20,30 @@ if TYPE_CHECKING:
     from matplotlib.axes import Axes
     from matplotlib.figure import Figure
 
-    from .run import State
 
 __all__ = ["SimulationResult", "SUMMARY_QUANTITIES", "default_probes", "tight_span", "slack_span", "span_tension"]
+
+
+@dataclass
+class State:
+    """Mutable simulation state (pins and wheels).
+
+    ``relax_time`` and ``relax_steps`` are the relaxation's simulated time [s] and steps,
+    or 0 and the accepted Newton steps of the static solver.
+    """
+
+    pos: np.ndarray
+    vel: np.ndarray
+    ws: np.ndarray
+    wp: np.ndarray
+    gd: np.ndarray
+    par: np.ndarray
+    relax_time: float = 0.0
+    relax_steps: int = 0
+    #: time [s] of this state: 0 after assembly, the end time of the run for a
+    #: ``final_state`` (so that a continued run does not restart the driver's ramp)
+    time: float = 0.0
+
 
 
 @dataclass(frozen=True)

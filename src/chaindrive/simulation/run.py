@@ -42,7 +42,6 @@ from __future__ import annotations
 import math
 import time
 from collections.abc import Callable
-from dataclasses import dataclass
 
 import numpy as np
 from numpy.typing import ArrayLike
@@ -55,6 +54,7 @@ from .placement import _path, _place, _tangent  # noqa: F401 - _path, _tangent: 
 from .results import (
     SUMMARY_QUANTITIES,
     SimulationResult,
+    State,
     _summary,
     default_probes,
     slack_span,
@@ -153,27 +153,6 @@ def kernel_arrays(model: SimulationModel, dt: float | None = None) -> tuple[np.n
         gd[g] = [a[0], a[1], u[0], u[1], -u[1], u[0], length,
                  -1.0 if gu.friction is None else gu.friction, gu.material_mass, gu.material_friction]
     return par, wp, gd
-
-
-@dataclass
-class State:
-    """Mutable simulation state (pins and wheels).
-
-    ``relax_time`` and ``relax_steps`` are the relaxation's simulated time [s] and steps,
-    or 0 and the accepted Newton steps of the static solver.
-    """
-
-    pos: np.ndarray
-    vel: np.ndarray
-    ws: np.ndarray
-    wp: np.ndarray
-    gd: np.ndarray
-    par: np.ndarray
-    relax_time: float = 0.0
-    relax_steps: int = 0
-    #: time [s] of this state: 0 after assembly, the end time of the run for a
-    #: ``final_state`` (so that a continued run does not restart the driver's ramp)
-    time: float = 0.0
 
 
 ASSEMBLY_METHODS = ("newton", "relaxation")

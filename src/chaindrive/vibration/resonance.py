@@ -433,6 +433,6 @@ def __getattr__(name: str) -> Any:
 
         from .._deprecation import warn_renamed
 
-        warn_renamed(f"{__name__}.{name}", f"chaindrive.vibration.tensioner_design.{name}")
-        return getattr(importlib.import_module("chaindrive.vibration.tensioner_design"), name)
+        warn_renamed(f"{__name__}.{name}", f"chaindrive.vibration.{name}")
+        return getattr(importlib.import_module("chaindrive.vibration"), name)
     raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
