@@ -21,7 +21,7 @@ if TYPE_CHECKING:
     from matplotlib.figure import Figure
 
 
-__all__ = ["SimulationResult", "SUMMARY_QUANTITIES", "default_probes", "tight_span", "slack_span", "span_tension"]
+__all__ = ["SimulationResult", "State", "SUMMARY_QUANTITIES", "default_probes", "tight_span", "slack_span", "span_tension"]
 
 
 @dataclass

@@ -344,3 +344,8 @@ def check_running_tension_range(*, pitch: float, teeth: float, teeth_driven: flo
     for name, value in values.items():
         low, high = r[name]
         warn_outside(name, value, low, high, source, stacklevel=stacklevel + 1)
+
+
+from .._finite import guard_public  # noqa: E402 - last: it wraps what this module defined
+
+guard_public(__name__)  # every public function and dataclass: NaN/inf in or out refused
