@@ -9,7 +9,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from .._finite import finite_guard
+from .._finite import finite_fields, finite_guard
 from .._presenters import view
 from .._results import Result, quantity
 from . import _kernel as K
@@ -24,6 +24,7 @@ if TYPE_CHECKING:
 __all__ = ["SimulationResult", "State", "SUMMARY_QUANTITIES", "default_probes", "tight_span", "slack_span", "span_tension"]
 
 
+@finite_fields
 @dataclass
 class State:
     """Mutable simulation state (pins and wheels).
