@@ -215,3 +215,16 @@ def test_both_advices_pass_when_followed(multi):
     assert checks["wrap on driven wheel 'machine B'"].passed
     assert math.degrees(with_idler.layout.wrap.wrap_angle[4]) >= 120.0
     assert with_idler.passed
+
+
+def test_place_for_wrap_refuses_a_search_without_bounds():
+    # found by scripts/fuzz.py at 10,000 API inputs: reach = -1e300, tolerance = -0.01 never ended
+    from chaindrive.layout import place_for_wrap
+
+    c, r = [[0, 0], [0.5, -0.1], [1, 0]], [0.1, 0.05, 0.1]
+    with pytest.raises(InputError, match=r"reach must lie in \(0, 10000\] m"):
+        place_for_wrap(c, r, None, 1, [0, -1], math.radians(60), reach=-1e300)
+    with pytest.raises(InputError, match=r"tolerance must lie in \(0, reach"):
+        place_for_wrap(c, r, None, 1, [0, -1], math.radians(60), tolerance=-0.01)
+    with pytest.raises(InputError, match=r"steps must be a whole number in \[2, 10000\]"):
+        place_for_wrap(c, r, None, 1, [0, -1], math.radians(60), steps=10**9)

@@ -154,6 +154,13 @@ def place_for_wrap(centres: ArrayLike, radii: ArrayLike, sides: ArrayLike | None
         raise InputError(f"wrap must lie in (0°, 360°), got {math.degrees(float(wrap)):.6g}°", field="wrap")
     span = float(np.max(np.ptp(c, axis=0)))
     reach = 2.0 * max(span, 1e-3) if reach is None else float(reach)
+    if not 0 < reach <= 1e4:
+        raise InputError(f"reach must lie in (0, 10000] m, got {reach:g}", field="reach")
+    if not 0 < float(tolerance) <= reach:
+        raise InputError(f"tolerance must lie in (0, reach = {reach:g}] m, got {float(tolerance):g}",
+                         field="tolerance")
+    if isinstance(steps, bool) or not 2 <= int(steps) <= 10_000 or int(steps) != steps:
+        raise InputError(f"steps must be a whole number in [2, 10000], got {steps!r}", field="steps")
     base = c[int(index)].copy()
 
     r = as_float_array("radii", radii)
@@ -167,7 +174,9 @@ def place_for_wrap(centres: ArrayLike, radii: ArrayLike, sides: ArrayLike | None
 
     def edge(good: float, bad: float) -> float:
         """The last clear position between a clear ``good`` and an unclear ``bad`` (bisection)."""
-        while abs(good - bad) > tolerance:
+        for _ in range(200):  # halving 2 reach down to tolerance: far fewer steps
+            if abs(good - bad) <= tolerance:
+                break
             mid = 0.5 * (good + bad)
             if math.isnan(theta(mid)):
                 bad = mid
