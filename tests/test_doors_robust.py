@@ -173,6 +173,12 @@ def test_ctrl_c_during_analyze_one_line(tmp_path):
 @pytest.mark.parametrize("delay", [0.1, 0.2, 0.35, 0.7, 1.2, 2.0, 3.5])
 def test_ctrl_c_at_any_moment(tmp_path, delay):
     code, err = _interrupt(["analyze", str(EXAMPLES / "mining_conveyor.toml"), "-o", "out"], delay, tmp_path)
+    done = (tmp_path / "out" / "results.json").is_file() and (tmp_path / "out" / ".chaindrive-run").is_file()
+    if code == -signal.SIGINT and done:
+        # the run had finished (its folder complete, moved into place) and the signal came while the
+        # interpreter was exiting, after main() gave the handler back (seen on a loaded machine at 3.5 s)
+        assert "Traceback" not in err, err
+        return
     _judge(code, err, delay)
     assert not (tmp_path / "out").exists() or code in (0, 1)
     assert not [p for p in tmp_path.iterdir() if p.name.startswith(".out.")]  # no half-built folder left
