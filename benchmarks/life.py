@@ -121,8 +121,8 @@ def simulated_jump_ratio(teeth: int, elongation: float, back_force: float = 3000
 def quasi_static_speed(teeth: int) -> float:
     """The driver's speed [rad/s] of the quasi-static simulated onset: slow enough that the slide's
     and the slack span's dynamic forces are small against the slack span's few newtons at the
-    onset (docs/life.md, "Jump-over"): 0.5 rad/s up to 13 teeth, 0.125 rad/s above."""
-    return 0.5 if teeth <= 13 else 0.125
+    onset (docs/life.md, "Jump-over"): 0.5 rad/s up to 17 teeth, 0.125 rad/s above."""
+    return 0.5 if teeth <= 17 else 0.125
 
 
 def jump_over_vs_simulation(teeth: int = 11, elongation: float = 0.2, back_force: float = 3000.0) -> None:

@@ -217,14 +217,15 @@ class WrapModel:
 
         # secant iteration on T_1 - f(T_1) = 0 (f: the moment balance at the seating under T_1)
         xs, ok, res = update(t1)
-        prev_t, prev_r = None, None
+        prev_t: float | None = None
+        prev_r: float | None = None
         for _ in range(iterations):
             if not ok:
                 return xs, t1, False
             if abs(res) < 1e-6 * load:
                 return xs, t1, True
             x = xs
-            if prev_r is None or res == prev_r:
+            if prev_t is None or prev_r is None or res == prev_r:
                 step = res
             else:
                 step = -res * (t1 - prev_t) / (res - prev_r)
