@@ -228,7 +228,7 @@ def select_command(
     static safety, the peak tension of the running chain, advice, near misses). Needs a duty
     class (--driven-machine or --load-character) or an explicit --service-factor; prints every
     factor with its source."""
-    from ..design import Duty, design_drive
+    from ..design import DesignRequest, design_drive
     from ..errors import InputError
 
     if load_old is not None:
@@ -241,20 +241,15 @@ def select_command(
         from .._io import check_output_path
 
         out_file = check_output_path(write, (".toml",), option="--write", force=force)
-    if limit < 1:
-        raise InputError(f"--limit must be a whole number >= 1, got {limit}", field="--limit")
-    if teeth is not None:
-        from ..limits import MAX_TEETH, check_size
-
-        check_size("--teeth", teeth, MAX_TEETH, minimum=3)
-    duty = Duty(power=quantity(power, "W", "power"), speed=quantity(speed, "rad/s", "speed"), ratio=ratio,
-                driven_speed=quantity(driven_speed, "rad/s", "driven_speed"), driver=driver,
-                driven_machine=driven_machine, load_character=load_character, service_factor=service_factor,
-                hours_per_day=hours, centre_distance=quantity(centre_distance, "m", "centre_distance"),
-                environment=environment, lubrication=lubrication)
-    result = design_drive(duty, teeth_driving=teeth, family=family, strands=_strand_counts(strands),
-                          method=method, required_static_safety=required_static_safety,
-                          all_sizes=all_sizes, limit=limit)
+    request = DesignRequest.of(
+        power=quantity(power, "W", "power"), speed=quantity(speed, "rad/s", "speed"), ratio=ratio,
+        driven_speed=quantity(driven_speed, "rad/s", "driven_speed"), driver=driver, driven_machine=driven_machine,
+        load_character=load_character, service_factor=service_factor, hours_per_day=hours,
+        centre_distance=quantity(centre_distance, "m", "centre_distance"), environment=environment,
+        lubrication=lubrication, teeth_driving=teeth, family=family, strands=_strand_counts(strands), method=method,
+        required_static_safety=required_static_safety, all_sizes=all_sizes, limit=limit)
+    duty = request.duty
+    result = design_drive(request)
     found = result.candidates
     if not 1 <= choose <= len(found):
         raise InputError(f"--choose must lie in [1, {len(found)}] (the rows listed), got {choose}", field="--choose")

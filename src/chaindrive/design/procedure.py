@@ -38,12 +38,12 @@ from ..errors import (
     ChainDriveError,
     InfeasibleError,
     InputError,
-    UnknownNameError,
     ValidityRangeWarning,
 )
 from ..loads import mean_chain_speed
 from ..units import angular_velocity_to_rpm
-from .duty import Duty, Factor, duty_factors
+from .duty import Duty, Factor, design_power, duty_factors
+from .request import DesignRequest
 
 if TYPE_CHECKING:
     from ..chains import Chain
@@ -129,6 +129,16 @@ class DesignResult(Result):
     recommended: DesignCandidate
     candidates: tuple[DesignCandidate, ...]
     near_misses: tuple[Any, ...] = ()
+    request: DesignRequest | None = field(default=None, repr=False, compare=False)
+
+    def drive(self) -> Drive:
+        """The recommended drive (:class:`~chaindrive.drive.model.Drive`, built in code)."""
+        return self.recommended.drive()
+
+    @property
+    def design_power(self) -> float:
+        """The design power ``K_s P`` [W] (:func:`chaindrive.design.duty.design_power`)."""
+        return design_power(self.duty.power, self.factors[0])
 
     @property
     def advice(self) -> tuple[Check, ...]:
@@ -545,11 +555,8 @@ def _lay_out(rated: list[_Rated], duty: Duty, factors: tuple[Factor, ...], ks: f
     return found
 
 
-def design_drive(duty: Duty, *, teeth_driving: int | None = None, family: str | None = None,
-                 strands: tuple[int, ...] = (1, 2, 3), method: str | None = None,
-                 required_static_safety: float | None = None, all_sizes: bool = False,
-                 limit: int | None = None) -> DesignResult:
-    r"""Design a two-sprocket roller chain drive for ``duty``: the recommended drive and the candidates.
+def design_drive(request: DesignRequest | Duty, **options: Any) -> DesignResult:
+    r"""Design a two-sprocket roller chain drive for a request: the recommended drive and the candidates.
 
     .. math:: K_2 P_{r,1}(z_1, n_1) \ge K_s P,\qquad
               \frac{F_B}{K_s F_t + S + q v^2} \ge [s],\qquad F_{peak} \le \frac{F_B}{6},\qquad
@@ -557,28 +564,18 @@ def design_drive(duty: Duty, *, teeth_driving: int | None = None, family: str | 
 
     Parameters
     ----------
-    duty : Duty
-    teeth_driving : int, optional
-        Small-sprocket teeth; default the tooth-count policy per chain.
-    family : {None, "ansi", "iso606"}
-        Catalogue family (``None``: both; an ANSI chain and its ISO 606 twin are one row).
-    strands : tuple of int
-        Strand counts admitted (1 ... 4).
-    method : str, optional
-        Rating method for every chain (default: the method of each chain's family,
-        :func:`chaindrive.rating.default_method`).
-    required_static_safety : float, optional
-        Required static safety ``[s]`` (default the drive's, :attr:`chaindrive.drive.model.Drive.static_safety_required`:
-        Chernavsky et al. Table 7.19 by pitch and small-sprocket speed).
-    all_sizes : bool
-        Every adequate chain, not only the smallest adequate pitch per series and strands.
-    limit : int, optional
-        At most this many candidates.
+    request : DesignRequest or Duty
+        The duty and the constraints of the selection (:class:`~chaindrive.design.request.DesignRequest`:
+        small-sprocket teeth, family, strands, rating method, required static safety, all sizes,
+        limit); a bare :class:`~chaindrive.design.duty.Duty` is the request ``DesignRequest(duty, **options)``.
+    **options
+        The constraints when ``request`` is a Duty (the fields of ``DesignRequest`` after ``duty``).
 
     Returns
     -------
     DesignResult
-        ``recommended`` (the first candidate) and ``candidates``.
+        ``recommended`` (the first candidate), ``candidates`` and ``drive()`` (the recommended
+        :class:`~chaindrive.drive.model.Drive`).
 
     Raises
     ------
@@ -603,23 +600,20 @@ def design_drive(duty: Duty, *, teeth_driving: int | None = None, family: str | 
     ('12A-1', 19, 58, 104, 612.4)
     """
     from ..chains import catalogue, equivalent_names
-    from ..rating import RATING_METHODS
 
-    if not isinstance(duty, Duty):
-        raise InputError(f"duty must be a chaindrive.design.Duty, got {type(duty).__name__}", field="duty")
+    if isinstance(request, Duty):
+        request = DesignRequest(request, **options)
+    elif not isinstance(request, DesignRequest):
+        raise InputError(f"request must be a chaindrive.design.DesignRequest, got {type(request).__name__}",
+                         field="request")
+    elif options:
+        raise InputError(f"give the options in the DesignRequest, not beside it: {', '.join(options)}",
+                         field=next(iter(options)))
+    duty, teeth_driving, family, allowed = request.duty, request.teeth_driving, request.family, request.strands
+    method, required_static_safety = request.method, request.required_static_safety
+    all_sizes, limit = request.all_sizes, request.limit
     factors = duty_factors(duty)
     ks = float(factors[0].value)
-    if family not in (None, "ansi", "iso606"):
-        raise UnknownNameError(f"unknown roller-chain family {family!r}; valid: None, 'ansi', 'iso606'")
-    if method is not None:
-        RATING_METHODS.get(method)
-    allowed = tuple(strands)
-    if not allowed or any(isinstance(k, bool) or k not in (1, 2, 3, 4) for k in allowed):
-        raise InputError(f"strands must be a non-empty selection of 1, 2, 3, 4, got {strands!r}", field="strands")
-    if required_static_safety is not None and not (math.isfinite(required_static_safety)
-                                                   and required_static_safety >= 1):
-        raise InputError(f"required_static_safety must be a number >= 1, got {required_static_safety!r}",
-                         field="required_static_safety")
     fams = ("iso606", "ansi") if family is None else (family,)
     chains = []
     for fam in fams:
@@ -680,5 +674,6 @@ def design_drive(duty: Duty, *, teeth_driving: int | None = None, family: str | 
     rows = [passing[0], *(c for c in rows if c is not passing[0])]
     rows = rows[:limit] if limit else rows
     near = _near_misses(short, rows[0], duty, factors, ks, method, required_static_safety)
-    return DesignResult(duty=duty, factors=factors, recommended=rows[0], candidates=tuple(rows), near_misses=near)
+    return DesignResult(duty=duty, factors=factors, recommended=rows[0], candidates=tuple(rows), near_misses=near,
+                        request=request)
 

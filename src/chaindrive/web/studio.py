@@ -23,6 +23,7 @@ from starlette.datastructures import UploadFile as StarletteUpload
 
 from .._results import jsonable
 from ..analysis.loads import REQUIRED_STATIC_SAFETY
+from ..design.duty import service_factor_of
 from ..display import verdict_text
 from ..errors import ChainDriveError, InputError
 from ..units import angular_velocity_to_rpm
@@ -115,7 +116,7 @@ def studio_payload(state: dict[str, str]) -> dict[str, Any]:
     out: dict[str, Any] = {"errors": errors, "query": state_query(state), "state": state}
     table = service_factor_table()
     character = load_character_of(state)
-    out["service_factor_table"] = {"value": table["factors"][character][state["driver"]],
+    out["service_factor_table"] = {"value": service_factor_of(state["driver"], load_character=character).value,
                                    "character": table["characters"][character],
                                    "driver": table["drivers"][state["driver"]],
                                    "source": table["source"]}
