@@ -245,7 +245,7 @@ def _duty(state: dict[str, str], errors: dict[str, str]) -> dict[str, Any]:
             try:
                 check_duty_value("ratio", ratio)
             except InputError as exc:
-                errors["driven_speed"] = f"gives {exc}"
+                errors["driven_speed"] = f"gives a ratio n_driving / n_driven outside its range: {exc}"
                 ratio = None
     else:
         values["ratio"] = ratio = _number(state, "ratio", errors)
