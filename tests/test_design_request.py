@@ -165,7 +165,10 @@ def test_web_design_holds_no_design_procedure():
                 and {"power", "ks"} & {getattr(x, "id", "") for x in (n.left, n.right)}]
     assert products == []
     assert "round(z1 * ratio)" not in text and "0.05 <= ratio" not in text and "5.0, example" not in text
-    assert TEETH_RANGE == (MIN_TEETH, MAX_TEETH)
+    from chaindrive.drive.schema import get_table
+
+    teeth = get_table("wheels").field("teeth")
+    assert TEETH_RANGE == (MIN_TEETH, MAX_TEETH) == (teeth.minimum, teeth.maximum)
     for name in ("power", "speed", "ratio", "driven_speed", "service_factor", "hours_per_day", "centre_distance"):
         assert FIELDS[name].maximum == DUTY_RANGES[name][1], name
 

@@ -13,6 +13,7 @@ import math
 
 import typer
 
+from ..display import kn, kw, mm
 from ..errors import ChainDriveError
 from ..units import angular_velocity_to_rpm
 from .app import OPTION_ALIASES, app, echo_json, quantity, unit_help
@@ -95,24 +96,24 @@ def layout_command(
 
     con = _console()
     con.print(f"[bold]{escape(drive.name)}[/bold]  chain {escape(drive.chain.name)}, pitch "
-              f"{drive.pitch * 1e3:.3f} mm, speed {drive.speed:.4g} rad/s = {angular_velocity_to_rpm(drive.speed):.4g} rpm, "
+              f"{mm(drive.pitch):.3f} mm, speed {drive.speed:.4g} rad/s = {angular_velocity_to_rpm(drive.speed):.4g} rpm, "
               f"v = {ten.chain_speed:.3f} m/s")
     con.print(f"links required {lay.links_required:.3f}, chosen {lay.links}")
     cd = lay.centre_distance_for_links
     if lay.polygon is not None and lay.centre_distance is not None and cd is not None:
         pg = lay.polygon
         approx = "" if pg.links_approx is None else f", ISO 10823 approx. {pg.links_approx:.3f}"
-        con.print(f"polygon length at a = {lay.centre_distance * 1e3:.2f} mm: "
+        con.print(f"polygon length at a = {mm(lay.centre_distance):.2f} mm: "
                   f"{pg.links_min:.4f}…{pg.links_max:.4f} pitches (circles {pg.links_circles:.4f}{approx})")
-        con.print(f"centre distance for {cd.links} links: {cd.taut * 1e3:.3f} mm (taut at tightest phase), "
-                  f"{cd.loose * 1e3:.3f} mm (loosest)")
+        con.print(f"centre distance for {cd.links} links: {mm(cd.taut):.3f} mm (taut at tightest phase), "
+                  f"{mm(cd.loose):.3f} mm (loosest)")
     t = Table(title="Wheels")
     for h in ("wheel", "pitch radius [mm]", "wrap [°]", "teeth in mesh", "shaft load [kN]"):
         t.add_column(escape(h), overflow="fold")  # '[mm]' is not rich markup
     for i, name in enumerate(lay.wheel_names):
-        t.add_row(name, f"{lay.pitch_radii[i] * 1e3:.2f}", f"{math.degrees(lay.wrap.wrap_angle[i]):.1f}",
+        t.add_row(name, f"{mm(lay.pitch_radii[i]):.2f}", f"{math.degrees(lay.wrap.wrap_angle[i]):.1f}",
                   "-" if lay.teeth_in_mesh[i] is None else str(lay.teeth_in_mesh[i]),
-                  f"{ten.shaft_loads[i] / 1e3:.3f}")
+                  f"{kn(ten.shaft_loads[i]):.3f}")
     con.print(t)
     t = Table(title="Spans")
     for h in ("span", "length [mm]", "angle [°]", "tension [kN]", ""):
@@ -121,16 +122,16 @@ def layout_command(
     for i in range(n):
         tag = "tight" if i == lay.tight_span else ("slack" if i == lay.slack_span else "")
         t.add_row(f"{lay.wheel_names[i]} → {lay.wheel_names[(i + 1) % n]}",
-                  f"{lay.wrap.span_length[i] * 1e3:.1f}", f"{math.degrees(lay.wrap.span_angle[i]):.1f}",
-                  f"{ten.span_tensions[i] / 1e3:.3f}", tag)
+                  f"{mm(lay.wrap.span_length[i]):.1f}", f"{math.degrees(lay.wrap.span_angle[i]):.1f}",
+                  f"{kn(ten.span_tensions[i]):.3f}", tag)
     con.print(t)
-    con.print(f"effective pull {ten.effective_pull / 1e3:.3f} kN, slack {ten.slack / 1e3:.3f} kN "
-              f"({ten.slack_source}), centrifugal {ten.centrifugal / 1e3:.3f} kN, dynamic "
-              f"{ten.dynamic / 1e3:.3f} kN, peak {ten.maximum / 1e3:.3f} kN"
-              + ("" if analysis.slack_sag is None else f"; slack sag {analysis.slack_sag * 1e3:.1f} mm"))
+    con.print(f"effective pull {kn(ten.effective_pull):.3f} kN, slack {kn(ten.slack):.3f} kN "
+              f"({ten.slack_source}), centrifugal {kn(ten.centrifugal):.3f} kN, dynamic "
+              f"{kn(ten.dynamic):.3f} kN, peak {kn(ten.maximum):.3f} kN"
+              + ("" if analysis.slack_sag is None else f"; slack sag {mm(analysis.slack_sag):.1f} mm"))
     if lay.take_up is not None:
         con.print(f"{lay.take_up_kind} for 1/2/3 % elongation: "
-                  + ", ".join(f"{x * 1e3:.1f} mm" for x in lay.take_up))
+                  + ", ".join(f"{mm(x):.1f} mm" for x in lay.take_up))
     for c in analysis.checks:
         verdict = {"pass": "[green]pass[/green]", "FAIL": "[red]FAIL[/red]"}.get(c.verdict, c.verdict)
         con.print(f"{verdict}  " + escape(f"{c.name}: {check_value_text(c)} (limit {check_limit_text(c)}) "
@@ -162,9 +163,9 @@ def _place(drive, place: str | None, wrap: str | None, along: str | None, of: st
         echo_json({"placement": p})
         return
     con = _console()
-    con.print(f"move {p.wheel!r} {p.distance * 1e3:.1f} mm along ({p.direction[0]:.4f}, {p.direction[1]:.4f}):",
+    con.print(f"move {p.wheel!r} {mm(p.distance):.1f} mm along ({p.direction[0]:.4f}, {p.direction[1]:.4f}):",
               markup=False)
-    con.print(f'position = ["{p.position[0] * 1e3:.1f} mm", "{p.position[1] * 1e3:.1f} mm"]', markup=False)
+    con.print(f'position = ["{mm(p.position[0]):.1f} mm", "{mm(p.position[1]):.1f} mm"]', markup=False)
     con.print(f"wrap on {p.target!r} there {math.degrees(p.wrap):.2f}° (requested {math.degrees(p.requested):.2f}°), "
               f"wheels and spans clear; with the links fitted again {math.degrees(p.refitted_wrap):.2f}°",
               markup=False)
@@ -269,22 +270,22 @@ def select_command(
 
     con = _console()
     rec = result.recommended
-    con.print(escape(f"Duty: {duty.power / 1e3:g} kW at {angular_velocity_to_rpm(duty.speed):g} rpm, ratio "
+    con.print(escape(f"Duty: {kw(duty.power):g} kW at {angular_velocity_to_rpm(duty.speed):g} rpm, ratio "
                      f"{duty.speed_ratio:.4g}, {duty.hours_per_day:g} h/day, {duty.environment}"))
     for f in rec.factors:
         con.print(escape(f"  {f.name} {f.symbol} = {f.value:.4g}  [{f.source}]" + (f" ({f.note})" if f.note else "")))
     # two tables, each no wider than needed: a column is at least as wide as its longest
     # cell (no number or word is broken); headers wrap between their words
     rank_rows = [[str(k), " / ".join(c.names), f"{c.driving_teeth}/{c.driven_teeth}", str(c.links),
-                  f"{c.centre_distance * 1e3:.2f}", f"{c.rated_power / 1e3:.2f}", f"{c.power_margin:.2f}",
+                  f"{mm(c.centre_distance):.2f}", f"{kw(c.rated_power):.2f}", f"{c.power_margin:.2f}",
                   c.limited_by.replace("_", "-")] for k, c in enumerate(found, 1)]
     more_rows = [[str(k), c.method, f"{c.chain_speed:.2f}", c.lubrication,
                   "-" if c.static_safety is None else f"{c.static_safety:.2f} (>= {c.required_static_safety:.3g})",
-                  f"{c.dynamic_tension / 1e3:.2f}",
-                  f"{c.peak_tension / 1e3:.2f}" + ("" if c.peak_tension_limit is None
-                                                   else f" (<= {c.peak_tension_limit / 1e3:.2f})")]
+                  f"{kn(c.dynamic_tension):.2f}",
+                  f"{kn(c.peak_tension):.2f}" + ("" if c.peak_tension_limit is None
+                                                   else f" (<= {kn(c.peak_tension_limit):.2f})")]
                  for k, c in enumerate(found, 1)]
-    tables = ((f"Candidates (design power {rec.design_power / 1e3:.4g} kW)",
+    tables = ((f"Candidates (design power {kw(rec.design_power):.4g} kW)",
                ("#", "chain", "teeth", "links", "centre distance [mm]", "rated [kW]", "margin", "limited by"),
                rank_rows),
               ("Candidates: chain speed, lubrication, static safety, dynamic and peak tension",
@@ -301,7 +302,7 @@ def select_command(
     for note in dict.fromkeys(n for c in found for n in c.notes):
         con.print(escape(f"note: {note}"))
     con.print(escape(f"Recommended: {rec.chain}, {rec.driving_teeth}/{rec.driven_teeth} teeth, {rec.links} links, "
-                     f"centre distance {rec.centre_distance * 1e3:.2f} mm"))
+                     f"centre distance {mm(rec.centre_distance):.2f} mm"))
     for a in rec.advice:
         con.print(escape(f"  advice: {a.name}: {a.note} [{a.source}]"))
     for m in result.near_misses:
@@ -339,8 +340,8 @@ def rating_command(
                    "warnings": list(r.warnings)})
         return
     typer.echo(f"{r.chain} on {r.teeth} teeth at {angular_velocity_to_rpm(r.angular_velocity):.6g} rpm: rated "
-               f"{r.rated_power / 1e3:.4g} kW ({r.method}; limited by {r.limited_by.replace('_', '-')}); "
-               f"link plate {r.link_plate / 1e3:.4g} kW, roller-bushing {r.roller_bushing / 1e3:.4g} kW; "
+               f"{kw(r.rated_power):.4g} kW ({r.method}; limited by {r.limited_by.replace('_', '-')}); "
+               f"link plate {kw(r.link_plate):.4g} kW, roller-bushing {kw(r.roller_bushing):.4g} kW; "
                f"chain speed {r.chain_speed:.3g} m/s, lubrication {r.lubrication} ({r.lubrication_method}) "
                f"[{r.source}]")
     for w in r.warnings:

@@ -14,6 +14,7 @@ from typing import Any
 import numpy as np
 import typer
 
+from ..display import mm
 from ..errors import InputError
 from .app import app, echo_json, print_rows, quantity, unit_help
 
@@ -71,10 +72,10 @@ def _write_part(part, dxf: Path | None, step: Path | None, force: bool) -> None:
 
 def _part_rows(part) -> list[tuple[str, str, str]]:
     hub = part.hub
-    key = "-" if hub.key is None else f"{hub.key.label()} mm, d + t2 = {(hub.bore + hub.key.hub_depth) * 1e3:.1f} mm"
+    key = "-" if hub.key is None else f"{hub.key.label()} mm, d + t2 = {mm(hub.bore + hub.key.hub_depth):.1f} mm"
     return [
         ("bore d (H7)", _mm(hub.bore), "allowed " + _rng(*hub.bore_range)),
-        ("hub diameter x projection", f"{hub.hub_diameter * 1e3:.1f} x {hub.hub_length * 1e3:.1f} mm", "allowed diameter " + _rng(*hub.hub_diameter_range)),
+        ("hub diameter x projection", f"{mm(hub.hub_diameter):.1f} x {mm(hub.hub_length):.1f} mm", "allowed diameter " + _rng(*hub.hub_diameter_range)),
         ("keyway b x h", key, "DIN 6885-1:1968 table 1"),
         ("part width (plate/rim + hub)", _mm(part.total_width), "drawing and solid"),
     ]
@@ -103,11 +104,12 @@ def _table(title: str, rows: list[tuple[str, str, str]]) -> None:
 
 
 def _mm(v) -> str:
-    return "-" if v is None else f"{v * 1e3:.3f} mm"
+    return "-" if v is None else f"{mm(v):.3f} mm"
 
 
-def _rng(lo, hi, unit="mm", f=1e3) -> str:
-    return f"{lo * f:.3f} ... {hi * f:.3f} {unit}"
+def _rng(lo, hi) -> str:
+    """A range of lengths [m] in mm."""
+    return f"{mm(lo):.3f} ... {mm(hi):.3f} mm"
 
 
 @app.command("sprocket")

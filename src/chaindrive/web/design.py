@@ -32,9 +32,9 @@ from ..design.duty import (
 from ..design.link import link_candidates
 from ..design.policy import BASE_TEETH, driven_teeth
 from ..design.request import DesignRequest
-from ..drive.schema import get_table
+from ..display import kn_per_m, kw, mm
 from ..errors import ChainDriveError, InputError, ValidityRangeWarning
-from ..limits import DUTY_RANGES
+from ..limits import DUTY_RANGES, MAX_TEETH, MIN_TEETH
 from ..units import angular_velocity_to_rpm
 from .fields import FieldError, FieldSpec, input_field, parse_field, parse_integer
 from .wheels import EXTRA_CHOICES, EXTRA_DEFAULTS, add_extra_wheels, extra_wheels
@@ -146,7 +146,7 @@ FIELDS: dict[str, FieldSpec] = {
 }
 
 #: Teeth of a wheel: the project schema's declaration (wheels.teeth, :mod:`chaindrive.limits`).
-TEETH_RANGE = (int(get_table("wheels").field("teeth").minimum), int(get_table("wheels").field("teeth").maximum))
+TEETH_RANGE = (MIN_TEETH, MAX_TEETH)
 
 #: Form field -> field of the :class:`~chaindrive.design.DesignRequest` (the same name when not listed).
 REQUEST_FIELDS = {"driven": "driven_machine"}
@@ -394,7 +394,7 @@ def _project_data(d: Design, state: dict[str, str], positions: list, idler: tupl
     if idler is not None:
         wheels.append(("tensioner", "idler", idler[0], idler[1], False))
     wheels.append((names[1], kind_wheel, teeth[1], positions[1], False))
-    data["wheels"] = [{"name": name, "kind": kind, "teeth": int(z), "position": [f"{x * 1e3:.4f} mm", f"{y * 1e3:.4f} mm"],
+    data["wheels"] = [{"name": name, "kind": kind, "teeth": int(z), "position": [f"{mm(x):.4f} mm", f"{mm(y):.4f} mm"],
                        **({"driving": True} if driving else {})} for name, kind, z, (x, y), driving in wheels]
     if idler is not None:
         mechanism = state["tensioner_mechanism"]
@@ -511,7 +511,7 @@ def design_from_state(state: dict[str, str]) -> tuple[Design | None, dict[str, s
     if not chain_name:
         if not candidates:
             if "too large for the centre distance" in note and centre is not None:
-                errors["centre_distance"] = f"{centre * 1e3:.1f} mm is too short: {note}"
+                errors["centre_distance"] = f"{mm(centre):.1f} mm is too short: {note}"
             else:
                 errors["chain"] = note or "no catalogue chain carries this duty; give a chain name"
             return None, errors
@@ -574,8 +574,8 @@ def design_from_state(state: dict[str, str]) -> tuple[Design | None, dict[str, s
     r1 = _pitch_radius(chain, z1)
     r2 = _pitch_radius(chain, z2)
     if centre <= r1 + r2 + chain.pitch:
-        errors["centre_distance"] = (f"{centre * 1e3:.1f} mm is too short: the wheels need more than "
-                                     f"{(r1 + r2 + chain.pitch) * 1e3:.1f} mm (pitch radii plus a pitch)")
+        errors["centre_distance"] = (f"{mm(centre):.1f} mm is too short: the wheels need more than "
+                                     f"{mm(r1 + r2 + chain.pitch):.1f} mm (pitch radii plus a pitch)")
         return None, errors
     if tensioner and zi is not None and pos is not None and off is not None:  # field errors returned above
         idler = (zi, (pos * centre, -(min(r1, r2) + off)))
@@ -701,7 +701,7 @@ def state_from_project(text: str, filename: str = "project.toml") -> dict[str, s
         "chain": drive.chain.name,
         "teeth_driving": str(drv.teeth),
         "teeth_driven": str(other.teeth),
-        "centre_distance": f"{centre * 1e3:.6g} mm",
+        "centre_distance": f"{mm(centre):.6g} mm",
         "service_factor": f"{load.service_factor:g}",
         "required_static_safety": "" if drive.required_static_safety is None else f"{drive.required_static_safety:g}",
         "wear_coefficient": "" if drive.wear_coefficient is None else f"{drive.wear_coefficient:g} m**2/N",
@@ -709,9 +709,9 @@ def state_from_project(text: str, filename: str = "project.toml") -> dict[str, s
         "conveyor": conveyor_state(drive.conveyor),
     })
     if load.power is not None:
-        state["power"] = f"{load.power / 1e3:.6g} kW"
+        state["power"] = f"{kw(load.power):.6g} kW"
     else:
-        state["power"] = f"{drive.power() / 1e3:.6g} kW"
+        state["power"] = f"{kw(drive.power()):.6g} kW"
     if idlers and drive.tensioner is not None:
         w = idlers[0]
         t = drive.tensioner
@@ -723,8 +723,8 @@ def state_from_project(text: str, filename: str = "project.toml") -> dict[str, s
         state.update({
             "tensioner": "on", "idler_teeth": str(w.teeth or 17),
             "idler_position": f"{min(max(along, 0.05), 0.95):.4g}",
-            "idler_offset": f"{max(across - r_small, 0.0) * 1e3:.6g} mm",
-            "tensioner_mass": f"{t.mass:g} kg", "tensioner_stiffness": f"{t.stiffness / 1e3:g} kN/m",
+            "idler_offset": f"{mm(max(across - r_small, 0.0)):.6g} mm",
+            "tensioner_mass": f"{t.mass:g} kg", "tensioner_stiffness": f"{kn_per_m(t.stiffness):g} kN/m",
             "tensioner_force": f"{(t.force or 0.0):g} N",
         })
         if t.mechanism in _TENSIONER_PARTS:
@@ -739,7 +739,7 @@ def state_from_project(text: str, filename: str = "project.toml") -> dict[str, s
     if drive.guides:
         g = drive.guides[0]
         if g.kind in ("tangential", "chordal"):
-            state.update({"guide": g.kind, "guide_end": f"{g.end_distance * 1e3:.6g} mm"})
+            state.update({"guide": g.kind, "guide_end": f"{mm(g.end_distance):.6g} mm"})
     skew, height, base = (_get(drive.contact, k) for k in ("skew", "skew_height_difference", "skew_base"))
     if skew is not None:
         state["skew"] = f"{math.degrees(skew) * 60:.6g} arcmin"

@@ -16,6 +16,7 @@ import numpy as np
 from fastapi import APIRouter, Request
 from fastapi.responses import HTMLResponse, JSONResponse, Response
 
+from ..display import mm
 from ..errors import ChainDriveError
 from .bodies import SimulationBody, openapi_body, read_body
 from .drawing import workshop_drawing
@@ -293,7 +294,7 @@ def crawler_result(state: dict[str, str], points: int = 361) -> dict[str, Any]:
     return {"summaries": {k: r.summary for k, r in res.items()},
             "table": summary_table({k: r.summary for k, r in res.items()}),
             "plots": [_line(psi, {k: r.velocity for k, r in res.items()}, "sprocket angle ψ [°]",
-                            "chain velocity [m/s]", f"Crawler drive chain, t = {pitch * 1e3:g} mm, z = {teeth}")]}
+                            "chain velocity [m/s]", f"Crawler drive chain, t = {mm(pitch):g} mm, z = {teeth}")]}
 
 
 def wheel_result(page: str, state: dict[str, str]) -> dict[str, Any]:

@@ -24,7 +24,7 @@ from starlette.datastructures import UploadFile as StarletteUpload
 from .._results import jsonable
 from ..analysis.loads import REQUIRED_STATIC_SAFETY
 from ..design.duty import service_factor_of
-from ..display import verdict_text
+from ..display import ms, verdict_text
 from ..errors import ChainDriveError, InputError
 from ..units import angular_velocity_to_rpm
 from .design import (
@@ -191,7 +191,7 @@ def studio_payload(state: dict[str, str]) -> dict[str, Any]:
     out["verdict"] = verdict_text(failed, len(analysis.warnings))  # "passes, 2 warnings" (issue 30)
     out["downloads"] = {name: f"/download/{name}?{out['query']}" for name in DOWNLOADS}
     out["has_tensioner"] = drive.tensioner is not None
-    out["elapsed_ms"] = round((time.perf_counter() - t0) * 1e3, 1)
+    out["elapsed_ms"] = round(ms(time.perf_counter() - t0), 1)
     return out
 
 
