@@ -22,13 +22,8 @@ from functools import lru_cache
 from typing import Any
 
 from ..analysis.loads import REQUIRED_STATIC_SAFETY, required_static_safety
-from ..design.duty import (
-    check_duty_value,
-    design_power,
-    duty_class,
-    service_factor_of,
-    service_factor_table,
-)
+from ..design import service_factor_table
+from ..design.duty import check_duty_value, design_power, duty_class, service_factor_of
 from ..design.link import link_candidates
 from ..design.policy import BASE_TEETH, driven_teeth
 from ..design.request import DesignRequest
