@@ -40,3 +40,27 @@ def test_scaled_is_the_one_table():
     with pytest.raises(KeyError):
         scaled(1.0, "m", "furlong")
     assert CONVERSIONS[("N", "kN")] == 1e-3
+
+
+def test_margin_is_the_checks_number(capsys, tmp_path):
+    """The studio, `layout` and `analyze` show a check's margin from its own number (Check.margin),
+    never from its limit text (web.engine._margin is gone)."""
+    import chaindrive.web.engine as engine
+    from chaindrive.analysis import analyze_drive
+    from chaindrive.cli import main
+    from chaindrive.display import check_margin_text
+    from chaindrive.drive.project import parse_project, template
+
+    assert not hasattr(engine, "_margin")
+    drive = parse_project(template("roller"))
+    checks = analyze_drive(drive, exclude=["remedy"]).checks
+    page = engine.light_analysis(drive).checks
+    assert [c["margin"] for c in page] == [c.margin for c in checks]
+    static = next(c for c in checks if c.name.startswith("static safety"))
+    # margin = value / limit - 1 for a lower bound (">=")
+    assert static.margin == pytest.approx(static.value / static.limit - 1.0, rel=1e-15)
+    f = tmp_path / "roller.toml"
+    f.write_text(template("roller"))
+    main(["layout", str(f)])
+    out = capsys.readouterr().out
+    assert f"margin {check_margin_text(static)}" in " ".join(out.split())

@@ -22,7 +22,7 @@ if TYPE_CHECKING:
     from .analysis.checks import Check
 
 __all__ = ["verdict_text", "DISPLAY", "CONVERSIONS", "convert", "display_of", "display", "fmt", "check_line_parts",
-           "check_value_text", "check_limit_text", "scaled", "mm", "um", "kn", "kw", "mpa", "kn_per_m", "ms"]
+           "check_value_text", "check_limit_text", "check_margin_text", "scaled", "mm", "um", "kn", "kw", "mpa", "kn_per_m", "ms"]
 
 #: SI unit -> (display unit, factor).
 DISPLAY: dict[str, tuple[str, float]] = {
@@ -180,6 +180,24 @@ def check_limit_text(check: Check) -> str:
         (a, u), (b, _) = convert(lo, check.unit, check.display or None), convert(hi, check.unit, check.display or None)
         return f"{fmt(a)} … {fmt(b)} {u if u != '-' else ''}".strip()
     return f"{check.relation} {check_line_parts(limit, check.unit, check.display)}"
+
+
+def check_margin_text(check: Check | float | None) -> str:
+    """The relative margin of a check to its limit in per cent (:attr:`Check.margin
+    <chaindrive.analysis.checks.Check.margin>`, the check's own number; ``""`` without one).
+
+    Examples
+    --------
+    >>> from chaindrive.analysis.checks import Check
+    >>> check_margin_text(Check("static safety", 9.1, 7.0, "-", True, "ISO 10823:2004"))
+    '+30 %'
+    >>> check_margin_text(-0.052), check_margin_text(None)
+    ('-5 %', '')
+    """
+    margin = check if check is None or isinstance(check, (int, float)) else check.margin
+    if margin is None or not math.isfinite(margin):
+        return ""
+    return f"{margin * 100:+.0f} %"
 
 
 def verdict_text(failed: int, warnings: int) -> str:

@@ -13,7 +13,7 @@ import math
 
 import typer
 
-from ..display import kn, kw, mm
+from ..display import check_limit_text, check_margin_text, check_value_text, kn, kw, mm
 from ..errors import ChainDriveError
 from ..units import angular_velocity_to_rpm
 from .app import OPTION_ALIASES, app, echo_json, quantity, unit_help
@@ -76,7 +76,6 @@ def layout_command(
     from rich.markup import escape
 
     from ..analysis import analyze_drive
-    from ..display import check_limit_text, check_value_text
     from ..drive.project import load_project
 
     drive = load_project(file)
@@ -134,8 +133,9 @@ def layout_command(
                   + ", ".join(f"{mm(x):.1f} mm" for x in lay.take_up))
     for c in analysis.checks:
         verdict = {"pass": "[green]pass[/green]", "FAIL": "[red]FAIL[/red]"}.get(c.verdict, c.verdict)
-        con.print(f"{verdict}  " + escape(f"{c.name}: {check_value_text(c)} (limit {check_limit_text(c)}) "
-                                          f"[{c.source}] {c.note}"))
+        margin = check_margin_text(c)
+        con.print(f"{verdict}  " + escape(f"{c.name}: {check_value_text(c)} (limit {check_limit_text(c)}"
+                                          + (f", margin {margin}" if margin else "") + f") [{c.source}] {c.note}"))
     for w in analysis.warnings:
         con.print(f"warning: {w}", markup=False)
 
@@ -266,7 +266,6 @@ def select_command(
     from rich.markup import escape
     from rich.table import Table
 
-    from ..display import check_limit_text, check_value_text
 
     con = _console()
     rec = result.recommended

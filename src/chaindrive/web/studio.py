@@ -24,7 +24,7 @@ from starlette.datastructures import UploadFile as StarletteUpload
 from .._results import jsonable
 from ..analysis.loads import REQUIRED_STATIC_SAFETY
 from ..design.duty import service_factor_of
-from ..display import ms, verdict_text
+from ..display import check_margin_text, ms, verdict_text
 from ..errors import ChainDriveError, InputError
 from ..units import angular_velocity_to_rpm
 from .design import (
@@ -84,7 +84,7 @@ def _checks_for_page(checks: list[dict], units: str) -> list[dict]:
         else:
             limit_text = str(limit)
         out.append({**c, "value_text": value, "unit_text": unit, "limit_text": limit_text,
-                    "margin_text": "" if c["margin"] is None else f"{c['margin'] * 100:+.0f} %"})
+                    "margin_text": check_margin_text(c["margin"])})
     return out
 
 
