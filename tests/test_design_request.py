@@ -196,3 +196,44 @@ def test_request_errors_at_the_form_field(change, field, match):
     request, errors = design_request(state)
     assert request is None and list(errors) == [field]
     assert match in errors[field]
+
+
+def test_centre_distance_bounds():
+    """Without a wanted centre distance each chain is laid out at 40 pitches moved into the bounds; a
+    range of one value is that centre distance; the exact centre distance of the even link count
+    lies within a pitch of the wanted one (Shigley eq. (17-34), links rounded up)."""
+    duty = Duty(11e3, 1460 * RPM, driven_speed=480 * RPM, driven_machine="varying_conveyor")
+    fixed = design_drive(Duty(11e3, 1460 * RPM, driven_speed=480 * RPM, driven_machine="varying_conveyor",
+                              centre_distance=0.6)).recommended
+    one = design_drive(DesignRequest(duty, centre_distance_range=(0.6, 0.6))).recommended
+    assert (one.chain, one.driving_teeth, one.driven_teeth, one.links, one.centre_distance) == (
+        fixed.chain, fixed.driving_teeth, fixed.driven_teeth, fixed.links, fixed.centre_distance)
+    result = design_drive(DesignRequest(duty, centre_distance_range=(0.3, 0.4), all_sizes=True))
+    for c in result.candidates:
+        wanted = result.request.wanted_centre(c.pitch)
+        assert 0.3 <= wanted <= 0.4 and wanted <= c.centre_distance < wanted + c.pitch
+
+
+@pytest.mark.parametrize(("bounds", "centre", "match"), [
+    ((0.5, 0.4), None, r"centre_distance_range must be \(low, high\) in m with 0 <= low <= high <= 50 m"),
+    ((-0.1, 0.4), None, "centre_distance_range must be"),
+    ((0.1, 60.0), None, "centre_distance_range must be"),
+    (("a", "b"), None, "centre_distance_range must be"),
+    ((0.1, 0.4), 0.6, "give the centre distance or its bounds"),
+])
+def test_centre_distance_bounds_errors(bounds, centre, match):
+    duty = Duty(11e3, 150.0, ratio=3.0, service_factor=1.3, centre_distance=centre)
+    with pytest.raises(InputError, match=match) as err:
+        DesignRequest(duty, centre_distance_range=bounds)
+    assert err.value.field == "centre_distance_range"
+
+
+def test_select_centre_distance_bounds(capsys):
+    args = ["select", "--power", "11 kW", "--speed", "1460 rpm", "--driven-speed", "480 rpm", "--driven-machine",
+            "varying_conveyor", "--json"]
+    assert main([*args, "--min-centre-distance", "600 mm", "--max-centre-distance", "600 mm"]) == 0
+    rec = json.loads(capsys.readouterr().out)["recommended"]
+    assert main([*args, "--centre-distance", "600 mm"]) == 0
+    assert rec == json.loads(capsys.readouterr().out)["recommended"]
+    assert main([*args, "--min-centre-distance", "700 mm", "--max-centre-distance", "600 mm"]) == 2
+    assert "--min-centre-distance/--max-centre-distance must be (low, high)" in capsys.readouterr().err

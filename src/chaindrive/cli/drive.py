@@ -172,6 +172,7 @@ def _place(drive, place: str | None, wrap: str | None, along: str | None, of: st
 
 
 OPTION_ALIASES["select"] = {"teeth_driving": "--teeth", "service_factor": "--service-factor",
+                            "centre_distance_range": "--min-centre-distance/--max-centre-distance",
                             "load_character": "--load-character", "hours_per_day": "--hours-per-day"}
 
 
@@ -202,6 +203,11 @@ def select_command(
         "Wanted centre distance; default 40 pitches of each chain (ISO 10823: 30-50 pitches). "
         "The link count is the chain length rounded up to even; the centre distance printed is "
         "the exact one for that count.", "m", "600 mm")),
+    min_centre: str | None = typer.Option(None, "--min-centre-distance", help=unit_help(
+        "Without --centre-distance: the shortest centre distance a chain is laid out at (its 40 pitches "
+        "moved into the bounds).", "m", "400 mm")),
+    max_centre: str | None = typer.Option(None, "--max-centre-distance", help=unit_help(
+        "Without --centre-distance: the longest centre distance a chain is laid out at.", "m", "800 mm")),
     teeth: int | None = typer.Option(None, "--teeth", "-z", help="Teeth of the small sprocket, a count "
                                      "(default: the tooth-count policy, 19 or more, odd; docs/design.md)."),
     family: str | None = typer.Option(None, "--family", "-f", help="ansi or iso606 (default both: an "
@@ -248,7 +254,8 @@ def select_command(
         load_character=load_character, service_factor=service_factor, hours_per_day=hours,
         centre_distance=quantity(centre_distance, "m", "centre_distance"), environment=environment,
         lubrication=lubrication, teeth_driving=teeth, family=family, strands=_strand_counts(strands), method=method,
-        required_static_safety=required_static_safety, all_sizes=all_sizes, limit=limit)
+        required_static_safety=required_static_safety, all_sizes=all_sizes, limit=limit,
+        centre_distance_range=_centre_range(min_centre, max_centre))
     duty = request.duty
     result = design_drive(request)
     found = result.candidates
@@ -345,6 +352,18 @@ def rating_command(
                f"[{r.source}]")
     for w in r.warnings:
         typer.echo(f"note: {w}")
+
+
+def _centre_range(low: str | None, high: str | None) -> tuple[float, float] | None:
+    """``--min-centre-distance``/``--max-centre-distance`` as the request's bounds [m] (an open end:
+    0, or the largest centre distance of :data:`chaindrive.limits.DUTY_RANGES`)."""
+    from ..limits import DUTY_RANGES
+
+    if low is None and high is None:
+        return None
+    lo = quantity(low, "m", "min_centre_distance")
+    hi = quantity(high, "m", "max_centre_distance")
+    return (0.0 if lo is None else lo, DUTY_RANGES["centre_distance"][1] if hi is None else hi)
 
 
 def _strand_counts(text: str) -> tuple[int, ...]:

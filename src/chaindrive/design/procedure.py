@@ -256,25 +256,28 @@ def _candidate(chain: Chain, twins: tuple[str, ...], duty: Duty, factors: tuple[
 
 def _rated(chain: Chain, twins: tuple[str, ...], duty: Duty, ks: float, given_teeth: int | None,
            method: str | None, teeth: tuple[int, str] | None = None,
-           short: list[tuple[_Rated, float]] | None = None) -> _Rated | str | None:
+           short: list[tuple[_Rated, float]] | None = None, centre: float | None = None) -> _Rated | str | None:
     """Steps 2-3 of :func:`_candidate`: teeth (``teeth`` when already chosen), rating, room
     (``None``: does not carry the load; then, when its rating lies within :data:`NEAR_MISS_BAND`
-    of the design power, it is appended to ``short`` with its rating ratio)."""
+    of the design power, it is appended to ``short`` with its rating ratio). ``centre``: the wanted
+    centre distance [m] (default the duty's, else :data:`DEFAULT_CENTRE_PITCHES` pitches)."""
     from ..rating import chain_rating
     from .policy import driven_teeth
 
     z1, why = _teeth_for(chain, duty, given_teeth) if teeth is None else teeth
     z2 = driven_teeth(z1, duty.speed_ratio)
     design = duty.power * ks
+    if centre is not None:
+        a = centre
+    else:
+        a = DEFAULT_CENTRE_PITCHES * chain.pitch if duty.centre_distance is None else duty.centre_distance
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", ValidityRangeWarning)
         r = chain_rating(chain, z1, duty.speed, power=design, method=method)
     if r.rated_power < design:
         if short is not None and r.rated_power >= (1.0 - NEAR_MISS_BAND) * design:
-            a0 = DEFAULT_CENTRE_PITCHES * chain.pitch if duty.centre_distance is None else duty.centre_distance
-            short.append((_Rated(chain, twins, z1, z2, why, r, a0), r.rated_power / design))
+            short.append((_Rated(chain, twins, z1, z2, why, r, a), r.rated_power / design))
         return None
-    a = DEFAULT_CENTRE_PITCHES * chain.pitch if duty.centre_distance is None else duty.centre_distance
     clearance = (_outside_diameter(chain.pitch, z1) + _outside_diameter(chain.pitch, z2)) / 2
     if a <= clearance:
         return f"{chain.name} (needs > {clearance * 1e3:.0f} mm)"
@@ -466,7 +469,8 @@ def _near_misses(short: list[tuple[_Rated, float]], best: DesignCandidate, duty:
             z = rated.z1 + extra
             if driven_teeth(z, duty.speed_ratio) > MAXIMUM_DRIVEN_TEETH:
                 break
-            got = _rated(ch, rated.twins, duty, ks, z, method, teeth=(z, f"near-miss remedy: {extra} more "
+            got = _rated(ch, rated.twins, duty, ks, z, method, centre=rated.centre,
+                         teeth=(z, f"near-miss remedy: {extra} more "
                                                                          f"tooth{'' if extra == 1 else ' teeth'}"))
             if not isinstance(got, _Rated):
                 continue
@@ -632,7 +636,8 @@ def design_drive(request: DesignRequest | Duty, **options: Any) -> DesignResult:
     for (ch, twins, teeth), maybe in zip(chains, may_carry, strict=True):
         if not maybe:
             continue
-        got = _rated(ch, twins, duty, ks, teeth_driving, method, teeth, short=short)
+        got = _rated(ch, twins, duty, ks, teeth_driving, method, teeth, short=short,
+                     centre=request.wanted_centre(ch.pitch))
         if isinstance(got, str):
             too_close.append(got)
         elif got is not None:

@@ -44,7 +44,8 @@ FAMILIES = ("ansi", "iso606")
 #: The request's fields that belong to the duty (:class:`~chaindrive.design.duty.Duty`).
 DUTY_FIELDS = tuple(f.name for f in dataclasses.fields(Duty))
 #: The request's constraints of the selection.
-OPTION_FIELDS = ("teeth_driving", "family", "strands", "method", "required_static_safety", "all_sizes", "limit")
+OPTION_FIELDS = ("teeth_driving", "family", "strands", "method", "required_static_safety", "all_sizes", "limit",
+                 "centre_distance_range")
 
 
 @dataclass(frozen=True)
@@ -70,6 +71,10 @@ class DesignRequest(Result):
         Every adequate chain, not only the smallest adequate pitch per series and strands.
     limit : int, optional
         At most this many candidates (``>= 1``).
+    centre_distance_range : (float, float), optional
+        Bounds ``(low, high)`` [m] of the centre distance when the duty wants none: each chain is
+        laid out at :data:`~chaindrive.design.procedure.DEFAULT_CENTRE_PITCHES` pitches moved into
+        the bounds (:meth:`wanted_centre`); ``0 <= low <= high <=`` the duty's largest centre distance.
 
     Raises
     ------
@@ -87,6 +92,7 @@ class DesignRequest(Result):
     required_static_safety: float | None = None
     all_sizes: bool = False
     limit: int | None = None
+    centre_distance_range: tuple[float, float] | None = None
 
     def __post_init__(self) -> None:
         if not isinstance(self.duty, Duty):
@@ -116,6 +122,31 @@ class DesignRequest(Result):
             raise InputError(f"all_sizes must be True or False, got {self.all_sizes!r}", field="all_sizes")
         if self.limit is not None:
             object.__setattr__(self, "limit", check_size("limit", self.limit, 10**6, field="limit"))
+        if self.centre_distance_range is not None:
+            object.__setattr__(self, "centre_distance_range", _centre_range(self.centre_distance_range,
+                                                                             self.duty.centre_distance))
+
+    def wanted_centre(self, pitch: float) -> float:
+        """The centre distance [m] a chain of ``pitch`` [m] is laid out at: the duty's, else
+        :data:`~chaindrive.design.procedure.DEFAULT_CENTRE_PITCHES` pitches (ISO 10823: 30-50)
+        moved into :attr:`centre_distance_range`.
+
+        Examples
+        --------
+        >>> r = DesignRequest.of(power=5e3, speed=100.0, ratio=2.0, load_character="smooth",
+        ...                      centre_distance_range=(0.3, 0.45))
+        >>> r.wanted_centre(0.0127), r.wanted_centre(0.00635)
+        (0.45, 0.3)
+        """
+        from .procedure import DEFAULT_CENTRE_PITCHES
+
+        if self.duty.centre_distance is not None:
+            return float(self.duty.centre_distance)
+        a = DEFAULT_CENTRE_PITCHES * float(pitch)
+        if self.centre_distance_range is None:
+            return a
+        low, high = self.centre_distance_range
+        return min(max(a, low), high)
 
     @classmethod
     def of(cls, **values: Any) -> DesignRequest:
@@ -129,7 +160,7 @@ class DesignRequest(Result):
         >>> DesignRequest.of(power=5e3, speed=100.0, ratio=2.0, colour="red")
         Traceback (most recent call last):
         ...
-        chaindrive.errors.InputError: unknown design request field 'colour'; valid: power, speed, ratio, driven_speed, driver, driven_machine, load_character, service_factor, hours_per_day, centre_distance, environment, lubrication, teeth_driving, family, strands, method, required_static_safety, all_sizes, limit
+        chaindrive.errors.InputError: unknown design request field 'colour'; valid: power, speed, ratio, driven_speed, driver, driven_machine, load_character, service_factor, hours_per_day, centre_distance, environment, lubrication, teeth_driving, family, strands, method, required_static_safety, all_sizes, limit, centre_distance_range
         """
         unknown = [k for k in values if k not in DUTY_FIELDS and k not in OPTION_FIELDS]
         if unknown:
@@ -137,6 +168,22 @@ class DesignRequest(Result):
                              f"{', '.join((*DUTY_FIELDS, *OPTION_FIELDS))}", field=unknown[0])
         duty = Duty(**{k: v for k, v in values.items() if k in DUTY_FIELDS})
         return cls(duty, **{k: v for k, v in values.items() if k in OPTION_FIELDS})
+
+
+def _centre_range(bounds: Any, wanted: float | None) -> tuple[float, float]:
+    """``(low, high)`` [m] checked: two finite numbers, ``0 <= low <= high <=`` the largest centre distance."""
+    high_max = DUTY_RANGES["centre_distance"][1]
+    try:
+        low, high = (float(b) for b in bounds)
+    except (TypeError, ValueError):
+        low = high = math.nan
+    if not (math.isfinite(low) and math.isfinite(high) and 0 <= low <= high <= high_max):
+        raise InputError(f"centre_distance_range must be (low, high) in m with 0 <= low <= high <= {high_max:g} m, "
+                         f"got {bounds!r}", field="centre_distance_range")
+    if wanted is not None:
+        raise InputError("give the centre distance or its bounds (centre_distance_range), not both",
+                         field="centre_distance_range")
+    return low, high
 
 
 from chaindrive._finite import guard_public  # noqa: E402
