@@ -25,10 +25,12 @@ from .._validation import check_teeth
 from ..errors import InputError
 
 __all__ = ["BASE_TEETH", "MINIMUM_TEETH_BY_REGION", "MAXIMUM_DRIVEN_TEETH",
-           "ABSOLUTE_MINIMUM_TEETH", "TEETH_SOURCES", "driving_teeth", "driven_teeth"]
+           "ABSOLUTE_MINIMUM_TEETH", "TEETH_SOURCES", "DEFAULT_CENTRE_PITCHES", "driving_teeth", "driven_teeth"]
 
 #: Small-sprocket teeth the procedure starts with (ISO 10823:2004 rating basis).
 BASE_TEETH = 19
+#: Default centre distance [pitches] (ISO 10823:2004: 30 ... 50 pitches).
+DEFAULT_CENTRE_PITCHES = 40
 #: Minimum small-sprocket teeth by ANSI lubrication region (Diamond Chain FAQ).
 MINIMUM_TEETH_BY_REGION = {"A": 12, "B": 17, "C": 25, "C'": 25}
 #: The large wheel's teeth at most (U.S. Tsubaki RS catalogue, selection step 5).

@@ -43,6 +43,7 @@ from ..errors import (
 from ..loads import mean_chain_speed
 from ..units import angular_velocity_to_rpm
 from .duty import Duty, Factor, design_power, duty_factors
+from .policy import DEFAULT_CENTRE_PITCHES
 from .request import DesignRequest
 
 if TYPE_CHECKING:
@@ -52,8 +53,6 @@ if TYPE_CHECKING:
 __all__ = ["DesignCandidate", "DesignResult", "NearMiss", "design_drive", "project_text", "two_sprocket_drive",
            "DEFAULT_CENTRE_PITCHES", "NEAR_MISS_BAND"]
 
-#: Default centre distance [pitches] (ISO 10823:2004: 30 ... 50 pitches).
-DEFAULT_CENTRE_PITCHES = 40
 
 
 @dataclass(frozen=True)

@@ -36,6 +36,7 @@ from .._results import Result
 from ..errors import InputError, UnknownNameError
 from ..limits import DUTY_RANGES, MAX_RATED_STRANDS, MAX_TEETH, MIN_TEETH, check_size
 from .duty import Duty
+from .policy import DEFAULT_CENTRE_PITCHES
 
 __all__ = ["DesignRequest", "FAMILIES", "DUTY_FIELDS", "OPTION_FIELDS"]
 
@@ -73,7 +74,7 @@ class DesignRequest(Result):
         At most this many candidates (``>= 1``).
     centre_distance_range : (float, float), optional
         Bounds ``(low, high)`` [m] of the centre distance when the duty wants none: each chain is
-        laid out at :data:`~chaindrive.design.procedure.DEFAULT_CENTRE_PITCHES` pitches moved into
+        laid out at :data:`~chaindrive.design.policy.DEFAULT_CENTRE_PITCHES` pitches moved into
         the bounds (:meth:`wanted_centre`); ``0 <= low <= high <=`` the duty's largest centre distance.
 
     Raises
@@ -128,7 +129,7 @@ class DesignRequest(Result):
 
     def wanted_centre(self, pitch: float) -> float:
         """The centre distance [m] a chain of ``pitch`` [m] is laid out at: the duty's, else
-        :data:`~chaindrive.design.procedure.DEFAULT_CENTRE_PITCHES` pitches (ISO 10823: 30-50)
+        :data:`~chaindrive.design.policy.DEFAULT_CENTRE_PITCHES` pitches (ISO 10823: 30-50)
         moved into :attr:`centre_distance_range`.
 
         Examples
@@ -138,8 +139,6 @@ class DesignRequest(Result):
         >>> r.wanted_centre(0.0127), r.wanted_centre(0.00635)
         (0.45, 0.3)
         """
-        from .procedure import DEFAULT_CENTRE_PITCHES
-
         if self.duty.centre_distance is not None:
             return float(self.duty.centre_distance)
         a = DEFAULT_CENTRE_PITCHES * float(pitch)
