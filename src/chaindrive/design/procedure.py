@@ -43,7 +43,7 @@ from ..errors import (
 from ..loads import mean_chain_speed
 from ..units import angular_velocity_to_rpm
 from .duty import Duty, Factor, design_power, duty_factors
-from .policy import DEFAULT_CENTRE_PITCHES
+from .policy import DEFAULT_CENTRE_PITCHES, default_centre_distance
 from .request import DesignRequest
 
 if TYPE_CHECKING:
@@ -269,7 +269,7 @@ def _rated(chain: Chain, twins: tuple[str, ...], duty: Duty, ks: float, given_te
     if centre is not None:
         a = centre
     else:
-        a = DEFAULT_CENTRE_PITCHES * chain.pitch if duty.centre_distance is None else duty.centre_distance
+        a = default_centre_distance(chain.pitch) if duty.centre_distance is None else duty.centre_distance
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", ValidityRangeWarning)
         r = chain_rating(chain, z1, duty.speed, power=design, method=method)

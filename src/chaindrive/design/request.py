@@ -36,7 +36,7 @@ from .._results import Result
 from ..errors import InputError, UnknownNameError
 from ..limits import DUTY_RANGES, MAX_RATED_STRANDS, MAX_TEETH, MIN_TEETH, check_size
 from .duty import Duty
-from .policy import DEFAULT_CENTRE_PITCHES
+from .policy import default_centre_distance
 
 __all__ = ["DesignRequest", "FAMILIES", "DUTY_FIELDS", "OPTION_FIELDS"]
 
@@ -141,7 +141,7 @@ class DesignRequest(Result):
         """
         if self.duty.centre_distance is not None:
             return float(self.duty.centre_distance)
-        a = DEFAULT_CENTRE_PITCHES * float(pitch)
+        a = default_centre_distance(pitch)
         if self.centre_distance_range is None:
             return a
         low, high = self.centre_distance_range

@@ -25,7 +25,7 @@ from ..analysis.loads import REQUIRED_STATIC_SAFETY, required_static_safety
 from ..design import service_factor_table
 from ..design.duty import check_duty_value, design_power, duty_class, service_factor_of
 from ..design.link import link_candidates
-from ..design.policy import BASE_TEETH, driven_teeth
+from ..design.policy import BASE_TEETH, default_centre_distance, driven_teeth
 from ..design.request import DesignRequest
 from ..display import kn_per_m, kw, mm
 from ..errors import ChainDriveError, InputError, ValidityRangeWarning
@@ -525,9 +525,7 @@ def design_from_state(state: dict[str, str]) -> tuple[Design | None, dict[str, s
         errors["chain"] = str(exc)
         return None, errors
     if centre is None:   # blank (roller): the procedure's centre distance for its chain, else 40 pitches
-        from ..design.procedure import DEFAULT_CENTRE_PITCHES
-
-        centre = chosen["centre_distance"] if chosen is not None else DEFAULT_CENTRE_PITCHES * chain.pitch
+        centre = chosen["centre_distance"] if chosen is not None else default_centre_distance(chain.pitch)
     if kind == "link" and not chain.is_link_chain:
         errors["chain"] = f"{chain.name} is a roller chain; the link-chain design needs a DIN 22252 chain"
         return None, errors
