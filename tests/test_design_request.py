@@ -237,3 +237,24 @@ def test_select_centre_distance_bounds(capsys):
     assert rec == json.loads(capsys.readouterr().out)["recommended"]
     assert main([*args, "--min-centre-distance", "700 mm", "--max-centre-distance", "600 mm"]) == 2
     assert "--min-centre-distance/--max-centre-distance must be (low, high)" in capsys.readouterr().err
+
+
+def test_duty_helpers_refuse_unknown_names():
+    # found by the API fuzz generators (scripts/fuzz.py): a KeyError before
+    from chaindrive.design.duty import check_duty_value, duty_class
+
+    with pytest.raises(UnknownNameError, match="no duty value '5 rad/s'; valid: power, speed"):
+        check_duty_value("5 rad/s", 1.0)
+    with pytest.raises(InputError, match="unknown driven machine 'fatigue'") as err:
+        duty_class("fatigue")
+    assert err.value.field == "driven_machine"
+    with pytest.raises(InputError, match="unknown load character 'wild'"):
+        duty_class(None, "wild")
+    with pytest.raises(InputError, match="unknown driver 'steam'") as err:
+        service_factor_of("steam", load_character="smooth")
+    assert err.value.field == "driver"
+    with pytest.raises(InputError, match="no duty class") as err:
+        service_factor_of("electric_motor")
+    assert err.value.field == "service_factor"
+    with pytest.raises(InputError, match="service_factor must be >= 1"):
+        service_factor_of("electric_motor", given=0.5)

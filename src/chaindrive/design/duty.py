@@ -28,7 +28,7 @@ from importlib import resources
 from typing import Any
 
 from .._results import Result, quantity
-from ..errors import InputError
+from ..errors import InputError, UnknownNameError
 from ..limits import DUTY_RANGES
 from ..loads import SERVICE_FACTORS, service_factor
 
@@ -92,6 +92,8 @@ def check_duty_value(name: str, value: float | None) -> None:
     ------
     InputError
         Not a finite number in the range (field ``name``).
+    UnknownNameError
+        ``name`` is not a duty value of :data:`~chaindrive.limits.DUTY_RANGES`.
 
     Examples
     --------
@@ -101,6 +103,8 @@ def check_duty_value(name: str, value: float | None) -> None:
     ...
     chaindrive.errors.InputError: hours_per_day must be a finite number in (0, 24] h, got 25.0
     """
+    if name not in DUTY_RANGES:
+        raise UnknownNameError(f"no duty value {name!r}; valid: {', '.join(DUTY_RANGES)}")
     if value is None:
         return
     low, high, unit = DUTY_RANGES[name]
@@ -211,11 +215,17 @@ def duty_class(driven_machine: str | None, load_character: str | None = None) ->
     """The load character of a duty: ``load_character`` when given, else the driven machine's
     (U.S. Tsubaki's table, :func:`service_factor_table`); ``None``: neither.
 
+    Raises
+    ------
+    InputError
+        Unknown driven machine or load character (the field named).
+
     Examples
     --------
     >>> duty_class("varying_conveyor"), duty_class("varying_conveyor", "heavy"), duty_class(None)
     ('moderate', 'heavy', None)
     """
+    _check_duty_class(DRIVERS[0], driven_machine, load_character)
     if load_character is not None:
         return load_character
     if driven_machine is not None:
