@@ -258,3 +258,18 @@ def test_duty_helpers_refuse_unknown_names():
     assert err.value.field == "service_factor"
     with pytest.raises(InputError, match="service_factor must be >= 1"):
         service_factor_of("electric_motor", given=0.5)
+
+
+def test_web_teeth_and_speed_bounds_are_the_limits(client):
+    """The JSON API and the expert pages take the teeth and the speed bounds of chaindrive.limits
+    (were 3...150 teeth and 1000 rad/s of their own)."""
+    from chaindrive.limits import MAX_SPEED
+    from chaindrive.web.expert import _SPEED
+
+    assert _SPEED.maximum == MAX_SPEED == DUTY_RANGES["speed"][1]
+    base = {"chain": "18x64", "speed": "5 rad/s", "points": "21"}
+    assert client.get("/api/kinematics", params={**base, "teeth": "160"}).status_code == 200
+    for teeth in (str(MIN_TEETH - 1), str(MAX_TEETH + 1)):
+        assert client.get("/api/kinematics", params={**base, "teeth": teeth}).status_code == 422
+    r = client.get("/api/kinematics", params={**base, "teeth": "8", "speed": "2e4 rad/s"})
+    assert r.status_code == 422 and "speed" in r.text

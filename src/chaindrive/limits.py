@@ -59,6 +59,7 @@ __all__ = [
     "MAX_PRIMITIVES",
     "MAX_ARC_POINTS",
     "MIN_TEETH",
+    "MAX_SPEED",
     "MAX_RATED_STRANDS",
     "DUTY_RANGES",
     "PLAUSIBLE",
@@ -99,6 +100,8 @@ MAX_ARC_POINTS = 10_000
 
 #: Fewest teeth or pockets of one wheel (a pocket wheel of a mining conveyor: 3 and more).
 MIN_TEETH = 3
+#: Fastest wheel speed a door accepts [rad/s] (about 95,000 rpm; chains run below 10,000 rpm).
+MAX_SPEED = 1e4
 #: Most strands of a chain the rating methods cover (ANSI multi-strand factor, ISO 10823: up to 4).
 MAX_RATED_STRANDS = 4
 
@@ -107,8 +110,8 @@ MAX_RATED_STRANDS = 4
 #: given chain, the studio); the design procedure asks for a speed-reducing one (ratio >= 1).
 DUTY_RANGES: dict[str, tuple[float, float, str]] = {
     "power": (0.0, 1e8, "W"),
-    "speed": (0.0, 1e4, "rad/s"),
-    "driven_speed": (0.0, 1e4, "rad/s"),
+    "speed": (0.0, MAX_SPEED, "rad/s"),
+    "driven_speed": (0.0, MAX_SPEED, "rad/s"),
     "ratio": (0.0, 20.0, ""),
     "hours_per_day": (0.0, 24.0, "h"),
     "centre_distance": (0.0, 50.0, "m"),
