@@ -273,3 +273,15 @@ def test_web_teeth_and_speed_bounds_are_the_limits(client):
         assert client.get("/api/kinematics", params={**base, "teeth": teeth}).status_code == 422
     r = client.get("/api/kinematics", params={**base, "teeth": "8", "speed": "2e4 rad/s"})
     assert r.status_code == 422 and "speed" in r.text
+
+
+def test_studio_required_static_safety_reaches_the_design(client):
+    """A required static safety typed in the studio is the request's, as `select --required-static-safety`
+    (the studio left it out of the roller design before)."""
+    state = normalise_state({**_state(*DUTIES[1]), "required_static_safety": "20"})
+    request, errors = design_request(state)
+    assert errors == {} and request.required_static_safety == 20.0
+    api = design_drive(request).recommended
+    first = client.get("/api/design?" + urlencode(state)).json()["candidates"][0]
+    assert (first["chain"], first["links"], first["required_static_safety"]) == (api.chain, api.links, 20.0)
+    assert first["static_safety"] >= 20.0
