@@ -95,11 +95,16 @@ def test_calibration_is_data_with_provenance():
     assert 0 < c.calibration_rms <= c.calibration_worst < 1 and 0 < c.holdout_worst < 1
 
 
-def _sweep():
-    sys.path.insert(0, str(ROOT / "benchmarks"))
-    import _dynamic_sweep
+def _module(folder, name):
+    """A module of benchmarks/ or scripts/ (not part of the package)."""
+    import importlib
 
-    return _dynamic_sweep
+    sys.path.insert(0, str(ROOT / folder))
+    return importlib.import_module(name)
+
+
+def _sweep():
+    return _module("benchmarks", "_dynamic_sweep")
 
 
 def test_model_against_the_cached_sweep():
@@ -176,10 +181,7 @@ def test_errors(call, match):
 
 
 def _calibration_script():
-    sys.path.insert(0, str(ROOT / "scripts"))
-    import calibrate_running_tension
-
-    return calibrate_running_tension
+    return _module("scripts", "calibrate_running_tension")
 
 
 def test_cross_validation_stored_and_recomputed():
