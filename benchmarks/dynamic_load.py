@@ -41,7 +41,11 @@ tight-side tension) and item 4 (``analysis vs simulation over the sweep``: the r
 :func:`chaindrive.vibration.running_tension.running_peak_tension` against the 64 simulated
 drives cached in ``benchmarks/data/dynamic_sweep.csv``; ``--model`` prints only these).
 
-Run: ``PYTHONPATH=src python benchmarks/dynamic_load.py [--sweep | --model | --diagnose [NAME ...]]``.
+``--friction [NAME ...]`` re-simulates sweep drives (default the worst: S13, S02, S04, S31, S63)
+with the roller–tooth friction coefficient 0, 0.05, 0.1 and 0.15 (docs/design.md, "Span resonance:
+tested, not kept"; about 30 s of CPU per run).
+
+Run: ``PYTHONPATH=src python benchmarks/dynamic_load.py [--sweep | --model | --diagnose [NAME ...] | --friction [NAME ...]]``.
 """
 
 from __future__ import annotations
@@ -402,6 +406,45 @@ def main(extended: bool = False) -> None:
 
 
 
+def friction_sensitivity(names: list[str], coefficients: tuple[float, ...] = (0.0, 0.05, 0.1, 0.15),
+                         periods: int = 40) -> None:
+    """docs/design.md, "Span resonance: tested, not kept": sweep drives re-simulated (seats at
+    Palmgren's stiffness, 2.5 s settling, ``periods`` tooth periods) with the roller–tooth
+    friction coefficient set to each of ``coefficients``; the median per-tooth-period peak of
+    the tight-span tension against the reduced model, and the three dominant frequencies of
+    the tension over the tooth frequency (Hann window, zero-padded FFT, peaks 5 % apart)."""
+    import _dynamic_sweep as sw
+
+    from chaindrive.vibration.running_tension import running_peak_tension
+
+    warnings.simplefilter("ignore")
+    cache = {str(r["name"]): r for r in sw.read_cache()}
+    for s in sw.sweep_drives(64):
+        if s.name not in names:
+            continue
+        r = cache[s.name]
+        d = sw.drive_of(s)
+        model = float(running_peak_tension(r["tight"], d.speed, r["pitch"], r["teeth_driving"], r["mass_per_length"],
+                                           r["contact_stiffness"]))
+        zw = d.driving_wheel.teeth * d.speed
+        cells = []
+        for mu in coefficients:
+            t, ts = sw.settled_run(d, periods, 2.5, contact_stiffness=r["contact_stiffness"], friction=mu)
+            peak = float(np.median(tooth_peaks(d, t, ts)))
+            x = ts - ts.mean()
+            f = np.fft.rfftfreq(4 * len(x), t[1] - t[0]) * 2 * math.pi
+            a = np.abs(np.fft.rfft(x * np.hanning(len(x)), n=4 * len(x)))
+            dominant: list[float] = []
+            for i in np.argsort(a)[::-1]:
+                if all(abs(f[i] - g) > 0.05 * zw for g in dominant):
+                    dominant.append(float(f[i]))
+                if len(dominant) == 3:
+                    break
+            cells.append(f"mu {mu:4.2f}: peak {peak:6.0f} ({100 * (model / peak - 1):+5.1f} %) dominant/zw "
+                         + ", ".join(f"{g / zw:.2f}" for g in dominant))
+        print(f"{s.name} model {model:6.0f} N, cached peak {r['sim_peak']:6.0f} N | " + " | ".join(cells), flush=True)
+
+
 def acceptance_drives_with_seat_stiffness() -> None:
     """The three drives of the acceptance simulated with the seats at Palmgren's stiffness
     (as the sweep) against the reduced model on the analysis's tight-side tension."""
@@ -437,6 +480,8 @@ if __name__ == "__main__":
     sys.path.insert(0, str(ROOT / "benchmarks"))
     if "--diagnose" in sys.argv[1:]:
         diagnose([a for a in sys.argv[1:] if not a.startswith("--")])
+    elif "--friction" in sys.argv[1:]:
+        friction_sensitivity([a for a in sys.argv[1:] if not a.startswith("--")] or ["S13", "S02", "S04", "S31", "S63"])
     elif "--plot" in sys.argv[1:]:
         sweep_plot(sys.argv[sys.argv.index("--plot") + 1])
     elif "--model" in sys.argv[1:]:
