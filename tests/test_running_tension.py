@@ -235,7 +235,8 @@ def test_span_resonance_term_does_not_explain_the_sweep():
 def test_worst_drive_is_friction_driven_not_a_damped_resonance():
     # docs/design.md, "Span resonance: tested, not kept": the sweep's worst drive S13 (20B 18/53 at
     # 152 rpm, the model 36 % low) re-simulated: without the roller-tooth friction (the
-    # simulation's damping) its peak falls (measured 8813 -> 7423 N over 40 tooth periods),
+    # simulation's damping) its peak falls (measured 9120 -> 7282 N over 40 tooth periods,
+    # benchmarks/dynamic_load.py --friction),
     # where a linearly damped resonance would rise; a regression of that finding
     sw = _sweep()
     s = next(d for d in sw.sweep_drives(64) if d.name == "S13")
