@@ -29,10 +29,15 @@ _HUB_DIAMETER = typer.Option(None, "--hub-diameter", help=unit_help("Hub diamete
 _HUB_LENGTH = typer.Option(None, "--hub-length", help=unit_help("Hub projection beyond the plate on one side ('0 mm' for a plate wheel); default 1.2 x bore overall, rounded up to 5 mm.", "m", "50 mm"))
 _MATERIAL = typer.Option(None, "--material", help="Material and heat-treatment note for the title block, e.g. 'C45, teeth induction hardened 45...55 HRC'.")
 _FORCE = typer.Option(False, "--force", help="Overwrite existing output files (default: refuse).")
-_JSON_DIMENSIONS = typer.Option(False, "--json", help="Print every computed dimension as JSON in SI units (m, rad).")
+
 _POCKET_SVG = typer.Option(None, "--svg", help="Write the outline to this SVG file (viewBox in mm).")
 _TRACK_DXF = typer.Option(None, "--dxf", help="Write the outline to this DXF file (mm; layers OUTLINE, PITCH_CIRCLE, CENTRES, ROOT, TIP).")
 _TRACK_SVG = typer.Option(None, "--svg", help="Write the outline to this SVG file (viewBox in mm).")
+
+
+def _json_option() -> Any:
+    """The ``--json`` option of the wheel commands."""
+    return typer.Option(False, "--json", help="Print every computed dimension as JSON in SI units (m, rad).")
 
 
 def _chain(name: str | None):
@@ -132,7 +137,7 @@ def sprocket_command(
     hub_length: str | None = _HUB_LENGTH,
     material: str | None = _MATERIAL,
     force: bool = _FORCE,
-    as_json: bool = _JSON_DIMENSIONS,
+    as_json: bool = _json_option(),
 ) -> None:
     """Roller-chain sprocket dimensions and tooth outline to ISO 606:2015 clause 5 (or ASME B29.1).
 
@@ -238,7 +243,7 @@ def pocket_wheel_command(
     hub_length: str | None = _HUB_LENGTH,
     material: str | None = _MATERIAL,
     force: bool = _FORCE,
-    as_json: bool = _JSON_DIMENSIONS,
+    as_json: bool = _json_option(),
 ) -> None:
     """Pocket wheel for a round link chain: pitch radius (Dolipiński et al. eq. 6), central angles
     δ1, δ2 (Dolipiński et al. eqs 7-9), pocket and hinge positions, and a basic outline."""

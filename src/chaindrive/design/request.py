@@ -53,6 +53,9 @@ OPTION_FIELDS = ("teeth_driving", "family", "strands", "method", "required_stati
 class DesignRequest(Result):
     """A duty and the constraints of the selection (SI units), checked when built.
 
+    :func:`~chaindrive.design.design_drive` reads nothing else; a door (the API, ``select``, the
+    studio, a study) only maps its inputs to these fields.
+
     Parameters
     ----------
     duty : Duty
