@@ -207,7 +207,7 @@ def _write_msgs(dxf, svg, step=None):
     return [f"wrote {p}" for p in (dxf, svg, step) if p is not None]
 
 
-def _hub(bore: str | None, hub_diameter: str | None, hub_length: str | None) -> dict[str, float | None]:
+def _hub(bore: str | None, hub_diameter: str | None, hub_length: str | None) -> dict[str, Any]:
     """The hub options of a wheel part in SI units (``sprocket_part``, ``pocket_wheel_part``)."""
     return {"bore": quantity(bore, "m", "bore"), "hub_diameter": quantity(hub_diameter, "m", "hub_diameter"),
             "hub_length": quantity(hub_length, "m", "hub_length")}
@@ -269,7 +269,7 @@ def pocket_wheel_command(
     if dxf is not None or step is not None:
         from ..geometry.part import pocket_wheel_part
 
-        extra = {} if material is None else {"material": material}
+        extra: dict[str, Any] = {} if material is None else {"material": material}
         part = pocket_wheel_part(w, **_hub(bore, hub_diameter, hub_length), **extra)
     if svg is not None:
         _write_outline(w.outline(), w.label(), None, svg, force=force)
