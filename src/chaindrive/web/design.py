@@ -34,8 +34,8 @@ from ..units import angular_velocity_to_rpm
 from .fields import FieldError, FieldSpec, input_field, parse_field, parse_integer
 from .wheels import EXTRA_CHOICES, EXTRA_DEFAULTS, add_extra_wheels, extra_wheels
 
-__all__ = ["DEFAULTS", "FIELDS", "Design", "service_factor_table", "normalise_state",
-           "design_from_state", "state_from_project", "MINING_EXAMPLE", "ROLLER_EXAMPLE"]
+__all__ = ["DEFAULTS", "FIELDS", "REQUEST_FIELDS", "Design", "service_factor_table", "normalise_state",
+           "design_request", "design_from_state", "state_from_project", "MINING_EXAMPLE", "ROLLER_EXAMPLE"]
 
 
 #: Every field of the studio form, its default text (roller-chain example).
