@@ -52,5 +52,5 @@ def life_section(a: DriveAnalysis, fig: _Figures) -> Section | None:
 
     fig(sec, lambda: life_plot(r), "Elongation over hours; jump-over margin, tensioner travel and span "
         "frequencies over the elongation", "life.png")
-    sec.results = {"life": r.to_dict()}
+    sec.results = {"life": "analysis.life"}
     return sec

@@ -21,7 +21,24 @@ from ..analysis.checks import Check
 if TYPE_CHECKING:
     from matplotlib.figure import Figure as MatplotlibFigure
 
-__all__ = ["Table", "Figure", "Section", "Report"]
+__all__ = ["Table", "Figure", "Section", "Report", "RESULTS_VERSION", "resolve"]
+
+#: The layout of results.json: 2 holds each number once (sections reference ``analysis`` by
+#: path); 1 (before) repeated the analysis' numbers in each section's ``results`` and ``checks``.
+RESULTS_VERSION = 2
+
+
+def resolve(data: dict[str, Any], path: str) -> Any:
+    """The value at ``path`` (``"analysis.layout.links"``, ``"analysis.checks[3]"``) of a results.json
+    document ``data``: how a reader follows a section's references.
+
+    >>> resolve({"analysis": {"checks": [{"value": 2.0}]}}, "analysis.checks[0].value")
+    2.0
+    """
+    value: Any = data
+    for key in path.replace("[", ".[").split("."):
+        value = value[int(key[1:-1])] if key.startswith("[") else value[key]
+    return value
 
 
 @dataclasses.dataclass(frozen=True)
@@ -205,7 +222,20 @@ class Report:
         return verdict_text(failed, len(warnings))
 
     def to_dict(self) -> dict[str, Any]:
+        """The report as JSON-ready data (results.json, :data:`RESULTS_VERSION`): every number once,
+        under ``analysis``; a section holds only presentation (its title, verdict, warnings,
+        figure files) and references into ``analysis`` by path (``"analysis.layout"``,
+        ``"analysis.checks[3]"``). A report without an analysis keeps its sections' own data."""
+        checks = [] if self.analysis is None else list(self.analysis.checks)
+
+        def check_ref(c: Check) -> Any:
+            index = next((i for i, known in enumerate(checks) if known is c), None)
+            if index is None:
+                index = next((i for i, known in enumerate(checks) if known == c), None)
+            return c.to_dict() if index is None else f"analysis.checks[{index}]"
+
         return {
+            "version": RESULTS_VERSION,
             "title": self.title,
             "subtitle": self.subtitle,
             "created": self.created,
@@ -216,7 +246,7 @@ class Report:
                 s.title: {
                     "skipped": s.skipped,
                     "passed": s.passed,
-                    "checks": [c.to_dict() for c in s.checks],
+                    "checks": [check_ref(c) for c in s.checks],
                     "warnings": list(s.warnings),
                     "results": jsonable(s.results),
                     "figures": [f.filename for f in s.figures],
