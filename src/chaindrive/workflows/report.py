@@ -23,6 +23,21 @@ if TYPE_CHECKING:
 
 __all__ = ["Table", "Figure", "Section", "Report", "RESULTS_VERSION", "resolve"]
 
+#: The file name of plotly.js beside report.html (copied from the installed plotly package).
+PLOTLY_JS = "plotly.min.js"
+
+
+def plotly_js_path() -> Path | None:
+    """The installed plotly package's plotly.min.js, found without importing plotly."""
+    import importlib.util
+
+    spec = importlib.util.find_spec("plotly")
+    if spec is None or not spec.submodule_search_locations:
+        return None
+    path = Path(next(iter(spec.submodule_search_locations))) / "package_data" / PLOTLY_JS
+    return path if path.exists() else None
+
+
 #: The layout of results.json: 2 holds each number once (sections reference ``analysis`` by
 #: path); 1 (before) repeated the analysis' numbers in each section's ``results`` and ``checks``.
 RESULTS_VERSION = 2
@@ -140,11 +155,13 @@ def _save_png(fig: MatplotlibFigure, buf: io.BytesIO, dpi: int) -> None:
 
 @dataclasses.dataclass
 class Figure:
-    """A figure: caption plus PNG bytes (and the file name it is saved under)."""
+    """A figure: caption plus PNG bytes (and the file name it is saved under), or a chart
+    the browser draws (plotly data, :mod:`.charts`; then ``png`` is empty)."""
 
     caption: str
     png: bytes
     filename: str
+    chart: dict[str, Any] | None = None
 
     @classmethod
     def from_matplotlib(cls, fig: MatplotlibFigure, caption: str, filename: str, dpi: int = 100) -> Figure:
@@ -203,6 +220,11 @@ class Report:
     )
 
     @property
+    def has_charts(self) -> bool:
+        """Whether a figure is a chart the browser draws (report.html then loads :data:`PLOTLY_JS`)."""
+        return any(f.chart is not None for s in self.sections for f in s.figures)
+
+    @property
     def checks(self) -> list[tuple[str, Check]]:
         return [(s.title, c) for s in self.sections for c in s.checks]
 
@@ -249,7 +271,7 @@ class Report:
                     "checks": [check_ref(c) for c in s.checks],
                     "warnings": list(s.warnings),
                     "results": jsonable(s.results),
-                    "figures": [f.filename for f in s.figures],
+                    "figures": [f.filename for f in s.figures if f.chart is None],
                 }
                 for s in self.sections
             },
@@ -267,11 +289,22 @@ class Report:
         env.filters["fmt"] = _display.fmt
         env.filters["check_value"] = _display.check_value_text
         env.filters["check_limit"] = _display.check_limit_text
-        return env.get_template("report.html").render(report=self, version=__version__)
+        return env.get_template("report.html").render(report=self, version=__version__, plotly_js=PLOTLY_JS)
 
     def write_html(self, path: str | Path) -> Path:
+        """Write report.html and, when it has charts, plotly.js beside it (:data:`PLOTLY_JS`)."""
         path = Path(path)
         path.write_text(self.to_html(), encoding="utf-8")
+        if self.has_charts:
+            source = plotly_js_path()
+            if source is None:  # pragma: no cover - plotly is a dependency
+                from ..errors import InputError
+
+                raise InputError("the report's charts need plotly.js (pip install plotly), or give --png",
+                                 field="figures")
+            import shutil
+
+            shutil.copyfile(source, path.parent / PLOTLY_JS)
         return path
 
     def write_pdf(self, path: str | Path) -> Path:
@@ -292,6 +325,8 @@ class Report:
         out = []
         for s in self.sections:
             for f in s.figures:
+                if f.chart is not None:
+                    continue
                 p = folder / f.filename
                 p.write_bytes(f.png)
                 out.append(p)

@@ -19,6 +19,7 @@ from ..display import convert, display_of
 from ..drive.model import Wheel
 from ..errors import InputError
 from ..vibration.excitation import AMPLIFICATION_LIMIT, DAMPING_RATIO
+from . import charts
 from ._figures import Figures, FigureShare
 from ._figures import Figures as _Figures
 from .report import Section, Table
@@ -202,7 +203,7 @@ def layout_section(a: DriveAnalysis, fig: _Figures) -> Section | None:
     from ..plotting.drive import layout_plot
 
     fig(sec, lambda: layout_plot(a), "Layout of the drive: pitch circles, spans (tight span marked), wheel names",
-        "layout.png")
+        "layout.png", chart=lambda: charts.layout_chart(a))
     sec.results = _refs("layout")
     return sec
 
@@ -271,7 +272,13 @@ def loads_section(a: DriveAnalysis, fig: _Figures) -> Section | None:
 
             return rating_plot(r, operating=(r.angular_velocity, d.design_power()))
 
-        fig(sec, rating_figure, f"Rating curve of the chain (method {r.method}) with the design point", "rating.png")
+        def rating_chart() -> dict[str, Any]:
+            from ..plotting.drive import rating_curves
+
+            return charts.rating_chart(rating_curves(r, operating=(r.angular_velocity, d.design_power())))
+
+        fig(sec, rating_figure, f"Rating curve of the chain (method {r.method}) with the design point", "rating.png",
+            chart=rating_chart)
     sec.results = _refs("loads", "rating")
     return sec
 
@@ -306,7 +313,7 @@ def entry_section(a: DriveAnalysis, fig: _Figures) -> Section | None:
     from ..plotting.kinematics import kinematics_plot
 
     fig(sec, lambda: kinematics_plot(results), "Chain velocity and acceleration over one tooth period",
-        "kinematics.png")
+        "kinematics.png", chart=lambda: charts.kinematics_chart(results))
     sec.results = _refs("entry")
     return sec
 
@@ -451,7 +458,7 @@ def geometry_section(a: DriveAnalysis, fig: _Figures) -> Section | None:
 
         slug = "".join(ch if ch.isalnum() else "_" for ch in drv)
         fig(sec, lambda: geometry_plot(driving.object), f"Driving wheel '{drv}' with the seated chain",
-            f"wheel_{slug}.png")
+            f"wheel_{slug}.png", chart=lambda: charts.wheel_chart(driving.object))
     return sec
 
 
@@ -476,15 +483,17 @@ def strength_section(a: DriveAnalysis, fig: _Figures) -> Section | None:
              ["relative life (wear law)", float(res.relative_life_wear), "-"]]))
         _checks(sec, a, ("contact",))
 
-        def skew_figure() -> MatplotlibFigure:
-            import numpy as np
+        def skew_curve() -> Any:
+            skews = np.linspace(0, max(con.skew * 1.5, math.radians(1)), 61)
+            return con.contact.stress(con.load, max_skew=skews, wear_factor=con.wear_factor)
 
+        def skew_figure() -> MatplotlibFigure:
             from ..plotting.strength import skew_plot
 
-            skews = np.linspace(0, max(con.skew * 1.5, math.radians(1)), 61)
-            return skew_plot(con.contact.stress(con.load, max_skew=skews, wear_factor=con.wear_factor))
+            return skew_plot(skew_curve())
 
-        fig(sec, skew_figure, "Contact stress and relative life against skew", "skew.png")
+        fig(sec, skew_figure, "Contact stress and relative life against skew", "skew.png",
+            chart=lambda: charts.skew_chart(skew_curve()))
         sec.results.update(_refs("contact"))
     if a.track_tooth is not None:
         tt = a.track_tooth
@@ -604,7 +613,8 @@ def wear_section(a: DriveAnalysis, fig: _Figures) -> Section | None:
     _checks(sec, a, ("wear",))
     from ..plotting.drive import wear_plot
 
-    fig(sec, lambda: wear_plot(res), "Chain elongation over operating hours", "wear.png")
+    fig(sec, lambda: wear_plot(res), "Chain elongation over operating hours", "wear.png",
+        chart=lambda: charts.wear_chart(res))
     sec.results = _refs("wear")
     return sec
 
@@ -723,20 +733,22 @@ def report_sections() -> tuple[tuple[str, str, Callable[[DriveAnalysis, _Figures
 
 def build_sections(analysis: DriveAnalysis, *, figures: bool = True,
                    progress: Callable[[str, int, int], None] | None = None,
-                   parallel: bool = False) -> tuple[list[Section], dict[str, float]]:
+                   parallel: bool = False, browser: bool = False) -> tuple[list[Section], dict[str, float]]:
     """The report sections of ``analysis`` (figures drawn when ``figures``), and their times [s].
 
-    With ``parallel`` (and two processors and ``fork``), a forked helper process draws
-    part of the figures (:mod:`chaindrive.workflows._figures`); the sections are the same.
+    With ``browser``, a figure that has a chart (:mod:`.charts`) is that chart, drawn by the
+    browser from its data; the others are PNG. With ``parallel`` (and two processors and
+    ``fork``, PNG figures only), a forked helper process draws part of the figures
+    (:mod:`chaindrive.workflows._figures`); the sections are the same.
     """
     import time
 
     share = None
-    if figures and parallel and FigureShare.available():
+    if figures and parallel and not browser and FigureShare.available():
         import matplotlib.backends.backend_agg  # noqa: F401 - imported once, before the fork
         import matplotlib.figure  # noqa: F401
         share = FigureShare(lambda s: _helper_sections(analysis, s))
-    fig = _Figures(figures, share)
+    fig = _Figures(figures, share, browser=browser)
     out, timings = [], {}
     sections = report_sections()
     for i, (key, title, fn) in enumerate(sections):
