@@ -255,15 +255,14 @@ def skew_chart(result: Any) -> Chart:
     from ..strength.skew import ARCMIN, MEASURED_SKEW_RANGE
 
     skew = np.atleast_1d(result.max_skew) / ARCMIN
-    life = {"yaxis2": True}
     traces = [line(skew, np.atleast_1d(result.stress) / 1e6, "contact stress σ (Garshniev & Maksymovych eq. 1–2)",
                    color_="C3", width=2),
               line(skew, np.atleast_1d(result.relative_life_wear), "life L/L0, wear (∝ 1/Q_n, Archard)", color_="C0",
-                   width=2, **life),
+                   width=2, yaxis2=True),
               line(skew, np.atleast_1d(result.relative_life_fatigue),
-                   "life L/L0, rolling fatigue (∝ Q_n^-10/3, ISO 281)", color_="C2", width=2, **life),
+                   "life L/L0, rolling fatigue (∝ Q_n^-10/3, ISO 281)", color_="C2", width=2, yaxis2=True),
               line([50, 50], [1 / 3, 1 / 2], "Garshniev & Maksymovych claim: 0→50′ cuts life 2…3 times",
-                   color_="0.3", width=6, **life)]
+                   color_="0.3", width=6, yaxis2=True)]
     g = float(np.atleast_1d(result.gamma)[0])
     k = float(np.atleast_1d(result.design_skew)[-1] / np.atleast_1d(result.max_skew)[-1])
     return figure(traces, x="largest skew φ_p,max [arcmin]", y="contact stress σ [MPa]",
