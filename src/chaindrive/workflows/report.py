@@ -1,7 +1,9 @@
 """Calculation report: sections of tables, checks and figures, rendered to HTML or PDF.
 
-The HTML is self-contained (figures embedded as base64 PNG, CSS inline) so that one file
-is the calculation record. PDF is rendered from the same HTML with WeasyPrint.
+The HTML carries its CSS inline and its figures either embedded as base64 PNG or as chart
+data that the browser draws with plotly.js, written beside the HTML (:data:`PLOTLY_JS`,
+offline): the folder is the calculation record. PDF is rendered from the HTML of PNG
+figures with WeasyPrint.
 """
 
 from __future__ import annotations
