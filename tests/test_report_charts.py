@@ -118,3 +118,18 @@ def test_charts_drawn_in_chromium(both, tmp_path):
     assert not errors
     assert drawn == 7
     assert all(re.search(r"\[.+\]$", t) for t in titles)
+
+
+@pytest.mark.parametrize("name", ["roller_industrial", "mining_conveyor", "long_conveyor"])
+def test_a_run_loads_neither_matplotlib_nor_pint(name, tmp_path):
+    # every figure of these examples has a chart and every unit of their files is in the
+    # units table: `chaindrive analyze` imports neither (measured with python -X importtime)
+    import subprocess
+    import sys
+
+    code = ("import sys; from chaindrive.cli import main; "
+            f"code = main(['analyze', {str(EXAMPLES / (name + '.toml'))!r}, '-o', {str(tmp_path / 'out')!r}, '-q']); "
+            "print(code, 'matplotlib' in sys.modules, 'pint' in sys.modules)")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
+    assert out.stdout.split()[1:] == ["False", "False"], out.stdout + out.stderr
+    assert not list((tmp_path / "out").glob("*.png"))

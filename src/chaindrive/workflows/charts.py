@@ -24,7 +24,7 @@ import numpy as np
 from ..display import convert
 
 __all__ = ["figure", "line", "hline", "vline", "vspan", "wear_chart", "kinematics_chart", "skew_chart",
-           "rating_chart", "life_chart", "layout_chart", "wheel_chart"]
+           "rating_chart", "life_chart", "layout_chart", "wheel_chart", "conveyor_chart", "campbell_chart"]
 
 Chart = dict[str, Any]
 #: matplotlib's line styles as plotly dashes.
@@ -275,10 +275,13 @@ def skew_chart(result: Any) -> Chart:
                   title=f"Roller–tooth contact with skew (γ = {g:.5f}/arcmin², K_φ = {k:.2f})")
 
 
-def rating_chart(curves: Any) -> Chart:
-    """The rating chart from :func:`chaindrive.plotting.drive.rating_curves` (both limits, the
-    galling line and region, lubrication bands, the operating point)."""
-    c = curves
+def rating_chart(rating: Any, operating: tuple[float, float] | None = None) -> Chart:
+    """The rating chart of a :class:`~chaindrive.selection.ChainRating` (both limits, the galling
+    line and region, lubrication bands, the operating point: speed [rad/s], power [W]), from
+    :func:`chaindrive.plotting.drive.rating_curves` (as :func:`~chaindrive.plotting.drive.rating_plot`)."""
+    from ..plotting.drive import rating_curves
+
+    c = rating_curves(rating, operating=operating)
     shapes = []
     notes = []
     for region, (a, b, fill, text) in c["bands"].items():
@@ -439,3 +442,87 @@ def wheel_chart(wheel: Any) -> Chart:
         traces.append(line(xs, ys, "rollers" if cls == "Sprocket" else "pins", color_="tab:orange", width=0.8))
     title = wheel.label() if hasattr(wheel, "label") else cls
     return figure(traces, x="x [mm]", y="y [mm]", title=title, equal=True, height=640)
+
+
+def conveyor_chart(result: Any) -> Chart:
+    """The running chain tension along the loop from the head's exit, wheels marked (as
+    :func:`chaindrive.plotting.conveyor.conveyor_plot`)."""
+    from ..display import DISPLAY
+
+    unit, k = DISPLAY["N"]
+    prof = result.tension_profile
+    tension = k * np.asarray(prof.tension, dtype=float)
+    top = float(np.max(tension)) if tension.size else 1.0
+    traces = [line(prof.position, tension, "running tension", color_="C0", width=1.8),
+              points([result.minimum_position], [k * float(result.minimum_tension)], "lowest", color_="C3",
+                     symbol="triangle-down")]
+    shapes = [hline(k * float(result.required_minimum), "stated minimum", color_="C3", dash=":")]
+    notes = []
+    for name, x in zip(result.wheel_names, result.wheel_positions, strict=True):
+        shapes.append(vline(x, color_="0.7", dash="-"))
+        notes.append({"x": float(x), "y": top * 1.02, "text": name, "textangle": -90, "showarrow": False,
+                      "xanchor": "right", "yanchor": "bottom", "font": {"size": 9, "color": "#4d4d4d"}})
+    chart = figure(traces, x="position along the chain from the head exit [m]", y=f"tension [{unit}]",
+                   title="Chain pull along the conveyor", shapes=shapes, annotations=notes, height=400)
+    chart["layout"]["yaxis"]["range"] = [min(0.0, float(np.min(tension))) if tension.size else 0.0, top * 1.25]
+    return chart
+
+
+def campbell_chart(result: Any) -> Chart:
+    """Campbell diagram of the slack span with its tensioner: natural frequencies, excitations
+    and their bands, the speeds with a frequency in a band, the design speed; rpm on top and
+    Hz on the right (as :func:`chaindrive.plotting.vibration.campbell_plot`)."""
+    from ..display import CONVERSIONS
+    from ..plotting.vibration import _runs
+    from ..units import angular_velocity_to_rpm
+
+    per_hz = CONVERSIONS[("rad/s", "Hz")]
+    w = np.asarray(result.speed, dtype=float)
+    p = np.asarray(result.natural_frequencies, dtype=float)
+    if p.ndim == 1:
+        p = p[:, None]
+    lo, hi = result.band
+    ymax = 1.3 * float(np.max(p))
+    traces: list[dict[str, Any]] = []
+    for j, (name, mult) in enumerate(zip(result.excitation_names, result.excitation_multipliers, strict=True)):
+        col = f"C{(1, 4, 5, 9, 8, 6)[j % 6]}"  # red is kept for the forbidden speeds
+        f = mult * w
+        above = lo * float(f.min()) > ymax
+        where = f" (above the plot: {lo * f.min():.3g}–{hi * f.max():.3g} rad/s)" if above else ""
+        band = line(list(w) + list(w)[::-1], list(lo * f) + list(hi * f)[::-1], None, color_=col, width=0)
+        band.update(fill="toself", opacity=0.12, fillcolor=color(col), hoverinfo="skip")
+        traces.append(band)
+        traces.append(line(w, f, f"excitation {name}: {mult:g}·ω₁{where}", color_=col, dash="--", width=1.4))
+    mode_colors = ["black", "navy", "darkgreen", "purple", "saddlebrown", "teal"]
+    for i in range(p.shape[1]):
+        low, high = float(np.min(p[:, i])), float(np.max(p[:, i]))
+        value = (f"{low * per_hz:.3g} Hz ({low:.3g} rad/s)" if high - low <= 1e-3 * high
+                 else f"{low * per_hz:.3g}…{high * per_hz:.3g} Hz ({low:.3g}…{high:.3g} rad/s) over the speeds")
+        traces.append(line(w, p[:, i], f"natural frequency P{i + 1} = {value}", color_=mode_colors[i % 6],
+                           dash=["-", "-.", ":"][i] if i < 3 else "-", width=2.0))
+    shapes = []
+    bad = np.asarray(result.min_margin) <= 0
+    step = float(w[1] - w[0]) if w.size > 1 else 0.0
+    for n, (a, b) in enumerate(_runs(bad)):
+        shapes.append(vspan(max(w[0], w[a] - step / 2), min(w[-1], w[b] + step / 2), color_="rgba(255,0,0,0.07)",
+                            name="speeds with a P_i inside the paper's band" if n == 0 else None))
+    if result.design_speed is not None:
+        shapes.append(vline(result.design_speed, f"design speed {result.design_speed:.3g} rad/s "
+                                                 f"({angular_velocity_to_rpm(result.design_speed):.0f} rpm)",
+                            color_="0.3"))
+    chart = figure(traces, x="driving sprocket speed ω₁ [rad/s]", y="frequency [rad/s]", shapes=shapes,
+                   title=("Campbell diagram: slack span with tensioner (the tensioner paper)<br>shaded round each "
+                          f"excitation: the paper's band {lo:g} ≤ P/ω ≤ {hi:g} (information)"), height=560,
+                   y2="frequency [Hz]")
+    layout = chart["layout"]
+    layout["xaxis"]["range"] = [float(w[0]), float(w[-1])]
+    layout["yaxis"]["range"] = [0.0, ymax]
+    layout["yaxis2"]["range"] = [0.0, ymax * per_hz]
+    layout["xaxis2"] = _axis("n₁ [rpm]", overlaying="x", side="top", showgrid=False, mirror=False,
+                             range=[float(angular_velocity_to_rpm(w[0])), float(angular_velocity_to_rpm(w[-1]))])
+    layout["margin"]["t"] = 130
+    layout["title"].update(y=0.98, yanchor="top")
+    # the secondary axes carry no data of their own: an invisible trace each makes plotly draw them
+    chart["data"] += [{"type": "scatter", "x": [None], "y": [None], "showlegend": False, "hoverinfo": "skip", **axis}
+                      for axis in ({"yaxis": "y2"}, {"xaxis": "x2"})]
+    return chart

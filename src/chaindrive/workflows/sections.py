@@ -272,13 +272,8 @@ def loads_section(a: DriveAnalysis, fig: _Figures) -> Section | None:
 
             return rating_plot(r, operating=(r.angular_velocity, d.design_power()))
 
-        def rating_chart() -> dict[str, Any]:
-            from ..plotting.drive import rating_curves
-
-            return charts.rating_chart(rating_curves(r, operating=(r.angular_velocity, d.design_power())))
-
         fig(sec, rating_figure, f"Rating curve of the chain (method {r.method}) with the design point", "rating.png",
-            chart=rating_chart)
+            chart=lambda: charts.rating_chart(r, operating=(r.angular_velocity, d.design_power())))
     sec.results = _refs("loads", "rating")
     return sec
 
@@ -403,7 +398,8 @@ def vibration_section(a: DriveAnalysis, fig: _Figures) -> Section | None:
 
             fig(sec, lambda: campbell_plot(campbell),
                 "Campbell diagram of the slack span with the tensioner: natural frequencies, excitations and the "
-                "tensioner paper's bands 0.7 ≤ P/ω ≤ 1.4 (information; frequencies in rad/s, Hz on the right)", "campbell.png")
+                "tensioner paper's bands 0.7 ≤ P/ω ≤ 1.4 (information; frequencies in rad/s, Hz on the right)", "campbell.png",
+                chart=lambda: charts.campbell_chart(campbell))
     elif v.free_spans is not None:
         fs = v.free_spans
         rows = []
@@ -792,7 +788,8 @@ def conveyor_section(a: DriveAnalysis, fig: _Figures) -> Section | None:
         return conveyor_plot(res)
 
     fig(sec, profile_figure, "Running chain tension along the loop from the head's exit (wheels marked; "
-        "pans: friction of chain and material, free strands: catenary)", "conveyor.png")
+        "pans: friction of chain and material, free strands: catenary)", "conveyor.png",
+        chart=lambda: charts.conveyor_chart(res))
     _checks(sec, a, ("conveyor",))
     sec.results = _refs("conveyor")
     return sec
