@@ -120,7 +120,7 @@ def test_charts_drawn_in_chromium(both, tmp_path):
     assert all(re.search(r"\[.+\]$", t) for t in titles)
 
 
-@pytest.mark.parametrize("name", ["roller_industrial", "mining_conveyor", "long_conveyor"])
+@pytest.mark.parametrize("name", ["roller_industrial", "mining_conveyor", "long_conveyor", "crawler_conveyor"])
 def test_a_run_loads_neither_matplotlib_nor_pint(name, tmp_path):
     # every figure of these examples has a chart and every unit of their files is in the
     # units table: `chaindrive analyze` imports neither (measured with python -X importtime)

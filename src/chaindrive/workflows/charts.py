@@ -24,7 +24,8 @@ import numpy as np
 from ..display import convert
 
 __all__ = ["figure", "line", "hline", "vline", "vspan", "wear_chart", "kinematics_chart", "skew_chart",
-           "rating_chart", "life_chart", "layout_chart", "wheel_chart", "conveyor_chart", "campbell_chart"]
+           "rating_chart", "life_chart", "layout_chart", "wheel_chart", "conveyor_chart", "campbell_chart",
+           "crawler_chart"]
 
 Chart = dict[str, Any]
 #: matplotlib's line styles as plotly dashes.
@@ -526,3 +527,39 @@ def campbell_chart(result: Any) -> Chart:
     chart["data"] += [{"type": "scatter", "x": [None], "y": [None], "showlegend": False, "hoverinfo": "skip", **axis}
                       for axis in ({"yaxis": "y2"}, {"xaxis": "x2"})]
     return chart
+
+
+def crawler_chart(items: list[Any]) -> Chart:
+    """Drive-chain speed, acceleration and cam force (about its mean) over one tooth period of
+    a crawler drive, angle in degrees (as :func:`chaindrive.plotting.crawler.crawler_plot`)."""
+    from ..plotting.crawler import _STYLES as CRAWLER_STYLES
+
+    with_force = any(r.force is not None for r in items)
+    scale = 180.0 / np.pi
+    vel, acc, force = [], [], []
+    for r in items:
+        style, col, label = CRAWLER_STYLES.get(r.guide, ("-", "k", r.guide))
+        psi = np.asarray(r.psi) * scale
+        vel.append(line(psi, r.velocity, label, color_=col, dash=style, width=1.6))
+        acc.append(line(psi, r.acceleration, label, color_=col, dash=style, width=1.6, legend=False))
+        if r.force is not None:
+            force.append(line(psi, np.asarray(r.force) / 1e3, label, color_=col, dash=style, width=1.6, legend=False))
+    first = items[0]
+    cond = (f"t = {first.pitch * 1e3:g} mm, z = {first.teeth}, "
+            f"ω = {first.angular_velocity:.4g} rad/s, R = {first.radius * 1e3:.1f} mm")
+    nu = ", ".join(f"{r.guide}: δ = {100 * r.summary['nonuniformity']:.3g} %" for r in items)
+    x = "sprocket angle ψ [°]"
+    mean = first.summary["v_mean"]
+    panel_list = [
+        {"traces": vel, "x": x, "y": "velocity v [m/s]",
+         "title": f"Crawler drive chain velocity ({cond})<br>non-uniformity {nu}",
+         "shapes": [hline(mean, f"mean z t ω/2π = {mean:.4g} m/s", color_="0.5", dash=":")]},
+        {"traces": acc, "x": x, "y": "acceleration a [m/s²]",
+         "title": "Drive chain acceleration (jump at the seating ψ = 2π/z)",
+         "shapes": [hline(0.0, color_="0.5", dash="-", axis=2)]}]
+    if with_force:
+        fr = next(r for r in items if r.force is not None)
+        panel_list.append({"traces": force, "x": x, "y": "force P − P̄ [kN]",
+                           "title": (f"Force on the cam about its mean (E_П = {fr.stiffness:.3g} N, "
+                                     f"A = {fr.sprocket_distance:g} m, l = {fr.cam_distance:g} m)")})
+    return panels((len(panel_list), 1), panel_list, height=300 * len(panel_list) + 80)

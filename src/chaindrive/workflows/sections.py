@@ -590,7 +590,7 @@ def crawler_section(a: DriveAnalysis, fig: _Figures) -> Section | None:
             return crawler_plot([kin])
 
         fig(sec, crawler_figure, "Drive-chain speed, acceleration and cam force (about its mean) over one tooth "
-            "period", "crawler.png")
+            "period", "crawler.png", chart=lambda: charts.crawler_chart([kin]))
     sec.results = _refs("crawler_conveyor")
     return sec
 
