@@ -120,9 +120,10 @@ def test_charts_drawn_in_chromium(both, tmp_path):
     assert all(re.search(r"\[.+\]$", t) for t in titles)
 
 
-@pytest.mark.parametrize("name", ["roller_industrial", "mining_conveyor", "long_conveyor", "crawler_conveyor"])
+@pytest.mark.parametrize("name", ["roller_industrial", "mining_conveyor", "long_conveyor", "crawler_conveyor",
+                                  "self_regulating", "tractor_track"])
 def test_a_run_loads_neither_matplotlib_nor_pint(name, tmp_path):
-    # every figure of these examples has a chart and every unit of their files is in the
+    # every figure of the examples has a chart and every unit of their files is in the
     # units table: `chaindrive analyze` imports neither (measured with python -X importtime)
     import subprocess
     import sys

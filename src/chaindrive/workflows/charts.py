@@ -25,7 +25,7 @@ from ..display import convert
 
 __all__ = ["figure", "line", "hline", "vline", "vspan", "wear_chart", "kinematics_chart", "skew_chart",
            "rating_chart", "life_chart", "layout_chart", "wheel_chart", "conveyor_chart", "campbell_chart",
-           "crawler_chart"]
+           "crawler_chart", "self_regulating_chart", "viridis"]
 
 Chart = dict[str, Any]
 #: matplotlib's line styles as plotly dashes.
@@ -137,7 +137,7 @@ def _axis(title: str, log: bool = False, **extra: Any) -> dict[str, Any]:
     out: dict[str, Any] = {"title": {"text": title}, "showline": True, "mirror": True, "linecolor": "#444",
                            "gridcolor": "#e5e5e5", "zeroline": False, "ticks": "outside", **extra}
     if log:
-        out.update(type="log", tickformat=".2~g")
+        out.update(type="log", tickformat=".3~g")
     return out
 
 
@@ -159,6 +159,12 @@ def figure(traces: list[dict[str, Any]], *, x: str, y: str, title: str, shapes: 
         layout["yaxis2"] = _axis(y2, y2log, overlaying="y", side="right", showgrid=False, mirror=False)
         layout["yaxis"]["mirror"] = False
     return {"data": traces + _legend_of_shapes(shapes), "layout": layout}
+
+
+def _on(ref: str, n: int) -> str:
+    """An axis reference (``"x"``, ``"y domain"``) moved to panel ``n``'s axes."""
+    axis, _, rest = ref.partition(" ")
+    return f"{axis[0]}{'' if n == 1 else n}" + (f" {rest}" if rest else "")
 
 
 def panels(grid: tuple[int, int], items: list[dict[str, Any]], *, height: int = 700, title: str = "") -> Chart:
@@ -188,7 +194,9 @@ def panels(grid: tuple[int, int], items: list[dict[str, Any]], *, height: int = 
             t.setdefault("legendgroup", str(n))
             data.append(t)
         for s in item.get("shapes", ()):
-            layout["shapes"].append({k: v for k, v in s.items() if k != "name"})
+            placed = {k: v for k, v in s.items() if k != "name"}
+            placed["xref"], placed["yref"] = _on(s["xref"], n), _on(s["yref"], n)
+            layout["shapes"].append(placed)
         data += _legend_of_shapes(item.get("shapes", ()), n)
         layout["annotations"].append({"text": f"<b>{item['title']}</b>", "xref": "paper", "yref": "paper",
                                       "x": (x0 + x1) / 2, "y": y1 + 0.01, "xanchor": "center", "yanchor": "bottom",
@@ -563,3 +571,96 @@ def crawler_chart(items: list[Any]) -> Chart:
                            "title": (f"Force on the cam about its mean (E_П = {fr.stiffness:.3g} N, "
                                      f"A = {fr.sprocket_distance:g} m, l = {fr.cam_distance:g} m)")})
     return panels((len(panel_list), 1), panel_list, height=300 * len(panel_list) + 80)
+
+
+#: matplotlib's viridis at 0, 1/9, ..., 1 (sRGB), for line colours along a parameter.
+_VIRIDIS = ((68, 1, 84), (72, 40, 120), (62, 74, 137), (49, 104, 142), (38, 130, 142), (31, 158, 137),
+            (53, 183, 121), (109, 205, 89), (180, 222, 44), (253, 231, 37))
+
+
+def viridis(values: Any) -> list[str]:
+    """CSS colours of viridis at ``values`` in [0, 1] (linear between its tenths).
+
+    >>> viridis([0.0, 1.0])
+    ['rgb(68,1,84)', 'rgb(253,231,37)']
+    """
+    out = []
+    for v in np.clip(np.asarray(values, dtype=float), 0.0, 1.0):
+        x = v * (len(_VIRIDIS) - 1)
+        i = min(int(x), len(_VIRIDIS) - 2)
+        t = x - i
+        rgb = [round(a + (b - a) * t) for a, b in zip(_VIRIDIS[i], _VIRIDIS[i + 1], strict=True)]
+        out.append(f"rgb({rgb[0]},{rgb[1]},{rgb[2]})")
+    return out
+
+
+def self_regulating_chart(result: Any) -> Chart:
+    """The self-regulating drive against load and wear: slack tension, regulation coefficient,
+    centre distance, sag and, with the carrier's frequency, that frequency and the shaft load
+    (as :func:`chaindrive.plotting.self_regulating.self_regulating_plot`)."""
+    freq = result.carrier_frequency
+    lam = np.asarray(result.load_factor)
+    e = np.asarray(result.elongation)
+    i1 = int(np.argmin(np.abs(lam - 1.0)))
+    colours = viridis(np.linspace(0.0, 0.85, e.size))
+    num = result.numerical_slack_tension is not None
+
+    def curve(x: Any, y: Any, name: str | None, col: str, dash: str = "-", markers: bool = False,
+              legend: bool = True) -> dict[str, Any]:
+        trace = line(x, y, name, dash=dash, markers=markers, legend=legend)
+        trace["line"]["color"] = col
+        return trace
+
+    def open_points(x: Any, y: Any, col: str) -> dict[str, Any]:
+        trace = points(x, y, None, symbol="circle-open", size=6)
+        trace["marker"].update(color=col, line={"color": col, "width": 1})
+        return trace
+
+    s2 = [curve(lam, result.slack_tension[:, j] / 1e3, f"e = {100 * e[j]:.2g} %", c) for j, c in enumerate(colours)]
+    if num:
+        s2 += [open_points(lam, result.numerical_slack_tension[:, j] / 1e3, c) for j, c in enumerate(colours)]
+    p1 = {"traces": s2, "x": "load: torque / nominal torque [-]", "y": "slack tension S2 [kN]",
+          "title": "Slack tension against load" + (" (○ numerical equilibrium)" if num else ""),
+          "shapes": [hline(result.slack_tension_rational / 1e3, "S2* (sag allowance at rated load)", dash=":")]}
+    p2 = {"traces": [line(100 * e, result.psi[i1], "ψ = ∂S2/∂F_t", color_="tab:blue", markers=True),
+                     line(100 * e, result.rated_ratio, "S2/F_t at rated load", color_="tab:orange", markers=True)],
+          "x": "wear elongation e [%]", "y": "coefficient [-]", "title": "Regulation coefficient ψ over the wear range",
+          "shapes": [hline(result.psi_rational, f"rational ψ* = {result.psi_rational:.3g}", color_="0.3")]}
+    centre = []
+    for i, dash in ((0, ":"), (i1, "-"), (lam.size - 1, "--")):
+        centre.append(line(100 * e, result.centre_distance[i] * 1e3, f"load {lam[i]:.2g}", color_="tab:green",
+                           dash=dash))
+        if result.numerical_centre_distance is not None:
+            centre.append(open_points(100 * e, result.numerical_centre_distance[i] * 1e3, color("tab:green") or ""))
+    unit = "rad" if result.coordinate_unit == "rad" else "mm"
+    travel = result.carrier_travel * (1.0 if unit == "rad" else 1e3)
+    p3 = {"traces": centre, "x": "wear elongation e [%]", "y": "centre distance a [mm]",
+          "title": f"Centre distance (carrier travel {travel:.3g} {unit})"}
+    p4 = {"traces": [line(100 * e, 100 * result.sag_ratio[i1], "slack span, rated load", color_="tab:red", markers=True),
+                     line(100 * e, 100 * result.sag_ratio[0], f"load {lam[0]:.2g}", color_="tab:red", dash=":")],
+          "x": "wear elongation e [%]", "y": "sag / chord [%]", "title": "Slack-span sag",
+          "shapes": [hline(100 * result.sag_allowance, "allowance", color_="0.3")]}
+    items = [p1, p2, p3, p4]
+    grid = (2, 2)
+    if freq is not None:
+        ok = result.resonance_margin is None or bool(np.min(result.resonance_margin) > 0)
+        bands = []
+        for k, (name, w) in enumerate((result.excitations or {}).items()):
+            band = {"type": "rect", "xref": "x domain", "yref": "y", "x0": 0, "x1": 1, "y0": 0.7 * w, "y1": 1.4 * w,
+                    "fillcolor": color(f"C{(k + 1) % 10}"), "opacity": 0.15, "line": {"width": 0}, "layer": "below",
+                    "name": f"0.7…1.4 × {name} ({w:.4g} rad/s)"}
+            bands.append(band)
+        p5 = {"traces": [curve(lam, freq[:, j], f"e = {100 * e[j]:.2g} %", c, markers=True, legend=False)
+                         for j, c in enumerate(colours)],
+              "x": "load: torque / nominal torque [-]", "y": "frequency [rad/s]", "ylog": True, "shapes": bands,
+              "title": "Carrier natural frequency" + ("" if ok else " (in a forbidden band)")}
+        with np.errstate(divide="ignore", invalid="ignore"):
+            ratio = result.shaft_load[1:] / result.effective_pull[1:]
+        p6 = {"traces": [curve(lam[1:], ratio[:, j], f"e = {100 * e[j]:.2g} %", c, legend=False)
+                         for j, c in enumerate(colours)],
+              "x": "load: torque / nominal torque [-]", "y": "shaft load / F_t [-]",
+              "title": "Shaft load on the carrier wheel"}
+        items = [p1, p2, p5, p3, p4, p6]  # reading order: S2, ψ, frequency / a, sag, shaft load
+        grid = (2, 3)
+    return panels(grid, items, height=780, title=(f"Self-regulating drive: wheel {result.wheel!r} on a "
+                                                 f"{result.kind} carrier ({result.links} links)"))

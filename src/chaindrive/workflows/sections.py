@@ -638,7 +638,7 @@ def self_regulating_section(a: DriveAnalysis, fig: _Figures) -> Section | None:
         from ..plotting.self_regulating import self_regulating_plot
 
         fig(sec, lambda: self_regulating_plot(res), "Slack tension and centre distance against load and wear",
-            "self_regulating.png")
+            "self_regulating.png", chart=lambda: charts.self_regulating_chart(res))
     except ImportError:  # pragma: no cover - plot module not installed
         pass
     return sec
