@@ -619,7 +619,7 @@ def self_regulating_chart(result: Any) -> Chart:
     s2 = [curve(lam, result.slack_tension[:, j] / 1e3, f"e = {100 * e[j]:.2g} %", c) for j, c in enumerate(colours)]
     if num:
         s2 += [open_points(lam, result.numerical_slack_tension[:, j] / 1e3, c) for j, c in enumerate(colours)]
-    p1 = {"traces": s2, "x": "load: torque / nominal torque [-]", "y": "slack tension S2 [kN]",
+    p1: dict[str, Any] = {"traces": s2, "x": "load: torque / nominal torque [-]", "y": "slack tension S2 [kN]",
           "title": "Slack tension against load" + (" (○ numerical equilibrium)" if num else ""),
           "shapes": [hline(result.slack_tension_rational / 1e3, "S2* (sag allowance at rated load)", dash=":")]}
     p2 = {"traces": [line(100 * e, result.psi[i1], "ψ = ∂S2/∂F_t", color_="tab:blue", markers=True),
@@ -640,7 +640,7 @@ def self_regulating_chart(result: Any) -> Chart:
                      line(100 * e, 100 * result.sag_ratio[0], f"load {lam[0]:.2g}", color_="tab:red", dash=":")],
           "x": "wear elongation e [%]", "y": "sag / chord [%]", "title": "Slack-span sag",
           "shapes": [hline(100 * result.sag_allowance, "allowance", color_="0.3")]}
-    items = [p1, p2, p3, p4]
+    items: list[dict[str, Any]] = [p1, p2, p3, p4]
     grid = (2, 2)
     if freq is not None:
         ok = result.resonance_margin is None or bool(np.min(result.resonance_margin) > 0)
