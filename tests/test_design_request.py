@@ -232,7 +232,10 @@ def test_select_centre_distance_bounds(capsys):
     args = ["select", "--power", "11 kW", "--speed", "1460 rpm", "--driven-speed", "480 rpm", "--driven-machine",
             "varying_conveyor", "--json"]
     assert main([*args, "--min-centre-distance", "600 mm", "--max-centre-distance", "600 mm"]) == 0
-    rec = json.loads(capsys.readouterr().out)["recommended"]
+    data = json.loads(capsys.readouterr().out)
+    rec = data["recommended"]
+    # the request the answer is for, in SI units (select --json)
+    assert data["request"]["centre_distance_range"] == [0.6, 0.6] and data["request"]["duty"]["power"] == 11e3
     assert main([*args, "--centre-distance", "600 mm"]) == 0
     assert rec == json.loads(capsys.readouterr().out)["recommended"]
     assert main([*args, "--min-centre-distance", "700 mm", "--max-centre-distance", "600 mm"]) == 2

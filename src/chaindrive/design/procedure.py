@@ -145,7 +145,8 @@ class DesignResult(Result):
         return tuple(self.recommended.advice)
 
     def to_dict(self) -> dict[str, Any]:
-        return {"duty": self.duty.to_dict(), "factors": [f.to_dict() for f in self.factors],
+        return {"duty": self.duty.to_dict(), "request": None if self.request is None else self.request.to_dict(),
+                "factors": [f.to_dict() for f in self.factors],
                 "recommended": self.recommended.summary(),
                 "candidates": [c.summary() for c in self.candidates],
                 "near_misses": [m.summary() for m in self.near_misses]}
