@@ -33,13 +33,18 @@ from .links import (
 )
 
 __all__ = ["Pose", "PartPlacement", "ShapeSpec", "DriveAssembly", "drive_assembly", "frame_assembly",
-           "static_pose", "frame_pose", "placement_matrix"]
+           "static_pose", "frame_pose", "placement_matrix", "pocket_play"]
 
 #: Play round a round link in the pocket and the groove of the modelled pocket wheels, as a
 #: fraction of the bar diameter (a drawing choice: a pocket made to the link's nominal size
 #: would touch it everywhere, and a link entering at an angle needs room; 10 % of d is
 #: 1.8 mm on an 18 mm chain).
 POCKET_PLAY_RATIO = 0.10
+
+#: Gap [m] left at each contact of the static pose once the penalty penetration is removed
+#: (:func:`static_pose`): the parts touch to within it, and a CAD system's interference
+#: check (OpenCascade's linear tolerance 1e-7 mm) reads them as clear.
+CONTACT_GAP = 1e-6
 
 
 @dataclass(frozen=True)
@@ -62,6 +67,9 @@ class Pose:
         Start and end of each guide's running surface [m]; the chain runs on its left.
     time : float or None
         Instant of a simulation frame [s]; None for the static assembly.
+    shift : ndarray (N,) or None
+        Distance [m] each pin was moved out of the seat or guide it pressed into (the
+        static assembly's penalty penetration plus :data:`CONTACT_GAP`); None for a frame.
     """
 
     pins: np.ndarray
@@ -71,6 +79,7 @@ class Pose:
     tensions: np.ndarray
     guides: np.ndarray
     time: float | None = None
+    shift: np.ndarray | None = None
 
 
 @dataclass(frozen=True)
@@ -171,7 +180,7 @@ def placement_matrix(origin: tuple[float, float, float], angle: float = 0.0, *, 
 
 # --------------------------------------------------------------------------- poses
 def _model_pose(model: Any, pins: np.ndarray, centres: np.ndarray, theta: np.ndarray, tensions: np.ndarray,
-                mirrored: bool, time: float | None) -> Pose:
+                mirrored: bool, time: float | None, shift: np.ndarray | None = None) -> Pose:
     """Pose in the project's frame from the simulation's (mirrored back for clockwise travel)."""
     angles = []
     for k, w in enumerate(model.wheels):
@@ -186,13 +195,14 @@ def _model_pose(model: Any, pins: np.ndarray, centres: np.ndarray, theta: np.nda
     if mirrored:
         pins = pins[::-1].copy()
         pins[:, 1] *= -1
+        shift = None if shift is None else shift[::-1].copy()
         tensions = np.roll(tensions[::-1], -1)
         centres[:, 1] *= -1
         ang = -ang
         guides = guides[:, ::-1, :].copy()
         guides[..., 1] *= -1
     return Pose(pins=pins, centres=centres, angles=ang, wheels=tuple(w.wheel for w in model.wheels),
-                tensions=np.asarray(tensions, float), guides=guides, time=time)
+                tensions=np.asarray(tensions, float), guides=guides, time=time, shift=shift)
 
 
 def _link_tensions(model: Any, pins: np.ndarray) -> np.ndarray:
@@ -219,12 +229,19 @@ def static_pose(drive: Any) -> tuple[Pose, Any]:
     """
     from ..simulation import _kernel as K
     from ..simulation import assemble, model_from_drive
+    from ..simulation.seating import contact_penetration
 
     model = model_from_drive(drive)
     state = assemble(model)
     centres = state.wp[:, [K.W_CX, K.W_CY]] + state.ws[:, [K.S_S]] * state.wp[:, [K.W_DX, K.W_DY]]
-    pose = _model_pose(model, state.pos, centres, state.ws[:, K.S_THETA], _link_tensions(model, state.pos),
-                       drive.travel == "cw", None)
+    # the penalty contacts leave each loaded roller F / k_c inside its seat (micrometres):
+    # drawn parts must touch, not overlap, so each pin moves out by its penetration
+    pen = contact_penetration(state.pos, state.wp, state.ws[:, K.S_THETA], state.ws[:, K.S_S], state.gd, state.par)
+    depth = np.hypot(*pen.T)
+    gap = np.where(depth > 0.0, CONTACT_GAP / np.where(depth > 0.0, depth, 1.0), 0.0)
+    pins = state.pos - pen * (1.0 + gap)[:, None]
+    pose = _model_pose(model, pins, centres, state.ws[:, K.S_THETA], _link_tensions(model, state.pos),
+                       drive.travel == "cw", None, shift=depth + CONTACT_GAP * (depth > 0.0))
     return pose, model
 
 
@@ -252,7 +269,8 @@ def frame_pose(result: Any, model: Any, time: float, *, mirrored: bool = False) 
 
 
 # --------------------------------------------------------------------------- parts
-def _wheel_part(wheel: Any, chain: Any, link: RoundLinkDimensions | None) -> tuple[str, ShapeSpec, dict]:
+def _wheel_part(wheel: Any, chain: Any, link: RoundLinkDimensions | None,
+                play: float = 0.0) -> tuple[str, ShapeSpec, dict]:
     """Shape key, spec and numbers of a wheel."""
     from ..geometry import PocketWheel, Sprocket
     from ..geometry.part import pocket_wheel_part, sprocket_part
@@ -268,7 +286,7 @@ def _wheel_part(wheel: Any, chain: Any, link: RoundLinkDimensions | None) -> tup
             "kind": "toothless idler", "rim diameter [m]": diameter, "width [m]": width}
     z = int(wheel.teeth)
     if link is not None:
-        pw = PocketWheel.from_chain(chain, z, clearance=POCKET_PLAY_RATIO * link.bar_diameter)
+        pw = PocketWheel.from_chain(chain, z, clearance=play)
         part = pocket_wheel_part(pw)
         pdims = pw.dimensions()
         info = {"kind": "pocket wheel", "pockets": z, "pitch radius [m]": float(pdims.pitch_radius),
@@ -282,7 +300,108 @@ def _wheel_part(wheel: Any, chain: Any, link: RoundLinkDimensions | None) -> tup
                 "strands": sp.strands, "rim width [m]": part.rim_width}
     info.update({"bore [m]": part.hub.bore, "hub diameter [m]": part.hub.hub_diameter,
                  "hub length [m]": part.hub.hub_length, "material": part.material})
-    return f"{part.kind} {part.chain} z{z}", ShapeSpec("wheel", part), info
+    key = f"{part.kind} {part.chain} z{z}" + (f" play {play * 1e3:.2f} mm" if link is not None else "")
+    return key, ShapeSpec("wheel", part), info
+
+
+def _inside(points: np.ndarray, polygon: np.ndarray) -> np.ndarray:
+    """Which ``points`` (K, 2) lie inside the closed ``polygon`` (M, 2) (even-odd rule)."""
+    a, b = polygon, np.roll(polygon, -1, axis=0)
+    px, py = points[:, :1], points[:, 1:]
+    cross = (a[:, 1] > py) != (b[:, 1] > py)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        x = a[:, 0] + (py - a[:, 1]) * (b[:, 0] - a[:, 0]) / (b[:, 1] - a[:, 1])
+    return np.count_nonzero(cross & (px < x), axis=1) % 2 == 1
+
+
+def _boundary_distance(points: np.ndarray, polygon: np.ndarray) -> np.ndarray:
+    """Distance [m] of each point to the boundary of the closed polygon."""
+    a, b = polygon, np.roll(polygon, -1, axis=0)
+    ab = b - a
+    length2 = np.maximum(np.sum(ab * ab, axis=1), 1e-30)
+    rel = points[:, None, :] - a[None]
+    t = np.clip(np.sum(rel * ab[None], axis=2) / length2, 0.0, 1.0)
+    return np.min(np.hypot(*(rel - t[..., None] * ab[None]).transpose(2, 0, 1)), axis=1)
+
+
+def _overlap_depth(p: np.ndarray, q: np.ndarray) -> float:
+    """Largest depth [m] of a vertex of one closed polygon inside the other (0: apart)."""
+    depth = 0.0
+    for u, v in ((p, q), (q, p)):
+        inside = _inside(u, v)
+        if inside.any():
+            depth = max(depth, float(_boundary_distance(u[inside], v).max()))
+    return depth
+
+
+def _pocket_overlap(pose: Pose, chain: Any, dims: RoundLinkDimensions, play: float) -> float:
+    """Largest overlap [m] of a horizontal link beside the groove with a pocket wheel's drawn
+    rim (face view, :func:`chaindrive.cad.links.round_link_face_outline`) at ``play``."""
+    from ..geometry import PocketWheel
+    from .links import round_link_face_outline
+
+    link = round_link_face_outline(dims, dims.bar_diameter / 2 + play)
+    pins = pose.pins
+    u = np.roll(pins, -1, axis=0) - pins
+    chords = np.hypot(*u.T)
+    horizontal = np.abs(chords - dims.horizontal_chord) < np.abs(chords - dims.vertical_chord)
+    depth = 0.0
+    for k, wheel in enumerate(pose.wheels):
+        if not wheel.teeth:
+            continue
+        pw = PocketWheel.from_chain(chain, int(wheel.teeth), clearance=play)
+        rim = pw.outline().polyline(12)[:-1]
+        c, s = math.cos(pose.angles[k] - math.pi / 2), math.sin(pose.angles[k] - math.pi / 2)
+        rim = rim @ np.array([[c, s], [-s, c]]) + pose.centres[k]
+        mid = pins + 0.5 * u
+        near = horizontal & (np.hypot(*(mid - pose.centres[k]).T) < pw.dimensions().tip_radius + dims.pitch)
+        for i in np.flatnonzero(near):
+            e = u[i] / chords[i]
+            placed = mid[i] + link[:, :1] * e + link[:, 1:] * np.array([-e[1], e[0]])
+            depth = max(depth, _overlap_depth(placed, rim))
+    return depth
+
+
+def pocket_play(pose: Pose, chain: Any, dims: RoundLinkDimensions) -> float:
+    """Play [m] round the links in the drawn pockets and groove: ``POCKET_PLAY_RATIO · d``, or
+    more where a link of ``pose`` entering or leaving a pocket needs it.
+
+    The simulation's hinge seats are symmetric arc-and-flank seats
+    (:func:`chaindrive.simulation.profiles.link_seat_profile`, flanks about 18° to 22°
+    from the hinge's radius) and its links have no shape: a hinge lifted in its seat may
+    lie nearer the drawn pocket wall (parallel to the pocket axis, i.e. leaning over the
+    hinge by half the pocket's central angle) than the link's end bend allows. The play
+    is then the smallest, to 0.05 mm, at which no horizontal link beside the groove
+    overlaps the drawn rim (face view; bisection), if the pockets stay apart.
+
+    Examples
+    --------
+    >>> # pocket_play(drive_assembly(drive).pose, drive.chain, round_link_dimensions(drive.chain))
+    """
+    from ..errors import InfeasibleError
+
+    def overlap(play: float) -> float:
+        try:
+            return _pocket_overlap(pose, chain, dims, play)
+        except (InfeasibleError, InputError):  # the pockets would overlap
+            return math.inf
+
+    step = 5e-5
+    lo = POCKET_PLAY_RATIO * dims.bar_diameter
+    depth = overlap(lo)
+    if depth <= 0.0:
+        return lo
+    hi = lo + depth + step
+    for _ in range(4):
+        if overlap(hi) <= 0.0:
+            break
+        hi += depth
+    else:
+        return lo  # no play clears it: the clearance check reports the overlap
+    while hi - lo > step:
+        mid = 0.5 * (lo + hi)
+        lo, hi = (mid, hi) if overlap(mid) > 0.0 else (lo, mid)
+    return math.ceil(hi / step - 1e-9) * step
 
 
 def _check_parts(count: int, links: int) -> None:
@@ -358,6 +477,7 @@ def _assembly(drive: Any, pose: Pose, section: tuple[int, int] | None, chain_wid
     first, count = _section(section, n)
     if link_chain:
         rdims = round_link_dimensions(chain)
+        play = pocket_play(pose, chain, rdims)
         per_link, width, thickness = 1, rdims.outer_width, rdims.bar_diameter
         dims: Any = rdims
     else:
@@ -372,7 +492,7 @@ def _assembly(drive: Any, pose: Pose, section: tuple[int, int] | None, chain_wid
     parts: list[PartPlacement] = []
     tens = drive.tensioner
     for k, wheel in enumerate(pose.wheels):
-        key, spec, info = _wheel_part(wheel, chain, rdims if link_chain else None)
+        key, spec, info = _wheel_part(wheel, chain, rdims if link_chain else None, play if link_chain else 0.0)
         shapes.setdefault(key, spec)
         c = pose.centres[k]
         info = {"wheel": wheel.name, **info, "centre x [m]": float(c[0]), "centre y [m]": float(c[1]),
