@@ -153,14 +153,14 @@ class DriveAssembly:
     def summary(self) -> dict:
         """Counts and the chain's numbers (SI units)."""
         groups: dict[str, int] = {}
+        shift = 0.0 if self.pose.shift is None else float(np.max(self.pose.shift, initial=0.0))
         for part in self.parts:
             groups[part.group] = groups.get(part.group, 0) + 1
         return {"title": self.title, "parts": self.part_count, "distinct_shapes": len(self.shapes),
                 "groups": groups, "links": self.links, "first_link": self.first_link,
                 "total_links": self.total_links, "pitch": self.pitch,
                 "chain_length": self.chain_length(), "layout_length": self.total_links * self.pitch,
-                "time": self.pose.time, "contact_shift_max": 0.0 if self.pose.shift is None else float(np.max(self.pose.shift, initial=0.0)),
-                "contact_gap": CONTACT_GAP,
+                "time": self.pose.time, "contact_shift_max": shift, "contact_gap": CONTACT_GAP,
                 "pocket_play": self.pocket_play}
 
 
@@ -246,7 +246,7 @@ def static_pose(drive: Any) -> tuple[Pose, Any]:
 
     The pose is the static assembly with the penalty penetration removed: each pin pressed
     into a seat or a guide moves out by its penetration plus :data:`CONTACT_GAP` (at most
-    about 6 um on the roller examples, 0.12 mm on the mining conveyor's loaded pockets);
+    7 um on the roller examples, 0.12 mm on the mining conveyor's loaded pockets);
     the link tensions are the assembly's.
 
     Examples
