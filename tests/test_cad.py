@@ -362,6 +362,27 @@ def test_simulate_cad_frame(tmp_path, examples_dir):
     assert back.solids == back.named_parts == 190 and back.valid
 
 
+@pytest.mark.slow
+def test_cad_frame_drawn_out_of_contact(examples_dir):
+    """A frame of a run: the pins moved out of the seats they press into (the instant's
+    penalty penetration), the pockets' play what the frame's links need: nothing overlaps."""
+    from chaindrive.cad.build import clearances
+    from chaindrive.drive.project import load_project
+    from chaindrive.simulation import model_from_drive, simulate
+
+    drive = load_project(examples_dir / "mining_conveyor.toml")
+    model = model_from_drive(drive)
+    res = simulate(model, 0.1, samples=20)
+    a = A.frame_assembly(drive, res, model, 0.05)
+    assert a.pose.time == pytest.approx(0.05, abs=0.01)
+    k = int(np.argmin(np.abs(np.asarray(res.time) - a.pose.time)))
+    moved = np.hypot(*(a.pose.pins - np.asarray(res.positions)[k]).T)
+    np.testing.assert_allclose(moved, a.pose.shift, atol=1e-12)  # ccw travel: not mirrored
+    assert 0.0 < a.pose.shift.max() < 1e-3
+    clear = clearances(a)
+    assert clear.pairs > 10 and clear.interference_volume == 0.0 and clear.minimum >= A.CONTACT_GAP - 1e-9
+
+
 def test_duplex_drive_parts(roller_drive):
     """A duplex chain: a roller, bushing and inner plate pair per strand, middle plates, and
     sprockets with a two-plate rim (placements only; the solids are tested above)."""
