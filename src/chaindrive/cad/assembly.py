@@ -406,6 +406,17 @@ def pocket_play(pose: Pose, chain: Any, dims: RoundLinkDimensions) -> float:
     is then the smallest, to 0.05 mm, at which no horizontal link beside the groove
     overlaps the drawn rim (face view; bisection), if the pockets stay apart.
 
+    Returns
+    -------
+    float
+        The play [m] (``POCKET_PLAY_RATIO · d`` if no link overlaps or none can be cleared).
+
+    References
+    ----------
+    Dolipiński et al., eqs (6)-(9) (the pocket wheel's pitch radius and central angles);
+    DIN 22252 (the link's inner width); :class:`chaindrive.geometry.PocketWheel` (the
+    drawn outline).
+
     Examples
     --------
     >>> # pocket_play(drive_assembly(drive).pose, drive.chain, round_link_dimensions(drive.chain))

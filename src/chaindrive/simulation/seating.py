@@ -37,12 +37,6 @@ def contact_penetration(pos: np.ndarray, wp: np.ndarray, theta: np.ndarray, slid
         Wheel angles [rad] and slide positions [m] (a State's ``ws[:, S_THETA]``,
         ``ws[:, S_S]``).
 
-    Raises
-    ------
-    InputError
-        ``pos`` not ``(N, 2)``, ``theta`` or ``slide`` not one value per wheel, a NaN or
-        infinite number.
-
     Returns
     -------
     ndarray (N, 2)
@@ -50,6 +44,17 @@ def contact_penetration(pos: np.ndarray, wp: np.ndarray, theta: np.ndarray, slid
         direction in which it grows (the contact force on the pin is ``−k g n``); zero for
         a pin out of contact. ``pos − result`` puts every singly-touching pin on the
         profile it pressed into.
+
+    Raises
+    ------
+    InputError
+        ``pos`` not ``(N, 2)``, ``theta`` or ``slide`` not one value per wheel, a NaN or
+        infinite number.
+
+    References
+    ----------
+    P. Wriggers, *Computational Contact Mechanics*, 2nd ed., Springer 2006, sec. 6.3
+    (penalty method: the contact force ``k g`` needs the penetration ``g`` it acts on).
 
     Examples
     --------
