@@ -53,8 +53,8 @@ def contact_penetration(pos: np.ndarray, wp: np.ndarray, theta: np.ndarray, slid
 
     References
     ----------
-    P. Wriggers, *Computational Contact Mechanics*, 2nd ed., Springer 2006, sec. 6.3
-    (penalty method: the contact force ``k g`` needs the penetration ``g`` it acts on).
+    P. Wriggers, *Computational Contact Mechanics*, 2nd ed., Springer 2006, the penalty
+    method (a contact force ``k g`` exists only with the penetration ``g`` it acts on).
 
     Examples
     --------
