@@ -19,7 +19,7 @@ from chaindrive.drive.project import load_project  # noqa: E402
 from chaindrive.plotting.cad import assembly_plot  # noqa: E402
 
 OUT = Path(__file__).resolve().parents[1] / "docs" / "img"
-VIEWS = {"roller_industrial.toml": (30, -75), "multi_wheel.toml": (40, -70), "mining_conveyor.toml": (65, -90)}
+VIEWS = {"roller_industrial.toml": (30, -75), "multi_wheel.toml": (40, -70), "mining_conveyor.toml": (30, -65)}
 #: Close-ups: (example, wheel, radius round its centre [m], elevation, azimuth).
 DETAILS = [("mining_conveyor.toml", "tensioner", 0.24, 35, -100), ("roller_industrial.toml", "motor", 0.17, 40, -110)]
 
