@@ -74,6 +74,15 @@ class WrapModel:
     ``+x`` (a 180° wrap, two equal wheels). ``pitch`` is the wheel's (nominal) pitch [m],
     the chain's is ``pitch (1 + elongation)``. ``tip_diameter`` [m] default: the middle of
     ISO 606's range (as the dynamic simulation); seat radius ``0.505 d_1``.
+
+    Examples
+    --------
+    >>> m = WrapModel(0.0254, 17, 0.01588, 0.0)
+    >>> m.start(0.0).shape  # 8 rollers in the half wrap and 3 links of each span
+    (14, 2)
+    >>> x, ok = m.equilibrium(m.start(0.0).ravel(), 0.0, 2000.0, 200.0)
+    >>> ok
+    True
     """
 
     pitch: float
