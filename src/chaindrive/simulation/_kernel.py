@@ -222,6 +222,37 @@ def speed_factor(wp, w, t):
     return f
 
 
+@njit(cache=True, fastmath=False, inline="always")
+def advance_wheels(wp, ws, t, dt, gx, gy):
+    """The wheels over the explicit step ``t -> t + dt``: prescribed speeds, motors (and
+    the motor behind a fluid coupling), free wheels under their contact torques, slides
+    under their springs, dampers, contact forces and gravity (``gx``, ``gy`` [m/s²])."""
+    tn = t + dt
+    for w in range(ws.shape[0]):
+        mode = wp[w, W_MODE]
+        if mode == MODE_SPEED:
+            ws[w, S_OMEGA] = wp[w, W_OMEGA0] * speed_factor(wp, w, tn)
+        elif mode == MODE_MOTOR:
+            tload = ws[w, S_TORQUE] + wp[w, W_TORQUE] - wp[w, W_DAMP] * ws[w, S_OMEGA]
+            tc = wheel_drive_torque(wp, ws, w, ws[w, S_OMEGA], t, tload, dt)
+            advance_motor(wp, ws, w, t, dt)
+            ws[w, S_OMEGA] += (tload + tc) / wp[w, W_INERTIA] * dt
+        elif mode == MODE_FREE:
+            acc = (ws[w, S_TORQUE] + wp[w, W_TORQUE] - wp[w, W_DAMP] * ws[w, S_OMEGA]) \
+                / wp[w, W_INERTIA]
+            ws[w, S_OMEGA] += acc * dt
+        else:
+            ws[w, S_OMEGA] = 0.0
+        ws[w, S_THETA] += ws[w, S_OMEGA] * dt
+        if wp[w, W_SLIDE] > 0.0:
+            dxw = wp[w, W_DX]
+            dyw = wp[w, W_DY]
+            fs = ws[w, S_SFORCE] + wp[w, W_SF] - wp[w, W_SK] * ws[w, S_S] \
+                - wp[w, W_SC] * ws[w, S_SDOT] + wp[w, W_SMASS] * (gx * dxw + gy * dyw)
+            ws[w, S_SDOT] += fs / wp[w, W_SMASS] * dt
+            ws[w, S_S] += ws[w, S_SDOT] * dt
+
+
 @njit(cache=True, fastmath=False)
 def integrate(pos, vel, force, work, tension, contact, ws, wp, gd, tab, par, t0, nsteps, record_every,
               probes, rec_t, rec_probe, rec_tension, rec_contact, rec_ws, rec_pos, rec_energy,
@@ -468,31 +499,7 @@ def integrate(pos, vel, force, work, tension, contact, ws, wp, gd, tab, par, t0,
             fx[i] = 0.0
             fy[i] = 0.0
             contact[i] = 0.0
-        # wheels
-        tn = t + dt
-        for w in range(nw):
-            mode = wp[w, W_MODE]
-            if mode == MODE_SPEED:
-                ws[w, S_OMEGA] = wp[w, W_OMEGA0] * speed_factor(wp, w, tn)
-            elif mode == MODE_MOTOR:
-                tload = ws[w, S_TORQUE] + wp[w, W_TORQUE] - wp[w, W_DAMP] * ws[w, S_OMEGA]
-                tc = wheel_drive_torque(wp, ws, w, ws[w, S_OMEGA], t, tload, dt)
-                advance_motor(wp, ws, w, t, dt)
-                ws[w, S_OMEGA] += (tload + tc) / wp[w, W_INERTIA] * dt
-            elif mode == MODE_FREE:
-                acc = (ws[w, S_TORQUE] + wp[w, W_TORQUE] - wp[w, W_DAMP] * ws[w, S_OMEGA]) \
-                    / wp[w, W_INERTIA]
-                ws[w, S_OMEGA] += acc * dt
-            else:
-                ws[w, S_OMEGA] = 0.0
-            ws[w, S_THETA] += ws[w, S_OMEGA] * dt
-            if wp[w, W_SLIDE] > 0.0:
-                dxw = wp[w, W_DX]
-                dyw = wp[w, W_DY]
-                fs = ws[w, S_SFORCE] + wp[w, W_SF] - wp[w, W_SK] * ws[w, S_S] \
-                    - wp[w, W_SC] * ws[w, S_SDOT] + wp[w, W_SMASS] * (gx * dxw + gy * dyw)
-                ws[w, S_SDOT] += fs / wp[w, W_SMASS] * dt
-                ws[w, S_S] += ws[w, S_SDOT] * dt
+        advance_wheels(wp, ws, t, dt, gx, gy)
     for i in range(n):
         pos[i, 0] = x[i]
         pos[i, 1] = y[i]

@@ -1,0 +1,301 @@
+"""Compiled hot loop stepping many variants of a drive together (internal).
+
+:func:`integrate_batch` advances ``V`` variants of one drive layout (the same number of
+pins, wheels and guides; any masses, stiffnesses, profiles, speeds, loads and time
+steps) by the same number of symplectic Euler steps, each variant exactly as
+:func:`._kernel.integrate` advances it alone: the same operations in the same order,
+so the results are equal to the last bit (``tests/test_simulation_batched.py``).
+
+Layout: the pins' coordinates, velocities, forces and link tensions as ``(N, V)``
+arrays, the variants the inner, contiguous dimension, so that the link forces and the
+pins' update (the bulk of a step) run as vector instructions across the variants, as
+they run across the links of one long chain; the contacts (a few dozen pins per
+variant near the wheels) per variant, with the contact routines of :mod:`._contact`
+shared with the single-drive kernels. Wheels, guides and seat tables: ``(V, W, ...)``,
+``(V, G, NGD)``, ``(V, W, smax, 6)`` (a table padded to the largest seat count).
+Records, per variant contiguous: time ``(V, R)``, link tensions ``(V, R, N)``, wheel
+states ``(V, R, W, NWS)``, pin positions ``(V, R, N, 2)``.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from numba import njit
+
+from ._contact import (
+    friction,
+    guide_candidates,
+    guide_mu,
+    guide_penetration,
+    material_drag,
+    nearest_seat,
+    penalty_contact,
+    rebuild_every,
+    rim_gap,
+    seat_normal,
+    wheel_candidates,
+    wheel_geometry,
+)
+from ._kernel import _carry, advance_wheels
+from ._layout import (
+    G_MM,
+    NWS,
+    P_C,
+    P_CC,
+    P_CG,
+    P_CGLOB,
+    P_DT,
+    P_DTREF,
+    P_GX,
+    P_GY,
+    P_K,
+    P_KC,
+    P_KG,
+    P_MASS,
+    P_MU,
+    P_PITCH,
+    P_PITCH2,
+    P_RROLLER,
+    P_VEPS,
+    S_OMEGA,
+    S_SDOT,
+    S_SFORCE,
+    S_TORQUE,
+    W_DX,
+    W_DY,
+)
+
+__all__ = ["empty_batch_records", "integrate_batch", "stack_tables"]
+
+
+@njit(cache=True, fastmath=False, inline="always")
+def _contacts(v, x, y, vx, vy, fx, fy, ws, wp, gd, tab, gcache, cand, ncand, gcand, ngcand,
+              extra, rebuild, par):
+    """Contact forces of variant ``v`` (columns ``v`` of the pin arrays; ``ws`` ... ``par``
+    its own rows) as :func:`._kernel.integrate` computes them; True if a pin carries
+    material."""
+    rr = par[P_RROLLER]
+    kc = par[P_KC]
+    cc = par[P_CC]
+    mu = par[P_MU]
+    veps = par[P_VEPS]
+    gx = par[P_GX]
+    gy = par[P_GY]
+    kg = par[P_KG]
+    cg = par[P_CG]
+    dtref = par[P_DTREF]
+    inv_m = 1.0 / par[P_MASS]
+    margin = 0.25 * rr
+    carrying = False
+    for w in range(ws.shape[0]):
+        geo = wheel_geometry(wp, ws, w, rr)
+        cx = geo[0]
+        cy = geo[1]
+        om = ws[w, S_OMEGA]
+        sd = ws[w, S_SDOT]
+        dxw = wp[w, W_DX]
+        dyw = wp[w, W_DY]
+        tq = 0.0
+        fwx = 0.0
+        fwy = 0.0
+        if rebuild:
+            rc = geo[10] + margin
+            wheel_candidates(x[:, v], y[:, v], cx, cy, rc * rc, cand, gcache, ncand, w)
+        for ic in range(ncand[w]):
+            i = cand[w, ic]
+            qx = x[i, v] - cx
+            qy = y[i, v] - cy
+            r2 = qx * qx + qy * qy
+            if r2 > geo[8] or r2 < geo[9]:
+                continue
+            if geo[5]:
+                pen, nx, ny, _curv = rim_gap(qx, qy, r2, geo[4], 0.0)
+            else:
+                g, ex, ey = nearest_seat(tab, w, gcache[w, i], geo[6], qx * geo[2] + qy * geo[3],
+                                         -qx * geo[3] + qy * geo[2], geo[7])
+                gcache[w, i] = g
+                pen, nx, ny, _curv = seat_normal(qx, qy, ex, ey, geo, rr, 0.0)
+            if pen <= 0.0:
+                continue
+            _fn, cfx, cfy = penalty_contact(kc, cc, mu, dtref, inv_m, veps, pen, nx, ny,
+                                            vx[i, v] - (-om * qy + sd * dxw),
+                                            vy[i, v] - (om * qx + sd * dyw))
+            fx[i, v] += cfx
+            fy[i, v] += cfy
+            tq -= qx * cfy - qy * cfx
+            fwx -= cfx
+            fwy -= cfy
+        ws[w, S_TORQUE] = tq
+        ws[w, S_SFORCE] = fwx * dxw + fwy * dyw
+    for g in range(gd.shape[0]):
+        if rebuild:
+            guide_candidates(x[:, v], y[:, v], gd, g, rr + margin, gcand, ngcand)
+        for ic in range(ngcand[g]):
+            i = gcand[g, ic]
+            pen, mx, my = guide_penetration(x[i, v], y[i, v], gd, g, rr)
+            if pen <= 0.0:
+                continue
+            pvx = vx[i, v]
+            pvy = vy[i, v]
+            fn = kg * pen - cg * (pvx * mx + pvy * my)
+            if fn < 0.0:
+                fn = 0.0
+            vt = pvx * my - pvy * mx
+            ft, _ = friction(guide_mu(gd, g, mu), fn, vt, dtref, inv_m, veps)
+            if gd[g, G_MM] > 0.0:
+                ft += material_drag(gd, g, gx, gy, mx, my, vt, dtref, inv_m, veps)[0]
+                extra[i, 0] = gd[g, G_MM]
+                extra[i, 1] = my
+                extra[i, 2] = -mx
+                extra[i, 3] = pvx
+                extra[i, 4] = pvy
+                carrying = True
+            fx[i, v] += fn * mx + ft * my
+            fy[i, v] += fn * my - ft * mx
+    return carrying
+
+
+@njit(cache=True, fastmath=False)
+def integrate_batch(pos, vel, ws, wp, gd, tab, par, t0, nsteps, record_every, rec_t,
+                    rec_tension, rec_ws, rec_pos):
+    """Advance every variant ``nsteps`` steps of its own ``par[v, P_DT]`` from its time
+    ``t0[v]``; ``pos``, ``vel`` ``(V, N, 2)``, ``ws`` updated in place. Returns the number
+    of records written (every ``record_every`` steps, from step 0)."""
+    nv = pos.shape[0]
+    n = pos.shape[1]
+    x = np.empty((n, nv))
+    y = np.empty((n, nv))
+    vx = np.empty((n, nv))
+    vy = np.empty((n, nv))
+    rest = np.empty((n, nv))
+    for i in range(n):
+        for v in range(nv):
+            x[i, v] = pos[v, i, 0]
+            y[i, v] = pos[v, i, 1]
+            vx[i, v] = vel[v, i, 0]
+            vy[i, v] = vel[v, i, 1]
+            rest[i, v] = par[v, P_PITCH] if i % 2 == 0 else par[v, P_PITCH2]
+    k = par[:, P_K].copy()
+    c = par[:, P_C].copy()
+    dt = par[:, P_DT].copy()
+    fgx = par[:, P_MASS] * par[:, P_GX]
+    fgy = par[:, P_MASS] * par[:, P_GY]
+    cm = par[:, P_CGLOB] * par[:, P_MASS]
+    hdt = np.empty(nv)
+    for v in range(nv):
+        hdt[v] = 1.0 / par[v, P_MASS] * dt[v]
+    fx = np.zeros((n, nv))
+    fy = np.zeros((n, nv))
+    wkx = np.zeros((n + 1, nv))
+    wky = np.zeros((n + 1, nv))
+    tension = np.zeros((n, nv))
+    nw = ws.shape[1]
+    ng = gd.shape[1]
+    cand = np.empty((nv, nw, n), np.int64)
+    gcache = np.full((nv, nw, n), -1, np.int64)
+    ncand = np.zeros((nv, nw), np.int64)
+    gcand = np.empty((nv, ng, n), np.int64)
+    ngcand = np.zeros((nv, ng), np.int64)
+    extra = np.zeros((nv, n, 5))
+    carrying = np.zeros(nv, np.bool_)
+    countdown = np.zeros(nv, np.int64)
+    vmax_s = np.zeros(nv)
+    nrec = 0
+    for step in range(nsteps):
+        # links, vectorised across the variants
+        for i in range(n):
+            j = i + 1 if i + 1 < n else 0
+            for v in range(nv):
+                dx = x[j, v] - x[i, v]
+                dy = y[j, v] - y[i, v]
+                ll = math.sqrt(dx * dx + dy * dy)
+                il = 1.0 / ll
+                ux = dx * il
+                uy = dy * il
+                ldot = (vx[j, v] - vx[i, v]) * ux + (vy[j, v] - vy[i, v]) * uy
+                tt = k[v] * (ll - rest[i, v]) + c[v] * ldot
+                tension[i, v] = tt
+                wkx[i + 1, v] = tt * ux
+                wky[i + 1, v] = tt * uy
+        for v in range(nv):
+            wkx[0, v] = wkx[n, v]
+            wky[0, v] = wky[n, v]
+        # contacts, one variant at a time
+        for v in range(nv):
+            rebuild = countdown[v] <= 0
+            if rebuild:
+                countdown[v], vmax_s[v] = rebuild_every(vx[:, v], vy[:, v], ws[v],
+                                                        0.25 * par[v, P_RROLLER], dt[v], vmax_s[v])
+            countdown[v] -= 1
+            if _contacts(v, x, y, vx, vy, fx, fy, ws[v], wp[v], gd[v], tab[v], gcache[v], cand[v],
+                         ncand[v], gcand[v], ngcand[v], extra[v], rebuild, par[v]):
+                carrying[v] = True
+        # records (state at time t) and the pins' update, as the single kernel does them
+        if step % record_every == 0 and nrec < rec_t.shape[1]:
+            for i in range(n):
+                for v in range(nv):
+                    fx[i, v] += fgx[v] - cm[v] * vx[i, v] + wkx[i + 1, v] - wkx[i, v]
+                    fy[i, v] += fgy[v] - cm[v] * vy[i, v] + wky[i + 1, v] - wky[i, v]
+            for v in range(nv):
+                rec_t[v, nrec] = t0[v] + step * dt[v]
+                for i in range(n):
+                    rec_tension[v, nrec, i] = tension[i, v]
+                    rec_pos[v, nrec, i, 0] = x[i, v]
+                    rec_pos[v, nrec, i, 1] = y[i, v]
+                for w in range(nw):
+                    for col in range(NWS):
+                        rec_ws[v, nrec, w, col] = ws[v, w, col]
+            nrec += 1
+            for i in range(n):
+                for v in range(nv):
+                    vx[i, v] += fx[i, v] * hdt[v]
+                    vy[i, v] += fy[i, v] * hdt[v]
+        else:
+            for i in range(n):
+                for v in range(nv):
+                    vx[i, v] += (fx[i, v] + fgx[v] - cm[v] * vx[i, v] + wkx[i + 1, v]
+                                 - wkx[i, v]) * hdt[v]
+                    vy[i, v] += (fy[i, v] + fgy[v] - cm[v] * vy[i, v] + wky[i + 1, v]
+                                 - wky[i, v]) * hdt[v]
+        for v in range(nv):
+            if carrying[v]:
+                m = par[v, P_MASS]
+                for i in range(n):
+                    if extra[v, i, 0] > 0.0:
+                        _carry(vx[:, v], vy[:, v], extra[v], i, m)
+                carrying[v] = False
+        for i in range(n):
+            for v in range(nv):
+                x[i, v] += vx[i, v] * dt[v]
+                y[i, v] += vy[i, v] * dt[v]
+                fx[i, v] = 0.0
+                fy[i, v] = 0.0
+        for v in range(nv):
+            advance_wheels(wp[v], ws[v], t0[v] + step * dt[v], dt[v], par[v, P_GX], par[v, P_GY])
+    for v in range(nv):
+        for i in range(n):
+            pos[v, i, 0] = x[i, v]
+            pos[v, i, 1] = y[i, v]
+            vel[v, i, 0] = vx[i, v]
+            vel[v, i, 1] = vy[i, v]
+    return nrec
+
+
+def stack_tables(tables):
+    """The seat tables of the variants (each ``(W, smax, 6)``, :func:`._kernel.seat_table`)
+    as one ``(V, W, smax, 6)`` array, padded to the largest ``smax`` (the padding is never
+    read: a wheel's seats are counted by its ``W_NSEAT``)."""
+    smax = max(t.shape[1] for t in tables)
+    out = np.zeros((len(tables), tables[0].shape[0], smax, 6))
+    for v, t in enumerate(tables):
+        out[v, :, :t.shape[1]] = t
+    return out
+
+
+def empty_batch_records(n_variants, n_records, n_pins, n_wheels):
+    """Preallocated record arrays for :func:`integrate_batch`."""
+    return (np.zeros((n_variants, n_records)), np.zeros((n_variants, n_records, n_pins)),
+            np.zeros((n_variants, n_records, n_wheels, NWS)),
+            np.zeros((n_variants, n_records, n_pins, 2)))
