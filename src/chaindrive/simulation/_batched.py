@@ -71,40 +71,41 @@ __all__ = ["empty_batch_records", "integrate_batch", "stack_tables"]
 
 
 @njit(cache=True, fastmath=False, inline="always")
-def _contacts(v, x, y, vx, vy, fx, fy, ws, wp, gd, tab, gcache, cand, ncand, gcand, ngcand,
+def _contacts(v, x, y, vx, vy, fx, fy, wsv, wpv, gdv, tabv, gcache, cand, ncand, gcand, ngcand,
               extra, rebuild, par):
-    """Contact forces of variant ``v`` (columns ``v`` of the pin arrays; ``ws`` ... ``par``
-    its own rows) as :func:`._kernel.integrate` computes them; True if a pin carries
-    material."""
-    rr = par[P_RROLLER]
-    kc = par[P_KC]
-    cc = par[P_CC]
-    mu = par[P_MU]
-    veps = par[P_VEPS]
-    gx = par[P_GX]
-    gy = par[P_GY]
-    kg = par[P_KG]
-    cg = par[P_CG]
-    dtref = par[P_DTREF]
-    inv_m = 1.0 / par[P_MASS]
+    """Contact forces of variant ``v`` (columns ``v`` of the pin arrays, rows ``v`` of the
+    candidate lists; ``wsv`` ... ``tabv`` its own wheel, guide and seat arrays) as
+    :func:`._kernel.integrate` computes them; True if a pin carries material. (Indexed
+    rather than sliced: a view per variant and step would cost more than its contacts.)"""
+    rr = par[v, P_RROLLER]
+    kc = par[v, P_KC]
+    cc = par[v, P_CC]
+    mu = par[v, P_MU]
+    veps = par[v, P_VEPS]
+    gx = par[v, P_GX]
+    gy = par[v, P_GY]
+    kg = par[v, P_KG]
+    cg = par[v, P_CG]
+    dtref = par[v, P_DTREF]
+    inv_m = 1.0 / par[v, P_MASS]
     margin = 0.25 * rr
     carrying = False
-    for w in range(ws.shape[0]):
-        geo = wheel_geometry(wp, ws, w, rr)
+    for w in range(wsv.shape[0]):
+        geo = wheel_geometry(wpv, wsv, w, rr)
         cx = geo[0]
         cy = geo[1]
-        om = ws[w, S_OMEGA]
-        sd = ws[w, S_SDOT]
-        dxw = wp[w, W_DX]
-        dyw = wp[w, W_DY]
+        om = wsv[w, S_OMEGA]
+        sd = wsv[w, S_SDOT]
+        dxw = wpv[w, W_DX]
+        dyw = wpv[w, W_DY]
         tq = 0.0
         fwx = 0.0
         fwy = 0.0
         if rebuild:
             rc = geo[10] + margin
-            wheel_candidates(x[:, v], y[:, v], cx, cy, rc * rc, cand, gcache, ncand, w)
-        for ic in range(ncand[w]):
-            i = cand[w, ic]
+            wheel_candidates(x[:, v], y[:, v], cx, cy, rc * rc, cand[v], gcache[v], ncand[v], w)
+        for ic in range(ncand[v, w]):
+            i = cand[v, w, ic]
             qx = x[i, v] - cx
             qy = y[i, v] - cy
             r2 = qx * qx + qy * qy
@@ -113,9 +114,10 @@ def _contacts(v, x, y, vx, vy, fx, fy, ws, wp, gd, tab, gcache, cand, ncand, gca
             if geo[5]:
                 pen, nx, ny, _curv = rim_gap(qx, qy, r2, geo[4], 0.0)
             else:
-                g, ex, ey = nearest_seat(tab, w, gcache[w, i], geo[6], qx * geo[2] + qy * geo[3],
-                                         -qx * geo[3] + qy * geo[2], geo[7])
-                gcache[w, i] = g
+                g, ex, ey = nearest_seat(tabv, w, gcache[v, w, i], geo[6],
+                                         qx * geo[2] + qy * geo[3], -qx * geo[3] + qy * geo[2],
+                                         geo[7])
+                gcache[v, w, i] = g
                 pen, nx, ny, _curv = seat_normal(qx, qy, ex, ey, geo, rr, 0.0)
             if pen <= 0.0:
                 continue
@@ -127,14 +129,14 @@ def _contacts(v, x, y, vx, vy, fx, fy, ws, wp, gd, tab, gcache, cand, ncand, gca
             tq -= qx * cfy - qy * cfx
             fwx -= cfx
             fwy -= cfy
-        ws[w, S_TORQUE] = tq
-        ws[w, S_SFORCE] = fwx * dxw + fwy * dyw
-    for g in range(gd.shape[0]):
+        wsv[w, S_TORQUE] = tq
+        wsv[w, S_SFORCE] = fwx * dxw + fwy * dyw
+    for g in range(gdv.shape[0]):
         if rebuild:
-            guide_candidates(x[:, v], y[:, v], gd, g, rr + margin, gcand, ngcand)
-        for ic in range(ngcand[g]):
-            i = gcand[g, ic]
-            pen, mx, my = guide_penetration(x[i, v], y[i, v], gd, g, rr)
+            guide_candidates(x[:, v], y[:, v], gdv, g, rr + margin, gcand[v], ngcand[v])
+        for ic in range(ngcand[v, g]):
+            i = gcand[v, g, ic]
+            pen, mx, my = guide_penetration(x[i, v], y[i, v], gdv, g, rr)
             if pen <= 0.0:
                 continue
             pvx = vx[i, v]
@@ -143,14 +145,14 @@ def _contacts(v, x, y, vx, vy, fx, fy, ws, wp, gd, tab, gcache, cand, ncand, gca
             if fn < 0.0:
                 fn = 0.0
             vt = pvx * my - pvy * mx
-            ft, _ = friction(guide_mu(gd, g, mu), fn, vt, dtref, inv_m, veps)
-            if gd[g, G_MM] > 0.0:
-                ft += material_drag(gd, g, gx, gy, mx, my, vt, dtref, inv_m, veps)[0]
-                extra[i, 0] = gd[g, G_MM]
-                extra[i, 1] = my
-                extra[i, 2] = -mx
-                extra[i, 3] = pvx
-                extra[i, 4] = pvy
+            ft, _ = friction(guide_mu(gdv, g, mu), fn, vt, dtref, inv_m, veps)
+            if gdv[g, G_MM] > 0.0:
+                ft += material_drag(gdv, g, gx, gy, mx, my, vt, dtref, inv_m, veps)[0]
+                extra[v, i, 0] = gdv[g, G_MM]
+                extra[v, i, 1] = my
+                extra[v, i, 2] = -mx
+                extra[v, i, 3] = pvx
+                extra[v, i, 4] = pvy
                 carrying = True
             fx[i, v] += fn * mx + ft * my
             fy[i, v] += fn * my - ft * mx
@@ -224,13 +226,14 @@ def integrate_batch(pos, vel, ws, wp, gd, tab, par, t0, nsteps, record_every, re
             wky[0, v] = wky[n, v]
         # contacts, one variant at a time
         for v in range(nv):
+            wsv = ws[v]
             rebuild = countdown[v] <= 0
             if rebuild:
-                countdown[v], vmax_s[v] = rebuild_every(vx[:, v], vy[:, v], ws[v],
+                countdown[v], vmax_s[v] = rebuild_every(vx[:, v], vy[:, v], wsv,
                                                         0.25 * par[v, P_RROLLER], dt[v], vmax_s[v])
             countdown[v] -= 1
-            if _contacts(v, x, y, vx, vy, fx, fy, ws[v], wp[v], gd[v], tab[v], gcache[v], cand[v],
-                         ncand[v], gcand[v], ngcand[v], extra[v], rebuild, par[v]):
+            if _contacts(v, x, y, vx, vy, fx, fy, wsv, wp[v], gd[v], tab[v], gcache, cand, ncand,
+                         gcand, ngcand, extra, rebuild, par):
                 carrying[v] = True
         # records (state at time t) and the pins' update, as the single kernel does them
         if step % record_every == 0 and nrec < rec_t.shape[1]:
