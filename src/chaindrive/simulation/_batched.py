@@ -24,48 +24,9 @@ import math
 import numpy as np
 from numba import njit
 
-from ._contact import (
-    friction,
-    guide_candidates,
-    guide_mu,
-    guide_penetration,
-    material_drag,
-    nearest_seat,
-    penalty_contact,
-    rebuild_every,
-    rim_gap,
-    seat_normal,
-    wheel_candidates,
-    wheel_geometry,
-)
+from . import _contact as C
+from . import _layout as L
 from ._kernel import _carry, advance_wheels
-from ._layout import (
-    G_MM,
-    NWS,
-    P_C,
-    P_CC,
-    P_CG,
-    P_CGLOB,
-    P_DT,
-    P_DTREF,
-    P_GX,
-    P_GY,
-    P_K,
-    P_KC,
-    P_KG,
-    P_MASS,
-    P_MU,
-    P_PITCH,
-    P_PITCH2,
-    P_RROLLER,
-    P_VEPS,
-    S_OMEGA,
-    S_SDOT,
-    S_SFORCE,
-    S_TORQUE,
-    W_DX,
-    W_DY,
-)
 
 __all__ = ["empty_batch_records", "integrate_batch", "stack_tables"]
 
@@ -77,33 +38,33 @@ def _contacts(v, x, y, vx, vy, fx, fy, wsv, wpv, gdv, tabv, gcache, cand, ncand,
     candidate lists; ``wsv`` ... ``tabv`` its own wheel, guide and seat arrays) as
     :func:`._kernel.integrate` computes them; True if a pin carries material. (Indexed
     rather than sliced: a view per variant and step would cost more than its contacts.)"""
-    rr = par[v, P_RROLLER]
-    kc = par[v, P_KC]
-    cc = par[v, P_CC]
-    mu = par[v, P_MU]
-    veps = par[v, P_VEPS]
-    gx = par[v, P_GX]
-    gy = par[v, P_GY]
-    kg = par[v, P_KG]
-    cg = par[v, P_CG]
-    dtref = par[v, P_DTREF]
-    inv_m = 1.0 / par[v, P_MASS]
+    rr = par[v, L.P_RROLLER]
+    kc = par[v, L.P_KC]
+    cc = par[v, L.P_CC]
+    mu = par[v, L.P_MU]
+    veps = par[v, L.P_VEPS]
+    gx = par[v, L.P_GX]
+    gy = par[v, L.P_GY]
+    kg = par[v, L.P_KG]
+    cg = par[v, L.P_CG]
+    dtref = par[v, L.P_DTREF]
+    inv_m = 1.0 / par[v, L.P_MASS]
     margin = 0.25 * rr
     carrying = False
     for w in range(wsv.shape[0]):
-        geo = wheel_geometry(wpv, wsv, w, rr)
+        geo = C.wheel_geometry(wpv, wsv, w, rr)
         cx = geo[0]
         cy = geo[1]
-        om = wsv[w, S_OMEGA]
-        sd = wsv[w, S_SDOT]
-        dxw = wpv[w, W_DX]
-        dyw = wpv[w, W_DY]
+        om = wsv[w, L.S_OMEGA]
+        sd = wsv[w, L.S_SDOT]
+        dxw = wpv[w, L.W_DX]
+        dyw = wpv[w, L.W_DY]
         tq = 0.0
         fwx = 0.0
         fwy = 0.0
         if rebuild:
             rc = geo[10] + margin
-            wheel_candidates(x[:, v], y[:, v], cx, cy, rc * rc, cand[v], gcache[v], ncand[v], w)
+            C.wheel_candidates(x[:, v], y[:, v], cx, cy, rc * rc, cand[v], gcache[v], ncand[v], w)
         for ic in range(ncand[v, w]):
             i = cand[v, w, ic]
             qx = x[i, v] - cx
@@ -112,16 +73,16 @@ def _contacts(v, x, y, vx, vy, fx, fy, wsv, wpv, gdv, tabv, gcache, cand, ncand,
             if r2 > geo[8] or r2 < geo[9]:
                 continue
             if geo[5]:
-                pen, nx, ny, _curv = rim_gap(qx, qy, r2, geo[4], 0.0)
+                pen, nx, ny, _curv = C.rim_gap(qx, qy, r2, geo[4], 0.0)
             else:
-                g, ex, ey = nearest_seat(tabv, w, gcache[v, w, i], geo[6],
+                g, ex, ey = C.nearest_seat(tabv, w, gcache[v, w, i], geo[6],
                                          qx * geo[2] + qy * geo[3], -qx * geo[3] + qy * geo[2],
                                          geo[7])
                 gcache[v, w, i] = g
-                pen, nx, ny, _curv = seat_normal(qx, qy, ex, ey, geo, rr, 0.0)
+                pen, nx, ny, _curv = C.seat_normal(qx, qy, ex, ey, geo, rr, 0.0)
             if pen <= 0.0:
                 continue
-            _fn, cfx, cfy = penalty_contact(kc, cc, mu, dtref, inv_m, veps, pen, nx, ny,
+            _fn, cfx, cfy = C.penalty_contact(kc, cc, mu, dtref, inv_m, veps, pen, nx, ny,
                                             vx[i, v] - (-om * qy + sd * dxw),
                                             vy[i, v] - (om * qx + sd * dyw))
             fx[i, v] += cfx
@@ -129,14 +90,14 @@ def _contacts(v, x, y, vx, vy, fx, fy, wsv, wpv, gdv, tabv, gcache, cand, ncand,
             tq -= qx * cfy - qy * cfx
             fwx -= cfx
             fwy -= cfy
-        wsv[w, S_TORQUE] = tq
-        wsv[w, S_SFORCE] = fwx * dxw + fwy * dyw
+        wsv[w, L.S_TORQUE] = tq
+        wsv[w, L.S_SFORCE] = fwx * dxw + fwy * dyw
     for g in range(gdv.shape[0]):
         if rebuild:
-            guide_candidates(x[:, v], y[:, v], gdv, g, rr + margin, gcand[v], ngcand[v])
+            C.guide_candidates(x[:, v], y[:, v], gdv, g, rr + margin, gcand[v], ngcand[v])
         for ic in range(ngcand[v, g]):
             i = gcand[v, g, ic]
-            pen, mx, my = guide_penetration(x[i, v], y[i, v], gdv, g, rr)
+            pen, mx, my = C.guide_penetration(x[i, v], y[i, v], gdv, g, rr)
             if pen <= 0.0:
                 continue
             pvx = vx[i, v]
@@ -145,10 +106,10 @@ def _contacts(v, x, y, vx, vy, fx, fy, wsv, wpv, gdv, tabv, gcache, cand, ncand,
             if fn < 0.0:
                 fn = 0.0
             vt = pvx * my - pvy * mx
-            ft, _ = friction(guide_mu(gdv, g, mu), fn, vt, dtref, inv_m, veps)
-            if gdv[g, G_MM] > 0.0:
-                ft += material_drag(gdv, g, gx, gy, mx, my, vt, dtref, inv_m, veps)[0]
-                extra[v, i, 0] = gdv[g, G_MM]
+            ft, _ = C.friction(C.guide_mu(gdv, g, mu), fn, vt, dtref, inv_m, veps)
+            if gdv[g, L.G_MM] > 0.0:
+                ft += C.material_drag(gdv, g, gx, gy, mx, my, vt, dtref, inv_m, veps)[0]
+                extra[v, i, 0] = gdv[g, L.G_MM]
                 extra[v, i, 1] = my
                 extra[v, i, 2] = -mx
                 extra[v, i, 3] = pvx
@@ -162,7 +123,7 @@ def _contacts(v, x, y, vx, vy, fx, fy, wsv, wpv, gdv, tabv, gcache, cand, ncand,
 @njit(cache=True, fastmath=False)
 def integrate_batch(pos, vel, ws, wp, gd, tab, par, t0, nsteps, record_every, rec_t,
                     rec_tension, rec_ws, rec_pos):
-    """Advance every variant ``nsteps`` steps of its own ``par[v, P_DT]`` from its time
+    """Advance every variant ``nsteps`` steps of its own ``par[v, L.P_DT]`` from its time
     ``t0[v]``; ``pos``, ``vel`` ``(V, N, 2)``, ``ws`` updated in place. Returns the number
     of records written (every ``record_every`` steps, from step 0)."""
     nv = pos.shape[0]
@@ -178,16 +139,16 @@ def integrate_batch(pos, vel, ws, wp, gd, tab, par, t0, nsteps, record_every, re
             y[i, v] = pos[v, i, 1]
             vx[i, v] = vel[v, i, 0]
             vy[i, v] = vel[v, i, 1]
-            rest[i, v] = par[v, P_PITCH] if i % 2 == 0 else par[v, P_PITCH2]
-    k = par[:, P_K].copy()
-    c = par[:, P_C].copy()
-    dt = par[:, P_DT].copy()
-    fgx = par[:, P_MASS] * par[:, P_GX]
-    fgy = par[:, P_MASS] * par[:, P_GY]
-    cm = par[:, P_CGLOB] * par[:, P_MASS]
+            rest[i, v] = par[v, L.P_PITCH] if i % 2 == 0 else par[v, L.P_PITCH2]
+    k = par[:, L.P_K].copy()
+    c = par[:, L.P_C].copy()
+    dt = par[:, L.P_DT].copy()
+    fgx = par[:, L.P_MASS] * par[:, L.P_GX]
+    fgy = par[:, L.P_MASS] * par[:, L.P_GY]
+    cm = par[:, L.P_CGLOB] * par[:, L.P_MASS]
     hdt = np.empty(nv)
     for v in range(nv):
-        hdt[v] = 1.0 / par[v, P_MASS] * dt[v]
+        hdt[v] = 1.0 / par[v, L.P_MASS] * dt[v]
     fx = np.zeros((n, nv))
     fy = np.zeros((n, nv))
     wkx = np.zeros((n + 1, nv))
@@ -229,8 +190,8 @@ def integrate_batch(pos, vel, ws, wp, gd, tab, par, t0, nsteps, record_every, re
             wsv = ws[v]
             rebuild = countdown[v] <= 0
             if rebuild:
-                countdown[v], vmax_s[v] = rebuild_every(vx[:, v], vy[:, v], wsv,
-                                                        0.25 * par[v, P_RROLLER], dt[v], vmax_s[v])
+                countdown[v], vmax_s[v] = C.rebuild_every(vx[:, v], vy[:, v], wsv,
+                                                        0.25 * par[v, L.P_RROLLER], dt[v], vmax_s[v])
             countdown[v] -= 1
             if _contacts(v, x, y, vx, vy, fx, fy, wsv, wp[v], gd[v], tab[v], gcache, cand, ncand,
                          gcand, ngcand, extra, rebuild, par):
@@ -248,7 +209,7 @@ def integrate_batch(pos, vel, ws, wp, gd, tab, par, t0, nsteps, record_every, re
                     rec_pos[v, nrec, i, 0] = x[i, v]
                     rec_pos[v, nrec, i, 1] = y[i, v]
                 for w in range(nw):
-                    for col in range(NWS):
+                    for col in range(L.NWS):
                         rec_ws[v, nrec, w, col] = ws[v, w, col]
             nrec += 1
             for i in range(n):
@@ -264,7 +225,7 @@ def integrate_batch(pos, vel, ws, wp, gd, tab, par, t0, nsteps, record_every, re
                                  - wky[i, v]) * hdt[v]
         for v in range(nv):
             if carrying[v]:
-                m = par[v, P_MASS]
+                m = par[v, L.P_MASS]
                 for i in range(n):
                     if extra[v, i, 0] > 0.0:
                         _carry(vx[:, v], vy[:, v], extra[v], i, m)
@@ -276,7 +237,7 @@ def integrate_batch(pos, vel, ws, wp, gd, tab, par, t0, nsteps, record_every, re
                 fx[i, v] = 0.0
                 fy[i, v] = 0.0
         for v in range(nv):
-            advance_wheels(wp[v], ws[v], t0[v] + step * dt[v], dt[v], par[v, P_GX], par[v, P_GY])
+            advance_wheels(wp[v], ws[v], t0[v] + step * dt[v], dt[v], par[v, L.P_GX], par[v, L.P_GY])
     for v in range(nv):
         for i in range(n):
             pos[v, i, 0] = x[i, v]
@@ -300,5 +261,5 @@ def stack_tables(tables):
 def empty_batch_records(n_variants, n_records, n_pins, n_wheels):
     """Preallocated record arrays for :func:`integrate_batch`."""
     return (np.zeros((n_variants, n_records)), np.zeros((n_variants, n_records, n_pins)),
-            np.zeros((n_variants, n_records, n_wheels, NWS)),
+            np.zeros((n_variants, n_records, n_wheels, L.NWS)),
             np.zeros((n_variants, n_records, n_pins, 2)))

@@ -22,32 +22,7 @@ import math
 
 from numba import njit
 
-from ._layout import (
-    G_MM,
-    G_MMU,
-    G_MU,
-    S_S,
-    S_SDOT,
-    S_THETA,
-    W_CEA,
-    W_CEB,
-    W_CPSI,
-    W_CX,
-    W_CY,
-    W_DTA,
-    W_DTB,
-    W_DX,
-    W_DY,
-    W_HTIP,
-    W_NSEAT,
-    W_PLAIN,
-    W_R,
-    W_RE,
-    W_RS,
-    W_SPSI,
-    W_TCA,
-    W_TCB,
-)
+from . import _layout as L
 
 __all__ = ["friction", "guide_candidates", "guide_penetration", "material_drag", "nearest_pin",
            "nearest_seat", "penalty_contact", "rim_gap", "seat_normal", "rebuild_every", "seat_penetration",
@@ -101,19 +76,19 @@ def wheel_profile(wp, w, rr):
     corner, the corner ``(a, |b|)`` and (straight flank) the corner's position along the
     flank.
     """
-    delta = wp[w, W_RS] - rr
-    cps = wp[w, W_CPSI]
-    sps = wp[w, W_SPSI]
-    htip = wp[w, W_HTIP]
-    re = wp[w, W_RE]
+    delta = wp[w, L.W_RS] - rr
+    cps = wp[w, L.W_CPSI]
+    sps = wp[w, L.W_SPSI]
+    htip = wp[w, L.W_HTIP]
+    re = wp[w, L.W_RE]
     arcflank = re > 0.0
-    cea = wp[w, W_CEA]
-    ceb = wp[w, W_CEB]
-    dta = wp[w, W_DTA]
-    dtb = wp[w, W_DTB]
+    cea = wp[w, L.W_CEA]
+    ceb = wp[w, L.W_CEB]
+    dta = wp[w, L.W_DTA]
+    dtb = wp[w, L.W_DTB]
     if arcflank:
-        tca = wp[w, W_TCA]
-        tcb = wp[w, W_TCB]
+        tca = wp[w, L.W_TCA]
+        tcb = wp[w, L.W_TCB]
         stip = 0.0
     else:
         # straight flank: the tooth corner (a, |b|) where the roller centre riding
@@ -246,7 +221,7 @@ def rebuild_every(vx, vy, ws, margin, dt, vmax_s):
             vmax = v2
     vmax = math.sqrt(vmax)
     for w in range(ws.shape[0]):
-        vmax_w = abs(ws[w, S_SDOT])
+        vmax_w = abs(ws[w, L.S_SDOT])
         if vmax_w > vmax_s:
             vmax_s = vmax_w
     cnt = margin / (4.0 * (vmax + vmax_s + 1e-12) * dt)
@@ -260,15 +235,15 @@ def wheel_geometry(wp, ws, w, rr):
     angle, its radius [m], toothless or not, seats per turn, the outer and inner radii of
     the ring where a roller of radius ``rr`` can touch it (squared) and
     :func:`wheel_profile`."""
-    cx = wp[w, W_CX] + ws[w, S_S] * wp[w, W_DX]
-    cy = wp[w, W_CY] + ws[w, S_S] * wp[w, W_DY]
-    theta = ws[w, S_THETA]
-    rad = wp[w, W_R]
-    plain = wp[w, W_PLAIN] > 0.5
-    nseat = wp[w, W_NSEAT]
+    cx = wp[w, L.W_CX] + ws[w, L.S_S] * wp[w, L.W_DX]
+    cy = wp[w, L.W_CY] + ws[w, L.S_S] * wp[w, L.W_DY]
+    theta = ws[w, L.S_THETA]
+    rad = wp[w, L.W_R]
+    plain = wp[w, L.W_PLAIN] > 0.5
+    nseat = wp[w, L.W_NSEAT]
     prof = wheel_profile(wp, w, rr)
-    rout = rad + wp[w, W_HTIP] + rr
-    rin = rad - wp[w, W_RS] - rr
+    rout = rad + wp[w, L.W_HTIP] + rr
+    rin = rad - wp[w, L.W_RS] - rr
     if rin < 0.0:
         rin = 0.0
     return (cx, cy, math.cos(theta), math.sin(theta), rad, plain, int(nseat),
@@ -310,10 +285,10 @@ def material_drag(gd, g, gx, gy, mx, my, vt, dtref, inv_m, veps):
     """Material scraped along pan ``g`` by a pin moving at ``vt`` along it: its weight
     along the pan and its friction on the pan (regularised like the chain's). Returns
     ``(force along the tangent (my, −mx) [N], friction force scale fm [N], v_e [m/s])``."""
-    mmat = gd[g, G_MM]
+    mmat = gd[g, L.G_MM]
     gt = gx * my - gy * mx
     gn = abs(gx * mx + gy * my)
-    fm = mmat * gd[g, G_MMU] * gn
+    fm = mmat * gd[g, L.G_MMU] * gn
     vem = fm * dtref * inv_m
     if vem < veps:
         vem = veps
@@ -323,7 +298,7 @@ def material_drag(gd, g, gx, gy, mx, my, vt, dtref, inv_m, veps):
 @njit(cache=True, fastmath=False, inline="always")
 def guide_mu(gd, g, mu):
     """Friction coefficient of guide ``g`` (its own, else the model's ``mu``)."""
-    return gd[g, G_MU] if gd[g, G_MU] >= 0.0 else mu
+    return gd[g, L.G_MU] if gd[g, L.G_MU] >= 0.0 else mu
 
 
 @njit(cache=True, fastmath=False, inline="always")

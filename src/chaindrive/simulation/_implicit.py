@@ -29,6 +29,7 @@ import math
 import numpy as np
 from numba import njit
 
+from . import _contact as C
 from . import _kernel as K
 from ._banded import (  # noqa: F401 - the cyclic solver is part of this module's interface
     _apply_inverse,
@@ -40,20 +41,6 @@ from ._banded import (  # noqa: F401 - the cyclic solver is part of this module'
     cyclic_tridiagonal_factor,
     cyclic_tridiagonal_solve,
     cyclic_tridiagonal_substitute,
-)
-from ._contact import (
-    friction,
-    guide_candidates,
-    guide_mu,
-    guide_penetration,
-    material_drag,
-    nearest_pin,
-    nearest_seat,
-    rebuild_every,
-    rim_gap,
-    seat_normal,
-    wheel_candidates,
-    wheel_geometry,
 )
 from ._kernel import advance_motor, speed_factor, wheel_drive_torque
 
@@ -355,10 +342,10 @@ def integrate_implicit(pos: np.ndarray, vel: np.ndarray, force: np.ndarray, work
                 omu[w] = ws[w, K.S_OMEGA]
         rebuild = countdown <= 0
         if rebuild:
-            countdown, vmax_s = rebuild_every(vx, vy, ws, margin, h, vmax_s)
+            countdown, vmax_s = C.rebuild_every(vx, vy, ws, margin, h, vmax_s)
         countdown -= 1
         for w in range(nw):
-            geo = wheel_geometry(wp, ws, w, rr)
+            geo = C.wheel_geometry(wp, ws, w, rr)
             cx = geo[0]
             cy = geo[1]
             om = omu[w]
@@ -369,7 +356,7 @@ def integrate_implicit(pos: np.ndarray, vel: np.ndarray, force: np.ndarray, work
             fsl = 0.0
             if rebuild:
                 rc = geo[10] + margin
-                wheel_candidates(x, y, cx, cy, rc * rc, cand, gcache, ncand, w)
+                C.wheel_candidates(x, y, cx, cy, rc * rc, cand, gcache, ncand, w)
             for ic in range(ncand[w]):
                 cinfo[w, ic, C_BETA] = 0.0
                 cinfo[w, ic, C_S] = 0.0
@@ -380,12 +367,12 @@ def integrate_implicit(pos: np.ndarray, vel: np.ndarray, force: np.ndarray, work
                 if r2 > geo[8] or r2 < geo[9]:
                     continue
                 if geo[5]:
-                    pen, nx, ny, curv = rim_gap(qx, qy, r2, geo[4], margin)
+                    pen, nx, ny, curv = C.rim_gap(qx, qy, r2, geo[4], margin)
                 else:
-                    g, ex, ey = nearest_seat(tab, w, gcache[w, i], geo[6], qx * geo[2] + qy * geo[3],
+                    g, ex, ey = C.nearest_seat(tab, w, gcache[w, i], geo[6], qx * geo[2] + qy * geo[3],
                                              -qx * geo[3] + qy * geo[2], geo[7])
                     gcache[w, i] = g
-                    pen, nx, ny, curv = seat_normal(qx, qy, ex, ey, geo, rr, margin)
+                    pen, nx, ny, curv = C.seat_normal(qx, qy, ex, ey, geo, rr, margin)
                 if pen <= -margin:
                     continue
                 rvx = vx[i] - (-om * qy + sd * ddx)
@@ -403,7 +390,7 @@ def integrate_implicit(pos: np.ndarray, vel: np.ndarray, force: np.ndarray, work
                 if pen > 0.0:
                     epot += 0.5 * kc * pen * pen
                 vt = -rvx * ny + rvy * nx
-                ft0, ve = friction(mu, fn, vt, dtref, inv_m, veps)
+                ft0, ve = C.friction(mu, fn, vt, dtref, inv_m, veps)
                 s = mu * fn / ve if abs(vt) < ve else 0.0
                 if curv > 0.0:
                     # concave seat: the normal turns with the roller, a tangential
@@ -443,10 +430,10 @@ def integrate_implicit(pos: np.ndarray, vel: np.ndarray, force: np.ndarray, work
         # guides (fixed): the same linearisation
         for g in range(ng):
             if rebuild:
-                guide_candidates(x, y, gd, g, rr + margin, gcand, ngcand)
+                C.guide_candidates(x, y, gd, g, rr + margin, gcand, ngcand)
             for ic in range(ngcand[g]):
                 i = gcand[g, ic]
-                pen, mx, my = guide_penetration(x[i], y[i], gd, g, rr, margin)
+                pen, mx, my = C.guide_penetration(x[i], y[i], gd, g, rr, margin)
                 if pen <= -margin:
                     continue
                 vn = vx[i] * mx + vy[i] * my
@@ -459,14 +446,14 @@ def integrate_implicit(pos: np.ndarray, vel: np.ndarray, force: np.ndarray, work
                 if pen > 0.0:
                     epot += 0.5 * kg * pen * pen
                 vt = vx[i] * my - vy[i] * mx
-                mug = guide_mu(gd, g, mu)
-                ft0, ve = friction(mug, fn, vt, dtref, inv_m, veps)
+                mug = C.guide_mu(gd, g, mu)
+                ft0, ve = C.friction(mug, fn, vt, dtref, inv_m, veps)
                 s = mug * fn / ve if abs(vt) < ve else 0.0
                 mmat = gd[g, K.G_MM]
                 if mmat > 0.0:
                     # material scraped along the pan (material_drag), its mass in the
                     # pin's matrix
-                    fdrag, fm, vem = material_drag(gd, g, gx, gy, mx, my, vt, dtref, inv_m, veps)
+                    fdrag, fm, vem = C.material_drag(gd, g, gx, gy, mx, my, vt, dtref, inv_m, veps)
                     ft0 += fdrag
                     if abs(vt) < vem:
                         s += fm / vem
@@ -507,7 +494,7 @@ def integrate_implicit(pos: np.ndarray, vel: np.ndarray, force: np.ndarray, work
             rec_energy[nrec] = ekin + epot + egrav
             rec_t[nrec] = t
             for q in range(npr):
-                ib = nearest_pin(x, y, probes[q, 0], probes[q, 1])
+                ib = C.nearest_pin(x, y, probes[q, 0], probes[q, 1])
                 rec_probe[nrec, q] = vx[ib] * probes[q, 2] + vy[ib] * probes[q, 3]
             nrec += 1
         # pins: forces F_i (explicit forces, gravity and the links' T*) and the

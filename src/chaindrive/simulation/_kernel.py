@@ -26,10 +26,7 @@ import math
 import numpy as np
 from numba import njit
 
-from ._contact import (  # noqa: F401 - the contact routines are part of this interface
-    _fast_atan2,
-    _sat,
-    _segment_frame,
+from ._contact import (
     friction,
     guide_candidates,
     guide_mu,
@@ -41,10 +38,8 @@ from ._contact import (  # noqa: F401 - the contact routines are part of this in
     rebuild_every,
     rim_gap,
     seat_normal,
-    seat_penetration,
     wheel_candidates,
     wheel_geometry,
-    wheel_profile,
 )
 from ._layout import (  # noqa: F401 - the layout is part of this module's interface
     G_MM,
