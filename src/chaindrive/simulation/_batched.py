@@ -19,8 +19,6 @@ states ``(V, R, W, NWS)``, pin positions ``(V, R, N, 2)``.
 
 from __future__ import annotations
 
-import math
-
 import numpy as np
 from numba import njit
 
@@ -171,14 +169,9 @@ def integrate_batch(pos, vel, ws, wp, gd, tab, par, t0, nsteps, record_every, re
         for i in range(n):
             j = i + 1 if i + 1 < n else 0
             for v in range(nv):
-                dx = x[j, v] - x[i, v]
-                dy = y[j, v] - y[i, v]
-                ll = math.sqrt(dx * dx + dy * dy)
-                il = 1.0 / ll
-                ux = dx * il
-                uy = dy * il
-                ldot = (vx[j, v] - vx[i, v]) * ux + (vy[j, v] - vy[i, v]) * uy
-                tt = k[v] * (ll - rest[i, v]) + c[v] * ldot
+                tt, ux, uy, _ = C.link_force(x[j, v] - x[i, v], y[j, v] - y[i, v],
+                                             vx[j, v] - vx[i, v], vy[j, v] - vy[i, v], k[v],
+                                             c[v], rest[i, v])
                 tension[i, v] = tt
                 wkx[i + 1, v] = tt * ux
                 wky[i + 1, v] = tt * uy

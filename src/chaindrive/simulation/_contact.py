@@ -24,7 +24,7 @@ from numba import njit
 
 from . import _layout as L
 
-__all__ = ["friction", "guide_candidates", "guide_penetration", "material_drag", "nearest_pin",
+__all__ = ["friction", "guide_candidates", "link_force", "guide_penetration", "material_drag", "nearest_pin",
            "nearest_seat", "penalty_contact", "rim_gap", "seat_normal", "rebuild_every", "seat_penetration",
            "wheel_candidates", "wheel_geometry", "wheel_profile"]
 
@@ -381,3 +381,17 @@ def seat_normal(qx, qy, ex, ey, geo, rr, reach):
     if pen <= -reach:
         return pen, 0.0, 0.0, 0.0
     return pen, na * erx - nb * ery, na * ery + nb * erx, curv
+
+
+@njit(cache=True, fastmath=False, inline="always")
+def link_force(dx, dy, dvx, dvy, k, c, rest):
+    """Axial spring-damper link from its end-to-end vector ``(dx, dy)`` [m] and the
+    relative velocity of its ends ``(dvx, dvy)`` [m/s]: ``(T, ux, uy, l̇)``, the tension
+    ``k (l − rest) + c l̇`` [N], the unit direction and the rate of extension [m/s].
+    Scalars only (the link loops stay vectorised)."""
+    ll = math.sqrt(dx * dx + dy * dy)
+    il = 1.0 / ll
+    ux = dx * il
+    uy = dy * il
+    ldot = dvx * ux + dvy * uy
+    return k * (ll - rest) + c * ldot, ux, uy, ldot

@@ -307,14 +307,8 @@ def integrate_implicit(pos: np.ndarray, vel: np.ndarray, force: np.ndarray, work
         # links: tension at the start of the step, and its linearised value at the end
         # without the implicit increment, T* = T + h k l̇
         for i in range(n - 1):
-            dx = x[i + 1] - x[i]
-            dy = y[i + 1] - y[i]
-            ll = math.sqrt(dx * dx + dy * dy)
-            il = 1.0 / ll
-            ex = dx * il
-            ey = dy * il
-            ldot = (vx[i + 1] - vx[i]) * ex + (vy[i + 1] - vy[i]) * ey
-            tt = k * (ll - rest[i]) + c * ldot
+            tt, ex, ey, ldot = C.link_force(x[i + 1] - x[i], y[i + 1] - y[i], vx[i + 1] - vx[i],
+                                            vy[i + 1] - vy[i], k, c, rest[i])
             tension[i] = tt
             tstar[i] = tt + thh * k * ldot
             ux[i] = ex

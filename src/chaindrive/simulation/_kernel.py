@@ -31,6 +31,7 @@ from ._contact import (
     guide_candidates,
     guide_mu,
     guide_penetration,
+    link_force,
     material_drag,
     nearest_pin,
     nearest_seat,
@@ -314,25 +315,13 @@ def integrate(pos, vel, force, work, tension, contact, ws, wp, gd, tab, par, t0,
         # link forces (independent iterations, vectorised: separate x/y arrays, rest
         # lengths per link), then the pin forces
         for i in range(n - 1):
-            dx = x[i + 1] - x[i]
-            dy = y[i + 1] - y[i]
-            ll = math.sqrt(dx * dx + dy * dy)
-            il = 1.0 / ll
-            ux = dx * il
-            uy = dy * il
-            ldot = (vx[i + 1] - vx[i]) * ux + (vy[i + 1] - vy[i]) * uy
-            tt = k * (ll - rest[i]) + c * ldot
+            tt, ux, uy, _ = link_force(x[i + 1] - x[i], y[i + 1] - y[i], vx[i + 1] - vx[i],
+                                       vy[i + 1] - vy[i], k, c, rest[i])
             tension[i] = tt
             wkx[i + 1] = tt * ux
             wky[i + 1] = tt * uy
-        dx = x[0] - x[n - 1]
-        dy = y[0] - y[n - 1]
-        ll = math.sqrt(dx * dx + dy * dy)
-        il = 1.0 / ll
-        ux = dx * il
-        uy = dy * il
-        ldot = (vx[0] - vx[n - 1]) * ux + (vy[0] - vy[n - 1]) * uy
-        tt = k * (ll - rest[n - 1]) + c * ldot
+        tt, ux, uy, _ = link_force(x[0] - x[n - 1], y[0] - y[n - 1], vx[0] - vx[n - 1],
+                                   vy[0] - vy[n - 1], k, c, rest[n - 1])
         tension[n - 1] = tt
         wkx[n] = tt * ux
         wky[n] = tt * uy
