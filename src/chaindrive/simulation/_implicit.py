@@ -460,20 +460,9 @@ def integrate_implicit(pos: np.ndarray, vel: np.ndarray, force: np.ndarray, work
                 contact[i] += fn
         # record (state at time t)
         if step % record_every == 0 and nrec < rec_t.shape[0]:
-            ekin = 0.0
-            egrav = 0.0
-            for i in range(n):
-                j = i + 1 if i + 1 < n else 0
-                ddx = x[j] - x[i]
-                ddy = y[j] - y[i]
-                dl = math.sqrt(ddx * ddx + ddy * ddy) - rest[i]
-                epot += 0.5 * k * dl * dl
-                ekin += 0.5 * m * (vx[i] * vx[i] + vy[i] * vy[i])
-                egrav -= m * (gx * x[i] + gy * y[i])
-                rec_tension[nrec, i] = tension[i]
-                rec_contact[nrec, i] = contact[i]
-                rec_pos[nrec, i, 0] = x[i]
-                rec_pos[nrec, i, 1] = y[i]
+            epot, ekin, egrav = K.record_pins(x, y, vx, vy, fx, fy, 0.0, rest, k, m, gx, gy, epot,
+                                              tension, contact, rec_tension, rec_contact,
+                                              rec_pos, nrec)
             for w in range(nw):
                 om = ws[w, K.S_OMEGA]
                 ekin += 0.5 * wp[w, K.W_INERTIA] * om * om

@@ -250,6 +250,33 @@ def advance_wheels(wp, ws, t, dt, gx, gy):
 
 
 @njit(cache=True, fastmath=False)
+def record_pins(x, y, vx, vy, fx, fy, hm, rest, k, m, gx, gy, epot, tension, contact,
+                rec_tension, rec_contact, rec_pos, nrec):
+    """Record ``nrec`` of the pins (link tensions, contact forces, positions) and their
+    energies: ``(epot, ekin, egrav)``, the potential energy ``epot`` [J] plus the links'
+    strain energy, the kinetic energy at the velocities ``v + hm f`` (``hm = 0``: ``v``)
+    and the potential energy of gravity [J]. Shared by both single-drive kernels."""
+    n = x.shape[0]
+    ekin = 0.0
+    egrav = 0.0
+    for i in range(n):
+        j = i + 1 if i + 1 < n else 0
+        ddx = x[j] - x[i]
+        ddy = y[j] - y[i]
+        dl = math.sqrt(ddx * ddx + ddy * ddy) - rest[i]
+        epot += 0.5 * k * dl * dl
+        hvx = vx[i] + hm * fx[i]
+        hvy = vy[i] + hm * fy[i]
+        ekin += 0.5 * m * (hvx * hvx + hvy * hvy)
+        egrav -= m * (gx * x[i] + gy * y[i])
+        rec_tension[nrec, i] = tension[i]
+        rec_contact[nrec, i] = contact[i]
+        rec_pos[nrec, i, 0] = x[i]
+        rec_pos[nrec, i, 1] = y[i]
+    return epot, ekin, egrav
+
+
+@njit(cache=True, fastmath=False)
 def integrate(pos, vel, force, work, tension, contact, ws, wp, gd, tab, par, t0, nsteps, record_every,
               probes, rec_t, rec_probe, rec_tension, rec_contact, rec_ws, rec_pos, rec_energy,
               rec_start):
@@ -420,22 +447,9 @@ def integrate(pos, vel, force, work, tension, contact, ws, wp, gd, tab, par, t0,
             # velocities at time t (mid-point of the two half-step velocities), so that
             # the energy estimate is second order
             hm = 0.5 * dt / m
-            ekin = 0.0
-            egrav = 0.0
-            for i in range(n):
-                j = i + 1 if i + 1 < n else 0
-                ddx = x[j] - x[i]
-                ddy = y[j] - y[i]
-                dl = math.sqrt(ddx * ddx + ddy * ddy) - rest[i]
-                epot += 0.5 * k * dl * dl
-                hvx = vx[i] + hm * fx[i]
-                hvy = vy[i] + hm * fy[i]
-                ekin += 0.5 * m * (hvx * hvx + hvy * hvy)
-                egrav -= m * (gx * x[i] + gy * y[i])
-                rec_tension[nrec, i] = tension[i]
-                rec_contact[nrec, i] = contact[i]
-                rec_pos[nrec, i, 0] = x[i]
-                rec_pos[nrec, i, 1] = y[i]
+            epot, ekin, egrav = record_pins(x, y, vx, vy, fx, fy, hm, rest, k, m, gx, gy, epot,
+                                            tension, contact, rec_tension, rec_contact, rec_pos,
+                                            nrec)
             for w in range(nw):
                 om = ws[w, S_OMEGA]
                 if wp[w, W_MODE] == MODE_FREE:
