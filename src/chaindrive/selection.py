@@ -19,49 +19,21 @@ from ._results import Result, quantity
 from ._validation import check_positive, check_teeth
 from .errors import InfeasibleError, InputError, UnknownNameError, ValidityRangeWarning
 from .rating import ChainRating, _scalar, chain_rating
-from .rating.ansi import (
-    HP,
-    LUBRICATION_REGIONS,
-    LUBRICATION_TYPES,
-    ansi_constants,
-    ansi_link_plate_power,
-    ansi_rated_power,
-    ansi_roller_bushing_power,
-    galling_power,
-    galling_speed,
-    galling_tension,
-    lubrication_limits,
-    lubrication_region,
-    lubrication_type,
-    multi_strand_factor,
-    tooth_correction_factor,
-)
+from .rating import ansi as _ansi
+from .rating.ansi import *  # noqa: F403 - re-exported for existing callers
 from .units import angular_velocity_to_rpm
 
 if TYPE_CHECKING:
     from .chains import Chain
 
 __all__ = [
-    "HP",
-    "ansi_link_plate_power",
-    "ansi_roller_bushing_power",
-    "ansi_rated_power",
-    "ansi_constants",
-    "multi_strand_factor",
-    "tooth_correction_factor",
-    "galling_speed",
-    "galling_tension",
-    "galling_power",
-    "lubrication_region",
-    "lubrication_limits",
-    "lubrication_type",
-    "LUBRICATION_REGIONS",
-    "LUBRICATION_TYPES",
     "ChainRating",
     "chain_rating",
     "Candidate",
     "select",
 ]
+# the rating's names, re-exported for existing callers (one list: chaindrive.rating.ansi's)
+__all__ += _ansi.__all__
 
 
 # --------------------------------------------------------------------------- selection

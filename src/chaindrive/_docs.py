@@ -1,0 +1,77 @@
+"""Shared docstring fragments: a parameter described once, filled into every docstring at import.
+
+Where many functions take the same parameters with the same meaning, their numpydoc
+entries are written once in a :class:`Fragments` set and a line ``%(name)s`` in the
+docstring stands for one of them. The decorator replaces that line when the module is
+imported, at the line's indentation, so ``help()``, the API reference and the doctests
+see the whole text (the mechanism of matplotlib's ``_docstring.interpd``).
+
+Examples
+--------
+>>> speed = Fragments(pitch_teeth='''
+...     pitch : float
+...         Chain pitch [m].
+...     teeth : int
+...         Sprocket teeth [-].
+... ''')
+>>> @speed
+... def f(pitch, teeth):
+...     '''Something.
+...
+...     Parameters
+...     ----------
+...     %(pitch_teeth)s
+...     '''
+>>> print(f.__doc__.splitlines()[4])
+    pitch : float
+"""
+
+from __future__ import annotations
+
+import re
+import textwrap
+from collections.abc import Callable
+from typing import TypeVar
+
+__all__ = ["Fragments"]
+
+_T = TypeVar("_T")
+_LINE = re.compile(r"^([ \t]*)%\((\w+)\)s[ \t]*$", re.MULTILINE)
+
+
+class Fragments:
+    """A named set of docstring fragments and the decorator that fills them in.
+
+    Parameters
+    ----------
+    **fragments : str
+        Name -> numpydoc text (dedented; leading and trailing blank lines dropped).
+
+    Raises
+    ------
+    KeyError
+        At import, when a docstring names a fragment the set does not hold.
+    """
+
+    def __init__(self, **fragments: str) -> None:
+        self._texts = {k: textwrap.dedent(v).strip("\n") for k, v in fragments.items()}
+
+    def __call__(self, obj: _T) -> _T:
+        doc = getattr(obj, "__doc__", None)
+        if doc:  # None under python -OO
+            obj.__doc__ = self.fill(doc)
+        return obj
+
+    def fill(self, doc: str) -> str:
+        """``doc`` with every line ``%(name)s`` replaced by that fragment, indented alike."""
+        def one(m: re.Match[str]) -> str:
+            return textwrap.indent(self._texts[m.group(2)], m.group(1))
+        return _LINE.sub(one, doc)
+
+    def extended(self, **fragments: str) -> Fragments:
+        """A new set with these fragments added to this one's."""
+        out = Fragments(**fragments)
+        out._texts = {**self._texts, **out._texts}
+        return out
+
+
