@@ -30,7 +30,6 @@ from __future__ import annotations
 
 import re
 import textwrap
-from collections.abc import Callable
 from typing import TypeVar
 
 __all__ = ["Fragments"]
@@ -45,7 +44,8 @@ class Fragments:
     Parameters
     ----------
     **fragments : str
-        Name -> numpydoc text (dedented; leading and trailing blank lines dropped).
+        Name -> numpydoc text (dedented; leading and trailing blank lines dropped); a
+        fragment may itself hold ``%(name)s`` lines naming the fragments before it.
 
     Raises
     ------
@@ -54,7 +54,9 @@ class Fragments:
     """
 
     def __init__(self, **fragments: str) -> None:
-        self._texts = {k: textwrap.dedent(v).strip("\n") for k, v in fragments.items()}
+        self._texts: dict[str, str] = {}
+        for k, v in fragments.items():  # a fragment may use the ones before it
+            self._texts[k] = self.fill(textwrap.dedent(v).strip("\n"))
 
     def __call__(self, obj: _T) -> _T:
         doc = getattr(obj, "__doc__", None)
@@ -70,8 +72,10 @@ class Fragments:
 
     def extended(self, **fragments: str) -> Fragments:
         """A new set with these fragments added to this one's."""
-        out = Fragments(**fragments)
-        out._texts = {**self._texts, **out._texts}
+        out = Fragments()
+        out._texts = dict(self._texts)
+        for k, v in fragments.items():
+            out._texts[k] = out.fill(textwrap.dedent(v).strip("\n"))
         return out
 
 
