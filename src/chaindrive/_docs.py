@@ -70,6 +70,11 @@ class Fragments:
             return textwrap.indent(self._texts[m.group(2)], m.group(1))
         return _LINE.sub(one, doc)
 
+    def section(self, name: str, *parts: str, title: str = "Parameters") -> None:
+        """Add fragment ``name``: a numpydoc section ``title`` made of the fragments ``parts``."""
+        body = "\n".join(self._texts[p] for p in parts)
+        self._texts[name] = f"{title}\n{'-' * len(title)}\n{body}"
+
     def extended(self, **fragments: str) -> Fragments:
         """A new set with these fragments added to this one's."""
         out = Fragments()

@@ -120,27 +120,11 @@ _DOCS = Fragments(
             ``ψ1``: angle of the last seated hinge past the tangency point [rad]; any real
             value (periodic continuation, ``t`` per period ``2γ = 2π/z``).
     """,
-    free_parameters="""
-        Parameters
-        ----------
-        %(free_angle)s
-        %(pitch_teeth)s
-    """,
-    free_speed_parameters="""
-        %(free_parameters)s
-        %(angular_velocity)s
-    """,
-    guided_parameters="""
-        Parameters
-        ----------
-        %(guided_angle)s
-        %(pitch_teeth)s
-    """,
-    guided_speed_parameters="""
-        %(guided_parameters)s
-        %(angular_velocity)s
-    """,
 )
+_DOCS.section("free_parameters", "free_angle", "pitch_teeth")
+_DOCS.section("free_speed_parameters", "free_angle", "pitch_teeth", "angular_velocity")
+_DOCS.section("guided_parameters", "guided_angle", "pitch_teeth")
+_DOCS.section("guided_speed_parameters", "guided_angle", "pitch_teeth", "angular_velocity")
 
 
 # ----------------------------------------------------------------------------- helpers
