@@ -194,7 +194,7 @@ def drive_power(force: ArrayLike, chain_speed: ArrayLike, efficiency: ArrayLike 
     Returns
     -------
     ndarray
-        [W].
+        Drive power ``P`` [W], at the drive's input (``η`` included).
 
     References
     ----------

@@ -409,7 +409,7 @@ def tooth_side_radius(pitch: ArrayLike) -> FloatOrArray:
     Returns
     -------
     ndarray
-        [m].
+        Tooth side radius ``rx`` [m].
 
     Examples
     --------

@@ -347,7 +347,7 @@ def plate_volume(outline: Outline, width: float, chamfer: ToothChamfer | None = 
     Returns
     -------
     float
-        [m³].
+        Volume of the extruded plate less the chamfer [m³].
 
     Examples
     --------
@@ -393,7 +393,7 @@ def part_volume(part: WheelPart) -> float:
     Returns
     -------
     float
-        [m³].
+        Volume of the part: rim plates and hub, less groove, bore and keyway [m³].
 
     Examples
     --------

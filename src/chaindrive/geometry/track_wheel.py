@@ -132,7 +132,7 @@ def root_radius(pitch_radius: ArrayLike, pin_seat_radius: ArrayLike) -> FloatOrA
     Returns
     -------
     ndarray
-        [m].
+        Root radius ``R_В`` [m].
 
     Examples
     --------

@@ -247,7 +247,7 @@ def static_safety_factor(breaking_force: ArrayLike, tension: ArrayLike) -> Float
     Returns
     -------
     ndarray
-        [-].
+        Safety factor ``S = F_B / F`` [-].
 
     Notes
     -----

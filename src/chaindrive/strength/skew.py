@@ -233,7 +233,7 @@ def design_skew(max_skew: ArrayLike, wear_factor: ArrayLike = 0.65) -> FloatOrAr
     Returns
     -------
     float or ndarray
-        ``φ_p`` [rad].
+        Design skew ``φ_p`` [rad].
 
     References
     ----------

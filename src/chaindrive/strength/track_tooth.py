@@ -88,7 +88,7 @@ def track_design_force(weight: ArrayLike, adhesion: ArrayLike = 1.0, rims: int =
     Returns
     -------
     float or ndarray
-        ``P_Р`` [N].
+        Design force ``P_Р`` on one tooth [N].
 
     References
     ----------
