@@ -16,6 +16,7 @@ from functools import lru_cache
 from importlib import resources
 from typing import Any, SupportsFloat
 
+from .._docs import Fragments
 from ..errors import InputError, UnknownNameError
 
 __all__ = ["Chain", "FAMILIES", "get", "catalogue", "names", "normalize_name", "estimated_fields",
@@ -112,22 +113,11 @@ class Chain:
         return self.bar_diameter is None
 
     @classmethod
-    def custom(
-        cls,
-        name: str = "custom",
-        *,
-        pitch: float,
-        roller_diameter: float | None = None,
-        bar_diameter: float | None = None,
-        strands: int = 1,
-        inner_width: float | None = None,
-        pin_diameter: float | None = None,
-        plate_height: float | None = None,
-        transverse_pitch: float | None = None,
-        breaking_force: float | None = None,
-        mass_per_length: float | None = None,
-        source: str = "user-defined",
-    ) -> Chain:
+    def custom(cls, name: str = "custom", *, pitch: float, roller_diameter: float | None = None,
+               bar_diameter: float | None = None, strands: int = 1, inner_width: float | None = None,
+               pin_diameter: float | None = None, plate_height: float | None = None,
+               transverse_pitch: float | None = None, breaking_force: float | None = None,
+               mass_per_length: float | None = None, source: str = "user-defined") -> Chain:
         """Build a user chain, checking every value (SI units).
 
         Exactly one of ``roller_diameter`` (roller chain) and ``bar_diameter`` (round
@@ -201,21 +191,9 @@ class Chain:
             raise InputError("transverse_pitch is only valid for strands >= 2 (got strands = 1)")
         fb = _check_length("breaking_force", breaking_force, "0 < breaking_force < inf N")
         q = _check_length("mass_per_length", mass_per_length, "0 < mass_per_length < inf kg/m")
-        return cls(
-            name=str(name),
-            family="custom",
-            strands=strands,
-            pitch=p,
-            roller_diameter=d1,
-            bar_diameter=d,
-            inner_width=b1,
-            pin_diameter=d2,
-            plate_height=h2,
-            transverse_pitch=pt,
-            breaking_force=fb,
-            mass_per_length=q,
-            source=str(source),
-        )
+        return cls(name=str(name), family="custom", strands=strands, pitch=p, roller_diameter=d1,
+                   bar_diameter=d, inner_width=b1, pin_diameter=d2, plate_height=h2, transverse_pitch=pt,
+                   breaking_force=fb, mass_per_length=q, source=str(source))
 
     def to_dict(self) -> dict[str, Any]:
         """The fields as a plain dict (SI units, ``None`` for missing values)."""
@@ -352,13 +330,24 @@ def _estimated() -> dict[str, tuple[str, ...]]:
     return out
 
 
+#: The parameter the catalogue look-ups share, described once (:mod:`chaindrive._docs`).
+_DOCS = Fragments(chain="""
+    chain : Chain or str
+        A catalogue chain or its name (any spelling :func:`get` accepts).
+""")
+_DOCS.section("chain_parameters", "chain")
+
+
+def _name_of(chain: Chain | str) -> str:
+    """The catalogue name of a chain given as a :class:`Chain` or as any accepted name."""
+    return chain.name if isinstance(chain, Chain) else get(chain).name
+
+
+@_DOCS
 def estimated_fields(chain: Chain | str) -> tuple[str, ...]:
     """The fields of a catalogue chain that are estimates, not published values.
 
-    Parameters
-    ----------
-    chain : Chain or str
-        A catalogue chain or its name.
+    %(chain_parameters)s
 
     Returns
     -------
@@ -377,7 +366,7 @@ def estimated_fields(chain: Chain | str) -> tuple[str, ...]:
     >>> estimated_fields("18x64"), estimated_fields("34x126"), estimated_fields("16B")
     (('mass_per_length',), (), ())
     """
-    name = chain.name if isinstance(chain, Chain) else get(chain).name
+    name = _name_of(chain)
     if isinstance(chain, Chain) and chain.family == "custom":
         return ()
     return _estimated().get(name, ())
@@ -393,13 +382,11 @@ def _twins() -> dict[str, tuple[str, ...]]:
     return {k: tuple(v) for k, v in out.items()}
 
 
+@_DOCS
 def equivalent_names(chain: Chain | str) -> tuple[str, ...]:
     """Other catalogue names of the same chain: an ANSI number and its ISO 606 twin.
 
-    Parameters
-    ----------
-    chain : Chain or str
-        A catalogue chain or its name.
+    %(chain_parameters)s
 
     Returns
     -------
@@ -417,7 +404,7 @@ def equivalent_names(chain: Chain | str) -> tuple[str, ...]:
     >>> equivalent_names("10A-1"), equivalent_names("ANSI 80-2"), equivalent_names("16B")
     (('ANSI 50-1',), ('16A-2',), ())
     """
-    name = chain.name if isinstance(chain, Chain) else get(chain).name
+    name = _name_of(chain)
     return _twins().get(name, ())
 
 
