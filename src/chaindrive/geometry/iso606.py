@@ -10,6 +10,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 from numpy.typing import ArrayLike
 
+from .._docs import Fragments
 from .._finite import finite_guard
 from .._typing import FloatOrArray
 from .._validation import as_float_array, check_positive
@@ -45,6 +46,23 @@ _INCH = 0.0254
 _MM = 1e-3
 
 
+#: The parameters the ISO 606 formulas share, described once (:mod:`chaindrive._docs`).
+_DOCS = Fragments(
+    pitch_teeth="""
+        pitch : float or array_like
+            Chain pitch ``p`` [m].
+        teeth : int or array_like
+            Number of teeth ``z`` >= 9 [-] (ISO 606:2015 Annex A tabulates 9...150;
+            above, a :class:`~chaindrive.errors.ValidityRangeWarning`).
+    """,
+    roller_diameter="""
+        roller_diameter : float or array_like
+            Roller diameter ``d1`` of the chain (its maximum) [m], ``0 < d1 < p``.
+    """,
+)
+_DOCS.section("p_z_d1_parameters", "pitch_teeth", "roller_diameter")
+
+
 def _teeth(teeth) -> np.ndarray:
     z = as_float_array("teeth", teeth)
     if np.any(z != np.round(z)) or np.any(z < MIN_TEETH):
@@ -77,6 +95,7 @@ def _roller(pitch, roller_diameter):
 
 
 @finite_guard
+@_DOCS
 def pitch_diameter(pitch: ArrayLike, teeth: ArrayLike) -> FloatOrArray:
     r"""Pitch circle diameter of a sprocket, ISO 606:2015 clause 5.3.
 
@@ -84,10 +103,7 @@ def pitch_diameter(pitch: ArrayLike, teeth: ArrayLike) -> FloatOrArray:
 
     Parameters
     ----------
-    pitch : float or array_like
-        Chain pitch ``p`` [m].
-    teeth : int or array_like
-        Number of teeth ``z`` (9...150) [-].
+    %(pitch_teeth)s
 
     Returns
     -------
@@ -116,19 +132,13 @@ def pitch_diameter(pitch: ArrayLike, teeth: ArrayLike) -> FloatOrArray:
 
 
 @finite_guard
+@_DOCS
 def root_diameter(pitch: ArrayLike, teeth: ArrayLike, roller_diameter: ArrayLike) -> FloatOrArray:
     r"""Root diameter ``df = d − d1``, ISO 606:2015 clause 5.3.
 
     .. math:: d_f = d - d_1
 
-    Parameters
-    ----------
-    pitch : float or array_like
-        Chain pitch ``p`` [m].
-    teeth : int or array_like
-        Number of teeth ``z`` [-].
-    roller_diameter : float or array_like
-        Maximum roller diameter ``d1`` of the chain [m].
+    %(p_z_d1_parameters)s
 
     Returns
     -------
@@ -155,6 +165,7 @@ def root_diameter(pitch: ArrayLike, teeth: ArrayLike, roller_diameter: ArrayLike
 
 
 @finite_guard
+@_DOCS
 def tip_diameter_limits(
     pitch: ArrayLike, teeth: ArrayLike, roller_diameter: ArrayLike
 ) -> tuple[FloatOrArray, FloatOrArray]:
@@ -163,10 +174,7 @@ def tip_diameter_limits(
     .. math:: d_{a,\max} = d + 1.25\,p - d_1,\qquad
               d_{a,\min} = d + p\left(1 - \frac{1.6}{z}\right) - d_1
 
-    Parameters
-    ----------
-    pitch, teeth, roller_diameter : float or array_like
-        ``p`` [m], ``z`` [-], ``d1`` [m].
+    %(p_z_d1_parameters)s
 
     Returns
     -------
@@ -313,6 +321,7 @@ def _flank_radius_range(d1, z):
 
 
 @finite_guard
+@_DOCS
 def tooth_height_limits(
     pitch: ArrayLike, teeth: ArrayLike, roller_diameter: ArrayLike
 ) -> tuple[FloatOrArray, FloatOrArray]:
@@ -320,10 +329,7 @@ def tooth_height_limits(
 
     .. math:: h_{a,\min} = 0.5\,(p - d_1),\qquad h_{a,\max} = 0.625\,p - 0.5\,d_1 + \frac{0.8\,p}{z}
 
-    Parameters
-    ----------
-    pitch, teeth, roller_diameter : float or array_like
-        ``p`` [m], ``z`` [-], ``d1`` [m].
+    %(p_z_d1_parameters)s
 
     Returns
     -------

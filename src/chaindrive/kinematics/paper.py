@@ -231,8 +231,8 @@ def paper_chordal_entry(phi: ArrayLike, pitch: float, bar_diameter: float, radiu
     >>> round(float(r["velocity"][0]), 4)
     0.7954
     """
-    t, d, R, w, l = map(float, (pitch, bar_diameter, radius, angular_velocity, guide_end_distance))
-    d1, d2 = float(delta1), float(delta2)
+    t, d, R, w, l, d1, d2 = map(float, (pitch, bar_diameter, radius, angular_velocity, guide_end_distance,
+                                        delta1, delta2))
     c = np.cos(0.5 * d1)
     La, Lb = l - 0.5 * t - 0.5 * d, l - 0.5 * t + 0.5 * d
     T = d1 if roller else d1 + d2
@@ -342,8 +342,8 @@ def paper_tangential_entry(phi: ArrayLike, pitch: float, bar_diameter: float, ra
     >>> round(float(r["velocity"][0]), 6)
     0.821415
     """
-    t, d, R, w, l = map(float, (pitch, bar_diameter, radius, angular_velocity, guide_end_distance))
-    d1, d2 = float(delta1), float(delta2)
+    t, d, R, w, l, d1, d2 = map(float, (pitch, bar_diameter, radius, angular_velocity, guide_end_distance,
+                                        delta1, delta2))
     if roller:
         g1, g2 = 0.5 * d1 + _xi(l, 0.5 * d1, R), np.inf
     else:
