@@ -25,6 +25,7 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
+from .._docs import Fragments
 from .._finite import finite_guard
 from .._results import Result, quantity
 from .._validation import check_nonnegative, check_positive, check_teeth
@@ -44,7 +45,17 @@ __all__ = ["PocketWheel", "PocketWheelDimensions", "pocket_angles", "DEFAULT_INN
 DEFAULT_INNER_WIDTH_RATIO = 21.0 / 18.0
 
 
+#: The round link chain's dimensions, described once (:mod:`chaindrive._docs`).
+_DOCS = Fragments(pitch_bar="""
+    pitch : float
+        Inner link length ``t`` [m].
+    bar_diameter : float
+        Bar diameter ``d`` [m].
+""")
+
+
 @finite_guard
+@_DOCS
 def pocket_angles(pitch: float, bar_diameter: float, teeth: int) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     r"""Polar angles of pocket centres, hinge centres and vertical-link centres.
 
@@ -56,10 +67,7 @@ def pocket_angles(pitch: float, bar_diameter: float, teeth: int) -> tuple[np.nda
 
     Parameters
     ----------
-    pitch : float
-        Inner link length ``t`` [m].
-    bar_diameter : float
-        Bar diameter ``d`` [m].
+    %(pitch_bar)s
     teeth : int
         Number of pockets ``z`` [-].
 
@@ -113,16 +121,14 @@ class PocketWheelDimensions(Result):
     sources: dict[str, str]
 
 
+@_DOCS
 @dataclass
 class PocketWheel:
     """Pocket wheel for a round link chain ``d x t`` with ``teeth`` pockets (thin object).
 
     Parameters
     ----------
-    pitch : float
-        Inner link length ``t`` [m].
-    bar_diameter : float
-        Bar diameter ``d`` [m].
+    %(pitch_bar)s
     teeth : int
         Number of pockets (horizontal links per turn), ``>= 3``.
     inner_width : float, optional
