@@ -48,9 +48,12 @@ _MM = 1e-3
 
 #: The parameters the ISO 606 formulas share, described once (:mod:`chaindrive._docs`).
 _DOCS = Fragments(
-    pitch_teeth="""
+    pitch="""
         pitch : float or array_like
             Chain pitch ``p`` [m].
+    """,
+    pitch_teeth="""
+        %(pitch)s
         teeth : int or array_like
             Number of teeth ``z`` >= 9 [-] (ISO 606:2015 Annex A tabulates 9...150;
             above, a :class:`~chaindrive.errors.ValidityRangeWarning`).
@@ -61,6 +64,8 @@ _DOCS = Fragments(
     """,
 )
 _DOCS.section("p_z_d1_parameters", "pitch_teeth", "roller_diameter")
+_DOCS.section("p_z_parameters", "pitch_teeth")
+_DOCS.section("p_parameters", "pitch")
 
 
 def _teeth(teeth) -> np.ndarray:
@@ -101,9 +106,7 @@ def pitch_diameter(pitch: ArrayLike, teeth: ArrayLike) -> FloatOrArray:
 
     .. math:: d = \frac{p}{\sin(180°/z)}
 
-    Parameters
-    ----------
-    %(pitch_teeth)s
+    %(p_z_parameters)s
 
     Returns
     -------
@@ -342,9 +345,8 @@ def tooth_height_limits(
 
     Examples
     --------
-    >>> lo, hi = tooth_height_limits(0.0254, 19, 0.01588)
-    >>> round(float(lo) * 1e3, 3), round(float(hi) * 1e3, 3)
-    (4.76, 9.004)
+    >>> [round(float(h) * 1e3, 3) for h in tooth_height_limits(0.0254, 19, 0.01588)]
+    [4.76, 9.004]
     """
     p, d1 = _roller(pitch, roller_diameter)
     z = _teeth(teeth)
@@ -402,15 +404,13 @@ def tooth_width(pitch: ArrayLike, inner_width: ArrayLike, strands: int = 1) -> F
 
 
 @finite_guard
+@_DOCS
 def tooth_side_radius(pitch: ArrayLike) -> FloatOrArray:
     r"""Nominal tooth side radius ``rx = p``, ISO 606:2015 clause 5.6.
 
     .. math:: r_x = p
 
-    Parameters
-    ----------
-    pitch : float or array_like
-        Chain pitch [m].
+    %(p_parameters)s
 
     Returns
     -------
@@ -426,15 +426,13 @@ def tooth_side_radius(pitch: ArrayLike) -> FloatOrArray:
 
 
 @finite_guard
+@_DOCS
 def tooth_side_relief_limits(pitch: ArrayLike) -> tuple[FloatOrArray, FloatOrArray]:
     r"""Nominal tooth side relief ``ba`` from 0.1 p to 0.15 p, ISO 606:2015 clause 5.6.
 
     .. math:: b_a = (0.10 \dots 0.15)\,p
 
-    Parameters
-    ----------
-    pitch : float or array_like
-        Chain pitch [m].
+    %(p_parameters)s
 
     Returns
     -------

@@ -48,6 +48,7 @@ from .iso606 import (  # noqa: F401 - importable from here as before
     tooth_width,
 )
 from .outline import Outline
+from .tooth_form import _DOCS as _TOOTH_DOCS
 from .tooth_form import (  # noqa: F401 - the private helpers for the tests and track_wheel
     TOOTH_FORMS,
     AnsiToothForm,
@@ -126,18 +127,14 @@ def _get(obj, name, default=None):
     return getattr(obj, name, default) if not isinstance(obj, dict) else obj.get(name, default)
 
 
+@_TOOTH_DOCS
 @dataclass
 class Sprocket:
     """A roller-chain sprocket: chain dimensions + tooth count (thin object).
 
     Parameters
     ----------
-    pitch : float
-        Chain pitch [m].
-    teeth : int
-        Number of teeth (>= 9).
-    roller_diameter : float
-        Roller diameter ``d1`` [m].
+    %(sprocket_chain)s
     inner_width : float, optional
         Width between inner plates ``b1`` [m] (for the tooth width).
     plate_height : float, optional

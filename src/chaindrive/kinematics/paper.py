@@ -339,8 +339,8 @@ def paper_tangential_entry(phi: ArrayLike, pitch: float, bar_diameter: float, ra
     Examples
     --------
     >>> r = paper_tangential_entry([0.0], 0.064, 0.018, 0.164283, 0.504471, 0.280927, 0.256, 5.0)
-    >>> round(float(r["velocity"][0]), 6)
-    0.821415
+    >>> round(float(r.velocity[0]), 6), r.advance == 2 * 0.064   # two links per period
+    (0.821415, True)
     """
     t, d, R, w, l, d1, d2 = map(float, (pitch, bar_diameter, radius, angular_velocity, guide_end_distance,
                                         delta1, delta2))

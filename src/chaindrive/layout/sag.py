@@ -36,6 +36,7 @@ _DOCS = Fragments(
         %(weight)s
     """,
 )
+_DOCS.section("span_parameters", "span_tension")
 
 
 def _catenary_parts(chord_length, inclination, tension, mass_per_length, gravity):
@@ -63,9 +64,7 @@ def catenary_sag(chord_length: ArrayLike, inclination: ArrayLike, tension: Array
         x_0 = \frac{\ell}{2} - \frac1k\operatorname{asinh}\frac{k h}{2\sinh(k\ell/2)},
         \quad f = m x^* - y(x^*),\ \sinh k(x^* - x_0) = m = h/\ell
 
-    Parameters
-    ----------
-    %(span_tension)s
+    %(span_parameters)s
 
     Returns
     -------
@@ -108,9 +107,7 @@ def parabolic_sag(chord_length: ArrayLike, inclination: ArrayLike, tension: Arra
 
     .. math:: f = \frac{q g \ell^2}{8 H \cos\gamma},\qquad \ell = L\cos\gamma
 
-    Parameters
-    ----------
-    %(span_tension)s
+    %(span_parameters)s
 
     Returns
     -------
