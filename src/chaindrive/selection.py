@@ -160,9 +160,10 @@ def select(power: float, speed: float, ratio: float, *, service_factor: float = 
     centre_distance : float, optional
         Wanted centre distance [m]; default 40 pitches of each chain (ISO 10823:
         30 … 50). Chains whose sprockets would overlap there are left out.
-    family : {None, "ansi", "iso606"}
-        Catalogue family; ``None`` takes both, an ANSI chain and its ISO 606 twin
-        being one row with both names.
+    family : {None, "ansi", "iso606"} or str
+        Catalogue family; ``None`` takes every roller-chain family (an ANSI chain and
+        its ISO 606 twin being one row with both names), a further family
+        (:func:`chaindrive.chains.register_family`) by its name.
     strands : tuple of int
         Strand counts admitted (1 … 4).
     min_static_safety : float
@@ -223,7 +224,7 @@ def select(power: float, speed: float, ratio: float, *, service_factor: float = 
                   "chaindrive.design.design_drive (the one design procedure of select, the studio and "
                   "studies; the service factor from a duty class, the analysis's static safety)",
                   FutureWarning, stacklevel=2)
-    from .chains import catalogue, equivalent_names
+    from .chains import catalogue, equivalent_names, families
     from .layout import centre_distance_approx, chain_length_approx, even_links
 
     P = _scalar("power", power, check_positive, "W")
@@ -238,12 +239,14 @@ def select(power: float, speed: float, ratio: float, *, service_factor: float = 
     z2 = int(round(z1 * i))
     a_wanted = None if centre_distance is None else _scalar("centre_distance", centre_distance, check_positive, "m")
     s_min = _scalar("min_static_safety", min_static_safety, check_positive, "-")
-    if family not in (None, "ansi", "iso606"):
-        raise UnknownNameError(f"unknown roller-chain family {family!r}; valid: None, 'ansi', 'iso606'")
+    roller = tuple(f for f in families() if f != "din22252" and all(c.is_roller_chain for c in catalogue(f)))
+    if family is not None and family not in roller:
+        raise UnknownNameError(f"unknown roller-chain family {family!r}; valid: None, "
+                               f"{', '.join(repr(f) for f in roller)}")
     allowed = tuple(strands)
     if not allowed or any(isinstance(k, bool) or k not in (1, 2, 3, 4) for k in allowed):
         raise InputError(f"strands must be a non-empty selection of 1, 2, 3, 4, got {strands!r}")
-    fams = ("iso606", "ansi") if family is None else (family,)
+    fams = roller if family is None else (family,)
     design = P * ks
     found: dict[str, Candidate] = {}
     too_close: list[str] = []

@@ -23,10 +23,13 @@ from ._catalogue import (
     catalogue,
     equivalent_names,
     estimated_fields,
+    families,
     get,
     names,
     normalize_name,
+    register_family,
+    unregister_family,
 )
 
 __all__ = ["Chain", "FAMILIES", "get", "catalogue", "names", "normalize_name", "estimated_fields",
-           "equivalent_names"]
+           "equivalent_names", "families", "register_family", "unregister_family"]

@@ -20,10 +20,26 @@ from .._docs import Fragments
 from ..errors import InputError, UnknownNameError
 
 __all__ = ["Chain", "FAMILIES", "get", "catalogue", "names", "normalize_name", "estimated_fields",
-           "equivalent_names"]
+           "equivalent_names", "families", "register_family", "unregister_family"]
 
-#: The chain families of the catalogue, in display order.
-FAMILIES: tuple[str, ...] = ("iso606", "ansi", "din22252")
+#: Data files of the package that are not a chain family.
+_NOT_FAMILIES = ("ansi_lubrication.csv",)
+#: Extra families added at run time (:func:`register_family`): name -> CSV text.
+_EXTRA: dict[str, str] = {}
+
+
+def _package_families() -> tuple[str, ...]:
+    """The built-in families, then every other ``data/<family>.csv`` of the package (sorted)."""
+    builtin = ("iso606", "ansi", "din22252")
+    files = sorted(f.name for f in resources.files(__package__).joinpath("data").iterdir()
+                   if f.name.endswith(".csv") and f.name not in _NOT_FAMILIES)
+    return builtin + tuple(f[:-4] for f in files if f[:-4] not in builtin)
+
+
+#: The chain families of the catalogue, in display order: ISO 606, ANSI B29.1, DIN 22252,
+#: then any further ``chaindrive/chains/data/<family>.csv`` (read in the generic layout of
+#: :func:`register_family`).
+FAMILIES: tuple[str, ...] = _package_families()
 
 _MM = 1000  # mm per m
 _KN = Decimal("0.001")  # kN per N
@@ -223,7 +239,9 @@ def _check_below(field: str, value: SupportsFloat | str | None, pitch: float) ->
 
 
 def _rows(filename: str) -> list[dict[str, str]]:
-    text = resources.files(__package__).joinpath("data", filename).read_text(encoding="utf-8")
+    family = filename[:-4]
+    text = _EXTRA[family] if family in _EXTRA else (
+        resources.files(__package__).joinpath("data", filename).read_text(encoding="utf-8"))
     lines = [line for line in text.splitlines() if line.strip() and not line.startswith("#")]
     return list(csv.DictReader(lines))
 
@@ -245,26 +263,19 @@ def _pitch(text: str, per_si_unit: Decimal | int, name: str) -> float:
     return value
 
 
-def _iso606() -> list[Chain]:
+def _family(family: str) -> list[Chain]:
+    """The chains of ``<family>.csv`` in the generic layout (mm, kN, kg/m; absent column = no value)."""
     chains = []
-    for r in _rows("iso606.csv"):
-        chains.append(
-            Chain(
-                name=r["name"],
-                family="iso606",
-                strands=int(r["strands"]),
-                pitch=_pitch(r["pitch_mm"], _MM, r["name"]),
-                roller_diameter=_num(r["roller_diameter_mm"], _MM),
-                bar_diameter=None,
-                inner_width=_num(r["inner_width_mm"], _MM),
-                pin_diameter=_num(r["pin_diameter_mm"], _MM),
-                plate_height=_num(r["plate_height_mm"], _MM),
-                transverse_pitch=_num(r["transverse_pitch_mm"], _MM),
-                breaking_force=_num(r["breaking_force_kN"], _KN),
-                mass_per_length=_num(r["mass_per_length_kg_m"], 1),
-                source=r["source"],
-            )
-        )
+    for r in _rows(f"{family}.csv"):
+        def cell(column: str, per_si_unit: Decimal | int) -> float | None:
+            return _num(r.get(column) or "", per_si_unit)  # noqa: B023 - used at once
+        chains.append(Chain(
+            name=r["name"], family=family, strands=int(r.get("strands") or 1),
+            pitch=_pitch(r["pitch_mm"], _MM, r["name"]), roller_diameter=cell("roller_diameter_mm", _MM),
+            bar_diameter=cell("bar_diameter_mm", _MM), inner_width=cell("inner_width_mm", _MM),
+            pin_diameter=cell("pin_diameter_mm", _MM), plate_height=cell("plate_height_mm", _MM),
+            transverse_pitch=cell("transverse_pitch_mm", _MM), breaking_force=cell("breaking_force_kN", _KN),
+            mass_per_length=cell("mass_per_length_kg_m", 1), source=r["source"]))
     return chains
 
 
@@ -295,35 +306,12 @@ def _ansi(iso: dict[str, Chain]) -> list[Chain]:
     return chains
 
 
-def _din22252() -> list[Chain]:
-    chains = []
-    for r in _rows("din22252.csv"):
-        chains.append(
-            Chain(
-                name=r["name"],
-                family="din22252",
-                strands=1,
-                pitch=_pitch(r["pitch_mm"], _MM, r["name"]),
-                roller_diameter=None,
-                bar_diameter=_num(r["bar_diameter_mm"], _MM),
-                inner_width=_num(r["inner_width_mm"], _MM),
-                pin_diameter=None,
-                plate_height=None,
-                transverse_pitch=None,
-                breaking_force=_num(r["breaking_force_kN"], _KN),
-                mass_per_length=_num(r["mass_per_length_kg_m"], 1),
-                source=r["source"],
-            )
-        )
-    return chains
-
-
 @lru_cache(maxsize=1)
 def _estimated() -> dict[str, tuple[str, ...]]:
     """Chain name -> fields that are estimates (the optional CSV column ``estimated``)."""
     out: dict[str, tuple[str, ...]] = {}
-    for filename in ("iso606.csv", "ansi.csv", "din22252.csv"):
-        for r in _rows(filename):
+    for family in families():
+        for r in _rows(f"{family}.csv"):
             fields = tuple(f.strip() for f in (r.get("estimated") or "").split(";") if f.strip())
             if fields:
                 out[r["name"]] = fields
@@ -410,8 +398,9 @@ def equivalent_names(chain: Chain | str) -> tuple[str, ...]:
 
 @lru_cache(maxsize=1)
 def _all() -> tuple[Chain, ...]:
-    iso = _iso606()
-    return tuple(iso) + tuple(_ansi({c.name: c for c in iso})) + tuple(_din22252())
+    iso = _family("iso606")
+    rest = [c for f in families() if f not in ("iso606", "ansi") for c in _family(f)]
+    return tuple(iso) + tuple(_ansi({c.name: c for c in iso})) + tuple(rest)
 
 
 @lru_cache(maxsize=1)
@@ -452,10 +441,85 @@ def normalize_name(name: str) -> str:
 
 
 def _check_family(family: str | None) -> None:
-    if family is not None and family not in FAMILIES:
+    if family is not None and family not in families():
         raise UnknownNameError(
-            f"unknown chain family {family!r}; valid families: {', '.join(FAMILIES)}"
+            f"unknown chain family {family!r}; valid families: {', '.join(families())}"
         )
+
+
+def families() -> tuple[str, ...]:
+    """The chain families: :data:`FAMILIES` and those added by :func:`register_family`.
+
+    Examples
+    --------
+    >>> families()[:3]
+    ('iso606', 'ansi', 'din22252')
+    """
+    return FAMILIES + tuple(f for f in _EXTRA if f not in FAMILIES)
+
+
+def register_family(family: str, csv_text: str) -> None:
+    """Add a chain family from CSV text (the layout of ``chaindrive/chains/data/<family>.csv``).
+
+    A family shipped with the package is its CSV file in ``chaindrive/chains/data``, found
+    at import; this function adds one at run time (a plug-in, a test) without a file there.
+    Columns (``#`` lines are comments): ``name``, ``pitch_mm`` and ``source`` required;
+    ``strands`` (default 1), ``roller_diameter_mm`` (roller chain) or ``bar_diameter_mm``
+    (round link chain), ``inner_width_mm``, ``pin_diameter_mm``, ``plate_height_mm``,
+    ``transverse_pitch_mm``, ``breaking_force_kN``, ``mass_per_length_kg_m``, ``estimated``
+    (field names separated by ``;``) optional. Its rating method is registered under the
+    family's name in :data:`chaindrive.rating.RATING_METHODS` (a module
+    ``chaindrive/rating/<family>.py`` that does so is imported when first needed).
+
+    Parameters
+    ----------
+    family : str
+        Family name, a lower-case identifier not yet taken.
+    csv_text : str
+        The table.
+
+    Raises
+    ------
+    InputError
+        A name taken or not an identifier, a row without a name, pitch or source, or a
+        chain name the catalogue already holds.
+
+    Examples
+    --------
+    >>> register_family("demo", "name,pitch_mm,roller_diameter_mm,source\\nDEMO 1,10,6,made up")
+    >>> get("demo 1").pitch, catalogue("demo")[0].is_roller_chain
+    (0.01, True)
+    >>> unregister_family("demo")
+    """
+    if not re.fullmatch(r"[a-z][a-z0-9_]*", str(family)) or family in families():
+        raise InputError(f"family must be a new lower-case identifier, got {family!r} "
+                         f"(taken: {', '.join(families())})", field="family")
+    _clear_caches()
+    known = _index()
+    _EXTRA[family] = str(csv_text)
+    try:
+        rows = _family(family)
+        clash = [c.name for c in rows if normalize_name(c.name) in known]
+        if clash:
+            raise InputError(f"chain names already in the catalogue: {', '.join(clash)}", field="csv_text")
+    except (KeyError, ValueError, InputError) as exc:
+        del _EXTRA[family]
+        if isinstance(exc, InputError):
+            raise
+        raise InputError(f"family {family!r}: every row needs name, pitch_mm and source ({exc})",
+                         field="csv_text") from exc
+    _clear_caches()
+
+
+def unregister_family(family: str) -> None:
+    """Remove a family added by :func:`register_family` (the package's own stay)."""
+    _EXTRA.pop(family, None)
+    _clear_caches()
+
+
+def _clear_caches() -> None:
+    for cached in (_all, _index, _estimated, _twins):
+        cached.cache_clear()
 
 
 def get(name: str | Chain) -> Chain:
