@@ -8,6 +8,7 @@ The family is added at run time through the documented extension point
 import pytest
 
 from chaindrive import chains
+from chaindrive.design import Duty, design_drive
 from chaindrive.errors import InputError, UnknownNameError
 from chaindrive.rating import RATING_METHODS, _rate, chain_rating, default_method
 from chaindrive.selection import select
@@ -48,9 +49,13 @@ def test_family_csv_and_rating_method_are_enough(acme) -> None:
     twin = chain_rating("16B-1", 17, 100.0, method="ansi")
     own = chain_rating(ch, 17, 100.0)
     assert own.method == "acme" and own.rated_power == pytest.approx(twin.rated_power, rel=1e-12)
-    rows = select(20e3, 100.0, 2.0, family="acme")
+    with pytest.warns(FutureWarning):
+        rows = select(20e3, 100.0, 2.0, family="acme")
     assert rows and {r.chain for r in rows} <= {"ACME 16", "ACME 20"}
-    assert any(r.family == "acme" for r in select(20e3, 100.0, 2.0))
+    with pytest.warns(FutureWarning):
+        assert any(r.family == "acme" for r in select(20e3, 100.0, 2.0))
+    found = design_drive(Duty(power=20e3, speed=100.0, ratio=2.0, load_character="smooth"), family="acme")
+    assert found.candidates and {c.chain for c in found.candidates} <= {"ACME 16", "ACME 20"}
 
 
 def test_catalogue_is_back_after_removal(acme) -> None:
@@ -58,7 +63,7 @@ def test_catalogue_is_back_after_removal(acme) -> None:
     with pytest.raises(UnknownNameError, match="unknown chain"):
         chains.get("ACME 16")
     with pytest.raises(UnknownNameError, match="unknown roller-chain family"):
-        select(20e3, 100.0, 2.0, family="acme")
+        design_drive(Duty(power=20e3, speed=100.0, ratio=2.0, load_character="smooth"), family="acme")
 
 
 def test_bad_family_is_refused() -> None:

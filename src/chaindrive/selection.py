@@ -17,7 +17,7 @@ from typing import TYPE_CHECKING, Any
 from ._finite import finite_guard
 from ._results import Result, quantity
 from ._validation import check_positive, check_teeth
-from .errors import InfeasibleError, InputError, UnknownNameError, ValidityRangeWarning
+from .errors import InfeasibleError, InputError, ValidityRangeWarning
 from .rating import ChainRating, _scalar, chain_rating
 from .rating import ansi as _ansi
 from .rating.ansi import *  # noqa: F403 - re-exported for existing callers
@@ -224,7 +224,7 @@ def select(power: float, speed: float, ratio: float, *, service_factor: float = 
                   "chaindrive.design.design_drive (the one design procedure of select, the studio and "
                   "studies; the service factor from a duty class, the analysis's static safety)",
                   FutureWarning, stacklevel=2)
-    from .chains import catalogue, equivalent_names, families
+    from .chains import catalogue, check_roller_family, equivalent_names
     from .layout import centre_distance_approx, chain_length_approx, even_links
 
     P = _scalar("power", power, check_positive, "W")
@@ -239,14 +239,10 @@ def select(power: float, speed: float, ratio: float, *, service_factor: float = 
     z2 = int(round(z1 * i))
     a_wanted = None if centre_distance is None else _scalar("centre_distance", centre_distance, check_positive, "m")
     s_min = _scalar("min_static_safety", min_static_safety, check_positive, "-")
-    roller = tuple(f for f in families() if f != "din22252" and all(c.is_roller_chain for c in catalogue(f)))
-    if family is not None and family not in roller:
-        raise UnknownNameError(f"unknown roller-chain family {family!r}; valid: None, "
-                               f"{', '.join(repr(f) for f in roller)}")
+    fams = check_roller_family(family)
     allowed = tuple(strands)
     if not allowed or any(isinstance(k, bool) or k not in (1, 2, 3, 4) for k in allowed):
         raise InputError(f"strands must be a non-empty selection of 1, 2, 3, 4, got {strands!r}")
-    fams = roller if family is None else (family,)
     design = P * ks
     found: dict[str, Candidate] = {}
     too_close: list[str] = []

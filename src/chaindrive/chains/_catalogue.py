@@ -20,7 +20,8 @@ from .._docs import Fragments
 from ..errors import InputError, UnknownNameError
 
 __all__ = ["Chain", "FAMILIES", "get", "catalogue", "names", "normalize_name", "estimated_fields",
-           "equivalent_names", "families", "register_family", "unregister_family"]
+           "equivalent_names", "families", "roller_families", "check_roller_family", "register_family",
+           "unregister_family"]
 
 #: Data files of the package that are not a chain family.
 _NOT_FAMILIES = ("ansi_lubrication.csv",)
@@ -456,6 +457,40 @@ def families() -> tuple[str, ...]:
     ('iso606', 'ansi', 'din22252')
     """
     return FAMILIES + tuple(f for f in _EXTRA if f not in FAMILIES)
+
+
+def roller_families() -> tuple[str, ...]:
+    """The families of roller chains (every family but the round link chains), in display order.
+
+    The families a chain selection searches: ``None`` in :func:`chaindrive.design.design_drive`
+    means all of them.
+
+    Examples
+    --------
+    >>> roller_families()[:2]
+    ('iso606', 'ansi')
+    """
+    return tuple(f for f in families() if all(c.is_roller_chain for c in catalogue(f)))
+
+
+def check_roller_family(family: str | None) -> tuple[str, ...]:
+    """The roller-chain families to search: all for ``None``, else ``(family,)`` if it is one.
+
+    Raises
+    ------
+    UnknownNameError
+        ``family`` is not a roller-chain family (the message lists them).
+
+    Examples
+    --------
+    >>> check_roller_family(None)[:2], check_roller_family("ansi")
+    (('iso606', 'ansi'), ('ansi',))
+    """
+    roller = roller_families()
+    if family is not None and family not in roller:
+        raise UnknownNameError(f"unknown roller-chain family {family!r}; valid: None, "
+                               f"{', '.join(repr(f) for f in roller)}")
+    return roller if family is None else (family,)
 
 
 def register_family(family: str, csv_text: str) -> None:

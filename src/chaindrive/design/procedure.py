@@ -38,7 +38,6 @@ from ..errors import (
     ChainDriveError,
     InfeasibleError,
     InputError,
-    UnknownNameError,
     ValidityRangeWarning,
 )
 from ..loads import mean_chain_speed
@@ -560,8 +559,10 @@ def design_drive(duty: Duty, *, teeth_driving: int | None = None, family: str | 
     duty : Duty
     teeth_driving : int, optional
         Small-sprocket teeth; default the tooth-count policy per chain.
-    family : {None, "ansi", "iso606"}
-        Catalogue family (``None``: both; an ANSI chain and its ISO 606 twin are one row).
+    family : {None, "ansi", "iso606"} or str
+        Catalogue family (``None``: every roller-chain family,
+        :func:`chaindrive.chains.roller_families`; an ANSI chain and its ISO 606 twin are
+        one row).
     strands : tuple of int
         Strand counts admitted (1 ... 4).
     method : str, optional
@@ -602,15 +603,14 @@ def design_drive(duty: Duty, *, teeth_driving: int | None = None, family: str | 
     >>> c.chain, c.driving_teeth, c.driven_teeth, c.links, round(c.centre_distance * 1e3, 1)
     ('12A-1', 19, 58, 104, 612.4)
     """
-    from ..chains import catalogue, equivalent_names
+    from ..chains import catalogue, check_roller_family, equivalent_names
     from ..rating import RATING_METHODS
 
     if not isinstance(duty, Duty):
         raise InputError(f"duty must be a chaindrive.design.Duty, got {type(duty).__name__}", field="duty")
     factors = duty_factors(duty)
     ks = float(factors[0].value)
-    if family not in (None, "ansi", "iso606"):
-        raise UnknownNameError(f"unknown roller-chain family {family!r}; valid: None, 'ansi', 'iso606'")
+    fams = check_roller_family(family)
     if method is not None:
         RATING_METHODS.get(method)
     allowed = tuple(strands)
@@ -620,7 +620,6 @@ def design_drive(duty: Duty, *, teeth_driving: int | None = None, family: str | 
                                                    and required_static_safety >= 1):
         raise InputError(f"required_static_safety must be a number >= 1, got {required_static_safety!r}",
                          field="required_static_safety")
-    fams = ("iso606", "ansi") if family is None else (family,)
     chains = []
     for fam in fams:
         for ch in catalogue(fam):
