@@ -317,6 +317,7 @@ def chain_rating(chain: Chain | str, teeth: int, angular_velocity: float, *,
     Returns
     -------
     ChainRating
+        By the chosen method; its ``method`` and ``source`` name it.
 
     Raises
     ------
