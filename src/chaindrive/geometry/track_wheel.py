@@ -173,9 +173,9 @@ def tip_radius_range(
     Parameters
     ----------
     pitch_radius : float or array_like
-        ``R_о`` [m].
+        Pitch radius ``R_о`` of the wheel [m].
     pin_radius : float or array_like
-        ``r_ц`` [m].
+        Pin radius ``r_ц`` of the track links [m].
     link : {"built-up", "cast"}
         Track link construction.
 

@@ -259,7 +259,9 @@ def ansi_constants(name: str) -> tuple[float, float]:
 
     Returns
     -------
-    tuple of float
+    kp, kr : float
+        ``K_p`` of the link-plate branch (hp units of eq. (17-32)) and ``K_r`` of the
+        roller–bushing branch [-].
 
     References
     ----------
@@ -552,6 +554,18 @@ def lubrication_limits(pitch: ArrayLike) -> tuple[np.ndarray, np.ndarray]:
     return a * _FPM, b * _FPM
 
 
+def _lubrication_classes(chain_speed, pitch, labels):
+    """``labels[0]`` up to the first limit speed, ``labels[1]`` up to the second, else ``labels[2]``;
+    the limits' range warnings passed on to the caller of the public function."""
+    v = check_nonnegative("chain_speed", chain_speed, "m/s")
+    with warnings.catch_warnings(record=True) as rec:
+        warnings.simplefilter("always", ValidityRangeWarning)
+        va, vb = lubrication_limits(pitch)
+    for r in rec:
+        warnings.warn(str(r.message), ValidityRangeWarning, stacklevel=3)
+    return np.where(v <= va, labels[0], np.where(v <= vb, labels[1], labels[2]))
+
+
 @_DOCS
 def lubrication_region(chain_speed: ArrayLike, pitch: ArrayLike) -> np.ndarray:
     r"""ANSI lubrication region of a chain speed: ``"A"``, ``"B"`` or ``"C"``.
@@ -577,14 +591,7 @@ def lubrication_region(chain_speed: ArrayLike, pitch: ArrayLike) -> np.ndarray:
     >>> str(lubrication_region(1.0, 0.0254)), str(lubrication_region(20.0, 0.0254))
     ('B', 'C')
     """
-    v = check_nonnegative("chain_speed", chain_speed, "m/s")
-    with warnings.catch_warnings():
-        warnings.simplefilter("always", ValidityRangeWarning)
-        with warnings.catch_warnings(record=True) as rec:
-            va, vb = lubrication_limits(pitch)
-    for r in rec:
-        warnings.warn(str(r.message), ValidityRangeWarning, stacklevel=2)
-    return np.where(v <= va, "A", np.where(v <= vb, "B", "C"))
+    return _lubrication_classes(chain_speed, pitch, ("A", "B", "C"))
 
 
 @finite_guard
@@ -602,6 +609,7 @@ def lubrication_type(chain_speed: ArrayLike, pitch: ArrayLike) -> np.ndarray:
     Returns
     -------
     ndarray of str
+        ``"I"``, ``"II"``, ``"III"``: the regions A, B, C of :func:`lubrication_region`.
 
     References
     ----------
@@ -612,13 +620,7 @@ def lubrication_type(chain_speed: ArrayLike, pitch: ArrayLike) -> np.ndarray:
     >>> str(lubrication_type(1.0, 0.0254)), str(lubrication_type(20.0, 0.0254))
     ('II', 'III')
     """
-    v = check_nonnegative("chain_speed", chain_speed, "m/s")
-    with warnings.catch_warnings(record=True) as rec:
-        warnings.simplefilter("always", ValidityRangeWarning)
-        va, vb = lubrication_limits(pitch)
-    for r in rec:
-        warnings.warn(str(r.message), ValidityRangeWarning, stacklevel=2)
-    return np.where(v <= va, "I", np.where(v <= vb, "II", "III"))
+    return _lubrication_classes(chain_speed, pitch, ("I", "II", "III"))
 
 
 from chaindrive._finite import guard_public  # noqa: E402
