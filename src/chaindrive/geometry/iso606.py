@@ -521,7 +521,7 @@ def max_hub_diameter(pitch: ArrayLike, teeth: ArrayLike, plate_height: ArrayLike
 
     Examples
     --------
-    >>> round(float(max_hub_diameter(0.0254, 19, 0.02108)) * 1e3, 3)
+    >>> round(float(max_hub_diameter(0.0254, 19, 0.02108)) * 1e3, 3)   # [mm], 16B-1 on 19 teeth
     129.531
     """
     p = check_positive("pitch", pitch, "m")

@@ -136,7 +136,7 @@ def root_radius(pitch_radius: ArrayLike, pin_seat_radius: ArrayLike) -> FloatOrA
 
     Examples
     --------
-    >>> round(float(root_radius(0.355, 0.03)), 6)
+    >>> round(float(root_radius(0.355, 0.03)), 6)   # R_о − r_цо
     0.325
     """
     r0 = check_positive("pitch_radius", pitch_radius, "m")

@@ -59,7 +59,7 @@ def chain_length_approx(
 
     Examples
     --------
-    >>> round(float(chain_length_approx(0.0254, 19, 57, 1.05)), 3)
+    >>> round(float(chain_length_approx(0.0254, 19, 57, 1.05)), 3)   # [pitches]
     121.562
     """
     p = check_positive("pitch", pitch, "m")
@@ -112,7 +112,7 @@ def centre_distance_approx(pitch: ArrayLike, teeth_1: ArrayLike, teeth_2: ArrayL
 
     Examples
     --------
-    >>> round(float(centre_distance_approx(0.0254, 19, 57, 122)), 4)
+    >>> round(float(centre_distance_approx(0.0254, 19, 57, 122)), 4)   # [m], 122 links
     1.0556
     """
     p = check_positive("pitch", pitch, "m")
