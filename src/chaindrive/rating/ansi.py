@@ -255,7 +255,8 @@ def ansi_constants(name: str) -> tuple[float, float]:
     Parameters
     ----------
     name : str
-        Chain name (``"ANSI 40-1"``, ``"08A-1"``, ``"16B-1"``).
+        Chain name (``"ANSI 40-1"``, ``"08A-1"``, ``"16B-1"``); its ANSI number (or that of
+        its ISO 606 twin) sets the constants.
 
     Returns
     -------
@@ -588,7 +589,7 @@ def lubrication_region(chain_speed: ArrayLike, pitch: ArrayLike) -> np.ndarray:
 
     Examples
     --------
-    >>> str(lubrication_region(1.0, 0.0254)), str(lubrication_region(20.0, 0.0254))
+    >>> str(lubrication_region(1.0, 0.0254)), str(lubrication_region(20.0, 0.0254))   # No. 80
     ('B', 'C')
     """
     return _lubrication_classes(chain_speed, pitch, ("A", "B", "C"))
