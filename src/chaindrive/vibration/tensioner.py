@@ -48,26 +48,28 @@ COUPLING_MODELS.add("projected", lambda beta: np.cos(beta))
 COUPLING_MODELS.add("as_printed", lambda beta: np.ones_like(beta))
 
 #: The parameters of the slack span and tensioner, described once (:mod:`chaindrive._docs`).
+_SPAN = """
+    tension : {t}
+        S2, slack-span tension perpendicular to the tensioner axis [N], > 0.
+    mass_per_length : {t}
+        Chain mass per length q [kg/m], > 0.
+    length_1, length_2 : {t}
+        Lengths ℓ1, ℓ2 of the parts left and right of the tensioner [m], > 0.
+    angle_1, angle_2 : {t}
+        Inclinations β1, β2 of the parts [rad], 0 <= β < π/2.
+    mass : {t}
+        Tensioner mass reduced to its axis m [kg], >= 0.
+    stiffness : {t}
+        Tensioner stiffness reduced to its axis C [N/m], >= 0; {inf}.
+"""
 _DOCS = Fragments(
-    span="""
-        tension : float or array_like
-            S2, slack-span tension perpendicular to the tensioner axis [N], > 0.
-        mass_per_length : float or array_like
-            Chain mass per length q [kg/m], > 0.
-        length_1, length_2 : float or array_like
-            Lengths ℓ1, ℓ2 of the parts left and right of the tensioner [m], > 0.
-        angle_1, angle_2 : float or array_like
-            Inclinations β1, β2 of the parts [rad], 0 <= β < π/2.
-        mass : float or array_like
-            Tensioner mass reduced to its axis m [kg], >= 0.
-        stiffness : float or array_like
-            Tensioner stiffness reduced to its axis C [N/m], >= 0; ``np.inf`` fixes the
-            tensioner (two fixed-fixed strings).
-    """,
+    span=_SPAN.format(t="float or array_like", inf="``np.inf`` fixes the tensioner (two fixed-fixed strings)"),
+    span_finite=_SPAN.format(t="float or array_like", inf="finite here"),
+    span_scalars=_SPAN.format(t="float", inf="finite"),
     p_span="""
         p : float or array_like
             Trial circular frequency [rad/s], p > 0.
-        %(span)s
+        %(span_finite)s
     """,
 )
 
@@ -402,7 +404,7 @@ def fe_tensioner_frequencies(tension: float, mass_per_length: float, length_1: f
 
     Parameters
     ----------
-    %(span)s
+    %(span_scalars)s
     modes : int
         Number of frequencies returned.
     elements : int
@@ -421,7 +423,7 @@ def fe_tensioner_frequencies(tension: float, mass_per_length: float, length_1: f
 
     Notes
     -----
-    Scalar inputs only, the stiffness finite. Part i: nodes 0..N, node 0 fixed, node N
+    Scalar inputs (one assembled eigenproblem). Part i: nodes 0..N, node 0 fixed, node N
     tied to the tensioner, w = g_i u. Consistent mass matrices. Stationary string (no
     axial speed).
 
