@@ -18,7 +18,6 @@ manufacturing profile; compare GOST 13561-89 or DIN 22252's wheel annex for thos
 
 from __future__ import annotations
 
-import os
 from collections.abc import Mapping
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
@@ -30,11 +29,11 @@ from .._finite import finite_guard
 from .._results import Result, quantity
 from .._validation import check_nonnegative, check_positive, check_teeth
 from ..errors import InfeasibleError, InputError
+from ._files import WheelFiles
 from .outline import Arc, Line, Outline, Primitive, _drop_short, _repeat
 from .polygon import link_chain_central_angles, link_chain_pitch_radius
 
 if TYPE_CHECKING:
-    from ezdxf.document import Drawing
 
     from ..chains import Chain
 
@@ -123,7 +122,7 @@ class PocketWheelDimensions(Result):
 
 @_DOCS
 @dataclass
-class PocketWheel:
+class PocketWheel(WheelFiles):
     """Pocket wheel for a round link chain ``d x t`` with ``teeth`` pockets (thin object).
 
     Parameters
@@ -262,18 +261,5 @@ class PocketWheel:
         centres = np.stack([r * np.cos(hg), r * np.sin(hg)], axis=-1)
         return Outline(prims, r, centres, {"SLOT": slot_r, "TIP": tip})
 
-    def to_dict(self) -> dict[str, Any]:
-        return {"name": self.name, **self.dimensions().to_dict()}
-
     def label(self) -> str:
         return f"Pocket wheel {self.name + ' ' if self.name else ''}z = {self.teeth} (Dolipiński et al. eq. 6)"
-
-    def to_dxf(self, path: str | os.PathLike[str], form: str | None = None) -> Drawing:
-        from .export import outline_to_dxf
-
-        return outline_to_dxf(self.outline(), path, title=self.label())
-
-    def to_svg(self, path: str | os.PathLike[str], form: str | None = None) -> str:
-        from .export import outline_to_svg
-
-        return outline_to_svg(self.outline(), path, title=self.label())

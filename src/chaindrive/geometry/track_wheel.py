@@ -19,9 +19,8 @@ the line joining the two pins.
 
 from __future__ import annotations
 
-import os
 from dataclasses import dataclass
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING
 
 import numpy as np
 from numpy.typing import ArrayLike
@@ -32,12 +31,13 @@ from .._results import Result, quantity
 from .._typing import FloatOrArray
 from .._validation import check_positive, check_range, check_teeth
 from ..errors import InfeasibleError, InputError
+from ._files import WheelFiles
 from .outline import Arc, Outline, Primitive, _drop_short, _pair, _repeat
 from .polygon import roller_chain_pitch_radius
 from .tooth_form import _convex_flank_to_tip, _tip_half
 
 if TYPE_CHECKING:
-    from ezdxf.document import Drawing
+    pass
 
 __all__ = [
     "PIN_SEAT_FACTOR_RANGE",
@@ -337,7 +337,7 @@ class TrackDriveWheelDimensions(Result):
 
 
 @dataclass
-class TrackDriveWheel:
+class TrackDriveWheel(WheelFiles):
     """Drive wheel of a tracked vehicle engaging lantern pins (thin object, Sharipov).
 
     Parameters
@@ -464,18 +464,5 @@ class TrackDriveWheel:
         centres = np.stack([r0 * np.cos(ang), r0 * np.sin(ang)], axis=-1)
         return Outline(_repeat(right + left, z), r0, centres, {"ROOT": d.root_radius, "TIP": d.tip_radius})
 
-    def to_dict(self) -> dict[str, Any]:
-        return {"name": self.name, **self.dimensions().to_dict()}
-
     def label(self) -> str:
         return f"Track drive wheel z = {self.teeth}, {self.link} links (Sharipov)"
-
-    def to_dxf(self, path: str | os.PathLike[str], form: str | None = None) -> Drawing:
-        from .export import outline_to_dxf
-
-        return outline_to_dxf(self.outline(), path, title=self.label())
-
-    def to_svg(self, path: str | os.PathLike[str], form: str | None = None) -> str:
-        from .export import outline_to_svg
-
-        return outline_to_svg(self.outline(), path, title=self.label())
