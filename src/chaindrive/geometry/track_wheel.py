@@ -444,8 +444,8 @@ class TrackDriveWheel(WheelFiles):
         Examples
         --------
         >>> o = TrackDriveWheel(0.17, 13, 0.025).outline()
-        >>> o.closure_gap() < 1e-12, len(o.centres)
-        (True, 13)
+        >>> sorted(o.circles), len(o.centres), o.closure_gap() < 1e-12   # a pin centre per tooth
+        (['ROOT', 'TIP'], 13, True)
         """
         d = self.dimensions()
         z, t, rs, r0 = self.teeth, self.pitch, d.pin_seat_radius, d.pitch_radius
