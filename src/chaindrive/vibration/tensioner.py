@@ -150,7 +150,8 @@ def span_parameters(
     return c * (1.0 - v**2 / c**2), t * g(b) ** 2
 
 
-def _wave_terms(p, tension, mass_per_length, angle_1, angle_2, model, chain_speed):
+def _wave_terms(p, tension, mass_per_length, angle_1, angle_2, model,
+                chain_speed) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
     """``p`` as an array, the wave numbers k_i = p/c_i and coefficients a_i of both parts."""
     c1, a1 = span_parameters(tension, mass_per_length, angle_1, model=model, chain_speed=chain_speed)
     c2, a2 = span_parameters(tension, mass_per_length, angle_2, model=model, chain_speed=chain_speed)
@@ -197,11 +198,11 @@ def frequency_function(p: ArrayLike, tension: ArrayLike, mass_per_length: ArrayL
     ----------
     the tensioner paper, eqs (7), (9)-(11).
     """
-    p, k1, k2, a1, a2 = _wave_terms(p, tension, mass_per_length, angle_1, angle_2, model, chain_speed)
+    w, k1, k2, a1, a2 = _wave_terms(p, tension, mass_per_length, angle_1, angle_2, model, chain_speed)
     l1 = np.asarray(length_1, dtype=float)
     l2 = np.asarray(length_2, dtype=float)
     return (a1 * k1 / np.tan(k1 * l1) + a2 * k2 / np.tan(k2 * l2)
-            + np.asarray(stiffness, dtype=float) - np.asarray(mass, dtype=float) * p**2)
+            + np.asarray(stiffness, dtype=float) - np.asarray(mass, dtype=float) * w**2)
 
 
 @finite_guard
@@ -244,12 +245,12 @@ def pole_free_function(p: ArrayLike, tension: ArrayLike, mass_per_length: ArrayL
     ----------
     the tensioner paper, eqs (4)-(7), (9)-(11); docs/vibration.md.
     """
-    p, k1, k2, a1, a2 = _wave_terms(p, tension, mass_per_length, angle_1, angle_2, model, chain_speed)
+    w, k1, k2, a1, a2 = _wave_terms(p, tension, mass_per_length, angle_1, angle_2, model, chain_speed)
     x1 = k1 * np.asarray(length_1, dtype=float)
     x2 = k2 * np.asarray(length_2, dtype=float)
     s1, s2 = np.sin(x1), np.sin(x2)
     return (a1 * k1 * np.cos(x1) * s2 + a2 * k2 * np.cos(x2) * s1
-            + (np.asarray(stiffness, dtype=float) - np.asarray(mass, dtype=float) * p**2) * s1 * s2)
+            + (np.asarray(stiffness, dtype=float) - np.asarray(mass, dtype=float) * w**2) * s1 * s2)
 
 
 def _poles(w1, w2, modes):
