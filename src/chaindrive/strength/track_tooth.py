@@ -204,7 +204,7 @@ def tooth_bending_stress(force: ArrayLike, lever_arm: ArrayLike, root_thickness:
 
     Examples
     --------
-    >>> round(tooth_bending_stress(19.5e3, 0.0337, 0.110, 0.05) / 1e6, 2)
+    >>> round(tooth_bending_stress(19.5e3, 0.0337, 0.110, 0.05) / 1e6, 2)   # [MPa]
     6.52
     """
     p = check_positive("force", force, "N")
