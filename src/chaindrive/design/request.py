@@ -33,7 +33,7 @@ from dataclasses import dataclass
 from typing import Any
 
 from .._results import Result
-from ..errors import InputError, UnknownNameError
+from ..errors import InputError
 from ..limits import DUTY_RANGES, MAX_RATED_STRANDS, MAX_TEETH, MIN_TEETH, check_size
 from .duty import Duty
 from .policy import default_centre_distance
@@ -104,9 +104,9 @@ class DesignRequest(Result):
         if self.teeth_driving is not None:
             object.__setattr__(self, "teeth_driving", check_size("teeth_driving", self.teeth_driving, MAX_TEETH,
                                                                  minimum=MIN_TEETH, field="teeth_driving"))
-        if self.family not in (None, *FAMILIES):
-            raise UnknownNameError(f"unknown roller-chain family {self.family!r}; valid: None, "
-                                   + ", ".join(repr(f) for f in FAMILIES))
+        from ..chains import check_roller_family
+
+        check_roller_family(self.family)
         if self.method is not None:
             from ..rating import RATING_METHODS
 
