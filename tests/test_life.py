@@ -524,6 +524,16 @@ def test_wrap_jump_ratio_refuses_bad_input():
         wrap_jump_ratio(P16B, 17, D16B, 0.1, -5.0)
     with pytest.raises(InputError, match="elongation"):
         WrapModel(P16B, 17, D16B, -0.01)
+    with pytest.raises(InputError, match="tooth form of a 57-tooth wheel can hold"):
+        WrapModel(P16B, 57, D16B, 0.08)
+    with pytest.raises(InputError, match="teeth"):
+        WrapModel(P16B, 2, D16B, 0.01)
+    with pytest.raises(InputError, match="teeth must be a whole number"):
+        wrap_jump_ratio(P16B, 17.5, D16B, 0.1, 3000.0)
+    with pytest.raises(InputError, match="bracket"):
+        wrap_jump_ratio(P16B, 17, D16B, 0.1, 3000.0, low=10.0, high=5.0)
+    with pytest.raises(InputError, match="phases"):
+        wrap_jump_ratio(P16B, 17, D16B, 0.1, 3000.0, phases=0)
 
 
 def test_wrap_model_torque_loading_splits_the_span_tensions_by_the_moment_balance():

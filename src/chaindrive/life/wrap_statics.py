@@ -100,6 +100,14 @@ class WrapModel:
         check_nonnegative("elongation", self.elongation)
         check_positive("axial_stiffness", self.axial_stiffness, "N")
         check_positive("contact_stiffness", self.contact_stiffness, "N/m")
+        check_positive("span_links", self.span_links)
+        f, r, _psi, ce, corner, _d_t = self._const  # validates teeth, pitch and roller (ISO 606 form)
+        tip = ce + (f.flank_radius + r) * (corner - ce) / float(np.hypot(*(corner - ce)))
+        limit = float(np.hypot(tip[0] + f.pitch_radius, tip[1])) / f.pitch_radius - 1.0
+        if not float(self.elongation) < limit:
+            raise InputError(f"elongation {float(self.elongation):.4g} is more than the ISO 606 tooth form of a "
+                             f"{f.teeth}-tooth wheel can hold ({limit:.4g}): the rollers would ride over the "
+                             "tooth corner", field="elongation")
 
     # ------------------------------------------------------------------ geometry
     @functools.cached_property
@@ -412,19 +420,28 @@ def wrap_jump_ratio(pitch: float, teeth: int, roller_diameter: float, elongation
     >>> r = wrap_jump_ratio(0.0254, 17, 0.01588, 0.1, 3000.0, phases=4, rtol=0.5)  # doctest: +SKIP
     """
     check_positive("load", load, "N")
-    model = WrapModel(pitch, int(teeth), roller_diameter, elongation, axial_stiffness, contact_stiffness)
-    held, measured = model.holds(load, low, phases=phases, loading=loading)
+    z = float(check_positive("teeth", teeth))
+    if z != round(z):
+        raise InputError(f"teeth must be a whole number, got {z:g}", field="teeth")
+    if not 1 <= phases <= 100 or phases != int(phases):
+        raise InputError(f"phases must be a whole number in [1, 100], got {phases}", field="phases")
+    lo, hi = float(check_positive("low", low)), float(check_positive("high", high))
+    if not lo < hi <= 1e9:
+        raise InputError(f"the bracket must be 0 < low < high <= 1e9, got [{lo:g}, {hi:g}]", field="high")
+    if not 1e-3 <= float(rtol) <= 10.0:
+        raise InputError(f"rtol must lie in [0.001, 10], got {rtol}", field="rtol")
+    model = WrapModel(pitch, int(z), roller_diameter, elongation, axial_stiffness, contact_stiffness)
+    held, measured = model.holds(load, lo, phases=int(phases), loading=loading)
     if not held:
         raise InputError(f"the worn wrap ({teeth} teeth, elongation {elongation:g}) does not hold even "
                          f"T1/T2 = {low:g} under {load:g} N: the tooth form cannot hold the worn chain",
                          field="elongation")
-    lo, hi = float(low), float(high)
-    held, got = model.holds(load, hi, phases=phases, loading=loading)
+    held, got = model.holds(load, hi, phases=int(phases), loading=loading)
     if held:
         lo, measured = hi, got
     while not held and hi / lo > 1.0 + rtol:
         mid = math.sqrt(lo * hi)
-        ok, got = model.holds(load, mid, phases=phases, loading=loading)
+        ok, got = model.holds(load, mid, phases=int(phases), loading=loading)
         if ok:
             lo, measured = mid, got
         else:
