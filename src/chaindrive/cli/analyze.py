@@ -47,15 +47,16 @@ def _run_claimed(project: Path, output: Path, pdf: bool, figures: bool, quiet: b
             outcome = analyze(drive, partial, subtitle=f"Project file: {project}", pdf=pdf, figures=figures,
                               progress=progress, parallel_figures=True, source=source, browser_charts=not png)
         outcome.files = {k: output / Path(v).relative_to(partial) for k, v in outcome.files.items()}
-    from ..display import check_limit_text, check_value_text, verdict_text
+    from ..display import check_limit_text, check_margin_text, check_value_text, verdict_text
 
     out = Console(quiet=quiet, highlight=False)
     for title, c in outcome.report.checks:
         if c.relation == "info":
             continue
         mark = {"pass": "[green]pass[/green]", "FAIL": "[bold red]FAIL[/bold red]"}.get(c.verdict, c.verdict)
-        out.print(f"  {mark}  {title}: {c.name} = {check_value_text(c)} (limit {check_limit_text(c)})",
-                  markup=True)
+        margin = check_margin_text(c)
+        out.print(f"  {mark}  {title}: {c.name} = {check_value_text(c)} (limit {check_limit_text(c)}"
+                  + (f", margin {margin})" if margin else ")"), markup=True)
     warns = outcome.report.warnings
     words = verdict_text(len(outcome.analysis.failed), len(warns))
     verdict = f"[green]{words}[/green]" if outcome.passed else f"[bold red]{words}[/bold red]"
