@@ -322,7 +322,7 @@ class guard_scope:  # noqa: N801 - used like a function (``with guard_scope():``
         _GUARD.depth += 1
         return self
 
-    def __exit__(self, *exc: object) -> None:
+    def __exit__(self, *exc: Any) -> None:
         _GUARD.depth -= 1
         if self._state is not None:
             self._state.__exit__(*exc)
