@@ -110,11 +110,20 @@ def first_nonfinite(obj: Any, _depth: int = 0) -> str | None:
         if obj.dtype.kind in "fc" and obj.size and not _all_finite(obj):
             return f"[{int(np.flatnonzero(~np.isfinite(obj.ravel()))[0])}]"
         return None
-    if hasattr(t, "__dataclass_fields__") and dataclasses.is_dataclass(t):
-        for name in _field_names(t):
+    names = _FIELDS.get(t)
+    if names is None and hasattr(t, "__dataclass_fields__") and dataclasses.is_dataclass(t):
+        names = _field_names(t)
+    if names is not None:
+        for name in names:
             where = first_nonfinite(getattr(obj, name, None), _depth + 1)
             if where is not None:
                 return f".{name}{where}"
+        return None
+    if t is tuple or t is list:
+        for i, v in enumerate(obj):
+            where = first_nonfinite(v, _depth + 1)
+            if where is not None:
+                return f"[{i}]{where}"
         return None
     if isinstance(obj, _NUMERIC_SKIP) or isinstance(obj, (int, np.integer)):
         return None
