@@ -32,7 +32,7 @@ import math
 from dataclasses import dataclass
 from typing import Any
 
-from .._results import Result
+from .._results import Result, quantity
 from ..errors import InputError
 from ..limits import DUTY_RANGES, MAX_RATED_STRANDS, MAX_TEETH, MIN_TEETH, check_size
 from .duty import Duty
@@ -89,14 +89,14 @@ class DesignRequest(Result):
     """
 
     duty: Duty
-    teeth_driving: int | None = None
+    teeth_driving: int | None = quantity("1", default=None)
     family: str | None = None
-    strands: tuple[int, ...] = (1, 2, 3)
+    strands: tuple[int, ...] = quantity("1", default=(1, 2, 3))
     method: str | None = None
-    required_static_safety: float | None = None
+    required_static_safety: float | None = quantity("1", default=None)
     all_sizes: bool = False
-    limit: int | None = None
-    centre_distance_range: tuple[float, float] | None = None
+    limit: int | None = quantity("1", default=None)
+    centre_distance_range: tuple[float, float] | None = quantity("m", display="mm", default=None)
 
     def __post_init__(self) -> None:
         if not isinstance(self.duty, Duty):
