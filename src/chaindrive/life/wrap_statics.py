@@ -141,7 +141,7 @@ class WrapModel:
         return np.array(tight + wrap + slack)
 
     # ------------------------------------------------------------------ energy
-    def energy(self, x: np.ndarray, theta: float, t1: float, t2: float):
+    def energy(self, x: np.ndarray, theta: float, t1: float, t2: float) -> tuple[float, np.ndarray, np.ndarray]:
         """Potential energy [J], its gradient [N] and Hessian [N/m] at the roller centres ``x`` (flat)."""
         f, r, psi, ce, corner, d_t = self._const
         xx = x.reshape(-1, 2)
