@@ -95,11 +95,16 @@ def test_calibration_is_data_with_provenance():
     assert 0 < c.calibration_rms <= c.calibration_worst < 1 and 0 < c.holdout_worst < 1
 
 
-def _sweep():
-    sys.path.insert(0, str(ROOT / "benchmarks"))
-    import _dynamic_sweep
+def _module(folder, name):
+    """A module of benchmarks/ or scripts/ (not part of the package)."""
+    import importlib
 
-    return _dynamic_sweep
+    sys.path.insert(0, str(ROOT / folder))
+    return importlib.import_module(name)
+
+
+def _sweep():
+    return _module("benchmarks", "_dynamic_sweep")
 
 
 def test_model_against_the_cached_sweep():
@@ -173,3 +178,78 @@ def test_range_warnings():
 def test_errors(call, match):
     with pytest.raises(InputError, match=match):
         call()
+
+
+def _calibration_script():
+    return _module("scripts", "calibrate_running_tension")
+
+
+def test_cross_validation_stored_and_recomputed():
+    # issue 29.4: the constants fitted on three folds of the cached sweep predict the fourth;
+    # the stored out-of-fold accuracy is recomputed here (the fold of drive i is i mod 4)
+    cs = _calibration_script()
+    a = cs.load()
+    err = cs.crossvalidate(a)
+    c = RT.calibration()
+    assert len(err) >= 30
+    assert np.abs(err).max() == pytest.approx(c.crossval_worst, abs=1e-3)
+    assert np.sqrt(np.mean(err**2)) == pytest.approx(c.crossval_rms, abs=1e-3)
+    # regression of the finding (docs/design.md, "Span resonance: tested, not kept"): the aim of
+    # 15 % worst is not met, the rms is about 11 %
+    assert 0.30 < c.crossval_worst < 0.40 and 0.09 < c.crossval_rms < 0.13
+
+
+def test_chordal_rise_fundamental_against_quadrature():
+    # independent: the first Fourier coefficient of the entering roller's height R cos(theta/z)
+    # over one tooth period, by numerical quadrature; and its large-z limit 2 R / z^2
+    from scipy.integrate import quad
+
+    cs = _calibration_script()
+    for p, z in [(0.0254, 13), (0.03175, 18), (0.0127, 27)]:
+        r = p / (2 * math.sin(math.pi / z))
+        ref = quad(lambda t, r=r, z=z: r * math.cos(t / z) * math.cos(t), -math.pi, math.pi)[0] / math.pi
+        assert float(cs.chordal_rise_fundamental(np.array(p), np.array(z))) == pytest.approx(abs(ref), rel=1e-9)
+        assert abs(ref) == pytest.approx(2 * r / z**2, rel=0.02)
+
+
+def test_span_resonance_term_does_not_explain_the_sweep():
+    # the span-resonance term with its derived coefficient (1) makes the model worse over the
+    # sweep at every damping ratio tried, the S13 outlier stays (docs/design.md): the reason it
+    # is not in the package; a regression of that finding
+    cs = _calibration_script()
+    a = cs.load()
+    cal = a["index"] < cs.CALIBRATION_DRIVES
+    base = cs.model(cs.fit(a, cal), a) / a["sim_peak"] - 1
+    for zeta in (0.02, 0.05, 0.1, 0.2):
+        extra = cs.span_resonance_tension(a, zeta)
+
+        def f(c, s, extra=extra):
+            return cs.model(c, s) + extra[np.searchsorted(a["index"], s["index"])]
+
+        err = f(cs.fit(a, cal, f), a) / a["sim_peak"] - 1
+        assert np.abs(err[cal]).max() > 0.9 * np.abs(base[cal]).max()
+        assert np.sqrt(np.mean(err[cal] ** 2)) > np.sqrt(np.mean(base[cal] ** 2))
+
+
+@pytest.mark.slow
+def test_worst_drive_is_friction_driven_not_a_damped_resonance():
+    # docs/design.md, "Span resonance: tested, not kept": the sweep's worst drive S13 (20B 18/53 at
+    # 152 rpm, the model 36 % low) re-simulated: without the roller-tooth friction (the
+    # simulation's damping) its peak falls (measured 9120 -> 7282 N over 40 tooth periods,
+    # benchmarks/dynamic_load.py --friction),
+    # where a linearly damped resonance would rise; a regression of that finding
+    sw = _sweep()
+    s = next(d for d in sw.sweep_drives(64) if d.name == "S13")
+    cached = next(r for r in sw.read_cache() if r["name"] == "S13")
+    d = sw.drive_of(s)
+    periods, settle = sw.periods_and_settle(d)
+    peaks = {}
+    for mu in (0.1, 0.0):
+        t, ts = sw.settled_run(d, periods, settle, contact_stiffness=cached["contact_stiffness"], friction=mu)
+        peaks[mu] = float(np.median(sw.tooth_peaks(d, t, ts)))
+    assert peaks[0.1] == pytest.approx(cached["sim_peak"], rel=0.03)
+    assert peaks[0.0] < 0.92 * peaks[0.1]
+    model = float(RT.running_peak_tension(cached["tight"], cached["rpm"] * math.pi / 30, cached["pitch"],
+                                          cached["teeth_driving"], cached["mass_per_length"],
+                                          cached["contact_stiffness"]))
+    assert model / peaks[0.1] - 1 < -0.25

@@ -215,6 +215,12 @@ def test_error_at_the_field_keeps_the_value(page):
     page.screenshot(path=str(ARTIFACTS / "field-error.png"))
     page.fill("#centre_distance", "500 mm")
     expect(page.locator("#err-centre_distance")).to_have_text("")
+    # a bound of the design request (chaindrive.limits.DUTY_RANGES) at its field: the driven speed's ratio
+    page.fill("#driven_speed", "10 rpm")
+    expect(page.locator("#err-driven_speed")).to_contain_text("ratio must be a finite number in (0, 20]")
+    assert page.input_value("#driven_speed") == "10 rpm" and page.inner_text("#err-ratio") == ""
+    page.fill("#driven_speed", "")
+    expect(page.locator("#err-driven_speed")).to_have_text("")
 
 
 def test_expert_pages(page):

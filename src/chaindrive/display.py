@@ -13,6 +13,7 @@ that every surface shows the same units.
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from typing import TYPE_CHECKING, Any
 
 from .units import RAD_S_PER_RPM
@@ -20,7 +21,8 @@ from .units import RAD_S_PER_RPM
 if TYPE_CHECKING:
     from .analysis.checks import Check
 
-__all__ = ["verdict_text", "DISPLAY", "CONVERSIONS", "convert", "display_of", "display", "fmt", "check_line_parts", "check_value_text", "check_limit_text"]
+__all__ = ["verdict_text", "DISPLAY", "CONVERSIONS", "convert", "display_of", "display", "fmt", "check_line_parts",
+           "check_value_text", "check_limit_text", "check_margin_text", "scaled", "mm", "um", "kn", "kw", "mpa", "kn_per_m", "ms"]
 
 #: SI unit -> (display unit, factor).
 DISPLAY: dict[str, tuple[str, float]] = {
@@ -52,7 +54,50 @@ CONVERSIONS: dict[tuple[str, str], float] = {
     ("-", "%"): 100.0,
     ("rad", "arcmin"): math.degrees(1.0) * 60.0,
     ("N/m", "kN/m"): 1e-3,
+    ("s", "ms"): 1e3,
 }
+
+
+def scaled(value: Any, unit: str, shown: str) -> Any:
+    """``value`` [``unit``, SI; a number or an array] in the display unit ``shown``: the presenters'
+    one conversion (:data:`CONVERSIONS`), for a number written into a text. A factor below one
+    that is the reciprocal of a whole number divides (``12345.0 / 1e3``, exactly as written by hand).
+
+    Examples
+    --------
+    >>> scaled(0.0125, "m", "mm"), scaled(12345.0, "N", "kN"), scaled(2.5e-6, "m", "µm")
+    (12.5, 12.345, 2.5)
+    """
+    factor = CONVERSIONS[(unit, shown)]
+    if factor < 1.0 and float(1.0 / factor).is_integer():
+        return value / (1.0 / factor)
+    return value * factor
+
+
+def _in(unit: str, shown: str, what: str) -> Callable[[Any], Any]:
+    """The function that shows a value [``unit``] in ``shown`` (:func:`scaled`), named after ``shown``."""
+    def show(value: Any) -> Any:
+        return scaled(value, unit, shown)
+
+    show.__name__ = show.__qualname__ = {"µm": "um", "kN/m": "kn_per_m"}.get(shown, shown.lower())
+    show.__doc__ = f"{what} [{unit}] in {shown} (:func:`scaled`)."
+    return show
+
+
+#: A length [m] in mm, e.g. ``f"{mm(0.0254):.1f} mm"`` -> ``'25.4 mm'``.
+mm = _in("m", "mm", "A length")
+#: A length [m] in µm.
+um = _in("m", "µm", "A length")
+#: A force [N] in kN.
+kn = _in("N", "kN", "A force")
+#: A power [W] in kW.
+kw = _in("W", "kW", "A power")
+#: A stress [Pa] in MPa.
+mpa = _in("Pa", "MPa", "A stress")
+#: A stiffness [N/m] in kN/m.
+kn_per_m = _in("N/m", "kN/m", "A stiffness")
+#: A time [s] in ms.
+ms = _in("s", "ms", "A time")
 
 
 def convert(value: float | None, unit: str, shown: str | None = None) -> tuple[float | None, str]:
@@ -135,6 +180,24 @@ def check_limit_text(check: Check) -> str:
         (a, u), (b, _) = convert(lo, check.unit, check.display or None), convert(hi, check.unit, check.display or None)
         return f"{fmt(a)} … {fmt(b)} {u if u != '-' else ''}".strip()
     return f"{check.relation} {check_line_parts(limit, check.unit, check.display)}"
+
+
+def check_margin_text(check: Check | float | None) -> str:
+    """The relative margin of a check to its limit in per cent (:attr:`Check.margin
+    <chaindrive.analysis.checks.Check.margin>`, the check's own number; ``""`` without one).
+
+    Examples
+    --------
+    >>> from chaindrive.analysis.checks import Check
+    >>> check_margin_text(Check("static safety", 9.1, 7.0, "-", True, "ISO 10823:2004"))
+    '+30 %'
+    >>> check_margin_text(-0.052), check_margin_text(None)
+    ('-5 %', '')
+    """
+    margin = check if check is None or isinstance(check, (int, float)) else check.margin
+    if margin is None or not math.isfinite(margin):
+        return ""
+    return f"{margin * 100:+.0f} %"
 
 
 def verdict_text(failed: int, warnings: int) -> str:

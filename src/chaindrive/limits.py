@@ -25,6 +25,10 @@ MAX_PRIMITIVES      200 000      lines and arcs of one outline (20 per tooth)
 MAX_ARC_POINTS      10 000       points per arc when an outline is sampled
 ==================  ===========  ===================================================
 
+The ranges of a duty (:class:`chaindrive.design.Duty`, :class:`chaindrive.design.DesignRequest`,
+the studio's form, ``chaindrive select``) are here too, so that every door refuses the same
+values with the same words (:data:`DUTY_RANGES`).
+
 :func:`warn_implausible` warns (:class:`~chaindrive.errors.ValidityRangeWarning`, never
 raises) when a value typed at the boundary is physically implausible: a chain faster
 than any chain runs, a power below 1 W, and so on (:data:`PLAUSIBLE`). These are
@@ -54,6 +58,10 @@ __all__ = [
     "MAX_CAD_PARTS",
     "MAX_PRIMITIVES",
     "MAX_ARC_POINTS",
+    "MIN_TEETH",
+    "MAX_SPEED",
+    "MAX_RATED_STRANDS",
+    "DUTY_RANGES",
     "PLAUSIBLE",
     "check_size",
     "check_duration",
@@ -90,6 +98,27 @@ MAX_PRIMITIVES = 20 * MAX_TEETH
 #: Points per arc when an outline is sampled into a polyline.
 MAX_ARC_POINTS = 10_000
 
+#: Fewest teeth or pockets of one wheel (a pocket wheel of a mining conveyor: 3 and more).
+MIN_TEETH = 3
+#: Fastest wheel speed a door accepts [rad/s] (about 95,000 rpm; chains run below 10,000 rpm).
+MAX_SPEED = 1e4
+#: Most strands of a chain the rating methods cover (ANSI multi-strand factor, ISO 10823: up to 4).
+MAX_RATED_STRANDS = 4
+
+#: Ranges of a duty: name -> (low, high, SI unit); ``low`` is excluded, ``high`` included.
+#: The ratio ``n_driving / n_driven`` of a drive may lie below 1 (a speed-increasing drive of a
+#: given chain, the studio); the design procedure asks for a speed-reducing one (ratio >= 1).
+DUTY_RANGES: dict[str, tuple[float, float, str]] = {
+    "power": (0.0, 1e8, "W"),
+    "speed": (0.0, MAX_SPEED, "rad/s"),
+    "driven_speed": (0.0, MAX_SPEED, "rad/s"),
+    "ratio": (0.0, 20.0, ""),
+    "hours_per_day": (0.0, 24.0, "h"),
+    "centre_distance": (0.0, 50.0, "m"),
+    "service_factor": (0.0, 5.0, ""),
+    "required_static_safety": (0.0, 50.0, ""),
+}
+
 #: Plausible range of a value typed at the boundary, by kind:
 #: (low, high, SI unit, display factor, display unit, why). Outside: a warning.
 PLAUSIBLE: dict[str, tuple[float, float, str, float, str, str]] = {
@@ -105,7 +134,7 @@ PLAUSIBLE: dict[str, tuple[float, float, str, float, str, str]] = {
 }
 
 
-def check_size(name: str, value: float, maximum: int, minimum: int = 1) -> int:
+def check_size(name: str, value: float, maximum: int, minimum: int = 1, *, field: str | None = None) -> int:
     """Return ``value`` as an ``int`` after checking ``minimum <= value <= maximum``.
 
     Parameters
@@ -118,6 +147,8 @@ def check_size(name: str, value: float, maximum: int, minimum: int = 1) -> int:
         Largest value accepted (one of the ``MAX_*`` constants).
     minimum : int
         Smallest value accepted.
+    field : str, optional
+        The input the error names (:attr:`~chaindrive.errors.ChainDriveError.field`).
 
     Returns
     -------
@@ -143,7 +174,7 @@ def check_size(name: str, value: float, maximum: int, minimum: int = 1) -> int:
     if not ok and isinstance(value, numbers.Real) and not isinstance(value, bool):
         ok = math.isfinite(value) and float(value).is_integer()
     if not ok or not minimum <= value <= maximum:
-        raise InputError(f"{name} must be a whole number in [{minimum}, {maximum}], got {value!r}")
+        raise InputError(f"{name} must be a whole number in [{minimum}, {maximum}], got {value!r}", field=field)
     return int(value)
 
 

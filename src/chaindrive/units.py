@@ -28,6 +28,7 @@ the Python API stays SI floats.
 
 from __future__ import annotations
 
+import dataclasses
 import math
 import re
 from functools import lru_cache
@@ -216,15 +217,88 @@ def _registry():
     return ureg
 
 
+@dataclasses.dataclass(frozen=True)
+class _Dims:
+    """A dimensionality: its exponents (compared) and pint's text of it (for messages)."""
+
+    items: tuple[tuple[str, float], ...]
+    text: str = dataclasses.field(compare=False)
+
+    def __bool__(self) -> bool:
+        return bool(self.items)
+
+    def __str__(self) -> str:
+        return self.text
+
+
+#: The units a project and the report use most, as pint defines them (SI brochure, 9th ed.):
+#: unit text -> (factor to pint's root units, dimensionality exponents, its text, radian
+#: exponent, Hz-like). Read without loading pint (~0.2 s a process); every entry equals
+#: pint's own value exactly (tests/test_units_table.py); any other unit goes to pint.
+_TABLE: dict[str, tuple[float, tuple[tuple[str, float], ...], str, int, bool]] = {
+    '': (1.0, (), 'dimensionless', 0, False),
+    'Hz': (1.0, (('[time]', -1),), '1 / [time]', 0, True),
+    'MN': (1000000000.0, (('[length]', 1), ('[mass]', 1), ('[time]', -2)), '[mass] * [length] / [time] ** 2', 0, False),
+    'MN/m': (1000000000.0, (('[mass]', 1), ('[time]', -2)), '[mass] / [time] ** 2', 0, False),
+    'MPa': (1000000000.0, (('[length]', -1), ('[mass]', 1), ('[time]', -2)), '[mass] / [length] / [time] ** 2', 0, False),
+    'N': (1000.0, (('[length]', 1), ('[mass]', 1), ('[time]', -2)), '[mass] * [length] / [time] ** 2', 0, False),
+    'N*m': (1000.0, (('[length]', 2), ('[mass]', 1), ('[time]', -2)), '[mass] * [length] ** 2 / [time] ** 2', 0, False),
+    'N/m': (1000.0, (('[mass]', 1), ('[time]', -2)), '[mass] / [time] ** 2', 0, False),
+    'Pa': (1000.0, (('[length]', -1), ('[mass]', 1), ('[time]', -2)), '[mass] / [length] / [time] ** 2', 0, False),
+    'W': (1000.0, (('[length]', 2), ('[mass]', 1), ('[time]', -3)), '[mass] * [length] ** 2 / [time] ** 3', 0, False),
+    'deg': (0.017453292519943295, (), 'dimensionless', 1, False),
+    'kN': (1000000.0, (('[length]', 1), ('[mass]', 1), ('[time]', -2)), '[mass] * [length] / [time] ** 2', 0, False),
+    'kN*m': (1000000.0, (('[length]', 2), ('[mass]', 1), ('[time]', -2)), '[mass] * [length] ** 2 / [time] ** 2', 0, False),
+    'kN/m': (1000000.0, (('[mass]', 1), ('[time]', -2)), '[mass] / [time] ** 2', 0, False),
+    'kW': (1000000.0, (('[length]', 2), ('[mass]', 1), ('[time]', -3)), '[mass] * [length] ** 2 / [time] ** 3', 0, False),
+    'kg': (1000.0, (('[mass]', 1),), '[mass]', 0, False),
+    'kg/m': (1000.0, (('[length]', -1), ('[mass]', 1)), '[mass] / [length]', 0, False),
+    'm': (1.0, (('[length]', 1),), '[length]', 0, False),
+    'm**2/N': (0.001, (('[length]', 1), ('[mass]', -1), ('[time]', 2)), '[length] * [time] ** 2 / [mass]', 0, False),
+    'm/s': (1.0, (('[length]', 1), ('[time]', -1)), '[length] / [time]', 0, False),
+    'mm': (0.001, (('[length]', 1),), '[length]', 0, False),
+    'rad': (1.0, (), 'dimensionless', 1, False),
+    'rad/s': (1.0, (('[time]', -1),), '1 / [time]', 1, False),
+    'rpm': (0.10471975511965977, (('[time]', -1),), '1 / [time]', 1, False),
+    's': (1.0, (('[time]', 1),), '[time]', 0, False),
+    'min': (60.0, (('[time]', 1),), '[time]', 0, False),
+    'h': (3600.0, (('[time]', 1),), '[time]', 0, False),
+    'arcmin': (0.00029088820866572163, (), 'dimensionless', 1, False),
+    'cm': (0.01, (('[length]', 1),), '[length]', 0, False),
+    'um': (1e-06, (('[length]', 1),), '[length]', 0, False),
+    't': (1000000.0, (('[mass]', 1),), '[mass]', 0, False),
+    'GPa': (1000000000000.0, (('[length]', -1), ('[mass]', 1), ('[time]', -2)), '[mass] / [length] / [time] ** 2', 0, False),
+    'kPa': (1000000.0, (('[length]', -1), ('[mass]', 1), ('[time]', -2)), '[mass] / [length] / [time] ** 2', 0, False),
+    'J': (1000.0, (('[length]', 2), ('[mass]', 1), ('[time]', -2)), '[mass] * [length] ** 2 / [time] ** 2', 0, False),
+    'm/s**2': (1.0, (('[length]', 1), ('[time]', -2)), '[length] / [time] ** 2', 0, False),
+    'kg*m**2': (1000.0, (('[length]', 2), ('[mass]', 1)), '[mass] * [length] ** 2', 0, False),
+    'N/mm': (1000000.0, (('[mass]', 1), ('[time]', -2)), '[mass] / [time] ** 2', 0, False),
+    'rad/s**2': (1.0, (('[time]', -2),), '1 / [time] ** 2', 1, False),
+    't/h': (277.77777777777777, (('[mass]', 1), ('[time]', -1)), '[mass] / [time]', 0, False),
+    'kg/s': (1000.0, (('[mass]', 1), ('[time]', -1)), '[mass] / [time]', 0, False),
+}
+
+
 @lru_cache(maxsize=512)
-def _unit_info(unit: str) -> tuple[Any, float, Any, int, bool]:
-    """(pint unit, factor to root units, root dimensionality, radian exponent, is Hz-like)."""
+def _unit_info(unit: str) -> tuple[Any, float, _Dims, int, bool]:
+    """(pint unit or None for a unit of :data:`_TABLE`, factor to root units, root
+    dimensionality, radian exponent, is Hz-like)."""
+    known = _TABLE.get(unit)
+    if known is not None:
+        factor, items, text, radians, hertz = known
+        return None, factor, _Dims(items, text), radians, hertz
+    return _pint_unit_info(unit)
+
+
+def _pint_unit_info(unit: str) -> tuple[Any, float, _Dims, int, bool]:
+    """:func:`_unit_info` by pint."""
     ureg = _registry()
     parsed = ureg.parse_units(unit) if unit else ureg.dimensionless
     factor, root = ureg.get_root_units(parsed)
     radians = int(dict(root._units).get("radian", 0))
     hertz = any(name in ("hertz",) or name.endswith("hertz") for name in dict(parsed._units))
-    return parsed, float(factor), ureg.Quantity(1.0, parsed).dimensionality, radians, hertz
+    dims = ureg.Quantity(1.0, parsed).dimensionality
+    return parsed, float(factor), _Dims(tuple(sorted(dict(dims).items())), str(dims)), radians, hertz
 
 
 def _known_unit(unit: str, field: str) -> tuple[Any, float, Any, int, bool]:

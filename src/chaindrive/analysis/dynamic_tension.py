@@ -29,7 +29,8 @@ SPRING_MASS_VALIDITY = ("not validated against measurement: within 5-12 % of the
                         "and the simulation'); EA, the wheel inertia and the damping ratio are assumed")
 #: What the reduced running-tension model is worth (docs/design.md, "The running peak tension").
 RUNNING_VALIDITY = ("reduced model calibrated against the simulation over 64 two-sprocket drives (rms 10.6 %, "
-                    "worst 35.9 % low at a span resonance); the simulation itself is not validated against "
+                    "worst 35.9 % low, cross-validated worst 35.6 %); the simulated peaks move 8-22 % with the "
+                    "unvalidated roller-tooth friction, and the simulation itself is not validated against "
                     "measurement (docs/design.md, 'The running peak tension')")
 #: What the rigid-chain estimate is worth.
 RIGID_VALIDITY = ("rigid-chain inertia force: a lower bound of the polygonal action's peak (no elastic "

@@ -10,17 +10,19 @@ from .._io import note_earlier_run
 from .app import app
 
 
-def _run(project: Path, output: Path, pdf: bool, figures: bool, quiet: bool, force: bool = False) -> int:
+def _run(project: Path, output: Path, pdf: bool, figures: bool, quiet: bool, force: bool = False,
+         png: bool = False) -> int:
 
     from .._io import claim_output_dir
 
     # before any work: the folder locked (a second run into it is refused), an earlier run
     # needs --force, a folder with other files is refused
     with claim_output_dir(output, force=force, inputs=(project,)):
-        return _run_claimed(project, output, pdf, figures, quiet, force)
+        return _run_claimed(project, output, pdf, figures, quiet, force, png)
 
 
-def _run_claimed(project: Path, output: Path, pdf: bool, figures: bool, quiet: bool, force: bool) -> int:
+def _run_claimed(project: Path, output: Path, pdf: bool, figures: bool, quiet: bool, force: bool,
+                 png: bool = False) -> int:
     from rich.console import Console
     from rich.progress import BarColumn, Progress, TextColumn, TimeElapsedColumn
 
@@ -43,17 +45,18 @@ def _run_claimed(project: Path, output: Path, pdf: bool, figures: bool, quiet: b
 
         with atomic_output_dir(output, force=force, inputs=(project,)) as partial:  # moved into place when complete
             outcome = analyze(drive, partial, subtitle=f"Project file: {project}", pdf=pdf, figures=figures,
-                              progress=progress, parallel_figures=True, source=source)
+                              progress=progress, parallel_figures=True, source=source, browser_charts=not png)
         outcome.files = {k: output / Path(v).relative_to(partial) for k, v in outcome.files.items()}
-    from ..display import check_limit_text, check_value_text, verdict_text
+    from ..display import check_limit_text, check_margin_text, check_value_text, verdict_text
 
     out = Console(quiet=quiet, highlight=False)
     for title, c in outcome.report.checks:
         if c.relation == "info":
             continue
         mark = {"pass": "[green]pass[/green]", "FAIL": "[bold red]FAIL[/bold red]"}.get(c.verdict, c.verdict)
-        out.print(f"  {mark}  {title}: {c.name} = {check_value_text(c)} (limit {check_limit_text(c)})",
-                  markup=True)
+        margin = check_margin_text(c)
+        out.print(f"  {mark}  {title}: {c.name} = {check_value_text(c)} (limit {check_limit_text(c)}"
+                  + (f", margin {margin})" if margin else ")"), markup=True)
     warns = outcome.report.warnings
     words = verdict_text(len(outcome.analysis.failed), len(warns))
     verdict = f"[green]{words}[/green]" if outcome.passed else f"[bold red]{words}[/bold red]"
@@ -78,6 +81,7 @@ def analyze_cmd(
     figures: bool = typer.Option(True, "--figures/--no-figures", help="Draw the plots."),
     quiet: bool = typer.Option(False, "--quiet", "-q", help="Print nothing; use the exit code."),
     force: bool = typer.Option(False, "--force", help="Replace an earlier run in the output folder (without it an earlier run is refused before any work; a folder with other files is never replaced)."),
+    png: bool = typer.Option(False, "--png", help="Every figure as a PNG file (matplotlib), embedded in report.html; without it the report's charts are drawn by the browser from their data (plotly.min.js written beside report.html, offline). --pdf implies it."),
 ) -> None:
     """Run every applicable analysis of a drive and write a calculation report.
 
@@ -90,7 +94,7 @@ def analyze_cmd(
     an earlier run there is replaced only with --force, and a failed run leaves it
     unchanged (the error says so).
     """
-    raise typer.Exit(_run(project, output, pdf, figures, quiet, force))
+    raise typer.Exit(_run(project, output, pdf, figures, quiet, force, png))
 
 
 @app.command("report")

@@ -17,6 +17,7 @@ from typing import Any, overload
 import typer
 
 from .._results import jsonable
+from ..display import mm
 from ..kinematics.speed import parse_wheel_speed
 from ..limits import warn_implausible
 from ..units import parse_quantity
@@ -220,7 +221,7 @@ def motion_rows(summary: Mapping[str, Any]) -> list[tuple[str, str]]:
         ("minimum acceleration a_min", f"{s['a_min']:.6f} m/s²"),
         ("maximum acceleration a_max", f"{s['a_max']:.6f} m/s²"),
         ("acceleration changes sign at period end", "yes" if s["sign_change_at_period_end"] else "no"),
-        ("transverse throw", f"{s['transverse_throw'] * 1e3:.4f} mm"),
+        ("transverse throw", f"{mm(s['transverse_throw']):.4f} mm"),
     ]
 
 

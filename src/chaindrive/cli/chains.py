@@ -9,27 +9,28 @@ from __future__ import annotations
 import typer
 
 from ..chains import FAMILIES, Chain, catalogue, get
+from ..display import display
 from .app import app, echo_json
 
-#: (header, attribute, factor from SI to the displayed unit, format)
-_COLUMNS: tuple[tuple[str, str, float, str], ...] = (
-    ("pitch p [mm]", "pitch", 1e3, "{:.3f}"),
-    ("roller d1 / bar d [mm]", "_diameter", 1e3, "{:.2f}"),
-    ("inner width b1 [mm]", "inner_width", 1e3, "{:.2f}"),
-    ("pin d2 [mm]", "pin_diameter", 1e3, "{:.2f}"),
-    ("plate h2 [mm]", "plate_height", 1e3, "{:.2f}"),
-    ("transv. pitch pt [mm]", "transverse_pitch", 1e3, "{:.2f}"),
-    ("min. breaking F [kN]", "breaking_force", 1e-3, "{:.1f}"),
-    ("mass q [kg/m]", "mass_per_length", 1.0, "{:.3f}"),
+#: (header, attribute, SI unit, format): shown in the unit's display unit (chaindrive.display)
+_COLUMNS: tuple[tuple[str, str, str, str], ...] = (
+    ("pitch p [mm]", "pitch", "m", "{:.3f}"),
+    ("roller d1 / bar d [mm]", "_diameter", "m", "{:.2f}"),
+    ("inner width b1 [mm]", "inner_width", "m", "{:.2f}"),
+    ("pin d2 [mm]", "pin_diameter", "m", "{:.2f}"),
+    ("plate h2 [mm]", "plate_height", "m", "{:.2f}"),
+    ("transv. pitch pt [mm]", "transverse_pitch", "m", "{:.2f}"),
+    ("min. breaking F [kN]", "breaking_force", "N", "{:.1f}"),
+    ("mass q [kg/m]", "mass_per_length", "kg/m", "{:.3f}"),
 )
 
 
-def _cell(chain: Chain, attribute: str, factor: float, fmt: str) -> str:
+def _cell(chain: Chain, attribute: str, unit: str, fmt: str) -> str:
     if attribute == "_diameter":
         value = chain.roller_diameter if chain.is_roller_chain else chain.bar_diameter
     else:
         value = getattr(chain, attribute)
-    return "-" if value is None else fmt.format(value * factor)
+    return "-" if value is None else fmt.format(display(value, unit)[0])
 
 
 def _console():
@@ -82,7 +83,7 @@ def chains_command(
             escape(chain.name),
             chain.family,
             str(chain.strands),
-            *(_cell(chain, attr, factor, fmt) for _, attr, factor, fmt in _COLUMNS),
+            *(_cell(chain, attr, unit, fmt) for _, attr, unit, fmt in _COLUMNS),
         )
     _console().print(table)
 
@@ -115,7 +116,7 @@ def chain_command(
     table.add_column("value", justify="right", overflow="fold")
     table.add_row("strands", str(chain.strands))
     table.add_row("type", "round link chain" if chain.is_link_chain else "roller chain")
-    for header, attr, factor, fmt in _COLUMNS:
-        table.add_row(escape(header), _cell(chain, attr, factor, fmt))
+    for header, attr, unit, fmt in _COLUMNS:
+        table.add_row(escape(header), _cell(chain, attr, unit, fmt))
     table.add_row("source", escape(chain.source))
     _console().print(table)

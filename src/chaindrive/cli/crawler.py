@@ -12,6 +12,7 @@ from typing import Any
 
 import typer
 
+from ..display import mm
 from ..errors import InputError
 from ..limits import MAX_POINTS, MAX_TEETH
 from ..units import angular_velocity_to_rpm
@@ -129,7 +130,7 @@ def crawler_command(
         ]
     if "guide_reaction_max" in s:
         rows.append(("largest guide reaction at the guide end, T tan(phi1)", f"{s['guide_reaction_max']:.6g} N"))
-    print_rows(f"crawler drive chain (t = {r.pitch * 1e3:g} mm, z = {r.teeth}, R = {r.radius * 1e3:.3f} mm, "
+    print_rows(f"crawler drive chain (t = {mm(r.pitch):g} mm, z = {r.teeth}, R = {mm(r.radius):.3f} mm, "
                f"omega = {r.angular_velocity:.6g} rad/s = {angular_velocity_to_rpm(r.angular_velocity):.6g} rpm): {what}", rows)
     if plot is not None:
         print(f"wrote {plot}")

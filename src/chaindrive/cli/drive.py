@@ -13,6 +13,7 @@ import math
 
 import typer
 
+from ..display import check_limit_text, check_margin_text, check_value_text, kn, kw, mm
 from ..errors import ChainDriveError
 from ..units import angular_velocity_to_rpm
 from .app import OPTION_ALIASES, app, echo_json, quantity, unit_help
@@ -75,7 +76,6 @@ def layout_command(
     from rich.markup import escape
 
     from ..analysis import analyze_drive
-    from ..display import check_limit_text, check_value_text
     from ..drive.project import load_project
 
     drive = load_project(file)
@@ -95,24 +95,24 @@ def layout_command(
 
     con = _console()
     con.print(f"[bold]{escape(drive.name)}[/bold]  chain {escape(drive.chain.name)}, pitch "
-              f"{drive.pitch * 1e3:.3f} mm, speed {drive.speed:.4g} rad/s = {angular_velocity_to_rpm(drive.speed):.4g} rpm, "
+              f"{mm(drive.pitch):.3f} mm, speed {drive.speed:.4g} rad/s = {angular_velocity_to_rpm(drive.speed):.4g} rpm, "
               f"v = {ten.chain_speed:.3f} m/s")
     con.print(f"links required {lay.links_required:.3f}, chosen {lay.links}")
     cd = lay.centre_distance_for_links
     if lay.polygon is not None and lay.centre_distance is not None and cd is not None:
         pg = lay.polygon
         approx = "" if pg.links_approx is None else f", ISO 10823 approx. {pg.links_approx:.3f}"
-        con.print(f"polygon length at a = {lay.centre_distance * 1e3:.2f} mm: "
+        con.print(f"polygon length at a = {mm(lay.centre_distance):.2f} mm: "
                   f"{pg.links_min:.4f}…{pg.links_max:.4f} pitches (circles {pg.links_circles:.4f}{approx})")
-        con.print(f"centre distance for {cd.links} links: {cd.taut * 1e3:.3f} mm (taut at tightest phase), "
-                  f"{cd.loose * 1e3:.3f} mm (loosest)")
+        con.print(f"centre distance for {cd.links} links: {mm(cd.taut):.3f} mm (taut at tightest phase), "
+                  f"{mm(cd.loose):.3f} mm (loosest)")
     t = Table(title="Wheels")
     for h in ("wheel", "pitch radius [mm]", "wrap [°]", "teeth in mesh", "shaft load [kN]"):
         t.add_column(escape(h), overflow="fold")  # '[mm]' is not rich markup
     for i, name in enumerate(lay.wheel_names):
-        t.add_row(name, f"{lay.pitch_radii[i] * 1e3:.2f}", f"{math.degrees(lay.wrap.wrap_angle[i]):.1f}",
+        t.add_row(name, f"{mm(lay.pitch_radii[i]):.2f}", f"{math.degrees(lay.wrap.wrap_angle[i]):.1f}",
                   "-" if lay.teeth_in_mesh[i] is None else str(lay.teeth_in_mesh[i]),
-                  f"{ten.shaft_loads[i] / 1e3:.3f}")
+                  f"{kn(ten.shaft_loads[i]):.3f}")
     con.print(t)
     t = Table(title="Spans")
     for h in ("span", "length [mm]", "angle [°]", "tension [kN]", ""):
@@ -121,20 +121,21 @@ def layout_command(
     for i in range(n):
         tag = "tight" if i == lay.tight_span else ("slack" if i == lay.slack_span else "")
         t.add_row(f"{lay.wheel_names[i]} → {lay.wheel_names[(i + 1) % n]}",
-                  f"{lay.wrap.span_length[i] * 1e3:.1f}", f"{math.degrees(lay.wrap.span_angle[i]):.1f}",
-                  f"{ten.span_tensions[i] / 1e3:.3f}", tag)
+                  f"{mm(lay.wrap.span_length[i]):.1f}", f"{math.degrees(lay.wrap.span_angle[i]):.1f}",
+                  f"{kn(ten.span_tensions[i]):.3f}", tag)
     con.print(t)
-    con.print(f"effective pull {ten.effective_pull / 1e3:.3f} kN, slack {ten.slack / 1e3:.3f} kN "
-              f"({ten.slack_source}), centrifugal {ten.centrifugal / 1e3:.3f} kN, dynamic "
-              f"{ten.dynamic / 1e3:.3f} kN, peak {ten.maximum / 1e3:.3f} kN"
-              + ("" if analysis.slack_sag is None else f"; slack sag {analysis.slack_sag * 1e3:.1f} mm"))
+    con.print(f"effective pull {kn(ten.effective_pull):.3f} kN, slack {kn(ten.slack):.3f} kN "
+              f"({ten.slack_source}), centrifugal {kn(ten.centrifugal):.3f} kN, dynamic "
+              f"{kn(ten.dynamic):.3f} kN, peak {kn(ten.maximum):.3f} kN"
+              + ("" if analysis.slack_sag is None else f"; slack sag {mm(analysis.slack_sag):.1f} mm"))
     if lay.take_up is not None:
         con.print(f"{lay.take_up_kind} for 1/2/3 % elongation: "
-                  + ", ".join(f"{x * 1e3:.1f} mm" for x in lay.take_up))
+                  + ", ".join(f"{mm(x):.1f} mm" for x in lay.take_up))
     for c in analysis.checks:
         verdict = {"pass": "[green]pass[/green]", "FAIL": "[red]FAIL[/red]"}.get(c.verdict, c.verdict)
-        con.print(f"{verdict}  " + escape(f"{c.name}: {check_value_text(c)} (limit {check_limit_text(c)}) "
-                                          f"[{c.source}] {c.note}"))
+        margin = check_margin_text(c)
+        con.print(f"{verdict}  " + escape(f"{c.name}: {check_value_text(c)} (limit {check_limit_text(c)}"
+                                          + (f", margin {margin}" if margin else "") + f") [{c.source}] {c.note}"))
     for w in analysis.warnings:
         con.print(f"warning: {w}", markup=False)
 
@@ -162,15 +163,16 @@ def _place(drive, place: str | None, wrap: str | None, along: str | None, of: st
         echo_json({"placement": p})
         return
     con = _console()
-    con.print(f"move {p.wheel!r} {p.distance * 1e3:.1f} mm along ({p.direction[0]:.4f}, {p.direction[1]:.4f}):",
+    con.print(f"move {p.wheel!r} {mm(p.distance):.1f} mm along ({p.direction[0]:.4f}, {p.direction[1]:.4f}):",
               markup=False)
-    con.print(f'position = ["{p.position[0] * 1e3:.1f} mm", "{p.position[1] * 1e3:.1f} mm"]', markup=False)
+    con.print(f'position = ["{mm(p.position[0]):.1f} mm", "{mm(p.position[1]):.1f} mm"]', markup=False)
     con.print(f"wrap on {p.target!r} there {math.degrees(p.wrap):.2f}° (requested {math.degrees(p.requested):.2f}°), "
               f"wheels and spans clear; with the links fitted again {math.degrees(p.refitted_wrap):.2f}°",
               markup=False)
 
 
 OPTION_ALIASES["select"] = {"teeth_driving": "--teeth", "service_factor": "--service-factor",
+                            "centre_distance_range": "--min-centre-distance/--max-centre-distance",
                             "load_character": "--load-character", "hours_per_day": "--hours-per-day"}
 
 
@@ -201,6 +203,11 @@ def select_command(
         "Wanted centre distance; default 40 pitches of each chain (ISO 10823: 30-50 pitches). "
         "The link count is the chain length rounded up to even; the centre distance printed is "
         "the exact one for that count.", "m", "600 mm")),
+    min_centre: str | None = typer.Option(None, "--min-centre-distance", help=unit_help(
+        "Without --centre-distance: the shortest centre distance a chain is laid out at (its 40 pitches "
+        "moved into the bounds).", "m", "400 mm")),
+    max_centre: str | None = typer.Option(None, "--max-centre-distance", help=unit_help(
+        "Without --centre-distance: the longest centre distance a chain is laid out at.", "m", "800 mm")),
     teeth: int | None = typer.Option(None, "--teeth", "-z", help="Teeth of the small sprocket, a count "
                                      "(default: the tooth-count policy, 19 or more, odd; docs/design.md)."),
     family: str | None = typer.Option(None, "--family", "-f", help="ansi or iso606 (default both: an "
@@ -228,7 +235,7 @@ def select_command(
     static safety, the peak tension of the running chain, advice, near misses). Needs a duty
     class (--driven-machine or --load-character) or an explicit --service-factor; prints every
     factor with its source."""
-    from ..design import Duty, design_drive
+    from ..design import DesignRequest, design_drive
     from ..errors import InputError
 
     if load_old is not None:
@@ -241,20 +248,16 @@ def select_command(
         from .._io import check_output_path
 
         out_file = check_output_path(write, (".toml",), option="--write", force=force)
-    if limit < 1:
-        raise InputError(f"--limit must be a whole number >= 1, got {limit}", field="--limit")
-    if teeth is not None:
-        from ..limits import MAX_TEETH, check_size
-
-        check_size("--teeth", teeth, MAX_TEETH, minimum=3)
-    duty = Duty(power=quantity(power, "W", "power"), speed=quantity(speed, "rad/s", "speed"), ratio=ratio,
-                driven_speed=quantity(driven_speed, "rad/s", "driven_speed"), driver=driver,
-                driven_machine=driven_machine, load_character=load_character, service_factor=service_factor,
-                hours_per_day=hours, centre_distance=quantity(centre_distance, "m", "centre_distance"),
-                environment=environment, lubrication=lubrication)
-    result = design_drive(duty, teeth_driving=teeth, family=family, strands=_strand_counts(strands),
-                          method=method, required_static_safety=required_static_safety,
-                          all_sizes=all_sizes, limit=limit)
+    request = DesignRequest.of(
+        power=quantity(power, "W", "power"), speed=quantity(speed, "rad/s", "speed"), ratio=ratio,
+        driven_speed=quantity(driven_speed, "rad/s", "driven_speed"), driver=driver, driven_machine=driven_machine,
+        load_character=load_character, service_factor=service_factor, hours_per_day=hours,
+        centre_distance=quantity(centre_distance, "m", "centre_distance"), environment=environment,
+        lubrication=lubrication, teeth_driving=teeth, family=family, strands=_strand_counts(strands), method=method,
+        required_static_safety=required_static_safety, all_sizes=all_sizes, limit=limit,
+        centre_distance_range=_centre_range(min_centre, max_centre))
+    duty = request.duty
+    result = design_drive(request)
     found = result.candidates
     if not 1 <= choose <= len(found):
         raise InputError(f"--choose must lie in [1, {len(found)}] (the rows listed), got {choose}", field="--choose")
@@ -270,26 +273,25 @@ def select_command(
     from rich.markup import escape
     from rich.table import Table
 
-    from ..display import check_limit_text, check_value_text
 
     con = _console()
     rec = result.recommended
-    con.print(escape(f"Duty: {duty.power / 1e3:g} kW at {angular_velocity_to_rpm(duty.speed):g} rpm, ratio "
+    con.print(escape(f"Duty: {kw(duty.power):g} kW at {angular_velocity_to_rpm(duty.speed):g} rpm, ratio "
                      f"{duty.speed_ratio:.4g}, {duty.hours_per_day:g} h/day, {duty.environment}"))
     for f in rec.factors:
         con.print(escape(f"  {f.name} {f.symbol} = {f.value:.4g}  [{f.source}]" + (f" ({f.note})" if f.note else "")))
     # two tables, each no wider than needed: a column is at least as wide as its longest
     # cell (no number or word is broken); headers wrap between their words
     rank_rows = [[str(k), " / ".join(c.names), f"{c.driving_teeth}/{c.driven_teeth}", str(c.links),
-                  f"{c.centre_distance * 1e3:.2f}", f"{c.rated_power / 1e3:.2f}", f"{c.power_margin:.2f}",
+                  f"{mm(c.centre_distance):.2f}", f"{kw(c.rated_power):.2f}", f"{c.power_margin:.2f}",
                   c.limited_by.replace("_", "-")] for k, c in enumerate(found, 1)]
     more_rows = [[str(k), c.method, f"{c.chain_speed:.2f}", c.lubrication,
                   "-" if c.static_safety is None else f"{c.static_safety:.2f} (>= {c.required_static_safety:.3g})",
-                  f"{c.dynamic_tension / 1e3:.2f}",
-                  f"{c.peak_tension / 1e3:.2f}" + ("" if c.peak_tension_limit is None
-                                                   else f" (<= {c.peak_tension_limit / 1e3:.2f})")]
+                  f"{kn(c.dynamic_tension):.2f}",
+                  f"{kn(c.peak_tension):.2f}" + ("" if c.peak_tension_limit is None
+                                                   else f" (<= {kn(c.peak_tension_limit):.2f})")]
                  for k, c in enumerate(found, 1)]
-    tables = ((f"Candidates (design power {rec.design_power / 1e3:.4g} kW)",
+    tables = ((f"Candidates (design power {kw(rec.design_power):.4g} kW)",
                ("#", "chain", "teeth", "links", "centre distance [mm]", "rated [kW]", "margin", "limited by"),
                rank_rows),
               ("Candidates: chain speed, lubrication, static safety, dynamic and peak tension",
@@ -306,7 +308,7 @@ def select_command(
     for note in dict.fromkeys(n for c in found for n in c.notes):
         con.print(escape(f"note: {note}"))
     con.print(escape(f"Recommended: {rec.chain}, {rec.driving_teeth}/{rec.driven_teeth} teeth, {rec.links} links, "
-                     f"centre distance {rec.centre_distance * 1e3:.2f} mm"))
+                     f"centre distance {mm(rec.centre_distance):.2f} mm"))
     for a in rec.advice:
         con.print(escape(f"  advice: {a.name}: {a.note} [{a.source}]"))
     for m in result.near_misses:
@@ -344,12 +346,24 @@ def rating_command(
                    "warnings": list(r.warnings)})
         return
     typer.echo(f"{r.chain} on {r.teeth} teeth at {angular_velocity_to_rpm(r.angular_velocity):.6g} rpm: rated "
-               f"{r.rated_power / 1e3:.4g} kW ({r.method}; limited by {r.limited_by.replace('_', '-')}); "
-               f"link plate {r.link_plate / 1e3:.4g} kW, roller-bushing {r.roller_bushing / 1e3:.4g} kW; "
+               f"{kw(r.rated_power):.4g} kW ({r.method}; limited by {r.limited_by.replace('_', '-')}); "
+               f"link plate {kw(r.link_plate):.4g} kW, roller-bushing {kw(r.roller_bushing):.4g} kW; "
                f"chain speed {r.chain_speed:.3g} m/s, lubrication {r.lubrication} ({r.lubrication_method}) "
                f"[{r.source}]")
     for w in r.warnings:
         typer.echo(f"note: {w}")
+
+
+def _centre_range(low: str | None, high: str | None) -> tuple[float, float] | None:
+    """``--min-centre-distance``/``--max-centre-distance`` as the request's bounds [m] (an open end:
+    0, or the largest centre distance of :data:`chaindrive.limits.DUTY_RANGES`)."""
+    from ..limits import DUTY_RANGES
+
+    if low is None and high is None:
+        return None
+    lo = quantity(low, "m", "min_centre_distance")
+    hi = quantity(high, "m", "max_centre_distance")
+    return (0.0 if lo is None else lo, DUTY_RANGES["centre_distance"][1] if hi is None else hi)
 
 
 def _strand_counts(text: str) -> tuple[int, ...]:

@@ -14,6 +14,7 @@ from typing import Any
 import numpy as np
 import typer
 
+from ..display import mm
 from ..errors import InputError
 from .app import app, echo_json, print_rows, quantity, unit_help
 
@@ -28,9 +29,15 @@ _HUB_DIAMETER = typer.Option(None, "--hub-diameter", help=unit_help("Hub diamete
 _HUB_LENGTH = typer.Option(None, "--hub-length", help=unit_help("Hub projection beyond the plate on one side ('0 mm' for a plate wheel); default 1.2 x bore overall, rounded up to 5 mm.", "m", "50 mm"))
 _MATERIAL = typer.Option(None, "--material", help="Material and heat-treatment note for the title block, e.g. 'C45, teeth induction hardened 45...55 HRC'.")
 _FORCE = typer.Option(False, "--force", help="Overwrite existing output files (default: refuse).")
+
 _POCKET_SVG = typer.Option(None, "--svg", help="Write the outline to this SVG file (viewBox in mm).")
 _TRACK_DXF = typer.Option(None, "--dxf", help="Write the outline to this DXF file (mm; layers OUTLINE, PITCH_CIRCLE, CENTRES, ROOT, TIP).")
 _TRACK_SVG = typer.Option(None, "--svg", help="Write the outline to this SVG file (viewBox in mm).")
+
+
+def _json_option() -> Any:
+    """The ``--json`` option of the wheel commands."""
+    return typer.Option(False, "--json", help="Print every computed dimension as JSON in SI units (m, rad).")
 
 
 def _chain(name: str | None):
@@ -71,10 +78,10 @@ def _write_part(part, dxf: Path | None, step: Path | None, force: bool) -> None:
 
 def _part_rows(part) -> list[tuple[str, str, str]]:
     hub = part.hub
-    key = "-" if hub.key is None else f"{hub.key.label()} mm, d + t2 = {(hub.bore + hub.key.hub_depth) * 1e3:.1f} mm"
+    key = "-" if hub.key is None else f"{hub.key.label()} mm, d + t2 = {mm(hub.bore + hub.key.hub_depth):.1f} mm"
     return [
         ("bore d (H7)", _mm(hub.bore), "allowed " + _rng(*hub.bore_range)),
-        ("hub diameter x projection", f"{hub.hub_diameter * 1e3:.1f} x {hub.hub_length * 1e3:.1f} mm", "allowed diameter " + _rng(*hub.hub_diameter_range)),
+        ("hub diameter x projection", f"{mm(hub.hub_diameter):.1f} x {mm(hub.hub_length):.1f} mm", "allowed diameter " + _rng(*hub.hub_diameter_range)),
         ("keyway b x h", key, "DIN 6885-1:1968 table 1"),
         ("part width (plate/rim + hub)", _mm(part.total_width), "drawing and solid"),
     ]
@@ -103,11 +110,12 @@ def _table(title: str, rows: list[tuple[str, str, str]]) -> None:
 
 
 def _mm(v) -> str:
-    return "-" if v is None else f"{v * 1e3:.3f} mm"
+    return "-" if v is None else f"{mm(v):.3f} mm"
 
 
-def _rng(lo, hi, unit="mm", f=1e3) -> str:
-    return f"{lo * f:.3f} ... {hi * f:.3f} {unit}"
+def _rng(lo, hi) -> str:
+    """A range of lengths [m] in mm."""
+    return f"{mm(lo):.3f} ... {mm(hi):.3f} mm"
 
 
 @app.command("sprocket")
@@ -129,7 +137,7 @@ def sprocket_command(
     hub_length: str | None = _HUB_LENGTH,
     material: str | None = _MATERIAL,
     force: bool = _FORCE,
-    as_json: bool = typer.Option(False, "--json", help="Print every computed dimension as JSON in SI units (m, rad)."),
+    as_json: bool = _json_option(),
 ) -> None:
     """Roller-chain sprocket dimensions and tooth outline to ISO 606:2015 clause 5 (or ASME B29.1).
 
@@ -163,9 +171,7 @@ def sprocket_command(
     if dxf is not None or step is not None:
         from ..geometry.part import DEFAULT_MATERIAL, sprocket_part
 
-        part = sprocket_part(s, form=form, tip_diameter=tip, bore=quantity(bore, "m", "bore"),
-                             hub_diameter=quantity(hub_diameter, "m", "hub_diameter"),
-                             hub_length=quantity(hub_length, "m", "hub_length"),
+        part = sprocket_part(s, form=form, tip_diameter=tip, **_hub(bore, hub_diameter, hub_length),
                              material=material or DEFAULT_MATERIAL)
     _write_outline(outline, s.label(), None, svg, force=force)
     if part is not None:
@@ -176,9 +182,7 @@ def sprocket_command(
                           "tip_diameter": 2 * outline.circles["TIP"],
                           "root_seat_diameter": 2 * outline.circles["ROOT"],
                           "primitives": len(outline.primitives)}
-        if part is not None:
-            out["part"] = part.to_dict()
-        echo_json(out)
+        _echo_with_part(out, part)
         return
     deg = np.degrees
     rows = [
@@ -196,15 +200,31 @@ def sprocket_command(
         ("max hub diameter dg", _mm(d.max_hub_diameter), "ISO 606:2015 5.6.2"),
         ("outline tip diameter", _mm(2 * outline.circles["TIP"]), f"drawn ({method}, form {form or 'min' if method == 'iso606' else 'ASME B29.1'})"),
     ]
-    if part is not None:
-        rows += _part_rows(part)
-    _table(s.label(), rows)
-    for line in _write_msgs(dxf, svg, step):
-        print(line)
+    _finish(s.label(), rows, part, dxf, svg, step)
 
 
 def _write_msgs(dxf, svg, step=None):
     return [f"wrote {p}" for p in (dxf, svg, step) if p is not None]
+
+
+def _hub(bore: str | None, hub_diameter: str | None, hub_length: str | None) -> dict[str, Any]:
+    """The hub options of a wheel part in SI units (``sprocket_part``, ``pocket_wheel_part``)."""
+    return {"bore": quantity(bore, "m", "bore"), "hub_diameter": quantity(hub_diameter, "m", "hub_diameter"),
+            "hub_length": quantity(hub_length, "m", "hub_length")}
+
+
+def _echo_with_part(out: dict[str, Any], part: Any) -> None:
+    """A wheel's JSON, with its part (bore, hub, key, material) when one was built."""
+    if part is not None:
+        out["part"] = part.to_dict()
+    echo_json(out)
+
+
+def _finish(label: str, rows: list[tuple[str, str, str]], part: Any, dxf, svg, step=None) -> None:
+    """The wheel's table (with its part's rows) and the files written."""
+    _table(label, rows + (_part_rows(part) if part is not None else []))
+    for line in _write_msgs(dxf, svg, step):
+        print(line)
 
 
 @app.command("pocket-wheel")
@@ -223,7 +243,7 @@ def pocket_wheel_command(
     hub_length: str | None = _HUB_LENGTH,
     material: str | None = _MATERIAL,
     force: bool = _FORCE,
-    as_json: bool = typer.Option(False, "--json", help="Print every computed dimension as JSON in SI units (m, rad)."),
+    as_json: bool = _json_option(),
 ) -> None:
     """Pocket wheel for a round link chain: pitch radius (Dolipiński et al. eq. 6), central angles
     δ1, δ2 (Dolipiński et al. eqs 7-9), pocket and hinge positions, and a basic outline."""
@@ -249,10 +269,8 @@ def pocket_wheel_command(
     if dxf is not None or step is not None:
         from ..geometry.part import pocket_wheel_part
 
-        extra = {} if material is None else {"material": material}
-        part = pocket_wheel_part(w, bore=quantity(bore, "m", "bore"),
-                                 hub_diameter=quantity(hub_diameter, "m", "hub_diameter"),
-                                 hub_length=quantity(hub_length, "m", "hub_length"), **extra)
+        extra: dict[str, Any] = {} if material is None else {"material": material}
+        part = pocket_wheel_part(w, **_hub(bore, hub_diameter, hub_length), **extra)
     if svg is not None:
         _write_outline(w.outline(), w.label(), None, svg, force=force)
     if part is not None:
@@ -260,9 +278,7 @@ def pocket_wheel_command(
     d = w.dimensions()
     if as_json:
         out = w.to_dict()
-        if part is not None:
-            out["part"] = part.to_dict()
-        echo_json(out)
+        _echo_with_part(out, part)
         return
     deg = np.degrees
     rows = [
@@ -275,11 +291,7 @@ def pocket_wheel_command(
         ("tip radius", _mm(d.tip_radius), "R + d/2 (drawing choice)"),
         ("pocket centre angles", ", ".join(f"{a:.2f}" for a in deg(d.pocket_angles)) + " °", "θk = 90° + 360° k/z"),
     ]
-    if part is not None:
-        rows += _part_rows(part)
-    _table(w.label(), rows)
-    for line in _write_msgs(dxf, svg, step):
-        print(line)
+    _finish(w.label(), rows, part, dxf, svg, step)
 
 
 @app.command("track-wheel")
@@ -326,6 +338,4 @@ def track_wheel_command(
         holds = "holds" if d.tip_radius >= d.worn_tip_radius else "TOO LOW: the worn chain jumps the teeth"
         rows.append(("smallest tip radius, worn chain", _mm(d.worn_tip_radius) + f" (k = {d.worn_tip_factor:.3g}; {holds})",
                      "Sharipov p. 34: R_tip >= t (1 + elongation) / (2 sin(pi/z))"))
-    _table(w.label(), rows)
-    for line in _write_msgs(dxf, svg):
-        print(line)
+    _finish(w.label(), rows, None, dxf, svg)

@@ -11,6 +11,7 @@ from pathlib import Path
 
 import typer
 
+from ..display import mm
 from ..errors import InputError
 from ..limits import MAX_POINTS, MAX_TEETH
 from ..units import angular_velocity_to_rpm
@@ -92,10 +93,10 @@ def kinematics_command(
         echo_json({"phi": r.phi, "x": r.x, "velocity": r.velocity,
                    "acceleration": r.acceleration, "summary": summary})
         return
-    what = f"{r.entry} entry" + (f", H = {r.guide_height * 1e3:.2f} mm" if r.guide_height is not None else "")
+    what = f"{r.entry} entry" + (f", H = {mm(r.guide_height):.2f} mm" if r.guide_height is not None else "")
     if r.guide_end_distance is not None:
-        what += f", l = {r.guide_end_distance * 1e3:.1f} mm"
-    print_rows(f"chain entry kinematics ({r.chain_type} chain, z = {r.teeth}, R = {r.radius * 1e3:.3f} mm, "
+        what += f", l = {mm(r.guide_end_distance):.1f} mm"
+    print_rows(f"chain entry kinematics ({r.chain_type} chain, z = {r.teeth}, R = {mm(r.radius):.3f} mm, "
                f"omega = {r.angular_velocity:.6g} rad/s = {angular_velocity_to_rpm(r.angular_velocity):.6g} rpm, "
                f"model {r.model}): {what}", motion_rows(r.summary))
     if plot is not None:

@@ -12,6 +12,7 @@ from typing import Any
 
 import typer
 
+from ..display import mm, mpa, um
 from ..errors import InputError
 from .app import OPTION_ALIASES, app, echo_json, exit_code, print_rows, quantity, unit_help
 
@@ -27,7 +28,7 @@ def _rows(title, rows):
 
 
 def _mpa(v):
-    return "-" if v is None else f"{v / 1e6:.1f} MPa"
+    return "-" if v is None else f"{mpa(v):.1f} MPa"
 
 
 def _f(v, fmt="{:.2f}"):
@@ -111,7 +112,7 @@ def contact_command(
         ("design skew phi_p", f"{r.design_skew / ARCMIN:.1f} arcmin", "phi_max K_phi"),
         ("gamma", f"{r.gamma:.5f} /arcmin^2", "Garshniev & Maksymovych table"),
         ("load factor Q_n/Q", _f(r.load_factor, "{:.3f}"), "Garshniev & Maksymovych eq. (2)"),
-        ("rho", f"{r.reduced_radius * 1e3:.3f} mm", "1/rho = 2/D_p -+ 1/r1"),
+        ("rho", f"{mm(r.reduced_radius):.3f} mm", "1/rho = 2/D_p -+ 1/r1"),
         ("sigma at no skew", _mpa(r.stress_unskewed), "Hertz / Garshniev & Maksymovych eq. (1)"),
         ("sigma with skew", _mpa(r.stress), "Garshniev & Maksymovych eq. (1)-(3)"),
         ("life ratio, wear", _f(r.relative_life_wear, "{:.3f}"), "(Q_n/Q)^-1 Archard"),
@@ -160,8 +161,8 @@ def tooth_strength_command(
     else:
         _rows("Track drive wheel tooth (Sharipov)", [
             ("design force P_P", f"{r.design_force:.0f} N", "0.65 G_T phi / i"),
-            ("root thickness s", f"{r.root_thickness * 1e3:.2f} mm", "t - 2 r_seat"),
-            ("lever arm h", f"{r.lever_arm * 1e3:.2f} mm", "R_tip - R_o cos(pi/z)"),
+            ("root thickness s", f"{mm(r.root_thickness):.2f} mm", "t - 2 r_seat"),
+            ("lever arm h", f"{mm(r.lever_arm):.2f} mm", "R_tip - R_o cos(pi/z)"),
             ("bending stress", _mpa(r.bending_stress), "K_t 6 P h / (b s^2)"),
             ("contact stress", _mpa(r.contact_stress), "Hertz line contact"),
             ("bending safety", _f(r.bending_safety), "allowable / actual"),
@@ -227,8 +228,8 @@ def fretting_command(
         echo_json(out)
         return
     rows = [
-        ("slip A without", f"{a.slip_amplitude * 1e6:.3f} um", "max slope x d/2, plates idle"),
-        ("slip A with", f"{b.slip_amplitude * 1e6:.3f} um", "intermediate plates support the pin"),
+        ("slip A without", f"{um(a.slip_amplitude):.3f} um", "max slope x d/2, plates idle"),
+        ("slip A with", f"{um(b.slip_amplitude):.3f} um", "intermediate plates support the pin"),
         ("slip ratio", _f(out['slip_ratio']), "without / with"),
         ("pin stress without", _mpa(a.max_stress), "32 M / (pi d^3)"),
         ("pin stress with", _mpa(b.max_stress), "32 M / (pi d^3)"),

@@ -1,6 +1,7 @@
 r"""The design layer: from a duty to the drive an engineer signs.
 
-:func:`design_drive` runs the procedure once (docs/design.md): duty -> service factor
+:func:`design_drive` answers a :class:`DesignRequest` (the duty and the constraints of the
+selection, checked when built) and runs the procedure once (docs/design.md): duty -> service factor
 (:mod:`chaindrive.design.duty`) -> tooth-count policy (:mod:`chaindrive.design.policy`) -> candidate chains rated by the
 method of their family (:mod:`chaindrive.rating`) -> layout with an even link count and
 the exact centre distance -> the analysis (loads, static safety, rating checks) -> advice
@@ -14,12 +15,15 @@ Examples
 ...             driven_machine="varying_conveyor", centre_distance=0.6)
 >>> design_drive(duty).recommended.chain
 '12A-1'
+>>> design_drive(DesignRequest(duty, strands=(1,))).drive().links
+104
 """
 
 from .advice import drive_advice
 from .duty import Duty, Factor, duty_factors, service_factor_table, service_factor_text
 from .procedure import DesignCandidate, DesignResult, design_drive, project_text
 from .rating import rate_chain
+from .request import DesignRequest
 
-__all__ = ["Duty", "Factor", "DesignCandidate", "DesignResult", "design_drive", "duty_factors",
+__all__ = ["Duty", "Factor", "DesignRequest", "DesignCandidate", "DesignResult", "design_drive", "duty_factors",
            "service_factor_table", "service_factor_text", "drive_advice", "project_text", "rate_chain"]

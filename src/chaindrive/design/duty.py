@@ -28,10 +28,12 @@ from importlib import resources
 from typing import Any
 
 from .._results import Result, quantity
-from ..errors import InputError
+from ..errors import InputError, UnknownNameError
+from ..limits import DUTY_RANGES
 from ..loads import SERVICE_FACTORS, service_factor
 
-__all__ = ["Duty", "Factor", "service_factor_table", "duty_factors", "service_factor_text",
+__all__ = ["Duty", "Factor", "service_factor_table", "duty_factors", "service_factor_text", "service_factor_of",
+           "duty_class", "design_power", "check_duty_value",
            "LOAD_CHARACTERS", "DRIVERS", "ENVIRONMENTS", "LUBRICATIONS"]
 
 #: Load characters of the service-factor table.
@@ -81,6 +83,35 @@ def service_factor_text() -> str:
         lines.append(f"  {c:<16} " + "  ".join(f"{t['factors'][c][d]:>15g}" for d in DRIVERS))
     lines.append("driven machines: " + ", ".join(f"{k} ({v[1]})" for k, v in t["driven_machines"].items()))
     return "\n".join(lines)
+
+
+def check_duty_value(name: str, value: float | None) -> None:
+    """Refuse a duty value outside its range of :data:`chaindrive.limits.DUTY_RANGES` (``None``: not given).
+
+    Raises
+    ------
+    InputError
+        Not a finite number in the range (field ``name``).
+    UnknownNameError
+        ``name`` is not a duty value of :data:`~chaindrive.limits.DUTY_RANGES`.
+
+    Examples
+    --------
+    >>> check_duty_value("hours_per_day", 8.0)
+    >>> check_duty_value("hours_per_day", 25.0)
+    Traceback (most recent call last):
+    ...
+    chaindrive.errors.InputError: hours_per_day must be a finite number in (0, 24] h, got 25.0
+    """
+    if name not in DUTY_RANGES:
+        raise UnknownNameError(f"no duty value {name!r}; valid: {', '.join(DUTY_RANGES)}")
+    if value is None:
+        return
+    low, high, unit = DUTY_RANGES[name]
+    if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value) \
+            or not low < value <= high:
+        where = f"({low:g}, {high:g}] {unit}".rstrip()
+        raise InputError(f"{name} must be a finite number in {where}, got {value!r}", field=name)
 
 
 @dataclass(frozen=True)
@@ -149,21 +180,8 @@ class Duty(Result):
     lubrication: str | None = None
 
     def __post_init__(self) -> None:
-        def positive(name: str, value: float | None, unit: str, upper: float = math.inf) -> None:
-            if value is None:
-                return
-            if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value) \
-                    or not 0 < value <= upper:
-                where = f"(0, {upper:g}] {unit}".rstrip()
-                raise InputError(f"{name} must be a finite number in {where}, got {value!r}", field=name)
-
-        positive("power", self.power, "W", 1e8)
-        positive("speed", self.speed, "rad/s", 1e4)
-        positive("ratio", self.ratio, "", 20.0)
-        positive("driven_speed", self.driven_speed, "rad/s", 1e4)
-        positive("hours_per_day", self.hours_per_day, "h", 24.0)
-        positive("centre_distance", self.centre_distance, "m", 50.0)
-        positive("service_factor", self.service_factor, "", 5.0)
+        for name in ("power", "speed", "ratio", "driven_speed", "hours_per_day", "centre_distance", "service_factor"):
+            check_duty_value(name, getattr(self, name))
         if self.service_factor is not None and self.service_factor < 1:
             raise InputError(f"service_factor must be >= 1, got {self.service_factor:g}", field="service_factor")
         if (self.ratio is None) == (self.driven_speed is None):
@@ -171,15 +189,7 @@ class Duty(Result):
         if self.speed_ratio < 1:
             raise InputError(f"the drive must reduce the speed: ratio n_driving / n_driven must be >= 1, "
                              f"got {self.speed_ratio:.4g}", field="ratio" if self.ratio is not None else "driven_speed")
-        if self.driver not in DRIVERS:
-            raise InputError(f"unknown driver {self.driver!r}; valid: {', '.join(DRIVERS)}", field="driver")
-        table = service_factor_table()
-        if self.driven_machine is not None and self.driven_machine not in table["driven_machines"]:
-            raise InputError(f"unknown driven machine {self.driven_machine!r}; valid: "
-                             f"{', '.join(table['driven_machines'])}", field="driven_machine")
-        if self.load_character is not None and self.load_character not in LOAD_CHARACTERS:
-            raise InputError(f"unknown load character {self.load_character!r}; valid: "
-                             f"{', '.join(LOAD_CHARACTERS)}", field="load_character")
+        _check_duty_class(self.driver, self.driven_machine, self.load_character)
         if self.environment not in ENVIRONMENTS:
             raise InputError(f"unknown environment {self.environment!r}; valid: {', '.join(ENVIRONMENTS)}",
                              field="environment")
@@ -198,11 +208,29 @@ class Duty(Result):
     @property
     def character(self) -> str | None:
         """The load character: given, or that of the driven machine (``None``: neither)."""
-        if self.load_character is not None:
-            return self.load_character
-        if self.driven_machine is not None:
-            return str(service_factor_table()["driven_machines"][self.driven_machine][1])
-        return None
+        return duty_class(self.driven_machine, self.load_character)
+
+
+def duty_class(driven_machine: str | None, load_character: str | None = None) -> str | None:
+    """The load character of a duty: ``load_character`` when given, else the driven machine's
+    (U.S. Tsubaki's table, :func:`service_factor_table`); ``None``: neither.
+
+    Raises
+    ------
+    InputError
+        Unknown driven machine or load character (the field named).
+
+    Examples
+    --------
+    >>> duty_class("varying_conveyor"), duty_class("varying_conveyor", "heavy"), duty_class(None)
+    ('moderate', 'heavy', None)
+    """
+    _check_duty_class(DRIVERS[0], driven_machine, load_character)
+    if load_character is not None:
+        return load_character
+    if driven_machine is not None:
+        return str(service_factor_table()["driven_machines"][driven_machine][1])
+    return None
 
 
 def duty_factors(duty: Duty) -> tuple[Factor, ...]:
@@ -220,18 +248,77 @@ def duty_factors(duty: Duty) -> tuple[Factor, ...]:
     >>> [(f.symbol, f.value) for f in duty_factors(d)]
     [('K_s', 1.3)]
     """
+    return (service_factor_of(duty.driver, driven_machine=duty.driven_machine, load_character=duty.load_character,
+                              given=duty.service_factor),)
+
+
+def service_factor_of(driver: str, *, driven_machine: str | None = None, load_character: str | None = None,
+                      given: float | None = None) -> Factor:
+    """The service factor ``K_s`` of a driving machine and a duty class, with its source: ``given``
+    when given, else the table's value for the load character (given, or the driven machine's).
+
+    Every door takes ``K_s`` from here (the design procedure, the studio), never from the table itself.
+
+    Raises
+    ------
+    InputError
+        Unknown driver, driven machine or load character (each naming its field); no duty class
+        (field ``service_factor``, the table in the message).
+
+    Examples
+    --------
+    >>> f = service_factor_of("electric_motor", driven_machine="varying_conveyor")
+    >>> f.value, f.note.split(" -> ")[1]
+    (1.3, 'moderate, Electric motor or turbine')
+    >>> service_factor_of("ic_mechanical", load_character="heavy").value
+    1.7
+    """
     table = service_factor_table()
-    if duty.service_factor is not None:
-        return (Factor("service factor", "K_s", float(duty.service_factor), "given by the user"),)
-    character = duty.character
+    _check_duty_class(driver, driven_machine, load_character)
+    if given is not None:
+        check_duty_value("service_factor", given)
+        if given < 1:
+            raise InputError(f"service_factor must be >= 1, got {given:g}", field="service_factor")
+        return Factor("service factor", "K_s", float(given), "given by the user")
+    character = duty_class(driven_machine, load_character)
     if character is None:
         raise InputError("no duty class: give the driven machine or the load character (smooth, moderate, "
                          "heavy) or an explicit service factor; the table used:\n" + service_factor_text(),
                          field="service_factor")
-    what = (f"{table['driven_machines'][duty.driven_machine][0]} -> {character}"
-            if duty.driven_machine is not None and duty.load_character is None else character)
-    return (Factor("service factor", "K_s", service_factor(character, duty.driver), table["source"],
-                   note=f"{what}, {table['drivers'][duty.driver]}"),)
+    what = (f"{table['driven_machines'][driven_machine][0]} -> {character}"
+            if driven_machine is not None and load_character is None else character)
+    return Factor("service factor", "K_s", service_factor(character, driver), table["source"],
+                  note=f"{what}, {table['drivers'][driver]}")
+
+
+def _check_duty_class(driver: str, driven_machine: str | None, load_character: str | None) -> None:
+    """Refuse an unknown driver, driven machine or load character (each naming its field)."""
+    if driver not in DRIVERS:
+        raise InputError(f"unknown driver {driver!r}; valid: {', '.join(DRIVERS)}", field="driver")
+    if driven_machine is not None and driven_machine not in service_factor_table()["driven_machines"]:
+        raise InputError(f"unknown driven machine {driven_machine!r}; valid: "
+                         f"{', '.join(service_factor_table()['driven_machines'])}", field="driven_machine")
+    if load_character is not None and load_character not in LOAD_CHARACTERS:
+        raise InputError(f"unknown load character {load_character!r}; valid: "
+                         f"{', '.join(LOAD_CHARACTERS)}", field="load_character")
+
+
+def design_power(power: float, factor: Factor) -> float:
+    """The design power ``K_s P`` [W] (the power the chain's rating must carry).
+
+    References
+    ----------
+    Shigley's Mechanical Engineering Design, 9th ed., Sec. 17-5 (roller chain selection: the
+    nominal power times the service factor ``K_s`` and the design factor ``n_d``; here
+    ``n_d = 1``, a design factor belongs to the required static safety); U.S. Tsubaki,
+    *The Complete Guide to Chain*, Sec. 4.2 (corrected power = power x service factor).
+
+    Examples
+    --------
+    >>> design_power(11e3, Factor("service factor", "K_s", 1.3))
+    14300.0
+    """
+    return float(power) * float(factor.value)
 
 
 from chaindrive._finite import guard_public  # noqa: E402

@@ -25,10 +25,13 @@ from .._validation import check_teeth
 from ..errors import InputError
 
 __all__ = ["BASE_TEETH", "MINIMUM_TEETH_BY_REGION", "MAXIMUM_DRIVEN_TEETH",
-           "ABSOLUTE_MINIMUM_TEETH", "TEETH_SOURCES", "driving_teeth", "driven_teeth"]
+           "ABSOLUTE_MINIMUM_TEETH", "TEETH_SOURCES", "DEFAULT_CENTRE_PITCHES", "default_centre_distance",
+           "driving_teeth", "driven_teeth"]
 
 #: Small-sprocket teeth the procedure starts with (ISO 10823:2004 rating basis).
 BASE_TEETH = 19
+#: Default centre distance [pitches] (ISO 10823:2004: 30 ... 50 pitches).
+DEFAULT_CENTRE_PITCHES = 40
 #: Minimum small-sprocket teeth by ANSI lubrication region (Diamond Chain FAQ).
 MINIMUM_TEETH_BY_REGION = {"A": 12, "B": 17, "C": 25, "C'": 25}
 #: The large wheel's teeth at most (U.S. Tsubaki RS catalogue, selection step 5).
@@ -92,6 +95,16 @@ def driving_teeth(region: str, character: str | None, ratio: float, *, given: in
         z = max(z, ABSOLUTE_MINIMUM_TEETH)
         why = TEETH_SOURCES["driven"]
     return z, why
+
+
+def default_centre_distance(pitch: float) -> float:
+    """The centre distance [m] a chain of ``pitch`` [m] is laid out at when none is wanted:
+    :data:`DEFAULT_CENTRE_PITCHES` pitches (ISO 10823:2004: 30 ... 50 pitches).
+
+    >>> round(default_centre_distance(0.01905), 4)
+    0.762
+    """
+    return DEFAULT_CENTRE_PITCHES * float(pitch)
 
 
 def driven_teeth(teeth_driving: int, ratio: float) -> int:

@@ -38,12 +38,13 @@ from ..errors import (
     ChainDriveError,
     InfeasibleError,
     InputError,
-    UnknownNameError,
     ValidityRangeWarning,
 )
 from ..loads import mean_chain_speed
 from ..units import angular_velocity_to_rpm
-from .duty import Duty, Factor, duty_factors
+from .duty import Duty, Factor, design_power, duty_factors
+from .policy import DEFAULT_CENTRE_PITCHES, default_centre_distance
+from .request import DesignRequest
 
 if TYPE_CHECKING:
     from ..chains import Chain
@@ -52,8 +53,6 @@ if TYPE_CHECKING:
 __all__ = ["DesignCandidate", "DesignResult", "NearMiss", "design_drive", "project_text", "two_sprocket_drive",
            "DEFAULT_CENTRE_PITCHES", "NEAR_MISS_BAND"]
 
-#: Default centre distance [pitches] (ISO 10823:2004: 30 ... 50 pitches).
-DEFAULT_CENTRE_PITCHES = 40
 
 
 @dataclass(frozen=True)
@@ -129,6 +128,16 @@ class DesignResult(Result):
     recommended: DesignCandidate
     candidates: tuple[DesignCandidate, ...]
     near_misses: tuple[Any, ...] = ()
+    request: DesignRequest | None = field(default=None, repr=False, compare=False)
+
+    def drive(self) -> Drive:
+        """The recommended drive (:class:`~chaindrive.drive.model.Drive`, built in code)."""
+        return self.recommended.drive()
+
+    @property
+    def design_power(self) -> float:
+        """The design power ``K_s P`` [W] (:func:`chaindrive.design.duty.design_power`)."""
+        return design_power(self.duty.power, self.factors[0])
 
     @property
     def advice(self) -> tuple[Check, ...]:
@@ -136,7 +145,8 @@ class DesignResult(Result):
         return tuple(self.recommended.advice)
 
     def to_dict(self) -> dict[str, Any]:
-        return {"duty": self.duty.to_dict(), "factors": [f.to_dict() for f in self.factors],
+        return {"duty": self.duty.to_dict(), "request": None if self.request is None else self.request.to_dict(),
+                "factors": [f.to_dict() for f in self.factors],
                 "recommended": self.recommended.summary(),
                 "candidates": [c.summary() for c in self.candidates],
                 "near_misses": [m.summary() for m in self.near_misses]}
@@ -246,25 +256,28 @@ def _candidate(chain: Chain, twins: tuple[str, ...], duty: Duty, factors: tuple[
 
 def _rated(chain: Chain, twins: tuple[str, ...], duty: Duty, ks: float, given_teeth: int | None,
            method: str | None, teeth: tuple[int, str] | None = None,
-           short: list[tuple[_Rated, float]] | None = None) -> _Rated | str | None:
+           short: list[tuple[_Rated, float]] | None = None, centre: float | None = None) -> _Rated | str | None:
     """Steps 2-3 of :func:`_candidate`: teeth (``teeth`` when already chosen), rating, room
     (``None``: does not carry the load; then, when its rating lies within :data:`NEAR_MISS_BAND`
-    of the design power, it is appended to ``short`` with its rating ratio)."""
+    of the design power, it is appended to ``short`` with its rating ratio). ``centre``: the wanted
+    centre distance [m] (default the duty's, else :data:`DEFAULT_CENTRE_PITCHES` pitches)."""
     from ..rating import chain_rating
     from .policy import driven_teeth
 
     z1, why = _teeth_for(chain, duty, given_teeth) if teeth is None else teeth
     z2 = driven_teeth(z1, duty.speed_ratio)
     design = duty.power * ks
+    if centre is not None:
+        a = centre
+    else:
+        a = default_centre_distance(chain.pitch) if duty.centre_distance is None else duty.centre_distance
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", ValidityRangeWarning)
         r = chain_rating(chain, z1, duty.speed, power=design, method=method)
     if r.rated_power < design:
         if short is not None and r.rated_power >= (1.0 - NEAR_MISS_BAND) * design:
-            a0 = DEFAULT_CENTRE_PITCHES * chain.pitch if duty.centre_distance is None else duty.centre_distance
-            short.append((_Rated(chain, twins, z1, z2, why, r, a0), r.rated_power / design))
+            short.append((_Rated(chain, twins, z1, z2, why, r, a), r.rated_power / design))
         return None
-    a = DEFAULT_CENTRE_PITCHES * chain.pitch if duty.centre_distance is None else duty.centre_distance
     clearance = (_outside_diameter(chain.pitch, z1) + _outside_diameter(chain.pitch, z2)) / 2
     if a <= clearance:
         return f"{chain.name} (needs > {clearance * 1e3:.0f} mm)"
@@ -456,7 +469,8 @@ def _near_misses(short: list[tuple[_Rated, float]], best: DesignCandidate, duty:
             z = rated.z1 + extra
             if driven_teeth(z, duty.speed_ratio) > MAXIMUM_DRIVEN_TEETH:
                 break
-            got = _rated(ch, rated.twins, duty, ks, z, method, teeth=(z, f"near-miss remedy: {extra} more "
+            got = _rated(ch, rated.twins, duty, ks, z, method, centre=rated.centre,
+                         teeth=(z, f"near-miss remedy: {extra} more "
                                                                          f"tooth{'' if extra == 1 else ' teeth'}"))
             if not isinstance(got, _Rated):
                 continue
@@ -545,11 +559,8 @@ def _lay_out(rated: list[_Rated], duty: Duty, factors: tuple[Factor, ...], ks: f
     return found
 
 
-def design_drive(duty: Duty, *, teeth_driving: int | None = None, family: str | None = None,
-                 strands: tuple[int, ...] = (1, 2, 3), method: str | None = None,
-                 required_static_safety: float | None = None, all_sizes: bool = False,
-                 limit: int | None = None) -> DesignResult:
-    r"""Design a two-sprocket roller chain drive for ``duty``: the recommended drive and the candidates.
+def design_drive(request: DesignRequest | Duty, **options: Any) -> DesignResult:
+    r"""Design a two-sprocket roller chain drive for a request: the recommended drive and the candidates.
 
     .. math:: K_2 P_{r,1}(z_1, n_1) \ge K_s P,\qquad
               \frac{F_B}{K_s F_t + S + q v^2} \ge [s],\qquad F_{peak} \le \frac{F_B}{6},\qquad
@@ -557,28 +568,18 @@ def design_drive(duty: Duty, *, teeth_driving: int | None = None, family: str | 
 
     Parameters
     ----------
-    duty : Duty
-    teeth_driving : int, optional
-        Small-sprocket teeth; default the tooth-count policy per chain.
-    family : {None, "ansi", "iso606"}
-        Catalogue family (``None``: both; an ANSI chain and its ISO 606 twin are one row).
-    strands : tuple of int
-        Strand counts admitted (1 ... 4).
-    method : str, optional
-        Rating method for every chain (default: the method of each chain's family,
-        :func:`chaindrive.rating.default_method`).
-    required_static_safety : float, optional
-        Required static safety ``[s]`` (default the drive's, :attr:`chaindrive.drive.model.Drive.static_safety_required`:
-        Chernavsky et al. Table 7.19 by pitch and small-sprocket speed).
-    all_sizes : bool
-        Every adequate chain, not only the smallest adequate pitch per series and strands.
-    limit : int, optional
-        At most this many candidates.
+    request : DesignRequest or Duty
+        The duty and the constraints of the selection (:class:`~chaindrive.design.request.DesignRequest`:
+        small-sprocket teeth, family, strands, rating method, required static safety, all sizes,
+        limit); a bare :class:`~chaindrive.design.duty.Duty` is the request ``DesignRequest(duty, **options)``.
+    **options
+        The constraints when ``request`` is a Duty (the fields of ``DesignRequest`` after ``duty``).
 
     Returns
     -------
     DesignResult
-        ``recommended`` (the first candidate) and ``candidates``.
+        ``recommended`` (the first candidate), ``candidates`` and ``drive()`` (the recommended
+        :class:`~chaindrive.drive.model.Drive`).
 
     Raises
     ------
@@ -603,23 +604,20 @@ def design_drive(duty: Duty, *, teeth_driving: int | None = None, family: str | 
     ('12A-1', 19, 58, 104, 612.4)
     """
     from ..chains import catalogue, equivalent_names
-    from ..rating import RATING_METHODS
 
-    if not isinstance(duty, Duty):
-        raise InputError(f"duty must be a chaindrive.design.Duty, got {type(duty).__name__}", field="duty")
+    if isinstance(request, Duty):
+        request = DesignRequest(request, **options)
+    elif not isinstance(request, DesignRequest):
+        raise InputError(f"request must be a chaindrive.design.DesignRequest, got {type(request).__name__}",
+                         field="request")
+    elif options:
+        raise InputError(f"give the options in the DesignRequest, not beside it: {', '.join(options)}",
+                         field=next(iter(options)))
+    duty, teeth_driving, family, allowed = request.duty, request.teeth_driving, request.family, request.strands
+    method, required_static_safety = request.method, request.required_static_safety
+    all_sizes, limit = request.all_sizes, request.limit
     factors = duty_factors(duty)
     ks = float(factors[0].value)
-    if family not in (None, "ansi", "iso606"):
-        raise UnknownNameError(f"unknown roller-chain family {family!r}; valid: None, 'ansi', 'iso606'")
-    if method is not None:
-        RATING_METHODS.get(method)
-    allowed = tuple(strands)
-    if not allowed or any(isinstance(k, bool) or k not in (1, 2, 3, 4) for k in allowed):
-        raise InputError(f"strands must be a non-empty selection of 1, 2, 3, 4, got {strands!r}", field="strands")
-    if required_static_safety is not None and not (math.isfinite(required_static_safety)
-                                                   and required_static_safety >= 1):
-        raise InputError(f"required_static_safety must be a number >= 1, got {required_static_safety!r}",
-                         field="required_static_safety")
     fams = ("iso606", "ansi") if family is None else (family,)
     chains = []
     for fam in fams:
@@ -638,7 +636,8 @@ def design_drive(duty: Duty, *, teeth_driving: int | None = None, family: str | 
     for (ch, twins, teeth), maybe in zip(chains, may_carry, strict=True):
         if not maybe:
             continue
-        got = _rated(ch, twins, duty, ks, teeth_driving, method, teeth, short=short)
+        got = _rated(ch, twins, duty, ks, teeth_driving, method, teeth, short=short,
+                     centre=request.wanted_centre(ch.pitch))
         if isinstance(got, str):
             too_close.append(got)
         elif got is not None:
@@ -680,5 +679,6 @@ def design_drive(duty: Duty, *, teeth_driving: int | None = None, family: str | 
     rows = [passing[0], *(c for c in rows if c is not passing[0])]
     rows = rows[:limit] if limit else rows
     near = _near_misses(short, rows[0], duty, factors, ks, method, required_static_safety)
-    return DesignResult(duty=duty, factors=factors, recommended=rows[0], candidates=tuple(rows), near_misses=near)
+    return DesignResult(duty=duty, factors=factors, recommended=rows[0], candidates=tuple(rows), near_misses=near,
+                        request=request)
 

@@ -590,21 +590,20 @@ class Drive:
 
     def torque(self) -> float:
         """Torque on the driving wheel without service factor [N·m]."""
-        torque, power = self.load.torque, self.load.power
-        if torque is not None:
-            return float(torque)
-        if power is None:  # refused by Load(); the check narrows the type
-            raise InputError("load: give exactly one of power and torque", field="load")
-        return float(F.torque_from_power(power, self.speed))
+        return self._torque_and_power()[0]
 
     def power(self) -> float:
         """Transmitted power without service factor [W]."""
+        return self._torque_and_power()[1]
+
+    def _torque_and_power(self) -> tuple[float, float]:
+        """(torque [N·m], power [W]) on the driving wheel: the one the load gives, the other at the drive's speed."""
         torque, power = self.load.torque, self.load.power
-        if power is not None:
-            return float(power)
-        if torque is None:  # refused by Load(); the check narrows the type
+        if torque is not None:
+            return float(torque), float(F.power_from_torque(torque, self.speed))
+        if power is None:  # refused by Load(); the check narrows the type
             raise InputError("load: give exactly one of power and torque", field="load")
-        return float(F.power_from_torque(torque, self.speed))
+        return float(F.torque_from_power(power, self.speed)), float(power)
 
     def design_power(self) -> float:
         """Power times service factor [W]."""

@@ -15,7 +15,7 @@ from __future__ import annotations
 
 from typing import Any
 
-from ..limits import MAX_LINKS, MAX_TEETH
+from ..limits import MAX_LINKS, MAX_TEETH, MIN_TEETH
 from .model import GUIDE_KINDS, TENSIONER_KINDS, TENSIONER_PARTS, WHEEL_KINDS
 from .schema import REQUIRED, Input, InputTable, all_tables, register_table
 from .specs import RETURN_STRANDS
@@ -85,7 +85,7 @@ def _one_of(m: Any, a: str, b: str) -> None:
 register_table(InputTable("wheels", (
     Input("name", "text", default=REQUIRED, help="name of the wheel"),
     Input("kind", "choice", default=REQUIRED, choices=WHEEL_KINDS, help="what the wheel is"),
-    Input("teeth", "integer", minimum=3, maximum=MAX_TEETH, help="teeth (pockets of a pocket wheel)"),
+    Input("teeth", "integer", minimum=MIN_TEETH, maximum=MAX_TEETH, help="teeth (pockets of a pocket wheel)"),
     _q("diameter", "m", help="diameter of a wheel without teeth"),
     Input("position", "pair", unit="m", default=REQUIRED, help="centre (x, y)"),
     Input("driving", "flag", default=False, help="the driving wheel (exactly one)"),

@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
@@ -20,7 +20,7 @@ if TYPE_CHECKING:
     from ..life.wear import WearLife
     from ..selection import ChainRating
 
-__all__ = ["layout_plot", "wear_plot", "rating_plot"]
+__all__ = ["layout_plot", "wear_plot", "rating_plot", "rating_curves"]
 
 
 def layout_plot(result: DriveAnalysis | DriveLayout | Drive, *, ax: Axes | None = None,
@@ -209,6 +209,53 @@ def rating_plot(result: ChainRating | float, teeth: int | None = None, *, strand
     B (bath/disc), C (oil stream) are the chain-speed limits of
     :func:`~chaindrive.selection.lubrication_limits` converted to sprocket speed.
     """
+    c = rating_curves(result, teeth, strands=strands, plate_constant=plate_constant,
+                      roller_constant=roller_constant, speed_range=speed_range, operating=operating, name=name)
+    if ax is None:
+        fig, ax = subplots(figsize=(8, 5))
+    else:
+        fig = figure_of(ax)
+    ymax = c["ylim"][1]
+    for region, (a, b, fill, text) in c["bands"].items():
+        ax.axvspan(a, b, color=fill, zorder=0)
+        ax.text(np.sqrt(a * b), ymax / 1.15, f"{region}: {text}", ha="center", va="top", fontsize=7, color="0.35")
+    rpm = c["rpm"]
+    ax.loglog(rpm, c["h1"], ls="--", color="tab:blue", label="link-plate fatigue (Shigley eq. 17-32)")
+    ax.loglog(rpm, c["h2"], ls="--", color="tab:orange", label="roller–bushing impact (Shigley eq. 17-33)")
+    ax.loglog(rpm, c["rated"], color="k", lw=2, label="rated power")
+    if c["galling"] is not None:  # the galling speed may lie beyond the plotted range (small chains)
+        g_rpm, hg, top, bottom = c["galling"]
+        ax.loglog(g_rpm, hg, color="tab:red", lw=1.5, label="galling line (Shigley §17-5)")
+        ax.fill_between(g_rpm, bottom, top, facecolor="none", hatch="///",
+                        edgecolor="tab:red", lw=0, alpha=0.35, label="galling region (C')")
+    if c["operating"] is not None:
+        ax.loglog(*c["operating"], "o", color="tab:red", mec="k", ms=8, label="operating point", zorder=5)
+    ax.set_xlim(*c["xlim"])
+    ax.set_ylim(*c["ylim"])
+    ax.set_xlabel("small-sprocket speed [rpm]")
+    ax.set_ylabel("power, all strands [kW]")
+    ax.set_title(c["title"], fontsize=10)
+    ax.legend(fontsize=7, loc="lower left")
+    ax.grid(True, which="both", lw=0.3)
+    return fig
+
+
+def rating_curves(result: ChainRating | float, teeth: int | None = None, *, strands: int = 1,
+                  plate_constant: float = 0.004, roller_constant: float = 17.0,
+                  speed_range: tuple[float, float] | None = None, operating: tuple[float, float] | None = None,
+                  name: str = "") -> dict[str, Any]:
+    """The lines of :func:`rating_plot` as data (speeds [rpm], powers [kW]): ``rpm``, ``h1``
+    (link-plate), ``h2`` (roller-bushing), ``rated``, ``galling`` (speeds, galling power, top
+    and bottom of the galling region on its falling branch; None when outside the range),
+    ``bands`` (lubrication region: (from, to, colour, text)), ``operating`` (speed, power),
+    ``xlim``, ``ylim``, ``title``. Parameters as :func:`rating_plot`.
+
+    Examples
+    --------
+    >>> c = rating_curves(0.0254, 19)
+    >>> float(c["rpm"][0]), sorted(c["bands"])[0]
+    (10.0, 'A')
+    """
     import warnings
 
     from .. import selection as S
@@ -235,10 +282,6 @@ def rating_plot(result: ChainRating | float, teeth: int | None = None, *, strand
         pitch = float(result)
         if teeth is None:
             raise TypeError("rating_plot needs teeth when given a pitch")
-    if ax is None:
-        fig, ax = subplots(figsize=(8, 5))
-    else:
-        fig = figure_of(ax)
     k2 = S.multi_strand_factor(strands)
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", ValidityRangeWarning)
@@ -259,15 +302,11 @@ def rating_plot(result: ChainRating | float, teeth: int | None = None, *, strand
     to_rpm = 60.0 / (teeth * pitch)
     edges = [lo, float(va) * to_rpm, float(vb) * to_rpm, hi]
     colors = {"A": "#e8f5e9", "B": "#fff8e1", "C": "#fdecea"}
+    bands = {}
     for k, region in enumerate("ABC"):
         a, b = max(edges[k], lo), min(edges[k + 1], hi)
         if a < b:
-            ax.axvspan(a, b, color=colors[region], zorder=0)
-            ax.text(np.sqrt(a * b), ymax / 1.15, f"{region}: {S.LUBRICATION_REGIONS[region]}", ha="center",
-                    va="top", fontsize=7, color="0.35")
-    ax.loglog(rpm, h1, ls="--", color="tab:blue", label="link-plate fatigue (Shigley eq. 17-32)")
-    ax.loglog(rpm, h2, ls="--", color="tab:orange", label="roller–bushing impact (Shigley eq. 17-33)")
-    ax.loglog(rpm, rated, color="k", lw=2, label="rated power")
+            bands[region] = (a, b, colors[region], S.LUBRICATION_REGIONS[region])
     # the galling power rises with speed to a maximum, then falls to 0 at the zero-tension
     # galling speed; the rising branch lies at tensions of the order of the breaking force
     # and is not drawn
@@ -276,19 +315,10 @@ def rating_plot(result: ChainRating | float, teeth: int | None = None, *, strand
     top = np.full_like(rpm, ymax)
     bottom = np.where(ok, np.clip(hg, ymin, ymax), ymin)
     shown = falling & (bottom < top)
-    if np.any(shown):  # the galling speed may lie beyond the plotted range (small chains)
-        ax.loglog(rpm[ok], hg[ok], color="tab:red", lw=1.5, label="galling line (Shigley §17-5)")
-        ax.fill_between(rpm, bottom, top, where=shown, facecolor="none", hatch="///",
-                        edgecolor="tab:red", lw=0, alpha=0.35, label="galling region (C')")
-    if operating is not None:
-        ax.loglog(angular_velocity_to_rpm(operating[0]), operating[1] / 1e3, "o", color="tab:red", mec="k", ms=8,
-                  label="operating point", zorder=5)
-    ax.set_xlim(lo, hi)
-    ax.set_ylim(ymin, ymax)
-    ax.set_xlabel("small-sprocket speed [rpm]")
-    ax.set_ylabel("power, all strands [kW]")
-    ax.set_title(f"{method_label} rating {name} ({teeth} teeth, {strands} strand{'s' if strands > 1 else ''}); "
-                 "lubrication A/B/C by chain speed", fontsize=10)
-    ax.legend(fontsize=7, loc="lower left")
-    ax.grid(True, which="both", lw=0.3)
-    return fig
+    galling = (rpm[ok], hg[ok], top[ok], bottom[ok]) if np.any(shown) else None
+    point = None if operating is None else (angular_velocity_to_rpm(operating[0]), operating[1] / 1e3)
+    title = (f"{method_label} rating {name} ({teeth} teeth, {strands} strand{'s' if strands > 1 else ''}); "
+             "lubrication A/B/C by chain speed")
+    return {"rpm": rpm, "h1": h1, "h2": h2, "rated": rated, "galling": galling, "bands": bands, "operating": point,
+            "xlim": (lo, hi), "ylim": (ymin, ymax), "title": title}
+

@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
@@ -17,7 +17,7 @@ if TYPE_CHECKING:
     from ..geometry.sprocket import Sprocket
     from ..geometry.track_wheel import TrackDriveWheel
 
-__all__ = ["geometry_plot"]
+__all__ = ["geometry_plot", "circle_labels"]
 
 
 def _chain_overlay(ax, wheel, mm):
@@ -53,6 +53,27 @@ def _chain_overlay(ax, wheel, mm):
                                         boxstyle=f"round,pad={w_out / 2}", fill=False, ec="tab:purple", lw=0.8,
                                         transform=rot, zorder=5,
                                         label="vertical links (in plane)" if i == 0 else None))
+
+
+def circle_labels(wheel: Any, outline: Any) -> list[tuple[float, str]]:
+    """The radius [mm] and legend label of each circle of a wheel's outline (tip, root...):
+    a sprocket's drawn gap bottom beside its ISO 606 root diameter df = d − d1 when the two
+    differ."""
+    from ..geometry.outline import Outline
+
+    mm = 1e3
+    nominal_root = None
+    if not isinstance(wheel, Outline) and hasattr(wheel, "dimensions"):
+        nominal_root = getattr(wheel.dimensions(), "root_diameter", None)
+    out = []
+    for name, rad in outline.circles.items():
+        rr = float(rad) * mm
+        label = f"{name.lower()} circle Ø{2 * rr:.2f} mm"
+        if name == "ROOT" and nominal_root is not None and abs(2 * rr - nominal_root * mm) > 0.005:
+            label = (f"gap bottom of the drawn form Ø{2 * rr:.2f} mm "
+                     f"(ISO 606 root diameter df = {nominal_root * mm:.2f} mm)")
+        out.append((rr, label))
+    return out
 
 
 def geometry_plot(
@@ -114,15 +135,7 @@ def geometry_plot(
     r = outline.pitch_radius * mm
     ax.plot(r * np.cos(t), r * np.sin(t), "r-.", lw=0.8, label=f"pitch circle Ø{2 * r:.2f} mm", zorder=2)
     styles = ["--", ":", (0, (5, 1, 1, 1))]
-    nominal_root = None  # a sprocket's ISO 606 df = d − d1, against the drawn gap bottom d − 2 ri
-    if not isinstance(wheel, Outline) and hasattr(wheel, "dimensions"):
-        nominal_root = getattr(wheel.dimensions(), "root_diameter", None)
-    for i, (name, rad) in enumerate(outline.circles.items()):
-        rr = float(rad) * mm
-        label = f"{name.lower()} circle Ø{2 * rr:.2f} mm"
-        if name == "ROOT" and nominal_root is not None and abs(2 * rr - nominal_root * mm) > 0.005:
-            label = (f"gap bottom of the drawn form Ø{2 * rr:.2f} mm "
-                     f"(ISO 606 root diameter df = {nominal_root * mm:.2f} mm)")
+    for i, (rr, label) in enumerate(circle_labels(wheel, outline)):
         ax.plot(rr * np.cos(t), rr * np.sin(t), color="grey", ls=styles[i % 3], lw=0.7, label=label, zorder=2)
     c = np.asarray(outline.centres) * mm
     ax.plot(c[:, 0], c[:, 1], "g+", ms=8, label="seat / pin / pocket centres", zorder=4)

@@ -194,6 +194,9 @@ class RunningTensionCalibration:
         How the constants were obtained (the sweep, the fit, its accuracy).
     calibration_worst, calibration_rms, holdout_worst : float
         Relative errors of the model against the simulated peaks [1].
+    crossval_worst, crossval_rms : float
+        Out-of-fold relative errors of a four-fold cross-validation over the whole sweep
+        (each fold predicted by the constants fitted on the other three) [1].
     """
     coefficient: float
     impact_exponent: float
@@ -204,6 +207,8 @@ class RunningTensionCalibration:
     calibration_worst: float
     calibration_rms: float
     holdout_worst: float
+    crossval_worst: float
+    crossval_rms: float
 
 
 @cache
@@ -220,7 +225,8 @@ def calibration() -> RunningTensionCalibration:
         teeth_exponent=float(raw["teeth_exponent"]), reference_teeth=float(raw["reference_teeth"]),
         ranges={k: (float(v[0]), float(v[1])) for k, v in raw["ranges"].items()},
         provenance=str(raw["provenance"]), calibration_worst=float(raw["calibration_worst"]),
-        calibration_rms=float(raw["calibration_rms"]), holdout_worst=float(raw["holdout_worst"]))
+        calibration_rms=float(raw["calibration_rms"]), holdout_worst=float(raw["holdout_worst"]),
+        crossval_worst=float(raw["crossval_worst"]), crossval_rms=float(raw["crossval_rms"]))
 
 
 def running_peak_tension(tight_tension: ArrayLike, angular_velocity: ArrayLike, pitch: ArrayLike,

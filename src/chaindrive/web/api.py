@@ -11,6 +11,7 @@ from typing import Any
 from fastapi import APIRouter, Form, Query
 
 from .._results import jsonable
+from ..limits import MAX_SPEED, MAX_TEETH, MIN_TEETH
 from .expert import MAX_POINTS
 from .fields import FieldSpec, parse_field
 
@@ -33,7 +34,7 @@ def kinematics_json(chain: str, teeth: int, speed: str, entry: str, guide_end: s
     from ..kinematics import chain_entry
 
     c = get(chain)
-    omega = parse_field("speed", speed, FieldSpec("rad/s", 0.0, 1000.0, example="5 rad/s"))
+    omega = parse_field("speed", speed, FieldSpec("rad/s", 0.0, MAX_SPEED, example="5 rad/s"))
     l_end = parse_field("guide_end", guide_end, FieldSpec("m", 0.0, 10.0, example="256 mm")) if guide_end else None
     res = chain_entry(c.pitch, teeth, omega, bar_diameter=c.bar_diameter, entry=entry,
                       guide_end_distance=l_end, model=model, points=points)
@@ -54,7 +55,7 @@ def router(ctx: Any) -> APIRouter:
     @r.get("/api/kinematics")
     async def api_kinematics(
         chain: str = Query(..., max_length=40, description="catalogue name"),
-        teeth: int = Query(..., ge=3, le=150, description="teeth / pockets"),
+        teeth: int = Query(..., ge=MIN_TEETH, le=MAX_TEETH, description=f"teeth / pockets, {MIN_TEETH}...{MAX_TEETH}"),
         speed: str = Query(..., max_length=64, description="wheel speed with its unit, e.g. '5 rad/s'"),
         entry: str = Query("free", max_length=20, description="free | chordal | tangential"),
         guide_end: str | None = Query(None, max_length=64, description="guide end distance with unit"),

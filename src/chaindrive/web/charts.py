@@ -11,8 +11,10 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
+from ..display import DISPLAY, kn_per_m
 from ..errors import ChainDriveError
 from ..units import angular_velocity_to_rpm, rpm_to_angular_velocity
+from .display import IMPERIAL
 
 if TYPE_CHECKING:
     from ..analysis.vibration import _Excitation
@@ -29,7 +31,7 @@ _LAYOUT = {"margin": {"l": 60, "r": 20, "t": 40, "b": 60}, "height": 400,
 
 
 def _power_unit(units: str) -> tuple[str, float]:
-    return ("hp", 1 / 745.69987158227022) if units == "imperial" else ("kW", 1e-3)
+    return IMPERIAL["W"] if units == "imperial" else DISPLAY["W"]
 
 
 def rating_chart(design: Design, *, units: str = "metric") -> dict[str, Any]:
@@ -187,14 +189,14 @@ def resonance_map_chart(drive: Drive, *, points: int = 31) -> dict[str, Any] | N
     z = np.clip(np.asarray(res.min_margin, dtype=float), -1.0, 1.0)
     z = np.where(np.isfinite(z), z, -1.0)
     return {"data": [
-        {"type": "heatmap", "x": (stiff / 1e3).tolist(), "y": masses.tolist(), "z": z.tolist(),
+        {"type": "heatmap", "x": kn_per_m(stiff).tolist(), "y": masses.tolist(), "z": z.tolist(),
          "zmin": -0.5, "zmax": 0.5, "colorscale": [[0, "#e74c3c"], [0.5, "#fdfefe"], [1, "#27ae60"]],
          "colorbar": {"title": {"text": "margin"}},
          "hovertemplate": "C = %{x:.4g} kN/m<br>m = %{y:.4g} kg<br>margin %{z:.3f}<extra></extra>"},
-        {"type": "contour", "x": (stiff / 1e3).tolist(), "y": masses.tolist(), "z": z.tolist(),
+        {"type": "contour", "x": kn_per_m(stiff).tolist(), "y": masses.tolist(), "z": z.tolist(),
          "contours": {"start": 0, "end": 0, "size": 1, "coloring": "lines"}, "showscale": False,
          "line": {"width": 2, "color": "#1e8449"}, "hoverinfo": "skip", "name": "margin = 0"},
-        {"type": "scatter", "mode": "markers", "x": [c0 / 1e3], "y": [m0], "name": "design",
+        {"type": "scatter", "mode": "markers", "x": [kn_per_m(c0)], "y": [m0], "name": "design",
          "marker": {"size": 14, "symbol": "circle-open", "color": "#111", "line": {"width": 3}},
          "hovertemplate": "design<br>C = %{x:.4g} kN/m<br>m = %{y:.4g} kg<extra></extra>"}],
         "layout": {**_LAYOUT, "title": {"text": "Resonance-free tensioners (green: margin >= 0 over ±10 % speed)",

@@ -1,8 +1,13 @@
-"""The guided design of the studio page: form state -> duty -> chain -> layout -> Drive.
+"""The guided design of the studio page: form state -> design request -> chain -> layout -> Drive.
 
-The form state is a flat dict of strings (exactly what the page's URL carries). It is
-turned into a project file (TOML, the same format as ``chaindrive new``) and parsed with
-:func:`chaindrive.drive.project.parse_project`, so the studio, the command line and the
+The form state is a flat dict of strings (exactly what the page's URL carries). Its duty
+fields are parsed into SI units and mapped to a :class:`chaindrive.design.DesignRequest`
+(:data:`REQUEST_FIELDS`); the design layer answers it (:func:`chaindrive.design.design_drive`:
+service factor, design power, teeth, rating, layout), the page designs nothing itself. A
+request's :class:`~chaindrive.errors.InputError` is shown at the form field its ``field``
+names. Every bound of a field comes from :mod:`chaindrive.limits` or the project schema's
+declaration (:mod:`chaindrive.drive.tables`). The drive is built in code from the project
+mapping, the same one ``chaindrive new`` writes, so the studio, the command line and the
 downloads describe one and the same drive. Errors are :class:`~chaindrive.web.fields.FieldError`
 naming the form field.
 """
@@ -17,16 +22,20 @@ from functools import lru_cache
 from typing import Any
 
 from ..analysis.loads import REQUIRED_STATIC_SAFETY, required_static_safety
-from ..design.duty import service_factor_table
+from ..design import service_factor_table
+from ..design.duty import check_duty_value, design_power, duty_class, service_factor_of
 from ..design.link import link_candidates
-from ..design.policy import BASE_TEETH
+from ..design.policy import BASE_TEETH, default_centre_distance, driven_teeth
+from ..design.request import DesignRequest
+from ..display import kn_per_m, kw, mm
 from ..errors import ChainDriveError, InputError, ValidityRangeWarning
+from ..limits import DUTY_RANGES, MAX_TEETH, MIN_TEETH
 from ..units import angular_velocity_to_rpm
 from .fields import FieldError, FieldSpec, input_field, parse_field, parse_integer
 from .wheels import EXTRA_CHOICES, EXTRA_DEFAULTS, add_extra_wheels, extra_wheels
 
-__all__ = ["DEFAULTS", "FIELDS", "Design", "service_factor_table", "normalise_state",
-           "design_from_state", "state_from_project", "MINING_EXAMPLE", "ROLLER_EXAMPLE"]
+__all__ = ["DEFAULTS", "FIELDS", "REQUEST_FIELDS", "Design", "service_factor_table", "normalise_state",
+           "design_request", "design_from_state", "state_from_project", "MINING_EXAMPLE", "ROLLER_EXAMPLE"]
 
 
 #: Every field of the studio form, its default text (roller-chain example).
@@ -93,16 +102,24 @@ CHOICES: dict[str, tuple[str, ...]] = {
     **EXTRA_CHOICES,
 }
 
-#: Ranges of the numeric fields (SI unit, minimum, maximum, example); a field that is a
-#: project-file input takes its unit and lower bound from the input's declaration.
+def _duty_field(name: str, example: str, unit: str | None = None) -> FieldSpec:
+    """A duty field: its range from :data:`chaindrive.limits.DUTY_RANGES` (``unit``: the form's unit
+    when it differs, e.g. hours as a bare number)."""
+    low, high, si = DUTY_RANGES[name]
+    return FieldSpec(si if unit is None else unit, low, high, example=example)
+
+
+#: Ranges of the numeric fields (SI unit, minimum, maximum, example): a duty field's from
+#: :data:`chaindrive.limits.DUTY_RANGES`; a project-file input's unit and lower bound from
+#: the input's declaration.
 FIELDS: dict[str, FieldSpec] = {
-    "power": input_field("load.power", maximum=5e6, example="7.5 kW"),
-    "speed": input_field("drive.speed", maximum=1000.0, example="1450 rpm"),
-    "ratio": FieldSpec("", 0.0, 20.0, example="3"),
-    "driven_speed": FieldSpec("rad/s", 0.0, 1000.0, example="480 rpm"),
-    "service_factor": input_field("load.service_factor", maximum=5.0, example="1.3"),
-    "hours_per_day": FieldSpec("", 0.0, 24.0, example="8"),
-    "centre_distance": FieldSpec("m", 0.0, 50.0, example="500 mm"),
+    "power": input_field("load.power", maximum=DUTY_RANGES["power"][1], example="7.5 kW"),
+    "speed": input_field("drive.speed", maximum=DUTY_RANGES["speed"][1], example="1450 rpm"),
+    "ratio": _duty_field("ratio", "3"),
+    "driven_speed": _duty_field("driven_speed", "480 rpm"),
+    "service_factor": input_field("load.service_factor", maximum=DUTY_RANGES["service_factor"][1], example="1.3"),
+    "hours_per_day": _duty_field("hours_per_day", "8", unit=""),
+    "centre_distance": _duty_field("centre_distance", "500 mm"),
     "idler_position": FieldSpec("", 0.05, 0.95, open_minimum=False, example="0.3"),
     "idler_offset": FieldSpec("m", 0.0, 10.0, open_minimum=False, example="60 mm"),
     "tensioner_mass": input_field("tensioner.mass", maximum=1e5, example="2 kg"),
@@ -118,11 +135,18 @@ FIELDS: dict[str, FieldSpec] = {
     "tensioner_spring_angle": input_field("tensioner.spring_angle", maximum=1.5, example="10 deg"),
     "guide_end": input_field("guides.end_distance", maximum=10.0, example="100 mm"),
     "skew": input_field("contact.skew", maximum=0.2, example="50 arcmin"),
-    "required_static_safety": input_field("drive.required_static_safety", minimum=1.0, maximum=50.0, example="7"),
+    "required_static_safety": input_field("drive.required_static_safety", minimum=1.0,
+                                          maximum=DUTY_RANGES["required_static_safety"][1], example="7"),
     "wear_coefficient": input_field("drive.wear_coefficient", maximum=1e-10, example="2e-16 m**2/N"),
 }
 
-TEETH_RANGE = (6, 150)
+#: Teeth of a wheel: the project schema's declaration (wheels.teeth, :mod:`chaindrive.limits`).
+TEETH_RANGE = (MIN_TEETH, MAX_TEETH)
+
+#: Form field -> field of the :class:`~chaindrive.design.DesignRequest` (the same name when not listed).
+REQUEST_FIELDS = {"driven": "driven_machine"}
+#: Field of a request's :class:`~chaindrive.errors.InputError` -> the form field that shows it.
+FORM_FIELDS = {v: k for k, v in REQUEST_FIELDS.items()}
 
 
 def normalise_state(params: dict[str, Any]) -> dict[str, str]:
@@ -191,73 +215,126 @@ def _number(state: dict[str, str], name: str, errors: dict[str, str]) -> float |
 
 def load_character_of(state: dict[str, str]) -> str:
     """The load character of the form: the one chosen, or the driven machine's (the name
-    ``load_character`` of :class:`chaindrive.design.Duty` and ``select --load-character``)."""
-    if state.get("load_character"):
-        return state["load_character"]
-    return str(service_factor_table()["driven_machines"][state["driven"]][1])
+    ``load_character`` of :class:`chaindrive.design.Duty` and ``select --load-character``;
+    :func:`chaindrive.design.duty.duty_class`)."""
+    return str(duty_class(state["driven"], state.get("load_character") or None))
 
 
-def _duty(state: dict[str, str], errors: dict[str, str]) -> tuple:
-    power = _number(state, "power", errors)
-    speed = _number(state, "speed", errors)
-    ratio = None
+def _put(errors: dict[str, str], exc: ChainDriveError) -> None:
+    """A design-layer error at the form field its ``field`` names (:data:`FORM_FIELDS`)."""
+    name = exc.field or "chain"
+    name = FORM_FIELDS.get(name, name)
+    errors[name] = str(exc).removeprefix(f"{name}: ")
+
+
+def _duty(state: dict[str, str], errors: dict[str, str]) -> dict[str, Any]:
+    """The duty fields of the form in SI units, named as the :class:`~chaindrive.design.DesignRequest`'s
+    (``None``: a field error, in ``errors``), with the ``ratio`` of the drive and the service factor
+    (:func:`chaindrive.design.duty.service_factor_of`)."""
+    values: dict[str, Any] = {"power": _number(state, "power", errors), "speed": _number(state, "speed", errors)}
     if state["driven_speed"].strip():
-        driven = _number(state, "driven_speed", errors)
-        if driven is not None and speed is not None:
-            ratio = speed / driven
-            if not 0.05 <= ratio <= 20:
-                errors["driven_speed"] = f"gives a ratio {ratio:.3g} outside 0.05 <= ratio <= 20"
+        values["driven_speed"] = driven = _number(state, "driven_speed", errors)
+        ratio = None
+        if driven is not None and values["speed"] is not None:
+            ratio = values["speed"] / driven
+            try:
+                check_duty_value("ratio", ratio)
+            except InputError as exc:
+                errors["driven_speed"] = f"gives a ratio n_driving / n_driven outside its range: {exc}"
                 ratio = None
     else:
-        ratio = _number(state, "ratio", errors)
-    table = service_factor_table()
-    character = load_character_of(state)
-    if state["service_factor"].strip():
-        ks = _number(state, "service_factor", errors)
-        source = "given"
-    else:
-        ks = table["factors"][character][state["driver"]]
-        source = table["source"]
-    hours = _number(state, "hours_per_day", errors)
-    return power, speed, ratio, ks, source, character, hours
+        values["ratio"] = ratio = _number(state, "ratio", errors)
+    values.update(driver=state["driver"], driven_machine=state["driven"],
+                  load_character=state["load_character"] or None,
+                  service_factor=_number(state, "service_factor", errors) if state["service_factor"].strip() else None,
+                  hours_per_day=_number(state, "hours_per_day", errors))
+    factor = None
+    if "service_factor" not in errors:
+        try:
+            factor = service_factor_of(state["driver"], driven_machine=state["driven"],
+                                       load_character=values["load_character"], given=values["service_factor"])
+        except InputError as exc:
+            _put(errors, exc)
+    return {"values": values, "ratio": ratio, "factor": factor}
 
 
 def _teeth(state: dict[str, str], errors: dict[str, str], ratio: float | None,
            kind: str) -> tuple[int | None, int | None]:
-    lo = 3 if kind == "link" else TEETH_RANGE[0]
+    lo, hi = TEETH_RANGE
     z1 = z2 = None
     if kind == "roller" and not state["teeth_driving"].strip():
         return None, None  # the tooth-count policy of the design procedure decides
     try:
-        z1 = parse_integer("teeth_driving", state["teeth_driving"], lo, TEETH_RANGE[1])
+        z1 = parse_integer("teeth_driving", state["teeth_driving"], lo, hi)
     except FieldError as exc:
         errors[exc.field] = exc.message
     if state["teeth_driven"].strip():
         try:
-            z2 = parse_integer("teeth_driven", state["teeth_driven"], lo, TEETH_RANGE[1])
+            z2 = parse_integer("teeth_driven", state["teeth_driven"], lo, hi)
         except FieldError as exc:
             errors[exc.field] = exc.message
     elif z1 is not None and ratio is not None:
-        z2 = int(round(z1 * ratio))
-        if not lo <= z2 <= TEETH_RANGE[1]:
-            errors["teeth_driven"] = (f"ratio x teeth_driving gives {z2} teeth, outside "
-                                      f"{lo} <= teeth_driven <= {TEETH_RANGE[1]}")
-            z2 = None
+        z2 = _driven_teeth(z1, ratio, errors)
     return z1, z2
 
 
-@lru_cache(maxsize=128)
-def _roller_design(power: float, speed: float, ratio: float, service_factor: float | None, driver: str,
-                   driven: str, hours: float, centre: float | None, teeth: int | None,
-                   load_character: str | None = None) -> Any:
-    """The design procedure's answer for the form's duty (cached by the duty)."""
-    from ..design import Duty, design_drive
+def _driven_teeth(z1: int, ratio: float, errors: dict[str, str]) -> int | None:
+    """The driven wheel's teeth of the design policy (:func:`chaindrive.design.policy.driven_teeth`),
+    refused outside the schema's range."""
+    z2 = driven_teeth(z1, ratio)
+    if not TEETH_RANGE[0] <= z2 <= TEETH_RANGE[1]:
+        errors["teeth_driven"] = (f"ratio x teeth_driving gives {z2} teeth, outside "
+                                  f"{TEETH_RANGE[0]} <= teeth_driven <= {TEETH_RANGE[1]}")
+        return None
+    return z2
 
-    duty = Duty(power, speed, ratio=ratio, driver=driver, driven_machine=driven, service_factor=service_factor,
-                hours_per_day=hours, centre_distance=centre, load_character=load_character)
+
+#: Candidates the studio lists.
+STUDIO_CANDIDATES = 8
+
+
+def design_request(state: dict[str, str]) -> tuple[DesignRequest | None, dict[str, str]]:
+    """The :class:`~chaindrive.design.DesignRequest` of a (normalised) roller form state and the field
+    errors ``{form field: message}`` (a request's :class:`~chaindrive.errors.InputError` at the field
+    its ``field`` names). The page asks the design layer exactly this.
+
+    Examples
+    --------
+    >>> r, errors = design_request(normalise_state({"power": "11 kW", "driven": "varying_conveyor"}))
+    >>> errors, r.duty.power, r.duty.character, r.limit
+    ({}, 11000.0, 'moderate', 8)
+    >>> design_request(normalise_state({"hours_per_day": "30"}))[1]
+    {'hours_per_day': '30 is outside the valid range 0 < hours_per_day <= 24'}
+    """
+    errors: dict[str, str] = {}
+    duty = _duty(state, errors)
+    z1, _ = _teeth(state, errors, duty["ratio"], "roller")
+    centre = _number(state, "centre_distance", errors) if state["centre_distance"].strip() else None
+    required = (_number(state, "required_static_safety", errors) if state["required_static_safety"].strip()
+                else None)
+    if errors:
+        return None, errors
+    try:
+        return _request(tuple(duty["values"].items()), z1, centre, required), errors
+    except InputError as exc:
+        _put(errors, exc)
+        return None, errors
+
+
+@lru_cache(maxsize=256)
+def _request(values: tuple, teeth: int | None, centre: float | None, required: float | None) -> DesignRequest:
+    return DesignRequest.of(**dict(values), teeth_driving=teeth, centre_distance=centre,
+                            required_static_safety=required, limit=STUDIO_CANDIDATES)
+
+
+@lru_cache(maxsize=128)
+def _roller_design(request: DesignRequest) -> Any:
+    """The design layer's answer for the form's request (cached by the request)."""
+    from ..design import design_drive
+
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", ValidityRangeWarning)
-        return design_drive(duty, teeth_driving=teeth, limit=8)
+        return design_drive(request)
 
 
 def _candidate_rows(result: Any) -> list[dict]:
@@ -312,7 +389,7 @@ def _project_data(d: Design, state: dict[str, str], positions: list, idler: tupl
     if idler is not None:
         wheels.append(("tensioner", "idler", idler[0], idler[1], False))
     wheels.append((names[1], kind_wheel, teeth[1], positions[1], False))
-    data["wheels"] = [{"name": name, "kind": kind, "teeth": int(z), "position": [f"{x * 1e3:.4f} mm", f"{y * 1e3:.4f} mm"],
+    data["wheels"] = [{"name": name, "kind": kind, "teeth": int(z), "position": [f"{mm(x):.4f} mm", f"{mm(y):.4f} mm"],
                        **({"driving": True} if driving else {})} for name, kind, z, (x, y), driving in wheels]
     if idler is not None:
         mechanism = state["tensioner_mechanism"]
@@ -388,7 +465,9 @@ def design_from_state(state: dict[str, str]) -> tuple[Design | None, dict[str, s
 
     errors: dict[str, str] = {}
     kind = state["kind"]
-    power, speed, ratio, ks, ks_source, character, hours = _duty(state, errors)
+    duty = _duty(state, errors)
+    values, ratio, factor = duty["values"], duty["ratio"], duty["factor"]
+    power, speed, hours = values["power"], values["speed"], values["hours_per_day"]
     z1, z2 = _teeth(state, errors, ratio, kind)
     required = None
     if state["required_static_safety"].strip():
@@ -397,7 +476,7 @@ def design_from_state(state: dict[str, str]) -> tuple[Design | None, dict[str, s
     # of each chain (ISO 10823: 30-50), as `select` and the API
     default_centre = kind == "roller" and not state["centre_distance"].strip()
     centre = None if default_centre else _number(state, "centre_distance", errors)
-    if (power is None or speed is None or ratio is None or ks is None or hours is None
+    if (power is None or speed is None or ratio is None or factor is None or hours is None
             or (centre is None and not default_centre)
             or (kind == "link" and (z1 is None or z2 is None)) or errors):
         return None, errors
@@ -408,23 +487,26 @@ def design_from_state(state: dict[str, str]) -> tuple[Design | None, dict[str, s
             if ratio < 1:
                 note = "the design procedure covers speed-reducing drives (ratio >= 1): give a chain"
             else:
-                given_ks = ks if state["service_factor"].strip() else None
-                result = _roller_design(power, speed, ratio, given_ks, state["driver"], state["driven"], hours,
-                                        centre, z1, state["load_character"] or None)
+                try:  # the form's duty and constraints as the design layer's request
+                    request = _request(tuple(values.items()), z1, centre, required)
+                except InputError as exc:
+                    _put(errors, exc)
+                    return None, errors
+                result = _roller_design(request)
                 candidates = _candidate_rows(result)
                 note = " ".join(f"Near miss: {' / '.join(m.names)} on {m.driving_teeth} teeth carries "
                                 f"{m.rating_ratio:.1%} of the design power; remedy: {m.remedy}."
                                 for m in result.near_misses)
         else:
             assert z1 is not None
-            candidates = link_candidates(power, speed, ks, z1, required)
+            candidates = link_candidates(power, speed, factor.value, z1, required)
     except ChainDriveError as exc:
         note = str(exc)
     chain_name = state["chain"].strip()
     if not chain_name:
         if not candidates:
             if "too large for the centre distance" in note and centre is not None:
-                errors["centre_distance"] = f"{centre * 1e3:.1f} mm is too short: {note}"
+                errors["centre_distance"] = f"{mm(centre):.1f} mm is too short: {note}"
             else:
                 errors["chain"] = note or "no catalogue chain carries this duty; give a chain name"
             return None, errors
@@ -433,10 +515,9 @@ def design_from_state(state: dict[str, str]) -> tuple[Design | None, dict[str, s
     if z1 is None:
         z1 = chosen["teeth_driving"] if chosen is not None else BASE_TEETH
     if z2 is None:
-        z2 = chosen["teeth_driven"] if chosen is not None and chosen["teeth_driving"] == z1 else int(round(z1 * ratio))
-        if not TEETH_RANGE[0] <= z2 <= TEETH_RANGE[1]:
-            errors["teeth_driven"] = (f"ratio x teeth_driving gives {z2} teeth, outside "
-                                      f"{TEETH_RANGE[0]} <= teeth_driven <= {TEETH_RANGE[1]}")
+        z2 = (chosen["teeth_driven"] if chosen is not None and chosen["teeth_driving"] == z1
+              else _driven_teeth(z1, ratio, errors))
+        if z2 is None:
             return None, errors
     try:
         chain = get(chain_name)
@@ -444,9 +525,7 @@ def design_from_state(state: dict[str, str]) -> tuple[Design | None, dict[str, s
         errors["chain"] = str(exc)
         return None, errors
     if centre is None:   # blank (roller): the procedure's centre distance for its chain, else 40 pitches
-        from ..design.procedure import DEFAULT_CENTRE_PITCHES
-
-        centre = chosen["centre_distance"] if chosen is not None else DEFAULT_CENTRE_PITCHES * chain.pitch
+        centre = chosen["centre_distance"] if chosen is not None else default_centre_distance(chain.pitch)
     if kind == "link" and not chain.is_link_chain:
         errors["chain"] = f"{chain.name} is a roller chain; the link-chain design needs a DIN 22252 chain"
         return None, errors
@@ -464,7 +543,7 @@ def design_from_state(state: dict[str, str]) -> tuple[Design | None, dict[str, s
         for name in (*reduced, "tensioner_force"):
             _number(state, name, errors)
         try:
-            zi = parse_integer("idler_teeth", state["idler_teeth"], 3 if kind == "link" else 6, TEETH_RANGE[1])
+            zi = parse_integer("idler_teeth", state["idler_teeth"], *TEETH_RANGE)
         except FieldError as exc:
             errors[exc.field] = exc.message
             zi = None
@@ -477,9 +556,9 @@ def design_from_state(state: dict[str, str]) -> tuple[Design | None, dict[str, s
     extras = extra_wheels(state, errors, kind)
     if errors or centre is None:
         return None, errors
-    d = Design(state=state, power=power, speed=speed, ratio=ratio, service_factor=ks,
-               service_factor_source=ks_source, load_character=character,
-               design_power=power * ks, hours_per_day=hours, teeth_driving=z1, teeth_driven=z2,
+    d = Design(state=state, power=power, speed=speed, ratio=ratio, service_factor=factor.value,
+               service_factor_source=factor.source, load_character=load_character_of(state),
+               design_power=design_power(power, factor), hours_per_day=hours, teeth_driving=z1, teeth_driven=z2,
                chain=chain, candidates=candidates, candidate_note=note, centre_distance=centre)
     from ..drive.project import project_from_mapping
     from ..drive.writer import mapping_text
@@ -488,8 +567,8 @@ def design_from_state(state: dict[str, str]) -> tuple[Design | None, dict[str, s
     r1 = _pitch_radius(chain, z1)
     r2 = _pitch_radius(chain, z2)
     if centre <= r1 + r2 + chain.pitch:
-        errors["centre_distance"] = (f"{centre * 1e3:.1f} mm is too short: the wheels need more than "
-                                     f"{(r1 + r2 + chain.pitch) * 1e3:.1f} mm (pitch radii plus a pitch)")
+        errors["centre_distance"] = (f"{mm(centre):.1f} mm is too short: the wheels need more than "
+                                     f"{mm(r1 + r2 + chain.pitch):.1f} mm (pitch radii plus a pitch)")
         return None, errors
     if tensioner and zi is not None and pos is not None and off is not None:  # field errors returned above
         idler = (zi, (pos * centre, -(min(r1, r2) + off)))
@@ -615,7 +694,7 @@ def state_from_project(text: str, filename: str = "project.toml") -> dict[str, s
         "chain": drive.chain.name,
         "teeth_driving": str(drv.teeth),
         "teeth_driven": str(other.teeth),
-        "centre_distance": f"{centre * 1e3:.6g} mm",
+        "centre_distance": f"{mm(centre):.6g} mm",
         "service_factor": f"{load.service_factor:g}",
         "required_static_safety": "" if drive.required_static_safety is None else f"{drive.required_static_safety:g}",
         "wear_coefficient": "" if drive.wear_coefficient is None else f"{drive.wear_coefficient:g} m**2/N",
@@ -623,9 +702,9 @@ def state_from_project(text: str, filename: str = "project.toml") -> dict[str, s
         "conveyor": conveyor_state(drive.conveyor),
     })
     if load.power is not None:
-        state["power"] = f"{load.power / 1e3:.6g} kW"
+        state["power"] = f"{kw(load.power):.6g} kW"
     else:
-        state["power"] = f"{drive.power() / 1e3:.6g} kW"
+        state["power"] = f"{kw(drive.power()):.6g} kW"
     if idlers and drive.tensioner is not None:
         w = idlers[0]
         t = drive.tensioner
@@ -637,8 +716,8 @@ def state_from_project(text: str, filename: str = "project.toml") -> dict[str, s
         state.update({
             "tensioner": "on", "idler_teeth": str(w.teeth or 17),
             "idler_position": f"{min(max(along, 0.05), 0.95):.4g}",
-            "idler_offset": f"{max(across - r_small, 0.0) * 1e3:.6g} mm",
-            "tensioner_mass": f"{t.mass:g} kg", "tensioner_stiffness": f"{t.stiffness / 1e3:g} kN/m",
+            "idler_offset": f"{mm(max(across - r_small, 0.0)):.6g} mm",
+            "tensioner_mass": f"{t.mass:g} kg", "tensioner_stiffness": f"{kn_per_m(t.stiffness):g} kN/m",
             "tensioner_force": f"{(t.force or 0.0):g} N",
         })
         if t.mechanism in _TENSIONER_PARTS:
@@ -653,7 +732,7 @@ def state_from_project(text: str, filename: str = "project.toml") -> dict[str, s
     if drive.guides:
         g = drive.guides[0]
         if g.kind in ("tangential", "chordal"):
-            state.update({"guide": g.kind, "guide_end": f"{g.end_distance * 1e3:.6g} mm"})
+            state.update({"guide": g.kind, "guide_end": f"{mm(g.end_distance):.6g} mm"})
     skew, height, base = (_get(drive.contact, k) for k in ("skew", "skew_height_difference", "skew_base"))
     if skew is not None:
         state["skew"] = f"{math.degrees(skew) * 60:.6g} arcmin"

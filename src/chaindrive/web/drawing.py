@@ -10,6 +10,8 @@ import math
 from typing import TYPE_CHECKING, Any
 from xml.sax.saxutils import escape
 
+from ..display import kn_per_m, mm
+
 if TYPE_CHECKING:
     from ..drive.model import Drive
 
@@ -25,7 +27,7 @@ def _f(x: float) -> str:
 def _length_text(metres: float, units: str) -> str:
     if units == "imperial":
         return f"{metres / 0.0254:.2f} in"
-    return f"{metres * 1e3:.1f} mm"
+    return f"{mm(metres):.1f} mm"
 
 
 def drive_svg(layout: dict[str, Any], drive: Drive, *, units: str = "metric", width: int = 760) -> str:
@@ -62,11 +64,11 @@ def drive_svg(layout: dict[str, Any], drive: Drive, *, units: str = "metric", wi
     y0, y1 = min(ys) - rmax, max(ys) + rmax
     span = max(x1 - x0, y1 - y0)
     pad = 0.12 * span + 0.02
-    scale = span * 1e3
+    scale = mm(span)
     stroke = max(scale / 400, 0.3)
     font = max(scale / 42, 2.0)
-    x0, x1, y0, y1 = (v * 1e3 for v in (x0 - pad, x1 + pad, y0 - pad, y1 + 0.6 * pad))
-    y1 = max(y1, max(w["centre"][1] + w["radius"] for w in wheels) * 1e3 + 4.5 * font)
+    x0, x1, y0, y1 = (mm(v) for v in (x0 - pad, x1 + pad, y0 - pad, y1 + 0.6 * pad))
+    y1 = max(y1, mm(max(w["centre"][1] + w["radius"] for w in wheels)) + 4.5 * font)
     w_mm, h_mm = x1 - x0, y1 - y0
     height = int(width * h_mm / w_mm)
     out = [f'<svg xmlns="http://www.w3.org/2000/svg" viewBox="{_f(x0)} {_f(-y1)} {_f(w_mm)} {_f(h_mm)}" '
@@ -75,8 +77,8 @@ def drive_svg(layout: dict[str, Any], drive: Drive, *, units: str = "metric", wi
            f'<rect x="{_f(x0)}" y="{_f(-y1)}" width="{_f(w_mm)}" height="{_f(h_mm)}" fill="#fbfcfe"/>']
     # wheels
     for w in wheels:
-        cx, cy = w["centre"][0] * 1e3, -w["centre"][1] * 1e3
-        r = w["radius"] * 1e3
+        cx, cy = mm(w["centre"][0]), -mm(w["centre"][1])
+        r = mm(w["radius"])
         idler = w["kind"] == "idler"
         fill = "#e8ecf2" if not idler else "#f4efe4"
         edge = "#34495e" if not idler else "#9a7d46"
@@ -105,21 +107,21 @@ def drive_svg(layout: dict[str, Any], drive: Drive, *, units: str = "metric", wi
     for i, w in enumerate(wheels):
         start = spans[(i - 1) % n]["end"]
         end = spans[i]["start"]
-        r = w["radius"] * 1e3
+        r = mm(w["radius"])
         large = 1 if w["wrap"] > math.pi else 0
         sweep = 0 if w["side"] > 0 else 1  # y flipped: counter-clockwise is SVG sweep 0
-        out.append(f'<path d="M{_f(start[0] * 1e3)} {_f(-start[1] * 1e3)} A{_f(r)} {_f(r)} 0 {large} {sweep} '
-                   f'{_f(end[0] * 1e3)} {_f(-end[1] * 1e3)}" fill="none" stroke="#555" '
+        out.append(f'<path d="M{_f(mm(start[0]))} {_f(-mm(start[1]))} A{_f(r)} {_f(r)} 0 {large} {sweep} '
+                   f'{_f(mm(end[0]))} {_f(-mm(end[1]))}" fill="none" stroke="#555" '
                    f'stroke-width="{_f(stroke * 2.2)}"/>')
     # spans
     for s in spans:
         colour = _COLOURS.get(s["role"], "#555")
-        out.append(f'<line class="span {escape(s["role"])}" x1="{_f(s["start"][0] * 1e3)}" y1="{_f(-s["start"][1] * 1e3)}" '
-                   f'x2="{_f(s["end"][0] * 1e3)}" y2="{_f(-s["end"][1] * 1e3)}" stroke="{colour}" '
+        out.append(f'<line class="span {escape(s["role"])}" x1="{_f(mm(s["start"][0]))}" y1="{_f(-mm(s["start"][1]))}" '
+                   f'x2="{_f(mm(s["end"][0]))}" y2="{_f(-mm(s["end"][1]))}" stroke="{colour}" '
                    f'stroke-width="{_f(stroke * 2.6)}"/>')
         if s["role"]:
-            mx = (s["start"][0] + s["end"][0]) / 2 * 1e3
-            my = -(s["start"][1] + s["end"][1]) / 2 * 1e3
+            mx = mm((s["start"][0] + s["end"][0]) / 2)
+            my = -mm((s["start"][1] + s["end"][1]) / 2)
             out.append(f'<text x="{_f(mx)}" y="{_f(my - 0.6 * font)}" font-size="{_f(font * 0.85)}" '
                        f'text-anchor="middle" fill="{colour}">{escape(s["role"])} span</text>')
     # tensioner: arrow along its travel from the idler centre
@@ -129,8 +131,8 @@ def drive_svg(layout: dict[str, Any], drive: Drive, *, units: str = "metric", wi
         dx, dy = t.direction
         norm = math.hypot(dx, dy) or 1.0
         dx, dy = dx / norm, dy / norm
-        cx, cy = w["centre"][0] * 1e3, w["centre"][1] * 1e3
-        r = w["radius"] * 1e3
+        cx, cy = mm(w["centre"][0]), mm(w["centre"][1])
+        r = mm(w["radius"])
         length = max(0.08 * scale, 2.5 * r)
         ax0, ay0 = cx + dx * r * 1.2, cy + dy * r * 1.2
         ax1, ay1 = ax0 + dx * length, ay0 + dy * length
@@ -140,7 +142,7 @@ def drive_svg(layout: dict[str, Any], drive: Drive, *, units: str = "metric", wi
                    f'<path d="M{_f(ax0)} {_f(-ay0)} L{_f(ax0 + dx * length * 0.25 + hx)} {_f(-(ay0 + dy * length * 0.25 + hy))} '
                    f'L{_f(ax0 + dx * length * 0.25 - hx)} {_f(-(ay0 + dy * length * 0.25 - hy))} Z"/></g>')
         out.append(f'<text x="{_f(ax1 + font * 0.5)}" y="{_f(-ay1)}" font-size="{_f(font * 0.85)}" fill="#8e44ad">'
-                   f'tensioner {t.mass:g} kg, {t.stiffness / 1e3:g} kN/m</text>')
+                   f'tensioner {t.mass:g} kg, {kn_per_m(t.stiffness):g} kN/m</text>')
     # guides: a bar along the span arriving at the guided wheel, from its end at l outwards
     for g in drive.guides:
         gi = next((k for k, w in enumerate(wheels) if w["name"] == g.wheel), None)
@@ -158,22 +160,22 @@ def drive_svg(layout: dict[str, Any], drive: Drive, *, units: str = "metric", wi
         qx, qy = px + ux * 1.5 * g.end_distance, py + uy * 1.5 * g.end_distance
         nx, ny = -uy, ux
         off = 0.012 * span * (1 if (px - c[0]) * nx + (py - c[1]) * ny > 0 else -1)
-        out.append(f'<line class="guide" x1="{_f((px + nx * off) * 1e3)}" y1="{_f(-(py + ny * off) * 1e3)}" '
-                   f'x2="{_f((qx + nx * off) * 1e3)}" y2="{_f(-(qy + ny * off) * 1e3)}" stroke="#16a085" '
+        out.append(f'<line class="guide" x1="{_f(mm(px + nx * off))}" y1="{_f(-mm(py + ny * off))}" '
+                   f'x2="{_f(mm(qx + nx * off))}" y2="{_f(-mm(qy + ny * off))}" stroke="#16a085" '
                    f'stroke-width="{_f(stroke * 4)}" stroke-linecap="round"/>')
-        out.append(f'<text x="{_f(qx * 1e3)}" y="{_f(-(qy + ny * off * 3) * 1e3)}" font-size="{_f(font * 0.85)}" '
+        out.append(f'<text x="{_f(mm(qx))}" y="{_f(-mm(qy + ny * off * 3))}" font-size="{_f(font * 0.85)}" '
                    f'fill="#16a085">{escape(g.kind)} guide, l = {escape(_length_text(g.end_distance, units))}</text>')
     # centre distance dimension between the driving wheel and the first other non-idler
     main = [w for w in wheels if w["kind"] != "idler"]
     if len(main) >= 2:
         a, b = main[0]["centre"], main[1]["centre"]
-        ymax = max(w["centre"][1] + w["radius"] for w in wheels) * 1e3 + 2.2 * font
+        ymax = mm(max(w["centre"][1] + w["radius"] for w in wheels)) + 2.2 * font
         dist = math.hypot(b[0] - a[0], b[1] - a[1])
         out.append(f'<g stroke="#444" stroke-width="{_f(stroke * 0.8)}">'
-                   f'<line x1="{_f(a[0] * 1e3)}" y1="{_f(-ymax)}" x2="{_f(b[0] * 1e3)}" y2="{_f(-ymax)}"/>'
-                   f'<line x1="{_f(a[0] * 1e3)}" y1="{_f(-ymax - font * 0.5)}" x2="{_f(a[0] * 1e3)}" y2="{_f(-ymax + font * 0.5)}"/>'
-                   f'<line x1="{_f(b[0] * 1e3)}" y1="{_f(-ymax - font * 0.5)}" x2="{_f(b[0] * 1e3)}" y2="{_f(-ymax + font * 0.5)}"/></g>')
-        out.append(f'<text class="centre-distance" x="{_f((a[0] + b[0]) / 2 * 1e3)}" y="{_f(-ymax - 0.5 * font)}" '
+                   f'<line x1="{_f(mm(a[0]))}" y1="{_f(-ymax)}" x2="{_f(mm(b[0]))}" y2="{_f(-ymax)}"/>'
+                   f'<line x1="{_f(mm(a[0]))}" y1="{_f(-ymax - font * 0.5)}" x2="{_f(mm(a[0]))}" y2="{_f(-ymax + font * 0.5)}"/>'
+                   f'<line x1="{_f(mm(b[0]))}" y1="{_f(-ymax - font * 0.5)}" x2="{_f(mm(b[0]))}" y2="{_f(-ymax + font * 0.5)}"/></g>')
+        out.append(f'<text class="centre-distance" x="{_f(mm((a[0] + b[0]) / 2))}" y="{_f(-ymax - 0.5 * font)}" '
                    f'font-size="{_f(font)}" text-anchor="middle" fill="#222">C = {escape(_length_text(dist, units))}, '
                    f'{layout["links"]} links</text>')
     out.append("</svg>")

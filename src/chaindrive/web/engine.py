@@ -13,6 +13,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 if TYPE_CHECKING:
+    from ..analysis.checks import Check
     from ..analysis.layout import DriveLayout
     from ..analysis.vibration import _Excitation
     from ..drive.model import Drive
@@ -44,39 +45,13 @@ def _finite(x: Any) -> Any:
     return x
 
 
-def _margin(value: Any, limit: Any, passed: bool | None) -> float | None:
-    """Relative margin of a check: value/limit - 1 for a lower bound (report form)."""
-    try:
-        v = float(value)
-    except (TypeError, ValueError):
-        return None
-    if isinstance(limit, (int, float)) and limit:
-        return _finite(v / float(limit) - 1.0)
-    if isinstance(limit, str) and limit.startswith(">= 0"):
-        return _finite(v)
-    if isinstance(limit, str) and limit.startswith(">="):
-        try:
-            return _finite(v / float(limit[2:].split()[0]) - 1.0)
-        except (ValueError, ZeroDivisionError):
-            return None
-    return None
-
-
-def _check_dict(group: str, c: Any) -> dict[str, Any]:
-    source = getattr(c, "source", None) or getattr(c, "reference", "")
-    note = getattr(c, "note", None) or getattr(c, "detail", "")
-    passed = c.passed
-    margin = getattr(c, "margin", None)
-    if margin is None:
-        margin = _margin(c.value, c.limit, passed)
-    verdict = getattr(c, "verdict", None) or ("info" if passed is None else ("pass" if passed else "FAIL"))
-    value = c.value
-    if isinstance(value, float):
-        value = _finite(value)
-    return {"group": group, "name": c.name, "value": value, "limit": c.limit,
-            "relation": getattr(c, "relation", ">=" if passed is not None else "info"),
-            "unit": getattr(c, "unit", ""), "display": getattr(c, "display", ""), "passed": passed, "verdict": verdict,
-            "margin": margin, "source": source, "note": note}
+def _check_dict(group: str, c: Check) -> dict[str, Any]:
+    """A check of the analysis as the page's data: its own fields, its verdict and its numeric margin
+    (:attr:`chaindrive.analysis.checks.Check.margin`; never parsed from a text)."""
+    value = _finite(c.value) if isinstance(c.value, float) else c.value
+    return {"group": group, "name": c.name, "value": value, "limit": c.limit, "relation": c.relation,
+            "unit": c.unit, "display": c.display, "passed": c.passed, "verdict": c.verdict,
+            "margin": _finite(c.margin), "source": c.source, "note": c.note}
 
 
 def light_analysis(drive: Drive) -> LightAnalysis:

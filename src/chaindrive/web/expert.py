@@ -16,7 +16,9 @@ import numpy as np
 from fastapi import APIRouter, Request
 from fastapi.responses import HTMLResponse, JSONResponse, Response
 
+from ..display import mm
 from ..errors import ChainDriveError
+from ..limits import MAX_SPEED, MAX_TEETH, MIN_TEETH
 from .bodies import SimulationBody, openapi_body, read_body
 from .drawing import workshop_drawing
 from .fields import FieldError, FieldSpec, parse_field, parse_integer
@@ -40,7 +42,7 @@ PAGES = {
     "simulation": "Simulation",
 }
 
-_SPEED = FieldSpec("rad/s", 0.0, 1000.0, example="5 rad/s")
+_SPEED = FieldSpec("rad/s", 0.0, MAX_SPEED, example="5 rad/s")
 _LENGTH = FieldSpec("m", 0.0, 10.0, example="256 mm")
 _ELONGATION = FieldSpec("", 0.0, 0.1, example="0.03")
 _FORCE = FieldSpec("N", 0.0, 1e8, open_minimum=False, example="10 kN")
@@ -235,7 +237,7 @@ def kinematics_result(state: dict[str, str], points: int = 361) -> dict[str, Any
     from ..kinematics import chain_entry
 
     chain = _chain(state["chain"])
-    teeth = parse_integer("teeth", state["teeth"], 3, 150)
+    teeth = parse_integer("teeth", state["teeth"], MIN_TEETH, MAX_TEETH)
     omega = _wheel_speed(state["speed"], pitch=chain.pitch, teeth=teeth, link_chain=chain.is_link_chain)
     l_end = parse_field("guide_end", state["guide_end"], _LENGTH)
     results = {}
@@ -272,7 +274,7 @@ def crawler_result(state: dict[str, str], points: int = 361) -> dict[str, Any]:
     from ..kinematics.crawler import crawler_drive
 
     pitch = _chain(state["chain"]).pitch if state["chain"].strip() else parse_field("pitch", state["pitch"], _LENGTH)
-    teeth = parse_integer("teeth", state["teeth"], 3, 150)
+    teeth = parse_integer("teeth", state["teeth"], MIN_TEETH, MAX_TEETH)
     omega = _wheel_speed(state["speed"], pitch=pitch, teeth=teeth, link_chain=False)
     cam: dict[str, Any] = {}  # the cam force and the guide reaction, when their inputs are given
     for key, spec in (("stiffness", _STIFFNESS), ("sprocket_distance", _LENGTH), ("cam_distance", _LENGTH),
@@ -293,7 +295,7 @@ def crawler_result(state: dict[str, str], points: int = 361) -> dict[str, Any]:
     return {"summaries": {k: r.summary for k, r in res.items()},
             "table": summary_table({k: r.summary for k, r in res.items()}),
             "plots": [_line(psi, {k: r.velocity for k, r in res.items()}, "sprocket angle ψ [°]",
-                            "chain velocity [m/s]", f"Crawler drive chain, t = {pitch * 1e3:g} mm, z = {teeth}")]}
+                            "chain velocity [m/s]", f"Crawler drive chain, t = {mm(pitch):g} mm, z = {teeth}")]}
 
 
 def wheel_result(page: str, state: dict[str, str]) -> dict[str, Any]:

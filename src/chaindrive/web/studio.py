@@ -23,7 +23,8 @@ from starlette.datastructures import UploadFile as StarletteUpload
 
 from .._results import jsonable
 from ..analysis.loads import REQUIRED_STATIC_SAFETY
-from ..display import verdict_text
+from ..design.duty import service_factor_of
+from ..display import check_margin_text, ms, verdict_text
 from ..errors import ChainDriveError, InputError
 from ..units import angular_velocity_to_rpm
 from .design import (
@@ -83,7 +84,7 @@ def _checks_for_page(checks: list[dict], units: str) -> list[dict]:
         else:
             limit_text = str(limit)
         out.append({**c, "value_text": value, "unit_text": unit, "limit_text": limit_text,
-                    "margin_text": "" if c["margin"] is None else f"{c['margin'] * 100:+.0f} %"})
+                    "margin_text": check_margin_text(c["margin"])})
     return out
 
 
@@ -115,7 +116,7 @@ def studio_payload(state: dict[str, str]) -> dict[str, Any]:
     out: dict[str, Any] = {"errors": errors, "query": state_query(state), "state": state}
     table = service_factor_table()
     character = load_character_of(state)
-    out["service_factor_table"] = {"value": table["factors"][character][state["driver"]],
+    out["service_factor_table"] = {"value": service_factor_of(state["driver"], load_character=character).value,
                                    "character": table["characters"][character],
                                    "driver": table["drivers"][state["driver"]],
                                    "source": table["source"]}
@@ -190,7 +191,7 @@ def studio_payload(state: dict[str, str]) -> dict[str, Any]:
     out["verdict"] = verdict_text(failed, len(analysis.warnings))  # "passes, 2 warnings" (issue 30)
     out["downloads"] = {name: f"/download/{name}?{out['query']}" for name in DOWNLOADS}
     out["has_tensioner"] = drive.tensioner is not None
-    out["elapsed_ms"] = round((time.perf_counter() - t0) * 1e3, 1)
+    out["elapsed_ms"] = round(ms(time.perf_counter() - t0), 1)
     return out
 
 

@@ -18,6 +18,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Any
 
+from ..display import mm
 from .fields import FieldError, FieldSpec, parse_field, parse_integer
 
 __all__ = ["MAX_EXTRA_WHEELS", "EXTRA_DEFAULTS", "EXTRA_CHOICES", "ExtraWheel", "extra_wheels", "add_extra_wheels",
@@ -132,7 +133,7 @@ def add_extra_wheels(data: dict[str, Any], extras: list[ExtraWheel], *, wheel_ki
     added = []
     for w in extras:
         entry: dict[str, Any] = {"name": w.name, "kind": wheel_kind if w.kind == "sprocket" else "idler",
-                                 "teeth": w.teeth, "position": [f"{w.x * 1e3:.4f} mm", f"{w.y * 1e3:.4f} mm"]}
+                                 "teeth": w.teeth, "position": [f"{mm(w.x):.4f} mm", f"{mm(w.y):.4f} mm"]}
         if w.side != 1:
             entry["side"] = w.side
         if w.share is not None:

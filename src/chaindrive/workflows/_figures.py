@@ -19,7 +19,7 @@ import os
 import sys
 import warnings
 from collections.abc import Callable
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
 from .report import Figure, Section
 
@@ -120,15 +120,23 @@ class Figures:
     claims (the others are filled in by :meth:`finish`).
     """
 
-    def __init__(self, enabled: bool, share: FigureShare | None = None) -> None:
+    def __init__(self, enabled: bool, share: FigureShare | None = None, browser: bool = False) -> None:
         self.enabled = enabled
         self.share = share
+        self.browser = browser
         self._count = 0
         self._pending: list[tuple[int, Figure, Callable[[], MatplotlibFigure]]] = []
         self._replay: dict[int, Replay] = {}
 
-    def __call__(self, section: Section, make: Callable[[], MatplotlibFigure], caption: str, filename: str) -> None:
+    def __call__(self, section: Section, make: Callable[[], MatplotlibFigure], caption: str, filename: str,
+                 chart: Callable[[], dict[str, Any]] | None = None) -> None:
+        """Show a figure: with ``browser`` and a ``chart`` (plotly data, :mod:`.charts`), as that
+        chart, drawn by the browser; otherwise ``make()`` drawn as PNG."""
         if not self.enabled:
+            return
+        if self.browser and chart is not None:
+            if self.share is None or self.share.owner == _HERE:
+                section.figures.append(Figure(caption=caption, png=b"", filename=filename, chart=chart()))
             return
         index = self._count
         self._count += 1

@@ -2,8 +2,9 @@
 
 The analysis itself is :func:`chaindrive.analysis.analyze_drive`; this module only
 presents it: the report sections (:mod:`chaindrive.workflows.sections`, a fixed ordered
-list), ``report.html`` (self-contained), ``results.json`` (every number of the analysis,
-SI units), the figures as PNG and, on request, ``report.pdf``.
+list), ``report.html``, ``results.json`` (every number of the analysis once, SI units), the
+figures as PNG or as charts the browser draws (``browser_charts``) and, on request,
+``report.pdf``.
 """
 
 from __future__ import annotations
@@ -45,12 +46,13 @@ class AnalysisOutcome:
 def report_from_analysis(analysis: DriveAnalysis, *, title: str | None = None, subtitle: str = "",
                          figures: bool = True,
                          progress: Callable[[str, int, int], None] | None = None,
-                         parallel_figures: bool = False) -> tuple[Report, dict[str, float]]:
+                         parallel_figures: bool = False, browser_charts: bool = False) -> tuple[Report, dict[str, float]]:
     """The :class:`Report` of ``analysis`` (sections in a fixed order, figures when asked;
-    ``parallel_figures``: see :func:`analyze`)."""
+    ``parallel_figures``, ``browser_charts``: see :func:`analyze`)."""
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always")
-        sections, timings = build_sections(analysis, figures=figures, progress=progress, parallel=parallel_figures)
+        sections, timings = build_sections(analysis, figures=figures, progress=progress, parallel=parallel_figures,
+                                           browser=browser_charts)
     extra = [str(w.message) for w in caught]
     report = Report(title=title or analysis.drive.name or "Chain drive", subtitle=subtitle, sections=sections,
                     warnings=list(dict.fromkeys([*analysis.warnings, *extra])), analysis=analysis)
@@ -93,6 +95,7 @@ def analyze(
     include: Iterable[str] | None = None,
     parallel_figures: bool = False,
     source: str | None = None,
+    browser_charts: bool = False,
 ) -> AnalysisOutcome:
     """Analyse ``drive`` and write its calculation report.
 
@@ -121,6 +124,11 @@ def analyze(
     source : str, optional
         The text of the project file ``drive`` was read from: ``proposal.toml`` is then
         that file with only the changed values edited.
+    browser_charts : bool
+        The figures that have a chart (:mod:`chaindrive.workflows.charts`) drawn by the
+        browser from their data in ``report.html`` (plotly.js written beside it, offline)
+        instead of PNG; matplotlib is then not imported for them. Ignored with ``pdf``
+        (WeasyPrint runs no script). ``chaindrive analyze`` sets it unless ``--pdf`` or ``--png``.
 
     Returns
     -------
@@ -132,7 +140,8 @@ def analyze(
     analysis = analyze_drive(drive, include=include)
     t_analysis = time.perf_counter() - t0
     report, timings = report_from_analysis(analysis, title=title, subtitle=subtitle, figures=figures,
-                                           progress=progress, parallel_figures=parallel_figures)
+                                           progress=progress, parallel_figures=parallel_figures,
+                                           browser_charts=browser_charts and not pdf)
     timings = {"analysis": t_analysis, **timings}
     if progress is not None:
         progress("done", 1, 1)

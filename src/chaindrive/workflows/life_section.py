@@ -4,6 +4,7 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING
 
+from .charts import life_chart
 from .sections import Section, Table, _checks, _si, _unit, _val
 
 if TYPE_CHECKING:
@@ -51,6 +52,6 @@ def life_section(a: DriveAnalysis, fig: _Figures) -> Section | None:
     from ..plotting.life import life_plot
 
     fig(sec, lambda: life_plot(r), "Elongation over hours; jump-over margin, tensioner travel and span "
-        "frequencies over the elongation", "life.png")
-    sec.results = {"life": r.to_dict()}
+        "frequencies over the elongation", "life.png", chart=lambda: life_chart(r))
+    sec.results = {"life": "analysis.life"}
     return sec

@@ -1,7 +1,9 @@
 """Calculation report: sections of tables, checks and figures, rendered to HTML or PDF.
 
-The HTML is self-contained (figures embedded as base64 PNG, CSS inline) so that one file
-is the calculation record. PDF is rendered from the same HTML with WeasyPrint.
+The HTML carries its CSS inline and its figures either embedded as base64 PNG or as chart
+data that the browser draws with plotly.js, written beside the HTML (:data:`PLOTLY_JS`,
+offline): the folder is the calculation record. PDF is rendered from the HTML of PNG
+figures with WeasyPrint.
 """
 
 from __future__ import annotations
@@ -21,7 +23,39 @@ from ..analysis.checks import Check
 if TYPE_CHECKING:
     from matplotlib.figure import Figure as MatplotlibFigure
 
-__all__ = ["Table", "Figure", "Section", "Report"]
+__all__ = ["Table", "Figure", "Section", "Report", "RESULTS_VERSION", "resolve"]
+
+#: The file name of plotly.js beside report.html (copied from the installed plotly package).
+PLOTLY_JS = "plotly.min.js"
+
+
+def plotly_js_path() -> Path | None:
+    """The installed plotly package's plotly.min.js, found without importing plotly."""
+    import importlib.util
+
+    spec = importlib.util.find_spec("plotly")
+    if spec is None or not spec.submodule_search_locations:
+        return None
+    path = Path(next(iter(spec.submodule_search_locations))) / "package_data" / PLOTLY_JS
+    return path if path.exists() else None
+
+
+#: The layout of results.json: 2 holds each number once (sections reference ``analysis`` by
+#: path); 1 (before) repeated the analysis' numbers in each section's ``results`` and ``checks``.
+RESULTS_VERSION = 2
+
+
+def resolve(data: dict[str, Any], path: str) -> Any:
+    """The value at ``path`` (``"analysis.layout.links"``, ``"analysis.checks[3]"``) of a results.json
+    document ``data``: how a reader follows a section's references.
+
+    >>> resolve({"analysis": {"checks": [{"value": 2.0}]}}, "analysis.checks[0].value")
+    2.0
+    """
+    value: Any = data
+    for key in path.replace("[", ".[").split("."):
+        value = value[int(key[1:-1])] if key.startswith("[") else value[key]
+    return value
 
 
 @dataclasses.dataclass(frozen=True)
@@ -123,11 +157,13 @@ def _save_png(fig: MatplotlibFigure, buf: io.BytesIO, dpi: int) -> None:
 
 @dataclasses.dataclass
 class Figure:
-    """A figure: caption plus PNG bytes (and the file name it is saved under)."""
+    """A figure: caption plus PNG bytes (and the file name it is saved under), or a chart
+    the browser draws (plotly data, :mod:`.charts`; then ``png`` is empty)."""
 
     caption: str
     png: bytes
     filename: str
+    chart: dict[str, Any] | None = None
 
     @classmethod
     def from_matplotlib(cls, fig: MatplotlibFigure, caption: str, filename: str, dpi: int = 100) -> Figure:
@@ -186,6 +222,11 @@ class Report:
     )
 
     @property
+    def has_charts(self) -> bool:
+        """Whether a figure is a chart the browser draws (report.html then loads :data:`PLOTLY_JS`)."""
+        return any(f.chart is not None for s in self.sections for f in s.figures)
+
+    @property
     def checks(self) -> list[tuple[str, Check]]:
         return [(s.title, c) for s in self.sections for c in s.checks]
 
@@ -205,7 +246,20 @@ class Report:
         return verdict_text(failed, len(warnings))
 
     def to_dict(self) -> dict[str, Any]:
+        """The report as JSON-ready data (results.json, :data:`RESULTS_VERSION`): every number once,
+        under ``analysis``; a section holds only presentation (its title, verdict, warnings,
+        figure files) and references into ``analysis`` by path (``"analysis.layout"``,
+        ``"analysis.checks[3]"``). A report without an analysis keeps its sections' own data."""
+        checks = [] if self.analysis is None else list(self.analysis.checks)
+
+        def check_ref(c: Check) -> Any:
+            index = next((i for i, known in enumerate(checks) if known is c), None)
+            if index is None:
+                index = next((i for i, known in enumerate(checks) if known == c), None)
+            return c.to_dict() if index is None else f"analysis.checks[{index}]"
+
         return {
+            "version": RESULTS_VERSION,
             "title": self.title,
             "subtitle": self.subtitle,
             "created": self.created,
@@ -216,10 +270,10 @@ class Report:
                 s.title: {
                     "skipped": s.skipped,
                     "passed": s.passed,
-                    "checks": [c.to_dict() for c in s.checks],
+                    "checks": [check_ref(c) for c in s.checks],
                     "warnings": list(s.warnings),
                     "results": jsonable(s.results),
-                    "figures": [f.filename for f in s.figures],
+                    "figures": [f.filename for f in s.figures if f.chart is None],
                 }
                 for s in self.sections
             },
@@ -237,11 +291,22 @@ class Report:
         env.filters["fmt"] = _display.fmt
         env.filters["check_value"] = _display.check_value_text
         env.filters["check_limit"] = _display.check_limit_text
-        return env.get_template("report.html").render(report=self, version=__version__)
+        return env.get_template("report.html").render(report=self, version=__version__, plotly_js=PLOTLY_JS)
 
     def write_html(self, path: str | Path) -> Path:
+        """Write report.html and, when it has charts, plotly.js beside it (:data:`PLOTLY_JS`)."""
         path = Path(path)
         path.write_text(self.to_html(), encoding="utf-8")
+        if self.has_charts:
+            source = plotly_js_path()
+            if source is None:  # pragma: no cover - plotly is a dependency
+                from ..errors import InputError
+
+                raise InputError("the report's charts need plotly.js (pip install plotly), or give --png",
+                                 field="figures")
+            import shutil
+
+            shutil.copyfile(source, path.parent / PLOTLY_JS)
         return path
 
     def write_pdf(self, path: str | Path) -> Path:
@@ -262,6 +327,8 @@ class Report:
         out = []
         for s in self.sections:
             for f in s.figures:
+                if f.chart is not None:
+                    continue
                 p = folder / f.filename
                 p.write_bytes(f.png)
                 out.append(p)

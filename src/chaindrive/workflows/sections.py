@@ -19,6 +19,7 @@ from ..display import convert, display_of
 from ..drive.model import Wheel
 from ..errors import InputError
 from ..vibration.excitation import AMPLIFICATION_LIMIT, DAMPING_RATIO
+from . import charts
 from ._figures import Figures, FigureShare
 from ._figures import Figures as _Figures
 from .report import Section, Table
@@ -83,6 +84,12 @@ def _teeth_cell(wheel: Wheel) -> int | str:
     return f"Ø{_val(wheel.diameter, 'm'):.0f} {_unit('m')}"
 
 
+def _refs(*parts: str) -> dict[str, str]:
+    """A section's results: where in results.json each analysis part it presents is stored
+    (``{"layout": "analysis.layout"}``); results.json holds each number once, in ``analysis``."""
+    return {p: f"analysis.{p}" for p in parts}
+
+
 def _checks(section: Section, a: DriveAnalysis, parts: tuple[str, ...]) -> None:
     """The checks of the named analysis parts (each check knows its part)."""
     section.checks.extend(a.checks_of(*parts))
@@ -131,7 +138,7 @@ def inputs_section(a: DriveAnalysis, fig: _Figures) -> Section | None:
                             ["wheel", "kind", f"end distance l [{_unit('m')}]", f"height H [{_unit('m')}]"],
                             [[g.wheel, g.kind, _val(g.end_distance, "m"), "—" if g.height is None else _val(g.height, "m")]
                              for g in d.guides]))
-    sec = Section("Input data", tables=tables, results={"inputs": d.inputs()})
+    sec = Section("Input data", tables=tables, results=_refs("inputs"))
     if d.description:
         sec.paragraphs.append(d.description)
     sec.paragraphs.append(f"Chain data source: {c.source}")
@@ -196,8 +203,8 @@ def layout_section(a: DriveAnalysis, fig: _Figures) -> Section | None:
     from ..plotting.drive import layout_plot
 
     fig(sec, lambda: layout_plot(a), "Layout of the drive: pitch circles, spans (tight span marked), wheel names",
-        "layout.png")
-    sec.results = {"layout": lay.to_dict()}
+        "layout.png", chart=lambda: charts.layout_chart(a))
+    sec.results = _refs("layout")
     return sec
 
 
@@ -265,8 +272,9 @@ def loads_section(a: DriveAnalysis, fig: _Figures) -> Section | None:
 
             return rating_plot(r, operating=(r.angular_velocity, d.design_power()))
 
-        fig(sec, rating_figure, f"Rating curve of the chain (method {r.method}) with the design point", "rating.png")
-    sec.results = {"tensions": t.to_dict(), "rating": None if rating is None else rating.to_dict()}
+        fig(sec, rating_figure, f"Rating curve of the chain (method {r.method}) with the design point", "rating.png",
+            chart=lambda: charts.rating_chart(r, operating=(r.angular_velocity, d.design_power())))
+    sec.results = _refs("loads", "rating")
     return sec
 
 
@@ -300,8 +308,8 @@ def entry_section(a: DriveAnalysis, fig: _Figures) -> Section | None:
     from ..plotting.kinematics import kinematics_plot
 
     fig(sec, lambda: kinematics_plot(results), "Chain velocity and acceleration over one tooth period",
-        "kinematics.png")
-    sec.results = {k: v.summary for k, v in results.items() if "comparison" not in k}
+        "kinematics.png", chart=lambda: charts.kinematics_chart(results))
+    sec.results = _refs("entry")
     return sec
 
 
@@ -383,19 +391,15 @@ def vibration_section(a: DriveAnalysis, fig: _Figures) -> Section | None:
                     "design found:")
             sec.tables.append(Table("Proposed changes" if rm.found else "Nearest design (fails)", ["change"],
                                     [[c] for c in rm.changes]))
-            sec.results["remedy"] = {"found": rm.found, "changes": list(rm.changes), "margin": rm.margin,
-                                     "amplification": rm.amplification, "reason": rm.reason,
-                                     "bounds": list(rm.bounds)}
+            sec.results.update(_refs("remedy"))
         campbell = res.campbell
         if campbell is not None:
             from ..plotting.vibration import campbell_plot
 
             fig(sec, lambda: campbell_plot(campbell),
                 "Campbell diagram of the slack span with the tensioner: natural frequencies, excitations and the "
-                "tensioner paper's bands 0.7 ≤ P/ω ≤ 1.4 (information; frequencies in rad/s, Hz on the right)", "campbell.png")
-        sec.results["tensioner"] = res.to_dict()
-        if res.check is not None:
-            sec.results["check"] = res.check.rows()
+                "tensioner paper's bands 0.7 ≤ P/ω ≤ 1.4 (information; frequencies in rad/s, Hz on the right)", "campbell.png",
+                chart=lambda: charts.campbell_chart(campbell))
     elif v.free_spans is not None:
         fs = v.free_spans
         rows = []
@@ -411,8 +415,8 @@ def vibration_section(a: DriveAnalysis, fig: _Figures) -> Section | None:
                                 "(Wickert & Mote 1990; tensioner paper eq. (1))",
                                 ["quantity", "value [Hz]", "value [rad/s]"], rows))
         _check_table(sec, fs.check.rows(), fs.names)
-        sec.results["free_spans"] = {"frequencies": fs.frequencies, "modes": list(fs.names), "check": fs.check.rows()}
     _checks(sec, a, ("vibration",))
+    sec.results.update(_refs("vibration"))
     return sec
 
 
@@ -427,7 +431,6 @@ def geometry_section(a: DriveAnalysis, fig: _Figures) -> Section | None:
     rows = []
     for g in a.geometry:
         dim = g.dimensions()
-        dd = dim.to_dict()
         if isinstance(dim, PocketWheelDimensions):  # kind "pocket wheel"
             rows.append([g.wheel, g.kind, g.teeth, _val(2 * dim.pitch_radius, "m"), _val(2 * dim.tip_radius, "m"), "—",
                          g.basis])
@@ -438,10 +441,10 @@ def geometry_section(a: DriveAnalysis, fig: _Figures) -> Section | None:
             rows.append([g.wheel, g.kind, g.teeth, _val(dim.pitch_diameter, "m"),
                          f"{_val(dim.tip_diameter_min, 'm'):.2f} … {_val(dim.tip_diameter_max, 'm'):.2f}",
                          _val(dim.root_diameter, "m"), g.basis])
-        sec.results[g.wheel] = dd
     for row in rows:  # the wheel named as in the input table (type and role), e.g. "pocket wheel, tensioner idler"
         row[1] = wheel_description(a.drive, row[0])
     mm = _unit("m")
+    sec.results = _refs("geometry")
     sec.tables.append(Table("Main diameters", ["name", "wheel", "teeth", f"pitch Ø [{mm}]", f"tip Ø [{mm}]",
                                                f"root Ø [{mm}]", "basis"], rows))
     drv = a.drive.driving_wheel.name
@@ -451,7 +454,7 @@ def geometry_section(a: DriveAnalysis, fig: _Figures) -> Section | None:
 
         slug = "".join(ch if ch.isalnum() else "_" for ch in drv)
         fig(sec, lambda: geometry_plot(driving.object), f"Driving wheel '{drv}' with the seated chain",
-            f"wheel_{slug}.png")
+            f"wheel_{slug}.png", chart=lambda: charts.wheel_chart(driving.object))
     return sec
 
 
@@ -476,19 +479,20 @@ def strength_section(a: DriveAnalysis, fig: _Figures) -> Section | None:
              ["relative life (wear law)", float(res.relative_life_wear), "-"]]))
         _checks(sec, a, ("contact",))
 
-        def skew_figure() -> MatplotlibFigure:
-            import numpy as np
+        def skew_curve() -> Any:
+            skews = np.linspace(0, max(con.skew * 1.5, math.radians(1)), 61)
+            return con.contact.stress(con.load, max_skew=skews, wear_factor=con.wear_factor)
 
+        def skew_figure() -> MatplotlibFigure:
             from ..plotting.strength import skew_plot
 
-            skews = np.linspace(0, max(con.skew * 1.5, math.radians(1)), 61)
-            return skew_plot(con.contact.stress(con.load, max_skew=skews, wear_factor=con.wear_factor))
+            return skew_plot(skew_curve())
 
-        fig(sec, skew_figure, "Contact stress and relative life against skew", "skew.png")
-        sec.results["contact"] = res.to_dict()
+        fig(sec, skew_figure, "Contact stress and relative life against skew", "skew.png",
+            chart=lambda: charts.skew_chart(skew_curve()))
+        sec.results.update(_refs("contact"))
     if a.track_tooth is not None:
         tt = a.track_tooth
-        rd = tt.to_dict()
         sec.paragraphs.append(
             "Sharipov, p. 34: «Расчетное усилие определяется из условия максимального сцепления гусеницы с "
             "грунтом и передачи всего усилия одним зубом: P_Р = P / i, где P = 0,65 G_T φ; i — число зубчатых "
@@ -508,7 +512,7 @@ def strength_section(a: DriveAnalysis, fig: _Figures) -> Section | None:
              ["bending stress at the root (force at the tip)", *_q(tt, "bending_stress")],
              ["pin–tooth contact stress", *_q(tt, "contact_stress")]]))
         _checks(sec, a, ("track_tooth",))
-        sec.results["track_tooth"] = rd
+        sec.results.update(_refs("track_tooth"))
     bolts = getattr(a, "rim_bolts", None)
     if bolts is not None:
         rows = [["joint", bolts.joint, ""]]
@@ -521,7 +525,7 @@ def strength_section(a: DriveAnalysis, fig: _Figures) -> Section | None:
         sec.tables.append(Table("Rim bolts (Sharipov, Fig. 14; fitted bolts: Shigley §8-12, friction joint: "
                                 "VDI 2230-1)", ["quantity", "value", "unit"], rows))
         _checks(sec, a, ("rim_bolts",))
-        sec.results["rim_bolts"] = bolts.to_dict()
+        sec.results.update(_refs("rim_bolts"))
     return sec
 
 
@@ -586,8 +590,8 @@ def crawler_section(a: DriveAnalysis, fig: _Figures) -> Section | None:
             return crawler_plot([kin])
 
         fig(sec, crawler_figure, "Drive-chain speed, acceleration and cam force (about its mean) over one tooth "
-            "period", "crawler.png")
-    sec.results["crawler_conveyor"] = {k: v for k, v in r.to_dict().items() if k != "kinematics"}
+            "period", "crawler.png", chart=lambda: charts.crawler_chart([kin]))
+    sec.results = _refs("crawler_conveyor")
     return sec
 
 
@@ -605,8 +609,9 @@ def wear_section(a: DriveAnalysis, fig: _Figures) -> Section | None:
     _checks(sec, a, ("wear",))
     from ..plotting.drive import wear_plot
 
-    fig(sec, lambda: wear_plot(res), "Chain elongation over operating hours", "wear.png")
-    sec.results = {"life": res.to_dict()}
+    fig(sec, lambda: wear_plot(res), "Chain elongation over operating hours", "wear.png",
+        chart=lambda: charts.wear_chart(res))
+    sec.results = _refs("wear")
     return sec
 
 
@@ -628,12 +633,12 @@ def self_regulating_section(a: DriveAnalysis, fig: _Figures) -> Section | None:
           _col(res, "centre_distance")],
          ["carrier travel over the wear range", res.carrier_travel, res.coordinate_unit]]))
     _checks(sec, a, ("self_regulating",))
-    sec.results = {"self_regulating": res.to_dict()}
+    sec.results = _refs("self_regulating")
     try:
         from ..plotting.self_regulating import self_regulating_plot
 
         fig(sec, lambda: self_regulating_plot(res), "Slack tension and centre distance against load and wear",
-            "self_regulating.png")
+            "self_regulating.png", chart=lambda: charts.self_regulating_chart(res))
     except ImportError:  # pragma: no cover - plot module not installed
         pass
     return sec
@@ -686,7 +691,7 @@ def generic_section(part: Part) -> Callable[[DriveAnalysis, _Figures], Section |
         if rows:
             sec.tables.append(Table(part.title, ["quantity", "value", "unit"], rows))
         _checks(sec, a, (part.name,))
-        sec.results = {part.name: part.to_json(res)}
+        sec.results = _refs(part.name)
         return sec
 
     section.__name__ = f"{part.name}_section"
@@ -724,20 +729,22 @@ def report_sections() -> tuple[tuple[str, str, Callable[[DriveAnalysis, _Figures
 
 def build_sections(analysis: DriveAnalysis, *, figures: bool = True,
                    progress: Callable[[str, int, int], None] | None = None,
-                   parallel: bool = False) -> tuple[list[Section], dict[str, float]]:
+                   parallel: bool = False, browser: bool = False) -> tuple[list[Section], dict[str, float]]:
     """The report sections of ``analysis`` (figures drawn when ``figures``), and their times [s].
 
-    With ``parallel`` (and two processors and ``fork``), a forked helper process draws
-    part of the figures (:mod:`chaindrive.workflows._figures`); the sections are the same.
+    With ``browser``, a figure that has a chart (:mod:`.charts`) is that chart, drawn by the
+    browser from its data; the others are PNG. With ``parallel`` (and two processors and
+    ``fork``, PNG figures only), a forked helper process draws part of the figures
+    (:mod:`chaindrive.workflows._figures`); the sections are the same.
     """
     import time
 
     share = None
-    if figures and parallel and FigureShare.available():
+    if figures and parallel and not browser and FigureShare.available():
         import matplotlib.backends.backend_agg  # noqa: F401 - imported once, before the fork
         import matplotlib.figure  # noqa: F401
         share = FigureShare(lambda s: _helper_sections(analysis, s))
-    fig = _Figures(figures, share)
+    fig = _Figures(figures, share, browser=browser)
     out, timings = [], {}
     sections = report_sections()
     for i, (key, title, fn) in enumerate(sections):
@@ -781,7 +788,8 @@ def conveyor_section(a: DriveAnalysis, fig: _Figures) -> Section | None:
         return conveyor_plot(res)
 
     fig(sec, profile_figure, "Running chain tension along the loop from the head's exit (wheels marked; "
-        "pans: friction of chain and material, free strands: catenary)", "conveyor.png")
+        "pans: friction of chain and material, free strands: catenary)", "conveyor.png",
+        chart=lambda: charts.conveyor_chart(res))
     _checks(sec, a, ("conveyor",))
-    sec.results = {"conveyor": part.to_json(res)}
+    sec.results = _refs("conveyor")
     return sec
