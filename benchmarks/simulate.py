@@ -98,8 +98,10 @@ Batched (``--batched``, also after the scaling): the batched kernel
 variants of the 100-link drive (speed and load drawn at random), printing ``batched, N
 variants: R link-steps/s per core, F of the ceiling``.
 
+Exudyn (``--exudyn``): the same drive, benchmarks/peers/exudyn_drive.py (its docstring).
+
 Run:  .venv/bin/python benchmarks/simulate.py [--mujoco] [--duration 0.3] [--no-mujoco]
-                                              [--quick] [--no-scaling] [--steady]
+                                              [--quick] [--no-scaling] [--steady] [--exudyn]
       .venv/bin/python benchmarks/simulate.py --scaling        (the scaling only)
 """
 
@@ -591,6 +593,8 @@ def main():
                     help="compare with MuJoCo (stiff links and rigid links); the default "
                          "when mujoco is installed")
     ap.add_argument("--no-mujoco", action="store_true")
+    ap.add_argument("--exudyn", action="store_true",
+                    help="also the Exudyn peer (benchmarks/peers/exudyn_drive.py; ~10 min CPU)")
     ap.add_argument("--quick", action="store_true",
                     help="MuJoCo stiff links at its largest stable step and half only")
     ap.add_argument("--diagnose", action="store_true",
@@ -675,13 +679,21 @@ def main():
                     if len(rigid_rows) > 1 and converged(rigid_rows) is not None:
                         break
             mujoco.set_mju_user_warning(previous)
+    exudyn_rows = []
+    if args.exudyn:
+        sys.path.insert(0, str(Path(__file__).parent / "peers"))
+        import exudyn_drive
+
+        exudyn_rows = exudyn_drive.ladder(model, state, args.duration, r.probe_points[0],
+                                          0.5 * (r.tight_span[0] + r.tight_span[1]), SAMPLE,
+                                          STEADY, converged)
     print(f"\n16B chain, {model.links} links, 2 x z = 17, centre distance "
           f"{state.wp[1, K.W_CX]:.4f} m, {args.duration:g} s simulated, steady window "
           f"t >= {STEADY:g} s, samples every {1e6 * SAMPLE:g} us")
     print("dv/v, dvpk, dS/S: change of mean speed, peak speed, mean tight-side tension against "
           "the next (halved) step; conv: |dv/v| <= "
           f"{100 * TOL_SPEED:g} % and |dS/S| <= {100 * TOL_TENSION:g} %")
-    groups = [g for g in (exp_rows, imp_rows, stiff_rows, rigid_rows) if g]
+    groups = [g for g in (exp_rows, imp_rows, stiff_rows, rigid_rows, exudyn_rows) if g]
     ref, _, _ = pick_converged(exp_rows)
     picks = {g[0]["name"]: pick_converged(g, ref) for g in groups}
     print_table([x for g in groups for x in g])
@@ -701,10 +713,11 @@ def main():
     imp, _, imp_near = picks["chaindrive impl"]
     print(f"chaindrive implicit vs explicit (per simulated second): "
           f"{ref['wall_per_sim_s'] / imp['wall_per_sim_s']:.3g} x")
-    for label, key in (("rigid links", "mujoco rigid"), ("stiff links", "mujoco stiff")):
+    for label, key in (("MuJoCo rigid links", "mujoco rigid"), ("MuJoCo stiff links", "mujoco stiff"),
+                       ("Exudyn stiff links, VelocityVerlet", "exudyn stiff")):
         if key in picks:
             x, _, near = picks[key]
-            print(f"vs MuJoCo {label}: {x['wall_per_sim_s'] / imp['wall_per_sim_s']:.3g} x"
+            print(f"vs {label}: {x['wall_per_sim_s'] / imp['wall_per_sim_s']:.3g} x"
                   f"{'' if near and imp_near else '  (not at equal accuracy: see the lines above)'}")
     if args.diagnose and stiff_rows:
         diagnose(model, state, args.duration, stiff_rows[0]["dt"], own)

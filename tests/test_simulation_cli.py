@@ -79,3 +79,21 @@ def test_cli_conveyor_example(tmp_path, capsys):
     assert main(["simulate", "--example", "conveyor", "--speed", "0 rad/s", "-o",
                  str(tmp_path / "bad"), "--no-plots"]) == 2
     assert "conveyor example must be positive" in capsys.readouterr().err
+
+
+def test_cli_gif_is_opt_in(tmp_path, capsys):
+    """The animation only with --gif (or --frames N); the run's other files as before."""
+    out = tmp_path / "plain"
+    assert main(["simulate", "--example", "roller", "--duration", "4 ms", "--ramp", "2 ms",
+                 "-o", str(out), "--json"]) == 0
+    capsys.readouterr()
+    assert {p.name for p in out.iterdir() if not p.name.startswith(".")} == {
+        "simulation.npz", "simulation.json", "simulation.png", "frame.png"}
+    out = tmp_path / "gif"
+    assert main(["simulate", "--example", "roller", "--duration", "4 ms", "--ramp", "2 ms",
+                 "-o", str(out), "--gif", "--no-plots", "--json"]) == 0
+    assert not (out / "simulation.gif").exists()  # --no-plots wins: no pictures at all
+    out = tmp_path / "gif2"
+    assert main(["simulate", "--example", "roller", "--duration", "4 ms", "--ramp", "2 ms",
+                 "-o", str(out), "--gif", "--json"]) == 0
+    assert (out / "simulation.gif").exists()

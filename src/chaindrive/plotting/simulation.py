@@ -10,7 +10,7 @@ import numpy as np
 
 from .._presenters import register_view
 from ..simulation.run import SimulationResult
-from ._axes import figure_of
+from ._axes import figure_of, subplots
 
 if TYPE_CHECKING:
     from matplotlib.axes import Axes
@@ -44,10 +44,8 @@ def simulation_plot(result: SimulationResult, *, ax: Sequence[Axes] | None = Non
     >>> len(fig.axes)
     4
     """
-    import matplotlib.pyplot as plt
-
-    if ax is None:
-        fig, axes = plt.subplots(2, 2, figsize=(11, 7), sharex=True)
+    if ax is None:  # pyplot only when the program uses it (_axes.subplots)
+        fig, axes = subplots(2, 2, figsize=(11, 7), sharex=True)
         axes = axes.ravel()
     else:
         axes = list(ax)
@@ -153,10 +151,8 @@ def drive_frame_plot(result: SimulationResult, frame: int = -1, *, ax: Axes | No
     >>> fig.axes[0].get_xlabel()
     'x [m]'
     """
-    import matplotlib.pyplot as plt
-
     if ax is None:
-        fig, ax = plt.subplots(figsize=(10, 4))
+        fig, ax = subplots(figsize=(10, 4))
     else:
         fig = figure_of(ax)
     sc = _draw_drive(ax, result, frame if frame >= 0 else len(result.time) + frame)
@@ -198,12 +194,13 @@ def simulation_animation(result: SimulationResult, path: str | os.PathLike[str],
     ...     Image.open(out).n_frames
     5
     """
-    import matplotlib.pyplot as plt
+    import sys
+
     from PIL import Image
 
     n = len(result.time)
     idx = np.unique(np.linspace(0, n - 1, min(frames, n)).astype(int))
-    fig, ax = plt.subplots(figsize=(10, 4))
+    fig, ax = subplots(figsize=(10, 4))
     sc, marks, chain = _draw_drive_parts(ax, result, idx[0])
     fig.colorbar(sc, ax=ax, label="link tension [kN]")
     # what moves, in the drawing order of _draw_drive: each wheel's seat marks and
@@ -243,7 +240,8 @@ def simulation_animation(result: SimulationResult, path: str | os.PathLike[str],
         probe.paste(im, (0, j * h))
     palette = probe.quantize(colors=255, method=Image.Quantize.FASTOCTREE)
     frames_p = [render(k).quantize(palette=palette, dither=Image.Dither.NONE) for k in idx]
-    plt.close(fig)
+    if "matplotlib.pyplot" in sys.modules:  # a pyplot figure (_axes.subplots): let it go
+        sys.modules["matplotlib.pyplot"].close(fig)
     frames_p[0].save(str(path), save_all=True, append_images=frames_p[1:],
                      duration=int(1000 / fps), loop=0)
     return str(path)

@@ -111,7 +111,7 @@ def _place(model: SimulationModel, exact: bool = False):
 
 def _solve_offset(excess, n, p, adj):
     """Offset of the adjusting wheel along its line that makes ``excess`` zero [m]."""
-    from scipy.optimize import brentq
+    from .._roots import brentq
 
     lo, hi = -0.2 * n * p, 0.2 * n * p
     try:
@@ -249,7 +249,7 @@ def _place_exact(model: SimulationModel):
     every link ``p``; round link chain: ``t + d``, ``t − d`` alternating; seated pins on
     the polygon vertices, free pins on the tangent lines) closes exactly (Brent's method).
     """
-    from scipy.optimize import brentq
+    from .._roots import brentq
 
     t, n = model.pitch, model.links
     radii = model.signed_radii()
