@@ -43,11 +43,8 @@ def self_regulating_plot(result: SelfRegulatingDriveResult, *, ax: Sequence[Axes
 
     Examples
     --------
-    >>> from chaindrive.self_regulating import self_regulating_drive
-    >>> r = self_regulating_drive(pitch=0.0254, teeth_carrier=19, teeth_fixed=38,
-    ...     carrier_centre=(0.6, 0.0), fixed_centre=(0.0, 0.0), links=76, torque=300.0,
-    ...     carrier_driving=True, mass_per_length=2.7, pivot=(0.66, -0.045), weight=400.0,
-    ...     weight_offset=(0.08, 0.0), numerical=False)
+    >>> from chaindrive.self_regulating import example_drive
+    >>> r = example_drive()  # self_regulating_drive's example, closed forms only
     >>> len(self_regulating_plot(r).axes)  # the carrier's weight gives its frequency panel
     6
     """

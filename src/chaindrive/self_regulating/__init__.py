@@ -60,7 +60,7 @@ ch. 1 (catenary and the parabolic length excess).
 
 from . import statics as _statics
 from .equilibrium import CarrierGeometry, rational_pivot, solve_equilibrium
-from .grid import SelfRegulatingDriveResult, self_regulating_drive
+from .grid import SelfRegulatingDriveResult, example_drive, self_regulating_drive
 from .sag import (
     carrier_natural_frequency,
     pivot_offset_for_coefficient,
@@ -80,4 +80,5 @@ __all__ = [
     "rational_pivot",
     "self_regulating_drive",
     "SelfRegulatingDriveResult",
+    "example_drive",
 ]

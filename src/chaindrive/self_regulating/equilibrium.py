@@ -89,6 +89,25 @@ class CarrierGeometry:
         length = self.links * self.pitch * (1.0 + np.asarray(elongation, dtype=float))
         return (S1 * ell + S2 * ell + 0.5 * (S1 + S2) * (length - 2.0 * ell)) / self.axial_stiffness
 
+    @classmethod
+    def example(cls) -> CarrierGeometry:
+        """The example drive of the doctests: 25.4 mm pitch, 19/38 teeth,
+        76 links, carrier 0.6 m from the fixed wheel on a pivot at (0.66, -0.045) m,
+        400 N carrier weight 80 mm off its centre, 2.7 kg/m chain.
+
+        Examples
+        --------
+        >>> CarrierGeometry.example().links
+        76
+        """
+        return cls(pitch=0.0254, bar_diameter=None, teeth_carrier=19, teeth_fixed=38,
+                   carrier_centre=np.array([0.6, 0.0]), fixed_centre=np.zeros(2), links=76,
+                   carrier_driving=True, travel="ccw", kind="pivot",
+                   pivot=np.array([0.66, -0.045]), direction=None,
+                   torque_reaction="carrier", weight=400.0,
+                   weight_offset=np.array([0.08, 0.0]), stiffness=0.0, preload=0.0,
+                   mass_per_length=2.7)
+
     def carrier_kw(self) -> dict[str, Any]:
         return dict(kind=self.kind, pivot=None if self.pivot is None else tuple(self.pivot),
                     direction=None if self.direction is None else tuple(self.direction))
@@ -283,12 +302,7 @@ def solve_equilibrium(geometry: CarrierGeometry, effective_pull: float, elongati
 
     Examples
     --------
-    >>> geo = CarrierGeometry(pitch=0.0254, bar_diameter=None, teeth_carrier=19,
-    ...     teeth_fixed=38, carrier_centre=np.array([0.6, 0.0]), fixed_centre=np.zeros(2),
-    ...     links=76, carrier_driving=True, travel="ccw", kind="pivot",
-    ...     pivot=np.array([0.66, -0.045]), direction=None, torque_reaction="carrier",
-    ...     weight=400.0, weight_offset=np.array([0.08, 0.0]), stiffness=0.0, preload=0.0,
-    ...     mass_per_length=2.7)
+    >>> geo = CarrierGeometry.example()
     >>> q, a, S2 = solve_equilibrium(geo, 3000.0, 0.0)
     >>> round(a, 4), round(S2, 1)
     (0.5983, 1056.2)
@@ -452,12 +466,7 @@ def rational_pivot(geometry: CarrierGeometry, coefficient: float,
 
     Examples
     --------
-    >>> geo = CarrierGeometry(pitch=0.0254, bar_diameter=None, teeth_carrier=19,
-    ...     teeth_fixed=38, carrier_centre=np.array([0.6, 0.0]), fixed_centre=np.zeros(2),
-    ...     links=76, carrier_driving=True, travel="ccw", kind="pivot",
-    ...     pivot=np.array([0.66, -0.045]), direction=None, torque_reaction="carrier",
-    ...     weight=400.0, weight_offset=np.array([0.08, 0.0]), stiffness=0.0, preload=0.0,
-    ...     mass_per_length=2.7)
+    >>> geo = CarrierGeometry.example()
     >>> pivot, dev = rational_pivot(geo, 0.1, (0.0, 0.03))
     >>> pivot.round(4).tolist(), dev < 0.01
     ([0.621, -0.0627], True)

@@ -30,6 +30,7 @@ from .statics import _SOURCE, GRAVITY, _cross, _kind, _point, _reaction, _unit
 __all__ = [
     "SelfRegulatingDriveResult",
     "self_regulating_drive",
+    "example_drive",
 ]
 
 @dataclass(frozen=True)
@@ -459,6 +460,36 @@ def self_regulating_drive(*, pitch: float, teeth_carrier: int, teeth_fixed: int,
         centre_distance_difference=da, slack_tension_difference=dS,
         checks=tuple(checks), warnings=tuple(notes),
     )
+
+
+def example_drive(**changes: Any) -> SelfRegulatingDriveResult:
+    """The example drive of :func:`self_regulating_drive`'s docstring (closed forms only).
+
+    Parameters
+    ----------
+    **changes
+        Arguments of :func:`self_regulating_drive` that replace the example's.
+
+    Returns
+    -------
+    SelfRegulatingDriveResult
+
+    References
+    ----------
+    As :func:`self_regulating_drive`.
+
+    Examples
+    --------
+    >>> example_drive().psi.shape
+    (7, 4)
+    """
+    kwargs: dict[str, Any] = dict(
+        pitch=0.0254, teeth_carrier=19, teeth_fixed=38, carrier_centre=(0.6, 0.0),
+        fixed_centre=(0.0, 0.0), links=76, torque=300.0, carrier_driving=True,
+        mass_per_length=2.7, pivot=(0.66, -0.045), weight=400.0, weight_offset=(0.08, 0.0),
+        numerical=False)
+    kwargs.update(changes)
+    return self_regulating_drive(**kwargs)
 
 
 def _sag_ratio(chord, inclination, tension, mass_per_length):
