@@ -62,6 +62,29 @@ _POCKET_DRIVE = _T('wheels', [('name', 'drive'),
                        ('driving', True)], array=True)
 
 
+
+def _pocket_tensioned(span: str, far: tuple[str, str], mass: tuple[Any, ...],
+                      force: tuple[Any, ...]) -> tuple[_T, _T, _T]:
+    """The round-link drives' loop after the drive wheel: a 6-pocket spring-loaded idler
+    at (1.2, -0.4) m pressing ``span`` down, the far pocket wheel ``(name, x)`` and the
+    tensioner table (``mass`` and ``force`` entries with their comments)."""
+    return (
+        _T('wheels', [('name', 'tensioner'),
+            ('kind', 'idler'),
+            ('teeth', 6, f'pocket idler inside the loop, pressing the {span} down'),
+            ('position', ['1.2 m', '-0.4 m'])], array=True),
+        _T('wheels', [('name', far[0]),
+            ('kind', 'pocket_wheel'),
+            ('teeth', 8),
+            ('position', [far[1], '0 m'])], array=True),
+        _T('tensioner', [('wheel', 'tensioner'),
+            mass,
+            ('stiffness', '200 kN/m'),
+            ('kind', 'spring'),
+            ('direction', [0, -1], 'travel that takes up slack'),
+            force]),
+    )
+
 TEMPLATES: dict[str, str] = {
     'roller': _template(
         (),
@@ -97,20 +120,8 @@ TEMPLATES: dict[str, str] = {
         _T('load', [('power', '25 kW'),
             ('service_factor', 1.5, 'heavy shock')]),
         _POCKET_DRIVE,
-        _T('wheels', [('name', 'tensioner'),
-            ('kind', 'idler'),
-            ('teeth', 6, 'pocket idler inside the loop, pressing the slack span down'),
-            ('position', ['1.2 m', '-0.4 m'])], array=True),
-        _T('wheels', [('name', 'return'),
-            ('kind', 'pocket_wheel'),
-            ('teeth', 8),
-            ('position', ['4.05 m', '0 m'])], array=True),
-        _T('tensioner', [('wheel', 'tensioner'),
-            ('mass', '60 kg', 'reduced to the tensioner axis (the tensioner paper)'),
-            ('stiffness', '200 kN/m'),
-            ('kind', 'spring'),
-            ('direction', [0, -1], 'travel that takes up slack'),
-            ('force', '5 kN')]),
+        *_pocket_tensioned('slack span', ('return', '4.05 m'), ('mass', '60 kg', 'reduced to the tensioner axis (the tensioner paper)'),
+                           ('force', '5 kN')),
         _T('guides', [('wheel', 'drive'),
             ('kind', 'tangential', 'guide line tangent to the pitch circle, H = R (Dolipiński et al.)'),
             ('end_distance', '0.256 m', 'l, Dolipiński et al. worked case')], array=True),
@@ -125,20 +136,8 @@ TEMPLATES: dict[str, str] = {
         _T('load', [('power', '40 kW', 'installed power of the head drive'),
             ('service_factor', 1.5, 'heavy shock')]),
         _POCKET_DRIVE,
-        _T('wheels', [('name', 'tensioner'),
-            ('kind', 'idler'),
-            ('teeth', 6, 'pocket idler inside the loop, pressing the return strand down'),
-            ('position', ['1.2 m', '-0.4 m'])], array=True),
-        _T('wheels', [('name', 'tail'),
-            ('kind', 'pocket_wheel'),
-            ('teeth', 8),
-            ('position', ['30 m', '0 m'])], array=True),
-        _T('tensioner', [('wheel', 'tensioner'),
-            ('mass', '60 kg', 'reduced to the tensioner axis'),
-            ('stiffness', '200 kN/m'),
-            ('kind', 'spring'),
-            ('direction', [0, -1], 'travel that takes up slack'),
-            ('force', '5 kN', 'spring force when the unstretched chain just fits')]),
+        *_pocket_tensioned('return strand', ('tail', '30 m'), ('mass', '60 kg', 'reduced to the tensioner axis'),
+                           ('force', '5 kN', 'spring force when the unstretched chain just fits')),
         _T('conveyor', [('chain_friction', 0.4, 'chain on steel pans, dry (chain makers: 0.35-0.45)'),
             ('material_friction', 0.6, 'coal on steel pans'),
             ('material_load', '100 kg/m', 'or capacity = "300 t/h" (material load = capacity / chain speed)'),
