@@ -18,6 +18,7 @@ middle plane is z = 0; a wheel's hub points to +z.
 from __future__ import annotations
 
 import math
+from collections.abc import Iterator
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -466,19 +467,25 @@ def _section(section: tuple[int, int] | None, total: int) -> tuple[int, int]:
     return first, count
 
 
+def _links(pose: Pose, first: int, count: int) -> Iterator[tuple[int, np.ndarray, np.ndarray, np.ndarray, np.ndarray]]:
+    """``(k, a, b, b − a, midpoint)`` of links ``first … first + count − 1`` (mod n) of the
+    pose: link ``k`` runs from pin ``a = pins[k]`` to ``b = pins[k + 1]`` [m]."""
+    pins = pose.pins
+    n = len(pins)
+    for i in range(first, first + count):
+        k = i % n
+        a, b = pins[k], pins[(k + 1) % n]
+        yield k, a, b, b - a, 0.5 * (a + b)
+
+
 def _roller_chain_parts(pose: Pose, dims: RollerLinkDimensions, first: int, count: int) -> list[PartPlacement]:
     from .links import roller_chain_parts_layout
 
-    pins = pose.pins
-    n = len(pins)
+    n = len(pose.pins)
     layout = roller_chain_parts_layout(dims)
     out = []
-    for i in (first + j for j in range(count)):
-        k = i % n
-        a, b = pins[k], pins[(k + 1) % n]
-        u = b - a
+    for k, a, b, u, mid in _links(pose, first, count):
         angle = math.atan2(u[1], u[0])
-        mid = 0.5 * (a + b)
         inner = k % 2 == 0 and not (n % 2 and k == n - 1)
         kind = "inner" if inner else "outer"
         start = mid - 0.5 * dims.pitch * u / np.hypot(*u)
@@ -495,16 +502,10 @@ def _roller_chain_parts(pose: Pose, dims: RollerLinkDimensions, first: int, coun
 
 
 def _round_chain_parts(pose: Pose, dims: RoundLinkDimensions, first: int, count: int) -> list[PartPlacement]:
-    pins = pose.pins
-    n = len(pins)
     out = []
-    for i in (first + j for j in range(count)):
-        k = i % n
-        a, b = pins[k], pins[(k + 1) % n]
-        u = b - a
+    for k, _a, _b, u, mid in _links(pose, first, count):
         chord = float(np.hypot(*u))
         horizontal = abs(chord - dims.horizontal_chord) < abs(chord - dims.vertical_chord)
-        mid = 0.5 * (a + b)
         m = placement_matrix((mid[0], mid[1], 0.0), math.atan2(u[1], u[0]), upright=horizontal)
         kind = "horizontal" if horizontal else "vertical"
         out.append(PartPlacement(f"link {k:04d} {kind}", "chain", "round link", m,
