@@ -225,6 +225,45 @@ def motion_rows(summary: Mapping[str, Any]) -> list[tuple[str, str]]:
     ]
 
 
+def motion_title(what: str, radius: float, omega: float) -> str:
+    """Title of the ``kinematics`` and ``crawler`` tables: ``what``, the pitch radius and the
+    wheel speed in rad/s and rpm.
+
+    >>> motion_title("crawler drive chain (z = 9", 0.1, 2.0)
+    'crawler drive chain (z = 9, R = 100.000 mm, omega = 2 rad/s = 19.0986 rpm'
+    """
+    from ..units import angular_velocity_to_rpm
+
+    return f"{what}, R = {mm(radius):.3f} mm, omega = {omega:.6g} rad/s = {angular_velocity_to_rpm(omega):.6g} rpm"
+
+
+def motion_json(summary: Mapping[str, Any], keys: Sequence[str], arrays: Mapping[str, Any],
+                after: Mapping[str, Any] | None = None) -> None:
+    """Print the ``--json`` of ``kinematics`` and ``crawler``: the sampled ``arrays``, the
+    summary (its declared ``keys`` first), then ``after``."""
+    ordered = {k: summary[k] for k in keys}
+    ordered.update({k: v for k, v in summary.items() if k not in ordered})
+    echo_json({**arrays, "summary": ordered, **(after or {})})
+
+
+def check_plot(plot: Any, force: bool) -> None:
+    """Refuse a ``--plot`` file before any work: a figure suffix, not there unless ``--force``."""
+    if plot is not None:
+        from .._io import FIGURE_SUFFIXES, check_output_path
+
+        check_output_path(plot, FIGURE_SUFFIXES, option="--plot", force=force)
+
+
+def save_plot(fig: Any, plot: Any, force: bool) -> None:
+    """Write the ``--plot`` figure (120 dpi) and close it."""
+    import matplotlib.pyplot as plt
+
+    from .._io import save_figure
+
+    save_figure(fig, plot, option="--plot", dpi=120, force=force)
+    plt.close(fig)
+
+
 def echo_json(obj: Any) -> None:
     """Print ``obj`` as JSON (numpy converted), to stdout."""
     sys.stdout.write(json.dumps(jsonable(obj), indent=2) + "\n")

@@ -15,14 +15,16 @@ import typer
 from ..display import mm
 from ..errors import InputError
 from ..limits import MAX_POINTS, MAX_TEETH
-from ..units import angular_velocity_to_rpm
 from .app import (
     app,
-    echo_json,
+    check_plot,
     force_option,
+    motion_json,
     motion_rows,
+    motion_title,
     print_rows,
     quantity,
+    save_plot,
     unit_help,
     wheel_speed,
 )
@@ -73,10 +75,7 @@ def crawler_command(
     """
     from ..kinematics.crawler import SUMMARY_KEYS, crawler_drive
 
-    if plot is not None:
-        from .._io import FIGURE_SUFFIXES, check_output_path
-
-        check_output_path(plot, FIGURE_SUFFIXES, option="--plot", force=force)
+    check_plot(plot, force)
     if (chain is None) == (pitch is None):
         raise InputError("give exactly one of --chain (e.g. 16B) and --pitch (t > 0 m)")
     if chain is not None:
@@ -99,22 +98,13 @@ def crawler_command(
     if plot is not None:
         other = crawler_drive(t, teeth, w, with_guide=not guide, **dict(kw, points=max(points, 361)))
         main = r if points >= 361 else crawler_drive(t, teeth, w, with_guide=guide, **dict(kw, points=361))
-        from .._io import save_figure
         from ..plotting.crawler import crawler_plot
 
-        fig = crawler_plot([main, other] if guide else [other, main])
-        save_figure(fig, plot, option="--plot", dpi=120, force=force)
-        import matplotlib.pyplot as plt
-
-        plt.close(fig)
+        save_plot(crawler_plot([main, other] if guide else [other, main]), plot, force)
     if as_json:
-        summary = {k: r.summary[k] for k in SUMMARY_KEYS}
-        summary.update({k: v for k, v in r.summary.items() if k not in summary})
-        out = {"psi": r.psi, "displacement": r.displacement, "velocity": r.velocity,
-               "acceleration": r.acceleration, "summary": summary}
-        if r.force is not None:
-            out["force"] = r.force
-        echo_json(out)
+        motion_json(r.summary, SUMMARY_KEYS, {"psi": r.psi, "displacement": r.displacement,
+                    "velocity": r.velocity, "acceleration": r.acceleration},
+                    None if r.force is None else {"force": r.force})
         return
     s = r.summary
     what = "tangent guide" if guide else "no guide"
@@ -130,7 +120,7 @@ def crawler_command(
         ]
     if "guide_reaction_max" in s:
         rows.append(("largest guide reaction at the guide end, T tan(phi1)", f"{s['guide_reaction_max']:.6g} N"))
-    print_rows(f"crawler drive chain (t = {mm(r.pitch):g} mm, z = {r.teeth}, R = {mm(r.radius):.3f} mm, "
-               f"omega = {r.angular_velocity:.6g} rad/s = {angular_velocity_to_rpm(r.angular_velocity):.6g} rpm): {what}", rows)
+    title = motion_title(f"crawler drive chain (t = {mm(r.pitch):g} mm, z = {r.teeth}", r.radius, r.angular_velocity)
+    print_rows(f"{title}): {what}", rows)
     if plot is not None:
         print(f"wrote {plot}")

@@ -14,14 +14,16 @@ import typer
 from ..display import mm
 from ..errors import InputError
 from ..limits import MAX_POINTS, MAX_TEETH
-from ..units import angular_velocity_to_rpm
 from .app import (
     app,
-    echo_json,
+    check_plot,
     force_option,
+    motion_json,
     motion_rows,
+    motion_title,
     print_rows,
     quantity,
+    save_plot,
     unit_help,
     wheel_speed,
 )
@@ -61,10 +63,7 @@ def kinematics_command(
     from ..kinematics import chain_entry
     from ..kinematics.entry import SUMMARY_KEYS
 
-    if plot is not None:
-        from .._io import FIGURE_SUFFIXES, check_output_path
-
-        check_output_path(plot, FIGURE_SUFFIXES, option="--plot", force=force)
+    check_plot(plot, force)
     t, d = _chain_geometry(chain, pitch, bar_diameter, roller)
     w = wheel_speed(speed, pitch=t, teeth=teeth, link_chain=d is not None)
     l = quantity(guide_end, "m", "guide-end")
@@ -79,26 +78,18 @@ def kinematics_command(
         res = [chain_entry(t, teeth, w, entry=e, **common) for e in ("free", "chordal", "tangential")]
         if r.entry == "guided":
             res.append(chain_entry(t, teeth, w, guide_height=h, **common))
-        from .._io import save_figure
         from ..plotting.kinematics import kinematics_plot
 
-        fig = kinematics_plot(res)
-        save_figure(fig, plot, option="--plot", dpi=120, force=force)
-        import matplotlib.pyplot as plt
-
-        plt.close(fig)
+        save_plot(kinematics_plot(res), plot, force)
     if as_json:
-        summary = {k: r.summary[k] for k in SUMMARY_KEYS}
-        summary.update({k: v for k, v in r.summary.items() if k not in summary})
-        echo_json({"phi": r.phi, "x": r.x, "velocity": r.velocity,
-                   "acceleration": r.acceleration, "summary": summary})
+        motion_json(r.summary, SUMMARY_KEYS, {"phi": r.phi, "x": r.x, "velocity": r.velocity,
+                                              "acceleration": r.acceleration})
         return
     what = f"{r.entry} entry" + (f", H = {mm(r.guide_height):.2f} mm" if r.guide_height is not None else "")
     if r.guide_end_distance is not None:
         what += f", l = {mm(r.guide_end_distance):.1f} mm"
-    print_rows(f"chain entry kinematics ({r.chain_type} chain, z = {r.teeth}, R = {mm(r.radius):.3f} mm, "
-               f"omega = {r.angular_velocity:.6g} rad/s = {angular_velocity_to_rpm(r.angular_velocity):.6g} rpm, "
-               f"model {r.model}): {what}", motion_rows(r.summary))
+    title = motion_title(f"chain entry kinematics ({r.chain_type} chain, z = {r.teeth}", r.radius, r.angular_velocity)
+    print_rows(f"{title}, model {r.model}): {what}", motion_rows(r.summary))
     if plot is not None:
         print(f"wrote {plot}")
 
