@@ -65,19 +65,9 @@ def _contacts(v, x, y, vx, vy, fx, fy, wsv, wpv, gdv, tabv, gcache, cand, ncand,
             C.wheel_candidates(x[:, v], y[:, v], cx, cy, rc * rc, cand[v], gcache[v], ncand[v], w)
         for ic in range(ncand[v, w]):
             i = cand[v, w, ic]
-            qx = x[i, v] - cx
-            qy = y[i, v] - cy
-            r2 = qx * qx + qy * qy
-            if r2 > geo[8] or r2 < geo[9]:
-                continue
-            if geo[5]:
-                pen, nx, ny, _curv = C.rim_gap(qx, qy, r2, geo[4], 0.0)
-            else:
-                g, ex, ey = C.nearest_seat(tabv, w, gcache[v, w, i], geo[6],
-                                         qx * geo[2] + qy * geo[3], -qx * geo[3] + qy * geo[2],
-                                         geo[7])
-                gcache[v, w, i] = g
-                pen, nx, ny, _curv = C.seat_normal(qx, qy, ex, ey, geo, rr, 0.0)
+            pen, nx, ny, _curv, qx, qy, g = C.pin_contact(x[i, v], y[i, v], cx, cy, geo, tabv, w,
+                                                          gcache[v, w, i], rr, 0.0)
+            gcache[v, w, i] = g
             if pen <= 0.0:
                 continue
             _fn, cfx, cfy = C.penalty_contact(kc, cc, mu, dtref, inv_m, veps, pen, nx, ny,

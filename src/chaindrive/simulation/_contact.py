@@ -25,7 +25,7 @@ from numba import njit
 from . import _layout as L
 
 __all__ = ["friction", "guide_candidates", "link_force", "guide_penetration", "material_drag", "nearest_pin",
-           "nearest_seat", "penalty_contact", "rim_gap", "seat_normal", "rebuild_every", "seat_penetration",
+           "nearest_seat", "pin_contact", "penalty_contact", "rim_gap", "seat_normal", "rebuild_every", "seat_penetration",
            "wheel_candidates", "wheel_geometry", "wheel_profile"]
 
 
@@ -381,6 +381,29 @@ def seat_normal(qx, qy, ex, ey, geo, rr, reach):
     if pen <= -reach:
         return pen, 0.0, 0.0, 0.0
     return pen, na * erx - nb * ery, na * ery + nb * erx, curv
+
+
+@njit(cache=True, fastmath=False, inline="always")
+def pin_contact(px, py, cx, cy, geo, tab, w, g0, rr, reach):
+    """The roller at ``(px, py)`` against wheel ``w`` centred at ``(cx, cy)`` (``geo`` from
+    :func:`wheel_geometry`, ``g0`` its last seat): ``(pen, nx, ny, curvature, qx, qy, g)``,
+    :func:`rim_gap` on a toothless idler, else :func:`seat_normal` in the nearest seat ``g``
+    (:func:`nearest_seat`); ``pen = −inf`` outside the annulus where contact is possible.
+    The one contact search of both integrators (``_kernel``, ``_implicit``). Scalars
+    besides the seat table, as :func:`seat_normal`.
+    """
+    qx = px - cx
+    qy = py - cy
+    r2 = qx * qx + qy * qy
+    if r2 > geo[8] or r2 < geo[9]:
+        return -math.inf, 0.0, 0.0, 0.0, qx, qy, g0
+    if geo[5]:
+        pen, nx, ny, curv = rim_gap(qx, qy, r2, geo[4], reach)
+        return pen, nx, ny, curv, qx, qy, g0
+    # the seat of the last step moved to the nearest one
+    g, ex, ey = nearest_seat(tab, w, g0, geo[6], qx * geo[2] + qy * geo[3], -qx * geo[3] + qy * geo[2], geo[7])
+    pen, nx, ny, curv = seat_normal(qx, qy, ex, ey, geo, rr, reach)
+    return pen, nx, ny, curv, qx, qy, g
 
 
 @njit(cache=True, fastmath=False, inline="always")

@@ -355,18 +355,9 @@ def integrate_implicit(pos: np.ndarray, vel: np.ndarray, force: np.ndarray, work
                 cinfo[w, ic, C_BETA] = 0.0
                 cinfo[w, ic, C_S] = 0.0
                 i = cand[w, ic]
-                qx = x[i] - cx
-                qy = y[i] - cy
-                r2 = qx * qx + qy * qy
-                if r2 > geo[8] or r2 < geo[9]:
-                    continue
-                if geo[5]:
-                    pen, nx, ny, curv = C.rim_gap(qx, qy, r2, geo[4], margin)
-                else:
-                    g, ex, ey = C.nearest_seat(tab, w, gcache[w, i], geo[6], qx * geo[2] + qy * geo[3],
-                                             -qx * geo[3] + qy * geo[2], geo[7])
-                    gcache[w, i] = g
-                    pen, nx, ny, curv = C.seat_normal(qx, qy, ex, ey, geo, rr, margin)
+                pen, nx, ny, curv, qx, qy, g = C.pin_contact(x[i], y[i], cx, cy, geo, tab, w, gcache[w, i],
+                                                             rr, margin)
+                gcache[w, i] = g
                 if pen <= -margin:
                     continue
                 rvx = vx[i] - (-om * qy + sd * ddx)

@@ -34,11 +34,9 @@ from ._contact import (
     link_force,
     material_drag,
     nearest_pin,
-    nearest_seat,
     penalty_contact,
+    pin_contact,
     rebuild_every,
-    rim_gap,
-    seat_normal,
     wheel_candidates,
     wheel_geometry,
 )
@@ -376,19 +374,9 @@ def integrate(pos, vel, force, work, tension, contact, ws, wp, gd, tab, par, t0,
                 wheel_candidates(x, y, cx, cy, rc * rc, cand, gcache, ncand, w)
             for ic in range(ncand[w]):
                 i = cand[w, ic]
-                qx = x[i] - cx
-                qy = y[i] - cy
-                r2 = qx * qx + qy * qy
-                if r2 > geo[8] or r2 < geo[9]:
-                    continue
-                if geo[5]:
-                    pen, nx, ny, _curv = rim_gap(qx, qy, r2, geo[4], 0.0)
-                else:
-                    # the seat of the last step moved to the nearest one
-                    g, ex, ey = nearest_seat(tab, w, gcache[w, i], geo[6], qx * geo[2] + qy * geo[3],
-                                             -qx * geo[3] + qy * geo[2], geo[7])
-                    gcache[w, i] = g
-                    pen, nx, ny, _curv = seat_normal(qx, qy, ex, ey, geo, rr, 0.0)
+                pen, nx, ny, _curv, qx, qy, g = pin_contact(x[i], y[i], cx, cy, geo, tab, w, gcache[w, i],
+                                                            rr, 0.0)
+                gcache[w, i] = g
                 if pen <= 0.0:
                     continue
                 fn, cfx, cfy = penalty_contact(kc, cc, mu, dtref, inv_m, veps, pen, nx, ny,
