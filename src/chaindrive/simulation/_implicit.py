@@ -249,13 +249,7 @@ def integrate_implicit(pos: np.ndarray, vel: np.ndarray, force: np.ndarray, work
     thh = th * h
     margin = 0.25 * rr
     # separate coordinate arrays; rest lengths per link (no odd/even branch)
-    x = pos[:, 0].copy()
-    y = pos[:, 1].copy()
-    vx = vel[:, 0].copy()
-    vy = vel[:, 1].copy()
-    rest = np.empty(n)
-    for i in range(n):
-        rest[i] = par[K.P_PITCH] if i % 2 == 0 else par[K.P_PITCH2]
+    x, y, vx, vy, rest = K.pin_arrays(pos, vel, par[K.P_PITCH], par[K.P_PITCH2])
     ux = np.empty(n)
     uy = np.empty(n)
     tstar = np.empty(n)
@@ -285,12 +279,8 @@ def integrate_implicit(pos: np.ndarray, vel: np.ndarray, force: np.ndarray, work
     zy = np.zeros((2 * nw, n))
     sq = np.zeros((2 * nw, 2 * nw))
     fq = np.zeros(2 * nw)
-    cand = np.empty((nw, n), np.int64)
-    gcache = np.full((nw, n), -1, np.int64)
-    ncand = np.zeros(nw, np.int64)
+    cand, gcache, ncand, gcand, ngcand = K.candidate_arrays(nw, ng, n)
     cinfo = np.zeros((nw, n, 11))
-    gcand = np.empty((ng, n), np.int64)
-    ngcand = np.zeros(ng, np.int64)
     wtq = np.zeros(nw)
     wsf = np.zeros(nw)
     omu = np.zeros(nw)
@@ -529,9 +519,5 @@ def integrate_implicit(pos: np.ndarray, vel: np.ndarray, force: np.ndarray, work
                         - wp[w, K.W_SC] * ws[w, K.S_SDOT] + wp[w, K.W_SMASS] * (gx * dxw + gy * dyw)
                     ws[w, K.S_SDOT] += h * fs / wp[w, K.W_SMASS]
                 ws[w, K.S_S] += ws[w, K.S_SDOT] * h
-    for i in range(n):
-        pos[i, 0] = x[i]
-        pos[i, 1] = y[i]
-        vel[i, 0] = vx[i]
-        vel[i, 1] = vy[i]
+    K.store_pins(pos, vel, x, y, vx, vy)
     return nrec

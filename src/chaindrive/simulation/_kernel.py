@@ -274,6 +274,36 @@ def record_pins(x, y, vx, vy, fx, fy, hm, rest, k, m, gx, gy, epot, tension, con
     return epot, ekin, egrav
 
 
+@njit(cache=True, fastmath=False, inline="always")
+def pin_arrays(pos, vel, p, p2):
+    """``(x, y, vx, vy, rest)``: the caller's (N, 2) positions and velocities copied into
+    separate coordinate arrays, and the rest length of each link (``p`` from an even pin,
+    ``p2`` from an odd one) — the state layout of both integrators."""
+    n = pos.shape[0]
+    rest = np.empty(n)
+    for i in range(n):
+        rest[i] = p if i % 2 == 0 else p2
+    return pos[:, 0].copy(), pos[:, 1].copy(), vel[:, 0].copy(), vel[:, 1].copy(), rest
+
+
+@njit(cache=True, fastmath=False, inline="always")
+def store_pins(pos, vel, x, y, vx, vy):
+    """Copy the coordinate arrays of :func:`pin_arrays` back into the caller's (N, 2) arrays."""
+    for i in range(pos.shape[0]):
+        pos[i, 0] = x[i]
+        pos[i, 1] = y[i]
+        vel[i, 0] = vx[i]
+        vel[i, 1] = vy[i]
+
+
+@njit(cache=True, fastmath=False, inline="always")
+def candidate_arrays(nw, ng, n):
+    """``(cand, gcache, ncand, gcand, ngcand)``: the pins near each wheel (with their last
+    seat, -1 none yet) and near each guide, filled at the candidate rebuilds."""
+    return (np.empty((nw, n), np.int64), np.full((nw, n), -1, np.int64), np.zeros(nw, np.int64),
+            np.empty((ng, n), np.int64), np.zeros(ng, np.int64))
+
+
 @njit(cache=True, fastmath=False)
 def integrate(pos, vel, force, work, tension, contact, ws, wp, gd, tab, par, t0, nsteps, record_every,
               probes, rec_t, rec_probe, rec_tension, rec_contact, rec_ws, rec_pos, rec_energy,
@@ -303,12 +333,8 @@ def integrate(pos, vel, force, work, tension, contact, ws, wp, gd, tab, par, t0,
     inv_m = 1.0 / m
     nrec = rec_start
     margin = 0.25 * rr
-    cand = np.empty((nw, n), np.int64)
-    gcache = np.full((nw, n), -1, np.int64)
-    ncand = np.zeros(nw, np.int64)
-    # pins near each guide, listed at the same rebuilds as the wheels' candidates
-    gcand = np.empty((ng, n), np.int64)
-    ngcand = np.zeros(ng, np.int64)
+    # pins near each wheel and each guide, listed at the same rebuilds
+    cand, gcache, ncand, gcand, ngcand = candidate_arrays(nw, ng, n)
     # material carried by a pin this step: mass [kg] and the pan's unit tangent
     extra = np.zeros((n, 5))
     countdown = 0
@@ -319,13 +345,7 @@ def integrate(pos, vel, force, work, tension, contact, ws, wp, gd, tab, par, t0,
     # separate coordinate arrays (the caller's (N, 2) arrays copied in and out), rest
     # lengths per link; (fx, fy) hold the contact forces only (zero between steps); link,
     # gravity and damping forces are added in the update loop; `force`, `work` unused
-    x = pos[:, 0].copy()
-    y = pos[:, 1].copy()
-    vx = vel[:, 0].copy()
-    vy = vel[:, 1].copy()
-    rest = np.empty(n)
-    for i in range(n):
-        rest[i] = p if i % 2 == 0 else p2
+    x, y, vx, vy, rest = pin_arrays(pos, vel, p, p2)
     fx = np.zeros(n)
     fy = np.zeros(n)
     wkx = np.zeros(n + 1)
@@ -486,11 +506,7 @@ def integrate(pos, vel, force, work, tension, contact, ws, wp, gd, tab, par, t0,
             fy[i] = 0.0
             contact[i] = 0.0
         advance_wheels(wp, ws, t, dt, gx, gy)
-    for i in range(n):
-        pos[i, 0] = x[i]
-        pos[i, 1] = y[i]
-        vel[i, 0] = vx[i]
-        vel[i, 1] = vy[i]
+    store_pins(pos, vel, x, y, vx, vy)
     return nrec
 
 
