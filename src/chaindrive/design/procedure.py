@@ -27,6 +27,7 @@ design studio and studies call. The steps and the source of each (docs/design.md
 
 from __future__ import annotations
 
+import functools
 import math
 import warnings
 from collections.abc import Callable
@@ -520,8 +521,7 @@ def _screened(chains: list[tuple[Chain, int]], speed: float, method: str | None)
     methods (:func:`chaindrive.rating.branch_powers`: ISO 10823 on its 19-tooth basis times the tooth
     factor) of the whole catalogue in one vectorised call per method. It may differ from the one-chain
     rating (:func:`chaindrive.rating.chain_rating`) in the last digits (:data:`SCREEN_MARGIN`)."""
-    from ..rating import branch_powers, default_method, rating_constants
-    from ..rating.ansi import multi_strand_factor
+    from ..rating import branch_powers, default_method
     from ..rating.iso10823 import REFERENCE_TEETH
 
     basis = {"ansi": None, "iso10823": REFERENCE_TEETH}
@@ -536,14 +536,23 @@ def _screened(chains: list[tuple[Chain, int]], speed: float, method: str | None)
             continue
         z = np.array([chains[i][1] for i in at], dtype=float)
         p = np.array([chains[i][0].pitch for i in at])
-        kp, kr = np.array([rating_constants(chains[i][0].name, name) for i in at]).T
-        k2 = np.array([multi_strand_factor(chains[i][0].strands) for i in at])
+        kp, kr, k2 = np.array([_screen_constants(chains[i][0].name, chains[i][0].strands, name) for i in at]).T
         with warnings.catch_warnings():
             warnings.simplefilter("ignore", ValidityRangeWarning)
             h1, h2 = branch_powers(p, z, speed, plate_constant=kp, roller_constant=kr, basis_teeth=zb)
         for i, rated in zip(at, np.minimum(k2 * h1, k2 * h2), strict=True):
             out[i] = float(rated)
     return out
+
+
+@functools.lru_cache(maxsize=1024)
+def _screen_constants(name: str, strands: int, method: str) -> tuple[float, float, float]:
+    """``(K_p, K_r, K_2)`` of a catalogue chain by a method (:func:`chaindrive.rating.rating_constants`,
+    :func:`chaindrive.rating.ansi.multi_strand_factor`), for :func:`_screened`."""
+    from ..rating import rating_constants
+    from ..rating.ansi import multi_strand_factor
+
+    return (*rating_constants(name, method), float(multi_strand_factor(strands)))
 
 
 def _may_carry(chains: list[tuple[Chain, int]], speed: float, design: float, method: str | None,
