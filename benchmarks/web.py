@@ -92,7 +92,9 @@ def browser_side(n: int) -> dict[str, list[float]] | None:
                 break
             except OSError:
                 time.sleep(0.2)
-        times = {"roller": [], "link": []}
+        times: dict[str, list[float]] = {k + what: [] for what in ("", " in page", " server", " server CPU")
+                                         for k in ("roller", "link")}
+
         with sync_playwright() as p:
             b = p.chromium.launch(executable_path=chromium, args=["--no-sandbox", "--disable-gpu",
                                                                   "--disable-background-networking"])
@@ -106,9 +108,14 @@ def browser_side(n: int) -> dict[str, list[float]] | None:
                         continue
                     count = int(page.get_attribute("body", "data-updates") or 0)
                     t0 = time.perf_counter()
-                    page.fill(f"#{field}", value)
+                    with page.expect_response(lambda r: "/api/design?" in r.url, timeout=30_000) as answer:
+                        page.fill(f"#{field}", value)
                     page.wait_for_selector(f"body[data-updates='{count + 1}']", timeout=30_000)
                     times[kind].append((time.perf_counter() - t0) * 1e3)
+                    times[kind + " in page"].append(float(page.get_attribute("body", "data-edit-ms") or "nan"))
+                    a = answer.value.json()  # the server's own wall and CPU time of this live update
+                    times[kind + " server"].append(float(a.get("elapsed_ms", "nan")))
+                    times[kind + " server CPU"].append(float(a.get("cpu_ms", "nan")))
                     # let the slow part (charts) of this edit arrive before the next edit
                     charts = int(page.get_attribute("body", "data-chart-updates") or 0)
                     try:
