@@ -93,6 +93,11 @@ Steady state (``--steady``, also in the default run): ``steady_state`` of the sa
 from nothing against a long explicit run (benchmarks/_steady.py), printing
 ``steady state, 16B 100 links: X s CPU, within Y % of the reference``.
 
+Batched (``--batched``, also after the scaling): the batched kernel
+(``chaindrive.simulation._batched``, variants as the inner, vectorised dimension) on 64
+variants of the 100-link drive (speed and load drawn at random), printing ``batched, N
+variants: R link-steps/s per core, F of the ceiling``.
+
 Run:  .venv/bin/python benchmarks/simulate.py [--mujoco] [--duration 0.3] [--no-mujoco]
                                               [--quick] [--no-scaling] [--steady]
       .venv/bin/python benchmarks/simulate.py --scaling        (the scaling only)
@@ -480,6 +485,39 @@ def plain_chain_rate(links=5000, steps=4000):
     return best
 
 
+def batched_rate(variants=64, links=100, steps=3000):
+    """Link-steps per second (CPU time) of the batched kernel on ``variants`` variants of
+    the benchmark drive (driver speed 15...25 rad/s and load 100...300 N m drawn at random,
+    each at its own stable step, from its warm start), and its fraction of the point-mass
+    ceiling (:func:`plain_chain_rate`)."""
+    from chaindrive.simulation._batched import empty_batch_records, integrate_batch, stack_tables
+    from chaindrive.simulation.steady import warm_start
+
+    rng = np.random.default_rng(1)
+    states = [warm_start(roller_example(links=links, teeth=17, ramp_time=0.1,
+                                        angular_velocity=float(rng.uniform(15.0, 25.0)),
+                                        load_torque=float(rng.uniform(100.0, 300.0))))
+              for _ in range(variants)]
+    par = np.stack([s.par for s in states])
+    args = [np.stack([getattr(s, a) for s in states]) for a in ("pos", "vel", "ws", "wp", "gd")]
+    args += [stack_tables([K.seat_table(s.wp) for s in states]), par,
+             np.array([s.time for s in states])]
+    recs = empty_batch_records(variants, 1, links, 2)
+    integrate_batch(*[a.copy() for a in args], 10, steps, *recs)  # compile / warm the cache
+    best = 0.0
+    for _ in range(3):
+        run = [a.copy() for a in args]
+        t0 = time.process_time()
+        integrate_batch(*run, steps, steps, *recs)
+        best = max(best, variants * links * steps / (time.process_time() - t0))
+    plain = plain_chain_rate()
+    print(f"batched, {variants} variants: {best:.3g} link-steps/s per core, "
+          f"{best / plain:.2f} of the ceiling ({1e9 / best:.2f} ns per link-step; the "
+          f"point-mass ceiling {plain:.3g}; {links}-link 16B drives, explicit, CPU time, "
+          f"load average {__import__('os').getloadavg()[0]:.1f})", flush=True)
+    return best, plain
+
+
 def scaling(lengths=(100, 500, 1000, 2000, 5000), link_steps=1.5e8):
     """One line per chain length: assembly time and kernel link-steps/s (CPU time) of both
     integrators, and the implicit one's CPU time per simulated second."""
@@ -563,12 +601,17 @@ def main():
                          "links, and the plain point-mass chain")
     ap.add_argument("--no-scaling", action="store_true",
                     help="only the comparison (the default runs both, `make bench`)")
+    ap.add_argument("--batched", action="store_true",
+                    help="only the batched kernel's rate on 64 variants of the drive")
     ap.add_argument("--steady", action="store_true",
                     help="only the steady state against its long reference run "
                          "(benchmarks/_steady.py; also part of the default run)")
     args = ap.parse_args()
     if args.scaling:
         scaling()
+        return
+    if args.batched:
+        batched_rate()
         return
     import sys
     from pathlib import Path
@@ -670,6 +713,7 @@ def main():
     if not args.no_scaling:
         print()
         scaling()
+        batched_rate()
 
 
 def diagnose(model, state, duration, dt, own):

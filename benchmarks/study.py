@@ -129,6 +129,44 @@ def dynamic_study(variants: int, workers: int = 2) -> None:
           f"{os.getloadavg()[0]:.1f} after)", flush=True)
 
 
+def dynamic_per_core(study, count: int = 48) -> None:
+    """CPU time per variant in one process of the study's dynamic outputs: the per-variant
+    steady state (``steady_state``, the linearly implicit integrator, what ``dynamics.*``
+    runs) against the batched one (``steady_states``: the explicit batched kernel, the
+    variants stepped together), on the first ``count`` variants (drives built outside the
+    clock)."""
+    import copy
+    import warnings
+
+    from chaindrive.drive.project import project_from_mapping
+    from chaindrive.simulation import model_from_drive
+    from chaindrive.simulation.steady import steady_state
+    from chaindrive.simulation.steady_batch import steady_states
+    from chaindrive.study.spec import set_path
+
+    models = []
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        for row in study.rows()[:count]:
+            data = copy.deepcopy(study.base)
+            for path, value in study.variant_inputs(row).items():
+                set_path(data, path, value)
+            models.append(model_from_drive(project_from_mapping(data, filename="variant")))
+    steady_states(models[:2], periods=2)  # compiled code loaded outside the clock
+    steady_state(models[0], periods=2)
+    c0 = time.process_time()
+    batched = steady_states(models)
+    c1 = time.process_time()
+    single = [steady_state(m) for m in models]
+    c2 = time.process_time()
+    diff = [abs(b.peak_tension / s.peak_tension - 1.0) for b, s in zip(batched, single, strict=True)]
+    print(f"dynamic outputs in one process, {len(models)} variants: per-variant steady state "
+          f"{1e3 * (c2 - c1) / len(models):.0f} ms CPU per variant, batched (explicit) "
+          f"{1e3 * (c1 - c0) / len(models):.0f} ms; peak tension batched/per-variant: mean "
+          f"|difference| {100 * sum(diff) / len(diff):.1f} % (the span vibration's scatter; "
+          f"load average {os.getloadavg()[0]:.1f})", flush=True)
+
+
 def _per_core(study, count: int, batched: bool) -> float:
     from chaindrive.study.batch import evaluate_columns
 
@@ -197,6 +235,8 @@ def main() -> None:
     print(f"machine: {os.cpu_count()} cores, load average {os.getloadavg()[0]:.1f}")
     if args.dynamic:
         dynamic_study(args.dynamic)
+        dynamic_per_core(parse_study(DYNAMIC.format(samples=args.dynamic), filename="dynamic.toml",
+                                     folder=ROOT / "examples"))
         return
     c0 = time.process_time()
     per_core_rates()

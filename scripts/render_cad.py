@@ -19,7 +19,28 @@ from chaindrive.drive.project import load_project  # noqa: E402
 from chaindrive.plotting.cad import assembly_plot  # noqa: E402
 
 OUT = Path(__file__).resolve().parents[1] / "docs" / "img"
-VIEWS = {"roller_industrial.toml": (30, -75), "multi_wheel.toml": (40, -70), "mining_conveyor.toml": (65, -90)}
+VIEWS = {"roller_industrial.toml": (30, -75), "multi_wheel.toml": (40, -70), "mining_conveyor.toml": (30, -65)}
+#: Close-ups: (example, wheel, radius round its centre [m], elevation, azimuth).
+DETAILS = [("mining_conveyor.toml", "tensioner", 0.24, 35, -100), ("roller_industrial.toml", "motor", 0.17, 40, -110)]
+
+
+def detail(name: str, wheel: str, radius: float, elev: float, azim: float) -> Path:
+    """Picture of the parts within ``radius`` of a wheel's centre (the wheel and its chain)."""
+    import dataclasses
+
+    import numpy as np
+
+    a = drive_assembly(load_project(example_path(name)))
+    centre = next(p.matrix[:2, 3] for p in a.parts if p.name == f"wheel {wheel}")
+    parts = tuple(p for p in a.parts if p.group in ("wheels", "chain")
+                  and float(np.hypot(*(p.matrix[:2, 3] - centre))) < radius)
+    keys = {p.shape for p in parts}
+    sub = dataclasses.replace(a, parts=parts, shapes={k: v for k, v in a.shapes.items() if k in keys},
+                              title=f"{a.title}: wheel {wheel}")
+    fig = assembly_plot(sub, tessellate(sub), elevation=elev, azimuth=azim)
+    path = OUT / f"cad_{Path(name).stem}_{wheel}.png"
+    fig.savefig(path, dpi=110, bbox_inches="tight")
+    return path
 
 
 def main(names: list[str]) -> None:
@@ -31,6 +52,9 @@ def main(names: list[str]) -> None:
         path = OUT / f"cad_{Path(name).stem}.png"
         fig.savefig(path, dpi=110, bbox_inches="tight")
         print("wrote", path)
+    for name, wheel, radius, elev, azim in DETAILS:
+        if not names or name in names:
+            print("wrote", detail(name, wheel, radius, elev, azim))
 
 
 if __name__ == "__main__":

@@ -17,51 +17,23 @@ from typing import TYPE_CHECKING, Any
 from ._finite import finite_guard
 from ._results import Result, quantity
 from ._validation import check_positive, check_teeth
-from .errors import InfeasibleError, InputError, UnknownNameError, ValidityRangeWarning
+from .errors import InfeasibleError, InputError, ValidityRangeWarning
 from .rating import ChainRating, _scalar, chain_rating
-from .rating.ansi import (
-    HP,
-    LUBRICATION_REGIONS,
-    LUBRICATION_TYPES,
-    ansi_constants,
-    ansi_link_plate_power,
-    ansi_rated_power,
-    ansi_roller_bushing_power,
-    galling_power,
-    galling_speed,
-    galling_tension,
-    lubrication_limits,
-    lubrication_region,
-    lubrication_type,
-    multi_strand_factor,
-    tooth_correction_factor,
-)
+from .rating import ansi as _ansi
+from .rating.ansi import *  # noqa: F403 - re-exported for existing callers
 from .units import angular_velocity_to_rpm
 
 if TYPE_CHECKING:
     from .chains import Chain
 
 __all__ = [
-    "HP",
-    "ansi_link_plate_power",
-    "ansi_roller_bushing_power",
-    "ansi_rated_power",
-    "ansi_constants",
-    "multi_strand_factor",
-    "tooth_correction_factor",
-    "galling_speed",
-    "galling_tension",
-    "galling_power",
-    "lubrication_region",
-    "lubrication_limits",
-    "lubrication_type",
-    "LUBRICATION_REGIONS",
-    "LUBRICATION_TYPES",
     "ChainRating",
     "chain_rating",
     "Candidate",
     "select",
 ]
+# the rating's names, re-exported for existing callers (one list: chaindrive.rating.ansi's)
+__all__ += _ansi.__all__
 
 
 # --------------------------------------------------------------------------- selection
@@ -188,9 +160,10 @@ def select(power: float, speed: float, ratio: float, *, service_factor: float = 
     centre_distance : float, optional
         Wanted centre distance [m]; default 40 pitches of each chain (ISO 10823:
         30 … 50). Chains whose sprockets would overlap there are left out.
-    family : {None, "ansi", "iso606"}
-        Catalogue family; ``None`` takes both, an ANSI chain and its ISO 606 twin
-        being one row with both names.
+    family : {None, "ansi", "iso606"} or str
+        Catalogue family; ``None`` takes every roller-chain family (an ANSI chain and
+        its ISO 606 twin being one row with both names), a further family
+        (:func:`chaindrive.chains.register_family`) by its name.
     strands : tuple of int
         Strand counts admitted (1 … 4).
     min_static_safety : float
@@ -251,7 +224,7 @@ def select(power: float, speed: float, ratio: float, *, service_factor: float = 
                   "chaindrive.design.design_drive (the one design procedure of select, the studio and "
                   "studies; the service factor from a duty class, the analysis's static safety)",
                   FutureWarning, stacklevel=2)
-    from .chains import catalogue, equivalent_names
+    from .chains import catalogue, check_roller_family, equivalent_names
     from .layout import centre_distance_approx, chain_length_approx, even_links
 
     P = _scalar("power", power, check_positive, "W")
@@ -266,12 +239,10 @@ def select(power: float, speed: float, ratio: float, *, service_factor: float = 
     z2 = int(round(z1 * i))
     a_wanted = None if centre_distance is None else _scalar("centre_distance", centre_distance, check_positive, "m")
     s_min = _scalar("min_static_safety", min_static_safety, check_positive, "-")
-    if family not in (None, "ansi", "iso606"):
-        raise UnknownNameError(f"unknown roller-chain family {family!r}; valid: None, 'ansi', 'iso606'")
+    fams = check_roller_family(family)
     allowed = tuple(strands)
     if not allowed or any(isinstance(k, bool) or k not in (1, 2, 3, 4) for k in allowed):
         raise InputError(f"strands must be a non-empty selection of 1, 2, 3, 4, got {strands!r}")
-    fams = ("iso606", "ansi") if family is None else (family,)
     design = P * ks
     found: dict[str, Candidate] = {}
     too_close: list[str] = []

@@ -60,6 +60,7 @@ def angular_velocity_to_rpm(angular_velocity: Any) -> Any:
 
 __all__ = [
     "parse_quantity",
+    "parse_speed_text",
     "SI_UNITS",
     "to_si",
     "unit_example",
@@ -499,6 +500,36 @@ def parse_quantity(text: Any, unit: str, *, field: str = "value", require_unit: 
         raise InputError(f"{field}: {text!r} overflows when converted to {unit or 'a number'} "
                          "(|value| < 1.8e308)")
     return value + 0.0  # -0.0 -> 0.0
+
+
+def parse_speed_text(text: str, *, field: str = "speed") -> float | None:
+    """The chain speed [m/s] a speed field states (``"1.2 m/s"``), or ``None`` when it states none.
+
+    A wheel speed may be given as an angular speed (``"960 rpm"``) or as the mean chain
+    speed; the readers try this first and parse an angular speed otherwise.
+
+    Parameters
+    ----------
+    text : str
+        The field's text.
+    field : str
+        Its name, for messages.
+
+    Returns
+    -------
+    float or None
+        The speed in m/s; ``None`` for a text that is no linear speed (an angular speed,
+        a bare number, a bad text: the angular-speed parse then reports it).
+
+    Examples
+    --------
+    >>> parse_speed_text("1.2 m/s"), parse_speed_text("72 m/min"), parse_speed_text("960 rpm")
+    (1.2, 1.2, None)
+    """
+    try:
+        return parse_quantity(text, "m/s", field=field)
+    except InputError:
+        return None
 
 
 def to_si(text: Any, kind: str, *, field: str = "value", require_unit: bool = True) -> float:

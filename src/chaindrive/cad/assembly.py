@@ -33,13 +33,18 @@ from .links import (
 )
 
 __all__ = ["Pose", "PartPlacement", "ShapeSpec", "DriveAssembly", "drive_assembly", "frame_assembly",
-           "static_pose", "frame_pose", "placement_matrix"]
+           "static_pose", "frame_pose", "placement_matrix", "pocket_play"]
 
 #: Play round a round link in the pocket and the groove of the modelled pocket wheels, as a
 #: fraction of the bar diameter (a drawing choice: a pocket made to the link's nominal size
 #: would touch it everywhere, and a link entering at an angle needs room; 10 % of d is
 #: 1.8 mm on an 18 mm chain).
 POCKET_PLAY_RATIO = 0.10
+
+#: Gap [m] left at each contact of the static pose once the penalty penetration is removed
+#: (:func:`static_pose`): the parts touch to within it, and a CAD system's interference
+#: check (OpenCascade's linear tolerance 1e-7 mm) reads them as clear.
+CONTACT_GAP = 1e-6
 
 
 @dataclass(frozen=True)
@@ -62,6 +67,9 @@ class Pose:
         Start and end of each guide's running surface [m]; the chain runs on its left.
     time : float or None
         Instant of a simulation frame [s]; None for the static assembly.
+    shift : ndarray (N,) or None
+        Distance [m] each pin was moved out of the seat or guide it pressed into (the
+        instant's penalty penetration plus :data:`CONTACT_GAP`).
     """
 
     pins: np.ndarray
@@ -71,6 +79,7 @@ class Pose:
     tensions: np.ndarray
     guides: np.ndarray
     time: float | None = None
+    shift: np.ndarray | None = None
 
 
 @dataclass(frozen=True)
@@ -114,6 +123,9 @@ class DriveAssembly:
         Chain pitch [m].
     pose : Pose
     link_chain : bool
+    pocket_play : float or None
+        Play round the links in the drawn pockets and groove [m] (:func:`pocket_play`;
+        None for a roller chain).
     """
 
     title: str
@@ -125,6 +137,7 @@ class DriveAssembly:
     pitch: float
     pose: Pose
     link_chain: bool
+    pocket_play: float | None = None
 
     @property
     def part_count(self) -> int:
@@ -140,13 +153,15 @@ class DriveAssembly:
     def summary(self) -> dict:
         """Counts and the chain's numbers (SI units)."""
         groups: dict[str, int] = {}
+        shift = 0.0 if self.pose.shift is None else float(np.max(self.pose.shift, initial=0.0))
         for part in self.parts:
             groups[part.group] = groups.get(part.group, 0) + 1
         return {"title": self.title, "parts": self.part_count, "distinct_shapes": len(self.shapes),
                 "groups": groups, "links": self.links, "first_link": self.first_link,
                 "total_links": self.total_links, "pitch": self.pitch,
                 "chain_length": self.chain_length(), "layout_length": self.total_links * self.pitch,
-                "time": self.pose.time}
+                "time": self.pose.time, "contact_shift_max": shift, "contact_gap": CONTACT_GAP,
+                "pocket_play": self.pocket_play}
 
 
 # --------------------------------------------------------------------------- matrices
@@ -171,7 +186,7 @@ def placement_matrix(origin: tuple[float, float, float], angle: float = 0.0, *, 
 
 # --------------------------------------------------------------------------- poses
 def _model_pose(model: Any, pins: np.ndarray, centres: np.ndarray, theta: np.ndarray, tensions: np.ndarray,
-                mirrored: bool, time: float | None) -> Pose:
+                mirrored: bool, time: float | None, shift: np.ndarray | None = None) -> Pose:
     """Pose in the project's frame from the simulation's (mirrored back for clockwise travel)."""
     angles = []
     for k, w in enumerate(model.wheels):
@@ -186,13 +201,14 @@ def _model_pose(model: Any, pins: np.ndarray, centres: np.ndarray, theta: np.nda
     if mirrored:
         pins = pins[::-1].copy()
         pins[:, 1] *= -1
+        shift = None if shift is None else shift[::-1].copy()
         tensions = np.roll(tensions[::-1], -1)
         centres[:, 1] *= -1
         ang = -ang
         guides = guides[:, ::-1, :].copy()
         guides[..., 1] *= -1
     return Pose(pins=pins, centres=centres, angles=ang, wheels=tuple(w.wheel for w in model.wheels),
-                tensions=np.asarray(tensions, float), guides=guides, time=time)
+                tensions=np.asarray(tensions, float), guides=guides, time=time, shift=shift)
 
 
 def _link_tensions(model: Any, pins: np.ndarray) -> np.ndarray:
@@ -206,9 +222,32 @@ def _link_tensions(model: Any, pins: np.ndarray) -> np.ndarray:
     return float(model.link_stiffness) * (chords - rest)
 
 
+def _out_of_contact(pos: np.ndarray, wp: np.ndarray, theta: np.ndarray, slide: np.ndarray, gd: np.ndarray,
+                    par: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Pins moved out of the seats and guides they press into, and each one's shift [m].
+
+    The model's contacts are penalty contacts: a roller pressed with ``F`` lies ``F / k_c``
+    inside its seat (micrometres), which drawn solids would show as an overlap. Each pin
+    in contact moves out along the contact's normal by its penetration
+    (:func:`chaindrive.simulation.seating.contact_penetration`) plus :data:`CONTACT_GAP`.
+    """
+    from ..simulation.seating import contact_penetration
+
+    pen = contact_penetration(pos, wp, theta, slide, gd, par)
+    depth = np.hypot(*pen.T)
+    touching = depth > 0.0
+    scale = 1.0 + CONTACT_GAP / np.where(touching, depth, 1.0) * touching
+    return pos - pen * scale[:, None], depth + CONTACT_GAP * touching
+
+
 def static_pose(drive: Any) -> tuple[Pose, Any]:
     """The static assembly of a project drive (:func:`chaindrive.simulation.assemble`) as a
     :class:`Pose`; returns ``(pose, simulation model)``.
+
+    The pose is the static assembly with the penalty penetration removed: each pin pressed
+    into a seat or a guide moves out by its penetration plus :data:`CONTACT_GAP` (at most
+    7 um on the roller examples, 0.12 mm on the mining conveyor's loaded pockets);
+    the link tensions are the assembly's.
 
     Examples
     --------
@@ -223,13 +262,16 @@ def static_pose(drive: Any) -> tuple[Pose, Any]:
     model = model_from_drive(drive)
     state = assemble(model)
     centres = state.wp[:, [K.W_CX, K.W_CY]] + state.ws[:, [K.S_S]] * state.wp[:, [K.W_DX, K.W_DY]]
-    pose = _model_pose(model, state.pos, centres, state.ws[:, K.S_THETA], _link_tensions(model, state.pos),
-                       drive.travel == "cw", None)
+    pins, shift = _out_of_contact(state.pos, state.wp, state.ws[:, K.S_THETA], state.ws[:, K.S_S], state.gd,
+                                  state.par)
+    pose = _model_pose(model, pins, centres, state.ws[:, K.S_THETA], _link_tensions(model, state.pos),
+                       drive.travel == "cw", None, shift=shift)
     return pose, model
 
 
 def frame_pose(result: Any, model: Any, time: float, *, mirrored: bool = False) -> Pose:
-    """The instant of a simulation run nearest ``time`` [s] as a :class:`Pose`.
+    """The instant of a simulation run nearest ``time`` [s] as a :class:`Pose`, the pins moved
+    out of the contacts they press into as in :func:`static_pose`.
 
     Raises
     ------
@@ -247,12 +289,20 @@ def frame_pose(result: Any, model: Any, time: float, *, mirrored: bool = False) 
         d = np.asarray(model.tensioner.direction, float)
         direction[model.tensioner.wheel] = d / np.hypot(*d)
     centres = np.asarray(result.wheel_centres) + np.asarray(result.tensioner_position)[k][:, None] * direction
-    return _model_pose(model, np.asarray(result.positions)[k], centres, np.asarray(result.wheel_angle)[k],
-                       np.asarray(result.tension)[k], mirrored, float(times[k]))
+    from ..simulation import _kernel as K
+    from ..simulation.run import kernel_arrays
+
+    par, wp, gd = kernel_arrays(model)
+    wp[:, K.W_CX], wp[:, K.W_CY] = centres[:, 0], centres[:, 1]
+    theta = np.asarray(result.wheel_angle)[k]
+    pins, shift = _out_of_contact(np.asarray(result.positions)[k], wp, theta, np.zeros(len(centres)), gd, par)
+    return _model_pose(model, pins, centres, theta, np.asarray(result.tension)[k], mirrored, float(times[k]),
+                       shift=shift)
 
 
 # --------------------------------------------------------------------------- parts
-def _wheel_part(wheel: Any, chain: Any, link: RoundLinkDimensions | None) -> tuple[str, ShapeSpec, dict]:
+def _wheel_part(wheel: Any, chain: Any, link: RoundLinkDimensions | None,
+                play: float = 0.0) -> tuple[str, ShapeSpec, dict]:
     """Shape key, spec and numbers of a wheel."""
     from ..geometry import PocketWheel, Sprocket
     from ..geometry.part import pocket_wheel_part, sprocket_part
@@ -268,7 +318,7 @@ def _wheel_part(wheel: Any, chain: Any, link: RoundLinkDimensions | None) -> tup
             "kind": "toothless idler", "rim diameter [m]": diameter, "width [m]": width}
     z = int(wheel.teeth)
     if link is not None:
-        pw = PocketWheel.from_chain(chain, z, clearance=POCKET_PLAY_RATIO * link.bar_diameter)
+        pw = PocketWheel.from_chain(chain, z, clearance=play)
         part = pocket_wheel_part(pw)
         pdims = pw.dimensions()
         info = {"kind": "pocket wheel", "pockets": z, "pitch radius [m]": float(pdims.pitch_radius),
@@ -282,7 +332,119 @@ def _wheel_part(wheel: Any, chain: Any, link: RoundLinkDimensions | None) -> tup
                 "strands": sp.strands, "rim width [m]": part.rim_width}
     info.update({"bore [m]": part.hub.bore, "hub diameter [m]": part.hub.hub_diameter,
                  "hub length [m]": part.hub.hub_length, "material": part.material})
-    return f"{part.kind} {part.chain} z{z}", ShapeSpec("wheel", part), info
+    key = f"{part.kind} {part.chain} z{z}" + (f" play {play * 1e3:.2f} mm" if link is not None else "")
+    return key, ShapeSpec("wheel", part), info
+
+
+def _inside(points: np.ndarray, polygon: np.ndarray) -> np.ndarray:
+    """Which ``points`` (K, 2) lie inside the closed ``polygon`` (M, 2) (even-odd rule)."""
+    a, b = polygon, np.roll(polygon, -1, axis=0)
+    px, py = points[:, :1], points[:, 1:]
+    cross = (a[:, 1] > py) != (b[:, 1] > py)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        x = a[:, 0] + (py - a[:, 1]) * (b[:, 0] - a[:, 0]) / (b[:, 1] - a[:, 1])
+    return np.count_nonzero(cross & (px < x), axis=1) % 2 == 1
+
+
+def _boundary_distance(points: np.ndarray, polygon: np.ndarray) -> np.ndarray:
+    """Distance [m] of each point to the boundary of the closed polygon."""
+    a, b = polygon, np.roll(polygon, -1, axis=0)
+    ab = b - a
+    length2 = np.maximum(np.sum(ab * ab, axis=1), 1e-30)
+    rel = points[:, None, :] - a[None]
+    t = np.clip(np.sum(rel * ab[None], axis=2) / length2, 0.0, 1.0)
+    return np.min(np.hypot(*(rel - t[..., None] * ab[None]).transpose(2, 0, 1)), axis=1)
+
+
+def _overlap_depth(p: np.ndarray, q: np.ndarray) -> float:
+    """Largest depth [m] of a vertex of one closed polygon inside the other (0: apart)."""
+    depth = 0.0
+    for u, v in ((p, q), (q, p)):
+        inside = _inside(u, v)
+        if inside.any():
+            depth = max(depth, float(_boundary_distance(u[inside], v).max()))
+    return depth
+
+
+def _pocket_overlap(pose: Pose, chain: Any, dims: RoundLinkDimensions, play: float) -> float:
+    """Largest overlap [m] of a horizontal link beside the groove with a pocket wheel's drawn
+    rim (face view, :func:`chaindrive.cad.links.round_link_face_outline`) at ``play``."""
+    from ..geometry import PocketWheel
+    from .links import round_link_face_outline
+
+    link = round_link_face_outline(dims, dims.bar_diameter / 2 + play)
+    pins = pose.pins
+    u = np.roll(pins, -1, axis=0) - pins
+    chords = np.hypot(*u.T)
+    horizontal = np.abs(chords - dims.horizontal_chord) < np.abs(chords - dims.vertical_chord)
+    depth = 0.0
+    for k, wheel in enumerate(pose.wheels):
+        if not wheel.teeth:
+            continue
+        pw = PocketWheel.from_chain(chain, int(wheel.teeth), clearance=play)
+        rim = pw.outline().polyline(12)[:-1]
+        c, s = math.cos(pose.angles[k] - math.pi / 2), math.sin(pose.angles[k] - math.pi / 2)
+        rim = rim @ np.array([[c, s], [-s, c]]) + pose.centres[k]
+        mid = pins + 0.5 * u
+        near = horizontal & (np.hypot(*(mid - pose.centres[k]).T) < pw.dimensions().tip_radius + dims.pitch)
+        for i in np.flatnonzero(near):
+            e = u[i] / chords[i]
+            placed = mid[i] + link[:, :1] * e + link[:, 1:] * np.array([-e[1], e[0]])
+            depth = max(depth, _overlap_depth(placed, rim))
+    return depth
+
+
+def pocket_play(pose: Pose, chain: Any, dims: RoundLinkDimensions) -> float:
+    """Play [m] round the links in the drawn pockets and groove: ``POCKET_PLAY_RATIO · d``, or
+    more where a link of ``pose`` entering or leaving a pocket needs it.
+
+    The simulation's hinge seats are symmetric arc-and-flank seats
+    (:func:`chaindrive.simulation.profiles.link_seat_profile`, flanks about 18° to 22°
+    from the hinge's radius) and its links have no shape: a hinge lifted in its seat may
+    lie nearer the drawn pocket wall (parallel to the pocket axis, i.e. leaning over the
+    hinge by half the pocket's central angle) than the link's end bend allows. The play
+    is then the smallest, to 0.05 mm, at which no horizontal link beside the groove
+    overlaps the drawn rim (face view; bisection), if the pockets stay apart.
+
+    Returns
+    -------
+    float
+        The play [m] (``POCKET_PLAY_RATIO · d`` if no link overlaps or none can be cleared).
+
+    References
+    ----------
+    Dolipiński et al., eqs (6)-(9) (the pocket wheel's pitch radius and central angles);
+    DIN 22252 (the link's inner width); :class:`chaindrive.geometry.PocketWheel` (the
+    drawn outline).
+
+    Examples
+    --------
+    >>> # pocket_play(drive_assembly(drive).pose, drive.chain, round_link_dimensions(drive.chain))
+    """
+    from ..errors import InfeasibleError
+
+    def overlap(play: float) -> float:
+        try:
+            return _pocket_overlap(pose, chain, dims, play)
+        except (InfeasibleError, InputError):  # the pockets would overlap
+            return math.inf
+
+    step = 5e-5
+    lo = POCKET_PLAY_RATIO * dims.bar_diameter
+    depth = overlap(lo)
+    if depth <= 0.0:
+        return lo
+    hi = lo + depth + step
+    for _ in range(4):
+        if overlap(hi) <= 0.0:
+            break
+        hi += depth
+    else:
+        return lo  # no play clears it: the clearance check reports the overlap
+    while hi - lo > step:
+        mid = 0.5 * (lo + hi)
+        lo, hi = (mid, hi) if overlap(mid) > 0.0 else (lo, mid)
+    return math.ceil(hi / step - 1e-9) * step
 
 
 def _check_parts(count: int, links: int) -> None:
@@ -358,6 +520,7 @@ def _assembly(drive: Any, pose: Pose, section: tuple[int, int] | None, chain_wid
     first, count = _section(section, n)
     if link_chain:
         rdims = round_link_dimensions(chain)
+        play = pocket_play(pose, chain, rdims)
         per_link, width, thickness = 1, rdims.outer_width, rdims.bar_diameter
         dims: Any = rdims
     else:
@@ -372,7 +535,7 @@ def _assembly(drive: Any, pose: Pose, section: tuple[int, int] | None, chain_wid
     parts: list[PartPlacement] = []
     tens = drive.tensioner
     for k, wheel in enumerate(pose.wheels):
-        key, spec, info = _wheel_part(wheel, chain, rdims if link_chain else None)
+        key, spec, info = _wheel_part(wheel, chain, rdims if link_chain else None, play if link_chain else 0.0)
         shapes.setdefault(key, spec)
         c = pose.centres[k]
         info = {"wheel": wheel.name, **info, "centre x [m]": float(c[0]), "centre y [m]": float(c[1]),
@@ -403,7 +566,8 @@ def _assembly(drive: Any, pose: Pose, section: tuple[int, int] | None, chain_wid
     if pose.time is not None:
         title += f" at t = {pose.time:.4g} s"
     return DriveAssembly(title=title, parts=tuple(parts), shapes=shapes, links=count, first_link=first,
-                         total_links=n, pitch=float(chain.pitch), pose=pose, link_chain=link_chain)
+                         total_links=n, pitch=float(chain.pitch), pose=pose, link_chain=link_chain,
+                         pocket_play=play if link_chain else None)
 
 
 def _tensioner_slide(tens: Any, centre: np.ndarray, wheel: Any, shapes: dict, width: float) -> PartPlacement:

@@ -36,7 +36,8 @@ from .._results import Result, quantity
 from ..errors import InputError
 
 __all__ = ["RollerLinkDimensions", "RoundLinkDimensions", "roller_link_dimensions", "round_link_dimensions",
-           "roller_chain_parts_layout", "roller_chain_solids", "round_link_solid", "round_link_volume", "PLATE_THICKNESS_RATIO"]
+           "roller_chain_parts_layout", "roller_chain_solids", "round_link_solid", "round_link_volume", "round_link_face_outline",
+           "PLATE_THICKNESS_RATIO"]
 
 _MM = 1e3
 #: Plate thickness over pitch of a standard-series roller chain (ACA, Standard Handbook of
@@ -321,3 +322,36 @@ def round_link_volume(dims: RoundLinkDimensions) -> float:
     """
     d, b, t = dims.bar_diameter, dims.inner_width, dims.pitch
     return math.pi * d * d / 4 * (2 * (t - b) + math.pi * (b + d))
+
+
+def round_link_face_outline(dims: RoundLinkDimensions, groove_half_width: float, points: int = 25) -> Any:
+    """Face view (along the wheel axis) of a horizontal link's parts beside a pocket wheel's groove [m].
+
+    A horizontal link lies with its width along the wheel axis ``z``; the wheel's rim
+    beside the central groove (``|z| >= w``) meets only the link's material there. At a
+    distance ``s`` from the link's middle plane the bar reaches ``ρ = (b + d)/2 +
+    sqrt(d²/4 − s²)`` from the end bend's centre, so beside the groove it ends at
+    ``x = (t − b)/2 + sqrt(ρ² − w²)`` along the link (the torus of the end bend cut by
+    the plane ``z = w``).
+
+    Returns
+    -------
+    ndarray (M, 2)
+        Closed polygon ``(x, s)`` [m]: ``x`` along the link from its middle, ``s`` across
+        (in the wheel plane), the first point not repeated.
+
+    Examples
+    --------
+    >>> o = round_link_face_outline(round_link_dimensions("18x64"), 0.0108)
+    >>> round(float(o[:, 0].max()) * 1e3, 2), round(float(o[:, 1].max()) * 1e3, 1)
+    (47.87, 9.0)
+    """
+    import numpy as np
+
+    r = dims.bar_diameter / 2
+    rc = (dims.inner_width + dims.bar_diameter) / 2
+    half = (dims.pitch - dims.inner_width) / 2
+    s = r * np.sin(np.linspace(-np.pi / 2, np.pi / 2, points))
+    rho = rc + np.sqrt(np.maximum(r * r - s * s, 0.0))
+    x = half + np.sqrt(np.maximum(rho * rho - groove_half_width ** 2, 0.0))
+    return np.concatenate([np.column_stack([x, s]), np.column_stack([-x, -s])])

@@ -21,12 +21,18 @@ from ._catalogue import (
     FAMILIES,
     Chain,
     catalogue,
+    check_roller_family,
     equivalent_names,
     estimated_fields,
+    families,
     get,
     names,
     normalize_name,
+    register_family,
+    roller_families,
+    unregister_family,
 )
 
 __all__ = ["Chain", "FAMILIES", "get", "catalogue", "names", "normalize_name", "estimated_fields",
-           "equivalent_names"]
+           "equivalent_names", "families", "roller_families", "check_roller_family", "register_family",
+           "unregister_family"]

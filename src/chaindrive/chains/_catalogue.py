@@ -16,13 +16,31 @@ from functools import lru_cache
 from importlib import resources
 from typing import Any, SupportsFloat
 
+from .._docs import Fragments
 from ..errors import InputError, UnknownNameError
 
 __all__ = ["Chain", "FAMILIES", "get", "catalogue", "names", "normalize_name", "estimated_fields",
-           "equivalent_names"]
+           "equivalent_names", "families", "roller_families", "check_roller_family", "register_family",
+           "unregister_family"]
 
-#: The chain families of the catalogue, in display order.
-FAMILIES: tuple[str, ...] = ("iso606", "ansi", "din22252")
+#: Data files of the package that are not a chain family.
+_NOT_FAMILIES = ("ansi_lubrication.csv",)
+#: Extra families added at run time (:func:`register_family`): name -> CSV text.
+_EXTRA: dict[str, str] = {}
+
+
+def _package_families() -> tuple[str, ...]:
+    """The built-in families, then every other ``data/<family>.csv`` of the package (sorted)."""
+    builtin = ("iso606", "ansi", "din22252")
+    files = sorted(f.name for f in resources.files(__package__).joinpath("data").iterdir()
+                   if f.name.endswith(".csv") and f.name not in _NOT_FAMILIES)
+    return builtin + tuple(f[:-4] for f in files if f[:-4] not in builtin)
+
+
+#: The chain families of the catalogue, in display order: ISO 606, ANSI B29.1, DIN 22252,
+#: then any further ``chaindrive/chains/data/<family>.csv`` (read in the generic layout of
+#: :func:`register_family`).
+FAMILIES: tuple[str, ...] = _package_families()
 
 _MM = 1000  # mm per m
 _KN = Decimal("0.001")  # kN per N
@@ -112,22 +130,11 @@ class Chain:
         return self.bar_diameter is None
 
     @classmethod
-    def custom(
-        cls,
-        name: str = "custom",
-        *,
-        pitch: float,
-        roller_diameter: float | None = None,
-        bar_diameter: float | None = None,
-        strands: int = 1,
-        inner_width: float | None = None,
-        pin_diameter: float | None = None,
-        plate_height: float | None = None,
-        transverse_pitch: float | None = None,
-        breaking_force: float | None = None,
-        mass_per_length: float | None = None,
-        source: str = "user-defined",
-    ) -> Chain:
+    def custom(cls, name: str = "custom", *, pitch: float, roller_diameter: float | None = None,
+               bar_diameter: float | None = None, strands: int = 1, inner_width: float | None = None,
+               pin_diameter: float | None = None, plate_height: float | None = None,
+               transverse_pitch: float | None = None, breaking_force: float | None = None,
+               mass_per_length: float | None = None, source: str = "user-defined") -> Chain:
         """Build a user chain, checking every value (SI units).
 
         Exactly one of ``roller_diameter`` (roller chain) and ``bar_diameter`` (round
@@ -201,21 +208,9 @@ class Chain:
             raise InputError("transverse_pitch is only valid for strands >= 2 (got strands = 1)")
         fb = _check_length("breaking_force", breaking_force, "0 < breaking_force < inf N")
         q = _check_length("mass_per_length", mass_per_length, "0 < mass_per_length < inf kg/m")
-        return cls(
-            name=str(name),
-            family="custom",
-            strands=strands,
-            pitch=p,
-            roller_diameter=d1,
-            bar_diameter=d,
-            inner_width=b1,
-            pin_diameter=d2,
-            plate_height=h2,
-            transverse_pitch=pt,
-            breaking_force=fb,
-            mass_per_length=q,
-            source=str(source),
-        )
+        return cls(name=str(name), family="custom", strands=strands, pitch=p, roller_diameter=d1,
+                   bar_diameter=d, inner_width=b1, pin_diameter=d2, plate_height=h2, transverse_pitch=pt,
+                   breaking_force=fb, mass_per_length=q, source=str(source))
 
     def to_dict(self) -> dict[str, Any]:
         """The fields as a plain dict (SI units, ``None`` for missing values)."""
@@ -245,7 +240,9 @@ def _check_below(field: str, value: SupportsFloat | str | None, pitch: float) ->
 
 
 def _rows(filename: str) -> list[dict[str, str]]:
-    text = resources.files(__package__).joinpath("data", filename).read_text(encoding="utf-8")
+    family = filename[:-4]
+    text = _EXTRA[family] if family in _EXTRA else (
+        resources.files(__package__).joinpath("data", filename).read_text(encoding="utf-8"))
     lines = [line for line in text.splitlines() if line.strip() and not line.startswith("#")]
     return list(csv.DictReader(lines))
 
@@ -267,26 +264,19 @@ def _pitch(text: str, per_si_unit: Decimal | int, name: str) -> float:
     return value
 
 
-def _iso606() -> list[Chain]:
+def _family(family: str) -> list[Chain]:
+    """The chains of ``<family>.csv`` in the generic layout (mm, kN, kg/m; absent column = no value)."""
     chains = []
-    for r in _rows("iso606.csv"):
-        chains.append(
-            Chain(
-                name=r["name"],
-                family="iso606",
-                strands=int(r["strands"]),
-                pitch=_pitch(r["pitch_mm"], _MM, r["name"]),
-                roller_diameter=_num(r["roller_diameter_mm"], _MM),
-                bar_diameter=None,
-                inner_width=_num(r["inner_width_mm"], _MM),
-                pin_diameter=_num(r["pin_diameter_mm"], _MM),
-                plate_height=_num(r["plate_height_mm"], _MM),
-                transverse_pitch=_num(r["transverse_pitch_mm"], _MM),
-                breaking_force=_num(r["breaking_force_kN"], _KN),
-                mass_per_length=_num(r["mass_per_length_kg_m"], 1),
-                source=r["source"],
-            )
-        )
+    for r in _rows(f"{family}.csv"):
+        def cell(column: str, per_si_unit: Decimal | int) -> float | None:
+            return _num(r.get(column) or "", per_si_unit)  # noqa: B023 - used at once
+        chains.append(Chain(
+            name=r["name"], family=family, strands=int(r.get("strands") or 1),
+            pitch=_pitch(r["pitch_mm"], _MM, r["name"]), roller_diameter=cell("roller_diameter_mm", _MM),
+            bar_diameter=cell("bar_diameter_mm", _MM), inner_width=cell("inner_width_mm", _MM),
+            pin_diameter=cell("pin_diameter_mm", _MM), plate_height=cell("plate_height_mm", _MM),
+            transverse_pitch=cell("transverse_pitch_mm", _MM), breaking_force=cell("breaking_force_kN", _KN),
+            mass_per_length=cell("mass_per_length_kg_m", 1), source=r["source"]))
     return chains
 
 
@@ -317,48 +307,36 @@ def _ansi(iso: dict[str, Chain]) -> list[Chain]:
     return chains
 
 
-def _din22252() -> list[Chain]:
-    chains = []
-    for r in _rows("din22252.csv"):
-        chains.append(
-            Chain(
-                name=r["name"],
-                family="din22252",
-                strands=1,
-                pitch=_pitch(r["pitch_mm"], _MM, r["name"]),
-                roller_diameter=None,
-                bar_diameter=_num(r["bar_diameter_mm"], _MM),
-                inner_width=_num(r["inner_width_mm"], _MM),
-                pin_diameter=None,
-                plate_height=None,
-                transverse_pitch=None,
-                breaking_force=_num(r["breaking_force_kN"], _KN),
-                mass_per_length=_num(r["mass_per_length_kg_m"], 1),
-                source=r["source"],
-            )
-        )
-    return chains
-
-
 @lru_cache(maxsize=1)
 def _estimated() -> dict[str, tuple[str, ...]]:
     """Chain name -> fields that are estimates (the optional CSV column ``estimated``)."""
     out: dict[str, tuple[str, ...]] = {}
-    for filename in ("iso606.csv", "ansi.csv", "din22252.csv"):
-        for r in _rows(filename):
+    for family in families():
+        for r in _rows(f"{family}.csv"):
             fields = tuple(f.strip() for f in (r.get("estimated") or "").split(";") if f.strip())
             if fields:
                 out[r["name"]] = fields
     return out
 
 
+#: The parameter the catalogue look-ups share, described once (:mod:`chaindrive._docs`).
+_DOCS = Fragments(chain="""
+    chain : Chain or str
+        A catalogue chain or its name (any spelling :func:`get` accepts).
+""")
+_DOCS.section("chain_parameters", "chain")
+
+
+def _name_of(chain: Chain | str) -> str:
+    """The catalogue name of a chain given as a :class:`Chain` or as any accepted name."""
+    return chain.name if isinstance(chain, Chain) else get(chain).name
+
+
+@_DOCS
 def estimated_fields(chain: Chain | str) -> tuple[str, ...]:
     """The fields of a catalogue chain that are estimates, not published values.
 
-    Parameters
-    ----------
-    chain : Chain or str
-        A catalogue chain or its name.
+    %(chain_parameters)s
 
     Returns
     -------
@@ -377,7 +355,7 @@ def estimated_fields(chain: Chain | str) -> tuple[str, ...]:
     >>> estimated_fields("18x64"), estimated_fields("34x126"), estimated_fields("16B")
     (('mass_per_length',), (), ())
     """
-    name = chain.name if isinstance(chain, Chain) else get(chain).name
+    name = _name_of(chain)
     if isinstance(chain, Chain) and chain.family == "custom":
         return ()
     return _estimated().get(name, ())
@@ -393,13 +371,11 @@ def _twins() -> dict[str, tuple[str, ...]]:
     return {k: tuple(v) for k, v in out.items()}
 
 
+@_DOCS
 def equivalent_names(chain: Chain | str) -> tuple[str, ...]:
     """Other catalogue names of the same chain: an ANSI number and its ISO 606 twin.
 
-    Parameters
-    ----------
-    chain : Chain or str
-        A catalogue chain or its name.
+    %(chain_parameters)s
 
     Returns
     -------
@@ -417,14 +393,15 @@ def equivalent_names(chain: Chain | str) -> tuple[str, ...]:
     >>> equivalent_names("10A-1"), equivalent_names("ANSI 80-2"), equivalent_names("16B")
     (('ANSI 50-1',), ('16A-2',), ())
     """
-    name = chain.name if isinstance(chain, Chain) else get(chain).name
+    name = _name_of(chain)
     return _twins().get(name, ())
 
 
 @lru_cache(maxsize=1)
 def _all() -> tuple[Chain, ...]:
-    iso = _iso606()
-    return tuple(iso) + tuple(_ansi({c.name: c for c in iso})) + tuple(_din22252())
+    iso = _family("iso606")
+    rest = [c for f in families() if f not in ("iso606", "ansi") for c in _family(f)]
+    return tuple(iso) + tuple(_ansi({c.name: c for c in iso})) + tuple(rest)
 
 
 @lru_cache(maxsize=1)
@@ -465,10 +442,119 @@ def normalize_name(name: str) -> str:
 
 
 def _check_family(family: str | None) -> None:
-    if family is not None and family not in FAMILIES:
+    if family is not None and family not in families():
         raise UnknownNameError(
-            f"unknown chain family {family!r}; valid families: {', '.join(FAMILIES)}"
+            f"unknown chain family {family!r}; valid families: {', '.join(families())}"
         )
+
+
+def families() -> tuple[str, ...]:
+    """The chain families: :data:`FAMILIES` and those added by :func:`register_family`.
+
+    Examples
+    --------
+    >>> families()[:3]
+    ('iso606', 'ansi', 'din22252')
+    """
+    return FAMILIES + tuple(f for f in _EXTRA if f not in FAMILIES)
+
+
+def roller_families() -> tuple[str, ...]:
+    """The families of roller chains (every family but the round link chains), in display order.
+
+    The families a chain selection searches: ``None`` in :func:`chaindrive.design.design_drive`
+    means all of them.
+
+    Examples
+    --------
+    >>> roller_families()[:2]
+    ('iso606', 'ansi')
+    """
+    return tuple(f for f in families() if all(c.is_roller_chain for c in catalogue(f)))
+
+
+def check_roller_family(family: str | None) -> tuple[str, ...]:
+    """The roller-chain families to search: all for ``None``, else ``(family,)`` if it is one.
+
+    Raises
+    ------
+    UnknownNameError
+        ``family`` is not a roller-chain family (the message lists them).
+
+    Examples
+    --------
+    >>> check_roller_family(None)[:2], check_roller_family("ansi")
+    (('iso606', 'ansi'), ('ansi',))
+    """
+    roller = roller_families()
+    if family is not None and family not in roller:
+        raise UnknownNameError(f"unknown roller-chain family {family!r}; valid: None, "
+                               f"{', '.join(repr(f) for f in roller)}")
+    return roller if family is None else (family,)
+
+
+def register_family(family: str, csv_text: str) -> None:
+    """Add a chain family from CSV text (the layout of ``chaindrive/chains/data/<family>.csv``).
+
+    A family shipped with the package is its CSV file in ``chaindrive/chains/data``, found
+    at import; this function adds one at run time (a plug-in, a test) without a file there.
+    Columns (``#`` lines are comments): ``name``, ``pitch_mm`` and ``source`` required;
+    ``strands`` (default 1), ``roller_diameter_mm`` (roller chain) or ``bar_diameter_mm``
+    (round link chain), ``inner_width_mm``, ``pin_diameter_mm``, ``plate_height_mm``,
+    ``transverse_pitch_mm``, ``breaking_force_kN``, ``mass_per_length_kg_m``, ``estimated``
+    (field names separated by ``;``) optional. Its rating method is registered under the
+    family's name in :data:`chaindrive.rating.RATING_METHODS` (a module
+    ``chaindrive/rating/<family>.py`` that does so is imported when first needed).
+
+    Parameters
+    ----------
+    family : str
+        Family name, a lower-case identifier not yet taken.
+    csv_text : str
+        The table.
+
+    Raises
+    ------
+    InputError
+        A name taken or not an identifier, a row without a name, pitch or source, or a
+        chain name the catalogue already holds.
+
+    Examples
+    --------
+    >>> register_family("demo", "name,pitch_mm,roller_diameter_mm,source\\nDEMO 1,10,6,made up")
+    >>> get("demo 1").pitch, catalogue("demo")[0].is_roller_chain
+    (0.01, True)
+    >>> unregister_family("demo")
+    """
+    if not re.fullmatch(r"[a-z][a-z0-9_]*", str(family)) or family in families():
+        raise InputError(f"family must be a new lower-case identifier, got {family!r} "
+                         f"(taken: {', '.join(families())})", field="family")
+    _clear_caches()
+    known = _index()
+    _EXTRA[family] = str(csv_text)
+    try:
+        rows = _family(family)
+        clash = [c.name for c in rows if normalize_name(c.name) in known]
+        if clash:
+            raise InputError(f"chain names already in the catalogue: {', '.join(clash)}", field="csv_text")
+    except (KeyError, ValueError, InputError) as exc:
+        del _EXTRA[family]
+        if isinstance(exc, InputError):
+            raise
+        raise InputError(f"family {family!r}: every row needs name, pitch_mm and source ({exc})",
+                         field="csv_text") from exc
+    _clear_caches()
+
+
+def unregister_family(family: str) -> None:
+    """Remove a family added by :func:`register_family` (the package's own stay)."""
+    _EXTRA.pop(family, None)
+    _clear_caches()
+
+
+def _clear_caches() -> None:
+    for cached in (_all, _index, _estimated, _twins):
+        cached.cache_clear()
 
 
 def get(name: str | Chain) -> Chain:

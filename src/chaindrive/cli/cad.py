@@ -83,6 +83,9 @@ def report(out: dict, as_json: bool) -> None:
                f"links {out['first_link']}...{out['first_link'] + out['links'] - 1} of {out['total_links']}")
     typer.echo(f"chain length {out['chain_length'] * 1e3:.2f} mm at the assembly (layout {out['total_links']} "
                f"x {out['pitch'] * 1e3:g} mm = {out['layout_length'] * 1e3:.2f} mm)")
+    play = f"; pocket play {out['pocket_play'] * 1e3:.2f} mm" if out.get("pocket_play") else ""
+    typer.echo(f"pins moved out of the seats they press into by at most {out['contact_shift_max'] * 1e6:.1f} um "
+               f"(the model's penalty penetration + {out['contact_gap'] * 1e6:g} um){play}")
     typer.echo(f"wrote {out['step']} ({out['bytes'] / 1e6:.2f} MB) in {out['seconds']:.1f} s")
     for key in ("gltf", "dxf"):
         if key in out:
@@ -90,7 +93,7 @@ def report(out: dict, as_json: bool) -> None:
     c = out.get("check")
     if c:
         typer.echo(f"check: {c['solids']} solids read back for {c['parts']} parts ({c['named_parts']} named), "
-                   f"valid {c['valid']}; minimum clearance links-wheels {c['minimum_clearance'] * 1e3:.3f} mm "
+                   f"valid {c['valid']}; minimum clearance links-wheels {c['minimum_clearance'] * 1e3:.4f} mm "
                    f"({c['nearest']}), interference volume {c['interference_volume'] * 1e9:.3g} mm^3 over "
                    f"{c['pairs_measured']} pairs")
 

@@ -194,7 +194,7 @@ def drive_power(force: ArrayLike, chain_speed: ArrayLike, efficiency: ArrayLike 
     Returns
     -------
     ndarray
-        [W].
+        Drive power ``P`` [W], at the drive's input (``η`` included).
 
     References
     ----------
@@ -203,7 +203,7 @@ def drive_power(force: ArrayLike, chain_speed: ArrayLike, efficiency: ArrayLike 
 
     Examples
     --------
-    >>> round(float(drive_power(50e3, 0.8, 0.85)))
+    >>> round(float(drive_power(50e3, 0.8, 0.85)))   # F v / η = 50 kN × 0.8 m/s / 0.85
     47059
     """
     F = check_nonnegative("force", force, "N")

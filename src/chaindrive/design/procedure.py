@@ -661,7 +661,7 @@ def design_drive(request: DesignRequest | Duty, **options: Any) -> DesignResult:
     >>> c.chain, c.driving_teeth, c.driven_teeth, c.links, round(c.centre_distance * 1e3, 1)
     ('12A-1', 19, 58, 104, 612.4)
     """
-    from ..chains import catalogue, equivalent_names
+    from ..chains import catalogue, check_roller_family, equivalent_names
 
     if isinstance(request, Duty):
         request = DesignRequest(request, **options)
@@ -676,7 +676,7 @@ def design_drive(request: DesignRequest | Duty, **options: Any) -> DesignResult:
     all_sizes, limit = request.all_sizes, request.limit
     factors = duty_factors(duty)
     ks = float(factors[0].value)
-    fams = ("iso606", "ansi") if family is None else (family,)
+    fams = check_roller_family(family)
     chains = []
     for fam in fams:
         for ch in catalogue(fam):

@@ -32,8 +32,8 @@ import math
 from dataclasses import dataclass
 from typing import Any
 
-from .._results import Result
-from ..errors import InputError, UnknownNameError
+from .._results import Result, quantity
+from ..errors import InputError
 from ..limits import DUTY_RANGES, MAX_RATED_STRANDS, MAX_TEETH, MIN_TEETH, check_size
 from .duty import Duty
 from .policy import default_centre_distance
@@ -89,14 +89,14 @@ class DesignRequest(Result):
     """
 
     duty: Duty
-    teeth_driving: int | None = None
+    teeth_driving: int | None = quantity("1", default=None)
     family: str | None = None
-    strands: tuple[int, ...] = (1, 2, 3)
+    strands: tuple[int, ...] = quantity("1", default=(1, 2, 3))
     method: str | None = None
-    required_static_safety: float | None = None
+    required_static_safety: float | None = quantity("1", default=None)
     all_sizes: bool = False
-    limit: int | None = None
-    centre_distance_range: tuple[float, float] | None = None
+    limit: int | None = quantity("1", default=None)
+    centre_distance_range: tuple[float, float] | None = quantity("m", display="mm", default=None)
 
     def __post_init__(self) -> None:
         if not isinstance(self.duty, Duty):
@@ -104,9 +104,9 @@ class DesignRequest(Result):
         if self.teeth_driving is not None:
             object.__setattr__(self, "teeth_driving", check_size("teeth_driving", self.teeth_driving, MAX_TEETH,
                                                                  minimum=MIN_TEETH, field="teeth_driving"))
-        if self.family not in (None, *FAMILIES):
-            raise UnknownNameError(f"unknown roller-chain family {self.family!r}; valid: None, "
-                                   + ", ".join(repr(f) for f in FAMILIES))
+        from ..chains import check_roller_family
+
+        check_roller_family(self.family)
         if self.method is not None:
             from ..rating import RATING_METHODS
 

@@ -19,7 +19,7 @@ from pydantic import BaseModel, BeforeValidator, ConfigDict, Field, ValidationIn
 
 from ..errors import InputError
 from ..limits import warn_implausible
-from ..units import is_dimensional, parse_quantity, unit_example
+from ..units import is_dimensional, parse_quantity, parse_speed_text, unit_example
 from .schema import Input, InputTable, all_tables, children
 
 __all__ = ["reader_model", "project_model", "ChainSpeedSpec"]
@@ -78,10 +78,7 @@ def _wheel_speed(value: Any, info: ValidationInfo) -> float | ChainSpeedSpec:
     if isinstance(value, ChainSpeedSpec):
         return value
     if isinstance(value, str):
-        try:
-            v = parse_quantity(value, "m/s", field=name)
-        except InputError:
-            v = None
+        v = parse_speed_text(value, field=name)
         if v is not None:
             if not (v > 0):
                 raise ValueError(f"{name} must be positive (0 < chain speed < inf m/s), got {v:g} m/s")

@@ -1,5 +1,7 @@
 """Wheel geometry: pitch polygons, sprockets, pocket wheels, track drive wheels."""
 
+from . import iso606 as _iso606
+from .iso606 import *  # noqa: F403 - the ISO 606 formulas, named once in iso606.__all__
 from .outline import Arc, Line, Outline
 from .pocket_wheel import PocketWheel, PocketWheelDimensions, pocket_angles
 from .polygon import (
@@ -8,25 +10,7 @@ from .polygon import (
     link_chain_pitch_radius,
     roller_chain_pitch_radius,
 )
-from .sprocket import (
-    AnsiToothForm,
-    Sprocket,
-    SprocketDimensions,
-    ansi_tooth_form,
-    flank_radius_limits,
-    max_hub_diameter,
-    measurement_over_pins,
-    pitch_diameter,
-    root_diameter,
-    seating_angle_limits,
-    seating_radius_limits,
-    sprocket_outline,
-    tip_diameter_limits,
-    tooth_height_limits,
-    tooth_side_radius,
-    tooth_side_relief_limits,
-    tooth_width,
-)
+from .sprocket import AnsiToothForm, Sprocket, SprocketDimensions, ansi_tooth_form, sprocket_outline
 from .track_wheel import (
     TrackDriveWheel,
     TrackDriveWheelDimensions,
@@ -52,18 +36,6 @@ __all__ = [
     "SprocketDimensions",
     "AnsiToothForm",
     "ansi_tooth_form",
-    "pitch_diameter",
-    "root_diameter",
-    "tip_diameter_limits",
-    "seating_radius_limits",
-    "seating_angle_limits",
-    "flank_radius_limits",
-    "tooth_height_limits",
-    "tooth_width",
-    "tooth_side_radius",
-    "tooth_side_relief_limits",
-    "measurement_over_pins",
-    "max_hub_diameter",
     "sprocket_outline",
     # pocket wheels (Dolipiński et al.)
     "PocketWheel",
@@ -79,3 +51,4 @@ __all__ = [
     "tip_radius",
     "tip_radius_range",
 ]
+__all__ += [name for name in _iso606.__all__ if not name.isupper()]

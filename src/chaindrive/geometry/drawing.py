@@ -104,7 +104,7 @@ def choose_sheet(part: WheelPart) -> Sheet:
     Parameters
     ----------
     part : WheelPart
-        The part.
+        The part whose plan and section views are to fit.
 
     Returns
     -------
@@ -206,22 +206,13 @@ def _setup(sheet: Sheet):
             doc.layers.add(name, color=colour, linetype=ltype, lineweight=weight)
     k = 1.0 / sheet.scale
     style = doc.dimstyles.duplicate_entry("EZDXF", "CD") if "CD" not in doc.dimstyles else doc.dimstyles.get("CD")
-    style.dxf.dimtxsty = "CD"
-    style.dxf.dimscale = k
-    style.dxf.dimtxt = 3.5
-    style.dxf.dimasz = 3.0
-    style.dxf.dimexe = 2.0
-    style.dxf.dimexo = 1.0
-    style.dxf.dimgap = 1.0
-    style.dxf.dimdec = 2
-    style.dxf.dimtad = 1
-    style.dxf.dimtih = 0
-    style.dxf.dimtoh = 0
-    style.dxf.dimclrd = 3
-    style.dxf.dimclre = 3
-    style.dxf.dimclrt = 7
-    style.dxf.dimzin = 8  # suppress trailing zeros
-    style.dxf.dimlfac = 1.0  # the EZDXF template shows metres as centimetres
+    # the dimension style on the sheet in mm: text 3.5, arrows 3, gaps 1-2, two decimals, text
+    # above the line, colours 3 (lines) and 7 (text), trailing zeros suppressed (dimzin 8);
+    # dimlfac 1: the EZDXF template shows metres as centimetres
+    for key, value in dict(dimtxsty="CD", dimscale=k, dimtxt=3.5, dimasz=3.0, dimexe=2.0, dimexo=1.0,
+                           dimgap=1.0, dimdec=2, dimtad=1, dimtih=0, dimtoh=0, dimclrd=3, dimclre=3,
+                           dimclrt=7, dimzin=8, dimlfac=1.0).items():
+        style.dxf.set(key, value)
     return doc
 
 

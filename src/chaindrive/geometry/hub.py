@@ -178,7 +178,7 @@ def keyway_area(bore: ArrayLike, key_width: ArrayLike, hub_depth: ArrayLike) -> 
 
     Examples
     --------
-    >>> round(float(keyway_area(0.040, 0.012, 0.0033)) * 1e6, 4)
+    >>> round(float(keyway_area(0.040, 0.012, 0.0033)) * 1e6, 4)   # [mm²]
     43.2502
     """
     d = check_positive("bore", bore, "m")

@@ -10,6 +10,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 from numpy.typing import ArrayLike
 
+from .._docs import Fragments
 from .._finite import finite_guard
 from .._typing import FloatOrArray
 from .._validation import as_float_array, check_positive
@@ -45,6 +46,28 @@ _INCH = 0.0254
 _MM = 1e-3
 
 
+#: The parameters the ISO 606 formulas share, described once (:mod:`chaindrive._docs`).
+_DOCS = Fragments(
+    pitch="""
+        pitch : float or array_like
+            Chain pitch ``p`` [m].
+    """,
+    pitch_teeth="""
+        %(pitch)s
+        teeth : int or array_like
+            Number of teeth ``z`` >= 9 [-] (ISO 606:2015 Annex A tabulates 9...150;
+            above, a :class:`~chaindrive.errors.ValidityRangeWarning`).
+    """,
+    roller_diameter="""
+        roller_diameter : float or array_like
+            Roller diameter ``d1`` of the chain (its maximum) [m], ``0 < d1 < p``.
+    """,
+)
+_DOCS.section("p_z_d1_parameters", "pitch_teeth", "roller_diameter")
+_DOCS.section("p_z_parameters", "pitch_teeth")
+_DOCS.section("p_parameters", "pitch")
+
+
 def _teeth(teeth) -> np.ndarray:
     z = as_float_array("teeth", teeth)
     if np.any(z != np.round(z)) or np.any(z < MIN_TEETH):
@@ -77,17 +100,13 @@ def _roller(pitch, roller_diameter):
 
 
 @finite_guard
+@_DOCS
 def pitch_diameter(pitch: ArrayLike, teeth: ArrayLike) -> FloatOrArray:
     r"""Pitch circle diameter of a sprocket, ISO 606:2015 clause 5.3.
 
     .. math:: d = \frac{p}{\sin(180°/z)}
 
-    Parameters
-    ----------
-    pitch : float or array_like
-        Chain pitch ``p`` [m].
-    teeth : int or array_like
-        Number of teeth ``z`` (9...150) [-].
+    %(p_z_parameters)s
 
     Returns
     -------
@@ -116,19 +135,13 @@ def pitch_diameter(pitch: ArrayLike, teeth: ArrayLike) -> FloatOrArray:
 
 
 @finite_guard
+@_DOCS
 def root_diameter(pitch: ArrayLike, teeth: ArrayLike, roller_diameter: ArrayLike) -> FloatOrArray:
     r"""Root diameter ``df = d − d1``, ISO 606:2015 clause 5.3.
 
     .. math:: d_f = d - d_1
 
-    Parameters
-    ----------
-    pitch : float or array_like
-        Chain pitch ``p`` [m].
-    teeth : int or array_like
-        Number of teeth ``z`` [-].
-    roller_diameter : float or array_like
-        Maximum roller diameter ``d1`` of the chain [m].
+    %(p_z_d1_parameters)s
 
     Returns
     -------
@@ -155,6 +168,7 @@ def root_diameter(pitch: ArrayLike, teeth: ArrayLike, roller_diameter: ArrayLike
 
 
 @finite_guard
+@_DOCS
 def tip_diameter_limits(
     pitch: ArrayLike, teeth: ArrayLike, roller_diameter: ArrayLike
 ) -> tuple[FloatOrArray, FloatOrArray]:
@@ -163,10 +177,7 @@ def tip_diameter_limits(
     .. math:: d_{a,\max} = d + 1.25\,p - d_1,\qquad
               d_{a,\min} = d + p\left(1 - \frac{1.6}{z}\right) - d_1
 
-    Parameters
-    ----------
-    pitch, teeth, roller_diameter : float or array_like
-        ``p`` [m], ``z`` [-], ``d1`` [m].
+    %(p_z_d1_parameters)s
 
     Returns
     -------
@@ -313,6 +324,7 @@ def _flank_radius_range(d1, z):
 
 
 @finite_guard
+@_DOCS
 def tooth_height_limits(
     pitch: ArrayLike, teeth: ArrayLike, roller_diameter: ArrayLike
 ) -> tuple[FloatOrArray, FloatOrArray]:
@@ -320,10 +332,7 @@ def tooth_height_limits(
 
     .. math:: h_{a,\min} = 0.5\,(p - d_1),\qquad h_{a,\max} = 0.625\,p - 0.5\,d_1 + \frac{0.8\,p}{z}
 
-    Parameters
-    ----------
-    pitch, teeth, roller_diameter : float or array_like
-        ``p`` [m], ``z`` [-], ``d1`` [m].
+    %(p_z_d1_parameters)s
 
     Returns
     -------
@@ -336,9 +345,8 @@ def tooth_height_limits(
 
     Examples
     --------
-    >>> lo, hi = tooth_height_limits(0.0254, 19, 0.01588)
-    >>> round(float(lo) * 1e3, 3), round(float(hi) * 1e3, 3)
-    (4.76, 9.004)
+    >>> [round(float(h) * 1e3, 3) for h in tooth_height_limits(0.0254, 19, 0.01588)]
+    [4.76, 9.004]
     """
     p, d1 = _roller(pitch, roller_diameter)
     z = _teeth(teeth)
@@ -396,20 +404,18 @@ def tooth_width(pitch: ArrayLike, inner_width: ArrayLike, strands: int = 1) -> F
 
 
 @finite_guard
+@_DOCS
 def tooth_side_radius(pitch: ArrayLike) -> FloatOrArray:
     r"""Nominal tooth side radius ``rx = p``, ISO 606:2015 clause 5.6.
 
     .. math:: r_x = p
 
-    Parameters
-    ----------
-    pitch : float or array_like
-        Chain pitch [m].
+    %(p_parameters)s
 
     Returns
     -------
     ndarray
-        [m].
+        Tooth side radius ``rx`` [m].
 
     Examples
     --------
@@ -420,15 +426,13 @@ def tooth_side_radius(pitch: ArrayLike) -> FloatOrArray:
 
 
 @finite_guard
+@_DOCS
 def tooth_side_relief_limits(pitch: ArrayLike) -> tuple[FloatOrArray, FloatOrArray]:
     r"""Nominal tooth side relief ``ba`` from 0.1 p to 0.15 p, ISO 606:2015 clause 5.6.
 
     .. math:: b_a = (0.10 \dots 0.15)\,p
 
-    Parameters
-    ----------
-    pitch : float or array_like
-        Chain pitch [m].
+    %(p_parameters)s
 
     Returns
     -------
@@ -517,7 +521,7 @@ def max_hub_diameter(pitch: ArrayLike, teeth: ArrayLike, plate_height: ArrayLike
 
     Examples
     --------
-    >>> round(float(max_hub_diameter(0.0254, 19, 0.02108)) * 1e3, 3)
+    >>> round(float(max_hub_diameter(0.0254, 19, 0.02108)) * 1e3, 3)   # [mm], 16B-1 on 19 teeth
     129.531
     """
     p = check_positive("pitch", pitch, "m")

@@ -347,7 +347,7 @@ def plate_volume(outline: Outline, width: float, chamfer: ToothChamfer | None = 
     Returns
     -------
     float
-        [m³].
+        Volume of the extruded plate less the chamfer [m³].
 
     Examples
     --------
@@ -393,7 +393,7 @@ def part_volume(part: WheelPart) -> float:
     Returns
     -------
     float
-        [m³].
+        Volume of the part: rim plates and hub, less groove, bore and keyway [m³].
 
     Examples
     --------
@@ -418,18 +418,10 @@ def part_volume(part: WheelPart) -> float:
 
 
 # --------------------------------------------------------------------------- layer 2
-def sprocket_part(
-    sprocket: Sprocket,
-    *,
-    form: str | None = None,
-    tip_diameter: float | None = None,
-    bore: float | None = None,
-    hub_diameter: float | None = None,
-    hub_length: float | None = None,
-    tooth_side_relief: float | None = None,
-    material: str = DEFAULT_MATERIAL,
-    transverse_pitch: float | None = None,
-) -> WheelPart:
+def sprocket_part(sprocket: Sprocket, *, form: str | None = None, tip_diameter: float | None = None,
+                  bore: float | None = None, hub_diameter: float | None = None,
+                  hub_length: float | None = None, tooth_side_relief: float | None = None,
+                  material: str = DEFAULT_MATERIAL, transverse_pitch: float | None = None) -> WheelPart:
     """A sprocket as a part: ISO 606 teeth, chamfer, hub (type B), bore and keyway.
 
     Parameters
@@ -512,19 +504,10 @@ def sprocket_part(
                      bore=bore, hub_diameter=hub_diameter, hub_length=hub_length, limit_name=limit_name)
     chain = sprocket.name or f"p = {p / _MM:g} mm, d1 = {sprocket.roller_diameter / _MM:g} mm"
     return WheelPart(
-        kind="sprocket",
-        title=f"Sprocket {sprocket.name} z = {sprocket.teeth}".replace("  ", " "),
-        chain=chain,
-        teeth=sprocket.teeth,
-        outline=outline,
-        width=width,
-        hub=hub,
-        chamfer=chamfer,
-        groove=None,
-        material=material,
-        dimensions=dims,
-        form=(form or "min") if sprocket.method == "iso606" else None,
-        rim=rim,
+        kind="sprocket", title=f"Sprocket {sprocket.name} z = {sprocket.teeth}".replace("  ", " "),
+        chain=chain, teeth=sprocket.teeth, outline=outline, width=width, hub=hub, chamfer=chamfer,
+        groove=None, material=material, dimensions=dims,
+        form=(form or "min") if sprocket.method == "iso606" else None, rim=rim,
         sources={
             **dims.sources,
             **({"rim": "one tooth plate bf1 per strand, pt apart (ISO 606:2015 5.6), on a web of radius dg/2"}
@@ -535,14 +518,9 @@ def sprocket_part(
     )
 
 
-def pocket_wheel_part(
-    wheel: PocketWheel,
-    *,
-    bore: float | None = None,
-    hub_diameter: float | None = None,
-    hub_length: float | None = None,
-    material: str = "42CrMo4 (1.7225), quenched and tempered, pockets hardened",
-) -> WheelPart:
+def pocket_wheel_part(wheel: PocketWheel, *, bore: float | None = None, hub_diameter: float | None = None,
+                      hub_length: float | None = None,
+                      material: str = "42CrMo4 (1.7225), quenched and tempered, pockets hardened") -> WheelPart:
     """A pocket wheel as a part: pockets for the horizontal links, groove for the vertical links, hub.
 
     The rim is as wide as a horizontal link lying in its pocket, ``b + 2d + 2c`` (link
@@ -589,17 +567,9 @@ def pocket_wheel_part(
     hub = design_hub(max_hub_diameter=gd, rim_diameter=gd, plate_width=width, bore=bore,
                      hub_diameter=hub_diameter, hub_length=hub_length, limit_name="the groove bottom diameter")
     return WheelPart(
-        kind="pocket wheel",
-        title=f"Pocket wheel {wheel.name} z = {wheel.teeth}".replace("  ", " "),
-        chain=wheel.name or f"{d / _MM:g} x {wheel.pitch / _MM:g}",
-        teeth=wheel.teeth,
-        outline=outline,
-        width=float(width),
-        hub=hub,
-        chamfer=None,
-        groove=groove,
-        material=material,
-        dimensions=dims,
+        kind="pocket wheel", title=f"Pocket wheel {wheel.name} z = {wheel.teeth}".replace("  ", " "),
+        chain=wheel.name or f"{d / _MM:g} x {wheel.pitch / _MM:g}", teeth=wheel.teeth, outline=outline,
+        width=float(width), hub=hub, chamfer=None, groove=groove, material=material, dimensions=dims,
         sources={
             **dims.sources,
             "rim_width": "b + 2d + 2c: outer width of a horizontal link (DIN 22252 b; default 21/18 d) plus play",

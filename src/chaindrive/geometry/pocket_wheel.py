@@ -18,22 +18,22 @@ manufacturing profile; compare GOST 13561-89 or DIN 22252's wheel annex for thos
 
 from __future__ import annotations
 
-import os
 from collections.abc import Mapping
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
+from .._docs import Fragments
 from .._finite import finite_guard
 from .._results import Result, quantity
 from .._validation import check_nonnegative, check_positive, check_teeth
 from ..errors import InfeasibleError, InputError
+from ._files import WheelFiles
 from .outline import Arc, Line, Outline, Primitive, _drop_short, _repeat
 from .polygon import link_chain_central_angles, link_chain_pitch_radius
 
 if TYPE_CHECKING:
-    from ezdxf.document import Drawing
 
     from ..chains import Chain
 
@@ -44,7 +44,17 @@ __all__ = ["PocketWheel", "PocketWheelDimensions", "pocket_angles", "DEFAULT_INN
 DEFAULT_INNER_WIDTH_RATIO = 21.0 / 18.0
 
 
+#: The round link chain's dimensions, described once (:mod:`chaindrive._docs`).
+_DOCS = Fragments(pitch_bar="""
+    pitch : float
+        Inner link length ``t`` [m].
+    bar_diameter : float
+        Bar diameter ``d`` [m].
+""")
+
+
 @finite_guard
+@_DOCS
 def pocket_angles(pitch: float, bar_diameter: float, teeth: int) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     r"""Polar angles of pocket centres, hinge centres and vertical-link centres.
 
@@ -56,10 +66,7 @@ def pocket_angles(pitch: float, bar_diameter: float, teeth: int) -> tuple[np.nda
 
     Parameters
     ----------
-    pitch : float
-        Inner link length ``t`` [m].
-    bar_diameter : float
-        Bar diameter ``d`` [m].
+    %(pitch_bar)s
     teeth : int
         Number of pockets ``z`` [-].
 
@@ -113,16 +120,14 @@ class PocketWheelDimensions(Result):
     sources: dict[str, str]
 
 
+@_DOCS
 @dataclass
-class PocketWheel:
+class PocketWheel(WheelFiles):
     """Pocket wheel for a round link chain ``d x t`` with ``teeth`` pockets (thin object).
 
     Parameters
     ----------
-    pitch : float
-        Inner link length ``t`` [m].
-    bar_diameter : float
-        Bar diameter ``d`` [m].
+    %(pitch_bar)s
     teeth : int
         Number of pockets (horizontal links per turn), ``>= 3``.
     inner_width : float, optional
@@ -256,18 +261,5 @@ class PocketWheel:
         centres = np.stack([r * np.cos(hg), r * np.sin(hg)], axis=-1)
         return Outline(prims, r, centres, {"SLOT": slot_r, "TIP": tip})
 
-    def to_dict(self) -> dict[str, Any]:
-        return {"name": self.name, **self.dimensions().to_dict()}
-
     def label(self) -> str:
         return f"Pocket wheel {self.name + ' ' if self.name else ''}z = {self.teeth} (Dolipiński et al. eq. 6)"
-
-    def to_dxf(self, path: str | os.PathLike[str], form: str | None = None) -> Drawing:
-        from .export import outline_to_dxf
-
-        return outline_to_dxf(self.outline(), path, title=self.label())
-
-    def to_svg(self, path: str | os.PathLike[str], form: str | None = None) -> str:
-        from .export import outline_to_svg
-
-        return outline_to_svg(self.outline(), path, title=self.label())

@@ -14,6 +14,7 @@ from __future__ import annotations
 import numpy as np
 from numpy.typing import ArrayLike
 
+from .._docs import Fragments
 from .._typing import FloatOrArray
 from .._validation import check_nonnegative, check_positive, check_teeth
 from ..errors import InputError
@@ -88,20 +89,36 @@ def bi_regular_polygon(
     return radius, delta_long, delta_short
 
 
-def link_chain_pitch_radius(pitch: ArrayLike, bar_diameter: ArrayLike, teeth: ArrayLike) -> FloatOrArray:
-    r"""Pitch radius of a pocket wheel for a round link chain, Dolipiński et al. eq. (6).
-
-    .. math:: R = \tfrac12\sqrt{\left(\frac{t}{\sin\frac{\pi}{2z}}\right)^2 +
-              \left(\frac{d}{\cos\frac{\pi}{2z}}\right)^2}
-
-    Parameters
-    ----------
+#: The round link chain on its wheel, described once (:mod:`chaindrive._docs`).
+_DOCS = Fragments(link_chain="""
     pitch : float or array_like
         Inner link length ``t`` of the chain [m].
     bar_diameter : float or array_like
         Bar (wire) diameter ``d`` of the links [m]; ``0 <= d < t``.
     teeth : int or array_like
         Number of pockets ``z`` (horizontal links seated per turn), ``z >= 3`` [-].
+""")
+_DOCS.section("link_chain_parameters", "link_chain")
+
+
+def _link_chain(pitch, bar_diameter, teeth):
+    """The checked ``t``, ``d``, ``z`` of a round link chain on a pocket wheel."""
+    t = check_positive("pitch", pitch, "m")
+    d = check_nonnegative("bar_diameter", bar_diameter, "m")
+    z = check_teeth("teeth", teeth)
+    if np.any(d >= t):
+        raise InputError("bar_diameter must be smaller than pitch (0 <= d < t)")
+    return t, d, z
+
+
+@_DOCS
+def link_chain_pitch_radius(pitch: ArrayLike, bar_diameter: ArrayLike, teeth: ArrayLike) -> FloatOrArray:
+    r"""Pitch radius of a pocket wheel for a round link chain, Dolipiński et al. eq. (6).
+
+    .. math:: R = \tfrac12\sqrt{\left(\frac{t}{\sin\frac{\pi}{2z}}\right)^2 +
+              \left(\frac{d}{\cos\frac{\pi}{2z}}\right)^2}
+
+    %(link_chain_parameters)s
 
     Returns
     -------
@@ -119,14 +136,11 @@ def link_chain_pitch_radius(pitch: ArrayLike, bar_diameter: ArrayLike, teeth: Ar
     >>> round(float(link_chain_pitch_radius(0.064, 0.018, 8)), 6)
     0.164283
     """
-    t = check_positive("pitch", pitch, "m")
-    d = check_nonnegative("bar_diameter", bar_diameter, "m")
-    z = check_teeth("teeth", teeth)
-    if np.any(d >= t):
-        raise InputError("bar_diameter must be smaller than pitch (0 <= d < t)")
+    t, d, z = _link_chain(pitch, bar_diameter, teeth)
     return bi_regular_polygon(t + d, t - d, z)[0]
 
 
+@_DOCS
 def link_chain_central_angles(
     pitch: ArrayLike, bar_diameter: ArrayLike, teeth: ArrayLike
 ) -> tuple[FloatOrArray, FloatOrArray]:
@@ -135,14 +149,7 @@ def link_chain_central_angles(
     .. math:: \delta_1 = 2\arcsin\frac{t+d}{2R},\quad
               \delta_2 = 2\arcsin\frac{t-d}{2R},\quad \delta_1+\delta_2 = \frac{2\pi}{z}
 
-    Parameters
-    ----------
-    pitch : float or array_like
-        Inner link length ``t`` [m].
-    bar_diameter : float or array_like
-        Bar diameter ``d`` [m].
-    teeth : int or array_like
-        Number of pockets ``z >= 3`` [-].
+    %(link_chain_parameters)s
 
     Returns
     -------
@@ -155,11 +162,7 @@ def link_chain_central_angles(
     >>> round(float(d1), 6), round(float(d2), 6)
     (0.504471, 0.280927)
     """
-    t = check_positive("pitch", pitch, "m")
-    d = check_nonnegative("bar_diameter", bar_diameter, "m")
-    z = check_teeth("teeth", teeth)
-    if np.any(d >= t):
-        raise InputError("bar_diameter must be smaller than pitch (0 <= d < t)")
+    t, d, z = _link_chain(pitch, bar_diameter, teeth)
     _, d1, d2 = bi_regular_polygon(t + d, t - d, z)
     return d1, d2
 

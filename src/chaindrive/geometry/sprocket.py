@@ -22,13 +22,13 @@ cannot be the minimum of a range whose other end is 120° − 90°/z.)
 
 from __future__ import annotations
 
-import os
 from collections.abc import Mapping
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any
 
 from .._results import Result, quantity
 from ..errors import InputError
+from ._files import WheelFiles
 from .iso606 import (  # noqa: F401 - importable from here as before
     MAX_TEETH_TABULATED,
     MIN_TEETH,
@@ -48,6 +48,7 @@ from .iso606 import (  # noqa: F401 - importable from here as before
     tooth_width,
 )
 from .outline import Outline
+from .tooth_form import _DOCS as _TOOTH_DOCS
 from .tooth_form import (  # noqa: F401 - the private helpers for the tests and track_wheel
     TOOTH_FORMS,
     AnsiToothForm,
@@ -63,7 +64,6 @@ from .tooth_form import (  # noqa: F401 - the private helpers for the tests and 
 )
 
 if TYPE_CHECKING:
-    from ezdxf.document import Drawing
 
     from ..chains import Chain
 
@@ -126,18 +126,14 @@ def _get(obj, name, default=None):
     return getattr(obj, name, default) if not isinstance(obj, dict) else obj.get(name, default)
 
 
+@_TOOTH_DOCS
 @dataclass
-class Sprocket:
+class Sprocket(WheelFiles):
     """A roller-chain sprocket: chain dimensions + tooth count (thin object).
 
     Parameters
     ----------
-    pitch : float
-        Chain pitch [m].
-    teeth : int
-        Number of teeth (>= 9).
-    roller_diameter : float
-        Roller diameter ``d1`` [m].
+    %(sprocket_chain)s
     inner_width : float, optional
         Width between inner plates ``b1`` [m] (for the tooth width).
     plate_height : float, optional
@@ -249,15 +245,3 @@ class Sprocket:
     def label(self) -> str:
         std = "ISO 606" if self.method == "iso606" else "ASME B29.1"
         return f"Sprocket {self.name + ' ' if self.name else ''}z = {self.teeth} ({std})"
-
-    def to_dxf(self, path: str | os.PathLike[str], form: str | None = None) -> Drawing:
-        """Write the outline to a DXF file in mm; returns the ezdxf document."""
-        from .export import outline_to_dxf
-
-        return outline_to_dxf(self.outline(form), path, title=self.label())
-
-    def to_svg(self, path: str | os.PathLike[str], form: str | None = None) -> str:
-        """Write the outline to an SVG file (viewBox in mm); returns the SVG text."""
-        from .export import outline_to_svg
-
-        return outline_to_svg(self.outline(form), path, title=self.label())

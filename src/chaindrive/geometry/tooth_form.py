@@ -10,6 +10,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 from numpy.typing import ArrayLike
 
+from .._docs import Fragments
 from .._finite import finite_guard
 from .._registry import Registry
 from .._results import Result, quantity
@@ -400,6 +401,17 @@ def _iso_outline(pitch, teeth, roller_diameter, form="min", tip_diameter=None):
     return outline
 
 
+#: The sprocket's chain and tooth count, described once (:mod:`chaindrive._docs`).
+_DOCS = Fragments(sprocket_chain="""
+    pitch : float
+        Chain pitch ``p`` [m].
+    teeth : int
+        Number of teeth ``z`` (>= 9).
+    roller_diameter : float
+        Roller diameter ``d1`` [m].
+""")
+
+
 @TOOTH_FORMS.register("ansi")
 def _ansi_outline(pitch, teeth, roller_diameter, form=None, tip_diameter=None):
     if form not in (None, "standard"):
@@ -420,18 +432,14 @@ def _ansi_outline(pitch, teeth, roller_diameter, form=None, tip_diameter=None):
     return outline
 
 @finite_guard
+@_DOCS
 def sprocket_outline(pitch: float, teeth: int, roller_diameter: float, *, method: str = "iso606",
                      form: str | None = None, tip_diameter: float | None = None) -> Outline:
     """Closed outline of a whole sprocket (lines and arcs) for the chosen tooth form.
 
     Parameters
     ----------
-    pitch : float
-        Chain pitch [m].
-    teeth : int
-        Number of teeth (>= 9).
-    roller_diameter : float
-        Roller diameter ``d1`` [m].
+    %(sprocket_chain)s
     method : {"iso606", "ansi"}
         Tooth form standard.
     form : {"min", "max"} or None

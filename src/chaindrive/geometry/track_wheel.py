@@ -19,9 +19,8 @@ the line joining the two pins.
 
 from __future__ import annotations
 
-import os
 from dataclasses import dataclass
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING
 
 import numpy as np
 from numpy.typing import ArrayLike
@@ -32,12 +31,13 @@ from .._results import Result, quantity
 from .._typing import FloatOrArray
 from .._validation import check_positive, check_range, check_teeth
 from ..errors import InfeasibleError, InputError
+from ._files import WheelFiles
 from .outline import Arc, Outline, Primitive, _drop_short, _pair, _repeat
 from .polygon import roller_chain_pitch_radius
 from .tooth_form import _convex_flank_to_tip, _tip_half
 
 if TYPE_CHECKING:
-    from ezdxf.document import Drawing
+    pass
 
 __all__ = [
     "PIN_SEAT_FACTOR_RANGE",
@@ -132,11 +132,11 @@ def root_radius(pitch_radius: ArrayLike, pin_seat_radius: ArrayLike) -> FloatOrA
     Returns
     -------
     ndarray
-        [m].
+        Root radius ``R_В`` [m].
 
     Examples
     --------
-    >>> round(float(root_radius(0.355, 0.03)), 6)
+    >>> round(float(root_radius(0.355, 0.03)), 6)   # R_о − r_цо
     0.325
     """
     r0 = check_positive("pitch_radius", pitch_radius, "m")
@@ -173,9 +173,9 @@ def tip_radius_range(
     Parameters
     ----------
     pitch_radius : float or array_like
-        ``R_о`` [m].
+        Pitch radius ``R_о`` of the wheel [m].
     pin_radius : float or array_like
-        ``r_ц`` [m].
+        Pin radius ``r_ц`` of the track links [m].
     link : {"built-up", "cast"}
         Track link construction.
 
@@ -337,7 +337,7 @@ class TrackDriveWheelDimensions(Result):
 
 
 @dataclass
-class TrackDriveWheel:
+class TrackDriveWheel(WheelFiles):
     """Drive wheel of a tracked vehicle engaging lantern pins (thin object, Sharipov).
 
     Parameters
@@ -444,8 +444,8 @@ class TrackDriveWheel:
         Examples
         --------
         >>> o = TrackDriveWheel(0.17, 13, 0.025).outline()
-        >>> o.closure_gap() < 1e-12, len(o.centres)
-        (True, 13)
+        >>> sorted(o.circles), len(o.centres), o.closure_gap() < 1e-12   # a pin centre per tooth
+        (['ROOT', 'TIP'], 13, True)
         """
         d = self.dimensions()
         z, t, rs, r0 = self.teeth, self.pitch, d.pin_seat_radius, d.pitch_radius
@@ -464,18 +464,5 @@ class TrackDriveWheel:
         centres = np.stack([r0 * np.cos(ang), r0 * np.sin(ang)], axis=-1)
         return Outline(_repeat(right + left, z), r0, centres, {"ROOT": d.root_radius, "TIP": d.tip_radius})
 
-    def to_dict(self) -> dict[str, Any]:
-        return {"name": self.name, **self.dimensions().to_dict()}
-
     def label(self) -> str:
         return f"Track drive wheel z = {self.teeth}, {self.link} links (Sharipov)"
-
-    def to_dxf(self, path: str | os.PathLike[str], form: str | None = None) -> Drawing:
-        from .export import outline_to_dxf
-
-        return outline_to_dxf(self.outline(), path, title=self.label())
-
-    def to_svg(self, path: str | os.PathLike[str], form: str | None = None) -> str:
-        from .export import outline_to_svg
-
-        return outline_to_svg(self.outline(), path, title=self.label())

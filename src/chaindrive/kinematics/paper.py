@@ -83,6 +83,7 @@ from __future__ import annotations
 import numpy as np
 from numpy.typing import ArrayLike
 
+from .._docs import Fragments
 from .._finite import finite_guard
 from .histories import PaperEntry
 
@@ -94,6 +95,34 @@ __all__ = [
 ]
 
 
+#: The parameters the paper's entry laws share, described once (:mod:`chaindrive._docs`).
+_DOCS = Fragments(
+    phi="""
+        phi : array_like
+            Wheel angle ``φ`` [rad]; any real value (periodic continuation).
+    """,
+    geometry="""
+        pitch, bar_diameter : float
+            Link pitch ``t`` and bar diameter ``d`` [m] (roller chain: ``p`` and 0).
+        radius : float
+            Pitch radius ``R`` [m].
+    """,
+    deltas="""
+        delta1, delta2 : float
+            Central angles of the links ``t + d`` and ``t - d`` [rad].
+    """,
+    guide_end_distance="""
+        guide_end_distance : float
+            ``l``, the distance of the guide end from the wheel axis [m].
+    """,
+    angular_velocity="""
+        angular_velocity : float
+            Wheel angular velocity ``ω`` [rad/s], constant.
+    """,
+)
+_DOCS.section("rod_parameters", "phi", "geometry", "deltas", "guide_end_distance", "angular_velocity")
+
+
 def _wrap(phi: ArrayLike, period: float) -> tuple[np.ndarray, np.ndarray]:
     phi = np.asarray(phi, dtype=float)
     q = np.floor(phi / period)
@@ -101,15 +130,9 @@ def _wrap(phi: ArrayLike, period: float) -> tuple[np.ndarray, np.ndarray]:
 
 
 @finite_guard
-def paper_free_entry(
-    phi: ArrayLike,
-    radius: float,
-    delta1: float,
-    delta2: float,
-    angular_velocity: float,
-    *,
-    roller: bool = False,
-) -> PaperEntry:
+@_DOCS
+def paper_free_entry(phi: ArrayLike, radius: float, delta1: float, delta2: float, angular_velocity: float, *,
+                     roller: bool = False) -> PaperEntry:
     r"""Free entry, Dolipiński et al. eqs (1)-(4), (10)-(13) with ``ω`` restored.
 
     .. math::
@@ -119,12 +142,10 @@ def paper_free_entry(
 
     Parameters
     ----------
-    phi : array_like
-        Wheel angle [rad].
+    %(phi)s
     radius : float
         Pitch radius ``R`` [m].
-    delta1, delta2 : float
-        Central angles of the links ``t + d`` and ``t - d`` [rad].
+    %(deltas)s
     angular_velocity : float
         ``ω`` [rad/s].
     roller : bool
@@ -175,18 +196,10 @@ def _rod_pieces(gamma, L, c, R, w, decreasing):
 
 
 @finite_guard
-def paper_chordal_entry(
-    phi: ArrayLike,
-    pitch: float,
-    bar_diameter: float,
-    radius: float,
-    delta1: float,
-    delta2: float,
-    guide_end_distance: float,
-    angular_velocity: float,
-    *,
-    roller: bool = False,
-) -> PaperEntry:
+@_DOCS
+def paper_chordal_entry(phi: ArrayLike, pitch: float, bar_diameter: float, radius: float, delta1: float,
+                        delta2: float, guide_end_distance: float, angular_velocity: float, *,
+                        roller: bool = False) -> PaperEntry:
     r"""Chordal entry ``H = R cos(δ1/2)``, Dolipiński et al. eqs (14)-(25), corrected.
 
     .. math::
@@ -197,20 +210,7 @@ def paper_chordal_entry(
     and likewise (15)-(17); velocities (18)-(21), accelerations (22)-(25) in the
     corrected form of the module docstring.
 
-    Parameters
-    ----------
-    phi : array_like
-        Wheel angle [rad].
-    pitch, bar_diameter : float
-        ``t`` and ``d`` [m] (roller chain: ``p`` and 0).
-    radius : float
-        ``R`` [m].
-    delta1, delta2 : float
-        Central angles [rad].
-    guide_end_distance : float
-        ``l`` [m].
-    angular_velocity : float
-        ``ω`` [rad/s].
+    %(rod_parameters)s
     roller : bool
         Roller chain: one link per period ``δ1``; only (14), (15) are used.
 
@@ -231,8 +231,8 @@ def paper_chordal_entry(
     >>> round(float(r["velocity"][0]), 4)
     0.7954
     """
-    t, d, R, w, l = map(float, (pitch, bar_diameter, radius, angular_velocity, guide_end_distance))
-    d1, d2 = float(delta1), float(delta2)
+    t, d, R, w, l, d1, d2 = map(float, (pitch, bar_diameter, radius, angular_velocity, guide_end_distance,
+                                        delta1, delta2))
     c = np.cos(0.5 * d1)
     La, Lb = l - 0.5 * t - 0.5 * d, l - 0.5 * t + 0.5 * d
     T = d1 if roller else d1 + d2
@@ -262,6 +262,7 @@ def paper_chordal_entry(
 
 
 @finite_guard
+@_DOCS
 def paper_tangential_limit_angles(
     pitch: float, bar_diameter: float, radius: float, delta1: float, delta2: float, guide_end_distance: float
 ) -> tuple[float, float]:
@@ -277,12 +278,9 @@ def paper_tangential_limit_angles(
 
     Parameters
     ----------
-    pitch, bar_diameter, radius : float
-        ``t``, ``d``, ``R`` [m].
-    delta1, delta2 : float
-        Central angles [rad].
-    guide_end_distance : float
-        ``l`` [m].
+    %(geometry)s
+    %(deltas)s
+    %(guide_end_distance)s
 
     Returns
     -------
@@ -315,18 +313,10 @@ def _xi(L: float, a: float, R: float) -> float:
 
 
 @finite_guard
-def paper_tangential_entry(
-    phi: ArrayLike,
-    pitch: float,
-    bar_diameter: float,
-    radius: float,
-    delta1: float,
-    delta2: float,
-    guide_end_distance: float,
-    angular_velocity: float,
-    *,
-    roller: bool = False,
-) -> PaperEntry:
+@_DOCS
+def paper_tangential_entry(phi: ArrayLike, pitch: float, bar_diameter: float, radius: float, delta1: float,
+                           delta2: float, guide_end_distance: float, angular_velocity: float, *,
+                           roller: bool = False) -> PaperEntry:
     r"""Tangential entry ``H = R``, Dolipiński et al. eqs (26)-(43), corrected.
 
     .. math::
@@ -335,18 +325,7 @@ def paper_tangential_entry(
     then (30) on ``[φ_g1, δ1]``, (31) on ``[δ1, φ_g2]`` with rod ``l - t - d`` and (35) on
     ``[φ_g2, 2π/z]`` with rod ``l - 2t``; velocities (36)-(39), accelerations (40)-(43).
 
-    Parameters
-    ----------
-    phi : array_like
-        Wheel angle [rad].
-    pitch, bar_diameter, radius : float
-        ``t``, ``d``, ``R`` [m] (roller chain: ``p``, 0).
-    delta1, delta2 : float
-        Central angles [rad].
-    guide_end_distance : float
-        ``l`` [m].
-    angular_velocity : float
-        ``ω`` [rad/s].
+    %(rod_parameters)s
     roller : bool
         Roller chain: period ``δ1``, pieces (26) and (30) only.
 
@@ -360,11 +339,11 @@ def paper_tangential_entry(
     Examples
     --------
     >>> r = paper_tangential_entry([0.0], 0.064, 0.018, 0.164283, 0.504471, 0.280927, 0.256, 5.0)
-    >>> round(float(r["velocity"][0]), 6)
-    0.821415
+    >>> round(float(r.velocity[0]), 6), r.advance == 2 * 0.064   # two links per period
+    (0.821415, True)
     """
-    t, d, R, w, l = map(float, (pitch, bar_diameter, radius, angular_velocity, guide_end_distance))
-    d1, d2 = float(delta1), float(delta2)
+    t, d, R, w, l, d1, d2 = map(float, (pitch, bar_diameter, radius, angular_velocity, guide_end_distance,
+                                        delta1, delta2))
     if roller:
         g1, g2 = 0.5 * d1 + _xi(l, 0.5 * d1, R), np.inf
     else:

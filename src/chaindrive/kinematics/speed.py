@@ -12,7 +12,7 @@ from typing import Any
 from ..errors import InputError
 from ..limits import MAX_TEETH, warn_implausible
 from ..loads import mean_chain_speed, sides_per_turn
-from ..units import parse_quantity
+from ..units import parse_quantity, parse_speed_text
 
 __all__ = ["chain_speed_to_angular_velocity", "parse_wheel_speed"]
 
@@ -108,10 +108,7 @@ def parse_wheel_speed(text: Any, *, pitch: float, teeth: int, link_chain: bool =
     Shigley, §17-5 (chain velocity). Dolipiński et al., eq. (6).
     """
     if isinstance(text, str):
-        try:
-            v = parse_quantity(text, "m/s", field=field)
-        except InputError:
-            v = None
+        v = parse_speed_text(text, field=field)
         if v is not None:
             warn_implausible(f"{field} (chain speed)", v, "chain_speed", stacklevel=3)
             w = chain_speed_to_angular_velocity(v, pitch, teeth, link_chain=link_chain)

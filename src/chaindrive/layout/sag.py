@@ -5,6 +5,7 @@ from __future__ import annotations
 import numpy as np
 from numpy.typing import ArrayLike
 
+from .._docs import Fragments
 from .._finite import finite_guard
 from .._typing import FloatOrArray
 from .._validation import as_float_array, check_positive
@@ -12,6 +13,31 @@ from ..errors import InputError
 
 #: Standard gravity [m/s²] (CGPM 1901).
 GRAVITY = 9.80665
+
+#: The parameters of a hanging span, described once (:mod:`chaindrive._docs`).
+_DOCS = Fragments(
+    chord="""
+        chord_length : float or array_like
+            Distance between the span's end hinges [m].
+        inclination : float or array_like
+            Angle of the chord above the horizontal [rad], ``|γ| < π/2``.
+    """,
+    weight="""
+        mass_per_length : float or array_like
+            Chain mass per length ``q`` [kg/m].
+        gravity : float
+            Acceleration of gravity ``g`` [m/s²].
+    """,
+    span_tension="""
+        %(chord)s
+        tension : float or array_like
+            Horizontal component ``H`` of the chain tension [N] (constant along a
+            catenary; the tension at a point is ``H cosh``).
+        %(weight)s
+    """,
+)
+_DOCS.section("span_parameters", "span_tension")
+
 
 def _catenary_parts(chord_length, inclination, tension, mass_per_length, gravity):
     L = check_positive("chord_length", chord_length, "m")
@@ -28,13 +54,9 @@ def _catenary_parts(chord_length, inclination, tension, mass_per_length, gravity
 
 
 @finite_guard
-def catenary_sag(
-    chord_length: ArrayLike,
-    inclination: ArrayLike,
-    tension: ArrayLike,
-    mass_per_length: ArrayLike,
-    gravity: float = GRAVITY,
-) -> FloatOrArray:
+@_DOCS
+def catenary_sag(chord_length: ArrayLike, inclination: ArrayLike, tension: ArrayLike,
+                 mass_per_length: ArrayLike, gravity: float = GRAVITY) -> FloatOrArray:
     r"""Sag of a chain span hanging as a catenary (largest vertical chord-to-chain distance).
 
     .. math::
@@ -42,19 +64,7 @@ def catenary_sag(
         x_0 = \frac{\ell}{2} - \frac1k\operatorname{asinh}\frac{k h}{2\sinh(k\ell/2)},
         \quad f = m x^* - y(x^*),\ \sinh k(x^* - x_0) = m = h/\ell
 
-    Parameters
-    ----------
-    chord_length : float or array_like
-        Distance between the span's end hinges [m].
-    inclination : float or array_like
-        Angle of the chord above the horizontal [rad], ``|γ| < π/2``.
-    tension : float or array_like
-        Horizontal component ``H`` of the chain tension [N] (constant along a
-        catenary; the tension at a point is ``H cosh``).
-    mass_per_length : float or array_like
-        Chain mass per length ``q`` [kg/m].
-    gravity : float
-        [m/s²].
+    %(span_parameters)s
 
     Returns
     -------
@@ -90,29 +100,14 @@ def _catenary_sag(span, rise, k):
 
 
 @finite_guard
-def parabolic_sag(
-    chord_length: ArrayLike,
-    inclination: ArrayLike,
-    tension: ArrayLike,
-    mass_per_length: ArrayLike,
-    gravity: float = GRAVITY,
-) -> FloatOrArray:
+@_DOCS
+def parabolic_sag(chord_length: ArrayLike, inclination: ArrayLike, tension: ArrayLike,
+                  mass_per_length: ArrayLike, gravity: float = GRAVITY) -> FloatOrArray:
     r"""Sag of a span by the parabolic approximation.
 
     .. math:: f = \frac{q g \ell^2}{8 H \cos\gamma},\qquad \ell = L\cos\gamma
 
-    Parameters
-    ----------
-    chord_length : float or array_like
-        [m].
-    inclination : float or array_like
-        Chord angle above horizontal [rad].
-    tension : float or array_like
-        Horizontal tension ``H`` [N].
-    mass_per_length : float or array_like
-        [kg/m].
-    gravity : float
-        [m/s²].
+    %(span_parameters)s
 
     Returns
     -------
@@ -140,29 +135,19 @@ def parabolic_sag(
 
 
 @finite_guard
-def tension_for_sag(
-    chord_length: ArrayLike,
-    inclination: ArrayLike,
-    sag: ArrayLike,
-    mass_per_length: ArrayLike,
-    gravity: float = GRAVITY,
-) -> FloatOrArray:
+@_DOCS
+def tension_for_sag(chord_length: ArrayLike, inclination: ArrayLike, sag: ArrayLike,
+                    mass_per_length: ArrayLike, gravity: float = GRAVITY) -> FloatOrArray:
     r"""Horizontal tension that gives a catenary span the stated sag (inverse).
 
     .. math:: f(H) = f_{given}\ \text{solved for}\ H
 
     Parameters
     ----------
-    chord_length : float or array_like
-        [m].
-    inclination : float or array_like
-        [rad].
+    %(chord)s
     sag : float or array_like
         Vertical sag ``f > 0`` [m].
-    mass_per_length : float or array_like
-        [kg/m].
-    gravity : float
-        [m/s²].
+    %(weight)s
 
     Returns
     -------

@@ -59,7 +59,7 @@ def chain_length_approx(
 
     Examples
     --------
-    >>> round(float(chain_length_approx(0.0254, 19, 57, 1.05)), 3)
+    >>> round(float(chain_length_approx(0.0254, 19, 57, 1.05)), 3)   # [pitches]
     121.562
     """
     p = check_positive("pitch", pitch, "m")
@@ -112,7 +112,7 @@ def centre_distance_approx(pitch: ArrayLike, teeth_1: ArrayLike, teeth_2: ArrayL
 
     Examples
     --------
-    >>> round(float(centre_distance_approx(0.0254, 19, 57, 122)), 4)
+    >>> round(float(centre_distance_approx(0.0254, 19, 57, 122)), 4)   # [m], 122 links
     1.0556
     """
     p = check_positive("pitch", pitch, "m")
@@ -407,15 +407,8 @@ def _check_phases(phases, teeth_1: int, teeth_2: int) -> None:
 
 
 @finite_guard
-def chain_length_polygon(
-    pitch: float,
-    teeth_1: int,
-    teeth_2: int,
-    centre_distance: float,
-    *,
-    bar_diameter: float | None = None,
-    phases: int = 12,
-) -> PolygonLength:
+def chain_length_polygon(pitch: float, teeth_1: int, teeth_2: int, centre_distance: float, *,
+                         bar_diameter: float | None = None, phases: int = 12) -> PolygonLength:
     r"""Exact taut chain length on the pitch *polygons* of two wheels, over their phases.
 
     .. math::
@@ -504,7 +497,7 @@ class PolygonCentreDistance(Result):
     Attributes
     ----------
     links : int
-        Chain length [pitches].
+        Chain length [pitches], as asked.
     taut : float
         Largest centre distance at which the chain fits at *every* sampled phase pair
         (taut at its tightest phase) [m]: the recommended nominal centre distance.
@@ -604,15 +597,8 @@ def _extreme_phase_root(pick, p, z1, z2, d, n, target, a0, r1, r2, lo, hi):
 
 
 @finite_guard
-def centre_distance_polygon(
-    pitch: float,
-    teeth_1: int,
-    teeth_2: int,
-    links: int,
-    *,
-    bar_diameter: float | None = None,
-    phases: int = 12,
-) -> PolygonCentreDistance:
+def centre_distance_polygon(pitch: float, teeth_1: int, teeth_2: int, links: int, *,
+                            bar_diameter: float | None = None, phases: int = 12) -> PolygonCentreDistance:
     r"""Centre distance for a whole number of links, solving the polygon model.
 
     .. math:: \max_{\varphi_1,\varphi_2} X(a_{taut}, \varphi_1, \varphi_2) = N,

@@ -84,7 +84,7 @@ def dynamic_tension(moving_mass: ArrayLike, acceleration: ArrayLike) -> FloatOrA
 
     Examples
     --------
-    >>> float(dynamic_tension(10.0, 2.0))
+    >>> float(dynamic_tension(10.0, 2.0))   # m a = 10 kg × 2 m/s²
     20.0
     """
     m = check_nonnegative("moving_mass", moving_mass, "kg")
@@ -269,7 +269,7 @@ def dynamic_factor(tension: ArrayLike, dynamic_tension: ArrayLike) -> FloatOrArr
 
     Examples
     --------
-    >>> float(dynamic_factor(1000.0, 250.0))
+    >>> float(dynamic_factor(1000.0, 250.0))   # 1 + F_d / F = 1 + 250/1000
     1.25
     """
     F = check_positive("tension", tension, "N")

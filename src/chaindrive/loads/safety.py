@@ -249,7 +249,7 @@ def static_safety_factor(breaking_force: ArrayLike, tension: ArrayLike) -> Float
     Returns
     -------
     ndarray
-        [-].
+        Safety factor ``S = F_B / F`` [-].
 
     Notes
     -----
@@ -263,7 +263,7 @@ def static_safety_factor(breaking_force: ArrayLike, tension: ArrayLike) -> Float
 
     Examples
     --------
-    >>> float(static_safety_factor(60000.0, 5000.0))
+    >>> float(static_safety_factor(60000.0, 5000.0))   # F_B / F = 60 kN / 5 kN
     12.0
     """
     Fb = check_positive("breaking_force", breaking_force, "N")

@@ -64,7 +64,7 @@ def power_from_torque(torque: ArrayLike, angular_velocity: ArrayLike) -> FloatOr
 
     Examples
     --------
-    >>> float(power_from_torque(100.0, 10.0))
+    >>> float(power_from_torque(100.0, 10.0))   # T ω = 100 N·m × 10 rad/s
     1000.0
     """
     T = check_nonnegative("torque", torque, "N*m")

@@ -42,7 +42,7 @@ def tight_side_tension(torque: ArrayLike, pitch_radius: ArrayLike) -> FloatOrArr
 
     Examples
     --------
-    >>> round(float(tight_side_tension(149.21, 0.077159)), 1)
+    >>> round(float(tight_side_tension(149.21, 0.077159)), 1)   # T / R
     1933.8
     """
     T = check_nonnegative("torque", torque, "N*m")
@@ -80,7 +80,7 @@ def centrifugal_tension(mass_per_length: ArrayLike, chain_speed: ArrayLike) -> F
 
     Examples
     --------
-    >>> round(float(centrifugal_tension(2.6, 7.72)), 1)
+    >>> round(float(centrifugal_tension(2.6, 7.72)), 1)   # q v² = 2.6 × 7.72²
     155.0
     """
     q = check_positive("mass_per_length", mass_per_length, "kg/m")

@@ -29,6 +29,7 @@ def conveyor_plot(result: ConveyorPull, *, ax: Axes | None = None) -> Figure:
     Returns
     -------
     matplotlib.figure.Figure
+        The running tension against the position along the chain from the head's exit [m].
 
     Examples
     --------

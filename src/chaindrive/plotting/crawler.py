@@ -23,12 +23,8 @@ _STYLES = {
 }
 
 
-def crawler_plot(
-    result_or_results: CrawlerKinematics | Mapping[str, CrawlerKinematics] | Sequence[CrawlerKinematics],
-    *,
-    ax: Sequence[Axes] | None = None,
-    degrees: bool = True,
-) -> Figure:
+def crawler_plot(result_or_results: CrawlerKinematics | Mapping[str, CrawlerKinematics] | Sequence[CrawlerKinematics],
+                 *, ax: Sequence[Axes] | None = None, degrees: bool = True) -> Figure:
     """Velocity and acceleration of the crawler drive chain over a period, with and without guide.
 
     Parameters
@@ -45,7 +41,8 @@ def crawler_plot(
     Returns
     -------
     matplotlib.figure.Figure
-        The figure (never shown).
+        The velocity and acceleration panels (and the cam force's, when a result carries
+        it) against the sprocket angle; never shown.
 
     Examples
     --------

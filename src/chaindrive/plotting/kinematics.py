@@ -25,12 +25,8 @@ _STYLES = {
 }
 
 
-def kinematics_plot(
-    results: EntryKinematics | Mapping[str, EntryKinematics] | Sequence[EntryKinematics],
-    *,
-    ax: Sequence[Axes] | None = None,
-    degrees: bool = True,
-) -> Figure:
+def kinematics_plot(results: EntryKinematics | Mapping[str, EntryKinematics] | Sequence[EntryKinematics],
+                    *, ax: Sequence[Axes] | None = None, degrees: bool = True) -> Figure:
     """Velocity and acceleration of the chain over one period, like Dolipiński et al.'s Figs 2-3.
 
     Parameters
@@ -46,7 +42,8 @@ def kinematics_plot(
     Returns
     -------
     matplotlib.figure.Figure
-        The figure (never shown).
+        The velocity and acceleration panels against the wheel angle, one line per
+        result; never shown.
 
     Examples
     --------

@@ -34,6 +34,7 @@ def simulation_plot(result: SimulationResult, *, ax: Sequence[Axes] | None = Non
     Returns
     -------
     matplotlib.figure.Figure
+        The four views against time [s] on a 2 × 2 grid.
 
     Examples
     --------
@@ -142,6 +143,7 @@ def drive_frame_plot(result: SimulationResult, frame: int = -1, *, ax: Axes | No
     Returns
     -------
     matplotlib.figure.Figure
+        The drive in its plane at record ``frame``, pins coloured by link tension.
 
     Examples
     --------

@@ -101,6 +101,7 @@ def pin_bending_plot(result: Iterable[PinBendingResult], *, ax: Axes | None = No
     Returns
     -------
     matplotlib.figure.Figure
+        The pin deflection along the pin, one panel per result.
 
     Examples
     --------

@@ -132,6 +132,7 @@ def scatter_matrix_plot(columns: dict[str, Sequence[float]], *, units: dict[str,
     Returns
     -------
     matplotlib.figure.Figure
+        Histograms on the diagonal, one scatter panel per pair of columns elsewhere.
 
     Examples
     --------
@@ -224,6 +225,8 @@ def feasible_region_plot(x: Sequence[float], y: Sequence[float], feasible: Seque
     Returns
     -------
     matplotlib.figure.Figure
+        The grid cells coloured by their fraction of passing variants (or the points, for
+        scattered samples), with the colour bar.
 
     Examples
     --------

@@ -34,9 +34,11 @@ def campbell_plot(result: CampbellResult, *, ax: Axes | None = None) -> Figure:
     Parameters
     ----------
     result : CampbellResult
-        From :func:`chaindrive.vibration.campbell`.
+        The speeds, natural frequencies and excitation orders, from
+        :func:`chaindrive.vibration.campbell`.
     ax : matplotlib Axes, optional
-        Axes to draw on; a new figure if omitted.
+        Axes to draw on (secondary axes in rpm above and Hz beside are added to it); a
+        new figure if omitted.
 
     Returns
     -------
@@ -139,9 +141,11 @@ def resonance_map_plot(result: ResonanceMapResult, *, ax: Axes | None = None) ->
     Parameters
     ----------
     result : ResonanceMapResult
-        From :func:`chaindrive.vibration.resonance_map`.
+        The smallest margins over the (mass, stiffness) grid, from
+        :func:`chaindrive.vibration.resonance_map`.
     ax : matplotlib Axes, optional
-        Axes to draw on; a new figure if omitted.
+        Axes to draw on (the colour bar of the margin is added beside it); a new figure
+        if omitted.
 
     Returns
     -------

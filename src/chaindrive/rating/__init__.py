@@ -317,6 +317,7 @@ def chain_rating(chain: Chain | str, teeth: int, angular_velocity: float, *,
     Returns
     -------
     ChainRating
+        By the chosen method; its ``method`` and ``source`` name it.
 
     Raises
     ------
@@ -419,7 +420,11 @@ RATING_METHODS.add("iso10823", _iso10823_rating)
 
 
 def default_method(chain: Chain) -> str:
-    """The rating method of a chain's family: ISO 606 B series by ISO 10823 when registered, else ANSI/ACA.
+    """The rating method of a chain's family: its own when registered, ISO 606 B series by ISO 10823, else ANSI/ACA.
+
+    A family beyond the built-in ones (:func:`chaindrive.chains.register_family`, or a
+    ``chains/data/<family>.csv``) rates by the method registered under its name in
+    :data:`RATING_METHODS`, from the module ``chaindrive/rating/<family>.py`` when there is one.
 
     >>> from chaindrive.chains import get
     >>> default_method(get("ANSI 40")), default_method(get("12A-1")), default_method(get("12B-1"))
@@ -427,9 +432,26 @@ def default_method(chain: Chain) -> str:
     """
     from .iso10823 import is_b_series
 
+    if chain.family not in _BUILTIN_FAMILIES:  # a further family rates by its own method
+        _import_family_method(chain.family)
+        if chain.family in RATING_METHODS:
+            return chain.family
     if chain.family == "iso606" and is_b_series(chain.name) and "iso10823" in RATING_METHODS:
         return "iso10823"
     return "ansi"
+
+
+_BUILTIN_FAMILIES = ("iso606", "ansi", "din22252", "custom")
+
+
+def _import_family_method(family: str) -> None:
+    """Import ``chaindrive.rating.<family>`` once if it exists: it registers the family's method."""
+    import importlib
+    import importlib.util
+
+    name = f"{__name__}.{family}"
+    if family not in RATING_METHODS and importlib.util.find_spec(name) is not None:
+        importlib.import_module(name)
 
 
 def rating_constants(name: str, method: str = "ansi") -> tuple[float, float]:

@@ -32,6 +32,7 @@ from importlib import resources
 import numpy as np
 from numpy.typing import ArrayLike
 
+from .._docs import Fragments
 from .._finite import finite_guard
 from .._validation import check_nonnegative, check_positive, check_teeth, warn_outside
 from ..errors import InputError, UnknownNameError, ValidityRangeWarning
@@ -56,6 +57,28 @@ __all__ = [
     "LUBRICATION_TYPES",
 ]
 
+#: The parameters the rating formulas share, described once (:mod:`chaindrive._docs`).
+_DOCS = Fragments(
+    pitch="""
+        pitch : float or array_like
+            Chain pitch ``p`` [m].
+    """,
+    teeth="""
+        teeth : int or array_like
+            Teeth ``z1`` of the small sprocket [-].
+    """,
+    angular_velocity="""
+        angular_velocity : float or array_like
+            Speed ``ω1`` of the small sprocket [rad/s].
+    """,
+    chain_speed="""
+        chain_speed : float or array_like
+            Mean chain speed ``v`` [m/s].
+    """,
+)
+_DOCS.section("galling_parameters", "pitch", "teeth", "angular_velocity")
+_DOCS.section("lubrication_parameters", "chain_speed", "pitch")
+
 HP = 745.69987158227022
 _INCH = 0.0254
 
@@ -68,6 +91,7 @@ def _inputs(teeth, angular_velocity, pitch):
     return z, angular_velocity_to_rpm(w), p / _INCH
 
 
+@_DOCS
 def ansi_link_plate_power(teeth: ArrayLike, angular_velocity: ArrayLike, pitch: ArrayLike,
                           plate_constant: float = 0.004) -> np.ndarray:
     r"""ANSI/ACA power limit set by link-plate fatigue.
@@ -77,12 +101,9 @@ def ansi_link_plate_power(teeth: ArrayLike, angular_velocity: ArrayLike, pitch: 
 
     Parameters
     ----------
-    teeth : int or array_like
-        Teeth ``z1`` of the small sprocket [-].
-    angular_velocity : float or array_like
-        Speed of the small sprocket [rad/s].
-    pitch : float or array_like
-        Chain pitch [m].
+    %(teeth)s
+    %(angular_velocity)s
+    %(pitch)s
     plate_constant : float
         ``K_p`` = 0.004 (0.0022 for ANSI 41) [hp units].
 
@@ -112,6 +133,7 @@ def ansi_link_plate_power(teeth: ArrayLike, angular_velocity: ArrayLike, pitch: 
     return plate_constant * z**1.08 * n**0.9 * p ** (3.0 - 0.07 * p) * HP
 
 
+@_DOCS
 def ansi_roller_bushing_power(teeth: ArrayLike, angular_velocity: ArrayLike, pitch: ArrayLike,
                               roller_constant: float = 17.0) -> np.ndarray:
     r"""ANSI/ACA power limit set by roller–bushing impact fatigue.
@@ -120,19 +142,16 @@ def ansi_roller_bushing_power(teeth: ArrayLike, angular_velocity: ArrayLike, pit
 
     Parameters
     ----------
-    teeth : int or array_like
-        Teeth of the small sprocket [-].
-    angular_velocity : float or array_like
-        Speed of the small sprocket [rad/s].
-    pitch : float or array_like
-        [m].
+    %(teeth)s
+    %(angular_velocity)s
+    %(pitch)s
     roller_constant : float
         ``K_r`` = 29 (ANSI 25, 35), 3.4 (ANSI 41), 17 (ANSI 40…240) [-].
 
     Returns
     -------
     ndarray
-        [W].
+        Power of one strand at the roller–bushing limit [W].
 
     References
     ----------
@@ -236,11 +255,14 @@ def ansi_constants(name: str) -> tuple[float, float]:
     Parameters
     ----------
     name : str
-        Chain name (``"ANSI 40-1"``, ``"08A-1"``, ``"16B-1"``).
+        Chain name (``"ANSI 40-1"``, ``"08A-1"``, ``"16B-1"``); its ANSI number (or that of
+        its ISO 606 twin) sets the constants.
 
     Returns
     -------
-    tuple of float
+    kp, kr : float
+        ``K_p`` of the link-plate branch (hp units of eq. (17-32)) and ``K_r`` of the
+        roller–bushing branch [-].
 
     References
     ----------
@@ -260,6 +282,7 @@ def ansi_constants(name: str) -> tuple[float, float]:
 
 
 @finite_guard
+@_DOCS
 def ansi_rated_power(pitch: ArrayLike, teeth: ArrayLike, angular_velocity: ArrayLike, *, strands: int = 1,
                      plate_constant: float = 0.004, roller_constant: float = 17.0) -> np.ndarray:
     r"""Rated power of a roller chain by the ANSI/ACA method (both limits, strands).
@@ -268,12 +291,9 @@ def ansi_rated_power(pitch: ArrayLike, teeth: ArrayLike, angular_velocity: Array
 
     Parameters
     ----------
-    pitch : float or array_like
-        [m].
-    teeth : int or array_like
-        Small-sprocket teeth [-].
-    angular_velocity : float or array_like
-        Small-sprocket speed [rad/s].
+    %(pitch)s
+    %(teeth)s
+    %(angular_velocity)s
     strands : int
         Number of strands (1…4).
     plate_constant, roller_constant : float
@@ -317,6 +337,7 @@ def _galling_exponent(pitch_in: np.ndarray) -> np.ndarray:
     return 1.0 / (1.59 * np.log10(pitch_in) + 1.873)
 
 
+@_DOCS
 def galling_speed(pitch: ArrayLike, teeth: ArrayLike, tension: ArrayLike) -> np.ndarray:
     r"""Small-sprocket speed at which the pins and bushings of a roller chain gall.
 
@@ -326,10 +347,8 @@ def galling_speed(pitch: ArrayLike, teeth: ArrayLike, tension: ArrayLike) -> np.
 
     Parameters
     ----------
-    pitch : float or array_like
-        Chain pitch [m].
-    teeth : int or array_like
-        Teeth ``z1`` of the small sprocket [-].
+    %(pitch)s
+    %(teeth)s
     tension : float or array_like
         Chain tension ``F`` of one strand [N], ``>= 0``.
 
@@ -371,20 +390,14 @@ def _galling_tension_lbf(p_in, z, n_rpm):
                      - np.log(n_rpm / 1000.0) / _galling_exponent(p_in)) / math.log(1.323)
 
 
+@_DOCS
 def galling_tension(pitch: ArrayLike, teeth: ArrayLike, angular_velocity: ArrayLike) -> np.ndarray:
     r"""Strand tension at which the joints gall at a given speed (inverse of :func:`galling_speed`).
 
     .. math:: F = \frac{1000}{\ln 1.323}\left[\ln 82.5 - p\ln 7.95 - z_1 \ln 1.0278
               - (1.59\log_{10} p + 1.873)\ln\frac{n_1}{1000}\right]\ \text{lbf}
 
-    Parameters
-    ----------
-    pitch : float or array_like
-        Chain pitch [m].
-    teeth : int or array_like
-        Small-sprocket teeth [-].
-    angular_velocity : float or array_like
-        Small-sprocket speed [rad/s].
+    %(galling_parameters)s
 
     Returns
     -------
@@ -420,19 +433,13 @@ def galling_tension(pitch: ArrayLike, teeth: ArrayLike, angular_velocity: ArrayL
     return np.maximum(f, 0.0)
 
 
+@_DOCS
 def galling_power(pitch: ArrayLike, teeth: ArrayLike, angular_velocity: ArrayLike) -> np.ndarray:
     r"""Power one strand carries at the onset of galling: galling tension × chain speed.
 
     .. math:: H_3 = F_g(n_1)\,v,\qquad v = \frac{z_1\,p\,\omega}{2\pi}
 
-    Parameters
-    ----------
-    pitch : float or array_like
-        Chain pitch [m].
-    teeth : int or array_like
-        Small-sprocket teeth [-].
-    angular_velocity : float or array_like
-        Small-sprocket speed [rad/s].
+    %(galling_parameters)s
 
     Returns
     -------
@@ -491,6 +498,7 @@ def _lubrication_table() -> dict[str, np.ndarray]:
 LUBRICATION_TYPES: dict[str, np.ndarray] = _lubrication_table()
 
 
+@_DOCS
 def lubrication_limits(pitch: ArrayLike) -> tuple[np.ndarray, np.ndarray]:
     r"""Upper chain speeds of lubrication types A (manual/drip) and B (bath/disc).
 
@@ -499,8 +507,7 @@ def lubrication_limits(pitch: ArrayLike) -> tuple[np.ndarray, np.ndarray]:
 
     Parameters
     ----------
-    pitch : float or array_like
-        Chain pitch [m].
+    %(pitch)s
 
     Returns
     -------
@@ -548,18 +555,26 @@ def lubrication_limits(pitch: ArrayLike) -> tuple[np.ndarray, np.ndarray]:
     return a * _FPM, b * _FPM
 
 
+def _lubrication_classes(chain_speed, pitch, labels):
+    """``labels[0]`` up to the first limit speed, ``labels[1]`` up to the second, else ``labels[2]``;
+    the limits' range warnings passed on to the caller of the public function."""
+    v = check_nonnegative("chain_speed", chain_speed, "m/s")
+    with warnings.catch_warnings(record=True) as rec:
+        warnings.simplefilter("always", ValidityRangeWarning)
+        va, vb = lubrication_limits(pitch)
+    for r in rec:
+        warnings.warn(str(r.message), ValidityRangeWarning, stacklevel=3)
+    return np.where(v <= va, labels[0], np.where(v <= vb, labels[1], labels[2]))
+
+
+@_DOCS
 def lubrication_region(chain_speed: ArrayLike, pitch: ArrayLike) -> np.ndarray:
     r"""ANSI lubrication region of a chain speed: ``"A"``, ``"B"`` or ``"C"``.
 
     .. math:: v \le v_A(p) \Rightarrow A;\quad v \le v_B(p) \Rightarrow B;
               \quad \text{else } C
 
-    Parameters
-    ----------
-    chain_speed : float or array_like
-        [m/s].
-    pitch : float or array_like
-        [m].
+    %(lubrication_parameters)s
 
     Returns
     -------
@@ -574,20 +589,14 @@ def lubrication_region(chain_speed: ArrayLike, pitch: ArrayLike) -> np.ndarray:
 
     Examples
     --------
-    >>> str(lubrication_region(1.0, 0.0254)), str(lubrication_region(20.0, 0.0254))
+    >>> str(lubrication_region(1.0, 0.0254)), str(lubrication_region(20.0, 0.0254))   # No. 80
     ('B', 'C')
     """
-    v = check_nonnegative("chain_speed", chain_speed, "m/s")
-    with warnings.catch_warnings():
-        warnings.simplefilter("always", ValidityRangeWarning)
-        with warnings.catch_warnings(record=True) as rec:
-            va, vb = lubrication_limits(pitch)
-    for r in rec:
-        warnings.warn(str(r.message), ValidityRangeWarning, stacklevel=2)
-    return np.where(v <= va, "A", np.where(v <= vb, "B", "C"))
+    return _lubrication_classes(chain_speed, pitch, ("A", "B", "C"))
 
 
 @finite_guard
+@_DOCS
 def lubrication_type(chain_speed: ArrayLike, pitch: ArrayLike) -> np.ndarray:
     r"""ANSI lubrication type as a Roman numeral: I (= A), II (= B), III (= C).
 
@@ -596,16 +605,12 @@ def lubrication_type(chain_speed: ArrayLike, pitch: ArrayLike) -> np.ndarray:
     Kept for callers that use the older names; new code should use
     :func:`lubrication_region` (the letters of the ANSI tables).
 
-    Parameters
-    ----------
-    chain_speed : float or array_like
-        [m/s].
-    pitch : float or array_like
-        [m].
+    %(lubrication_parameters)s
 
     Returns
     -------
     ndarray of str
+        ``"I"``, ``"II"``, ``"III"``: the regions A, B, C of :func:`lubrication_region`.
 
     References
     ----------
@@ -616,13 +621,7 @@ def lubrication_type(chain_speed: ArrayLike, pitch: ArrayLike) -> np.ndarray:
     >>> str(lubrication_type(1.0, 0.0254)), str(lubrication_type(20.0, 0.0254))
     ('II', 'III')
     """
-    v = check_nonnegative("chain_speed", chain_speed, "m/s")
-    with warnings.catch_warnings(record=True) as rec:
-        warnings.simplefilter("always", ValidityRangeWarning)
-        va, vb = lubrication_limits(pitch)
-    for r in rec:
-        warnings.warn(str(r.message), ValidityRangeWarning, stacklevel=2)
-    return np.where(v <= va, "I", np.where(v <= vb, "II", "III"))
+    return _lubrication_classes(chain_speed, pitch, ("I", "II", "III"))
 
 
 from chaindrive._finite import guard_public  # noqa: E402

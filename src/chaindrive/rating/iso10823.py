@@ -207,7 +207,7 @@ def iso10823_rated_power(name: str, pitch: ArrayLike, teeth: ArrayLike, angular_
     Returns
     -------
     ndarray
-        [W].
+        Rated power of the chain (all its strands) [W].
 
     References
     ----------

@@ -58,6 +58,7 @@ Transmission Design* (Overly Hautz Motor Base Co.): spring-loaded and reactive-t
 ch. 1 (catenary and the parabolic length excess).
 """
 
+from . import statics as _statics
 from .equilibrium import CarrierGeometry, rational_pivot, solve_equilibrium
 from .grid import SelfRegulatingDriveResult, self_regulating_drive
 from .sag import (
@@ -66,26 +67,10 @@ from .sag import (
     sag_length_excess,
     sag_stiffness,
 )
-from .statics import (
-    CARRIER_KINDS,
-    TORQUE_REACTIONS,
-    carrier_position,
-    regulation_coefficient,
-    restoring_force,
-    slack_tension,
-    span_arms,
-    worn_centre_distance,
-)
+from .statics import *  # noqa: F403 - the carrier statics, named once in statics.__all__
 
 __all__ = [
-    "CARRIER_KINDS",
-    "TORQUE_REACTIONS",
-    "worn_centre_distance",
-    "carrier_position",
-    "span_arms",
-    "regulation_coefficient",
-    "slack_tension",
-    "restoring_force",
+    *_statics.__all__,
     "sag_length_excess",
     "pivot_offset_for_coefficient",
     "sag_stiffness",

@@ -29,6 +29,7 @@ import math
 import numpy as np
 from numba import njit
 
+from . import _contact as C
 from . import _kernel as K
 from ._banded import (  # noqa: F401 - the cyclic solver is part of this module's interface
     _apply_inverse,
@@ -41,18 +42,7 @@ from ._banded import (  # noqa: F401 - the cyclic solver is part of this module'
     cyclic_tridiagonal_solve,
     cyclic_tridiagonal_substitute,
 )
-from ._kernel import (
-    _fast_atan2,
-    _sat,
-    _segment_frame,
-    advance_motor,
-    guide_penetration,
-    nearest_seat,
-    seat_penetration,
-    speed_factor,
-    wheel_drive_torque,
-    wheel_profile,
-)
+from ._kernel import advance_motor, speed_factor, wheel_drive_torque
 
 # per-contact columns kept for the wheels' implicit update after the pins
 C_BETA, C_S, C_NX, C_NY, C_L, C_LT, C_DN, C_DT, C_FN0, C_FT0, C_FN = range(11)
@@ -249,7 +239,6 @@ def integrate_implicit(pos: np.ndarray, vel: np.ndarray, force: np.ndarray, work
     kg = par[K.P_KG]
     cg = par[K.P_CG]
     dtref = par[K.P_DTREF]
-    twopi = 2.0 * math.pi
     inv_m = 1.0 / m
     mh = m / h
     th = par[K.P_THETA]
@@ -318,14 +307,8 @@ def integrate_implicit(pos: np.ndarray, vel: np.ndarray, force: np.ndarray, work
         # links: tension at the start of the step, and its linearised value at the end
         # without the implicit increment, T* = T + h k l̇
         for i in range(n - 1):
-            dx = x[i + 1] - x[i]
-            dy = y[i + 1] - y[i]
-            ll = math.sqrt(dx * dx + dy * dy)
-            il = 1.0 / ll
-            ex = dx * il
-            ey = dy * il
-            ldot = (vx[i + 1] - vx[i]) * ex + (vy[i + 1] - vy[i]) * ey
-            tt = k * (ll - rest[i]) + c * ldot
+            tt, ex, ey, ldot = C.link_force(x[i + 1] - x[i], y[i + 1] - y[i], vx[i + 1] - vx[i],
+                                            vy[i + 1] - vy[i], k, c, rest[i])
             tension[i] = tt
             tstar[i] = tt + thh * k * ldot
             ux[i] = ex
@@ -353,57 +336,21 @@ def integrate_implicit(pos: np.ndarray, vel: np.ndarray, force: np.ndarray, work
                 omu[w] = ws[w, K.S_OMEGA]
         rebuild = countdown <= 0
         if rebuild:
-            vmax = 0.0
-            for i in range(n):
-                v2 = vx[i] * vx[i] + vy[i] * vy[i]
-                if v2 > vmax:
-                    vmax = v2
-            vmax = math.sqrt(vmax)
-            for w in range(nw):
-                vmax_w = abs(ws[w, K.S_SDOT])
-                if vmax_w > vmax_s:
-                    vmax_s = vmax_w
-            cnt = margin / (4.0 * (vmax + vmax_s + 1e-12) * h)
-            countdown = 1 if cnt < 1.0 else (200 if cnt > 200.0 else int(cnt))
+            countdown, vmax_s = C.rebuild_every(vx, vy, ws, margin, h, vmax_s)
         countdown -= 1
         for w in range(nw):
-            cx = wp[w, K.W_CX] + ws[w, K.S_S] * wp[w, K.W_DX]
-            cy = wp[w, K.W_CY] + ws[w, K.S_S] * wp[w, K.W_DY]
-            theta = ws[w, K.S_THETA]
+            geo = C.wheel_geometry(wp, ws, w, rr)
+            cx = geo[0]
+            cy = geo[1]
             om = omu[w]
             sd = ws[w, K.S_SDOT]
             ddx = wp[w, K.W_DX]
             ddy = wp[w, K.W_DY]
-            rad = wp[w, K.W_R]
-            plain = wp[w, K.W_PLAIN] > 0.5
-            nseat = wp[w, K.W_NSEAT]
-            delta, cps, sps, re, arcflank, cea, ceb, dta, dtb, tca, tcb, stip = \
-                wheel_profile(wp, w, rr)
-            rout = rad + wp[w, K.W_HTIP] + rr
-            rin = rad - wp[w, K.W_RS] - rr
-            if rin < 0.0:
-                rin = 0.0
-            rout2 = rout * rout
-            rin2 = rin * rin
-            pitch_angle = twopi / nseat
-            iz = int(nseat)
-            cth = math.cos(theta)
-            sth = math.sin(theta)
             tq = 0.0
             fsl = 0.0
             if rebuild:
-                rc = rout + margin
-                rc2 = rc * rc
-                nc = 0
-                for ic in range(ncand[w]):
-                    gcache[w, cand[w, ic]] = -1
-                for i in range(n):
-                    qx = x[i] - cx
-                    qy = y[i] - cy
-                    if qx * qx + qy * qy <= rc2:
-                        cand[w, nc] = i
-                        nc += 1
-                ncand[w] = nc
+                rc = geo[10] + margin
+                C.wheel_candidates(x, y, cx, cy, rc * rc, cand, gcache, ncand, w)
             for ic in range(ncand[w]):
                 cinfo[w, ic, C_BETA] = 0.0
                 cinfo[w, ic, C_S] = 0.0
@@ -411,39 +358,17 @@ def integrate_implicit(pos: np.ndarray, vel: np.ndarray, force: np.ndarray, work
                 qx = x[i] - cx
                 qy = y[i] - cy
                 r2 = qx * qx + qy * qy
-                if r2 > rout2 or r2 < rin2:
+                if r2 > geo[8] or r2 < geo[9]:
                     continue
-                if plain:
-                    dq = math.sqrt(r2)
-                    pen = rad - dq
-                    if pen <= -margin:
-                        continue
-                    curv = 0.0
-                    nx = -qx / dq
-                    ny = -qy / dq
+                if geo[5]:
+                    pen, nx, ny, curv = C.rim_gap(qx, qy, r2, geo[4], margin)
                 else:
-                    qxw = qx * cth + qy * sth
-                    qyw = -qx * sth + qy * cth
-                    g = gcache[w, i]
-                    if g < 0:
-                        g = int(math.floor(_fast_atan2(qyw, qxw) / pitch_angle + 0.5))
-                        if g < 0:
-                            g += iz
-                        if g >= iz:
-                            g -= iz
-                    g, sx, sy = nearest_seat(tab, w, g, iz, qxw, qyw)
+                    g, ex, ey = C.nearest_seat(tab, w, gcache[w, i], geo[6], qx * geo[2] + qy * geo[3],
+                                             -qx * geo[3] + qy * geo[2], geo[7])
                     gcache[w, i] = g
-                    erx = sx * cth - sy * sth
-                    ery = sx * sth + sy * cth
-                    a = qx * erx + qy * ery - rad
-                    b = -qx * ery + qy * erx
-                    pen, na, nb, curv = seat_penetration(a, b, rr, delta, cps, sps, re, arcflank,
-                                                          cea, ceb, dta, dtb, tca, tcb, stip,
-                                                          margin)
-                    if pen <= -margin:
-                        continue
-                    nx = na * erx - nb * ery
-                    ny = na * ery + nb * erx
+                    pen, nx, ny, curv = C.seat_normal(qx, qy, ex, ey, geo, rr, margin)
+                if pen <= -margin:
+                    continue
                 rvx = vx[i] - (-om * qy + sd * ddx)
                 rvy = vy[i] - (om * qx + sd * ddy)
                 vn = rvx * nx + rvy * ny
@@ -459,10 +384,7 @@ def integrate_implicit(pos: np.ndarray, vel: np.ndarray, force: np.ndarray, work
                 if pen > 0.0:
                     epot += 0.5 * kc * pen * pen
                 vt = -rvx * ny + rvy * nx
-                ve = mu * fn * dtref * inv_m
-                if ve < veps:
-                    ve = veps
-                ft0 = -mu * fn * _sat(vt / ve)
+                ft0, ve = C.friction(mu, fn, vt, dtref, inv_m, veps)
                 s = mu * fn / ve if abs(vt) < ve else 0.0
                 if curv > 0.0:
                     # concave seat: the normal turns with the roller, a tangential
@@ -501,26 +423,11 @@ def integrate_implicit(pos: np.ndarray, vel: np.ndarray, force: np.ndarray, work
             ws[w, K.S_SFORCE] = fsl
         # guides (fixed): the same linearisation
         for g in range(ng):
-            gax = gd[g, 0]
-            gay = gd[g, 1]
-            gux = gd[g, 2]
-            guy = gd[g, 3]
-            gnx = gd[g, 4]
-            gny = gd[g, 5]
-            length = gd[g, 6]
             if rebuild:
-                reach = rr + margin
-                nc = 0
-                for i in range(n):
-                    hh, ss = _segment_frame(x[i] - gax, y[i] - gay, gux, guy, gnx, gny)
-                    if hh < -reach or hh >= reach or ss < -reach or ss > length + reach:
-                        continue
-                    gcand[g, nc] = i
-                    nc += 1
-                ngcand[g] = nc
+                C.guide_candidates(x, y, gd, g, rr + margin, gcand, ngcand)
             for ic in range(ngcand[g]):
                 i = gcand[g, ic]
-                pen, mx, my = guide_penetration(x[i], y[i], gd, g, rr, margin)
+                pen, mx, my = C.guide_penetration(x[i], y[i], gd, g, rr, margin)
                 if pen <= -margin:
                     continue
                 vn = vx[i] * mx + vy[i] * my
@@ -533,23 +440,15 @@ def integrate_implicit(pos: np.ndarray, vel: np.ndarray, force: np.ndarray, work
                 if pen > 0.0:
                     epot += 0.5 * kg * pen * pen
                 vt = vx[i] * my - vy[i] * mx
-                mug = gd[g, K.G_MU] if gd[g, K.G_MU] >= 0.0 else mu
-                ve = mug * fn * dtref * inv_m
-                if ve < veps:
-                    ve = veps
-                ft0 = -mug * fn * _sat(vt / ve)
+                mug = C.guide_mu(gd, g, mu)
+                ft0, ve = C.friction(mug, fn, vt, dtref, inv_m, veps)
                 s = mug * fn / ve if abs(vt) < ve else 0.0
                 mmat = gd[g, K.G_MM]
                 if mmat > 0.0:
-                    # material scraped along the pan: weight and friction (regularised
-                    # like the chain's) along the pan, its mass in the pin's matrix
-                    gt = gx * my - gy * mx
-                    gn = abs(gx * mx + gy * my)
-                    fm = mmat * gd[g, K.G_MMU] * gn
-                    vem = fm * dtref * inv_m
-                    if vem < veps:
-                        vem = veps
-                    ft0 += mmat * gt - fm * _sat(vt / vem)
+                    # material scraped along the pan (material_drag), its mass in the
+                    # pin's matrix
+                    fdrag, fm, vem = C.material_drag(gd, g, gx, gy, mx, my, vt, dtref, inv_m, veps)
+                    ft0 += fdrag
                     if abs(vt) < vem:
                         s += fm / vem
                     _add_pin_matrix(mxx, mxy, myy, i, mmat / h, my, -mx)
@@ -561,20 +460,9 @@ def integrate_implicit(pos: np.ndarray, vel: np.ndarray, force: np.ndarray, work
                 contact[i] += fn
         # record (state at time t)
         if step % record_every == 0 and nrec < rec_t.shape[0]:
-            ekin = 0.0
-            egrav = 0.0
-            for i in range(n):
-                j = i + 1 if i + 1 < n else 0
-                ddx = x[j] - x[i]
-                ddy = y[j] - y[i]
-                dl = math.sqrt(ddx * ddx + ddy * ddy) - rest[i]
-                epot += 0.5 * k * dl * dl
-                ekin += 0.5 * m * (vx[i] * vx[i] + vy[i] * vy[i])
-                egrav -= m * (gx * x[i] + gy * y[i])
-                rec_tension[nrec, i] = tension[i]
-                rec_contact[nrec, i] = contact[i]
-                rec_pos[nrec, i, 0] = x[i]
-                rec_pos[nrec, i, 1] = y[i]
+            epot, ekin, egrav = K.record_pins(x, y, vx, vy, fx, fy, 0.0, rest, k, m, gx, gy, epot,
+                                              tension, contact, rec_tension, rec_contact,
+                                              rec_pos, nrec)
             for w in range(nw):
                 om = ws[w, K.S_OMEGA]
                 ekin += 0.5 * wp[w, K.W_INERTIA] * om * om
@@ -589,15 +477,7 @@ def integrate_implicit(pos: np.ndarray, vel: np.ndarray, force: np.ndarray, work
             rec_energy[nrec] = ekin + epot + egrav
             rec_t[nrec] = t
             for q in range(npr):
-                best = 1e300
-                ib = 0
-                for i in range(n):
-                    ddx = x[i] - probes[q, 0]
-                    ddy = y[i] - probes[q, 1]
-                    dq = ddx * ddx + ddy * ddy
-                    if dq < best:
-                        best = dq
-                        ib = i
+                ib = C.nearest_pin(x, y, probes[q, 0], probes[q, 1])
                 rec_probe[nrec, q] = vx[ib] * probes[q, 2] + vy[ib] * probes[q, 3]
             nrec += 1
         # pins: forces F_i (explicit forces, gravity and the links' T*) and the

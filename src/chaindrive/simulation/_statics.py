@@ -27,34 +27,8 @@ import math
 import numpy as np
 from numba import njit
 
-from ._kernel import (
-    P_GX,
-    P_GY,
-    P_K,
-    P_KC,
-    P_KG,
-    P_MASS,
-    P_PITCH,
-    P_PITCH2,
-    P_RROLLER,
-    W_CX,
-    W_CY,
-    W_DX,
-    W_DY,
-    W_HTIP,
-    W_NSEAT,
-    W_PLAIN,
-    W_R,
-    W_RS,
-    W_SF,
-    W_SK,
-    W_SMASS,
-    W_TORQUE,
-    guide_penetration,
-    nearest_seat,
-    seat_penetration,
-    wheel_profile,
-)
+from . import _layout as L
+from ._contact import guide_penetration, nearest_seat, seat_penetration, wheel_profile
 
 
 @njit(cache=True, inline="always")
@@ -83,15 +57,15 @@ def static_system(x, npins, wp, theta, slide, th_idx, s_idx, gd, tab, par, th_sp
     n = npins
     nw = wp.shape[0]
     ng = gd.shape[0]
-    m = par[P_MASS]
-    k = par[P_K]
-    p = par[P_PITCH]
-    p2 = par[P_PITCH2]
-    rr = par[P_RROLLER]
-    kc = par[P_KC]
-    kg = par[P_KG]
-    gx = par[P_GX]
-    gy = par[P_GY]
+    m = par[L.P_MASS]
+    k = par[L.P_K]
+    p = par[L.P_PITCH]
+    p2 = par[L.P_PITCH2]
+    rr = par[L.P_RROLLER]
+    kc = par[L.P_KC]
+    kg = par[L.P_KG]
+    gx = par[L.P_GX]
+    gy = par[L.P_GY]
     twopi = 2.0 * math.pi
     for i in range(grad.shape[0]):
         grad[i] = 0.0
@@ -143,32 +117,32 @@ def static_system(x, npins, wp, theta, slide, th_idx, s_idx, gd, tab, par, th_sp
         th = x[th_idx[w]] if th_idx[w] >= 0 else theta[w]
         s = x[s_idx[w]] if s_idx[w] >= 0 else slide[w]
         if th_idx[w] >= 0:
-            energy -= wp[w, W_TORQUE] * th
-            grad[th_idx[w]] -= wp[w, W_TORQUE]
+            energy -= wp[w, L.W_TORQUE] * th
+            grad[th_idx[w]] -= wp[w, L.W_TORQUE]
             if th_spring[w] > 0.0:
                 dth = th - th_target[w]
                 energy += 0.5 * th_spring[w] * dth * dth
                 grad[th_idx[w]] += th_spring[w] * dth
                 if want_hessian:
                     nnz = _put(rows, cols, vals, nnz, th_idx[w], th_idx[w], th_spring[w])
-        dxw = wp[w, W_DX]
-        dyw = wp[w, W_DY]
+        dxw = wp[w, L.W_DX]
+        dyw = wp[w, L.W_DY]
         if s_idx[w] >= 0:
-            fext = wp[w, W_SF] + wp[w, W_SMASS] * (gx * dxw + gy * dyw)
-            energy += 0.5 * wp[w, W_SK] * s * s - fext * s
-            grad[s_idx[w]] += wp[w, W_SK] * s - fext
+            fext = wp[w, L.W_SF] + wp[w, L.W_SMASS] * (gx * dxw + gy * dyw)
+            energy += 0.5 * wp[w, L.W_SK] * s * s - fext * s
+            grad[s_idx[w]] += wp[w, L.W_SK] * s - fext
             if want_hessian:
-                nnz = _put(rows, cols, vals, nnz, s_idx[w], s_idx[w], wp[w, W_SK])
-        cx = wp[w, W_CX] + s * dxw
-        cy = wp[w, W_CY] + s * dyw
-        rad = wp[w, W_R]
-        plain = wp[w, W_PLAIN] > 0.5
-        iz = int(wp[w, W_NSEAT])
+                nnz = _put(rows, cols, vals, nnz, s_idx[w], s_idx[w], wp[w, L.W_SK])
+        cx = wp[w, L.W_CX] + s * dxw
+        cy = wp[w, L.W_CY] + s * dyw
+        rad = wp[w, L.W_R]
+        plain = wp[w, L.W_PLAIN] > 0.5
+        iz = int(wp[w, L.W_NSEAT])
         pitch_angle = twopi / iz
         delta, cps, sps, re, arcflank, cea, ceb, dta, dtb, tca, tcb, stip = \
             wheel_profile(wp, w, rr)
-        rout = rad + wp[w, W_HTIP] + rr
-        rin = rad - wp[w, W_RS] - rr
+        rout = rad + wp[w, L.W_HTIP] + rr
+        rin = rad - wp[w, L.W_RS] - rr
         if rin < 0.0:
             rin = 0.0
         cth = math.cos(th)

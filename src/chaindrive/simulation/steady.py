@@ -379,15 +379,8 @@ def steady_state(drive_or_model: Any, *, periods: int = 12, bins: int = 16, wind
     """
     cpu0 = time.process_time()
     model = drive_or_model if isinstance(drive_or_model, SimulationModel) else _model_of(drive_or_model)
-    for name, value, lo, hi in (("periods", periods, 1, 10_000), ("bins", bins, 2, 1000),
-                                ("window", window, 1, 100), ("max_settle", max_settle, 0, 100_000),
-                                ("samples", samples, 4, 10_000)):
-        if not isinstance(value, (int, np.integer)) or not lo <= value <= hi:
-            raise InputError(f"{name} must be a whole number from {lo} to {hi}, got {value!r}",
-                             field=name)
-    for name, tol in (("settle_tolerance", settle_tolerance), ("step_tolerance", step_tolerance)):
-        if not 0.0 < tol < 1.0:
-            raise InputError(f"{name} must be in (0, 1), e.g. 0.02, got {tol!r}", field=name)
+    check_counts(periods=periods, bins=bins, window=window, max_settle=max_settle, samples=samples,
+                 settle_tolerance=settle_tolerance, step_tolerance=step_tolerance)
     if method not in INTEGRATORS:
         raise InputError(f"method must be one of {', '.join(INTEGRATORS)}, got {method!r}",
                          field="method")
@@ -441,13 +434,12 @@ def steady_state(drive_or_model: Any, *, periods: int = 12, bins: int = 16, wind
     # 3: the step against its half (implicit only)
     run.set_step(dt, period, samples)
     step_error = float("nan")
-    tens, angles, pmeans, ppeaks = [], [], [], []
+    tens: list[np.ndarray] = []
+    angles: list[np.ndarray] = []
 
     def keep(ten: np.ndarray, ang: np.ndarray) -> None:
         tens.append(ten)
         angles.append(ang)
-        pmeans.append(float(np.mean(ten)))
-        ppeaks.append(float(np.max(ten)))
 
     if check_step and method == "implicit":
         while True:
@@ -474,6 +466,20 @@ def steady_state(drive_or_model: Any, *, periods: int = 12, bins: int = 16, wind
     while len(tens) < periods:
         run.state, ten, ang = run.period()
         keep(ten, ang)
+    return summarise(model, start, drv, period, bins, tens, angles, settle_time, settled,
+                     run.steps, run.dt, step_error, method, cpu0)
+
+
+def summarise(model: SimulationModel, start: State, drv: int, period: float, bins: int,
+              tens: list[np.ndarray], angles: list[np.ndarray], settle_time: float, settled: bool,
+              steps: int, dt: float, step_error: float, method: str, cpu0: float) -> SteadyState:
+    """The :class:`SteadyState` of the measured periods (one tension and driver-angle
+    array per period in ``tens``, ``angles``), step 4 of the module notes; ``cpu0`` the
+    processor time at the start."""
+    periods = len(tens)
+    pmeans = [float(np.mean(t)) for t in tens]
+    ppeaks = [float(np.max(t)) for t in tens]
+    om0 = float(start.ws[drv, K.S_OMEGA])
     ten = np.concatenate(tens)
     nseat = model.seats_per_turn(model.wheels[drv].teeth)
     phase = np.mod(np.concatenate(angles) * nseat / (2.0 * math.pi), 1.0)
@@ -490,8 +496,23 @@ def steady_state(drive_or_model: Any, *, periods: int = 12, bins: int = 16, wind
         max_tension=float(np.max(ten)), min_tension=float(np.min(ten)), standard_error=sem,
         waveform=wave, phase=(np.arange(bins) + 0.5) / bins, tooth_period=period,
         chain_speed=_chain_speed(model, start, drv),
-        settle_time=float(settle_time), settled=settled, measured_time=periods * run.steps * run.dt,
-        dt=run.dt, step_error=step_error, method=method, cpu_time=time.process_time() - cpu0)
+        settle_time=float(settle_time), settled=settled, measured_time=periods * steps * dt,
+        dt=dt, step_error=step_error, method=method, cpu_time=time.process_time() - cpu0)
+
+
+def check_counts(**values: Any) -> None:
+    """Refuse a count or tolerance of :func:`steady_state` out of its range (``InputError``
+    naming it)."""
+    ranges = {"periods": (1, 10_000), "bins": (2, 1000), "window": (1, 100),
+              "max_settle": (0, 100_000), "samples": (4, 10_000)}
+    for name, value in values.items():
+        if name in ranges:
+            lo, hi = ranges[name]
+            if not isinstance(value, (int, np.integer)) or not lo <= value <= hi:
+                raise InputError(f"{name} must be a whole number from {lo} to {hi}, got {value!r}",
+                                 field=name)
+        elif not 0.0 < value < 1.0:
+            raise InputError(f"{name} must be in (0, 1), e.g. 0.02, got {value!r}", field=name)
 
 
 def span_period(model: SimulationModel, state: State) -> float:

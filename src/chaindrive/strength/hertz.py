@@ -21,6 +21,7 @@ import numpy as np
 from numpy.typing import ArrayLike
 
 from .._deprecation import renamed_attributes as _renamed_attributes
+from .._docs import Fragments
 from .._finite import finite_guard
 from .._registry import Registry
 from .._typing import FloatOrArray
@@ -158,14 +159,8 @@ def reduced_radius(radius_1: ArrayLike, radius_2: ArrayLike, contact: str = "con
     return _out(1.0 / (1.0 / r1 + sign / r2))
 
 
-@finite_guard
-def hertz_line_pressure(load: ArrayLike, length: ArrayLike, radius: ArrayLike, modulus: ArrayLike) -> FloatOrArray:
-    r"""Peak Hertz pressure of a line contact (two parallel cylinders).
-
-    .. math:: p_{max} = \sqrt{\frac{F E^*}{\pi L R}}
-
-    Parameters
-    ----------
+#: The parameters of a line contact, described once (:mod:`chaindrive._docs`).
+_DOCS = Fragments(line_contact="""
     load : float or array_like
         Normal force ``F`` [N].
     length : float or array_like
@@ -174,11 +169,23 @@ def hertz_line_pressure(load: ArrayLike, length: ArrayLike, radius: ArrayLike, m
         Reduced radius of curvature ``R`` (:func:`reduced_radius`) [m].
     modulus : float or array_like
         Contact modulus ``E*`` (:func:`effective_modulus`) [Pa].
+""")
+_DOCS.section("line_contact_parameters", "line_contact")
+
+
+@finite_guard
+@_DOCS
+def hertz_line_pressure(load: ArrayLike, length: ArrayLike, radius: ArrayLike, modulus: ArrayLike) -> FloatOrArray:
+    r"""Peak Hertz pressure of a line contact (two parallel cylinders).
+
+    .. math:: p_{max} = \sqrt{\frac{F E^*}{\pi L R}}
+
+    %(line_contact_parameters)s
 
     Returns
     -------
     float or ndarray
-        ``p_max`` [Pa].
+        Peak pressure ``p_max`` at the middle of the contact strip [Pa].
 
     Notes
     -----
@@ -203,20 +210,18 @@ def hertz_line_pressure(load: ArrayLike, length: ArrayLike, radius: ArrayLike, m
 
 
 @finite_guard
+@_DOCS
 def hertz_line_half_width(load: ArrayLike, length: ArrayLike, radius: ArrayLike, modulus: ArrayLike) -> FloatOrArray:
     r"""Half-width ``b`` of the Hertz contact strip of a line contact.
 
     .. math:: b = \sqrt{\frac{4 F R}{\pi L E^*}}
 
-    Parameters
-    ----------
-    load, length, radius, modulus : float or array_like
-        As in :func:`hertz_line_pressure` [N, m, m, Pa].
+    %(line_contact_parameters)s
 
     Returns
     -------
     float or ndarray
-        ``b`` [m].
+        Half width ``b`` of the contact strip [m].
 
     References
     ----------

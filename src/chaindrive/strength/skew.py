@@ -41,15 +41,7 @@ from .._results import Result, quantity
 from .._typing import FloatOrArray
 from .._validation import check_nonnegative, check_positive, check_range, warn_outside
 from ..errors import InputError, ValidityRangeWarning
-from .hertz import (
-    STEEL_ELASTIC_MODULUS,
-    STEEL_POISSON_RATIO,
-    effective_modulus,
-    hertz_line_half_width,
-    hertz_line_pressure,
-    reduced_radius,
-    warn_conformal,
-)
+from . import hertz
 
 if TYPE_CHECKING:
     from ..chains import Chain
@@ -241,7 +233,7 @@ def design_skew(max_skew: ArrayLike, wear_factor: ArrayLike = 0.65) -> FloatOrAr
     Returns
     -------
     float or ndarray
-        ``φ_p`` [rad].
+        Design skew ``φ_p`` [rad].
 
     References
     ----------
@@ -372,8 +364,8 @@ def roller_contact_stress(
     wear_factor: ArrayLike = 0.65,
     pitch: float | None = None,
     gamma: float | None = None,
-    elastic_modulus: float = STEEL_ELASTIC_MODULUS,
-    poisson_ratio: float = STEEL_POISSON_RATIO,
+    elastic_modulus: float = hertz.STEEL_ELASTIC_MODULUS,
+    poisson_ratio: float = hertz.STEEL_POISSON_RATIO,
     tooth_elastic_modulus: float | None = None,
     tooth_poisson_ratio: float | None = None,
     interpolation: str = "log",
@@ -450,8 +442,8 @@ def roller_contact_stress(
     q = check_positive("load", load, "N")
     d = check_positive("roller_diameter", roller_diameter, "m")
     ln = check_positive("length", length, "m")
-    rho = reduced_radius(d / 2, seat_radius, contact)
-    es = effective_modulus(elastic_modulus, poisson_ratio, tooth_elastic_modulus, tooth_poisson_ratio)
+    rho = hertz.reduced_radius(d / 2, seat_radius, contact)
+    es = hertz.effective_modulus(elastic_modulus, poisson_ratio, tooth_elastic_modulus, tooth_poisson_ratio)
     phi_p = design_skew(max_skew, wear_factor)
     g: FloatOrArray
     if gamma is None:
@@ -465,10 +457,10 @@ def roller_contact_stress(
         g = check_gamma(gamma)
     factor = skew_load_factor(phi_p, g)
     qn = q * factor
-    s0 = hertz_line_pressure(q, ln, rho, es)
-    s = hertz_line_pressure(qn, ln, rho, es)
-    b = hertz_line_half_width(qn, ln, rho, es)
-    warn_conformal(b, d / 2, "roller-tooth contact")
+    s0 = hertz.hertz_line_pressure(q, ln, rho, es)
+    s = hertz.hertz_line_pressure(qn, ln, rho, es)
+    b = hertz.hertz_line_half_width(qn, ln, rho, es)
+    hertz.warn_conformal(b, d / 2, "roller-tooth contact")
     return RollerContactResult(
         nominal_load=_out(q),
         max_skew=_out(np.asarray(max_skew, dtype=float)),
@@ -519,8 +511,8 @@ class RollerToothContact:
     seat_radius: float
     length: float
     contact: str = "concave"
-    elastic_modulus: float = STEEL_ELASTIC_MODULUS
-    poisson_ratio: float = STEEL_POISSON_RATIO
+    elastic_modulus: float = hertz.STEEL_ELASTIC_MODULUS
+    poisson_ratio: float = hertz.STEEL_POISSON_RATIO
 
     def __post_init__(self) -> None:
         from .._finite import check_finite_fields

@@ -31,15 +31,7 @@ from .._results import Result, quantity
 from .._typing import FloatOrArray
 from .._validation import check_positive, check_range, check_teeth, warn_outside
 from ..errors import InfeasibleError, InputError
-from .hertz import (
-    STEEL_ELASTIC_MODULUS,
-    STEEL_POISSON_RATIO,
-    effective_modulus,
-    hertz_line_half_width,
-    hertz_line_pressure,
-    reduced_radius,
-    warn_conformal,
-)
+from . import hertz
 
 if TYPE_CHECKING:
     from ..geometry.track_wheel import TrackDriveWheel
@@ -96,7 +88,7 @@ def track_design_force(weight: ArrayLike, adhesion: ArrayLike = 1.0, rims: int =
     Returns
     -------
     float or ndarray
-        ``P_Р`` [N].
+        Design force ``P_Р`` on one tooth [N].
 
     References
     ----------
@@ -212,7 +204,7 @@ def tooth_bending_stress(force: ArrayLike, lever_arm: ArrayLike, root_thickness:
 
     Examples
     --------
-    >>> round(tooth_bending_stress(19.5e3, 0.0337, 0.110, 0.05) / 1e6, 2)
+    >>> round(tooth_bending_stress(19.5e3, 0.0337, 0.110, 0.05) / 1e6, 2)   # [MPa]
     6.52
     """
     p = check_positive("force", force, "N")
@@ -226,8 +218,8 @@ def tooth_bending_stress(force: ArrayLike, lever_arm: ArrayLike, root_thickness:
 @finite_guard
 def pin_tooth_contact_stress(force: ArrayLike, pin_radius: ArrayLike, profile_radius: ArrayLike,
                              contact_length: ArrayLike, *, contact: str = "convex",
-                             elastic_modulus: float = STEEL_ELASTIC_MODULUS,
-                             poisson_ratio: float = STEEL_POISSON_RATIO) -> FloatOrArray:
+                             elastic_modulus: float = hertz.STEEL_ELASTIC_MODULUS,
+                             poisson_ratio: float = hertz.STEEL_POISSON_RATIO) -> FloatOrArray:
     r"""Hertz contact stress between a track pin and the wheel tooth.
 
     .. math:: \sigma_H = \sqrt{\frac{P E^*}{\pi b \rho}},\quad \frac{1}{\rho} = \frac{1}{r_ц} \pm \frac{1}{r}
@@ -261,10 +253,10 @@ def pin_tooth_contact_stress(force: ArrayLike, pin_radius: ArrayLike, profile_ra
     >>> round(pin_tooth_contact_stress(19.5e3, 0.025, 0.14, 0.05) / 1e6, 1)
     821.7
     """
-    rho = reduced_radius(pin_radius, profile_radius, contact)
-    es = effective_modulus(elastic_modulus, poisson_ratio)
-    warn_conformal(hertz_line_half_width(force, contact_length, rho, es), pin_radius, "pin-tooth contact")
-    return hertz_line_pressure(force, contact_length, rho, es)
+    rho = hertz.reduced_radius(pin_radius, profile_radius, contact)
+    es = hertz.effective_modulus(elastic_modulus, poisson_ratio)
+    hertz.warn_conformal(hertz.hertz_line_half_width(force, contact_length, rho, es), pin_radius, "pin-tooth contact")
+    return hertz.hertz_line_pressure(force, contact_length, rho, es)
 
 
 def check_hardness(hardness: ArrayLike) -> FloatOrArray:
@@ -352,7 +344,7 @@ def track_tooth_check(wheel: TrackDriveWheel, weight: float, tooth_width: float,
     s, h = (float(v) for v in track_tooth_section(d.pitch, d.teeth, d.pin_seat_radius, d.tip_radius))
     sb = float(tooth_bending_stress(p, h, s, tooth_width, stress_concentration))
     prof = d.flank_radius if contact == "convex" else d.pin_seat_radius
-    rho = float(reduced_radius(d.pin_radius, prof, contact))
+    rho = float(hertz.reduced_radius(d.pin_radius, prof, contact))
     sh = float(pin_tooth_contact_stress(p, d.pin_radius, prof, tooth_width, contact=contact))
     hrc = None if hardness is None else float(check_hardness(hardness))
     fb = None if allowable_bending is None else float(check_positive("allowable_bending", allowable_bending, "Pa")) / sb

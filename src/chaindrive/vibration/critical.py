@@ -46,7 +46,7 @@ def longitudinal_frequency(length: ArrayLike, axial_stiffness: ArrayLike, mass_p
     Returns
     -------
     ndarray
-        [rad/s].
+        First longitudinal natural frequency of the span [rad/s].
 
     References
     ----------
@@ -84,7 +84,7 @@ def torsional_frequency(inertia: ArrayLike, radius: ArrayLike, stiffness: ArrayL
     Returns
     -------
     ndarray
-        [rad/s].
+        Torsional natural frequency of the wheel [rad/s].
 
     References
     ----------

@@ -28,20 +28,10 @@ from .tensioner import _check_common
 __all__ = ["planar_tensioner_frequencies", "planar_forced_response"]
 
 
-def planar_tensioner_frequencies(
-    tension: float,
-    mass_per_length: float,
-    length_1: float,
-    length_2: float,
-    angle_1: float,
-    angle_2: float,
-    mass: float,
-    stiffness: float,
-    *,
-    modes: int = 3,
-    elements: int = 200,
-    axial_stiffness: float = 0.0,
-) -> np.ndarray:
+def planar_tensioner_frequencies(tension: float, mass_per_length: float, length_1: float, length_2: float,
+                                 angle_1: float, angle_2: float, mass: float, stiffness: float, *,
+                                 modes: int = 3, elements: int = 200,
+                                 axial_stiffness: float = 0.0) -> np.ndarray:
     r"""Natural frequencies [rad/s] of a planar bead chain with the tensioner as one bead.
 
     Parameters
@@ -156,21 +146,10 @@ def _assemble(s: float, q: float, l1: float, l2: float, b1: float, b2: float, m:
     return K, M, dof, load
 
 
-def planar_forced_response(
-    tension: float,
-    mass_per_length: float,
-    length_1: float,
-    length_2: float,
-    angle_1: float,
-    angle_2: float,
-    mass: float,
-    stiffness: float,
-    frequency: float,
-    *,
-    end_amplitude: float = 1.0,
-    damping_ratio: float = 0.02,
-    elements: int = 200,
-) -> tuple[float, float]:
+def planar_forced_response(tension: float, mass_per_length: float, length_1: float, length_2: float,
+                           angle_1: float, angle_2: float, mass: float, stiffness: float, frequency: float, *,
+                           end_amplitude: float = 1.0, damping_ratio: float = 0.02,
+                           elements: int = 200) -> tuple[float, float]:
     r"""Steady forced response of the planar bead model to a normal motion of the far end of part 1.
 
     Parameters

@@ -12,6 +12,7 @@ tooth count, turning in phase; the cams engage the hinges of the conveyor's trac
 See ``docs/crawler.md``.
 """
 
+from . import laws as _laws
 from .cam import (
     ElasticLoop,
     cam_force,
@@ -22,21 +23,9 @@ from .cam import (
     guide_reaction,
 )
 from .drive import MEASURES, SUMMARY_KEYS, CrawlerKinematics, crawler_drive, crawler_nonuniformity
-from .laws import (
-    GUIDES,
-    free_span_acceleration,
-    free_span_displacement,
-    free_span_height,
-    free_span_velocity,
-    guide_link_angle,
-    guided_acceleration,
-    guided_displacement,
-    guided_velocity,
-    leaving_displacement,
-)
+from .laws import *  # noqa: F403 - the motion laws, named once in laws.__all__
 
 __all__ = [
-    "GUIDES",
     "MEASURES",
     "SUMMARY_KEYS",
     "CrawlerKinematics",
@@ -48,14 +37,6 @@ __all__ = [
     "crawler_drive",
     "crawler_nonuniformity",
     "elastic_loop",
-    "free_span_acceleration",
-    "free_span_displacement",
-    "free_span_height",
-    "free_span_velocity",
-    "guide_link_angle",
     "guide_reaction",
-    "guided_acceleration",
-    "guided_displacement",
-    "guided_velocity",
-    "leaving_displacement",
+    *_laws.__all__,
 ]

@@ -72,6 +72,7 @@ from __future__ import annotations
 import numpy as np
 from numpy.typing import ArrayLike
 
+from ..._docs import Fragments
 from ..._registry import Registry
 from ..._typing import FloatOrArray
 from ..._validation import as_float_array, check_positive, check_teeth
@@ -95,6 +96,35 @@ __all__ = [
 GUIDES = Registry("guide")
 GUIDES.add("none", "none")
 GUIDES.add("tangent", "tangent")
+
+
+#: The parameters the motion laws share, described once (:mod:`chaindrive._docs`).
+_DOCS = Fragments(
+    pitch_teeth="""
+        pitch : float
+            Chain pitch ``t`` [m].
+        teeth : int
+            Tooth count ``z >= 3`` of both sprockets [-].
+    """,
+    angular_velocity="""
+        angular_velocity : float
+            Sprocket angular velocity ``ω > 0`` [rad/s], constant.
+    """,
+    free_angle="""
+        sprocket_angle : float or array_like
+            Sprocket angle ``ψ`` from the change of the supporting vertex [rad]; any real
+            value (periodic continuation, ``t`` per period ``2π/z``).
+    """,
+    guided_angle="""
+        sprocket_angle : float or array_like
+            ``ψ1``: angle of the last seated hinge past the tangency point [rad]; any real
+            value (periodic continuation, ``t`` per period ``2γ = 2π/z``).
+    """,
+)
+_DOCS.section("free_parameters", "free_angle", "pitch_teeth")
+_DOCS.section("free_speed_parameters", "free_angle", "pitch_teeth", "angular_velocity")
+_DOCS.section("guided_parameters", "guided_angle", "pitch_teeth")
+_DOCS.section("guided_speed_parameters", "guided_angle", "pitch_teeth", "angular_velocity")
 
 
 # ----------------------------------------------------------------------------- helpers
@@ -134,20 +164,13 @@ def _out(x):
 # ----------------------------------------------------------------------------- free span
 
 
+@_DOCS
 def free_span_displacement(sprocket_angle: ArrayLike, pitch: float, teeth: int) -> FloatOrArray:
     r"""Longitudinal displacement of the free (unguided) span [m].
 
     .. math:: u = n\,t + R\,[\sin(s - γ) + \sin γ],\quad ψ = 2γ n + s,\ 0 \le s < 2γ
 
-    Parameters
-    ----------
-    sprocket_angle : float or array_like
-        Sprocket angle ``ψ`` from the change of the supporting vertex [rad]; any real
-        value (periodic continuation, ``t`` per period ``2π/z``).
-    pitch : float
-        Chain pitch ``t`` [m].
-    teeth : int
-        Tooth count ``z >= 3`` of both sprockets [-].
+    %(free_parameters)s
 
     Returns
     -------
@@ -176,21 +199,13 @@ def free_span_displacement(sprocket_angle: ArrayLike, pitch: float, teeth: int) 
     return _out(n * t + R * (np.sin(s - gamma) + np.sin(gamma)))
 
 
+@_DOCS
 def free_span_velocity(sprocket_angle: ArrayLike, pitch: float, teeth: int, angular_velocity: float) -> FloatOrArray:
     r"""Longitudinal velocity of the free span, the chordal-action law [m/s].
 
     .. math:: v = ωR\cos(s - γ),\qquad γ = π/z
 
-    Parameters
-    ----------
-    sprocket_angle : float or array_like
-        ``ψ`` [rad] (see :func:`free_span_displacement`).
-    pitch : float
-        ``t`` [m].
-    teeth : int
-        ``z >= 3`` [-].
-    angular_velocity : float
-        Sprocket angular velocity ``ω > 0`` [rad/s].
+    %(free_speed_parameters)s
 
     Returns
     -------
@@ -216,21 +231,13 @@ def free_span_velocity(sprocket_angle: ArrayLike, pitch: float, teeth: int, angu
     return _out(w * R * np.cos(s - gamma))
 
 
+@_DOCS
 def free_span_acceleration(sprocket_angle: ArrayLike, pitch: float, teeth: int, angular_velocity: float) -> FloatOrArray:
     r"""Longitudinal acceleration of the free span [m/s²].
 
     .. math:: a = -ω^2R\sin(s - γ)
 
-    Parameters
-    ----------
-    sprocket_angle : float or array_like
-        ``ψ`` [rad].
-    pitch : float
-        ``t`` [m].
-    teeth : int
-        ``z >= 3`` [-].
-    angular_velocity : float
-        ``ω > 0`` [rad/s] (constant).
+    %(free_speed_parameters)s
 
     Returns
     -------
@@ -257,19 +264,13 @@ def free_span_acceleration(sprocket_angle: ArrayLike, pitch: float, teeth: int, 
     return _out(-(w**2) * R * np.sin(s - gamma))
 
 
+@_DOCS
 def free_span_height(sprocket_angle: ArrayLike, pitch: float, teeth: int) -> FloatOrArray:
     r"""Height of the free span above the sprocket axes (its sideways motion) [m].
 
     .. math:: y = R\cos(s - γ)
 
-    Parameters
-    ----------
-    sprocket_angle : float or array_like
-        ``ψ`` [rad].
-    pitch : float
-        ``t`` [m].
-    teeth : int
-        ``z >= 3`` [-].
+    %(free_parameters)s
 
     Returns
     -------
@@ -297,21 +298,14 @@ def free_span_height(sprocket_angle: ArrayLike, pitch: float, teeth: int) -> Flo
 # ----------------------------------------------------------------------------- tangent guide
 
 
+@_DOCS
 def guide_link_angle(sprocket_angle: ArrayLike, pitch: float, teeth: int) -> FloatOrArray:
     r"""Inclination ``φ1`` of the link between the sprocket and the guide, eq. (6.15) [rad].
 
     .. math:: R = R\cos ψ_1 + t\sin φ_1 \;\Rightarrow\;
               φ_1 = \arcsin\frac{2R\sin^2(ψ_1/2)}{t},\quad 0 \le ψ_1 < 2γ
 
-    Parameters
-    ----------
-    sprocket_angle : float or array_like
-        ``ψ1``: angle of the last seated hinge past the tangency point [rad]; reduced
-        modulo ``2γ = 2π/z``.
-    pitch : float
-        ``t`` [m].
-    teeth : int
-        ``z >= 3`` [-].
+    %(guided_parameters)s
 
     Returns
     -------
@@ -346,19 +340,13 @@ def _guided_parts(s, t, R):
     return sin_phi, cos_phi
 
 
+@_DOCS
 def guided_displacement(sprocket_angle: ArrayLike, pitch: float, teeth: int) -> FloatOrArray:
     r"""Displacement of the chain on the tangent guide towards the sprocket, eq. (6.16) [m].
 
     .. math:: u_З = n\,t + R\sin s + t\,(1 - \cos φ_1),\quad ψ_1 = 2γ n + s
 
-    Parameters
-    ----------
-    sprocket_angle : float or array_like
-        ``ψ1`` [rad]; any real value (``t`` per period ``2γ``).
-    pitch : float
-        ``t`` [m].
-    teeth : int
-        ``z >= 3`` [-].
+    %(guided_parameters)s
 
     Returns
     -------
@@ -389,22 +377,14 @@ def guided_displacement(sprocket_angle: ArrayLike, pitch: float, teeth: int) -> 
     return _out(n * t + R * np.sin(s) + t * (1.0 - cos_phi))
 
 
+@_DOCS
 def guided_velocity(sprocket_angle: ArrayLike, pitch: float, teeth: int, angular_velocity: float) -> FloatOrArray:
     r"""Velocity of the chain on the tangent guide, eq. (6.14) with (6.15) [m/s].
 
     .. math:: v = ωR\left(\cos ψ_1 + \sin ψ_1\tan φ_1\right)
               = ωR\,\frac{\cos(ψ_1 - φ_1)}{\cos φ_1}
 
-    Parameters
-    ----------
-    sprocket_angle : float or array_like
-        ``ψ1`` [rad].
-    pitch : float
-        ``t`` [m].
-    teeth : int
-        ``z >= 3`` [-].
-    angular_velocity : float
-        ``ω > 0`` [rad/s].
+    %(guided_speed_parameters)s
 
     Returns
     -------
@@ -433,22 +413,14 @@ def guided_velocity(sprocket_angle: ArrayLike, pitch: float, teeth: int, angular
     return _out(w * R * (np.cos(s) + np.sin(s) * sin_phi / cos_phi))
 
 
+@_DOCS
 def guided_acceleration(sprocket_angle: ArrayLike, pitch: float, teeth: int, angular_velocity: float) -> FloatOrArray:
     r"""Acceleration of the chain on the tangent guide [m/s²].
 
     .. math:: a = ω^2R\left[-\sin ψ_1 + \cos ψ_1\tan φ_1
               + \frac{R\sin^2 ψ_1}{t\cos^3 φ_1}\right]
 
-    Parameters
-    ----------
-    sprocket_angle : float or array_like
-        ``ψ1`` [rad].
-    pitch : float
-        ``t`` [m].
-    teeth : int
-        ``z >= 3`` [-].
-    angular_velocity : float
-        ``ω > 0`` [rad/s] (constant).
+    %(guided_speed_parameters)s
 
     Returns
     -------
@@ -477,6 +449,7 @@ def guided_acceleration(sprocket_angle: ArrayLike, pitch: float, teeth: int, ang
     return _out(w**2 * R * val)
 
 
+@_DOCS
 def leaving_displacement(sprocket_angle: ArrayLike, pitch: float, teeth: int, guide: str="tangent") -> FloatOrArray:
     r"""Displacement of the chain running *off* the tensioning sprocket, in phase [m].
 
@@ -487,10 +460,7 @@ def leaving_displacement(sprocket_angle: ArrayLike, pitch: float, teeth: int, gu
     ----------
     sprocket_angle : float or array_like
         ``ψ`` [rad], same clock as the driving sprocket (sprockets in phase).
-    pitch : float
-        ``t`` [m].
-    teeth : int
-        ``z >= 3`` [-].
+    %(pitch_teeth)s
     guide : {"tangent", "none"}
         Guide type.
 
