@@ -6,9 +6,13 @@ Two measurements:
    sequence of edits, in process;
 2. browser (when Debian's chromium is found): Playwright types into a field of the page
    served by a real uvicorn server and waits until the page has drawn the new drawing and
-   checks (the page counts its updates in ``body[data-updates]``). This includes the
-   page's 25 ms debounce, the request and the rendering; the charts of one edit are
-   let in before the next edit.
+   checks (the page counts its updates in ``body[data-updates]`` once the new page is
+   painted). Printed per edit kind: Playwright's time from ``fill`` to the painted page
+   (its actionability checks included), the page's own time from the edit's input event
+   to the painted page (``body[data-edit-ms]``), and the server's wall and CPU time of that
+   edit's live request (``elapsed_ms``, ``cpu_ms`` of the answer: the wall time over the CPU
+   time shows how much the machine's load added). The charts of one edit are let in
+   before the next edit.
 
 Run: ``MPLBACKEND=Agg .venv/bin/python benchmarks/web.py [--edits N] [--no-browser]``.
 Prints the figures (the server's also in CPU time, the steadier figure on a shared
