@@ -31,7 +31,8 @@ FUNCTIONS = dict(fuzz.api_functions())
 #: `make fuzz` (scripts/fuzz.py --surface api) with its 45 s cap, not in the test suite.
 TOO_SLOW = {"chaindrive.geometry.solid.part_solid": "an OCC solid of a wheel: 30-60 s a call",
             "chaindrive.geometry.solid.write_step": "an OCC solid written as STEP: 30-60 s a call",
-            "chaindrive.simulation.run.step_for_accuracy": "up to 7 simulations a call"}
+            "chaindrive.simulation.run.step_for_accuracy": "up to 7 simulations a call",
+            "chaindrive.life.wrap_jump_ratio": "a bisection of quasi-static wrap equilibria: 1-10 min a call"}
 
 
 def test_the_surface_is_enumerated_from_the_package():

@@ -32,7 +32,7 @@ import numpy as np
 
 from .errors import ChainDriveError, ConvergenceError, InfeasibleError, InputError
 
-__all__ = ["finite_guard", "first_nonfinite", "check_finite_fields", "finite_fields", "guard_public"]
+__all__ = ["finite_guard", "first_nonfinite", "check_finite_fields", "finite_fields", "guard_public", "guard_scope"]
 
 F = TypeVar("F", bound=Callable[..., Any])
 
@@ -46,8 +46,36 @@ class _GuardState(threading.local):
 _GUARD = _GuardState()
 
 
+# exact types that hold no NaN/inf, and the float types, looked up before the isinstance
+# chains below (the checks run on every guarded call: these are the common arguments)
+_PLAIN = frozenset({str, bytes, bool, type(None), int, np.int64, np.intp})
+_FLOATS = frozenset({float, np.float64})
+_FIELDS: dict[type, tuple[str, ...]] = {}  # dataclass type -> its field names
+
+
+def _field_names(cls: type) -> tuple[str, ...]:
+    names = _FIELDS.get(cls)
+    if names is None:
+        names = _FIELDS[cls] = tuple(f.name for f in dataclasses.fields(cls))
+    return names
+
+
+def _all_finite(a: np.ndarray) -> bool:
+    """Whether the float or complex array ``a`` holds no NaN and no infinity."""
+    if a.size <= 16 and a.dtype.kind == "f":  # a short array: faster in Python than a ufunc and a reduction
+        return all(map(math.isfinite, a.ravel().tolist()))
+    return bool(np.isfinite(a).all())
+
+
 def _nonfinite_number(value: Any) -> bool:
     """Whether ``value`` is a number or numeric array holding a NaN or an infinity."""
+    t = type(value)
+    if t in _FLOATS:
+        return not math.isfinite(value)
+    if t is np.ndarray:
+        return value.dtype.kind in "fc" and not _all_finite(value)
+    if t in _PLAIN:
+        return False
     if isinstance(value, _NUMERIC_SKIP):
         return False
     if isinstance(value, float):
@@ -73,7 +101,31 @@ def first_nonfinite(obj: Any, _depth: int = 0) -> str | None:
     >>> first_nonfinite((1.0, np.array([2.0]))) is None
     True
     """
-    if _depth > 12 or isinstance(obj, _NUMERIC_SKIP) or isinstance(obj, (int, np.integer)):
+    t = type(obj)
+    if _depth > 12 or t in _PLAIN:
+        return None
+    if t in _FLOATS:
+        return None if math.isfinite(obj) else ""
+    if t is np.ndarray:
+        if obj.dtype.kind in "fc" and obj.size and not _all_finite(obj):
+            return f"[{int(np.flatnonzero(~np.isfinite(obj.ravel()))[0])}]"
+        return None
+    names = _FIELDS.get(t)
+    if names is None and hasattr(t, "__dataclass_fields__") and dataclasses.is_dataclass(t):
+        names = _field_names(t)
+    if names is not None:
+        for name in names:
+            where = first_nonfinite(getattr(obj, name, None), _depth + 1)
+            if where is not None:
+                return f".{name}{where}"
+        return None
+    if t is tuple or t is list:
+        for i, v in enumerate(obj):
+            where = first_nonfinite(v, _depth + 1)
+            if where is not None:
+                return f"[{i}]{where}"
+        return None
+    if isinstance(obj, _NUMERIC_SKIP) or isinstance(obj, (int, np.integer)):
         return None
     if isinstance(obj, (float, np.floating)):
         return None if math.isfinite(obj) else ""
@@ -125,14 +177,14 @@ def check_finite_fields(obj: Any, names: tuple[str, ...] | None = None,
     ...
     chaindrive.errors.InputError: pitch must be finite (a number, not NaN or inf), got inf
     """
-    for f in dataclasses.fields(obj):
-        if names is not None and f.name not in names:
+    for name in _field_names(type(obj)):
+        if names is not None and name not in names:
             continue
-        value = getattr(obj, f.name, None)
+        value = getattr(obj, name, None)
         if _nonfinite_number(value):
-            if f.name in allow_infinite and not _has_nan(value):
+            if name in allow_infinite and not _has_nan(value):
                 continue
-            raise InputError(f"{f.name} must be finite (a number, not NaN or inf), got {_show(value)}")
+            raise InputError(f"{name} must be finite (a number, not NaN or inf), got {_show(value)}")
 
 
 @overload
@@ -253,6 +305,36 @@ def finite_guard(function: F | None = None, *, check_result: bool = True,
 
     wrapper._finite_guarded = True  # type: ignore[attr-defined]
     return cast(F, wrapper)  # functools.wraps keeps the signature
+
+
+class guard_scope:  # noqa: N801 - used like a function (``with guard_scope():``)
+    """Context for many guarded calls: numpy's error state is set once, on entry, instead
+    of by each outermost guarded call (each call still checks its arguments and result).
+
+    Examples
+    --------
+    >>> @finite_guard
+    ... def ratio(a, b):
+    ...     return a / b
+    >>> with guard_scope():
+    ...     ratio(1.0, np.array([2.0]))
+    array([0.5])
+    """
+
+    __slots__ = ("_state",)
+
+    def __enter__(self) -> guard_scope:
+        self._state = None
+        if not _GUARD.depth:
+            self._state = np.errstate(all="ignore")
+            self._state.__enter__()
+        _GUARD.depth += 1
+        return self
+
+    def __exit__(self, *exc: Any) -> None:
+        _GUARD.depth -= 1
+        if self._state is not None:
+            self._state.__exit__(*exc)
 
 
 def _has_nan(value: Any) -> bool:

@@ -46,7 +46,7 @@ def as_float_array(name: str, value: ArrayLike) -> np.ndarray:
         arr = np.asarray(value, dtype=float)
     except (TypeError, ValueError) as exc:
         raise InputError(f"{name} must be a number or an array of numbers, got {value!r}") from exc
-    if np.any(np.isnan(arr)):
+    if np.isnan(arr).any():
         raise InputError(f"{name} must not be NaN")
     return arr
 
@@ -57,7 +57,7 @@ def check_positive(name: str, value: ArrayLike, unit: str = "") -> np.ndarray:
     if x is not None and 0.0 < x < math.inf:
         return np.asarray(x)
     arr = as_float_array(name, value)
-    if np.any(arr <= 0) or np.any(~np.isfinite(arr)):
+    if (arr <= 0).any() or not np.isfinite(arr).all():
         raise InputError(
             f"{name} must be positive and finite (0 < {name} < inf{' ' + unit if unit else ''}), "
             f"got {_show(arr)}"
@@ -71,7 +71,7 @@ def check_nonnegative(name: str, value: ArrayLike, unit: str = "") -> np.ndarray
     if x is not None and 0.0 <= x < math.inf:
         return np.asarray(x)
     arr = as_float_array(name, value)
-    if np.any(arr < 0) or np.any(~np.isfinite(arr)):
+    if (arr < 0).any() or not np.isfinite(arr).all():
         raise InputError(
             f"{name} must be non-negative and finite (0 <= {name} < inf{' ' + unit if unit else ''}), "
             f"got {_show(arr)}"
@@ -97,7 +97,7 @@ def check_range(
     arr = as_float_array(name, value)
     lo_ok = arr >= low if low_inclusive else arr > low
     hi_ok = arr <= high if high_inclusive else arr < high
-    if not np.all(lo_ok & hi_ok):
+    if not (lo_ok & hi_ok).all():
         lb = "[" if low_inclusive else "("
         hb = "]" if high_inclusive else ")"
         raise InputError(

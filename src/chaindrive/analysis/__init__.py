@@ -34,6 +34,7 @@ from dataclasses import dataclass, field
 from types import MappingProxyType
 from typing import Any
 
+from .._finite import guard_scope
 from .._results import Result
 from ..drive.model import Drive
 from ..errors import InputError
@@ -195,6 +196,7 @@ def analyze_drive(drive: Drive, *, include: Iterable[str] | None = None,
     if not isinstance(drive, Drive):
         raise InputError(f"drive must be a chaindrive.drive.Drive, got {type(drive).__name__}", field="drive")
     parts = _parts(include, exclude)
-    results, checks, notes = compute_parts(drive, parts, {"entry_points": entry_points})
+    with guard_scope():  # numpy's error state set once for the formula functions' guards
+        results, checks, notes = compute_parts(drive, parts, {"entry_points": entry_points})
     return DriveAnalysis(drive=drive, results=results, checks=tuple(checks), warnings=tuple(dict.fromkeys(notes)),
                          parts=parts)

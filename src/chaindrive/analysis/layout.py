@@ -168,7 +168,7 @@ def _geometry(drive: Drive, phases: int) -> DriveLayout:
     sides = [w.side for w in wheels]
     positions = np.array([w.position for w in wheels], dtype=float)
     clearance_error(drive, positions)
-    links_required, polygon, loop, centre = _required_length(drive, positions, phases)
+    links_required, polygon, loop, centre, wrap = _required_length(drive, positions, phases)
     needed = loop.links_max if loop is not None and loop.exact else links_required
     check_links_needed(needed)  # chaindrive.limits: the documented maximum at every door
     links = int(drive.links) if drive.links is not None else int(L.even_links(needed))
@@ -180,9 +180,8 @@ def _geometry(drive: Drive, phases: int) -> DriveLayout:
                                    phases=phases)
         positions[idx] = adjustment.position
         clearance_error(drive, positions)
-        links_required, polygon, loop, centre = _required_length(drive, positions, phases)
+        links_required, polygon, loop, centre, wrap = _required_length(drive, positions, phases)
         needed = loop.links_max if loop is not None and loop.exact else links_required
-    wrap = L.wrap_layout(positions, radii, sides)
     two = drive.is_two_wheel()
     cd = None
     z1 = z2 = 0
@@ -238,7 +237,7 @@ def _geometry(drive: Drive, phases: int) -> DriveLayout:
 def _required_length(drive: Drive, positions: np.ndarray, phases: int):
     """Chain length the wheels at ``positions`` need: (links on the circles with the wraps counted in seated
     links, or the two-wheel polygon's largest; the two-wheel polygon; the loop polygon of three or more
-    wheels; the two-wheel centre distance)."""
+    wheels; the two-wheel centre distance; the wrap layout on the pitch circles)."""
     wheels = drive.wheels
     p = drive.pitch
     wrap = L.wrap_layout(positions, drive.pitch_radii(), [w.side for w in wheels])
@@ -252,11 +251,11 @@ def _required_length(drive: Drive, positions: np.ndarray, phases: int):
         z1, z2 = wheel_teeth(wheels[0], "a two-wheel drive"), wheel_teeth(wheels[1], "a two-wheel drive")
         centre = float(np.hypot(*(positions[1] - positions[0])))
         polygon = L.chain_length_polygon(p, z1, z2, centre, bar_diameter=drive.bar_diameter, phases=phases)
-        return polygon.links_max, polygon, None, centre
+        return polygon.links_max, polygon, None, centre, wrap
     loop = L.chain_length_loop(p, positions, [w.teeth for w in wheels], [w.side for w in wheels],
                                diameters=[w.diameter for w in wheels], bar_diameter=drive.bar_diameter,
                                phases=phases)
-    return required, None, loop, None
+    return required, None, loop, None, wrap
 
 
 @finite_guard  # NaN/inf and out-of-range arguments refused (chaindrive._finite)

@@ -484,10 +484,12 @@ def _summary(case: _Case, model: str, seats) -> dict:
     s_in = np.asarray(seats, dtype=float)
     s_in = s_in[(s_in > eps) & (s_in < T - eps)]
     jump_list = [a_right - a_left]
+    sign_jumps = np.zeros(0, dtype=bool)
     if s_in.size:
         lo = _run(case, model, s_in - 1e-12 * T)["acceleration"]
         hi = _run(case, model, s_in + 1e-12 * T)["acceleration"]
         jump_list += list(hi - lo)
+        sign_jumps = (np.abs(lo) > tol) & (np.abs(hi) > tol) & (lo * hi < 0)
     jumps = np.asarray(jump_list)
     if case.entry == "free":
         y = r.y
@@ -510,16 +512,8 @@ def _summary(case: _Case, model: str, seats) -> dict:
         "a_abs_max": amax,
         "a_jump_at_period_end": a_right - a_left,
         "a_jump_max": float(np.max(np.abs(jumps))),
-        "sign_changing_jumps": int(np.sum(_sign_jumps(case, model, s_in, T, tol)) + sign_change),
+        "sign_changing_jumps": int(np.sum(sign_jumps) + sign_change),
     }
-
-
-def _sign_jumps(case, model, s_in, T, tol):
-    if s_in.size == 0:
-        return np.zeros(0, dtype=bool)
-    lo = _run(case, model, s_in - 1e-12 * T)["acceleration"]
-    hi = _run(case, model, s_in + 1e-12 * T)["acceleration"]
-    return (np.abs(lo) > tol) & (np.abs(hi) > tol) & (lo * hi < 0)
 
 
 @finite_guard

@@ -117,12 +117,15 @@ def wrap_layout(centres: ArrayLike, radii: ArrayLike, sides: ArrayLike | None = 
     if r.shape != (n,):
         raise InputError(f"radii must have shape ({n},) like centres, got {r.shape}")
     s = np.ones(n) if sides is None else as_float_array("sides", sides)
-    if s.shape != (n,) or not np.all(np.isin(s, (-1.0, 1.0))):
+    if s.shape != (n,) or not ((s == 1.0) | (s == -1.0)).all():
         raise InputError(f"sides must be +1 or -1 for each of the {n} wheels, got {sides!r}")
     rho = s * r
-    d = np.roll(c, -1, axis=0) - c
+    # wheel i + 1 beside wheel i (np.roll(..., -1) without its overhead: the same values)
+    c_next = np.concatenate((c[1:], c[:1]))
+    rho_next = np.concatenate((rho[1:], rho[:1]))
+    d = c_next - c
     D = np.hypot(d[:, 0], d[:, 1])
-    drho = np.roll(rho, -1) - rho
+    drho = rho_next - rho
     if np.any(D <= np.abs(drho)):
         bad = int(np.argmax(D <= np.abs(drho)))
         raise InfeasibleError(
@@ -135,12 +138,12 @@ def wrap_layout(centres: ArrayLike, radii: ArrayLike, sides: ArrayLike | None = 
     t = np.column_stack([np.cos(alpha), np.sin(alpha)])
     nrm = np.column_stack([-t[:, 1], t[:, 0]])
     start = c - rho[:, None] * nrm
-    end = np.roll(c, -1, axis=0) - np.roll(rho, -1)[:, None] * nrm
-    alpha_in = np.roll(alpha, 1)
+    end = c_next - rho_next[:, None] * nrm
+    alpha_in = np.concatenate((alpha[-1:], alpha[:-1]))
     turn = np.mod(s * (alpha - alpha_in), 2 * np.pi)
-    wrap = np.where(np.isclose(turn, 0.0, atol=1e-12), 0.0, turn)
+    wrap = np.where(np.abs(turn) <= 1e-12, 0.0, turn)  # np.isclose(turn, 0, atol=1e-12) written out
     total_turn = float(np.sum(s * wrap))
-    if not np.isclose(total_turn, 2 * np.pi, atol=1e-6):
+    if not abs(total_turn - 2 * np.pi) <= 1e-6 + 1e-5 * 2 * np.pi:  # np.isclose(.., 2π, atol=1e-6)
         raise InfeasibleError(
             "the wheels do not form a simple counter-clockwise loop in the given order "
             f"(total turning {total_turn:.4f} rad, expected 2π); list the wheels in the "

@@ -35,9 +35,12 @@ The model is frictionless (friction at the flank helps to hold the chain: conser
 and quasi-static (no impact, no centrifugal lift of the rollers). It assumes every seated
 roller rides up alike; a worn chain seats unevenly (the tight-end rollers highest, one at
 the bottom of its gap, the rest on the back flank), and the holding is very sensitive to
-that seating, so ``β^-n`` is an upper bound of the ratio the wrap holds: the dynamic
-simulation skips at 0.4–1.2 times it at a 3 kN load level and lower at 12 kN
-(``benchmarks/life.py``, docs/life.md "Jump-over"). The holding limit is the robust criterion.
+that seating. With the span tensions held the compliant load distribution
+(:mod:`chaindrive.life.wrap_statics`) holds 1.5–1.7 times it (9 and 17 teeth, docs/life.md):
+``β^-n`` is on the safe side there; with the torque and the sum of the
+span tensions held (a wheel on a slide) the chain jumps at a far lower mean ratio, which
+:func:`chaindrive.life.wrap_jump_ratio` gives (docs/life.md, "Jump-over"). The holding limit
+is the robust criterion.
 """
 
 from __future__ import annotations

@@ -50,6 +50,9 @@ from .steady import (
     warm_start,
 )
 
+#: Drives one call takes at most (a study hands its variants over in batches of this size or fewer).
+MAX_BATCH_DRIVES = 100_000
+
 __all__ = ["batch_step", "steady_states"]
 
 #: rungs of the steps-per-period ladder per doubling
@@ -183,7 +186,13 @@ def steady_states(drives_or_models: Sequence[Any], *, periods: int = 12, bins: i
     if min_settle_time is not None and not min_settle_time >= 0.0:
         raise InputError(f"min_settle_time must be >= 0 s, got {min_settle_time!r}",
                          field="min_settle_time")
+    if isinstance(drives_or_models, (str, bytes)) or not hasattr(drives_or_models, "__iter__"):
+        raise InputError("drives_or_models must be a sequence of drives or simulation models, "
+                         f"got {type(drives_or_models).__name__}", field="drives_or_models")
     items = list(drives_or_models)
+    if not 1 <= len(items) <= MAX_BATCH_DRIVES:
+        raise InputError(f"drives_or_models: 1 to {MAX_BATCH_DRIVES} drives, got {len(items)}",
+                         field="drives_or_models")
     if states is not None and len(states) != len(items):
         raise InputError(f"states: one per drive ({len(items)}), got {len(states)}",
                          field="states")

@@ -1,0 +1,70 @@
+"""The NaN/inf guard's fast paths (chaindrive._finite): the same answers as the general walk.
+
+Reference: the definition itself (IEEE 754 finite numbers, ``math.isfinite`` /
+``np.isfinite``), applied element by element to every kind of value the guards see.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+
+import numpy as np
+import pytest
+
+from chaindrive._finite import _nonfinite_number, finite_guard, first_nonfinite, guard_scope
+from chaindrive.errors import InfeasibleError, InputError
+
+
+@dataclasses.dataclass(frozen=True)
+class _Inner:
+    values: tuple
+    scale: float
+
+
+@dataclasses.dataclass(frozen=True)
+class _Outer:
+    inner: _Inner
+    table: np.ndarray
+    count: int
+
+
+@pytest.mark.parametrize("bad", [math.nan, math.inf, -math.inf])
+@pytest.mark.parametrize("size", [1, 3, 16, 17, 4001])
+def test_arrays_short_and_long_found_at_their_index(bad, size):
+    a = np.linspace(0.0, 1.0, size)
+    assert first_nonfinite(a) is None and not _nonfinite_number(a)
+    a[size // 2] = bad
+    assert first_nonfinite(a) == f"[{size // 2}]"
+    assert _nonfinite_number(a)
+    assert _nonfinite_number(a.reshape(1, -1)) and first_nonfinite(a.reshape(1, -1)) == f"[{size // 2}]"
+
+
+@pytest.mark.parametrize("value", [np.float64("nan"), float("inf"), np.float32("nan"), complex(0, math.inf)])
+def test_scalars_of_every_float_type_refused(value):
+    assert _nonfinite_number(value)
+    assert first_nonfinite(value) == ""
+
+
+def test_nested_dataclasses_tuples_and_lists_name_the_place():
+    ok = _Outer(_Inner((1.0, [2.0, np.array([3.0])]), 4.0), np.ones((2, 2)), 5)
+    assert first_nonfinite(ok) is None
+    bad = dataclasses.replace(ok, inner=_Inner((1.0, [2.0, np.array([3.0, math.nan])]), 4.0))
+    assert first_nonfinite(bad) == ".inner.values[1][1][1]"
+    assert first_nonfinite({"a": (1, True, None, "x", math.inf)}) == "['a'][4]"
+
+
+def test_guard_scope_sets_the_error_state_once_and_restores_it():
+    @finite_guard
+    def ratio(a, b):
+        return a / b
+
+    before = np.geterr()
+    with guard_scope():
+        assert np.geterr()["divide"] == "ignore"
+        with pytest.raises(InfeasibleError, match=r"ratio: the result \[0\] is not a finite number \(inf\)"):
+            ratio(np.array([1.0]), np.array([0.0]))
+        with pytest.raises(InputError, match="a must not be NaN"):
+            ratio(math.nan, 1.0)
+        assert ratio(1.0, 4.0) == 0.25
+    assert np.geterr() == before
