@@ -302,6 +302,6 @@ def test_studio_field_bounds_come_from_limits():
     text = Path(web_design.__file__).read_text(encoding="utf-8")
     assert not re.search(r"maximum=\s*[0-9.]", text)
     assert not re.search(r'FieldSpec\("[^"]*",\s*[-0-9.]', text)
-    for name, (low, high, _unit) in FORM_RANGES.items():
+    for name, (_low, high, _unit) in FORM_RANGES.items():
         spec = web_design.FIELDS[name]
         assert spec.maximum == high, name
