@@ -6,9 +6,13 @@ Two measurements:
    sequence of edits, in process;
 2. browser (when Debian's chromium is found): Playwright types into a field of the page
    served by a real uvicorn server and waits until the page has drawn the new drawing and
-   checks (the page counts its updates in ``body[data-updates]``). This includes the
-   page's 25 ms debounce, the request and the rendering; the charts of one edit are
-   let in before the next edit.
+   checks (the page counts its updates in ``body[data-updates]`` once the new page is
+   painted). Printed per edit kind: Playwright's time from ``fill`` to the painted page
+   (its actionability checks included), the page's own time from the edit's input event
+   to the painted page (``body[data-edit-ms]``), and the server's wall and CPU time of that
+   edit's live request (``elapsed_ms``, ``cpu_ms`` of the answer: the wall time over the CPU
+   time shows how much the machine's load added). The charts of one edit are let in
+   before the next edit.
 
 Run: ``MPLBACKEND=Agg .venv/bin/python benchmarks/web.py [--edits N] [--no-browser]``.
 Prints the figures (the server's also in CPU time, the steadier figure on a shared
@@ -92,7 +96,9 @@ def browser_side(n: int) -> dict[str, list[float]] | None:
                 break
             except OSError:
                 time.sleep(0.2)
-        times = {"roller": [], "link": []}
+        times: dict[str, list[float]] = {k + what: [] for what in ("", " in page", " server", " server CPU")
+                                         for k in ("roller", "link")}
+
         with sync_playwright() as p:
             b = p.chromium.launch(executable_path=chromium, args=["--no-sandbox", "--disable-gpu",
                                                                   "--disable-background-networking"])
@@ -106,9 +112,14 @@ def browser_side(n: int) -> dict[str, list[float]] | None:
                         continue
                     count = int(page.get_attribute("body", "data-updates") or 0)
                     t0 = time.perf_counter()
-                    page.fill(f"#{field}", value)
+                    with page.expect_response(lambda r: "/api/design?" in r.url, timeout=30_000) as answer:
+                        page.fill(f"#{field}", value)
                     page.wait_for_selector(f"body[data-updates='{count + 1}']", timeout=30_000)
                     times[kind].append((time.perf_counter() - t0) * 1e3)
+                    times[kind + " in page"].append(float(page.get_attribute("body", "data-edit-ms") or "nan"))
+                    a = answer.value.json()  # the server's own wall and CPU time of this live update
+                    times[kind + " server"].append(float(a.get("elapsed_ms", "nan")))
+                    times[kind + " server CPU"].append(float(a.get("cpu_ms", "nan")))
                     # let the slow part (charts) of this edit arrive before the next edit
                     charts = int(page.get_attribute("body", "data-chart-updates") or 0)
                     try:

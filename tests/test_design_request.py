@@ -288,3 +288,20 @@ def test_studio_required_static_safety_reaches_the_design(client):
     first = client.get("/api/design?" + urlencode(state)).json()["candidates"][0]
     assert (first["chain"], first["links"], first["required_static_safety"]) == (api.chain, api.links, 20.0)
     assert first["static_safety"] >= 20.0
+
+
+def test_studio_field_bounds_come_from_limits():
+    """Issue 31, item 2: the studio's form takes every bound from chaindrive.limits (DUTY_RANGES,
+    FORM_RANGES, MIN_TEETH/MAX_TEETH) or the project schema; web/design.py writes no number as a bound."""
+    import re
+    from pathlib import Path
+
+    from chaindrive.limits import FORM_RANGES
+    from chaindrive.web import design as web_design
+
+    text = Path(web_design.__file__).read_text(encoding="utf-8")
+    assert not re.search(r"maximum=\s*[0-9.]", text)
+    assert not re.search(r'FieldSpec\("[^"]*",\s*[-0-9.]', text)
+    for name, (_low, high, _unit) in FORM_RANGES.items():
+        spec = web_design.FIELDS[name]
+        assert spec.maximum == high, name

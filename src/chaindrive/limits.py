@@ -62,6 +62,7 @@ __all__ = [
     "MAX_SPEED",
     "MAX_RATED_STRANDS",
     "DUTY_RANGES",
+    "FORM_RANGES",
     "PLAUSIBLE",
     "check_size",
     "check_duration",
@@ -117,6 +118,28 @@ DUTY_RANGES: dict[str, tuple[float, float, str]] = {
     "centre_distance": (0.0, 50.0, "m"),
     "service_factor": (0.0, 5.0, ""),
     "required_static_safety": (0.0, 50.0, ""),
+}
+
+#: Ranges of the studio form's drive fields that the project schema leaves open above (or that
+#: only the form has): name -> (low, high, SI unit; ``""`` a pure number). Far above any real
+#: drive; a form value beyond them is refused with the range (a project file may go further,
+#: where the schema allows).
+FORM_RANGES: dict[str, tuple[float, float, str]] = {
+    "idler_position": (0.05, 0.95, ""),      # fraction of the slack span from its start
+    "idler_offset": (0.0, 10.0, "m"),         # push of the idler into the span
+    "tensioner_mass": (0.0, 1e5, "kg"),
+    "tensioner_stiffness": (0.0, 1e10, "N/m"),
+    "tensioner_force": (0.0, 1e7, "N"),
+    "tensioner_arm_length": (0.0, 10.0, "m"),
+    "tensioner_arm_mass": (0.0, 1e5, "kg"),
+    "tensioner_wheel_mass": (0.0, 1e5, "kg"),
+    "tensioner_carriage_mass": (0.0, 1e5, "kg"),
+    "tensioner_spring_stiffness": (0.0, 1e10, "N/m"),
+    "tensioner_spring_lever": (0.0, 10.0, "m"),
+    "tensioner_spring_angle": (0.0, 1.5, "rad"),
+    "guide_end": (0.0, 10.0, "m"),
+    "skew": (0.0, 0.2, "rad"),
+    "wear_coefficient": (0.0, 1e-10, "m**2/N"),
 }
 
 #: Plausible range of a value typed at the boundary, by kind:

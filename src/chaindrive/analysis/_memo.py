@@ -62,6 +62,9 @@ def clear() -> None:
         cached = getattr(two_wheels, name, None)
         if cached is not None and hasattr(cached, "cache_clear"):
             cached.cache_clear()
+    from ..loads.safety import required_static_safety_for
+
+    required_static_safety_for.cache_clear()
 
 
 def memo(*, maxsize: int = 128, key: Callable[..., Hashable] | None = None) -> Callable[[F], F]:

@@ -11,6 +11,7 @@ from typing import Any
 
 import typer
 
+from ..display import mm, um
 from ..errors import InputError
 from .app import app, echo_json, force_option
 
@@ -81,19 +82,19 @@ def report(out: dict, as_json: bool) -> None:
         return
     typer.echo(f"{out['title']}: {out['parts']} parts ({out['distinct_shapes']} distinct solids), "
                f"links {out['first_link']}...{out['first_link'] + out['links'] - 1} of {out['total_links']}")
-    typer.echo(f"chain length {out['chain_length'] * 1e3:.2f} mm at the assembly (layout {out['total_links']} "
-               f"x {out['pitch'] * 1e3:g} mm = {out['layout_length'] * 1e3:.2f} mm)")
-    play = f"; pocket play {out['pocket_play'] * 1e3:.2f} mm" if out.get("pocket_play") else ""
-    typer.echo(f"pins moved out of the seats they press into by at most {out['contact_shift_max'] * 1e6:.1f} um "
-               f"(the model's penalty penetration + {out['contact_gap'] * 1e6:g} um){play}")
-    typer.echo(f"wrote {out['step']} ({out['bytes'] / 1e6:.2f} MB) in {out['seconds']:.1f} s")
+    typer.echo(f"chain length {mm(out['chain_length']):.2f} mm at the assembly (layout {out['total_links']} "
+               f"x {mm(out['pitch']):g} mm = {mm(out['layout_length']):.2f} mm)")
+    play = f"; pocket play {mm(out['pocket_play']):.2f} mm" if out.get("pocket_play") else ""
+    typer.echo(f"pins moved out of the seats they press into by at most {um(out['contact_shift_max']):.1f} um "
+               f"(the model's penalty penetration + {um(out['contact_gap']):g} um){play}")
+    typer.echo(f"wrote {out['step']} ({out['bytes'] / 1_000_000:.2f} MB) in {out['seconds']:.1f} s")
     for key in ("gltf", "dxf"):
         if key in out:
             typer.echo(f"wrote {out[key]}")
     c = out.get("check")
     if c:
         typer.echo(f"check: {c['solids']} solids read back for {c['parts']} parts ({c['named_parts']} named), "
-                   f"valid {c['valid']}; minimum clearance links-wheels {c['minimum_clearance'] * 1e3:.4f} mm "
+                   f"valid {c['valid']}; minimum clearance links-wheels {mm(c['minimum_clearance']):.4f} mm "
                    f"({c['nearest']}), interference volume {c['interference_volume'] * 1e9:.3g} mm^3 over "
                    f"{c['pairs_measured']} pairs")
 

@@ -12,6 +12,7 @@ from pathlib import Path
 
 import typer
 
+from ..display import mm
 from .app import app, echo_json, print_rows, quantity, ratio_text, unit_help
 
 
@@ -66,9 +67,9 @@ def life_command(
     rows = [("running time", f"{state.hours:.6g} h"), ("elongation", ratio_text(state.elongation))]
     for name, rise, m in zip(state.wheel_names, state.seating_rise, state.jump_over_margin, strict=True):
         if rise is not None:
-            rows.append((f"'{name}': rollers ride out by", f"{rise * 1e3:.4g} mm"))
+            rows.append((f"'{name}': rollers ride out by", f"{mm(rise):.4g} mm"))
         if m is not None:
             rows.append((f"'{name}': jump-over margin", f"{m:.4g}"))
     if state.take_up is not None:
-        rows.append(("take-up of the elongation", f"{state.take_up * 1e3:.4g} mm"))
+        rows.append(("take-up of the elongation", f"{mm(state.take_up):.4g} mm"))
     print_rows(f"{drive.name}: the worn chain", rows)

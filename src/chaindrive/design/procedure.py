@@ -27,12 +27,15 @@ design studio and studies call. The steps and the source of each (docs/design.md
 
 from __future__ import annotations
 
+import functools
 import math
 import warnings
+from collections.abc import Callable
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any
 
 from .._results import Result, quantity
+from ..analysis._memo import memo
 from ..analysis.checks import Check
 from ..errors import (
     ChainDriveError,
@@ -214,7 +217,11 @@ def _series(chain: Chain) -> str:
     return "B" if chain.family == "iso606" and "B" in chain.name else "A"
 
 
+@memo(maxsize=1024, key=lambda chain, duty, given: (chain.pitch, duty.character, duty.speed_ratio, duty.speed,
+                                                     given))
 def _teeth_for(chain: Chain, duty: Duty, given: int | None) -> tuple[int, str]:
+    """Small-sprocket teeth of a chain for the duty, and why (pure in the pitch, the shock class, the
+    ratio, the speed and the given teeth: kept for the chains of equal pitch and the next edit)."""
     from ..rating.ansi import lubrication_region
     from .policy import driving_teeth
 
@@ -261,7 +268,6 @@ def _rated(chain: Chain, twins: tuple[str, ...], duty: Duty, ks: float, given_te
     (``None``: does not carry the load; then, when its rating lies within :data:`NEAR_MISS_BAND`
     of the design power, it is appended to ``short`` with its rating ratio). ``centre``: the wanted
     centre distance [m] (default the duty's, else :data:`DEFAULT_CENTRE_PITCHES` pitches)."""
-    from ..rating import chain_rating
     from .policy import driven_teeth
 
     z1, why = _teeth_for(chain, duty, given_teeth) if teeth is None else teeth
@@ -271,9 +277,7 @@ def _rated(chain: Chain, twins: tuple[str, ...], duty: Duty, ks: float, given_te
         a = centre
     else:
         a = default_centre_distance(chain.pitch) if duty.centre_distance is None else duty.centre_distance
-    with warnings.catch_warnings():
-        warnings.simplefilter("ignore", ValidityRangeWarning)
-        r = chain_rating(chain, z1, duty.speed, power=design, method=method)
+    r = _rating(chain, z1, duty.speed, design, method)
     if r.rated_power < design:
         if short is not None and r.rated_power >= (1.0 - NEAR_MISS_BAND) * design:
             short.append((_Rated(chain, twins, z1, z2, why, r, a), r.rated_power / design))
@@ -282,6 +286,17 @@ def _rated(chain: Chain, twins: tuple[str, ...], duty: Duty, ks: float, given_te
     if a <= clearance:
         return f"{chain.name} (needs > {clearance * 1e3:.0f} mm)"
     return _Rated(chain, twins, z1, z2, why, r, a)
+
+
+@memo(maxsize=2048)
+def _rating(chain: Chain, teeth: int, speed: float, power: float, method: str | None) -> Any:
+    """:func:`chaindrive.rating.chain_rating` of a chain on ``teeth`` at ``speed`` [rad/s] for the design
+    power [W] (its validity-range notes in ``warnings``): pure, kept for the near misses and the next edit."""
+    from ..rating import chain_rating
+
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", ValidityRangeWarning)
+        return chain_rating(chain, teeth, speed, power=power, method=method)
 
 
 def _laid_out(rated: _Rated, duty: Duty, factors: tuple[Factor, ...], ks: float,
@@ -500,62 +515,105 @@ def _near_misses(short: list[tuple[_Rated, float]], best: DesignCandidate, duty:
 SCREEN_MARGIN = 1e-9
 
 
+def _screened(chains: list[tuple[Chain, int]], speed: float, method: str | None) -> list[float | None]:
+    """The rated power [W] of each (chain, teeth) at ``speed`` [rad/s] by the catalogue screen
+    (``None``: a chain the screen does not rate): ``K_2 min(H_1, H_2)`` of the ANSI/ACA and ISO 10823
+    methods (:func:`chaindrive.rating.branch_powers`: ISO 10823 on its 19-tooth basis times the tooth
+    factor) of the whole catalogue in one vectorised call per method. It may differ from the one-chain
+    rating (:func:`chaindrive.rating.chain_rating`) in the last digits (:data:`SCREEN_MARGIN`)."""
+    from ..rating import branch_powers, default_method
+    from ..rating.iso10823 import REFERENCE_TEETH
+
+    basis = {"ansi": None, "iso10823": REFERENCE_TEETH}
+    how = [method or default_method(ch) for ch, _ in chains]
+    out: list[float | None] = [None] * len(chains)
+    import numpy as np
+
+    for name, zb in basis.items():
+        at = [i for i, ((ch, _), m) in enumerate(zip(chains, how, strict=True))
+              if m == name and ch.is_roller_chain and ch.strands <= 4 and not (zb and ch.family == "custom")]
+        if not at:
+            continue
+        z = np.array([chains[i][1] for i in at], dtype=float)
+        p = np.array([chains[i][0].pitch for i in at])
+        kp, kr, k2 = np.array([_screen_constants(chains[i][0].name, chains[i][0].strands, name) for i in at]).T
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", ValidityRangeWarning)
+            h1, h2 = branch_powers(p, z, speed, plate_constant=kp, roller_constant=kr, basis_teeth=zb)
+        for i, rated in zip(at, np.minimum(k2 * h1, k2 * h2), strict=True):
+            out[i] = float(rated)
+    return out
+
+
+@functools.lru_cache(maxsize=1024)
+def _screen_constants(name: str, strands: int, method: str) -> tuple[float, float, float]:
+    """``(K_p, K_r, K_2)`` of a catalogue chain by a method (:func:`chaindrive.rating.rating_constants`,
+    :func:`chaindrive.rating.ansi.multi_strand_factor`), for :func:`_screened`."""
+    from ..rating import rating_constants
+    from ..rating.ansi import multi_strand_factor
+
+    return (*rating_constants(name, method), float(multi_strand_factor(strands)))
+
+
 def _may_carry(chains: list[tuple[Chain, int]], speed: float, design: float, method: str | None,
                band: float = 0.0) -> list[bool]:
     """Whether each (chain, teeth) may carry the design power [W] at ``speed`` [rad/s] (or miss it
-    by at most the fraction ``band``: the near misses): the
-    ANSI/ACA rated power ``K_2 min(H_1, H_2)`` of the whole catalogue in one vectorised call
-    (:func:`chaindrive.rating.ansi.ansi_link_plate_power`, ``ansi_roller_bushing_power``),
+    by at most the fraction ``band``: the near misses) by the catalogue screen (:func:`_screened`),
     so that only the chains that may carry it are rated one by one (``chain_rating``).
     A chain rated by another method is always passed on."""
-    from ..rating import default_method
-    from ..rating.ansi import (
-        ansi_constants,
-        ansi_link_plate_power,
-        ansi_roller_bushing_power,
-        multi_strand_factor,
-    )
-
-    ansi = [(method or default_method(ch)) == "ansi" and ch.is_roller_chain and ch.strands <= 4 for ch, _ in chains]
-    picked = [c for c, a in zip(chains, ansi, strict=True) if a]
-    if not picked:
-        return [True] * len(chains)
-    import numpy as np
-
-    z = np.array([t for _, t in picked], dtype=float)
-    p = np.array([ch.pitch for ch, _ in picked])
-    kp, kr = np.array([ansi_constants(ch.name) for ch, _ in picked]).T
-    k2 = np.array([multi_strand_factor(ch.strands) for ch, _ in picked])
-    with warnings.catch_warnings():
-        warnings.simplefilter("ignore", ValidityRangeWarning)
-        rated = np.minimum(k2 * ansi_link_plate_power(z, speed, p, kp), k2 * ansi_roller_bushing_power(z, speed, p, kr))
-    ok = iter(rated >= design * (1.0 - band - SCREEN_MARGIN))
-    return [bool(next(ok)) if a else True for a in ansi]
+    return [s is None or s >= design * (1.0 - band - SCREEN_MARGIN) for s in _screened(chains, speed, method)]
 
 
-def _lay_out(rated: list[_Rated], duty: Duty, factors: tuple[Factor, ...], ks: float, required: float | None,
-             all_sizes: bool, dropped: list[tuple[float, str]] | None = None) -> list[DesignCandidate]:
+@dataclass(frozen=True)
+class _Pending:
+    """A chain the screen shows to carry the design power, rated (step 3) only when the layout
+    reaches it (:func:`_lay_out`); ``at``: its place in the catalogue."""
+
+    chain: Chain
+    twins: tuple[str, ...]
+    teeth: tuple[int, str]
+    at: int
+
+
+def _lay_out(rated: list[_Rated | _Pending], duty: Duty, factors: tuple[Factor, ...], ks: float,
+             required: float | None, all_sizes: bool, dropped: list[tuple[float, str]] | None = None,
+             rate: Callable[[_Pending], _Rated | str | None] | None = None) -> list[DesignCandidate]:
     """The rated chains laid out and loaded (steps 4-5). Unless ``all_sizes``, only the chains
     that can be kept: per series and strand count, design_drive keeps the adequate chains of
     the smallest (galling region, pitch); they are laid out in that order until one passes
-    the static safety, and those of its (galling, pitch) with it. The candidates are those
-    laying out every chain and filtering afterwards would give."""
+    the static safety, and those of its (galling, pitch) with it. A pending chain is rated
+    (``rate``) when it is reached: the chains of a group are taken by pitch, those outside the
+    galling region laid out at once, those in it kept for when none outside it passes. The
+    candidates are those laying out every chain and filtering afterwards would give."""
     if all_sizes:
-        return [c for r in rated if (c := _laid_out(r, duty, factors, ks, required, dropped)) is not None]
-    groups: dict[tuple[str, int], list[_Rated]] = {}
+        return [c for r in rated if isinstance(r, _Rated)
+                and (c := _laid_out(r, duty, factors, ks, required, dropped)) is not None]
+    groups: dict[tuple[str, int], list[_Rated | _Pending]] = {}
     for r in rated:
         groups.setdefault((_series(r.chain), r.chain.strands), []).append(r)
     found: list[DesignCandidate] = []
     for group in groups.values():
-        kept = None
-        for r in sorted(group, key=lambda r: (r.rating.lubrication == "C'", r.chain.pitch)):
-            order = (r.rating.lubrication == "C'", r.chain.pitch)
-            if kept is not None and order != kept:
+        kept: tuple[bool, float] | None = None
+        galling: list[_Rated] = []
+        for e in sorted(group, key=lambda e: e.chain.pitch):
+            if kept is not None and e.chain.pitch != kept[1]:
                 break
-            c = _laid_out(r, duty, factors, ks, required, dropped)
-            if c is not None:
+            got = e if isinstance(e, _Rated) or rate is None else rate(e)
+            if not isinstance(got, _Rated):
+                continue
+            r = got
+            if r.rating.lubrication == "C'":
+                galling.append(r)
+                continue
+            if (c := _laid_out(r, duty, factors, ks, required, dropped)) is not None:
                 found.append(c)
-                kept = order
+                kept = (False, r.chain.pitch)
+        for r in galling if kept is None else ():  # every chain of the group rated: none outside galling passed
+            if kept is not None and r.chain.pitch != kept[1]:
+                break
+            if (c := _laid_out(r, duty, factors, ks, required, dropped)) is not None:
+                found.append(c)
+                kept = (True, r.chain.pitch)
     return found
 
 
@@ -628,24 +686,32 @@ def design_drive(request: DesignRequest | Duty, **options: Any) -> DesignResult:
             if family is None and ch.family == "ansi" and twins:
                 continue  # one row per chain: the ISO 606 twin carries both names
             chains.append((ch, twins, _teeth_for(ch, duty, teeth_driving)))
-    may_carry = _may_carry([(ch, z[0]) for ch, _, z in chains], duty.speed, duty.power * ks, method,
-                           NEAR_MISS_BAND)
-    rated: list[_Rated] = []
+    design = duty.power * ks
+    screened = _screened([(ch, z[0]) for ch, _, z in chains], duty.speed, method)
+    rated: list[_Rated | _Pending] = []
     short: list[tuple[_Rated, float]] = []
-    too_close: list[str] = []
-    for (ch, twins, teeth), maybe in zip(chains, may_carry, strict=True):
-        if not maybe:
-            continue
-        got = _rated(ch, twins, duty, ks, teeth_driving, method, teeth, short=short,
-                     centre=request.wanted_centre(ch.pitch))
+    too_close: list[tuple[int, str]] = []
+
+    def rate(e: _Pending) -> _Rated | str | None:
+        got = _rated(e.chain, e.twins, duty, ks, teeth_driving, method, e.teeth, short=short,
+                     centre=request.wanted_centre(e.chain.pitch))
         if isinstance(got, str):
-            too_close.append(got)
-        elif got is not None:
+            too_close.append((e.at, got))
+        return got
+
+    for at, ((ch, twins, teeth), power) in enumerate(zip(chains, screened, strict=True)):
+        if power is not None and power < design * (1.0 - NEAR_MISS_BAND - SCREEN_MARGIN):
+            continue  # neither carries the duty nor misses it by the near-miss band
+        pending = _Pending(ch, twins, teeth, at)
+        if not all_sizes and power is not None and power >= design * (1.0 + SCREEN_MARGIN):
+            rated.append(pending)  # carries the duty: rated when the layout reaches it
+        elif isinstance(got := rate(pending), _Rated):
             rated.append(got)
     dropped: list[tuple[float, str]] = []
-    found = _lay_out(rated, duty, factors, ks, required_static_safety, all_sizes, dropped)
+    found = _lay_out(rated, duty, factors, ks, required_static_safety, all_sizes, dropped, rate)
     if not found:
-        extra = f"; sprockets too large for the centre distance: {', '.join(too_close[:4])}" if too_close else ""
+        close = [text for _, text in sorted(too_close)]
+        extra = f"; sprockets too large for the centre distance: {', '.join(close[:4])}" if close else ""
         if dropped:
             extra += "; the nearest, " + max(dropped)[1]
         raise InfeasibleError(

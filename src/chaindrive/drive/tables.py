@@ -13,6 +13,7 @@ Examples
 
 from __future__ import annotations
 
+import functools
 from typing import Any
 
 from ..limits import MAX_LINKS, MAX_TEETH, MIN_TEETH
@@ -308,12 +309,17 @@ def warn_implausible_inputs(drive: Any) -> None:
 
 def is_further(table: InputTable) -> bool:
     """A table an analysis part declared (held in ``Drive.extra_inputs``), not one of the drive's own."""
+    return table.name.split(".")[0] not in _own_tables()
+
+
+@functools.lru_cache(maxsize=1)
+def _own_tables() -> frozenset[str]:
+    """The names of the drive's own tables: its fields and ``drive``."""
     import dataclasses
 
     from .model import Drive
 
-    own = {f.name for f in dataclasses.fields(Drive)} | {"drive"}
-    return table.name.split(".")[0] not in own
+    return frozenset({f.name for f in dataclasses.fields(Drive)} | {"drive"})
 
 
 def _built(table: InputTable, model: Any) -> Any:

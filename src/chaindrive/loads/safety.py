@@ -9,6 +9,7 @@ chain (Diamond Chain's working-load rule). All SI (N, m, rad/s). Re-exported by
 
 from __future__ import annotations
 
+import functools
 from typing import Any
 
 import numpy as np
@@ -154,6 +155,7 @@ def outside_required_safety_table(pitch: Any, speed: Any) -> Any:
     return (p < P[0] - 1e-12) | (p > P[-1] + 1e-12) | (rpm < REQUIRED_SAFETY_SPEEDS[0] - 1e-9) | (rpm > reach + 1e-9)
 
 
+@functools.lru_cache(maxsize=1024)  # pure in three scalars; asked for by every analysis and design
 def required_static_safety_for(link_chain: bool, pitch: float, speed: float) -> float:
     """The default required static safety of a chain, decided here once: 3.5 for a round link
     chain (:data:`REQUIRED_STATIC_SAFETY`), else :func:`required_static_safety_table` at the

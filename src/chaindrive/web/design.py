@@ -29,7 +29,7 @@ from ..design.policy import BASE_TEETH, default_centre_distance, driven_teeth
 from ..design.request import DesignRequest
 from ..display import kn_per_m, kw, mm
 from ..errors import ChainDriveError, InputError, ValidityRangeWarning
-from ..limits import DUTY_RANGES, MAX_TEETH, MIN_TEETH
+from ..limits import DUTY_RANGES, FORM_RANGES, MAX_TEETH, MIN_TEETH
 from ..units import angular_velocity_to_rpm
 from .fields import FieldError, FieldSpec, input_field, parse_field, parse_integer
 from .wheels import EXTRA_CHOICES, EXTRA_DEFAULTS, add_extra_wheels, extra_wheels
@@ -109,6 +109,11 @@ def _duty_field(name: str, example: str, unit: str | None = None) -> FieldSpec:
     return FieldSpec(si if unit is None else unit, low, high, example=example)
 
 
+def _cap(name: str) -> float:
+    """The form's upper bound of a drive field (:data:`chaindrive.limits.FORM_RANGES`)."""
+    return FORM_RANGES[name][1]
+
+
 #: Ranges of the numeric fields (SI unit, minimum, maximum, example): a duty field's from
 #: :data:`chaindrive.limits.DUTY_RANGES`; a project-file input's unit and lower bound from
 #: the input's declaration.
@@ -120,24 +125,24 @@ FIELDS: dict[str, FieldSpec] = {
     "service_factor": input_field("load.service_factor", maximum=DUTY_RANGES["service_factor"][1], example="1.3"),
     "hours_per_day": _duty_field("hours_per_day", "8", unit=""),
     "centre_distance": _duty_field("centre_distance", "500 mm"),
-    "idler_position": FieldSpec("", 0.05, 0.95, open_minimum=False, example="0.3"),
-    "idler_offset": FieldSpec("m", 0.0, 10.0, open_minimum=False, example="60 mm"),
-    "tensioner_mass": input_field("tensioner.mass", maximum=1e5, example="2 kg"),
-    "tensioner_stiffness": input_field("tensioner.stiffness", maximum=1e10, example="20 kN/m"),
-    "tensioner_force": input_field("tensioner.force", maximum=1e7, example="200 N"),
+    "idler_position": FieldSpec("", *FORM_RANGES["idler_position"][:2], open_minimum=False, example="0.3"),
+    "idler_offset": FieldSpec("m", *FORM_RANGES["idler_offset"][:2], open_minimum=False, example="60 mm"),
+    "tensioner_mass": input_field("tensioner.mass", maximum=_cap("tensioner_mass"), example="2 kg"),
+    "tensioner_stiffness": input_field("tensioner.stiffness", maximum=_cap("tensioner_stiffness"), example="20 kN/m"),
+    "tensioner_force": input_field("tensioner.force", maximum=_cap("tensioner_force"), example="200 N"),
     # a tensioner described by its parts (chaindrive.drive.model.Tensioner.from_parts)
-    "tensioner_arm_length": input_field("tensioner.arm_length", maximum=10.0, example="400 mm"),
-    "tensioner_arm_mass": input_field("tensioner.arm_mass", maximum=1e5, example="30 kg"),
-    "tensioner_wheel_mass": input_field("tensioner.wheel_mass", maximum=1e5, example="40 kg"),
-    "tensioner_carriage_mass": input_field("tensioner.carriage_mass", maximum=1e5, example="25 kg"),
-    "tensioner_spring_stiffness": FieldSpec("N/m", 0.0, 1e10, example="600 kN/m"),
-    "tensioner_spring_lever": input_field("tensioner.spring_lever", maximum=10.0, example="250 mm"),
-    "tensioner_spring_angle": input_field("tensioner.spring_angle", maximum=1.5, example="10 deg"),
-    "guide_end": input_field("guides.end_distance", maximum=10.0, example="100 mm"),
-    "skew": input_field("contact.skew", maximum=0.2, example="50 arcmin"),
+    "tensioner_arm_length": input_field("tensioner.arm_length", maximum=_cap("tensioner_arm_length"), example="400 mm"),
+    "tensioner_arm_mass": input_field("tensioner.arm_mass", maximum=_cap("tensioner_arm_mass"), example="30 kg"),
+    "tensioner_wheel_mass": input_field("tensioner.wheel_mass", maximum=_cap("tensioner_wheel_mass"), example="40 kg"),
+    "tensioner_carriage_mass": input_field("tensioner.carriage_mass", maximum=_cap("tensioner_carriage_mass"), example="25 kg"),
+    "tensioner_spring_stiffness": FieldSpec("N/m", *FORM_RANGES["tensioner_spring_stiffness"][:2], example="600 kN/m"),
+    "tensioner_spring_lever": input_field("tensioner.spring_lever", maximum=_cap("tensioner_spring_lever"), example="250 mm"),
+    "tensioner_spring_angle": input_field("tensioner.spring_angle", maximum=_cap("tensioner_spring_angle"), example="10 deg"),
+    "guide_end": input_field("guides.end_distance", maximum=_cap("guide_end"), example="100 mm"),
+    "skew": input_field("contact.skew", maximum=_cap("skew"), example="50 arcmin"),
     "required_static_safety": input_field("drive.required_static_safety", minimum=1.0,
                                           maximum=DUTY_RANGES["required_static_safety"][1], example="7"),
-    "wear_coefficient": input_field("drive.wear_coefficient", maximum=1e-10, example="2e-16 m**2/N"),
+    "wear_coefficient": input_field("drive.wear_coefficient", maximum=_cap("wear_coefficient"), example="2e-16 m**2/N"),
 }
 
 #: Teeth of a wheel: the project schema's declaration (wheels.teeth, :mod:`chaindrive.limits`).

@@ -234,10 +234,12 @@ class JobManager:
 class Gate:
     """Worker processes for quick work (the live analysis), refusing when too many wait.
 
-    The work runs in a pool of processes forked from the forkserver (chaindrive already
-    imported), never in the server's process: a burst of analyses cannot slow the event
-    loop, which keeps answering light pages. The functions and their arguments must be
-    picklable (module-level functions of plain data).
+    The work runs in processes forked from the forkserver (chaindrive already imported),
+    never in the server's process: a burst of analyses cannot slow the event loop, which
+    keeps answering light pages. The functions and their arguments must be picklable
+    (module-level functions of plain data). Each request goes to the first idle worker (the
+    least busy when none is idle), so that one user's edits and the charts that follow each
+    edit meet the results that worker keeps (the design of the form, the ratings).
 
     Parameters
     ----------
@@ -255,15 +257,16 @@ class Gate:
         self.time_limit = float(time_limit)
         self._lock = threading.Lock()
         self._count = 0
-        self._pool = None
+        self._pools: list[Any] = [None] * max(1, self.workers)
+        self._busy = [0] * len(self._pools)
 
-    def _executor(self):
+    def _executor(self, slot: int):
         from concurrent.futures import ProcessPoolExecutor
 
-        if self._pool is None:
-            self._pool = ProcessPoolExecutor(max_workers=self.workers, mp_context=_context(),
-                                             initializer=worker_setup, initargs=(os.getpid(),))
-        return self._pool
+        if self._pools[slot] is None:
+            self._pools[slot] = ProcessPoolExecutor(max_workers=1, mp_context=_context(),
+                                                    initializer=worker_setup, initargs=(os.getpid(),))
+        return self._pools[slot]
 
     async def run(self, fn: Callable[..., Any], *args: Any) -> Any:
         """Run ``fn(*args)`` in a worker; :class:`Busy` when ``max_waiting`` are admitted."""
@@ -274,13 +277,15 @@ class Gate:
                 raise Busy(f"the server is busy ({self._count} analyses waiting, the limit is "
                            f"{self.max_waiting}); the page retries by itself")
             self._count += 1
+            slot = min(range(len(self._busy)), key=lambda i: (self._busy[i], i))
+            self._busy[slot] += 1
         try:
             loop = asyncio.get_running_loop()
             try:
-                future = loop.run_in_executor(self._executor(), fn, *args)
+                future = loop.run_in_executor(self._executor(slot), fn, *args)
                 return await asyncio.wait_for(future, self.time_limit)
             except (TimeoutError, BrokenProcessPool):
-                pool, self._pool = self._pool, None
+                pool, self._pools[slot] = self._pools[slot], None
                 if pool is not None:
                     pool.shutdown(wait=False, cancel_futures=True)
                     for proc in list(getattr(pool, "_processes", {}).values()):
@@ -290,23 +295,30 @@ class Gate:
         finally:
             with self._lock:
                 self._count -= 1
+                self._busy[slot] -= 1
 
     def close(self) -> None:
-        """Stop the worker processes and release the pool's queues (their semaphores are
+        """Stop the worker processes and release the pools' queues (their semaphores are
         unlinked now, not reported as leaked by multiprocessing's resource tracker at exit)."""
-        pool, self._pool = self._pool, None
-        if pool is not None:
-            procs = list(getattr(pool, "_processes", {}).values())
-            pool.shutdown(wait=False, cancel_futures=True)
-            for proc in procs:
-                try:
-                    proc.kill()
-                except (AttributeError, OSError, ValueError):  # gone already
-                    pass
-            for proc in procs:
-                with contextlib.suppress(AttributeError, OSError, ValueError, AssertionError):
-                    proc.join(timeout=5)
-            with contextlib.suppress(Exception):  # the manager thread notices the killed workers
-                pool.shutdown(wait=True, cancel_futures=True)
-            del pool, procs
-            gc.collect()
+        pools = [p for p in self._pools if p is not None]
+        self._pools = [None] * len(self._pools)
+        for pool in pools:
+            _stop_pool(pool)
+        del pools
+        gc.collect()
+
+
+def _stop_pool(pool: Any) -> None:
+    """Kill the processes of a pool, join them and shut the pool down."""
+    procs = list(getattr(pool, "_processes", {}).values())
+    pool.shutdown(wait=False, cancel_futures=True)
+    for proc in procs:
+        try:
+            proc.kill()
+        except (AttributeError, OSError, ValueError):  # gone already
+            pass
+    for proc in procs:
+        with contextlib.suppress(AttributeError, OSError, ValueError, AssertionError):
+            proc.join(timeout=5)
+    with contextlib.suppress(Exception):  # the manager thread notices the killed workers
+        pool.shutdown(wait=True, cancel_futures=True)

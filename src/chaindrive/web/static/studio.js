@@ -4,7 +4,7 @@
   const form = document.getElementById("design");
   if (!form) return;
   const $ = (id) => document.getElementById(id);
-  let liveCtl = null, chartsCtl = null, liveTimer = null, chartsTimer = null;
+  let liveBusy = false, liveAgain = false, liveQuery = null, editAt = null, chartsCtl = null, chartsTimer = null;
   let mapBase = null, sliding = false;
   const plotConfig = { displaylogo: false, responsive: true, modeBarButtonsToRemove: ["sendDataToCloud"] };
 
@@ -162,23 +162,40 @@
     text($("status"), "updated in " + d.elapsed_ms + " ms (server)");
   }
 
-  async function update() {
-    if (liveCtl) liveCtl.abort();
-    liveCtl = new AbortController();
+  // one live request at a time: an edit while one is on its way asks for one more, sent when it
+  // has answered with the form as it is then (an aborted request would still cost the server its work)
+  // (an edit fires "input" and "change": the form already asked for is not asked for again)
+  async function update(force) {
+    if (liveBusy) { liveAgain = true; return; }
+    const query = params().toString();
+    if (query === liveQuery && !force) return;
+    liveBusy = true;
+    liveAgain = false;
+    liveQuery = query;
+    const since = editAt;  // the edit this request answers (a later one starts its own)
+    editAt = null;
     document.body.classList.add("busy");
     try {
-      const r = await fetch("/api/design?" + params().toString(), { signal: liveCtl.signal, headers: { Accept: "application/json" } });
+      const r = await fetch("/api/design?" + query, { headers: { Accept: "application/json" } });
       const d = await r.json();
+      if (!r.ok) liveQuery = null;  // asked again at the next edit (or retry)
       if (r.status === 503) { text($("status"), d.error); setTimeout(schedule, 1000); return; }
       if (!r.ok) { showErrors(d.field ? { [d.field]: d.error } : {}); markStale(true); text($("status"), d.error || ("error " + r.status)); return; }
       render(d);
       document.body.dataset.ready = "live";
-      document.body.dataset.updates = String((parseInt(document.body.dataset.updates || "0", 10)) + 1);
+      // once the new page is painted: the time from the edit (data-edit-ms) and the count of updates
+      requestAnimationFrame(() => setTimeout(() => {
+        if (since !== null) document.body.dataset.editMs = (performance.now() - since).toFixed(1);
+        document.body.dataset.updates = String((parseInt(document.body.dataset.updates || "0", 10)) + 1);
+      }, 0));
       if (!d.errors || Object.keys(d.errors).length === 0) scheduleCharts();
     } catch (e) {
-      if (e.name !== "AbortError") text($("status"), "the server did not answer: " + e);
+      liveQuery = null;
+      text($("status"), "the server did not answer: " + e);
     } finally {
-      document.body.classList.remove("busy");
+      liveBusy = false;
+      if (liveAgain) update();
+      if (!liveBusy) document.body.classList.remove("busy");
     }
   }
 
@@ -215,7 +232,10 @@
     } catch (e) { /* aborted or offline: the live part is shown already */ }
   }
 
-  function schedule() { clearTimeout(liveTimer); liveTimer = setTimeout(update, 25); }
+  function schedule() {  // at once when no request is on its way, else right after it
+    if (editAt === null) editAt = performance.now();
+    update();
+  }
   function scheduleCharts() { clearTimeout(chartsTimer); chartsTimer = setTimeout(charts, 250); }
 
   function slide() {
@@ -248,7 +268,7 @@
       form.submit();
     });
   }
-  form.addEventListener("submit", (e) => { e.preventDefault(); update(); });
+  form.addEventListener("submit", (e) => { e.preventDefault(); update(true); });
   $("slider-mass").addEventListener("input", slide);
   $("slider-stiffness").addEventListener("input", slide);
   $("project-file").addEventListener("change", async () => {
