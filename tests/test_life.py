@@ -569,3 +569,31 @@ def test_wrap_model_11_teeth_onset_regression():
     held, ratio = m.holds(3000.0, 19.5)
     assert held and 30.0 < ratio < 120.0
     assert not m.holds(3000.0, 23.0)[0]
+
+
+def test_wrap_jump_ratio_regression_unchanged_by_the_vectorised_solver():
+    # regression: the onset of jump-over of the compliant wrap as computed before the energy
+    # assembly was vectorised and the Newton step made a banded Cholesky solve (commit 0050712 of
+    # main: 26.67042864326648, 83.14943213949255, 2964.34913553514); the speed-up must not move it
+    # beyond 1e-6 relative (a 16B chain on 11 teeth at 20 % elongation, F = 3 kN, coarse bisection)
+    from chaindrive.life import wrap_jump_ratio
+
+    got = wrap_jump_ratio(P16B, 11, D16B, 0.2, 3000.0, phases=4, low=2.0, high=200.0, rtol=0.5)
+    assert got.load_ratio == pytest.approx(26.67042864326648, rel=1e-6)
+    assert got.tension_ratio == pytest.approx(83.14943213949255, rel=1e-6)
+    assert got.tight_tension == pytest.approx(2964.34913553514, rel=1e-6)
+
+
+def test_wrap_model_banded_hessian_is_the_dense_one():
+    # the banded storage the Newton step factorises holds exactly the full Hessian's band, and
+    # nothing of the full Hessian lies outside it (a chain of points couples only its neighbours)
+    from chaindrive.life import WrapModel
+
+    m = WrapModel(P16B, 13, D16B, 0.15)
+    x = m.start(0.05).ravel() + np.random.default_rng(3).normal(0.0, 3e-5, 2 * len(m.start(0.05)))
+    _e, _g, dense = m.energy(x, 0.05, 2500.0, 80.0)
+    _e, _g, band = m.energy(x, 0.05, 2500.0, 80.0, banded=True)
+    assert np.allclose(dense, dense.T)
+    for k in range(4):
+        assert np.array_equal(np.diag(dense, k), band[3 - k, k:])
+    assert not np.any(np.triu(dense, 4))

@@ -57,6 +57,7 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
+from scipy.linalg import cho_solve_banded, cholesky_banded
 
 from .._results import Result, quantity
 from .._validation import check_nonnegative, check_positive
@@ -141,13 +142,18 @@ class WrapModel:
         return np.array(tight + wrap + slack)
 
     # ------------------------------------------------------------------ energy
-    def energy(self, x: np.ndarray, theta: float, t1: float, t2: float) -> tuple[float, np.ndarray, np.ndarray]:
-        """Potential energy [J], its gradient [N] and Hessian [N/m] at the roller centres ``x`` (flat)."""
+    def energy(self, x: np.ndarray, theta: float, t1: float, t2: float, *,
+               banded: bool = False) -> tuple[float, np.ndarray, np.ndarray]:
+        """Potential energy [J], its gradient [N] and Hessian [N/m] at the roller centres ``x`` (flat).
+
+        ``banded``: the Hessian in the upper banded storage of
+        :func:`scipy.linalg.cholesky_banded` (3 superdiagonals: a chain of 2-D points couples
+        only its neighbours) instead of the full matrix.
+        """
         f, r, psi, ce, corner, d_t = self._const
         xx = x.reshape(-1, 2)
         n = len(xx)
         grad = np.zeros((n, 2))
-        hess = np.zeros((2 * n, 2 * n))
         # links
         rest = self.pitch * (1 + self.elongation)
         kl = self.axial_stiffness / rest
@@ -161,40 +167,32 @@ class WrapModel:
         grad[1:] += fl
         uu = u[:, :, None] * u[:, None, :]
         blocks = kl * uu + (kl * ext / length)[:, None, None] * (np.eye(2) - uu)
-        for i in range(n - 1):
-            b = blocks[i]
-            hess[2 * i:2 * i + 2, 2 * i:2 * i + 2] += b
-            hess[2 * i + 2:2 * i + 4, 2 * i + 2:2 * i + 4] += b
-            hess[2 * i:2 * i + 2, 2 * i + 2:2 * i + 4] -= b
-            hess[2 * i + 2:2 * i + 4, 2 * i:2 * i + 2] -= b
+        diag = np.zeros((n, 2, 2))
+        diag[1:] += blocks
+        diag[:-1] += blocks
         # contacts
+        pen, nrm, curv = _penetrations(xx, theta, f, r, psi, ce, corner, d_t)
         kc = self.contact_stiffness
-        step = 2 * math.pi / self.teeth
-        phi = np.arctan2(xx[:, 1], xx[:, 0])
-        gap = theta + np.round((phi - theta) / step) * step
-        er = np.column_stack([np.cos(gap), np.sin(gap)])
-        et = np.column_stack([-er[:, 1], er[:, 0]])
-        a = np.einsum("ij,ij->i", xx, er) - f.pitch_radius
-        b = np.einsum("ij,ij->i", xx, et)
-        for i in range(n):
-            got = _penetration(a[i], b[i], f, r, psi, ce, corner, d_t)
-            if got is None:
-                continue
-            pen, na, nb, curv = got
-            nrm = na * er[i] + nb * et[i]
-            tan = np.array([-nrm[1], nrm[0]])
-            energy += 0.5 * kc * pen * pen
-            grad[i] += kc * pen * nrm
-            hess[2 * i:2 * i + 2, 2 * i:2 * i + 2] += kc * (np.outer(nrm, nrm) + pen * curv * np.outer(tan, tan))
+        energy += float(np.sum(0.5 * kc * pen * pen))
+        grad += (kc * pen)[:, None] * nrm
+        tan = np.stack([-nrm[:, 1], nrm[:, 0]], axis=1)
+        diag += kc * (nrm[:, :, None] * nrm[:, None, :] + (pen * curv)[:, None, None] * (tan[:, :, None] * tan[:, None, :]))
         energy -= t1 * xx[0, 0] + t2 * xx[-1, 0]
         grad[0, 0] -= t1
         grad[-1, 0] -= t2
-        return energy, grad.ravel(), hess
+        # upper banded storage: row 3 - k holds the k-th superdiagonal
+        band = np.zeros((4, 2 * n))
+        band[3, 0::2], band[3, 1::2] = diag[:, 0, 0], diag[:, 1, 1]
+        band[2, 1::2] = diag[:, 0, 1]
+        band[2, 2::2] = -blocks[:, 1, 0]
+        band[1, 2::2], band[1, 3::2] = -blocks[:, 0, 0], -blocks[:, 1, 1]
+        band[0, 3::2] = -blocks[:, 0, 1]
+        return energy, grad.ravel(), (band if banded else _dense(band))
 
     def equilibrium(self, x: np.ndarray, theta: float, t1: float, t2: float, *, tol: float = 1e-7,
                     max_iter: int = 200) -> tuple[np.ndarray, bool]:
         """The equilibrium nearest ``x`` (Newton, line search on ``Π``); (positions, converged)."""
-        energy, grad, hess = self.energy(x, theta, t1, t2)
+        energy, grad, hess = self.energy(x, theta, t1, t2, banded=True)
         scale = max(t1, t2, 1.0)
         for _ in range(max_iter):
             if float(np.max(np.abs(grad))) < tol * scale:
@@ -205,7 +203,7 @@ class WrapModel:
                 dx *= 0.08 * self.pitch / big
             t = 1.0
             while True:
-                e2, g2, h2 = self.energy(x + t * dx, theta, t1, t2)
+                e2, g2, h2 = self.energy(x + t * dx, theta, t1, t2, banded=True)
                 if e2 <= energy + 1e-4 * t * float(grad @ dx) or t < 1e-6:
                     break
                 t *= 0.5
@@ -300,12 +298,15 @@ class WrapModel:
 
     def _advance(self, x, start, end, t1, torque, load, fixed, depth=3):
         """The equilibrium at the wheel angle ``end`` followed from ``start`` (halving the step
-        where the iteration does not converge, down to 1/8 of it)."""
+        where the iteration does not converge, down to 1/8 of it), started from ``x`` turned with
+        the wheel."""
+        c, s = math.cos(end - start), math.sin(end - start)
+        guess = (x.reshape(-1, 2) @ np.array([[c, s], [-s, c]])).ravel()
         if fixed:
-            xs, ok = self.equilibrium(x, end, t1, load - t1)
+            xs, ok = self.equilibrium(guess, end, t1, load - t1)
             ts = t1
         else:
-            xs, ts, ok = self.tensions(x, end, torque, load, t1)
+            xs, ts, ok = self.tensions(guess, end, torque, load, t1)
         if ok or depth == 0:
             return xs, ts, ok
         mid = 0.5 * (start + end)
@@ -314,42 +315,60 @@ class WrapModel:
             return xm, tm, False
         return self._advance(xm, mid, end, tm, torque, load, fixed, depth - 1)
 
-def _descent(hess: np.ndarray, grad: np.ndarray) -> np.ndarray:
-    """Newton step ``-(H + λI)^-1 g`` with the smallest shift ``λ >= 0`` that makes it positive definite."""
-    eye = np.eye(len(grad))
+def _dense(band: np.ndarray) -> np.ndarray:
+    """The symmetric matrix of the upper banded storage ``band`` (see :meth:`WrapModel.energy`)."""
+    m, size = band.shape
+    out = np.zeros((size, size))
+    for k in range(m):
+        i = np.arange(size - k)
+        out[i, i + k] = out[i + k, i] = band[m - 1 - k, k:]
+    return out
+
+
+def _descent(band: np.ndarray, grad: np.ndarray) -> np.ndarray:
+    """Newton step ``-(H + λI)^-1 g`` with the smallest shift ``λ >= 0`` that makes it positive definite
+    (``H`` in upper banded storage: a banded Cholesky factorisation)."""
     shift = 0.0
-    dmax = max(float(np.max(np.abs(np.diag(hess)))), 1.0)
+    dmax = max(float(np.max(np.abs(band[-1]))), 1.0)
     while True:
         try:
-            low = np.linalg.cholesky(hess + shift * eye)
+            shifted = band.copy()
+            shifted[-1] += shift
+            low = cholesky_banded(shifted)
             break
         except np.linalg.LinAlgError:
             shift = max(2 * shift, 1e-8 * dmax)
-    return -np.linalg.solve(low.T, np.linalg.solve(low, grad))
+    return -cho_solve_banded((low, False), grad)
 
 
-def _penetration(a, b, f, r, psi, ce, corner, d_t):
-    """Penetration [m] of a roller at ``(a, b)`` of its gap frame, the normal in which it grows
-    and the curvature of the gap function along the tangent; ``None`` without contact."""
-    sign = 1.0 if b >= 0 else -1.0
-    q = np.array([a, abs(b)])
-    on_seat = q[1] * math.cos(psi) + q[0] * math.sin(psi) <= 0.0
-    v = q - ce
-    if not on_seat and v[0] * d_t[1] - v[1] * d_t[0] < 0.0:  # beyond the flank: the tooth corner
-        w = q - corner
-        dist = float(np.hypot(*w))
-        pen, nrm, curv = r - dist, -w / dist, -1.0 / dist
-    elif on_seat:
-        dist = float(np.hypot(*q))
-        if dist == 0.0:
-            return None
-        pen, nrm, curv = dist - (f.seat_radius - r), q / dist, 1.0 / dist
-    else:
-        dist = float(np.hypot(*v))
-        pen, nrm, curv = f.flank_radius + r - dist, -v / dist, -1.0 / dist
-    if pen <= 0.0:
-        return None
-    return pen, float(nrm[0]), sign * float(nrm[1]), curv
+def _penetrations(xx, theta, f, r, psi, ce, corner, d_t):
+    """Penetration [m] of each roller of ``xx`` into its nearest tooth gap (0 without contact),
+    the unit normal in which it grows and the curvature of the gap function along the tangent
+    (arc of the seat, flank arc, tooth corner; ISO 606)."""
+    step = 2 * math.pi / f.teeth
+    px, py = xx[:, 0], xx[:, 1]
+    gap = theta + np.round((np.arctan2(py, px) - theta) / step) * step
+    cg, sg = np.cos(gap), np.sin(gap)
+    a = (px * cg + py * sg) - f.pitch_radius  # along the gap's radius (e_r)
+    b = (px * (-sg) + py * cg)  # across it (e_t)
+    sign = np.where(b >= 0, 1.0, -1.0)
+    b = np.abs(b)
+    on_seat = b * math.cos(psi) + a * math.sin(psi) <= 0.0
+    vx, vy = a - ce[0], b - ce[1]
+    at_corner = ~on_seat & (vx * d_t[1] - vy * d_t[0] < 0.0)
+    rx = np.where(at_corner, a - corner[0], np.where(on_seat, a, vx))
+    ry = np.where(at_corner, b - corner[1], np.where(on_seat, b, vy))
+    dist = np.hypot(rx, ry)
+    safe = np.where(dist == 0.0, 1.0, dist)
+    pen = np.where(at_corner, r - dist, np.where(on_seat, dist - (f.seat_radius - r), f.flank_radius + r - dist))
+    out = np.where(on_seat, 1.0, -1.0) / safe  # the seat is concave, the flank and the corner convex
+    na, nb = out * rx, sign * (out * ry)
+    touch = (pen > 0.0) & (dist > 0.0)
+    pen = np.where(touch, pen, 0.0)
+    nrm = np.empty_like(xx)
+    nrm[:, 0] = np.where(touch, na * cg - nb * sg, 0.0)
+    nrm[:, 1] = np.where(touch, na * sg + nb * cg, 0.0)
+    return pen, nrm, out
 
 
 @dataclass(frozen=True)
