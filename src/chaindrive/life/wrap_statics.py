@@ -24,7 +24,9 @@ that slide on the worn seat and the flank):
   fixed directions (the spans are long: their direction does not follow the rollers).
 
 The wheel is held at an angle ``θ``; frictionless. The minimum is found by Newton's method
-with a line search (the Hessian shifted to be positive definite where it is not).
+with a line search (the Hessian shifted to be positive definite where it is not; banded, so
+each step is a banded Cholesky solve), each wheel position started from the previous one
+turned with the wheel.
 
 **Loading.** A drive does not impose the span tensions but the wheel's torque ``M`` and,
 through the take-up (a wheel on a slide pulled by ``F``, or the pretension), their sum
@@ -57,7 +59,7 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.linalg import cho_solve_banded, cholesky_banded
+from scipy.linalg.lapack import dpbtrf, dpbtrs
 
 from .._results import Result, quantity
 from .._validation import check_nonnegative, check_positive
@@ -146,8 +148,8 @@ class WrapModel:
                banded: bool = False) -> tuple[float, np.ndarray, np.ndarray]:
         """Potential energy [J], its gradient [N] and Hessian [N/m] at the roller centres ``x`` (flat).
 
-        ``banded``: the Hessian in the upper banded storage of
-        :func:`scipy.linalg.cholesky_banded` (3 superdiagonals: a chain of 2-D points couples
+        ``banded``: the Hessian in LAPACK's upper banded storage (as
+        :func:`scipy.linalg.cholesky_banded`; 3 superdiagonals: a chain of 2-D points couples
         only its neighbours) instead of the full matrix.
         """
         f, r, psi, ce, corner, d_t = self._const
@@ -189,6 +191,18 @@ class WrapModel:
         band[0, 3::2] = -blocks[:, 0, 1]
         return energy, grad.ravel(), (band if banded else _dense(band))
 
+    def _energy_value(self, x: np.ndarray, theta: float, t1: float, t2: float) -> float:
+        """:meth:`energy`'s value alone (the same operations: the same number to the last bit)."""
+        xx = x.reshape(-1, 2)
+        rest = self.pitch * (1 + self.elongation)
+        kl = self.axial_stiffness / rest
+        d = xx[1:] - xx[:-1]
+        ext = np.hypot(d[:, 0], d[:, 1]) - rest
+        energy = 0.5 * kl * float(ext @ ext)
+        pen = _penetrations(xx, theta, *self._const, normals=False)[0]
+        energy += float(np.sum(0.5 * self.contact_stiffness * pen * pen))
+        return energy - (t1 * xx[0, 0] + t2 * xx[-1, 0])
+
     def equilibrium(self, x: np.ndarray, theta: float, t1: float, t2: float, *, tol: float = 1e-7,
                     max_iter: int = 200) -> tuple[np.ndarray, bool]:
         """The equilibrium nearest ``x`` (Newton, line search on ``Π``); (positions, converged)."""
@@ -202,12 +216,12 @@ class WrapModel:
             if big > 0.08 * self.pitch:
                 dx *= 0.08 * self.pitch / big
             t = 1.0
-            while True:
-                e2, g2, h2 = self.energy(x + t * dx, theta, t1, t2, banded=True)
-                if e2 <= energy + 1e-4 * t * float(grad @ dx) or t < 1e-6:
+            while True:  # the trial points' energy alone; the gradient and Hessian at the accepted one
+                if self._energy_value(x + t * dx, theta, t1, t2) <= energy + 1e-4 * t * float(grad @ dx) or t < 1e-6:
                     break
                 t *= 0.5
-            x, energy, grad, hess = x + t * dx, e2, g2, h2
+            x = x + t * dx
+            energy, grad, hess = self.energy(x, theta, t1, t2, banded=True)
         return x, False
 
     def tensions(self, x: np.ndarray, theta: float, torque: float, load: float, t1: float, *,
@@ -330,18 +344,18 @@ def _descent(band: np.ndarray, grad: np.ndarray) -> np.ndarray:
     (``H`` in upper banded storage: a banded Cholesky factorisation)."""
     shift = 0.0
     dmax = max(float(np.max(np.abs(band[-1]))), 1.0)
-    while True:
-        try:
-            shifted = band.copy()
-            shifted[-1] += shift
-            low = cholesky_banded(shifted)
+    while True:  # LAPACK's banded Cholesky (dpbtrf; info > 0: not positive definite)
+        shifted = band.copy()
+        shifted[-1] += shift
+        low, info = dpbtrf(shifted)
+        if info == 0:
             break
-        except np.linalg.LinAlgError:
-            shift = max(2 * shift, 1e-8 * dmax)
-    return -cho_solve_banded((low, False), grad)
+        shift = max(2 * shift, 1e-8 * dmax)
+    step, info = dpbtrs(low, grad)
+    return -step
 
 
-def _penetrations(xx, theta, f, r, psi, ce, corner, d_t):
+def _penetrations(xx, theta, f, r, psi, ce, corner, d_t, normals=True):
     """Penetration [m] of each roller of ``xx`` into its nearest tooth gap (0 without contact),
     the unit normal in which it grows and the curvature of the gap function along the tangent
     (arc of the seat, flank arc, tooth corner; ISO 606)."""
@@ -365,6 +379,8 @@ def _penetrations(xx, theta, f, r, psi, ce, corner, d_t):
     na, nb = out * rx, sign * (out * ry)
     touch = (pen > 0.0) & (dist > 0.0)
     pen = np.where(touch, pen, 0.0)
+    if not normals:
+        return pen, None, None
     nrm = np.empty_like(xx)
     nrm[:, 0] = np.where(touch, na * cg - nb * sg, 0.0)
     nrm[:, 1] = np.where(touch, na * sg + nb * cg, 0.0)
