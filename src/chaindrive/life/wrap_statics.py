@@ -199,7 +199,8 @@ class WrapModel:
         d = xx[1:] - xx[:-1]
         ext = np.hypot(d[:, 0], d[:, 1]) - rest
         energy = 0.5 * kl * float(ext @ ext)
-        pen = _penetrations(xx, theta, *self._const, normals=False)[0]
+        f, r, psi, ce, corner, d_t = self._const
+        pen = _penetrations(xx, theta, f, r, psi, ce, corner, d_t, normals=False)[0]
         energy += float(np.sum(0.5 * self.contact_stiffness * pen * pen))
         return energy - (t1 * xx[0, 0] + t2 * xx[-1, 0])
 
