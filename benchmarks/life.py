@@ -22,6 +22,7 @@ Run: ``PYTHONPATH=src python benchmarks/life.py``.
 from __future__ import annotations
 
 import math
+import time
 import warnings
 from pathlib import Path
 
@@ -145,13 +146,15 @@ def jump_over_vs_simulation(teeth: int = 11, elongation: float = 0.2, back_force
     if sim is None or fast is None:
         print(f"{head}: no load held")
         return
+    cpu = time.process_time()
     got = wrap_jump_ratio(0.0254, teeth, 0.01588, elongation, back_force, high=1.5 * rigid, rtol=0.02)
+    cpu = time.process_time() - cpu
     print(f"{head}: {100 * (got.load_ratio / rho - 1):+.1f} % (onset load ratio M/(R_e T2): analysis "
           f"{got.load_ratio:.1f}, simulation {rho:.1f} at {speed:g} rad/s, {rho_fast:.1f} at 2 rad/s; span "
           f"tensions T1/T2 at the onset: analysis {got.tension_ratio:.0f} (means), simulation {sim:.0f} and "
           f"{fast:.0f} (medians; slack span 5/50/95 %: {slack[0]:.0f}/{slack[1]:.0f}/{slack[2]:.0f} N and "
           f"{slack_fast[0]:.0f}/{slack_fast[1]:.0f}/{slack_fast[2]:.0f} N); rigid uniformly seated beta^-n "
-          f"{rigid:.0f})")
+          f"{rigid:.0f}; analysis {cpu:.1f} s of CPU)")
 
 
 def main() -> None:
