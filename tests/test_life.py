@@ -597,3 +597,19 @@ def test_wrap_model_banded_hessian_is_the_dense_one():
     for k in range(4):
         assert np.array_equal(np.diag(dense, k), band[3 - k, k:])
     assert not np.any(np.triu(dense, 4))
+
+
+@pytest.mark.slow
+def test_wrap_jump_ratio_regression_at_the_benchmark_resolution():
+    # regression at the benchmark's resolution (benchmarks/life.py: rho to 2 %), 9 teeth at 20 %:
+    # 15.345094585735012 and 47.59393141295212 before the speed-up (commit 0050712 of main), the same
+    # now. Near the onset the held / not held decision of a bisection step can turn on rounding
+    # (docs/life.md, "Jump-over"): 11 teeth at 10 % moved by one step (25.53 -> 25.84), so the
+    # regression is kept on a case that did not.
+    from chaindrive.layout import teeth_in_mesh
+    from chaindrive.life import wrap_jump_ratio
+
+    rigid = tension_ratio(P16B, 9, D16B, 0.2) ** -int(teeth_in_mesh(math.pi, 9))
+    got = wrap_jump_ratio(P16B, 9, D16B, 0.2, 3000.0, high=1.5 * rigid, rtol=0.02)
+    assert got.load_ratio == pytest.approx(15.345094585735012, rel=1e-6)
+    assert got.tension_ratio == pytest.approx(47.59393141295212, rel=1e-6)
