@@ -38,7 +38,7 @@ test: $(VENV)/.installed-test
 
 # everything but the slow (> ~5 s), browser and fuzz tests: under a minute on 2 cores
 test-fast: $(VENV)/.installed-test
-	MPLBACKEND=Agg $(PY) -m pytest -n 2 -q -m "not slow and not browser and not fuzz"
+	MPLBACKEND=Agg $(PY) -m pytest -n 2 -q -m "not slow and not browser and not fuzz and not whole"
 
 # the documentation site, offline, warnings as errors: docs/_build/html/index.html
 # (the API pages and the gallery are generated anew each time)

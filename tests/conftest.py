@@ -10,6 +10,22 @@ import pytest
 
 import _shared
 
+#: Test files that run a door end to end (reports written, CLI processes, a Dask cluster,
+#: OpenCascade solids, every example's proposal): marked ``whole``, so that ``make test-fast``
+#: (the everyday subset) stays under a minute on 2 cores; ``make test`` runs them.
+WHOLE = {
+    "test_analyze.py", "test_report_charts.py", "test_proposal_roundtrip.py", "test_run_folders.py",
+    "test_study_run.py", "test_geometry_solid.py", "test_simulation_cli.py", "test_doors_robust.py",
+    "test_report_figures.py", "test_geometry_export.py",
+}
+
+
+def pytest_collection_modifyitems(config: pytest.Config, items: list[pytest.Item]) -> None:
+    """Mark the tests of the :data:`WHOLE` files ``whole``."""
+    for item in items:
+        if item.path.name in WHOLE:
+            item.add_marker(pytest.mark.whole)
+
 
 @pytest.fixture(scope="session")
 def examples_dir() -> Path:
