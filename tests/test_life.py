@@ -138,7 +138,8 @@ def test_tension_ratio_by_sine_rule():
 def test_tension_ratio_in_unit_interval_and_rises_with_wear(teeth, frac):
     lim = holding_limit(P16B, teeth, D16B)
     b0, b1 = tension_ratio(P16B, teeth, D16B, [0.0, frac * lim])
-    assert 0.0 <= b0 <= b1 <= 1.0
+    # rising to rounding: a wear of ~1e-15 may give b1 below b0 in the last digits
+    assert 0.0 <= b0 <= b1 * (1 + 1e-12) and b1 <= 1.0
 
 
 def test_tension_ratio_regression():
