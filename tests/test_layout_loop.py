@@ -263,3 +263,10 @@ def test_toothless_wheels_only_give_the_pitch_circle_length():
     circles = L.wrap_layout(centres, [d / 2 for d in diameters], sides).length / P
     assert r.exact
     assert (r.links_min, r.links_max, r.links_mean) == pytest.approx((circles,) * 3, abs=1e-12)
+
+
+def test_phases_bounded_by_the_max_plus_product():
+    """The API fuzz at 10,000 inputs (seed 20261129): drive_layout(phases=1000) on a loop asked
+    for a 1000³ array (7.45 GiB); the loop's phases are bounded by the cube root of the grid limit."""
+    with pytest.raises(InputError, match=r"phases must be a whole number in \[1, 271\] for a loop"):
+        chain_length_loop(0.0127, [[0.0, 0.0], [0.3, 0.0], [0.15, 0.2]], [9, 9, 9], phases=272)

@@ -230,6 +230,9 @@ def test_efficiency_bad_input():
         transmission_efficiency(100.0, 200.0)
     with pytest.raises(InputError, match="teeth must be >= 2"):
         articulation_power_loss(1.0, 0.0127, 0.0036, [1.0, 11], [1.0, 0.0], [0.0, 1.0])
+    # the API fuzz at 10,000 inputs (seed 20261129): a pitch of 5e-324 m gave +inf
+    with pytest.raises(InputError, match="pin_diameter must be smaller than the pitch"):
+        articulation_power_loss(200.0, 5e-324, 0.0017, [6, 6], [64841.0, 0.0], [0.0, 3574.7])
 
 
 # --------------------------------------------------------------------------- the analysis part

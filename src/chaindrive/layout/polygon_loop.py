@@ -58,7 +58,7 @@ from numpy.typing import ArrayLike
 from .._results import Result, quantity
 from .._validation import as_float_array, check_positive
 from ..errors import InfeasibleError, InputError, ValidityRangeWarning
-from .two_wheels import _check_phases
+from .two_wheels import MAX_PHASE_GRID, _check_phases
 from .wheels import _radius_and_offsets
 from .wrap import wrap_layout
 
@@ -392,6 +392,14 @@ def chain_length_loop(
         raise InputError(f"phases must be a whole number >= 1, got {phases}", field="phases")
     if len(toothed) >= 2:
         _check_phases(phases, max(toothed), max(toothed))
+        # the max-plus product holds phases³ values at once (_max_plus_cycle)
+        largest = round(MAX_PHASE_GRID ** (1 / 3))
+        while largest ** 3 > MAX_PHASE_GRID:
+            largest -= 1
+        if int(phases) > largest:
+            raise InputError(f"phases must be a whole number in [1, {largest}] for a loop of {len(toothed)} "
+                             f"toothed wheels (the max-plus product holds phases³ values), got {phases}",
+                             field="phases")
     return _loop(p, c, teeth, s, diameters, bar_diameter, int(phases))
 
 

@@ -83,6 +83,10 @@ def articulation_power_loss(chain_speed: ArrayLike, pitch: ArrayLike, pin_diamet
     v = check_nonnegative("chain_speed", chain_speed, "m/s")
     p = check_positive("pitch", pitch, "m")
     d = check_positive("pin_diameter", pin_diameter, "m")
+    if np.any(d >= p):
+        raise InputError(f"pin_diameter must be smaller than the pitch (a joint's pin or bar lies within its "
+                         f"link: 0.3-0.4 p for roller chains, about p/3.5 for round link chains), got "
+                         f"{pin_diameter!r} m for a pitch of {pitch!r} m", field="pin_diameter")
     z = check_positive("teeth", teeth)
     if np.any(z < 2):
         raise InputError(f"teeth must be >= 2 (sides per turn of each wheel), got {teeth!r}", field="teeth")
@@ -90,7 +94,7 @@ def articulation_power_loss(chain_speed: ArrayLike, pitch: ArrayLike, pin_diamet
     t_out = check_nonnegative("tension_out", tension_out, "N")
     mu = float(check_nonnegative("friction", friction))
     per_wheel = 2.0 * math.pi / z * (t_in + t_out)
-    return mu * 0.5 * d * v / p * np.sum(per_wheel, axis=-1)
+    return mu * 0.5 * (d / p) * v * np.sum(per_wheel, axis=-1)
 
 
 def transmission_efficiency(power: ArrayLike, power_loss: ArrayLike) -> FloatOrArray:

@@ -614,6 +614,10 @@ def simulate(model: SimulationModel, duration: float, *, dt: float | None = None
     return res
 
 
+#: Most halvings :func:`step_for_accuracy` tries (a step 1/1024 of the first).
+MAX_HALVINGS = 10
+
+
 def step_for_accuracy(model: SimulationModel, duration: float, *, state: State | None = None,
                       tolerance: float = 0.01, start: float | None = None,
                       method: str = "implicit", max_halvings: int = 6) -> float:
@@ -638,7 +642,7 @@ def step_for_accuracy(model: SimulationModel, duration: float, *, state: State |
         First step of the ladder [s].
     method : {"explicit", "implicit"}
     max_halvings : int
-        Halvings tried before giving up.
+        Halvings tried before giving up, 0 to :data:`MAX_HALVINGS`.
 
     Returns
     -------
@@ -648,7 +652,7 @@ def step_for_accuracy(model: SimulationModel, duration: float, *, state: State |
     Raises
     ------
     InputError
-        ``tolerance`` not in (0, 1).
+        ``tolerance`` not in [1e-9, 1), ``max_halvings`` not in [0, MAX_HALVINGS].
     ConvergenceError
         No step of the ladder holds.
 
@@ -662,8 +666,12 @@ def step_for_accuracy(model: SimulationModel, duration: float, *, state: State |
     """
     from ..errors import InputError
 
-    if not 0.0 < tolerance < 1.0:
-        raise InputError(f"tolerance must be in (0, 1), got {tolerance!r}")
+    if not 1e-9 <= tolerance < 1.0:
+        raise InputError(f"tolerance must be in [1e-9, 1) (relative; below 1e-9 rounding decides), got {tolerance!r}",
+                         field="tolerance")
+    if isinstance(max_halvings, bool) or not isinstance(max_halvings, int) or not 0 <= max_halvings <= MAX_HALVINGS:
+        raise InputError(f"max_halvings must be a whole number in [0, {MAX_HALVINGS}] (each halving doubles the "
+                         f"work), got {max_halvings!r}", field="max_halvings")
     if state is None:
         state = assemble(model)
     if start is None:

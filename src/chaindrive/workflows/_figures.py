@@ -130,7 +130,7 @@ class Figures:
 
     def __call__(self, section: Section, make: Callable[[], MatplotlibFigure], caption: str, filename: str,
                  chart: Callable[[], dict[str, Any]] | None = None) -> None:
-        """Show a figure: with ``browser`` and a ``chart`` (plotly data, :mod:`.charts`), as that
+        """Show a figure: with ``browser`` and a ``chart`` (plotly data, :mod:`chaindrive.workflows.charts`), as that
         chart, drawn by the browser; otherwise ``make()`` drawn as PNG."""
         if not self.enabled:
             return

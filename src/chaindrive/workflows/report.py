@@ -158,7 +158,7 @@ def _save_png(fig: MatplotlibFigure, buf: io.BytesIO, dpi: int) -> None:
 @dataclasses.dataclass
 class Figure:
     """A figure: caption plus PNG bytes (and the file name it is saved under), or a chart
-    the browser draws (plotly data, :mod:`.charts`; then ``png`` is empty)."""
+    the browser draws (plotly data, :mod:`chaindrive.workflows.charts`; then ``png`` is empty)."""
 
     caption: str
     png: bytes

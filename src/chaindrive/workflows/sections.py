@@ -31,7 +31,7 @@ __all__ = ["report_sections", "build_sections", "generic_section", "section_func
 
 
 def _si(value: Any, unit: str, shown: str | None = None) -> list[Any]:
-    """``[value, unit]`` cells of an SI ``value`` in its display unit (:mod:`.display`)."""
+    """``[value, unit]`` cells of an SI ``value`` in its display unit (:mod:`chaindrive.display`)."""
     v, u = convert(None if value is None else float(value), unit, shown)
     return [v, u]
 
@@ -732,7 +732,7 @@ def build_sections(analysis: DriveAnalysis, *, figures: bool = True,
                    parallel: bool = False, browser: bool = False) -> tuple[list[Section], dict[str, float]]:
     """The report sections of ``analysis`` (figures drawn when ``figures``), and their times [s].
 
-    With ``browser``, a figure that has a chart (:mod:`.charts`) is that chart, drawn by the
+    With ``browser``, a figure that has a chart (:mod:`chaindrive.workflows.charts`) is that chart, drawn by the
     browser from its data; the others are PNG. With ``parallel`` (and two processors and
     ``fork``, PNG figures only), a forked helper process draws part of the figures
     (:mod:`chaindrive.workflows._figures`); the sections are the same.
