@@ -17,6 +17,8 @@ WHOLE = {
     "test_analyze.py", "test_report_charts.py", "test_proposal_roundtrip.py", "test_run_folders.py",
     "test_study_run.py", "test_geometry_solid.py", "test_simulation_cli.py", "test_doors_robust.py",
     "test_report_figures.py", "test_geometry_export.py",
+    # the web server's pages and API through its test client, request to rendered answer
+    "test_web.py", "test_web_limits.py", "test_web_wheels.py", "test_web_conveyor.py", "test_web_load.py",
 }
 
 

@@ -4,6 +4,7 @@ Screenshot: tests/artifacts/web/view3d.png."""
 
 from __future__ import annotations
 
+import importlib.util
 import os
 import shutil
 from pathlib import Path
@@ -19,7 +20,8 @@ CHROMIUM = next((p for p in (os.environ.get("CHROMIUM"), shutil.which("chromium"
 if CHROMIUM is None:
     pytest.skip("no chromium found (apt-get install chromium)", allow_module_level=True)
 playwright = pytest.importorskip("playwright.sync_api")
-pytest.importorskip("build123d")
+if importlib.util.find_spec("build123d") is None:  # not imported here: 3 s per test process
+    pytest.skip("could not find 'build123d'", allow_module_level=True)
 pytest.importorskip("fastapi")
 
 # software WebGL (SwiftShader) for plotly's mesh3d in a headless browser without GPU
