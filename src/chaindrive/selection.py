@@ -12,7 +12,7 @@ from __future__ import annotations
 import math
 import warnings
 from dataclasses import dataclass
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING, Any, Protocol, TypeVar
 
 from ._finite import finite_guard
 from ._results import Result, quantity
@@ -123,6 +123,38 @@ class Candidate(Result):
 def _series(chain: Chain) -> str:
     """Proportion series: ``"B"`` (ISO B) or ``"A"`` (ISO A/C = ANSI numbers)."""
     return "B" if chain.family == "iso606" and "B" in chain.name else "A"
+
+
+class _SizedRow(Protocol):
+    """What :func:`_smallest_per_series` reads of a row (a :class:`Candidate`, a design candidate)."""
+
+    @property
+    def chain(self) -> str: ...
+    @property
+    def strands(self) -> int: ...
+    @property
+    def lubrication(self) -> str: ...
+    @property
+    def pitch(self) -> float: ...
+
+
+_Row = TypeVar("_Row", bound=_SizedRow)
+
+
+def _smallest_per_series(rows: list[_Row]) -> list[_Row]:
+    """Of ``rows`` (sorted outside the galling region first, then by pitch), per proportion
+    series and strand count: the smallest adequate pitch outside the galling region, or, when
+    every adequate chain of the group galls, the smallest (shared by :func:`select_chains` and
+    :func:`chaindrive.design.design_drive`)."""
+    from .chains import get
+
+    def key(c: _Row) -> tuple[str, int]:
+        return _series(get(c.chain)), c.strands
+
+    smallest: dict[tuple[str, int], tuple[bool, float]] = {}
+    for c in rows:
+        smallest.setdefault(key(c), (c.lubrication == "C'", c.pitch))
+    return [c for c in rows if smallest[key(c)] == (c.lubrication == "C'", c.pitch)]
 
 
 @finite_guard
@@ -309,17 +341,7 @@ def select(power: float, speed: float, ratio: float, *, service_factor: float = 
     rows = sorted(found.values(), key=lambda c: (c.lubrication == "C'", c.strands, c.pitch,
                                                  -(c.static_safety or 0.0), c.chain))
     if not all_sizes:
-        from .chains import get
-
-        def key(c: Candidate) -> tuple[str, int]:
-            return _series(get(c.chain)), c.strands
-
-        # per series and strand count: the smallest adequate pitch outside the galling
-        # region (rows are sorted so), or, when every adequate chain galls, the smallest
-        smallest: dict[tuple[str, int], tuple[bool, float]] = {}
-        for c in rows:
-            smallest.setdefault(key(c), (c.lubrication == "C'", c.pitch))
-        rows = [c for c in rows if smallest[key(c)] == (c.lubrication == "C'", c.pitch)]
+        rows = _smallest_per_series(rows)
     return rows[:limit] if limit else rows
 
 

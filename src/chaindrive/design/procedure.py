@@ -213,10 +213,6 @@ def _outside_diameter(pitch: float, teeth: int) -> float:
     return pitch * (0.6 + 1.0 / math.tan(math.pi / teeth))
 
 
-def _series(chain: Chain) -> str:
-    return "B" if chain.family == "iso606" and "B" in chain.name else "A"
-
-
 @memo(maxsize=1024, key=lambda chain, duty, given: (chain.pitch, duty.character, duty.speed_ratio, duty.speed,
                                                      given))
 def _teeth_for(chain: Chain, duty: Duty, given: int | None) -> tuple[int, str]:
@@ -588,6 +584,8 @@ def _lay_out(rated: list[_Rated | _Pending], duty: Duty, factors: tuple[Factor, 
     if all_sizes:
         return [c for r in rated if isinstance(r, _Rated)
                 and (c := _laid_out(r, duty, factors, ks, required, dropped)) is not None]
+    from ..selection import _series
+
     groups: dict[tuple[str, int], list[_Rated | _Pending]] = {}
     for r in rated:
         groups.setdefault((_series(r.chain), r.chain.strands), []).append(r)
@@ -721,15 +719,9 @@ def design_drive(request: DesignRequest | Duty, **options: Any) -> DesignResult:
     rows = sorted(found, key=lambda c: (c.lubrication == "C'", c.strands, c.pitch, -(c.static_safety or 0.0),
                                         c.chain))
     if not all_sizes:
-        from ..chains import get
+        from ..selection import _smallest_per_series
 
-        def key(c: DesignCandidate) -> tuple[str, int]:
-            return _series(get(c.chain)), c.strands
-
-        smallest: dict[tuple[str, int], tuple[bool, float]] = {}
-        for c in rows:
-            smallest.setdefault(key(c), (c.lubrication == "C'", c.pitch))
-        rows = [c for c in rows if smallest[key(c)] == (c.lubrication == "C'", c.pitch)]
+        rows = _smallest_per_series(rows)
     # the recommended drive passes every check (rated power, galling, wrap, static safety computed
     # and met): the first such row, moved to the front; none (in practice: every chain that carries
     # the duty runs in the galling region, type C'): no drive the procedure could defend
