@@ -11,11 +11,12 @@ from numpy.typing import ArrayLike
 
 from ..._finite import finite_guard
 from ..._registry import Registry
-from ..._results import Result, quantity
+from ..._results import quantity
 from ..._typing import FloatOrArray
 from ..._validation import as_float_array, check_nonnegative, check_positive, check_teeth
 from ...errors import InfeasibleError, InputError
 from ...loads import mean_chain_speed
+from ..histories import PeriodMotion
 from .cam import cam_force, cam_pushing_off_force, cam_stiffness, guide_reaction
 from .laws import (
     GUIDES,
@@ -46,8 +47,9 @@ SUMMARY_KEYS = (
 
 
 @dataclass(frozen=True)
-class CrawlerKinematics(Result):
-    """Kinematics (and optionally the cam force) of the crawler drive over ``psi``.
+class CrawlerKinematics(PeriodMotion):
+    """Kinematics (and optionally the cam force) of the crawler drive over ``psi`` (the fields
+    of :class:`~chaindrive.kinematics.histories.PeriodMotion` first).
 
     Attributes
     ----------
@@ -87,18 +89,10 @@ class CrawlerKinematics(Result):
 
     psi: np.ndarray = quantity("rad")
     displacement: np.ndarray = quantity("m")
-    velocity: np.ndarray = quantity("m/s")
-    acceleration: np.ndarray = quantity("m/s^2")
     transverse_position: np.ndarray = quantity("m")
     link_angle: np.ndarray | None = quantity("rad")
     force: np.ndarray | None = quantity("N")
-    summary: dict
     guide: str
-    pitch: float = quantity("m")
-    radius: float = quantity("m")
-    teeth: int = quantity("1")
-    angular_velocity: float = quantity("rad/s")
-    period: float = quantity("rad")
     stiffness: float | None = quantity("N", default=None)
     sprocket_distance: float | None = quantity("m", default=None)
     cam_distance: float | None = quantity("m", default=None)
