@@ -185,18 +185,14 @@ class EntryKinematics(PeriodMotion):
         Entry type and model.
     chain_type : str
         ``"link"`` or ``"roller"``.
-    pitch, bar_diameter, radius : float
-        ``t`` (``p``), ``d`` (0 for a roller chain), ``R`` [m].
-    teeth : int
-        ``z``.
-    angular_velocity : float
-        ``ω`` [rad/s].
+    pitch, radius, teeth, angular_velocity, period
+        ``t`` (``p``), ``R`` [m], ``z``, ``ω`` [rad/s], ``2π/z`` [rad] (:class:`PeriodMotion`).
+    bar_diameter : float
+        ``d`` [m] (0 for a roller chain).
     delta1, delta2 : float
         Central angles [rad].
     guide_height, guide_end_distance : float or None
         ``H``, ``l`` [m].
-    period : float
-        ``2π/z`` [rad].
     seating_angles : ndarray
         Wheel angles of the seatings inside ``[0, 2π/z)`` (exact model, and tangential
         paper model ``φ_g1, φ_g2``) [rad].

@@ -67,22 +67,15 @@ class CrawlerKinematics(PeriodMotion):
         (``u_П = v_mean t``), minus its mean over a period (the mean is the transmitted
         load, not a kinematic quantity); ``None`` without ``stiffness``.
     summary : dict
-        ``v_mean``, ``v_min``, ``v_max`` [m/s], ``nonuniformity`` = (v_max - v_min)/v_mean
-        [-], ``a_min``, ``a_max`` [m/s²], ``sign_change_at_period_end`` (bool),
-        ``transverse_throw`` [m], ``a_end_left``, ``a_end_right``, ``a_jump_at_period_end``
-        [m/s²], ``psi_v_min`` [rad], ``peak_deviation`` = max|v - v_mean| [m/s]; with stiffness ``cam_stiffness`` [N/m],
-        ``force_min``, ``force_max``, ``force_range`` [N]. Exact over a whole period
+        The keys of :attr:`PeriodMotion.summary <chaindrive.kinematics.histories.PeriodMotion>`,
+        plus ``a_end_left``, ``a_end_right``, ``a_jump_at_period_end`` [m/s²], ``psi_v_min``
+        [rad], ``peak_deviation`` = max|v - v_mean| [m/s]; with stiffness ``cam_stiffness``
+        [N/m], ``force_min``, ``force_max``, ``force_range`` [N]. Exact over a whole period
         (the minimum of the guided speed is found by root finding), not on ``psi``.
     guide : str
         ``"none"`` or ``"tangent"``.
-    pitch, radius : float
-        ``t``, ``R`` [m].
-    teeth : int
-        ``z``.
-    angular_velocity : float
-        ``ω`` [rad/s].
-    period : float
-        ``2π/z`` [rad].
+    pitch, radius, teeth, angular_velocity, period
+        ``t``, ``R`` [m], ``z``, ``ω`` [rad/s], ``2π/z`` [rad] (:class:`PeriodMotion`).
     stiffness, sprocket_distance, cam_distance : float or None
         ``E_П`` [N], ``A`` [m], ``l`` [m].
     """
