@@ -30,6 +30,7 @@ __all__ = [
     "ChainRating",
     "chain_rating",
     "Candidate",
+    "ChainChoice",
     "select",
 ]
 # the rating's names, re-exported for existing callers (one list: chaindrive.rating.ansi's)
@@ -48,8 +49,10 @@ def _outside_diameter(pitch: float, teeth: int) -> float:
 
 
 @dataclass(frozen=True)
-class Candidate(Result):
-    """One chain that carries the load (a row of :func:`select`).
+class ChainChoice(Result):
+    """A catalogue chain that carries a duty, with the duty and the chain's rated power: what
+    a row of :func:`select` (:class:`Candidate`) and of :func:`chaindrive.design.design_drive`
+    (:class:`~chaindrive.design.DesignCandidate`) have in common.
 
     Attributes
     ----------
@@ -62,20 +65,43 @@ class Candidate(Result):
     pitch : float
         [m].
     strands : int
-    teeth_driving, teeth_driven : int
     speed : float
         Small (driving) sprocket speed [rad/s].
     power : float
         Transmitted power [W].
     service_factor : float
-    chain_speed : float
-        [m/s].
-    rated_power : float
-        ANSI/ACA rating of the chain (all strands, galling included) [W].
     design_power : float
         Power times service factor [W].
+    rated_power : float
+        Rating of the chain (all strands) [W].
     power_margin : float
-        ``rated_power / design_power`` [-] (>= 1).
+        ``rated_power / design_power`` [-] (>= 1 for a chain that carries the duty).
+    chain_speed : float
+        [m/s].
+    """
+
+    chain: str
+    names: tuple[str, ...]
+    family: str
+    pitch: float = quantity("m", display="mm")
+    strands: int = quantity("1")
+    speed: float = quantity("rad/s", display="rpm")
+    power: float = quantity("W")
+    service_factor: float = quantity("1")
+    design_power: float = quantity("W")
+    rated_power: float = quantity("W")
+    power_margin: float = quantity("1")
+    chain_speed: float = quantity("m/s")
+
+
+@dataclass(frozen=True)
+class Candidate(ChainChoice):
+    """One chain that carries the load (a row of :func:`select`): the fields of
+    :class:`ChainChoice` (``rated_power``: the ANSI/ACA rating, galling included) and these.
+
+    Attributes
+    ----------
+    teeth_driving, teeth_driven : int
     governing_limit : str
         ``"link_plate"``, ``"roller_bushing"`` or ``"galling"``.
     working_tension : float
@@ -95,20 +121,8 @@ class Candidate(Result):
     notes : tuple of str
     """
 
-    chain: str
-    names: tuple[str, ...]
-    family: str
-    pitch: float = quantity("m")
-    strands: int = quantity("1")
     teeth_driving: int = quantity("1")
     teeth_driven: int = quantity("1")
-    speed: float = quantity("rad/s")
-    power: float = quantity("W")
-    service_factor: float = quantity("1")
-    chain_speed: float = quantity("m/s")
-    rated_power: float = quantity("W")
-    design_power: float = quantity("W")
-    power_margin: float = quantity("1")
     governing_limit: str
     working_tension: float = quantity("N")
     static_safety: float | None = quantity("1")

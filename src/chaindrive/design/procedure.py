@@ -44,6 +44,7 @@ from ..errors import (
     ValidityRangeWarning,
 )
 from ..loads import mean_chain_speed
+from ..selection import ChainChoice
 from ..units import angular_velocity_to_rpm
 from .duty import Duty, Factor, design_power, duty_factors
 from .policy import DEFAULT_CENTRE_PITCHES, default_centre_distance
@@ -59,27 +60,17 @@ __all__ = ["DesignCandidate", "DesignResult", "NearMiss", "design_drive", "proje
 
 
 @dataclass(frozen=True)
-class DesignCandidate(Result):
-    """One chain that carries the duty, laid out and analysed (a row of :func:`design_drive`)."""
+class DesignCandidate(ChainChoice):
+    """One chain that carries the duty, laid out and analysed (a row of :func:`design_drive`):
+    the fields of :class:`~chaindrive.selection.ChainChoice` and the layout, the checks and the
+    advice."""
 
-    chain: str
-    names: tuple[str, ...]
-    family: str
     method: str
     limited_by: str
-    pitch: float = quantity("m", display="mm")
-    strands: int = quantity("1")
     driving_teeth: int = quantity("1")
     driven_teeth: int = quantity("1")
     links: int = quantity("1")
     centre_distance: float = quantity("m", display="mm")
-    speed: float = quantity("rad/s", display="rpm")
-    power: float = quantity("W")
-    service_factor: float = quantity("1")
-    design_power: float = quantity("W")
-    rated_power: float = quantity("W")
-    power_margin: float = quantity("1")
-    chain_speed: float = quantity("m/s")
     lubrication: str = ""
     lubrication_method: str = ""
     static_safety: float | None = quantity("1", default=None)
