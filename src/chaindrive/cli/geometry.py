@@ -21,13 +21,15 @@ from ..display import mm
 from ..errors import InputError
 from .app import app, echo_json, print_rows, quantity, unit_help
 
-# Path options as module-level singletons (ruff B008)
+# Help of the file options (the wheel-part commands build theirs in _part_parameters); the
+# track wheel's options as module-level singletons (ruff B008)
 _SPROCKET_DXF = "Write the workshop drawing to this DXF file (mm): front view with measuring pins, section A-A with the tooth chamfer, hub, bore H7 and DIN 6885-1 keyway, ISO 606:2015 dimensions, data table, title block. Needs the tooth width (a catalogue chain or --inner-width)."
 _SPROCKET_STEP = "Write the 3-D solid to this STEP file (mm; build123d, extra 'cad3d'): ISO 606 teeth with the tooth side chamfer rx, ba (5.6.2), hub, bore and DIN 6885-1 keyway."
 _POCKET_DXF = "Write the workshop drawing to this DXF file (mm): front view, section A-A with pockets and the groove for the vertical links, hub, bore H7 and DIN 6885-1 keyway, data table, title block."
 _POCKET_STEP = "Write the 3-D solid to this STEP file (mm; build123d, extra 'cad3d'): pockets for the horizontal links, groove for the vertical links, hub, bore, DIN 6885-1 keyway."
 _SVG_HELP = "Write the outline to this SVG file (viewBox in mm)."
-_FORCE = typer.Option(False, "--force", help="Overwrite existing output files (default: refuse).")
+_FORCE_HELP = "Overwrite existing output files (default: refuse)."
+_FORCE = typer.Option(False, "--force", help=_FORCE_HELP)
 _TRACK_DXF = typer.Option(None, "--dxf", help="Write the outline to this DXF file (mm; layers OUTLINE, PITCH_CIRCLE, CENTRES, ROOT, TIP).")
 _TRACK_SVG = typer.Option(None, "--svg", help=_SVG_HELP)
 
@@ -70,7 +72,7 @@ def _part_parameters(dxf_help: str, step_help: str) -> list[inspect.Parameter]:
         opt("hub_diameter", str | None, None, "--hub-diameter", help=unit_help("Hub diameter; at most ISO 606:2015 5.6.2 dg (sprocket) or the groove bottom (pocket wheel); default 1.8 x bore rounded up to 5 mm.", "m", "100 mm")),
         opt("hub_length", str | None, None, "--hub-length", help=unit_help("Hub projection beyond the plate on one side ('0 mm' for a plate wheel); default 1.2 x bore overall, rounded up to 5 mm.", "m", "50 mm")),
         opt("material", str | None, None, "--material", help="Material and heat-treatment note for the title block, e.g. 'C45, teeth induction hardened 45...55 HRC'."),
-        opt("force", bool, False, "--force", help="Overwrite existing output files (default: refuse)."),
+        opt("force", bool, False, "--force", help=_FORCE_HELP),
         opt("as_json", bool, False, "--json", help="Print every computed dimension as JSON in SI units (m, rad)."),
     ]
 
