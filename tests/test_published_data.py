@@ -132,3 +132,36 @@ def test_spicer_cadence_series_against_the_model():
     assert gap[np.argmax(tension)] == pytest.approx(0.0057, abs=5e-4)
     assert np.all(np.diff(gap[np.argsort(-tension)]) > 0)  # the gap grows as the tension falls
     assert gap.max() == pytest.approx(0.0847, abs=5e-4)
+
+
+def test_spicer_sprocket_effect():
+    # Spicer: 52-11 loses 2-5 points more than 52-21. The model's friction gives 1.05 points, below
+    # the measured range by a factor 2-5 (while Friction Facts' 39-11 against 53-15 agrees with it,
+    # test_ring_size_difference): the two sources disagree; the model follows the later one.
+    (row,) = _read("spicer2000_sprocket_effect.csv")
+    front, small, large = int(row["chainring"]), int(row["small_sprocket"]), int(row["large_sprocket"])
+    diff = 100 * (_bicycle(200.0, 80.0, front, large)[2] - _bicycle(200.0, 80.0, front, small)[2])
+    assert diff == pytest.approx(1.052, abs=0.005)
+    assert diff < float(row["loss_difference_min_percent"])
+
+
+# --------------------------------------------------------------------------- Wilson, Bicycling Science
+def test_wilson_derailleur_table():
+    rows = _read("wilson2004_derailleur_efficiency.csv")
+    table = {(float(r["power_W"]), int(r["cog_teeth"])): float(r["efficiency_percent"]) / 100 for r in rows}
+    cogs = sorted({cog for _p, cog in table})
+    powers = sorted({p for p, _cog in table})
+    # the measured loss fraction falls with the power for every cog (a load-independent loss: pulleys,
+    # bearings, the slack side's tension); the model has none, its efficiency does not depend on power
+    for cog in cogs:
+        series = [table[(p, cog)] for p in powers]
+        assert np.all(np.diff(series) > 0), cog
+    # at the highest power (400 W) the model is within the 0.5 point aim for every cog, whatever the
+    # (unstated) chainring of a road bicycle, 39 to 53 teeth
+    for front in (39, 42, 46, 50, 52, 53):
+        for cog in cogs:
+            eta = _bicycle(400.0, 80.0, front, cog)[2]
+            assert abs(eta - table[(400.0, cog)]) < 0.005, (front, cog)
+    # at 50 W it is 2-6 points above: the measured losses there are not articulation friction
+    gaps = [_bicycle(50.0, 80.0, 52, cog)[2] - table[(50.0, cog)] for cog in cogs]
+    assert 0.02 < min(gaps) and max(gaps) < 0.06
