@@ -39,7 +39,7 @@ from .design import (
 from .display import fmt, show
 from .wheels import MAX_EXTRA_WHEELS, extra_rows
 
-__all__ = ["router", "studio_payload", "charts_payload", "state_query"]
+__all__ = ["router", "studio_payload", "studio_json", "charts_payload", "charts_json", "state_query"]
 
 DOWNLOADS = {
     "project.toml": "Project file (TOML): opens with chaindrive layout / analyze",
@@ -196,6 +196,33 @@ def studio_payload(state: dict[str, str]) -> dict[str, Any]:
     return out
 
 
+def _json_default(value: Any) -> Any:
+    """numpy scalars and arrays as JSON values (what FastAPI's encoder did for the routes)."""
+    out = jsonable(value)
+    if out is value:
+        raise TypeError(f"{type(value).__name__} is not JSON serialisable")
+    return out
+
+
+def json_bytes(payload: dict[str, Any]) -> bytes:
+    """A payload as the JSON body of an answer (compact UTF-8, no NaN: the same text FastAPI's
+    ``JSONResponse`` writes), built in the worker that computed it: the server's event loop
+    only passes the bytes on."""
+    return json.dumps(payload, ensure_ascii=False, allow_nan=False, separators=(",", ":"),
+                      default=_json_default).encode("utf-8")
+
+
+def studio_json(state: dict[str, str]) -> bytes:
+    """:func:`studio_payload` as the JSON body of ``GET /api/design``.
+
+    Examples
+    --------
+    >>> json.loads(studio_json(normalise_state({})))["errors"]
+    {}
+    """
+    return json_bytes(studio_payload(state))
+
+
 def _conveyor_rows(analysis: Any, units: str) -> list[list[str]]:
     """Rows of the conveyor part's chain pull (a project opened with a [conveyor] table)."""
     pull = None if analysis.analysis is None else analysis.analysis.results.get("conveyor")
@@ -226,6 +253,11 @@ def charts_payload(state: dict[str, str]) -> dict[str, Any]:
     return jsonable({"errors": errors, "rating": rating_chart(design, units=state["units"]),
                      "campbell": campbell_chart(design.drive),
                      "resonance_map": resonance_map_chart(design.drive)})
+
+
+def charts_json(state: dict[str, str]) -> bytes:
+    """:func:`charts_payload` as the JSON body of ``GET /api/design/charts``."""
+    return json_bytes(charts_payload(state))
 
 
 def _design_or_error(state: dict[str, str]):
@@ -311,11 +343,11 @@ def router(ctx: Any) -> APIRouter:
 
     @r.get("/api/design")
     async def api_design(request: Request):
-        return await ctx.gate.run(studio_payload, _state(request))
+        return Response(await ctx.gate.run(studio_json, _state(request)), media_type="application/json")
 
     @r.get("/api/design/charts")
     async def api_charts(request: Request):
-        return await ctx.gate.run(charts_payload, _state(request))
+        return Response(await ctx.gate.run(charts_json, _state(request)), media_type="application/json")
 
     @r.get("/download/{name}")
     async def download(request: Request, name: str):

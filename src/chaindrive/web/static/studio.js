@@ -6,6 +6,14 @@
   const $ = (id) => document.getElementById(id);
   let liveBusy = false, liveAgain = false, liveQuery = null, editAt = null, chartsCtl = null, chartsTimer = null;
   let mapBase = null, sliding = false;
+  // what each part of the page shows now (its data as JSON): an edit redraws only the parts it changed
+  const shown = {};
+  function changed(part, value) {
+    const key = JSON.stringify(value === undefined ? null : value);
+    if (shown[part] === key) return false;
+    shown[part] = key;
+    return true;
+  }
   const plotConfig = { displaylogo: false, responsive: true, modeBarButtonsToRemove: ["sendDataToCloud"] };
 
   function params() {
@@ -16,24 +24,45 @@
     return p;
   }
   function text(el, value) { el.textContent = value == null ? "" : String(value); }
-  function cell(tr, value, cls) {
-    const td = document.createElement("td");
-    text(td, value);
-    if (cls) td.className = cls;
-    tr.appendChild(td);
-    return td;
+  // the rows of a table body as data: each row {cls, cells: [[text, class, tag], ...], title, chain, hint};
+  // rows and cells already there are reused and only texts and classes that differ are written
+  // (fewer new nodes: less style and layout work for the browser after each edit)
+  function fillRows(body, rows) {
+    while (body.rows.length > rows.length) body.deleteRow(-1);
+    rows.forEach((row, i) => {
+      let tr = body.rows[i];
+      if (!tr) { tr = document.createElement("tr"); body.appendChild(tr); }
+      if (tr.className !== (row.cls || "")) tr.className = row.cls || "";
+      if (row.title !== undefined && tr.title !== row.title) tr.title = row.title;
+      if (row.chain !== undefined) tr.dataset.chain = row.chain;
+      while (tr.cells.length > row.cells.length) tr.deleteCell(-1);
+      row.cells.forEach(([value, cls, tag], j) => {
+        let td = tr.cells[j];
+        const want = (tag || "td").toUpperCase();
+        if (!td || td.tagName !== want) {
+          const fresh = document.createElement(want);
+          if (td) tr.replaceChild(fresh, td); else tr.appendChild(fresh);
+          td = fresh;
+        }
+        const hint = j === row.hintAt ? row.hint : undefined;
+        const str = value == null ? "" : String(value);
+        if (hint) {
+          if (td.firstChild === null || td.firstChild.nodeType !== Node.TEXT_NODE || td.firstChild.data !== str
+              || td.childNodes.length !== 2 || td.lastChild.textContent !== hint) {
+            const s = document.createElement("div");
+            s.className = "hint";
+            text(s, hint);
+            td.replaceChildren(document.createTextNode(str), s);
+          }
+        } else if (td.childNodes.length > 1 || td.textContent !== str) {
+          td.textContent = str;
+        }
+        if (td.className !== (cls || "")) td.className = cls || "";
+      });
+    });
   }
   function kvTable(id, rows) {
-    const body = $(id).querySelector("tbody");
-    body.replaceChildren();
-    for (const [k, v] of rows) {
-      const tr = document.createElement("tr");
-      const th = document.createElement("th");
-      text(th, k);
-      tr.appendChild(th);
-      cell(tr, v);
-      body.appendChild(tr);
-    }
+    fillRows($(id).querySelector("tbody"), rows.map(([k, v]) => ({ cells: [[k, "", "th"], [v]] })));
   }
   function showErrors(errors) {
     for (const el of form.querySelectorAll(".msg")) el.textContent = "";
@@ -65,11 +94,10 @@
     showErrors(d.errors);
     const ok = !d.errors || Object.keys(d.errors).length === 0;
     markStale(!ok);
-    if (d.query !== undefined) history.replaceState(null, "", "/" + (d.query ? "?" + d.query : ""));
     const ks = d.service_factor_table;
-    if (ks) text($("ks-source"), "Service factor table: " + ks.driver + " × " + ks.character + " → K_s = " + ks.value + ". Source: " + ks.source);
+    if (ks && changed("ks", ks)) text($("ks-source"), "Service factor table: " + ks.driver + " × " + ks.character + " → K_s = " + ks.value + ". Source: " + ks.source);
     if (!d.duty) return;
-    kvTable("duty-out", [
+    if (changed("duty", d.duty)) kvTable("duty-out", [
       ["power P", d.duty.power.join(" ")],
       ["driving speed", d.duty.speed_rpm + " rpm"],
       ["ratio", d.duty.ratio],
@@ -77,23 +105,14 @@
       ["service factor K_s", d.duty.service_factor + (d.duty.service_factor_source === "given" ? " (given)" : " (table)")],
       ["design power K_s P", d.duty.design_power.join(" ")],
     ]);
-    const body = $("candidates").querySelector("tbody");
-    body.replaceChildren();
-    for (const c of d.candidates) {
-      const tr = document.createElement("tr");
-      tr.className = "candidate" + (c.chosen ? " chosen" : "");
-      tr.dataset.chain = c.chain;
-      tr.title = "choose " + c.chain;
-      cell(tr, c.chain + (c.chosen ? "  ✓" : ""));
-      cell(tr, c.pitch_text);
-      cell(tr, c.rated);
-      cell(tr, c.margin_text, c.margin >= 1 ? "pass" : "fail");
-      cell(tr, c.safety_text);
-      cell(tr, c.lubrication || "—");
-      tr.addEventListener("click", () => { $("chain").value = c.chain; schedule(); });
-      body.appendChild(tr);
+    if (changed("candidates", d.candidates)) {
+      fillRows($("candidates").querySelector("tbody"), d.candidates.map((c) => ({
+        cls: "candidate" + (c.chosen ? " chosen" : ""), chain: c.chain, title: "choose " + c.chain,
+        cells: [[c.chain + (c.chosen ? "  ✓" : "")], [c.pitch_text], [c.rated],
+                [c.margin_text, c.margin >= 1 ? "pass" : "fail"], [c.safety_text], [c.lubrication || "—"]],
+      })));
     }
-    text($("candidate-note"), "Chosen: " + d.chain.name + " (" + d.chain.family + "), pitch " + d.chain.pitch +
+    if (changed("note", [d.chain, d.candidate_note, d.advice])) text($("candidate-note"), "Chosen: " + d.chain.name + " (" + d.chain.family + "), pitch " + d.chain.pitch +
       ", breaking force " + d.chain.breaking_force + ". " + (d.candidate_note || "") +
       (d.advice || []).map((a) => " Advice, " + a.name + ": " + a.note + " [" + a.source + "].").join(""));
     const L = d.layout;
@@ -105,55 +124,37 @@
     if (L.centre_distance_exact) rows.push(["exact centre distance for " + L.links + " links", L.centre_distance_exact]);
     rows.push(["chain speed", L.chain_speed]);
     if (d.life_years) rows.push(["chain life at " + d.duty.hours_per_day + " h/day", d.life_years + " years"]);
-    kvTable("layout-out", rows);
-    $("drawing").innerHTML = d.drawing || "";
-    const lb = $("loads").querySelector("tbody");
-    lb.replaceChildren();
-    if (d.loads) {
-      text($("loads-caption"), d.loads.caption);
-      for (const [name, value, unit, basis] of d.loads.rows) {
-        const tr = document.createElement("tr");
-        cell(tr, name);
-        cell(tr, value + " " + unit);
-        cell(tr, basis, "source");
-        lb.appendChild(tr);
-      }
+    if (changed("layout", rows)) kvTable("layout-out", rows);
+    if (changed("drawing", d.drawing)) $("drawing").innerHTML = d.drawing || "";
+    if (changed("loads", d.loads)) {
+      if (d.loads) text($("loads-caption"), d.loads.caption);
+      fillRows($("loads").querySelector("tbody"), d.loads ? d.loads.rows.map(([name, value, unit, basis]) => ({
+        cells: [[name], [value + " " + unit], [basis, "source"]] })) : []);
+      $("loads").hidden = !d.loads;
     }
-    $("loads").hidden = !d.loads;
-    const fb = $("fretting").querySelector("tbody");
-    fb.replaceChildren();
-    if (d.fretting) {
-      text($("fretting-caption"), d.fretting.caption);
-      for (const [name, value, unit] of d.fretting.rows) {
-        const tr = document.createElement("tr");
-        cell(tr, name);
-        cell(tr, value + " " + unit);
-        fb.appendChild(tr);
-      }
+    if (changed("fretting", d.fretting)) {
+      if (d.fretting) text($("fretting-caption"), d.fretting.caption);
+      fillRows($("fretting").querySelector("tbody"), d.fretting ? d.fretting.rows.map(([name, value, unit]) => ({
+        cells: [[name], [value + " " + unit]] })) : []);
+      $("fretting").hidden = !d.fretting;
     }
-    $("fretting").hidden = !d.fretting;
-    const cb = $("checks").querySelector("tbody");
-    cb.replaceChildren();
-    for (const c of d.checks || []) {
-      const tr = document.createElement("tr");
-      tr.className = "check " + (c.passed === true ? "pass" : c.passed === false ? "fail" : "info");
-      cell(tr, c.passed === true ? "✔ pass" : c.passed === false ? "✘ FAIL" : "ℹ info", "verdict-cell");
-      const name = cell(tr, c.name);
-      if (c.note) { const s = document.createElement("div"); s.className = "hint"; text(s, c.note); name.appendChild(s); }
-      cell(tr, c.value_text + " " + c.unit_text);
-      cell(tr, c.limit_text);
-      cell(tr, c.margin_text);
-      cell(tr, c.source, "source");
-      cb.appendChild(tr);
+    if (changed("checks", d.checks)) {
+      fillRows($("checks").querySelector("tbody"), (d.checks || []).map((c) => ({
+        cls: "check " + (c.passed === true ? "pass" : c.passed === false ? "fail" : "info"), hintAt: 1, hint: c.note,
+        cells: [[c.passed === true ? "✔ pass" : c.passed === false ? "✘ FAIL" : "ℹ info", "verdict-cell"], [c.name],
+                [c.value_text + " " + c.unit_text], [c.limit_text], [c.margin_text], [c.source, "source"]],
+      })));
     }
     const ov = $("overall");
     if (d.checks) {
       text(ov, d.verdict || (d.passed ? "passes" : "a check fails"));
       ov.className = "verdict " + (d.passed ? "pass" : "fail");
     }
-    const wl = $("warnings");
-    wl.replaceChildren();
-    for (const w of d.warnings || []) { const li = document.createElement("li"); text(li, w); wl.appendChild(li); }
+    if (changed("warnings", d.warnings)) {
+      const wl = $("warnings");
+      wl.replaceChildren();
+      for (const w of d.warnings || []) { const li = document.createElement("li"); text(li, w); wl.appendChild(li); }
+    }
     for (const a of document.querySelectorAll("#downloads a")) {
       if (d.downloads && d.downloads[a.dataset.name]) a.href = d.downloads[a.dataset.name];
     }
@@ -183,10 +184,13 @@
       if (!r.ok) { showErrors(d.field ? { [d.field]: d.error } : {}); markStale(true); text($("status"), d.error || ("error " + r.status)); return; }
       render(d);
       document.body.dataset.ready = "live";
-      // once the new page is painted: the time from the edit (data-edit-ms) and the count of updates
+      // once the new page is painted: the time from the edit (data-edit-ms) and the count of updates;
+      // then the address bar (the link that reproduces the design; Chromium looks at the icon again
+      // after each history entry: work the answer on screen need not wait for)
       requestAnimationFrame(() => setTimeout(() => {
         if (since !== null) document.body.dataset.editMs = (performance.now() - since).toFixed(1);
         document.body.dataset.updates = String((parseInt(document.body.dataset.updates || "0", 10)) + 1);
+        if (d.query !== undefined) history.replaceState(null, "", "/" + (d.query ? "?" + d.query : ""));
       }, 0));
       if (!d.errors || Object.keys(d.errors).length === 0) scheduleCharts();
     } catch (e) {
@@ -202,9 +206,10 @@
   function plot(id, fig) {
     const el = $(id);
     if (!el) return;
-    if (!fig) { el.hidden = true; return; }
+    if (!fig) { el.hidden = true; delete shown["plot " + id]; return; }
     el.hidden = false;
-    if (window.Plotly) window.Plotly.react(el, fig.data, fig.layout, plotConfig);
+    // the same figure as on screen (e.g. the rating chart after a centre-distance edit): not drawn again
+    if (window.Plotly && changed("plot " + id, fig)) window.Plotly.react(el, fig.data, fig.layout, plotConfig);
   }
 
   async function charts() {
@@ -249,6 +254,7 @@
     text($("out-stiffness"), c.toPrecision(3) + " kN/m");
     const el = $("plot-map");
     if (window.Plotly && el && el.data) window.Plotly.restyle(el, { x: [[c]], y: [[m]] }, [2]);
+    delete shown["plot plot-map"];  // the map on screen is no longer the server's figure
     schedule();
   }
 
@@ -269,6 +275,10 @@
     });
   }
   form.addEventListener("submit", (e) => { e.preventDefault(); update(true); });
+  $("candidates").addEventListener("click", (e) => {  // a candidate's row chooses its chain
+    const tr = e.target.closest("tr.candidate");
+    if (tr) { $("chain").value = tr.dataset.chain; schedule(); }
+  });
   $("slider-mass").addEventListener("input", slide);
   $("slider-stiffness").addEventListener("input", slide);
   $("project-file").addEventListener("change", async () => {
