@@ -65,6 +65,22 @@ def web_server(create_app_arguments: str = "", *, env: dict[str, str] | None = N
             proc.kill()
 
 
+def chromium_or_skip() -> str:
+    """Debian's chromium for a browser test module (``$CHROMIUM``, ``chromium`` on the path or
+    /usr/bin/chromium): its path; without one the module is skipped, or fails under ``CI``."""
+    import shutil
+
+    import pytest
+
+    found = next((p for p in (os.environ.get("CHROMIUM"), shutil.which("chromium"), "/usr/bin/chromium")
+                  if p and Path(p).exists()), None)
+    if found is None:
+        if os.environ.get("CI"):
+            pytest.fail("CI: the browser tests need Debian's chromium (.ci/run installs it)", pytrace=False)
+        pytest.skip("no chromium found (apt-get install chromium); CI runs these tests", allow_module_level=True)
+    return str(found)
+
+
 def roller_drive(speed: float = 960 * math.pi / 30, **changes: Any) -> Any:
     """The industrial roller drive of the tests: 16B, 19/57 teeth, 15 kW, 1.05 m apart."""
     import dataclasses

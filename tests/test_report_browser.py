@@ -4,12 +4,11 @@ Screenshots go to tests/artifacts/report/."""
 
 from __future__ import annotations
 
-import os
-import shutil
 from pathlib import Path
 
 import pytest
 
+import _shared
 from chaindrive.drive.project import load_project
 from chaindrive.workflows.analyze import analyze
 
@@ -17,12 +16,7 @@ pytestmark = pytest.mark.browser
 
 EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
 ARTIFACTS = Path(__file__).parent / "artifacts" / "report"
-CHROMIUM = next((p for p in (os.environ.get("CHROMIUM"), shutil.which("chromium"), "/usr/bin/chromium")
-                 if p and Path(p).exists()), None)
-if CHROMIUM is None:
-    if os.environ.get("CI"):
-        pytest.fail("CI: the browser tests need Debian's chromium (.ci/run installs it)", pytrace=False)
-    pytest.skip("no chromium found (apt-get install chromium); CI runs these tests", allow_module_level=True)
+CHROMIUM = _shared.chromium_or_skip()
 playwright = pytest.importorskip("playwright.sync_api")
 
 ARGS = ["--no-sandbox", "--disable-gpu", "--disable-background-networking", "--disable-component-update",

@@ -10,23 +10,17 @@ from __future__ import annotations
 
 import io
 import json
-import os
 import re
-import shutil
 from pathlib import Path
 
 import pytest
 
+import _shared
+
 pytestmark = pytest.mark.browser
 
 ARTIFACTS = Path(__file__).parent / "artifacts" / "web"
-CHROMIUM = next((p for p in (os.environ.get("CHROMIUM"), shutil.which("chromium"), "/usr/bin/chromium")
-                 if p and Path(p).exists()), None)
-
-if CHROMIUM is None:
-    if os.environ.get("CI"):
-        pytest.fail("CI: the browser tests need Debian's chromium (.ci/run installs it)", pytrace=False)
-    pytest.skip("no chromium found (apt-get install chromium); CI runs these tests", allow_module_level=True)
+CHROMIUM = _shared.chromium_or_skip()
 playwright = pytest.importorskip("playwright.sync_api")
 expect = playwright.expect
 pytest.importorskip("fastapi")

@@ -27,12 +27,15 @@
   // the rows of a table body as data: each row {cls, cells: [[text, class, tag], ...], title, chain, hint};
   // rows and cells already there are reused and only texts and classes that differ are written
   // (fewer new nodes: less style and layout work for the browser after each edit)
+  function setClass(el, cls) {  // as a new element with that class (none: no class attribute)
+    if (cls) { if (el.className !== cls) el.className = cls; } else if (el.hasAttribute("class")) el.removeAttribute("class");
+  }
   function fillRows(body, rows) {
     while (body.rows.length > rows.length) body.deleteRow(-1);
     rows.forEach((row, i) => {
       let tr = body.rows[i];
       if (!tr) { tr = document.createElement("tr"); body.appendChild(tr); }
-      if (tr.className !== (row.cls || "")) tr.className = row.cls || "";
+      setClass(tr, row.cls);
       if (row.title !== undefined && tr.title !== row.title) tr.title = row.title;
       if (row.chain !== undefined) tr.dataset.chain = row.chain;
       while (tr.cells.length > row.cells.length) tr.deleteCell(-1);
@@ -57,7 +60,7 @@
         } else if (td.childNodes.length > 1 || td.textContent !== str) {
           td.textContent = str;
         }
-        if (td.className !== (cls || "")) td.className = cls || "";
+        setClass(td, cls);
       });
     });
   }
@@ -127,13 +130,13 @@
     if (changed("layout", rows)) kvTable("layout-out", rows);
     if (changed("drawing", d.drawing)) $("drawing").innerHTML = d.drawing || "";
     if (changed("loads", d.loads)) {
-      if (d.loads) text($("loads-caption"), d.loads.caption);
+      text($("loads-caption"), d.loads ? d.loads.caption : "");
       fillRows($("loads").querySelector("tbody"), d.loads ? d.loads.rows.map(([name, value, unit, basis]) => ({
         cells: [[name], [value + " " + unit], [basis, "source"]] })) : []);
       $("loads").hidden = !d.loads;
     }
     if (changed("fretting", d.fretting)) {
-      if (d.fretting) text($("fretting-caption"), d.fretting.caption);
+      text($("fretting-caption"), d.fretting ? d.fretting.caption : "");
       fillRows($("fretting").querySelector("tbody"), d.fretting ? d.fretting.rows.map(([name, value, unit]) => ({
         cells: [[name], [value + " " + unit]] })) : []);
       $("fretting").hidden = !d.fretting;
