@@ -38,9 +38,10 @@ def _reference(model, seconds, settle=0.5):
 @pytest.mark.slow
 def test_benchmark_drive_against_a_long_reference_run():
     # the drive of benchmarks/simulate.py (16B, 100 links, 2 x z = 17, 20 rad/s, 200 N m,
-    # gravity); reference: explicit at 3 µs, 0.5 s settling, 2 s measured. Against 8 s:
-    # mean -0.8 %, waveform peak -0.0 %, waveform RMS difference 2.5 % of the mean (the
-    # span vibration's wandering: the reference's own 0.2 s windows differ by 2-4 %)
+    # gravity); reference: explicit at 3 µs, 0.5 s settling, 2 s measured. Against four
+    # 8 s runs (benchmarks/_steady.py): mean -0.96 %, waveform peak -0.46 %, waveform RMS
+    # difference 2.4 % of the mean (the span vibration's wandering: single 8 s runs differ
+    # among themselves by up to 1.2 % in the mean, 1.5 % RMS)
     m = roller_example(links=100, teeth=17, angular_velocity=20.0, load_torque=200.0,
                        ramp_time=0.1)
     ref = _reference(m, 2.0)
