@@ -63,8 +63,12 @@ def test_fused_solves_equal_the_separate_ones_to_the_last_bit(n):
         cyclic_tridiagonal_substitute(e, idd, ff, dlast, bs[k], sep[k])
     idd4, ff4 = np.empty(n), np.empty(n)
     four = bs.copy()
-    dlast4 = _factor_solve4(d, e, idd4, ff4, four[0], four[1], four[2], four[3])
-    assert dlast4 == dlast
+    dlast4 = _factor_solve4(d, e, idd4, ff4, four[0], four[1], four[2], four[3], True)
+    two = bs.copy()
+    dlast2 = _factor_solve4(d, e, np.empty(n), np.empty(n), two[0], two[1], two[2], two[3],
+                            False)
+    assert dlast4 == dlast2 == dlast
+    assert np.array_equal(two[:2], sep[:2]) and np.array_equal(two[2:], bs[2:])
     # (entry n - 1 of the factors is not used)
     assert np.array_equal(idd4[:-1], idd[:-1]) and np.array_equal(ff4[:-1], ff[:-1])
     assert np.array_equal(four, sep)

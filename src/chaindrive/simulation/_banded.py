@@ -109,12 +109,12 @@ def _apply_inverse(gx, gy, ox, oy, wxx, wxy, wyy, ux, uy, of, idd, ff, dlast, la
 
 
 @njit(cache=True, fastmath=False)
-def _factor_solve4(d, e, idd, ff, b0, b1, b2, b3):
-    """:func:`cyclic_tridiagonal_factor` fused with the solution of four right-hand sides
-    (in place): the division recurrence of the factorisation and the four substitutions'
-    multiply–add recurrences run in one loop, so that they overlap (each the same
-    arithmetic as :func:`cyclic_tridiagonal_substitute`: the results are those of the
-    separate solves to the last bit; an unused right-hand side of zeros stays zeros)."""
+def _factor_solve4(d, e, idd, ff, b0, b1, b2, b3, wide):
+    """:func:`cyclic_tridiagonal_factor` fused with the solution of two right-hand sides
+    (``b0``, ``b1``), four if ``wide`` (in place): the division recurrence of the
+    factorisation and the substitutions' multiply–add recurrences run in one loop, so
+    that they overlap (each the same arithmetic as :func:`cyclic_tridiagonal_substitute`:
+    the results are those of the separate solves to the last bit)."""
     n = d.shape[0]
     dcur = d[0]
     ff[0] = e[n - 1]
@@ -137,20 +137,21 @@ def _factor_solve4(d, e, idd, ff, b0, b1, b2, b3):
         dlast -= fl * fl * ip
         q0 = p0 * ip
         q1 = p1 * ip
-        q2 = p2 * ip
-        q3 = p3 * ip
         bl0 -= fl * q0
         bl1 -= fl * q1
-        bl2 -= fl * q2
-        bl3 -= fl * q3
         p0 = b0[ll + 1] - el * q0
         p1 = b1[ll + 1] - el * q1
-        p2 = b2[ll + 1] - el * q2
-        p3 = b3[ll + 1] - el * q3
         b0[ll + 1] = p0
         b1[ll + 1] = p1
-        b2[ll + 1] = p2
-        b3[ll + 1] = p3
+        if wide:
+            q2 = p2 * ip
+            q3 = p3 * ip
+            bl2 -= fl * q2
+            bl3 -= fl * q3
+            p2 = b2[ll + 1] - el * q2
+            p3 = b3[ll + 1] - el * q3
+            b2[ll + 1] = p2
+            b3[ll + 1] = p3
     ip = 1.0 / dcur
     idd[n - 2] = ip
     fl = ff[n - 2] + e[n - 2]
@@ -162,28 +163,30 @@ def _factor_solve4(d, e, idd, ff, b0, b1, b2, b3):
     xl3 = (bl3 - fl * p3 * ip) / dlast
     b0[n - 1] = xl0
     b1[n - 1] = xl1
-    b2[n - 1] = xl2
-    b3[n - 1] = xl3
     n0 = (p0 - fl * xl0) * ip
     n1 = (p1 - fl * xl1) * ip
     n2 = (p2 - fl * xl2) * ip
     n3 = (p3 - fl * xl3) * ip
     b0[n - 2] = n0
     b1[n - 2] = n1
-    b2[n - 2] = n2
-    b3[n - 2] = n3
+    if wide:
+        b2[n - 1] = xl2
+        b3[n - 1] = xl3
+        b2[n - 2] = n2
+        b3[n - 2] = n3
     for ll in range(n - 3, -1, -1):
         el = e[ll]
         fl = ff[ll]
         ip = idd[ll]
         n0 = (b0[ll] - el * n0 - fl * xl0) * ip
         n1 = (b1[ll] - el * n1 - fl * xl1) * ip
-        n2 = (b2[ll] - el * n2 - fl * xl2) * ip
-        n3 = (b3[ll] - el * n3 - fl * xl3) * ip
         b0[ll] = n0
         b1[ll] = n1
-        b2[ll] = n2
-        b3[ll] = n3
+        if wide:
+            n2 = (b2[ll] - el * n2 - fl * xl2) * ip
+            n3 = (b3[ll] - el * n3 - fl * xl3) * ip
+            b2[ll] = n2
+            b3[ll] = n3
     return dlast
 
 

@@ -177,9 +177,10 @@ def _solve(n, nw, yx, yy, wxx, wxy, wyy, ux, uy, dg, of, dd, ff, lam, lamq, inv_
     fused = min(nq, 3)
     for q in range(fused):
         _link_rhs(bx[q], by[q], zx[q], zy[q], wxx, wxy, wyy, ux, uy, lamq[q])
-    for q in range(fused, 3):
-        lamq[q, :] = 0.0   # an unused right-hand side: zeros stay zeros
-    dlast = _factor_solve4(dg, of, dd, ff, lam, lamq[0], lamq[1], lamq[2])
+    if nq > 1:
+        for q in range(fused, 3):
+            lamq[q, :] = 0.0   # an unused right-hand side: zeros stay zeros
+    dlast = _factor_solve4(dg, of, dd, ff, lam, lamq[0], lamq[1], lamq[2], nq > 1)
     _link_back(dvx, dvy, wxx, wxy, wyy, ux, uy, lam)
     if nq > 0:
         for q in range(fused):
