@@ -62,6 +62,7 @@ def clear() -> None:
         cached = getattr(two_wheels, name, None)
         if cached is not None and hasattr(cached, "cache_clear"):
             cached.cache_clear()
+    two_wheels._GRIDS.__dict__.clear()  # the phase grids the root search evaluated last
     from ..loads.safety import required_static_safety_for
 
     required_static_safety_for.cache_clear()

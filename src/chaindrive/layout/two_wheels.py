@@ -16,6 +16,7 @@ from .._results import Result, quantity
 from .._typing import FloatOrArray
 from .._validation import as_float_array, check_positive, check_teeth
 from ..errors import ConvergenceError, InfeasibleError, InputError
+from ._bridges import bridge_perimeters, edge_sums
 from .wheels import _radius_and_offsets, pitch_radius
 
 
@@ -341,8 +342,33 @@ def _polygon_links(p, z1, z2, a, d, n):
     # period of each polygon: 2π/z (a bi-regular 2z-gon repeats every 2π/z too)
     ph1 = np.arange(n) * (2 * np.pi / z1) / n
     ph2 = np.arange(n) * (2 * np.pi / z2) / n
+    return ph1, ph2, _perimeters(p, z1, z2, a, d, ph1, ph2) / p
+
+
+def _perimeters(p, z1, z2, a, d, ph1, ph2):
+    # hull perimeters of every phase pair [m]: by the two bridges where the pitch circles are
+    # apart (chaindrive.layout._bridges), else (or where a bridge did not settle) by the integral
     v1, v2 = _phase_vertices(p, z1, ph1, d), _phase_vertices(p, z2, ph2, d)
-    return ph1, ph2, _hull_perimeters(v1, _shifted(v2, a), _first_terms(p, z1, ph1, d)) / p
+    r1, r2 = _radius(p, z1, d), _radius(p, z2, d)
+    v2a = _shifted(v2, a)
+    if a > (r1 + r2) * (1.0 + 1e-9):
+        out = bridge_perimeters(v1, v2a, _edge_sums(p, z1, ph1, d), _edge_sums(p, z2, ph2, d), r1, r2, a)
+        if not np.isnan(out).any():
+            return out
+    return _hull_perimeters(v1, v2a, _first_terms(p, z1, ph1, d))
+
+
+def _edge_sums(p, z, phases, d):
+    # edge_sums(_phase_vertices(p, z, phases, d)), cached with the vertices
+    key = ("sums", *_vertex_key(p, z, phases, d))
+    found = _VERTEX_CACHE.get(key)
+    if found is None:
+        found = edge_sums(_phase_vertices(p, z, phases, d))
+        found.flags.writeable = False
+        if len(_VERTEX_CACHE) > 256:
+            _VERTEX_CACHE.clear()
+        _VERTEX_CACHE[key] = found
+    return found
 
 
 def _first_terms(p, z, phases, d):
@@ -547,9 +573,7 @@ def _newton_fixed_slope(fun, target, a0, r1, r2, p, lo, hi):
 
 
 def _pair_links(p, z1, z2, a, d, f1, f2):
-    v1 = _phase_vertices(p, z1, (f1,), d)
-    v2 = _shifted(_phase_vertices(p, z2, (f2,), d), a)
-    return float(_hull_perimeters(v1, v2, _first_terms(p, z1, (f1,), d))[0, 0]) / p
+    return float(_perimeters(p, z1, z2, a, d, (f1,), (f2,))[0, 0]) / p
 
 
 #: The phase grids :func:`_extreme_phase_root` evaluated last (the loose root starts where the

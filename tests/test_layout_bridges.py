@@ -1,0 +1,60 @@
+"""The hull perimeter of two pitch polygons by their two bridges (chaindrive.layout._bridges)
+equals Cauchy's support-function integral and Qhull's hull (independent computations)."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from chaindrive.layout._bridges import bridge_perimeters, edge_sums
+from chaindrive.layout.two_wheels import _hull_perimeter, _hull_perimeters, _phase_vertices, _radius, _shifted
+
+
+def _pairs(p, z1, z2, a, d, n, shift=0.0):
+    ph1 = shift + np.arange(n) * (2 * np.pi / z1) / n
+    ph2 = np.arange(n) * (2 * np.pi / z2) / n
+    v1 = _phase_vertices(p, z1, ph1, d)
+    v2 = _shifted(_phase_vertices(p, z2, ph2, d), a)
+    return v1, v2, _radius(p, z1, d), _radius(p, z2, d)
+
+
+@settings(max_examples=80, deadline=None)
+@given(z1=st.integers(3, 80), z2=st.integers(3, 80), gap=st.floats(1.0001, 8.0), n=st.integers(1, 6),
+       shift=st.floats(0.0, 6.3), link_chain=st.booleans())
+def test_bridges_equal_the_support_function_integral(z1, z2, gap, n, shift, link_chain):
+    p, d = (0.064, 0.018) if link_chain else (0.0254, None)
+    if link_chain and min(z1, z2) < 4:
+        z1, z2 = max(z1, 4), max(z2, 4)
+    v1, v2, r1, r2 = _pairs(p, z1, z2, 0.0, d, n, shift)
+    a = (r1 + r2) * gap
+    v2 = _shifted(v2, a)
+    got = bridge_perimeters(v1, v2, edge_sums(v1), edge_sums(v2), r1, r2, a)
+    ref = _hull_perimeters(v1, v2)
+    assert not np.isnan(got).any()
+    np.testing.assert_allclose(got, ref, rtol=1e-13, atol=0)
+
+
+@pytest.mark.parametrize("z1,z2,a,d", [(19, 57, 1.05, None), (8, 8, 2.0, 0.018), (3, 40, 0.5, None)])
+def test_bridges_equal_qhull(z1, z2, a, d):
+    # provenance: Qhull (scipy.spatial.ConvexHull), an independent hull algorithm
+    p = 0.0254 if d is None else 0.064
+    v1, v2, r1, r2 = _pairs(p, z1, z2, a, d, 3)
+    got = bridge_perimeters(v1, v2, edge_sums(v1), edge_sums(v2), r1, r2, a)
+    for i in range(3):
+        for j in range(3):
+            assert got[i, j] == pytest.approx(_hull_perimeter(np.concatenate([v1[i], v2[j]])), rel=1e-13)
+
+
+def test_equal_wheels_in_phase_give_the_swept_polygon():
+    # exact: two equal wheels in equal phase, X = z + 2a/p (chain_length_polygon's docstring)
+    p, z, a = 0.0254, 19, 1.0
+    v1, v2, r1, r2 = _pairs(p, z, z, a, None, 1)
+    got = float(bridge_perimeters(v1, v2, edge_sums(v1), edge_sums(v2), r1, r2, a)[0, 0])
+    assert got / p == pytest.approx(z + 2 * a / p, rel=1e-14)
+
+
+def test_edge_sums_of_a_square():
+    sq = np.array([[[1.0, 0.0], [0.0, 1.0], [-1.0, 0.0], [0.0, -1.0]]])
+    np.testing.assert_allclose(edge_sums(sq), [[0.0, 2**0.5, 2 * 2**0.5, 3 * 2**0.5, 4 * 2**0.5]])
