@@ -9,7 +9,13 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from chaindrive.layout._bridges import bridge_perimeters, edge_sums
-from chaindrive.layout.two_wheels import _hull_perimeter, _hull_perimeters, _phase_vertices, _radius, _shifted
+from chaindrive.layout.two_wheels import (
+    _hull_perimeter,
+    _hull_perimeters,
+    _phase_vertices,
+    _radius,
+    _shifted,
+)
 
 
 def _pairs(p, z1, z2, a, d, n, shift=0.0):
