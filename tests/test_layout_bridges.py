@@ -64,3 +64,29 @@ def test_equal_wheels_in_phase_give_the_swept_polygon():
 def test_edge_sums_of_a_square():
     sq = np.array([[[1.0, 0.0], [0.0, 1.0], [-1.0, 0.0], [0.0, -1.0]]])
     np.testing.assert_allclose(edge_sums(sq), [[0.0, 2**0.5, 2 * 2**0.5, 3 * 2**0.5, 4 * 2**0.5]])
+
+
+def test_pair_root_is_the_root_of_the_pair_with_its_bridges():
+    # the root with the bridges' vertices held: the pair's hull perimeter (by the integral,
+    # an independent computation) equals the length asked for there
+    from chaindrive.layout._bridges import pair_root
+
+    p, z1, z2, a0 = 0.0254, 19, 57, 1.05
+    v1, v2, r1, r2 = _pairs(p, z1, z2, 0.0, None, 1)
+    _, k1, k2 = bridge_perimeters(v1, _shifted(v2, a0), edge_sums(v1), edge_sums(v2), r1, r2, a0, vertices=True)
+    length = 122 * p
+    a = pair_root(edge_sums(v1)[0], edge_sums(v2)[0], v1[0], v2[0], (int(k1[0, 0, 0]), int(k1[1, 0, 0])),
+                  (int(k2[0, 0, 0]), int(k2[1, 0, 0])), length, a0)
+    assert float(_hull_perimeters(v1, _shifted(v2, a))[0, 0]) == pytest.approx(length, rel=1e-14)
+
+
+def test_centre_distance_polygon_roots_where_the_grid_reaches_the_links():
+    from chaindrive.layout import centre_distance_polygon
+    from chaindrive.layout.two_wheels import _phase_grid
+
+    p, z1, z2, n = 0.0254, 17, 45, 5
+    r = centre_distance_polygon(p, z1, z2, 110, phases=n)
+    ph1, ph2 = _phase_grid(z1, n), _phase_grid(z2, n)
+    v1, v2 = _phase_vertices(p, z1, ph1, None), _phase_vertices(p, z2, ph2, None)
+    assert _hull_perimeters(v1, _shifted(v2, r.taut)).max() / p == pytest.approx(110, rel=1e-14)
+    assert _hull_perimeters(v1, _shifted(v2, r.loose)).min() / p == pytest.approx(110, rel=1e-14)

@@ -29,10 +29,11 @@ lower supporting lines").
 from __future__ import annotations
 
 import math
+from typing import Any
 
 import numpy as np
 
-__all__ = ["bridge_perimeters", "edge_sums"]
+__all__ = ["bridge_perimeters", "edge_sums", "pair_root"]
 
 #: Fixed-point steps allowed per bridge (two or three settle it for chain wheels).
 MAX_STEPS = 8
@@ -47,10 +48,12 @@ def edge_sums(vertices: np.ndarray) -> np.ndarray:
 
 
 def bridge_perimeters(v1: np.ndarray, v2: np.ndarray, cum1: np.ndarray, cum2: np.ndarray,
-                      r1: float, r2: float, a: float) -> np.ndarray:
+                      r1: float, r2: float, a: float, *, vertices: bool = False) -> Any:
     """Hull perimeter of every pair: ``v1`` (A, n1, 2) round the origin, ``v2`` (B, n2, 2)
     round ``(a, 0)``, ``cum1``, ``cum2`` their :func:`edge_sums`, ``r1``, ``r2`` the largest
-    vertex radii, ``a > r1 + r2``. Returns (A, B) [m]; NaN where a bridge did not settle."""
+    vertex radii, ``a > r1 + r2``. Returns (A, B) [m]; NaN where a bridge did not settle.
+    With ``vertices``: also the bridges' vertices, ``k1``, ``k2`` of shape (2, A, B)
+    (upper, lower)."""
     A, n1 = v1.shape[:2]
     B, n2 = v2.shape[:2]
     x1, y1 = v1[..., 0], v1[..., 1]               # (A, n1)
@@ -87,4 +90,32 @@ def bridge_perimeters(v1: np.ndarray, v2: np.ndarray, cum1: np.ndarray, cum2: np
     arc2 = cum2[rows2[0], k2[0]] - cum2[rows2[0], k2[1]]
     arc2 = np.where(arc2 < 0, arc2 + own2, arc2)
     out = arc1 + arc2 + bridges
-    return np.where(settled.all(axis=0), out, np.nan)
+    out = np.where(settled.all(axis=0), out, np.nan)
+    return (out, k1, k2) if vertices else out
+
+
+def pair_root(cum1: np.ndarray, cum2: np.ndarray, v1: np.ndarray, v2: np.ndarray, k1: tuple[int, int],
+              k2: tuple[int, int], length: float, a: float) -> float:
+    r"""Centre distance at which one pair's hull perimeter is ``length``, its bridges' vertices
+    held: ``v1`` (n1, 2) round the origin, ``v2`` (n2, 2) round *its own* centre, ``cum1``,
+    ``cum2`` their :func:`edge_sums`, ``k1``, ``k2`` the (upper, lower) bridge vertices,
+    ``a`` the start [m].
+
+    With the vertices held, :math:`L(a) = C + |w_u(a)| + |w_l(a)|`, ``C`` the two arcs and
+    :math:`w(a) = (a + \Delta x, \Delta y)`: increasing and convex in ``a``, so Newton's
+    method with the exact slope :math:`\sum (a + \Delta x)/|w|` converges (quadratically)
+    to its root. The caller checks that the vertices are still the bridges' at the root.
+    """
+    own1, own2 = float(cum1[-1]), float(cum2[-1])
+    arc1 = float(cum1[k1[1]] - cum1[k1[0]])
+    arc2 = float(cum2[k2[0]] - cum2[k2[1]])
+    c = (arc1 + own1 if arc1 < 0 else arc1) + (arc2 + own2 if arc2 < 0 else arc2)
+    dxu, dyu = float(v2[k2[0], 0] - v1[k1[0], 0]), float(v2[k2[0], 1] - v1[k1[0], 1])
+    dxl, dyl = float(v2[k2[1], 0] - v1[k1[1], 0]), float(v2[k2[1], 1] - v1[k1[1], 1])
+    for _ in range(60):
+        hu, hl = math.hypot(a + dxu, dyu), math.hypot(a + dxl, dyl)
+        step = (c + hu + hl - length) / ((a + dxu) / hu + (a + dxl) / hl)
+        a -= step
+        if abs(step) <= 4e-16 * abs(a):
+            break
+    return a

@@ -16,7 +16,7 @@ from .._results import Result, quantity
 from .._typing import FloatOrArray
 from .._validation import as_float_array, check_positive, check_teeth
 from ..errors import ConvergenceError, InfeasibleError, InputError
-from ._bridges import bridge_perimeters, edge_sums
+from ._bridges import bridge_perimeters, edge_sums, pair_root
 from .wheels import _radius_and_offsets, pitch_radius
 
 
@@ -340,20 +340,29 @@ class PolygonLength(Result):
 
 def _polygon_links(p, z1, z2, a, d, n):
     # period of each polygon: 2π/z (a bi-regular 2z-gon repeats every 2π/z too)
-    ph1 = np.arange(n) * (2 * np.pi / z1) / n
-    ph2 = np.arange(n) * (2 * np.pi / z2) / n
+    ph1, ph2 = _phase_grid(z1, n), _phase_grid(z2, n)
     return ph1, ph2, _perimeters(p, z1, z2, a, d, ph1, ph2) / p
 
 
-def _perimeters(p, z1, z2, a, d, ph1, ph2):
+def _phase_grid(z, n):
+    # the sampled phases of a wheel: n over one tooth period 2π/z (a bi-regular 2z-gon repeats
+    # every 2π/z too)
+    return np.arange(n) * (2 * np.pi / z) / n
+
+
+def _perimeters(p, z1, z2, a, d, ph1, ph2, bridges=None):
     # hull perimeters of every phase pair [m]: by the two bridges where the pitch circles are
-    # apart (chaindrive.layout._bridges), else (or where a bridge did not settle) by the integral
+    # apart (chaindrive.layout._bridges), else (or where a bridge did not settle) by the
+    # integral; `bridges`: a dict that receives the bridges' vertices (k1, k2) when found
     v1, v2 = _phase_vertices(p, z1, ph1, d), _phase_vertices(p, z2, ph2, d)
     r1, r2 = _radius(p, z1, d), _radius(p, z2, d)
     v2a = _shifted(v2, a)
     if a > (r1 + r2) * (1.0 + 1e-9):
-        out = bridge_perimeters(v1, v2a, _edge_sums(p, z1, ph1, d), _edge_sums(p, z2, ph2, d), r1, r2, a)
+        out, k1, k2 = bridge_perimeters(v1, v2a, _edge_sums(p, z1, ph1, d), _edge_sums(p, z2, ph2, d),
+                                        r1, r2, a, vertices=True)
         if not np.isnan(out).any():
+            if bridges is not None:
+                bridges["k"] = (k1, k2)
             return out
     return _hull_perimeters(v1, v2a, _first_terms(p, z1, ph1, d))
 
@@ -582,7 +591,8 @@ _GRIDS = threading.local()
 
 
 def _grid_at(p, z1, z2, a, d, n):
-    # _polygon_links(p, z1, z2, a, d, n), the last few kept (read only by the root search)
+    # _polygon_links(p, z1, z2, a, d, n), the last few kept (read only by the root search),
+    # with the bridges' vertices of every pair where the bridges gave it (_grid_bridges)
     grids = getattr(_GRIDS, "grids", None)
     if grids is None:
         grids = _GRIDS.grids = {}
@@ -591,8 +601,29 @@ def _grid_at(p, z1, z2, a, d, n):
     if found is None:
         if len(grids) >= 4:
             grids.clear()
-        found = grids[key] = _polygon_links(p, z1, z2, a, d, n)
+        ph1, ph2 = _phase_grid(z1, n), _phase_grid(z2, n)
+        bridges: dict = {}
+        found = grids[key] = (ph1, ph2, _perimeters(p, z1, z2, a, d, ph1, ph2, bridges) / p)
+        grids[("bridges", *key)] = bridges.get("k")
     return found
+
+
+def _grid_bridges(p, z1, z2, a, d, n, i, j):
+    # the bridges' vertices ((upper, lower) on wheel 1, on wheel 2) of pair (i, j) of the grid
+    # _grid_at evaluated at a, or None
+    found = _GRIDS.grids.get(("bridges", p, z1, z2, a, d, n))
+    if found is None:
+        return None
+    k1, k2 = found
+    return (int(k1[0, i, j]), int(k1[1, i, j])), (int(k2[0, i, j]), int(k2[1, i, j]))
+
+
+def _pair_root(p, z1, z2, d, n, i, j, ks, target, a):
+    # the centre distance where pair (i, j) of the phase grid is `target` links long, its
+    # bridges' vertices `ks` held (chaindrive.layout._bridges.pair_root)
+    ph1, ph2 = _phase_grid(z1, n), _phase_grid(z2, n)
+    return pair_root(_edge_sums(p, z1, ph1, d)[i], _edge_sums(p, z2, ph2, d)[j], _phase_vertices(p, z1, ph1, d)[i],
+                     _phase_vertices(p, z2, ph2, d)[j], ks[0], ks[1], target * p, a)
 
 
 def _extreme_phase_root(pick, p, z1, z2, d, n, target, a0, r1, r2, lo, hi):
@@ -604,14 +635,24 @@ def _extreme_phase_root(pick, p, z1, z2, d, n, target, a0, r1, r2, lo, hi):
     grid's max (min) itself, as when every step evaluated the whole grid.
     """
     a = a0
+    held = None  # (pair, bridges' vertices) of the last root with the vertices held
     for _ in range(20):
         ph1, ph2, grid = _grid_at(p, z1, z2, a, d, n)
         i, j = np.unravel_index(pick(grid), grid.shape)
-        if abs(grid[i, j] - target) <= 1e-9 and a != a0:
+        ks = _grid_bridges(p, z1, z2, a, d, n, i, j)
+        if held is not None and held == ((i, j), ks):
+            return a  # the pair governs at its root, where its bridges are those held
+        if abs(grid[i, j] - target) <= 1e-9 and a != a0 and held is None:
             return a
         f1, f2 = ph1[i], ph2[j]
-        a_new = _newton_fixed_slope(lambda x, f1=f1, f2=f2: _pair_links(p, z1, z2, x, d, f1, f2),
-                                    target, a, r1, r2, p, lo, hi)
+        if ks is not None and held is None:
+            # Newton with the exact slope on the pair, its bridges' vertices held; checked
+            # on the grid at the root (the next pass)
+            a_new, held = _pair_root(p, z1, z2, d, n, i, j, ks, target, a), ((i, j), ks)
+        else:
+            held = None
+            a_new = _newton_fixed_slope(lambda x, f1=f1, f2=f2: _pair_links(p, z1, z2, x, d, f1, f2),
+                                        target, a, r1, r2, p, lo, hi)
         if a_new == a:
             return a
         a = a_new
