@@ -90,3 +90,25 @@ def test_centre_distance_polygon_roots_where_the_grid_reaches_the_links():
     v1, v2 = _phase_vertices(p, z1, ph1, None), _phase_vertices(p, z2, ph2, None)
     assert _hull_perimeters(v1, _shifted(v2, r.taut)).max() / p == pytest.approx(110, rel=1e-14)
     assert _hull_perimeters(v1, _shifted(v2, r.loose)).min() / p == pytest.approx(110, rel=1e-14)
+
+
+@settings(max_examples=40, deadline=None)
+@given(scales=st.lists(st.floats(0.9, 1.05), min_size=1, max_size=8), tractor=st.booleans())
+def test_span_lengths_equal_wrap_layout_row_by_row(scales, tractor):
+    from chaindrive.layout import wrap_layout
+    from chaindrive.layout.wrap import span_lengths
+
+    if tractor:  # a back-side idler among four wheels
+        c = np.array([[0.0, 0.5], [0.55, 0.2], [1.9, 0.2], [2.52, 0.35]])
+        r, s = np.array([0.35, 0.2, 0.2, 0.3]), np.array([1.0, -1.0, 1.0, 1.0])
+        c[1, 1] = 0.9
+    else:
+        c, r, s = np.array([[0.0, 0.0], [1.05, 0.0]]), np.array([0.078, 0.23]), np.ones(2)
+    rows = r[None, :] * np.array(scales)[:, None]
+    got = span_lengths(c, rows, s)
+    try:
+        ref = np.stack([wrap_layout(c, row, s).span_length for row in rows])
+    except Exception:
+        assert got is None
+        return
+    assert got is not None and np.array_equal(got, ref)

@@ -33,6 +33,7 @@ from .. import layout as L
 from .._results import Result, quantity
 from .._validation import check_nonnegative
 from ..errors import InputError
+from ..layout.wrap import span_lengths
 from ..life import efficiency as EF
 from ..life import elongation as EL
 from ..life import fatigue as FA
@@ -182,8 +183,11 @@ def _span_frequencies(drive, layout, loads, grid):
     w = layout.wrap
     v = float(loads.chain_speed)
     tension = np.asarray(loads.span_tensions, float) + float(loads.centrifugal)
-    lengths = np.column_stack([L.wrap_layout(w.centres, np.asarray(w.radii) * (1.0 + e), w.sides).span_length
-                               for e in grid])
+    rows = np.asarray(w.radii)[None, :] * (1.0 + grid[:, None])
+    lengths = span_lengths(np.asarray(w.centres, float), rows, np.asarray(w.sides, float))
+    if lengths is None:  # no layout at some elongation: wrap_layout says why
+        lengths = np.stack([L.wrap_layout(w.centres, r, w.sides).span_length for r in rows])
+    lengths = lengths.T
     return moving_string_frequencies(tension[:, None], q / (1.0 + grid[None, :]), lengths, chain_speed=v,
                                      modes=1)[..., 0]
 

@@ -155,6 +155,27 @@ def wrap_layout(centres: ArrayLike, radii: ArrayLike, sides: ArrayLike | None = 
                       length=float(ell.sum() + arc.sum()))
 
 
+def span_lengths(centres: np.ndarray, radii: np.ndarray, sides: np.ndarray) -> np.ndarray | None:
+    """:attr:`WrapLayout.span_length` for many sets of radii at once: ``radii`` (m, n) on
+    checked ``centres`` (n, 2) and ``sides`` (n,) -> (m, n) [m], by the operations of
+    :func:`wrap_layout` (the same numbers); ``None`` when a row has no layout (the caller
+    asks :func:`wrap_layout` for the error)."""
+    rho = sides * radii
+    c_next = np.concatenate((centres[1:], centres[:1]))
+    rho_next = np.concatenate((rho[:, 1:], rho[:, :1]), axis=1)
+    d = c_next - centres
+    D = np.hypot(d[:, 0], d[:, 1])
+    drho = rho_next - rho
+    if np.any(D <= np.abs(drho)):
+        return None
+    alpha = np.arctan2(d[:, 1], d[:, 0]) - np.arcsin(drho / D)
+    turn = np.mod(sides * (alpha - np.concatenate((alpha[:, -1:], alpha[:, :-1]), axis=1)), 2 * np.pi)
+    wrap = np.where(np.abs(turn) <= 1e-12, 0.0, turn)
+    if not np.all(np.abs(np.sum(sides * wrap, axis=1) - 2 * np.pi) <= 1e-6 + 1e-5 * 2 * np.pi):
+        return None
+    return np.sqrt(D**2 - drho**2)
+
+
 def _loop_lengths(centres: np.ndarray, radii: np.ndarray, sides: np.ndarray) -> np.ndarray:
     """:attr:`WrapLayout.length` for many layouts at once, ``-inf`` where there is none.
 
