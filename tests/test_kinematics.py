@@ -322,3 +322,16 @@ def test_property_exact_model(z, frac, w, extra, entry):
     assert s["v_max"] <= w * r.radius * (1 + 1e-9)
     # x monotone (the chain never runs back)
     assert np.all(np.diff(r.x) > 0)
+
+
+@pytest.mark.parametrize("kwargs", [dict(), dict(bar_diameter=0.018, entry="tangential", guide_end_distance=0.256),
+                                    dict(bar_diameter=0.018, entry="free")])
+def test_summary_limits_equal_separate_evaluations(kwargs):
+    # the summary evaluates the grid and the one-sided limits in one call of the exact model;
+    # each limit equals the kinematics asked for at that angle alone, bit for bit
+    pitch = 0.064 if kwargs else 0.0254
+    r = chain_entry(pitch, 8, 5.0, **kwargs)
+    T = r.period
+    left = chain_entry(pitch, 8, 5.0, phi=[T - 1e-12 * T], **kwargs).acceleration[0]
+    right = chain_entry(pitch, 8, 5.0, phi=[1e-12 * T], **kwargs).acceleration[0]
+    assert r.summary["a_end_left"] == left and r.summary["a_end_right"] == right

@@ -470,29 +470,37 @@ def _summary(case: _Case, model: str, seats) -> dict:
     extra = np.concatenate([seats - eps, seats + eps, [T - eps, eps, T - 1e-4 * T, 1e-4 * T]])
     extra = extra[(extra > 0) & (extra < T)]
     grid = np.sort(np.concatenate([base[:-1], extra]))
-    r = _run(case, model, grid)
-    v, a = r.velocity, r.acceleration
+    s_in = np.asarray(seats, dtype=float)
+    s_in = s_in[(s_in > eps) & (s_in < T - eps)]
+    # one-sided limits of the acceleration at the period end (left) and start (right), and
+    # at the seatings (and resets) inside the period
+    ends = np.array([T - 1e-12 * T, 1e-12 * T])
+    if model == "exact":  # a pointwise model: every angle in one call (the same numbers)
+        m = grid.size
+        r = _run(case, model, np.concatenate([grid, ends, s_in - 1e-12 * T, s_in + 1e-12 * T]))
+        limits = r.acceleration[m:]
+        v, a, y = r.velocity[:m], r.acceleration[:m], None if r.y is None else r.y[:m]
+    else:
+        r = _run(case, model, grid)
+        limits = np.concatenate([_run(case, model, ends[:1])["acceleration"],
+                                 _run(case, model, ends[1:])["acceleration"]]
+                                + ([_run(case, model, s_in - 1e-12 * T)["acceleration"],
+                                    _run(case, model, s_in + 1e-12 * T)["acceleration"]] if s_in.size else []))
+        v, a, y = r.velocity, r.acceleration, getattr(r, "y", None)
     advance = float(r.advance)
     v_mean = advance / (T / case.w)
-    # one-sided limits of the acceleration at the period end (left) and start (right)
-    a_left = float(_run(case, model, np.array([T - 1e-12 * T]))["acceleration"][0])
-    a_right = float(_run(case, model, np.array([1e-12 * T]))["acceleration"][0])
+    a_left, a_right = float(limits[0]), float(limits[1])
     amax = float(np.max(np.abs(a)))
     tol = 1e-6 * amax
     sign_change = bool((abs(a_left) > tol) and (abs(a_right) > tol) and (a_left * a_right < 0))
-    # jumps of the acceleration at the seatings (and resets) inside the period
-    s_in = np.asarray(seats, dtype=float)
-    s_in = s_in[(s_in > eps) & (s_in < T - eps)]
     jump_list = [a_right - a_left]
     sign_jumps = np.zeros(0, dtype=bool)
     if s_in.size:
-        lo = _run(case, model, s_in - 1e-12 * T)["acceleration"]
-        hi = _run(case, model, s_in + 1e-12 * T)["acceleration"]
+        lo, hi = limits[2:2 + s_in.size], limits[2 + s_in.size:]
         jump_list += list(hi - lo)
         sign_jumps = (np.abs(lo) > tol) & (np.abs(hi) > tol) & (lo * hi < 0)
     jumps = np.asarray(jump_list)
     if case.entry == "free":
-        y = r.y
         throw = float(case.R - case.R * np.cos(0.5 * max(case.d1, case.d2)))
         throw = max(throw, float(np.max(y) - np.min(y)))
     else:

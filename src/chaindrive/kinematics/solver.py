@@ -56,6 +56,7 @@ ogniwowego na koło gniazdowe"), Figs 1, 4, 5 and eqs (1)-(43).
 
 from __future__ import annotations
 
+import functools
 from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Any
@@ -138,9 +139,10 @@ class WheelPolygon:
         return float(sum(self.links))
 
     def _cum(self) -> tuple[np.ndarray, np.ndarray]:
-        ca = np.concatenate(([0.0], np.cumsum(self.angles)))
-        cl = np.concatenate(([0.0], np.cumsum(self.links)))
-        return ca, cl
+        try:
+            return _cumulative(self.angles, self.links)
+        except TypeError:  # links or angles given as a list: not kept
+            return _cumulative.__wrapped__(self.angles, self.links)
 
     def vertex(self, k: ArrayLike) -> tuple[np.ndarray, np.ndarray]:
         """Angle ``β_k`` at ``φ = 0`` [rad] and material coordinate ``c_k`` [m] of vertex ``k``."""
@@ -156,6 +158,15 @@ class WheelPolygon:
     def angle_after(self, k: int) -> float:
         """Central angle of the link from vertex ``k`` to ``k + 1`` [rad]."""
         return self.angles[k % len(self.angles)]
+
+
+@functools.lru_cache(maxsize=64)
+def _cumulative(angles: tuple[float, ...], links: tuple[float, ...]) -> tuple[np.ndarray, np.ndarray]:
+    # WheelPolygon._cum: the cumulative angles and links from vertex 0, once per polygon (read only)
+    ca = np.concatenate(([0.0], np.cumsum(angles)))
+    cl = np.concatenate(([0.0], np.cumsum(links)))
+    ca.flags.writeable = cl.flags.writeable = False
+    return ca, cl
 
 
 def _pos(radius: float, beta: ArrayLike) -> tuple[np.ndarray, np.ndarray]:
