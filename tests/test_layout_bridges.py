@@ -112,3 +112,20 @@ def test_span_lengths_equal_wrap_layout_row_by_row(scales, tractor):
         assert got is None
         return
     assert got is not None and np.array_equal(got, ref)
+
+
+def test_loop_length_in_floats_equals_the_array_path():
+    # tensioner_travel's root search evaluates one layout at a time in Python floats; the
+    # numbers must be those of the array path bit for bit (the root search follows them)
+    from chaindrive.layout.wrap import _loop_length, _loop_lengths
+
+    rng = np.random.default_rng(0)
+    for _ in range(400):
+        n = int(rng.integers(2, 8))
+        ang = np.sort(rng.uniform(0, 2 * np.pi, n))
+        rad = rng.uniform(0.5, 3, n)
+        c = np.stack([rad * np.cos(ang), rad * np.sin(ang)], 1)
+        r, s = rng.uniform(0.01, 0.3, n), np.where(rng.random(n) < 0.2, -1.0, 1.0)
+        ref = float(_loop_lengths(c[None], r, s)[0])
+        got = _loop_length(c[:, 0].tolist(), c[:, 1].tolist(), r.tolist(), s.tolist())
+        assert got == ref or (got == ref == -np.inf)

@@ -63,6 +63,12 @@ def clear() -> None:
         if cached is not None and hasattr(cached, "cache_clear"):
             cached.cache_clear()
     two_wheels._GRIDS.__dict__.clear()  # the phase grids the root search evaluated last
+    two_wheels._VERTEX_CACHE.clear()
+    from ..kinematics import entry, solver
+    from ..layout import wheels
+
+    for cached in (wheels.cached_pitch_radius, solver._cumulative, entry._checked_seats, entry._chordal_rod_schedule):
+        cached.cache_clear()
     from ..loads.safety import required_static_safety_for
 
     required_static_safety_for.cache_clear()

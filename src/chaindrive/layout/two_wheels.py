@@ -17,7 +17,7 @@ from .._typing import FloatOrArray
 from .._validation import as_float_array, check_positive, check_teeth
 from ..errors import ConvergenceError, InfeasibleError, InputError
 from ._bridges import bridge_perimeters, edge_sums, pair_root
-from .wheels import _radius_and_offsets, pitch_radius
+from .wheels import _radius_and_offsets, cached_pitch_radius, pitch_radius
 
 
 @finite_guard
@@ -503,10 +503,9 @@ def chain_length_polygon(pitch: float, teeth_1: int, teeth_2: int, centre_distan
     return replace(found, phase_1=found.phase_1.copy(), phase_2=found.phase_2.copy(), links=found.links.copy())
 
 
-@functools.lru_cache(maxsize=256)
 def _radius(p: float, z: int, bar_diameter: float | None) -> float:
     # float(pitch_radius(p, z, bar_diameter)) on checked scalars, kept
-    return float(pitch_radius(p, z, bar_diameter))
+    return cached_pitch_radius(p, z, bar_diameter)
 
 
 @functools.lru_cache(maxsize=256)

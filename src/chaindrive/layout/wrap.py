@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 import numpy as np
@@ -196,6 +197,33 @@ def _loop_lengths(centres: np.ndarray, radii: np.ndarray, sides: np.ndarray) -> 
     ok = np.all(D > np.abs(drho), axis=-1) & (np.abs(total_turn - 2 * np.pi) <= 1e-6 + 1e-5 * 2 * np.pi)
     length = np.sum(ell, axis=-1) + np.sum(radii * wrap, axis=-1)
     return np.where(ok, length, -np.inf)
+
+
+def _loop_length(xs: list[float], ys: list[float], radii: list[float], sides: list[float]) -> float:
+    """:func:`_loop_lengths` of one layout of up to 7 wheels in Python floats (the same
+    numbers: the same operations, numpy's own arc tangent and arc sine, the sums in order),
+    for the scalar root searches."""
+    n = len(xs)
+    rho = [s * r for s, r in zip(sides, radii, strict=True)]
+    alpha, ell = [], []
+    for i in range(n):
+        j = i + 1 if i + 1 < n else 0
+        dx, dy = xs[j] - xs[i], ys[j] - ys[i]
+        D = float(np.hypot(dx, dy))
+        drho = rho[j] - rho[i]
+        if not D > abs(drho):
+            return -math.inf
+        alpha.append(float(np.arctan2(dy, dx)) - float(np.arcsin(drho / D)))
+        ell.append(math.sqrt(D * D - drho * drho))
+    total = arcs = length = 0.0
+    for i in range(n):
+        turn = (sides[i] * (alpha[i] - alpha[i - 1])) % (2 * math.pi)
+        wrap = 0.0 if abs(turn) <= 1e-12 else turn
+        total += sides[i] * wrap
+        arcs += radii[i] * wrap
+    for v in ell:
+        length += v
+    return length + arcs if abs(total - 2 * np.pi) <= 1e-6 + 1e-5 * 2 * np.pi else -math.inf
 
 
 @finite_guard
