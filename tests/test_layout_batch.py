@@ -88,3 +88,26 @@ def test_varying_geometry_errors_are_each_variants_own():
     changes = [{("wheels", 0, "teeth"): 19, ("wheels", 1, "position"): (a, 0.0)} for a in (1.0, 0.05, 1.1)]
     out = _equal_to_analyze_drive(_roller(), changes, include=["layout", "loads"])
     assert isinstance(out[1], Exception) and not isinstance(out[0], Exception)
+
+
+@settings(max_examples=60, deadline=None)
+@given(chord=st.floats(0.05, 20.0), incl=st.floats(-1.4, 1.4), ratio=st.floats(1e-5, 0.3),
+       q=st.floats(0.1, 100.0))
+def test_tension_for_sag_stops_where_the_100_halvings_end(chord, incl, ratio, q):
+    # the bisection stops once lo and hi are adjacent floats; the full 100 halvings of the
+    # documented method (written out here) end on the same number, bit for bit
+    from chaindrive.layout.sag import _catenary_parts, _catenary_sag
+
+    span, rise, w = _catenary_parts(chord, incl, 1.0, q, 9.80665)
+    f = ratio * chord
+    H0 = w * span**2 / (8.0 * f)
+    lo, hi = np.log(H0) - 15.0 * np.log(10.0), np.log(H0) + 15.0 * np.log(10.0)
+    for _ in range(100):
+        mid = 0.5 * (lo + hi)
+        if _catenary_sag(span, rise, w / np.exp(mid)) > f:
+            lo = mid
+        else:
+            hi = mid
+    assert float(tension_for_sag(chord, incl, f, q)) == float(np.exp(0.5 * (lo + hi)))
+    both = tension_for_sag(np.array([chord, chord]), np.array([incl, incl]), np.array([f, f]), q)
+    assert float(both[0]) == float(np.exp(0.5 * (lo + hi)))

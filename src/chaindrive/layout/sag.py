@@ -183,9 +183,12 @@ def tension_for_sag(chord_length: ArrayLike, inclination: ArrayLike, sag: ArrayL
         return _bisect_scalar(lo[()], hi[()], span[()], rise[()], w[()], np.asarray(f)[()])
     for _ in range(100):
         mid = 0.5 * (lo + hi)
+        settled = bool(np.all((mid == lo) | (mid == hi)))
         too_slack = _catenary_sag(span, rise, w / np.exp(mid)) > f
         lo = np.where(too_slack, mid, lo)
         hi = np.where(too_slack, hi, mid)
+        if settled:  # see _bisect_scalar: no later halving changes a bit
+            break
     return np.exp(0.5 * (lo + hi))
 
 
@@ -198,6 +201,10 @@ def _bisect_scalar(lo, hi, span, rise, w, f):
     asinh_m = np.arcsinh(m)
     for _ in range(100):
         mid = 0.5 * (lo + hi)
+        # lo and hi adjacent (or equal): the midpoint rounds to one of them, and from this
+        # halving on the state no longer changes (the same test on the same mid), so the
+        # remaining halvings of the 100 are skipped with the same result, bit for bit
+        settled = mid == lo or mid == hi
         k = w / np.exp(mid)
         x0 = half - np.arcsinh(k * rise / (2 * np.sinh(k * span / 2))) / k
         xs = x0 + asinh_m / k
@@ -205,4 +212,6 @@ def _bisect_scalar(lo, hi, span, rise, w, f):
             lo = mid
         else:
             hi = mid
+        if settled:
+            break
     return np.exp(0.5 * (lo + hi))
