@@ -513,7 +513,9 @@ def _chain_length_polygon(p: float, z1: int, z2: int, a: float, bar_diameter: fl
                           phases: int) -> PolygonLength:
     # chain_length_polygon on checked scalars; cached because it depends on them only and
     # an analysis asks for the same pair of wheels again (the results are plain numbers)
-    ph1, ph2, X = _polygon_links(p, z1, z2, a, bar_diameter, phases)
+    # the grid kept for the root search too (_grid_at: the same numbers as _polygon_links): the
+    # centre distance for the links asked next starts from it
+    ph1, ph2, X = _grid_at(p, z1, z2, a, bar_diameter, phases)
     r1, r2 = _radius(p, z1, bar_diameter), _radius(p, z2, bar_diameter)
     # chain_length_circles(p, z1, z2, a, bar_diameter) on the checked inputs (a > |R2 - R1|)
     circles = float(_belt_length(a, r1, r2) / p) if a > abs(r2 - r1) else float("nan")
@@ -625,15 +627,29 @@ def _pair_root(p, z1, z2, d, n, i, j, ks, target, a):
                      _phase_vertices(p, z2, ph2, d)[j], ks[0], ks[1], target * p, a)
 
 
-def _extreme_phase_root(pick, p, z1, z2, d, n, target, a0, r1, r2, lo, hi):
+def _kept_grid_near(p, z1, z2, d, n, lo, hi):
+    """The centre distance of the last phase grid :func:`_grid_at` kept for these wheels with its
+    bridges (chain_length_polygon's, at the drive's centre distance), or None."""
+    grids = getattr(_GRIDS, "grids", None) or {}
+    for key in reversed(list(grids)):
+        if key[0] != "bridges" and key[:3] == (p, z1, z2) and key[4:] == (d, n) and lo < key[3] < hi \
+                and grids.get(("bridges", *key)) is not None:
+            return key[3]
+    return None
+
+
+def _extreme_phase_root(pick, p, z1, z2, d, n, target, a0, r1, r2, lo, hi, start=None):
     """Root of max (``pick=np.argmax``) or min over the phase grid of X(a) = target.
+
+    ``start``: a centre distance whose grid is kept already, to choose the first pair from
+    instead of ``a0`` (the root is the same: it is checked on the grid there).
 
     Newton steps run on the phase pair that governs at the current estimate (one hull
     per step instead of n² of them); the whole grid is then evaluated at the root, and if
     another pair governs there the search goes on from it. The result is the root of the
     grid's max (min) itself, as when every step evaluated the whole grid.
     """
-    a = a0
+    a = a0 if start is None else start
     held = None  # (pair, bridges' vertices) of the last root with the vertices held
     for _ in range(20):
         ph1, ph2, grid = _grid_at(p, z1, z2, a, d, n)
@@ -641,7 +657,7 @@ def _extreme_phase_root(pick, p, z1, z2, d, n, target, a0, r1, r2, lo, hi):
         ks = _grid_bridges(p, z1, z2, a, d, n, i, j)
         if held is not None and held == ((i, j), ks):
             return a  # the pair governs at its root, where its bridges are those held
-        if abs(grid[i, j] - target) <= 1e-9 and a != a0 and held is None:
+        if abs(grid[i, j] - target) <= 1e-9 and a != a0 and a != start and held is None:
             return a
         f1, f2 = ph1[i], ph2[j]
         if ks is not None and held is None:
@@ -732,7 +748,8 @@ def _centre_distance_polygon(p: float, z1: int, z2: int, N: int, bar_diameter: f
         return float(_belt_length(a, r1, r2) / p)
 
     circ = _solve_increasing(xcirc, N, lo, hi, "centre distance")
-    taut = _extreme_phase_root(np.argmax, p, z1, z2, bar_diameter, n, N, circ, r1, r2, lo, hi)
+    taut = _extreme_phase_root(np.argmax, p, z1, z2, bar_diameter, n, N, circ, r1, r2, lo, hi,
+                               _kept_grid_near(p, z1, z2, bar_diameter, n, lo, hi))
     loose = _extreme_phase_root(np.argmin, p, z1, z2, bar_diameter, n, N, taut, r1, r2, lo, hi)
     approx = None
     if not bar_diameter:
