@@ -173,10 +173,11 @@ def _pos(radius: float, beta: ArrayLike) -> tuple[np.ndarray, np.ndarray]:
     return radius * np.sin(beta), radius * np.cos(beta)
 
 
-def _taut_gap(poly: WheelPolygon, k: int, phi: np.ndarray, guide: GuideEnd | None) -> np.ndarray:
-    """Cross product (N - S) x (G - S): > 0 while vertex k+1 is inside the span line."""
-    b0, _ = poly.vertex(k)
-    b1, _ = poly.vertex(k + 1)
+def _taut_gap(poly: WheelPolygon, k: int, phi: np.ndarray, guide: GuideEnd | None,
+              angles: tuple[Any, Any] | None = None) -> np.ndarray:
+    """Cross product (N - S) x (G - S): > 0 while vertex k+1 is inside the span line;
+    ``angles``: ``poly.vertex(k)[0], poly.vertex(k + 1)[0]`` when the caller has them."""
+    b0, b1 = (poly.vertex(k)[0], poly.vertex(k + 1)[0]) if angles is None else angles
     sx, sy = _pos(poly.radius, b0 - phi)
     nx, ny = _pos(poly.radius, b1 - phi)
     wx: FloatOrArray
@@ -259,8 +260,8 @@ def taut_seating_angles(poly: WheelPolygon, guide: GuideEnd | None = None) -> np
         # estimate: link (j-1, j) symmetric about the tangent point
         est = float(0.5 * (b_j + b_prev) - beta_t)
 
-        def gap(p: np.ndarray, j: int = j) -> np.ndarray:
-            return _taut_gap(poly, j - 1, p, guide)
+        def gap(p: np.ndarray, j: int = j, angles: tuple[Any, Any] = (b_prev, b_j)) -> np.ndarray:
+            return _taut_gap(poly, j - 1, p, guide, angles)
 
         out[j] = _find_crossing(gap, est, f"hinge {j}")
     out[n] = out[0] + poly.period
