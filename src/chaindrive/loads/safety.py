@@ -132,13 +132,17 @@ def required_static_safety_table(pitch: ArrayLike, speed: ArrayLike) -> FloatOrA
     p, rpm = np.broadcast_arrays(p, rpm)
     P = REQUIRED_SAFETY_PITCHES
     j = np.clip(np.searchsorted(P, p) - 1, 0, len(P) - 2)
-    # the pitch columns the interpolation reads (the others are never taken)
-    used = set(np.unique(j).tolist()) | set((np.unique(j) + 1).tolist())
-    cols = np.stack([_column_at(REQUIRED_SAFETY_TABLE[:, k], rpm) if k in used else np.full(rpm.shape, np.nan)
-                     for k in range(len(P))], axis=-1)
     t = (np.maximum(p, P[0]) - P[j]) / (P[j + 1] - P[j])  # beyond 50.8 mm: t > 1, the line of the last two
-    lo = np.take_along_axis(cols, j[..., None], axis=-1)[..., 0]
-    hi = np.take_along_axis(cols, (j + 1)[..., None], axis=-1)[..., 0]
+    if j.ndim == 0:  # one point: its two columns (the same operations as below)
+        k = int(j)
+        lo, hi = _column_at(REQUIRED_SAFETY_TABLE[:, k], rpm), _column_at(REQUIRED_SAFETY_TABLE[:, k + 1], rpm)
+    else:
+        # the pitch columns the interpolation reads (the others are never taken)
+        used = set(np.unique(j).tolist()) | set((np.unique(j) + 1).tolist())
+        cols = np.stack([_column_at(REQUIRED_SAFETY_TABLE[:, k], rpm) if k in used else np.full(rpm.shape, np.nan)
+                         for k in range(len(P))], axis=-1)
+        lo = np.take_along_axis(cols, j[..., None], axis=-1)[..., 0]
+        hi = np.take_along_axis(cols, (j + 1)[..., None], axis=-1)[..., 0]
     out = lo + t * (hi - lo)
     if np.any(outside_required_safety_table(p, w)):
         warnings.warn("required static safety: pitch or small-sprocket speed outside Chernavsky et al. "
