@@ -276,10 +276,14 @@ def _exact(case: _Case, phi):
     guide = case.guide()
     seats = _checked_seats(case)
     r = taut_entry(poly, phi, case.w, guide, seats)
+    return dataclasses.replace(r, seats=_period_seats(case, seats), advance=poly.advance)
+
+
+def _period_seats(case: _Case, seats: np.ndarray) -> np.ndarray:
+    """The seating angles within one period, sorted (the exact model's ``seats``)."""
     T = case.period
     s = np.mod(seats[:-1], T)
-    return dataclasses.replace(r, seats=np.sort(np.where(np.isclose(s, T, rtol=0, atol=1e-12), 0.0, s)),
-                               advance=poly.advance)
+    return np.sort(np.where(np.isclose(s, T, rtol=0, atol=1e-12), 0.0, s))
 
 
 @lru_cache(maxsize=64)
@@ -463,7 +467,10 @@ def _explain_infeasible(case: _Case, model: str, exc: Exception):
     raise InfeasibleError(msg) from None
 
 
-def _summary(case: _Case, model: str, seats) -> dict:
+def _summary(case: _Case, model: str, seats, first: np.ndarray | None = None) -> Any:
+    """The summary of the entry (seats: the model's seating angles in one period). With
+    ``first`` (the exact model): also the entry at those angles, from the same call of the
+    model (a pointwise model: the same numbers), as ``(summary, entry)``."""
     T = case.period
     base = np.linspace(0.0, T, 4001)
     eps = 1e-9 * T
@@ -475,11 +482,18 @@ def _summary(case: _Case, model: str, seats) -> dict:
     # one-sided limits of the acceleration at the period end (left) and start (right), and
     # at the seatings (and resets) inside the period
     ends = np.array([T - 1e-12 * T, 1e-12 * T])
+    head = None
     if model == "exact":  # a pointwise model: every angle in one call (the same numbers)
-        m = grid.size
-        r = _run(case, model, np.concatenate([grid, ends, s_in - 1e-12 * T, s_in + 1e-12 * T]))
+        n0 = 0 if first is None else first.size
+        m = n0 + grid.size
+        r = _run(case, model, np.concatenate([[] if first is None else first, grid, ends, s_in - 1e-12 * T,
+                                              s_in + 1e-12 * T]))
         limits = r.acceleration[m:]
-        v, a, y = r.velocity[:m], r.acceleration[:m], None if r.y is None else r.y[:m]
+        v, a, y = r.velocity[n0:m], r.acceleration[n0:m], None if r.y is None else r.y[n0:m]
+        if first is not None:
+            head = dataclasses.replace(r, **{f.name: getattr(r, f.name)[:n0] for f in dataclasses.fields(r)
+                                             if f.name not in ("seats", "advance")
+                                             and isinstance(getattr(r, f.name), np.ndarray)})
     else:
         r = _run(case, model, grid)
         limits = np.concatenate([_run(case, model, ends[:1])["acceleration"],
@@ -505,7 +519,7 @@ def _summary(case: _Case, model: str, seats) -> dict:
         throw = max(throw, float(np.max(y) - np.min(y)))
     else:
         throw = 0.0
-    return {
+    summary = {
         "v_mean": v_mean,
         "v_min": float(np.min(v)),
         "v_max": float(np.max(v)),
@@ -522,6 +536,7 @@ def _summary(case: _Case, model: str, seats) -> dict:
         "a_jump_max": float(np.max(np.abs(jumps))),
         "sign_changing_jumps": int(np.sum(sign_jumps) + sign_change),
     }
+    return summary if first is None else (summary, head)
 
 
 @finite_guard
@@ -632,12 +647,16 @@ def chain_entry(
     at_end = np.isclose(np.mod(ev, T), 0.0, rtol=0, atol=1e-14) & (ev > 0)
     ev[at_end] = np.nextafter(ev[at_end], -np.inf)  # left limit at the period end
     try:
-        r = _run(case, model, ev)
+        if model == "exact":  # the angles asked for and the summary's in one call
+            summary, r = _summary(case, model, _period_seats(case, _checked_seats(case)), ev.ravel())
+        else:
+            r = _run(case, model, ev)
     except InfeasibleError as exc:
         if case.entry == "free":
             raise
         _explain_infeasible(case, model, exc)
-    summary = _summary(case, model, np.asarray(r.seats, dtype=float))
+    if model != "exact":
+        summary = _summary(case, model, np.asarray(r.seats, dtype=float))
     shape = np.shape(phi_arr)
 
     def out(key):
