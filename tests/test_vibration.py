@@ -468,3 +468,13 @@ def test_tensioner_frequencies_scalar_roots_equal_the_array_roots(s, l1, l2, b1,
         patch.setattr(T, "_SCALAR_ROOTS", 0)
         many = tensioner_frequencies(s, 2.6, l1, l2, b1, b2, m, c, modes=modes)
     np.testing.assert_allclose(few, many, rtol=1e-14, atol=0)
+
+
+def test_stationary_span_frequencies_kept_and_copied():
+    from chaindrive.vibration import TensionerSpan
+
+    s = TensionerSpan(2000.0, 2.6, 0.8, 1.1, 0.3, 0.3, 3.0, 5e4)
+    first = s.frequencies(3)
+    first[0] = -1.0  # the caller's own copy
+    again = s.frequencies(3)
+    assert np.array_equal(again, tensioner_frequencies(2000.0, 2.6, 0.8, 1.1, 0.3, 0.3, 3.0, 5e4, modes=3))

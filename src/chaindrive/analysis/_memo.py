@@ -66,8 +66,10 @@ def clear() -> None:
     two_wheels._VERTEX_CACHE.clear()
     from ..kinematics import entry, solver
     from ..layout import wheels
+    from ..vibration import resonance
 
-    for cached in (wheels.cached_pitch_radius, solver._cumulative, entry._checked_seats, entry._chordal_rod_schedule):
+    for cached in (wheels.cached_pitch_radius, solver._cumulative, entry._checked_seats, entry._chordal_rod_schedule,
+                   resonance._stationary_frequencies):
         cached.cache_clear()
     from ..loads.safety import required_static_safety_for
 
