@@ -283,7 +283,7 @@ def _period_seats(case: _Case, seats: np.ndarray) -> np.ndarray:
     """The seating angles within one period, sorted (the exact model's ``seats``)."""
     T = case.period
     s = np.mod(seats[:-1], T)
-    return np.sort(np.where(np.isclose(s, T, rtol=0, atol=1e-12), 0.0, s))
+    return np.sort(np.where(np.abs(s - T) <= 1e-12, 0.0, s))  # np.isclose(s, T, rtol=0, atol=1e-12)
 
 
 @lru_cache(maxsize=64)
@@ -644,7 +644,7 @@ def chain_entry(
         if not np.all(np.isfinite(phi_arr)):
             raise InputError("phi must be finite [rad] (-inf < phi < inf)")
     ev = np.atleast_1d(phi_arr).astype(float).copy()
-    at_end = np.isclose(np.mod(ev, T), 0.0, rtol=0, atol=1e-14) & (ev > 0)
+    at_end = (np.abs(np.mod(ev, T)) <= 1e-14) & (ev > 0)  # np.isclose(.., 0, rtol=0, atol=1e-14)
     ev[at_end] = np.nextafter(ev[at_end], -np.inf)  # left limit at the period end
     try:
         if model == "exact":  # the angles asked for and the summary's in one call
