@@ -129,3 +129,22 @@ def test_loop_length_in_floats_equals_the_array_path():
         ref = float(_loop_lengths(c[None], r, s)[0])
         got = _loop_length(c[:, 0].tolist(), c[:, 1].tolist(), r.tolist(), s.tolist())
         assert got == ref or (got == ref == -np.inf)
+
+
+@settings(max_examples=60, deadline=None)
+@given(z1=st.integers(3, 90), z2=st.integers(3, 90), gap=st.floats(1.0001, 6.0), n=st.integers(1, 8),
+       shift=st.floats(0.0, 6.3))
+def test_regular_polygons_find_the_same_bridges_without_a_search(z1, z2, gap, n, shift):
+    # a roller chain's wheels: the extreme vertex is the one nearest the direction; the same
+    # vertices, the same perimeters as the search over every vertex
+    p = 0.0254
+    v1, v2, r1, r2 = _pairs(p, z1, z2, 0.0, None, n, shift)
+    a = (r1 + r2) * gap
+    v2 = _shifted(v2, a)
+    ph1 = shift + np.arange(n) * (2 * np.pi / z1) / n
+    ph2 = np.arange(n) * (2 * np.pi / z2) / n
+    s1, s2 = edge_sums(v1), edge_sums(v2)
+    searched = bridge_perimeters(v1, v2, s1, s2, r1, r2, a, vertices=True)
+    nearest = bridge_perimeters(v1, v2, s1, s2, r1, r2, a, vertices=True, regular=(ph1, z1, ph2, z2))
+    np.testing.assert_allclose(nearest[0], searched[0], rtol=1e-15, atol=0)
+    np.testing.assert_allclose(nearest[0], _hull_perimeters(v1, v2), rtol=1e-13, atol=0)

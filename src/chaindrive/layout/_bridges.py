@@ -48,12 +48,15 @@ def edge_sums(vertices: np.ndarray) -> np.ndarray:
 
 
 def bridge_perimeters(v1: np.ndarray, v2: np.ndarray, cum1: np.ndarray, cum2: np.ndarray,
-                      r1: float, r2: float, a: float, *, vertices: bool = False) -> Any:
+                      r1: float, r2: float, a: float, *, vertices: bool = False,
+                      regular: tuple[np.ndarray, int, np.ndarray, int] | None = None) -> Any:
     """Hull perimeter of every pair: ``v1`` (A, n1, 2) round the origin, ``v2`` (B, n2, 2)
     round ``(a, 0)``, ``cum1``, ``cum2`` their :func:`edge_sums`, ``r1``, ``r2`` the largest
     vertex radii, ``a > r1 + r2``. Returns (A, B) [m]; NaN where a bridge did not settle.
     With ``vertices``: also the bridges' vertices, ``k1``, ``k2`` of shape (2, A, B)
-    (upper, lower)."""
+    (upper, lower). ``regular``: ``(phases_1, z1, phases_2, z2)`` when both are regular
+    polygons with vertex ``k`` at ``phase + 2πk/z`` on their circles: the vertex extreme in a
+    direction is then the one whose angle is nearest (no search over the vertices)."""
     A, n1 = v1.shape[:2]
     B, n2 = v2.shape[:2]
     x1, y1 = v1[..., 0], v1[..., 1]               # (A, n1)
@@ -66,10 +69,18 @@ def bridge_perimeters(v1: np.ndarray, v2: np.ndarray, cum1: np.ndarray, cum2: np
     rows2 = np.arange(B)[None, None, :]
     k1 = k2 = None
     settled = np.zeros((2, A, B), dtype=bool)
+    if regular is not None:
+        ph1, z1, ph2, z2 = regular
+        f1, f2 = z1 / (2 * math.pi), z2 / (2 * math.pi)
+        ph1, ph2 = np.asarray(ph1, dtype=float)[None, :, None], np.asarray(ph2, dtype=float)[None, None, :]
     for _ in range(MAX_STEPS):
-        c, s = np.cos(nu), np.sin(nu)
-        n_k1 = np.argmax(x1[None, :, None, :] * c[..., None] + y1[None, :, None, :] * s[..., None], axis=-1)
-        n_k2 = np.argmax(x2[None, None, :, :] * c[..., None] + y2[None, None, :, :] * s[..., None], axis=-1)
+        if regular is not None:
+            n_k1 = np.rint((nu - ph1) * f1).astype(np.intp) % z1
+            n_k2 = np.rint((nu - ph2) * f2).astype(np.intp) % z2
+        else:
+            c, s = np.cos(nu), np.sin(nu)
+            n_k1 = np.argmax(x1[None, :, None, :] * c[..., None] + y1[None, :, None, :] * s[..., None], axis=-1)
+            n_k2 = np.argmax(x2[None, None, :, :] * c[..., None] + y2[None, None, :, :] * s[..., None], axis=-1)
         if k1 is not None:
             settled = (n_k1 == k1) & (n_k2 == k2)
             if settled.all():
@@ -78,9 +89,9 @@ def bridge_perimeters(v1: np.ndarray, v2: np.ndarray, cum1: np.ndarray, cum2: np
         wx = x2[rows2, k2] - x1[rows1, k1]
         wy = y2[rows2, k2] - y1[rows1, k1]
         # outward normal: the upper bridge runs from P2 to P1 (-w), the lower from P1 to P2 (w)
-        nu = np.where(np.arange(2)[:, None, None] == 0, np.arctan2(wx, -wy), np.arctan2(-wx, wy))
-    wx = x2[rows2, k2] - x1[rows1, k1]
-    wy = y2[rows2, k2] - y1[rows1, k1]
+        nu = np.empty_like(wx)
+        nu[0] = np.arctan2(wx[0], -wy[0])
+        nu[1] = np.arctan2(-wx[1], wy[1])
     bridges = np.hypot(wx, wy).sum(axis=0)
     own1 = cum1[:, -1][:, None]
     own2 = cum2[:, -1][None, :]

@@ -359,7 +359,7 @@ def _perimeters(p, z1, z2, a, d, ph1, ph2, bridges=None):
     v2a = _shifted(v2, a)
     if a > (r1 + r2) * (1.0 + 1e-9):
         out, k1, k2 = bridge_perimeters(v1, v2a, _edge_sums(p, z1, ph1, d), _edge_sums(p, z2, ph2, d),
-                                        r1, r2, a, vertices=True)
+                                        r1, r2, a, vertices=True, regular=None if d else (ph1, z1, ph2, z2))
         if not np.isnan(out).any():
             if bridges is not None:
                 bridges["k"] = (k1, k2)
