@@ -148,3 +148,20 @@ def test_regular_polygons_find_the_same_bridges_without_a_search(z1, z2, gap, n,
     nearest = bridge_perimeters(v1, v2, s1, s2, r1, r2, a, vertices=True, regular=(ph1, z1, ph2, z2))
     np.testing.assert_allclose(nearest[0], searched[0], rtol=1e-15, atol=0)
     np.testing.assert_allclose(nearest[0], _hull_perimeters(v1, v2), rtol=1e-13, atol=0)
+
+
+def test_loop_length_with_fixed_spans_equals_computing_every_span():
+    from chaindrive.layout.wrap import _loop_length, _span_scalar
+
+    rng = np.random.default_rng(5)
+    for _ in range(200):
+        n = int(rng.integers(3, 8))
+        ang = np.sort(rng.uniform(0, 2 * np.pi, n))
+        c = np.stack([np.cos(ang), np.sin(ang)], 1) * rng.uniform(1.0, 2.0, n)[:, None]
+        r, s = rng.uniform(0.05, 0.2, n).tolist(), [1.0] * n
+        xs, ys = c[:, 0].tolist(), c[:, 1].tolist()
+        k = int(rng.integers(0, n))
+        rho = [a * b for a, b in zip(s, r, strict=True)]
+        fixed = [None if i in ((k - 1) % n, k) else _span_scalar(xs, ys, rho, i) for i in range(n)]
+        xs[k] += 0.01
+        assert _loop_length(xs, ys, r, s, fixed) == _loop_length(xs, ys, r, s)

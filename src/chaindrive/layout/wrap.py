@@ -199,22 +199,33 @@ def _loop_lengths(centres: np.ndarray, radii: np.ndarray, sides: np.ndarray) -> 
     return np.where(ok, length, -np.inf)
 
 
-def _loop_length(xs: list[float], ys: list[float], radii: list[float], sides: list[float]) -> float:
+def _span_scalar(xs: list[float], ys: list[float], rho: list[float], i: int) -> tuple[float, float] | None:
+    """Direction and length of span ``i`` as :func:`_loop_lengths` has them, or ``None`` where
+    the span has no common tangent."""
+    j = i + 1 if i + 1 < len(xs) else 0
+    dx, dy = xs[j] - xs[i], ys[j] - ys[i]
+    D = float(np.hypot(dx, dy))
+    drho = rho[j] - rho[i]
+    if not D > abs(drho):
+        return None
+    return float(np.arctan2(dy, dx)) - float(np.arcsin(drho / D)), math.sqrt(D * D - drho * drho)
+
+
+def _loop_length(xs: list[float], ys: list[float], radii: list[float], sides: list[float],
+                 fixed: list[tuple[float, float] | None] | None = None) -> float:
     """:func:`_loop_lengths` of one layout of up to 7 wheels in Python floats (the same
     numbers: the same operations, numpy's own arc tangent and arc sine, the sums in order),
-    for the scalar root searches."""
+    for the scalar root searches; ``fixed``: the spans (:func:`_span_scalar`) that do not change
+    between the calls, ``None`` for those computed each time."""
     n = len(xs)
     rho = [s * r for s, r in zip(sides, radii, strict=True)]
     alpha, ell = [], []
     for i in range(n):
-        j = i + 1 if i + 1 < n else 0
-        dx, dy = xs[j] - xs[i], ys[j] - ys[i]
-        D = float(np.hypot(dx, dy))
-        drho = rho[j] - rho[i]
-        if not D > abs(drho):
+        span = fixed[i] if fixed is not None and fixed[i] is not None else _span_scalar(xs, ys, rho, i)
+        if span is None:
             return -math.inf
-        alpha.append(float(np.arctan2(dy, dx)) - float(np.arcsin(drho / D)))
-        ell.append(math.sqrt(D * D - drho * drho))
+        alpha.append(span[0])
+        ell.append(span[1])
     total = arcs = length = 0.0
     for i in range(n):
         turn = (sides[i] * (alpha[i] - alpha[i - 1])) % (2 * math.pi)
