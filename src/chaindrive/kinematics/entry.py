@@ -63,7 +63,7 @@ from __future__ import annotations
 import dataclasses
 from dataclasses import dataclass
 from functools import lru_cache
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING, Any, cast
 
 import numpy as np
 from numpy.typing import ArrayLike
@@ -505,6 +505,7 @@ def _summary(case: _Case, model: str, seats, first: np.ndarray | None = None) ->
     jumps = np.asarray(jump_list)
     if case.entry == "free":
         throw = float(case.R - case.R * np.cos(0.5 * max(case.d1, case.d2)))
+        y = cast(np.ndarray, y)  # free entry: every model gives the transverse motion
         throw = max(throw, float(np.max(y) - np.min(y)))
     else:
         throw = 0.0

@@ -67,7 +67,8 @@ def bridge_perimeters(v1: np.ndarray, v2: np.ndarray, cum1: np.ndarray, cum2: np
     nu[0], nu[1] = nu0, -nu0
     rows1 = np.arange(A)[None, :, None]
     rows2 = np.arange(B)[None, None, :]
-    k1 = k2 = None
+    k1: Any = None
+    k2: Any = None
     settled = np.zeros((2, A, B), dtype=bool)
     if regular is not None:
         ph1, z1, ph2, z2 = regular
