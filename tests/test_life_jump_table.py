@@ -231,3 +231,13 @@ def test_worn_state_margin_is_the_compliant_wraps(roller_drive):
     s = worn_state(roller_drive(), a.layout, a.loads, a.life, elongation=0.02)
     got = jump_onset(P16B, 19, D16B, 0.02, back_tension=lo, seated=int(a.layout.teeth_in_mesh[0]), warn=False)
     assert s.jump_over_margin[0] == pytest.approx(got.load_ratio * lo / hi, rel=1e-9)
+
+
+def test_studio_shows_the_compliant_margin():
+    # the studio lists the life part's checks as the analysis gives them: the jump-over margin there
+    # is the compliant wrap's (the same number as results.json's life.jump_over_margin)
+    from chaindrive.web import studio as S
+
+    p = S.studio_payload(S.normalise_state({}))
+    shown = [c for c in p["checks"] if c["name"].startswith("jump-over margin on")]
+    assert shown and all(c["limit"] == 1.0 and "Marshek" in c["source"] for c in shown)
