@@ -142,6 +142,7 @@ def test_jump_onset_warns_outside_the_table():
     ({"elongation": 0.5, "load": 3000.0}, "can hold"),  # a tooth form that cannot hold the worn chain
     ({"elongation": 0.02, "load": 3000.0, "teeth": 17.5}, "whole number"),
     ({"elongation": 0.02, "load": 3000.0, "axial_stiffness": 0.0}, "axial_stiffness"),
+    ({"elongation": 0.02, "load": 3000.0, "seated": 2.5}, "seated must be a whole number"),
 ])
 def test_jump_onset_bad_input(kwargs, match):
     args = {"pitch": P16B, "teeth": 19, "roller_diameter": D16B, **kwargs}

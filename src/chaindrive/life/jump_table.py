@@ -211,6 +211,8 @@ def jump_onset(pitch: float, teeth: int, roller_diameter: float, elongation: Arr
     ea = _EA_16B * (p / 0.0254) ** 2 if axial_stiffness is None else float(
         check_positive("axial_stiffness", axial_stiffness, "N"))
     n = int(z) // 2 if seated is None else int(check_positive("seated", seated))
+    if seated is not None and n != seated:
+        raise InputError(f"seated must be a whole number of rollers, got {seated}", field="seated")
     e = np.asarray(check_nonnegative("elongation", elongation), float)
     flat = e.ravel()
     beta = np.atleast_1d(np.asarray(tension_ratio(p, int(z), roller_diameter, flat), float))  # refuses e > e_hold
