@@ -10,7 +10,7 @@ uniformly seated model
 
 (``ρ_jump`` the onset's load ratio ``M/(R_e T_2)``, ``β`` of
 :func:`chaindrive.life.tension_ratio`, ``n`` the rollers of the half wrap,
-``teeth_in_mesh(π, z)``), which varies far more slowly over the inputs than ``ρ_jump``:
+``teeth_in_mesh(π, z)``; ``β^-n`` is computed exactly where the table is used), over:
 
 - ``teeth`` ``z``;
 - ``s = e / e_hold``: the elongation over the tooth form's holding limit
