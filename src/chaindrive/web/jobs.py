@@ -30,7 +30,7 @@ from pathlib import Path
 from typing import Any
 
 from ..errors import ChainDriveError
-from .workers import LIVE_NICENESS, worker_setup
+from .workers import worker_setup
 
 __all__ = ["Busy", "Job", "JobManager", "Gate"]
 
@@ -265,7 +265,7 @@ class Gate:
 
         if self._pools[slot] is None:
             self._pools[slot] = ProcessPoolExecutor(max_workers=1, mp_context=_context(),
-                                                    initializer=worker_setup, initargs=(os.getpid(), LIVE_NICENESS))
+                                                    initializer=worker_setup, initargs=(os.getpid(),))
         return self._pools[slot]
 
     async def run(self, fn: Callable[..., Any], *args: Any) -> Any:

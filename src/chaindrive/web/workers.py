@@ -8,17 +8,12 @@ import os
 import threading
 import time
 
-__all__ = ["LIVE_NICENESS", "WORKER_NICENESS", "worker_setup"]
+__all__ = ["WORKER_NICENESS", "worker_setup"]
 
 
 #: Niceness added to worker processes: the server's own process (pages, the event loop)
 #: is served first when the CPUs are busy.
 WORKER_NICENESS = 10
-
-#: Niceness added to the live-analysis workers of the studio (:class:`chaindrive.web.jobs.Gate`):
-#: a user waits for each edit's answer, so it runs at the server's priority, ahead of the
-#: long jobs (reports, simulations) at :data:`WORKER_NICENESS`; the gate bounds its work.
-LIVE_NICENESS = 0
 
 
 def _alive(pid: int) -> bool:
@@ -42,17 +37,14 @@ def _watch(server_pid: int) -> None:
             os._exit(0)
 
 
-def worker_setup(server_pid: int | None = None, niceness: int = WORKER_NICENESS) -> None:
-    """Set up a worker process: lower its CPU priority by ``niceness`` (default
-    :data:`WORKER_NICENESS`), and end it when the server process ``server_pid`` is gone (a
-    worker forked from the forkserver would otherwise outlive a killed server, and keep the
-    forkserver alive with it)."""
+def worker_setup(server_pid: int | None = None) -> None:
+    """Set up a worker process: lower its CPU priority by :data:`WORKER_NICENESS`, and end
+    it when the server process ``server_pid`` is gone (a worker forked from the forkserver
+    would otherwise outlive a killed server, and keep the forkserver alive with it)."""
     try:
         # CHAINDRIVE_WEB_NICENESS overrides the niceness (the browser tests run the server
         # beside a busy test suite and keep its workers at the suite's priority)
-        nice = int(os.environ.get("CHAINDRIVE_WEB_NICENESS", niceness))
-        if nice:
-            os.nice(nice)
+        os.nice(int(os.environ.get("CHAINDRIVE_WEB_NICENESS", WORKER_NICENESS)))
     except (OSError, AttributeError, ValueError):  # pragma: no cover - not permitted, not POSIX, bad value
         pass
     if server_pid is not None:
