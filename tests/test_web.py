@@ -264,6 +264,34 @@ def test_api_design_and_charts(client):
     assert charts["rating"]["data"] and charts["campbell"]["data"] and charts["resonance_map"]["data"]
 
 
+def test_api_design_body_is_the_studio_payload(client):
+    # the worker writes the JSON body (studio_json): the answer is studio_payload's, as FastAPI wrote it
+    from chaindrive.web.studio import charts_payload
+
+    for state in ({}, MINING_EXAMPLE, {"power": "not a power"}):
+        r = client.get("/api/design?" + _query(state))
+        assert r.status_code == 200 and r.headers["content-type"] == "application/json"
+        got, want = r.json(), studio_payload(normalise_state(state))
+        for timing in ("elapsed_ms", "cpu_ms"):
+            assert isinstance(got.pop(timing, 0.0), float) == isinstance(want.pop(timing, 0.0), float)
+        assert got == json.loads(json.dumps(want))
+    charts = client.get("/api/design/charts?" + _query(MINING_EXAMPLE))
+    assert charts.json() == json.loads(json.dumps(charts_payload(normalise_state(MINING_EXAMPLE))))
+
+
+def test_json_bytes_refuses_what_is_not_json():
+    import numpy as np
+
+    from chaindrive.web.studio import json_bytes
+
+    assert json.loads(json_bytes({"a": np.float64(1.5), "b": np.int64(2), "c": np.arange(2)})) == {
+        "a": 1.5, "b": 2, "c": [0, 1]}
+    with pytest.raises(ValueError, match="Out of range float values"):
+        json_bytes({"a": float("nan")})
+    with pytest.raises(TypeError, match="object is not JSON serialisable"):
+        json_bytes({"a": object()})
+
+
 def test_kinematics_api_bounds(client):
     base = {"chain": "18x64", "teeth": 8, "speed": "5 rad/s", "entry": "tangential", "guide_end": "256 mm"}
     r = client.get("/api/kinematics", params=base)
