@@ -20,7 +20,7 @@ from chaindrive.drive.model import Conveyor, Drive, Load, Tensioner, Wheel
 from chaindrive.errors import InputError
 from chaindrive.simulation import SimWheel, link_example, roller_example
 from chaindrive.simulation import _kernel as K
-from chaindrive.simulation._batched import empty_batch_records, integrate_batch, stack_tables
+from chaindrive.simulation._batched import LANES, empty_batch_records, integrate_batch, stack_tables
 from chaindrive.simulation.from_drive import model_from_drive
 from chaindrive.simulation.steady import steady_state, warm_start
 from chaindrive.simulation.steady_batch import batch_step, steady_states
@@ -93,6 +93,25 @@ def test_batched_kernel_equals_the_single_kernel_per_variant(models):
         np.testing.assert_array_equal(recs[1][v], r1[2])   # link tensions
         np.testing.assert_array_equal(recs[2][v], r1[4])   # wheel states
         np.testing.assert_array_equal(recs[3][v], r1[5])   # positions
+
+
+def test_more_variants_than_one_block_of_lanes():
+    # LANES + 2 variants: two blocks of the contact loop, the second one partly filled
+    # (one drive, each variant with its own link damping)
+    model = roller_example(links=30, teeth=9, angular_velocity=10.0, load_torque=20.0, gravity=False)
+    start = warm_start(model)
+    states = []
+    for v in range(LANES + 2):
+        par = start.par.copy()
+        par[K.P_DT] = model.stable_time_step()
+        par[K.P_C] *= 1.0 + 0.01 * v
+        states.append(dataclasses.replace(start, par=par))
+    pos, vel, ws, _, _ = _batched(states, 300, 100)
+    for v in (0, LANES - 1, LANES, LANES + 1):
+        p1, v1, w1, _ = _single(states[v], 300, 100)
+        np.testing.assert_array_equal(pos[v], p1)
+        np.testing.assert_array_equal(vel[v], v1)
+        np.testing.assert_array_equal(ws[v], w1)
 
 
 def test_seat_tables_padded_to_the_largest_wheel():
