@@ -63,7 +63,7 @@ from __future__ import annotations
 import dataclasses
 from dataclasses import dataclass
 from functools import lru_cache
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING, Any, cast
 
 import numpy as np
 from numpy.typing import ArrayLike
@@ -71,12 +71,12 @@ from numpy.typing import ArrayLike
 from .._deprecation import renamed_attributes as _renamed_attributes
 from .._finite import finite_guard
 from .._registry import Registry
-from .._results import Result, quantity
+from .._results import quantity
 from .._validation import as_float_array, check_nonnegative, check_positive, check_teeth
 from ..errors import InfeasibleError, InputError
 from ..geometry.polygon import bi_regular_polygon, roller_chain_pitch_radius
 from . import paper as _paper
-from .histories import PaperEntry
+from .histories import PaperEntry, PeriodMotion
 from .solver import (
     GuideEnd,
     WheelPolygon,
@@ -152,8 +152,9 @@ SUMMARY_QUANTITIES: dict[str, tuple[str, str]] = {
 
 
 @dataclass(frozen=True)
-class EntryKinematics(Result):
-    """Kinematics of the chain over the requested wheel angles.
+class EntryKinematics(PeriodMotion):
+    """Kinematics of the chain over the requested wheel angles (the fields of
+    :class:`~chaindrive.kinematics.histories.PeriodMotion` first).
 
     Attributes
     ----------
@@ -184,18 +185,14 @@ class EntryKinematics(Result):
         Entry type and model.
     chain_type : str
         ``"link"`` or ``"roller"``.
-    pitch, bar_diameter, radius : float
-        ``t`` (``p``), ``d`` (0 for a roller chain), ``R`` [m].
-    teeth : int
-        ``z``.
-    angular_velocity : float
-        ``ω`` [rad/s].
+    pitch, radius, teeth, angular_velocity, period
+        ``t`` (``p``), ``R`` [m], ``z``, ``ω`` [rad/s], ``2π/z`` [rad] (:class:`PeriodMotion`).
+    bar_diameter : float
+        ``d`` [m] (0 for a roller chain).
     delta1, delta2 : float
         Central angles [rad].
     guide_height, guide_end_distance : float or None
         ``H``, ``l`` [m].
-    period : float
-        ``2π/z`` [rad].
     seating_angles : ndarray
         Wheel angles of the seatings inside ``[0, 2π/z)`` (exact model, and tangential
         paper model ``φ_g1, φ_g2``) [rad].
@@ -203,25 +200,17 @@ class EntryKinematics(Result):
 
     phi: np.ndarray = quantity("rad")
     x: np.ndarray = quantity("m")
-    velocity: np.ndarray = quantity("m/s")
-    acceleration: np.ndarray = quantity("m/s^2")
     transverse_position: np.ndarray | None = quantity("m")
     transverse_velocity: np.ndarray | None = quantity("m/s")
     transverse_acceleration: np.ndarray | None = quantity("m/s^2")
-    summary: dict
     entry: str
     model: str
     chain_type: str
-    pitch: float = quantity("m")
     bar_diameter: float = quantity("m")
-    teeth: int = quantity("1")
-    angular_velocity: float = quantity("rad/s")
-    radius: float = quantity("m")
     delta1: float = quantity("rad")
     delta2: float = quantity("rad")
     guide_height: float | None = quantity("m")
     guide_end_distance: float | None = quantity("m")
-    period: float = quantity("rad")
     seating_angles: np.ndarray = quantity("rad", default_factory=lambda: np.zeros(0))
 
 
@@ -276,10 +265,14 @@ def _exact(case: _Case, phi):
     guide = case.guide()
     seats = _checked_seats(case)
     r = taut_entry(poly, phi, case.w, guide, seats)
+    return dataclasses.replace(r, seats=_period_seats(case, seats), advance=poly.advance)
+
+
+def _period_seats(case: _Case, seats: np.ndarray) -> np.ndarray:
+    """The seating angles within one period, sorted (the exact model's ``seats``)."""
     T = case.period
     s = np.mod(seats[:-1], T)
-    return dataclasses.replace(r, seats=np.sort(np.where(np.isclose(s, T, rtol=0, atol=1e-12), 0.0, s)),
-                               advance=poly.advance)
+    return np.sort(np.where(np.abs(s - T) <= 1e-12, 0.0, s))  # np.isclose(s, T, rtol=0, atol=1e-12)
 
 
 @lru_cache(maxsize=64)
@@ -463,41 +456,60 @@ def _explain_infeasible(case: _Case, model: str, exc: Exception):
     raise InfeasibleError(msg) from None
 
 
-def _summary(case: _Case, model: str, seats) -> dict:
+def _summary(case: _Case, model: str, seats, first: np.ndarray | None = None) -> Any:
+    """The summary of the entry (seats: the model's seating angles in one period). With
+    ``first`` (the exact model): also the entry at those angles, from the same call of the
+    model (a pointwise model: the same numbers), as ``(summary, entry)``."""
     T = case.period
     base = np.linspace(0.0, T, 4001)
     eps = 1e-9 * T
     extra = np.concatenate([seats - eps, seats + eps, [T - eps, eps, T - 1e-4 * T, 1e-4 * T]])
     extra = extra[(extra > 0) & (extra < T)]
     grid = np.sort(np.concatenate([base[:-1], extra]))
-    r = _run(case, model, grid)
-    v, a = r.velocity, r.acceleration
+    s_in = np.asarray(seats, dtype=float)
+    s_in = s_in[(s_in > eps) & (s_in < T - eps)]
+    # one-sided limits of the acceleration at the period end (left) and start (right), and
+    # at the seatings (and resets) inside the period
+    ends = np.array([T - 1e-12 * T, 1e-12 * T])
+    head = None
+    if model == "exact":  # a pointwise model: every angle in one call (the same numbers)
+        n0 = 0 if first is None else first.size
+        m = n0 + grid.size
+        r = _run(case, model, np.concatenate([[] if first is None else first, grid, ends, s_in - 1e-12 * T,
+                                              s_in + 1e-12 * T]))
+        limits = r.acceleration[m:]
+        v, a, y = r.velocity[n0:m], r.acceleration[n0:m], None if r.y is None else r.y[n0:m]
+        if first is not None:
+            head = dataclasses.replace(r, **{f.name: getattr(r, f.name)[:n0] for f in dataclasses.fields(r)
+                                             if f.name not in ("seats", "advance")
+                                             and isinstance(getattr(r, f.name), np.ndarray)})
+    else:
+        r = _run(case, model, grid)
+        limits = np.concatenate([_run(case, model, ends[:1])["acceleration"],
+                                 _run(case, model, ends[1:])["acceleration"]]
+                                + ([_run(case, model, s_in - 1e-12 * T)["acceleration"],
+                                    _run(case, model, s_in + 1e-12 * T)["acceleration"]] if s_in.size else []))
+        v, a, y = r.velocity, r.acceleration, getattr(r, "y", None)
     advance = float(r.advance)
     v_mean = advance / (T / case.w)
-    # one-sided limits of the acceleration at the period end (left) and start (right)
-    a_left = float(_run(case, model, np.array([T - 1e-12 * T]))["acceleration"][0])
-    a_right = float(_run(case, model, np.array([1e-12 * T]))["acceleration"][0])
+    a_left, a_right = float(limits[0]), float(limits[1])
     amax = float(np.max(np.abs(a)))
     tol = 1e-6 * amax
     sign_change = bool((abs(a_left) > tol) and (abs(a_right) > tol) and (a_left * a_right < 0))
-    # jumps of the acceleration at the seatings (and resets) inside the period
-    s_in = np.asarray(seats, dtype=float)
-    s_in = s_in[(s_in > eps) & (s_in < T - eps)]
     jump_list = [a_right - a_left]
     sign_jumps = np.zeros(0, dtype=bool)
     if s_in.size:
-        lo = _run(case, model, s_in - 1e-12 * T)["acceleration"]
-        hi = _run(case, model, s_in + 1e-12 * T)["acceleration"]
+        lo, hi = limits[2:2 + s_in.size], limits[2 + s_in.size:]
         jump_list += list(hi - lo)
         sign_jumps = (np.abs(lo) > tol) & (np.abs(hi) > tol) & (lo * hi < 0)
     jumps = np.asarray(jump_list)
     if case.entry == "free":
-        y = r.y
         throw = float(case.R - case.R * np.cos(0.5 * max(case.d1, case.d2)))
+        y = cast(np.ndarray, y)  # free entry: every model gives the transverse motion
         throw = max(throw, float(np.max(y) - np.min(y)))
     else:
         throw = 0.0
-    return {
+    summary = {
         "v_mean": v_mean,
         "v_min": float(np.min(v)),
         "v_max": float(np.max(v)),
@@ -514,6 +526,7 @@ def _summary(case: _Case, model: str, seats) -> dict:
         "a_jump_max": float(np.max(np.abs(jumps))),
         "sign_changing_jumps": int(np.sum(sign_jumps) + sign_change),
     }
+    return summary if first is None else (summary, head)
 
 
 @finite_guard
@@ -621,15 +634,19 @@ def chain_entry(
         if not np.all(np.isfinite(phi_arr)):
             raise InputError("phi must be finite [rad] (-inf < phi < inf)")
     ev = np.atleast_1d(phi_arr).astype(float).copy()
-    at_end = np.isclose(np.mod(ev, T), 0.0, rtol=0, atol=1e-14) & (ev > 0)
+    at_end = (np.abs(np.mod(ev, T)) <= 1e-14) & (ev > 0)  # np.isclose(.., 0, rtol=0, atol=1e-14)
     ev[at_end] = np.nextafter(ev[at_end], -np.inf)  # left limit at the period end
     try:
-        r = _run(case, model, ev)
+        if model == "exact":  # the angles asked for and the summary's in one call
+            summary, r = _summary(case, model, _period_seats(case, _checked_seats(case)), ev.ravel())
+        else:
+            r = _run(case, model, ev)
     except InfeasibleError as exc:
         if case.entry == "free":
             raise
         _explain_infeasible(case, model, exc)
-    summary = _summary(case, model, np.asarray(r.seats, dtype=float))
+    if model != "exact":
+        summary = _summary(case, model, np.asarray(r.seats, dtype=float))
     shape = np.shape(phi_arr)
 
     def out(key):
