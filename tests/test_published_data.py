@@ -152,7 +152,8 @@ def test_wilson_derailleur_table():
     cogs = sorted({cog for _p, cog in table})
     powers = sorted({p for p, _cog in table})
     # the measured loss fraction falls with the power for every cog (a load-independent loss: pulleys,
-    # bearings, the slack side's tension); the model has none, its efficiency does not depend on power
+    # bearings, the slack side's tension); the model with its slack side unloaded has none, its efficiency does
+    # not depend on power (test_wilson_table_with_the_derailleur_tension adds the derailleur's)
     for cog in cogs:
         series = [table[(p, cog)] for p in powers]
         assert np.all(np.diff(series) > 0), cog

@@ -75,8 +75,9 @@ def articulation_angle(pitch: ArrayLike, pitch_radius: ArrayLike,
 
     References
     ----------
-    Binder, R. C., *Mechanics of the Roller Chain Drive*, Prentice-Hall (1956), ch. 2 (the
-    chain as a polygon on the sprocket; the articulation angle ``2π/z``).
+    ISO 606:2015, sprocket dimensions: the pitch circle diameter ``d = p / sin(180°/z)``, on
+    which the seated joints form a polygon of ``z`` sides (the angle ``2π/z`` between two
+    seated links); the wrap limit is the geometry of a chain turned by ``φ`` in all.
 
     Examples
     --------
