@@ -329,6 +329,35 @@ def test_efficiency_bad_input():
         articulation_power_loss(200.0, 5e-324, 0.0017, [6, 6], [64841.0, 0.0], [0.0, 3574.7])
 
 
+@pytest.mark.parametrize("name", ["multi_wheel", "tractor_track"])
+def test_life_efficiency_counts_every_wheel(name):
+    # the analysis' loss, rebuilt wheel by wheel from the loads and layout parts: every wheel of the loop
+    # (the take-up idler, the road wheels) at the spans arriving and leaving it, centrifugal part included,
+    # each joint turned by the polygon angle or the wheel's wrap, whichever is smaller
+    import warnings
+    from pathlib import Path
+
+    from chaindrive.analysis import analyze_drive
+    from chaindrive.drive.project import load_project
+
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        a = analyze_drive(load_project(Path(__file__).parents[1] / "examples" / f"{name}.toml"),
+                          include=["life", "loads", "layout"])
+    ch, p = a.drive.chain, a.drive.pitch
+    d = ch.pin_diameter if ch.pin_diameter is not None else ch.bar_diameter
+    spans = np.asarray(a.loads.span_tensions, float)
+    polygon = 2 * np.arcsin(p / (2 * np.asarray(a.layout.pitch_radii, float)))
+    wrap = np.asarray(a.layout.wrap.wrap_angle, float)
+    theta = np.minimum(polygon, wrap)
+    per_wheel = ARTICULATION_FRICTION * d / 2 * float(a.loads.chain_speed) / p * theta * (
+        np.roll(spans, 1) + spans + 2 * float(a.loads.centrifugal))
+    assert a.life.power_loss == pytest.approx(per_wheel.sum(), rel=1e-9)
+    assert np.all(per_wheel > 0)
+    if name == "tractor_track":
+        assert np.sum(wrap < polygon) == 2  # the two road wheels turn the track by less than a pitch
+
+
 # --------------------------------------------------------------------------- the analysis part
 def test_life_part_roller_drive(roller_drive):
     from chaindrive.analysis import analyze_drive
