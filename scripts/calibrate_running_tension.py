@@ -41,9 +41,21 @@ RANGES = {"pitch": [0.0127, 0.03175], "teeth": [13, 27], "ratio": [1.0, 3.5], "r
 START = [0.45, 0.9, -0.5]
 
 
-def load() -> dict[str, np.ndarray]:
+def load(reference: str = "short") -> dict[str, np.ndarray]:
+    """The cached sweep as arrays; ``reference="long"``: only the drives of the long reference
+    (``benchmarks/data/dynamic_sweep_long*.csv``), their ``sim_peak`` and ``sim_mean`` replaced
+    by its ``long_peak`` and ``long_mean``, with its window extremes ``window_peak_low`` and
+    ``window_peak_high``."""
     with SWEEP.open() as f:
         rows = list(csv.DictReader(f))
+    if reference == "long":
+        long: dict[str, dict[str, str]] = {}
+        for path in sorted(SWEEP.parent.glob("dynamic_sweep_long*.csv")):
+            with path.open() as f:
+                long.update({r["name"]: r for r in csv.DictReader(f)})
+        rows = [{**r, "sim_peak": long[r["name"]]["long_peak"], "sim_mean": long[r["name"]]["long_mean"],
+                 "window_peak_low": long[r["name"]]["window_peak_low"],
+                 "window_peak_high": long[r["name"]]["window_peak_high"]} for r in rows if r["name"] in long]
     out = {k: np.array([float(r[k]) for r in rows]) for k in rows[0] if k not in ("name", "chain")}
     out["index"] = np.array([int(r["name"][1:]) for r in rows])
     return out
@@ -79,6 +91,18 @@ def crossvalidate(a: dict[str, np.ndarray], f: Callable[[np.ndarray, dict[str, n
         test = a["index"] % folds == k
         c = fit(a, ~test, f, start)
         err[test] = f(c, subset(a, test)) / a["sim_peak"][test] - 1
+    return err
+
+
+def leave_one_out(a: dict[str, np.ndarray], f: Callable[[np.ndarray, dict[str, np.ndarray]], np.ndarray] = model,
+                  start: list[float] = START) -> np.ndarray:
+    """Out-of-sample relative errors: each drive predicted by the constants fitted on all the others."""
+    n = len(a["index"])
+    err = np.empty(n)
+    for i in range(n):
+        keep = np.arange(n) != i
+        c = fit(a, keep, f, start)
+        err[i] = f(c, subset(a, ~keep))[0] / a["sim_peak"][i] - 1
     return err
 
 

@@ -36,7 +36,7 @@ from ..units import angular_velocity_to_rpm
 
 __all__ = ["PALMGREN_LINE_CONTACT", "RunningTensionCalibration", "calibration", "seat_contact_stiffness",
            "seating_impact_velocity", "seating_impact_force", "running_peak_tension",
-           "check_running_tension_range"]
+           "running_tension_range_violations", "check_running_tension_range"]
 
 #: Palmgren's roller–raceway (steel on steel line contact) deformation
 #: ``δ = 3.84e-5 Q^0.9 / l^0.8`` (δ in mm, Q in N, l in mm); in SI
@@ -303,11 +303,10 @@ def running_peak_tension(tight_tension: ArrayLike, angular_velocity: ArrayLike, 
     return np.asarray(ft * (1.0 + c.coefficient * x**c.impact_exponent * (z / c.reference_teeth) ** c.teeth_exponent))
 
 
-def check_running_tension_range(*, pitch: float, teeth: float, teeth_driven: float, angular_velocity: float,
-                                centre_distance: float, pull: float, breaking_force: float, wheels: int = 2,
-                                stacklevel: int = 3) -> None:
-    """Warn (:class:`chaindrive.errors.ValidityRangeWarning`) for each input of
-    :func:`running_peak_tension` outside the calibration sweep's range.
+def running_tension_range_violations(*, pitch: float, teeth: float, teeth_driven: float, angular_velocity: float,
+                                     centre_distance: float, pull: float, breaking_force: float,
+                                     wheels: int = 2) -> tuple[tuple[str, float, float, float], ...]:
+    """The inputs of :func:`running_peak_tension` outside the calibration sweep's range.
 
     Parameters
     ----------
@@ -325,6 +324,44 @@ def check_running_tension_range(*, pitch: float, teeth: float, teeth_driven: flo
         Chain's ``F_B`` [N] (all strands).
     wheels : int
         Wheels of the drive (the sweep's drives have two).
+
+    Returns
+    -------
+    tuple of (name, value, low, high)
+        One entry per quantity outside its range (``calibration().ranges``); empty inside.
+
+    Examples
+    --------
+    >>> running_tension_range_violations(pitch=0.0254, teeth=19, teeth_driven=57, angular_velocity=100.5,
+    ...                                  centre_distance=1.05, pull=1940.0, breaking_force=60e3)
+    ()
+    >>> [v[0] for v in running_tension_range_violations(pitch=0.0254, teeth=19, teeth_driven=57,
+    ...     angular_velocity=100.5, centre_distance=1.05, pull=1940.0, breaking_force=60e3, wheels=3)]
+    ['wheels']
+    """
+    given = {"pitch": pitch, "teeth": teeth, "teeth_driven": teeth_driven, "angular_velocity": angular_velocity,
+             "centre_distance": centre_distance, "pull": pull, "breaking_force": breaking_force}
+    pitch, teeth, teeth_driven, angular_velocity, centre_distance, pull, breaking_force = (
+        float(check_positive(name, value)) for name, value in given.items())
+    r = calibration().ranges
+    values = {"pitch": pitch, "teeth": teeth, "ratio": teeth_driven / teeth, "rpm": float(angular_velocity_to_rpm(angular_velocity)),
+              "chain_speed": angular_velocity * teeth * pitch / (2 * math.pi), "centre_pitches": centre_distance / pitch,
+              "pull_ratio": pull / breaking_force, "wheels": float(wheels)}
+    return tuple((name, value, *r[name]) for name, value in values.items()
+                 if not r[name][0] <= value <= r[name][1])
+
+
+def check_running_tension_range(*, pitch: float, teeth: float, teeth_driven: float, angular_velocity: float,
+                                centre_distance: float, pull: float, breaking_force: float, wheels: int = 2,
+                                stacklevel: int = 3) -> None:
+    """Warn (:class:`chaindrive.errors.ValidityRangeWarning`) for each input of
+    :func:`running_peak_tension` outside the calibration sweep's range
+    (:func:`running_tension_range_violations`).
+
+    Parameters
+    ----------
+    pitch, teeth, teeth_driven, angular_velocity, centre_distance, pull, breaking_force, wheels
+        As :func:`running_tension_range_violations`.
     stacklevel : int
         For the warning.
 
@@ -338,17 +375,10 @@ def check_running_tension_range(*, pitch: float, teeth: float, teeth_driven: flo
     >>> len(w)
     0
     """
-    given = {"pitch": pitch, "teeth": teeth, "teeth_driven": teeth_driven, "angular_velocity": angular_velocity,
-             "centre_distance": centre_distance, "pull": pull, "breaking_force": breaking_force}
-    pitch, teeth, teeth_driven, angular_velocity, centre_distance, pull, breaking_force = (
-        float(check_positive(name, value)) for name, value in given.items())
-    r = calibration().ranges
     source = "the running peak tension model (its calibration sweep)"
-    values = {"pitch": pitch, "teeth": teeth, "ratio": teeth_driven / teeth, "rpm": float(angular_velocity_to_rpm(angular_velocity)),
-              "chain_speed": angular_velocity * teeth * pitch / (2 * math.pi), "centre_pitches": centre_distance / pitch,
-              "pull_ratio": pull / breaking_force, "wheels": float(wheels)}
-    for name, value in values.items():
-        low, high = r[name]
+    for name, value, low, high in running_tension_range_violations(
+            pitch=pitch, teeth=teeth, teeth_driven=teeth_driven, angular_velocity=angular_velocity,
+            centre_distance=centre_distance, pull=pull, breaking_force=breaking_force, wheels=wheels):
         warn_outside(name, value, low, high, source, stacklevel=stacklevel + 1)
 
 
