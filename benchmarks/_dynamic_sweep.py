@@ -246,19 +246,7 @@ def long_row(s: SweepDrive, windows: int = LONG_WINDOWS, length: float = LONG_WI
 
 def run_long(drives: list[SweepDrive], path: Path = LONG_CACHE) -> Iterator[LongRow]:
     """Simulate the long reference of the drives not yet in its cache, appending each row."""
-    path.parent.mkdir(parents=True, exist_ok=True)
-    done = {r["name"] for r in read_cache(path)} if path.exists() else set()
-    for s in drives:
-        if s.name in done:
-            continue
-        row = long_row(s)
-        new = not path.exists()
-        with path.open("a", newline="") as f:
-            w = csv.DictWriter(f, fieldnames=list(asdict(row)))
-            if new:
-                w.writeheader()
-            w.writerow(asdict(row))
-        yield row
+    return _cached_rows(drives, path, long_row)
 
 
 def steady_row(s: SweepDrive) -> dict[str, Any]:
@@ -277,18 +265,7 @@ def steady_row(s: SweepDrive) -> dict[str, Any]:
 
 def run_steady(drives: list[SweepDrive], path: Path = STEADY_CACHE) -> Iterator[dict[str, Any]]:
     """The steady state of the drives not yet in its cache, appending each row."""
-    done = {r["name"] for r in read_cache(path)} if path.exists() else set()
-    for s in drives:
-        if s.name in done:
-            continue
-        row = steady_row(s)
-        new = not path.exists()
-        with path.open("a", newline="") as f:
-            w = csv.DictWriter(f, fieldnames=list(row))
-            if new:
-                w.writeheader()
-            w.writerow(row)
-        yield row
+    return _cached_rows(drives, path, steady_row)
 
 
 def read_cache(path: Path = CACHE) -> list[dict[str, float | str]]:
@@ -300,18 +277,25 @@ def read_cache(path: Path = CACHE) -> list[dict[str, float | str]]:
 
 def run_sweep(drives: list[SweepDrive], path: Path = CACHE) -> Iterator[SweepRow]:
     """Simulate the drives not yet in the cache, appending each row as it is done."""
+    return _cached_rows(drives, path, simulate_row)
+
+
+def _cached_rows(drives: list[SweepDrive], path: Path, make: Any) -> Iterator[Any]:
+    """``make(drive)`` of each drive not yet in the CSV ``path``, appended to it as it is done
+    (a dataclass or a dict per row)."""
     path.parent.mkdir(parents=True, exist_ok=True)
     done = {r["name"] for r in read_cache(path)} if path.exists() else set()
     for s in drives:
         if s.name in done:
             continue
-        row = simulate_row(s)
+        row = make(s)
+        values = row if isinstance(row, dict) else asdict(row)
         new = not path.exists()
         with path.open("a", newline="") as f:
-            w = csv.DictWriter(f, fieldnames=list(asdict(row)))
+            w = csv.DictWriter(f, fieldnames=list(values))
             if new:
                 w.writeheader()
-            w.writerow(asdict(row))
+            w.writerow(values)
         yield row
 
 
