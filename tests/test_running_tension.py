@@ -253,3 +253,70 @@ def test_worst_drive_is_friction_driven_not_a_damped_resonance():
                                           cached["teeth_driving"], cached["mass_per_length"],
                                           cached["contact_stiffness"]))
     assert model / peaks[0.1] - 1 < -0.25
+
+
+_RANGE_ARGS = dict(pitch=0.0254, teeth=19, teeth_driven=57, angular_velocity=100.5, centre_distance=1.05,
+                   pull=1940.0, breaking_force=60e3)
+
+
+@pytest.mark.parametrize(("change", "name", "value"), [
+    (dict(teeth=29), "teeth", 29.0), (dict(wheels=3), "wheels", 3.0),
+    (dict(centre_distance=2.5), "centre_pitches", 2.5 / 0.0254), (dict(pull=12e3), "pull_ratio", 0.2)])
+def test_range_violations_name_each_input_outside(change, name, value):
+    assert RT.running_tension_range_violations(**_RANGE_ARGS) == ()
+    out = RT.running_tension_range_violations(**{**_RANGE_ARGS, **change})
+    assert [v[0] for v in out] == [name]
+    assert out[0][1] == pytest.approx(value) and tuple(out[0][2:]) == RT.calibration().ranges[name]
+
+
+def test_leave_one_out_regression():
+    # issue 29.4, out of sample: each of the 64 drives predicted by the constants fitted on the 63
+    # others (measured: worst 36.5 % (S13), rms 10.9 %, 10 drives beyond 15 %): the aim of 15 %
+    # worst is not met by the reduced model; a regression of that finding
+    cs = _calibration_script()
+    err = np.abs(cs.leave_one_out(cs.load()))
+    assert len(err) == 64
+    assert 0.30 < err.max() < 0.42 and 0.09 < np.sqrt(np.mean(err**2)) < 0.13
+    assert 6 <= int((err > 0.15).sum()) <= 14
+
+
+def test_steady_state_against_the_sweep_cached():
+    # the steady state of the simulation (warm start, settling detected; benchmarks/_dynamic_sweep.py
+    # --steady) against the sweep's runs from rest: lower on average, worst on S13 (measured -35 %,
+    # rms 13.5 %, mean -8.6 %): not a better stand-in for the reference than the reduced model
+    # (docs/design.md, "The running peak tension")
+    sw = _sweep()
+    ref = {r["name"]: r for r in sw.read_cache()}
+    e = {r["name"]: float(r["pp"]) / ref[r["name"]]["sim_peak"] - 1 for r in sw.read_cache(sw.STEADY_CACHE)}
+    err = np.array(list(e.values()))
+    assert len(err) == 64
+    assert min(e, key=e.get) == "S13" and -0.40 < err.min() < -0.30
+    assert -0.12 < err.mean() < -0.05 and 0.11 < np.sqrt(np.mean(err**2)) < 0.16
+
+
+@pytest.mark.slow
+def test_simulated_dynamic_tension_is_the_cached_steady_state():
+    # analysis.dynamic_tension.simulated_dynamic_tension on sweep drive S01 (20B 22/45 at 107 rpm,
+    # nominal torque) reproduces the cached steady state (same seats, EA, drive): F_t + F_d = pp
+    from chaindrive.analysis.dynamic_tension import SIMULATED_VALIDITY, simulated_dynamic_tension
+
+    sw = _sweep()
+    s = next(d for d in sw.sweep_drives(64) if d.name == "S01")
+    row = next(r for r in sw.read_cache() if r["name"] == "S01")
+    steady = next(r for r in sw.read_cache(sw.STEADY_CACHE) if r["name"] == "S01")
+    dyn = simulated_dynamic_tension(sw.drive_of(s), row["tight"])
+    assert dyn.value + row["tight"] == pytest.approx(steady["pp"], rel=1e-6)
+    assert dyn.stiffness == pytest.approx(row["contact_stiffness"], rel=1e-12)
+    assert dyn.validity == SIMULATED_VALIDITY and "steady-state simulation" in dyn.model
+
+
+def test_simulated_dynamic_tension_refuses_a_chain_without_width():
+    import dataclasses
+
+    from chaindrive.analysis.dynamic_tension import simulated_dynamic_tension
+
+    sw = _sweep()
+    d = sw.drive_of(sw.sweep_drives(64)[1])
+    bare = d.replace(chain=dataclasses.replace(d.chain, inner_width=None))
+    with pytest.raises(InputError, match="inner width"):
+        simulated_dynamic_tension(bare, 4000.0)
