@@ -153,8 +153,25 @@ def _running_tension(drive: Drive, layout: DriveLayout, tight: float, j: int, m:
         angular_velocity=drive.speed, centre_distance=float(layout.wrap.span_length[layout.tight_span]),
         pull=float(drive.torque()) / R, breaking_force=breaking_force, wheels=len(drive.wheels), stacklevel=5)
     peak = float(RT.running_peak_tension(tight, drive.speed, drive.pitch, z0, drive.mass_per_length, kc))
+    c = RT.calibration()
+    if bool(RT.within_accurate_range(peak, tight)):
+        validity = (f"reduced model calibrated against the simulation, in its accurate range (F_peak/F_t = "
+                    f"{peak / tight:.3g} <= {c.accurate_factor:g}: {c.accurate_drives} drives of the sweep within "
+                    f"{100 * c.accurate_worst:.1f} % out of sample); the simulation itself is not validated "
+                    f"against measurement (docs/design.md, 'The running peak tension')")
+    else:
+        validity = RUNNING_VALIDITY
+        import warnings
+
+        from ..errors import ValidityRangeWarning
+
+        warnings.warn(f"the dynamic tension's reduced model gives F_peak/F_t = {peak / tight:.3g}, above "
+                      f"{c.accurate_factor:g}, where it agrees with the simulation within "
+                      f"{100 * c.accurate_worst:.1f} %: here within {100 * c.loo_worst:.0f} % (rms "
+                      f"{100 * c.loo_rms:.0f} %, out of sample over the sweep), the model up to that much low "
+                      f"(docs/design.md, 'The running peak tension')", ValidityRangeWarning, stacklevel=5)
     return DynamicTension(
-        value=peak - tight, moving_mass=m, stiffness=kc, validity=RUNNING_VALIDITY,
+        value=peak - tight, moving_mass=m, stiffness=kc, validity=validity,
         model=(f"seating impact of a link on its seat (k_c = {kc:.3g} N/m, Palmgren), reduced model calibrated "
                f"against the simulation (running_peak_tension)"))
 
