@@ -320,3 +320,42 @@ def test_simulated_dynamic_tension_refuses_a_chain_without_width():
     bare = d.replace(chain=dataclasses.replace(d.chain, inner_width=None))
     with pytest.raises(InputError, match="inner width"):
         simulated_dynamic_tension(bare, 4000.0)
+
+
+def test_accurate_range_stored_and_recomputed():
+    # the accurate range: the sweep drives whose predicted F_peak/F_t <= 1.3 (measured: 18 drives
+    # within 10.4 % out of sample, the other 46 within 36.5 %); recomputed from the cached sweep
+    cs = _calibration_script()
+    a = cs.load()
+    c = RT.calibration()
+    pred = RT.running_peak_tension(a["tight"], a["rpm"] * math.pi / 30, a["pitch"], a["teeth_driving"],
+                                   a["mass_per_length"], a["contact_stiffness"])
+    inside = RT.within_accurate_range(pred, a["tight"])
+    out = np.maximum(np.abs(cs.crossvalidate(a)), np.abs(cs.leave_one_out(a)))
+    assert int(inside.sum()) == c.accurate_drives == 18
+    assert out[inside].max() == pytest.approx(c.accurate_worst, abs=1e-3) and c.accurate_worst <= 0.15
+    assert out[~inside].max() > 0.30
+    assert c.loo_worst == pytest.approx(np.abs(cs.leave_one_out(a)).max(), abs=1e-3)
+
+
+def test_analysis_states_the_accurate_range_or_warns():
+    # the roller example (16B 19/57 at 960 rpm, F_peak/F_t 3.08) is outside the accurate range: a
+    # ValidityRangeWarning; sweep drive S06 (08B 25/54 at 162 rpm, 1.05) is inside: its validity says so
+    from chaindrive.analysis import analyze_drive
+    from chaindrive.drive.project import load_project
+
+    a = analyze_drive(load_project(ROOT / "examples" / "roller_industrial.toml"), include=["loads"])
+    assert any("above 1.3" in str(w) for w in a.warnings)
+    assert "accurate range" not in a.loads.dynamic_validity
+    sw = _sweep()
+    s06 = analyze_drive(sw.drive_of(sw.sweep_drives(64)[6]), include=["loads"])
+    assert not any("above 1.3" in str(w) for w in s06.warnings)
+    assert "in its accurate range" in s06.loads.dynamic_validity and "10.4 %" in s06.loads.dynamic_validity
+    assert s06.loads.maximum / s06.loads.tight <= 1.3
+
+
+def test_accurate_range_refuses_bad_input():
+    with pytest.raises(InputError, match="tight_tension"):
+        RT.within_accurate_range(2000.0, 0.0)
+    with pytest.raises(InputError, match="peak"):
+        RT.within_accurate_range(float("nan"), 2000.0)
