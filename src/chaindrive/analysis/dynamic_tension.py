@@ -10,7 +10,10 @@ calibrated against the validated simulation) replaces it here and nowhere else.
 
 from __future__ import annotations
 
+import dataclasses
+import functools
 import math
+from contextvars import ContextVar
 from dataclasses import dataclass
 
 from .. import loads as F
@@ -34,8 +37,9 @@ RUNNING_VALIDITY = ("reduced model calibrated against the simulation over 64 two
                     "unvalidated roller-tooth friction, and the simulation itself is not validated against "
                     "measurement (docs/design.md, 'The running peak tension')")
 #: What the steady-state simulation's peak is worth (docs/design.md, "The running peak tension").
-SIMULATED_VALIDITY = ("steady-state simulation (warm start, settling detected): its peaks differ from a 2.5 s run "
-                      "from rest by up to -35 % on the calibration sweep (rms 13 %, lower on average), the peaks "
+SIMULATED_VALIDITY = ("steady-state simulation (warm start, settling detected), the reduced model being outside its "
+                      "input ranges: its peaks differ from a 2.5 s run from rest by up to -35 % on the calibration "
+                      "sweep (rms 13 %, lower on average), the peaks "
                       "move 8-22 % with the unvalidated roller-tooth friction, and the simulation itself is not "
                       "validated against measurement (docs/design.md, 'The running peak tension')")
 #: What the rigid-chain estimate is worth.
@@ -140,14 +144,35 @@ def _running_tension(drive: Drive, layout: DriveLayout, tight: float, j: int, m:
     """``F_d = F_peak − F_t`` of :func:`chaindrive.vibration.running_tension.running_peak_tension`
     (the seats at :func:`~chaindrive.vibration.running_tension.seat_contact_stiffness`, each of
     ``n`` strands a simplex chain at ``F_t / n``); a ``ValidityRangeWarning`` outside its
-    calibration sweep (there :func:`simulated_dynamic_tension` is the alternative, not called
-    here: its cost)."""
+    calibration sweep's input ranges: there the steady state of the simulation
+    (:func:`simulated_dynamic_tension`), with a ``ValidityRangeWarning`` saying so (the reduced
+    model, warned, where the drive cannot be simulated, and inside the simulation's own
+    assembly, which asks for the slack tension)."""
+    import warnings
+
+    from ..errors import ChainDriveError, ValidityRangeWarning
     from ..vibration import running_tension as RT
 
     n = drive.chain.strands
     z0 = wheel_teeth(drive.driving_wheel, "the driving wheel")
     kc = n * float(RT.seat_contact_stiffness(tight / n, width))
     R = float(layout.pitch_radii[drive.driving_index])
+    outside = RT.running_tension_range_violations(
+        pitch=drive.pitch, teeth=z0, teeth_driven=wheel_teeth(drive.wheels[j], "the driven wheel"),
+        angular_velocity=drive.speed, centre_distance=float(layout.wrap.span_length[layout.tight_span]),
+        pull=float(drive.torque()) / R, breaking_force=breaking_force, wheels=len(drive.wheels))
+    if outside and not _SIMULATING.get():
+        why = "; ".join(f"{name} = {value:.4g} outside [{low:g}, {high:g}]" for name, value, low, high in outside)
+        try:
+            simulated = simulated_dynamic_tension(drive, tight)
+        except ChainDriveError as exc:
+            warnings.warn(f"the dynamic tension's reduced model is outside its calibration range ({why}) and the "
+                          f"drive could not be simulated instead ({exc}): the reduced model is used",
+                          ValidityRangeWarning, stacklevel=5)
+        else:
+            warnings.warn(f"the dynamic tension's reduced model is outside its calibration range ({why}): the "
+                          f"dynamic tension is the steady-state simulation's", ValidityRangeWarning, stacklevel=5)
+            return dataclasses.replace(simulated, moving_mass=m)
     RT.check_running_tension_range(
         pitch=drive.pitch, teeth=z0, teeth_driven=wheel_teeth(drive.wheels[j], "the driven wheel"),
         angular_velocity=drive.speed, centre_distance=float(layout.wrap.span_length[layout.tight_span]),
@@ -161,10 +186,6 @@ def _running_tension(drive: Drive, layout: DriveLayout, tight: float, j: int, m:
                     f"against measurement (docs/design.md, 'The running peak tension')")
     else:
         validity = RUNNING_VALIDITY
-        import warnings
-
-        from ..errors import ValidityRangeWarning
-
         warnings.warn(f"the dynamic tension's reduced model gives F_peak/F_t = {peak / tight:.3g}, above "
                       f"{c.accurate_factor:g}, where it agrees with the simulation within "
                       f"{100 * c.accurate_worst:.1f} %: here within {100 * c.loo_worst:.0f} % (rms "
@@ -176,8 +197,13 @@ def _running_tension(drive: Drive, layout: DriveLayout, tight: float, j: int, m:
                f"against the simulation (running_peak_tension)"))
 
 
+#: set while :func:`simulated_dynamic_tension` builds and runs its model (the model's assembly
+#: asks the loads part for the slack tension: no nested simulation there)
+_SIMULATING: ContextVar[bool] = ContextVar("chaindrive_simulating_dynamic_tension", default=False)
+
+
 def simulated_dynamic_tension(drive: Drive, tight: float) -> DynamicTension:
-    r"""The dynamic tension from the steady state of the simulation (not called by the analysis).
+    r"""The dynamic tension from the steady state of the simulation.
 
     .. math:: F_d = \max(F_{peak} − F_t, 0)
 
@@ -188,11 +214,12 @@ def simulated_dynamic_tension(drive: Drive, tight: float) -> DynamicTension:
     each of ``n`` strands), ``EA`` of all strands: the model the reduced running-tension model
     is calibrated against, for a drive outside its calibration range.
 
-    Not wired into the analysis (measured on this machine, loaded: 0.2-0.6 s CPU at nominal
-    torque on the roller examples, but 24 s for ``examples/self_regulating.toml`` at its design
-    torque, and a static assembly that does not converge for ``examples/multi_wheel.toml``
-    there; on the 64 drives of the calibration sweep its peaks are 8.6 % lower on average than
-    a 2.5 s run from rest, worst -35 %: docs/design.md, "The running peak tension").
+    The analysis takes it for a drive outside the reduced model's input ranges
+    (:func:`dynamic_tension`); about 0.2-0.7 s of CPU on the roller examples, on this loaded
+    machine. On the 64 drives of the calibration sweep its peaks are 8.6 % lower on average
+    than a 2.5 s run from rest, worst -35 % (docs/design.md, "The running peak tension"). The
+    simulation's assembly asks the analysis for the slack tension: inside it the reduced model
+    answers (no nested simulation).
 
     Parameters
     ----------
@@ -214,7 +241,13 @@ def simulated_dynamic_tension(drive: Drive, tight: float) -> DynamicTension:
     ----------
     docs/simulation.md, "Steady state"; docs/design.md, "The running peak tension".
     """
-    import dataclasses
+    return _simulated(drive, float(tight))
+
+
+@functools.lru_cache(maxsize=64)
+def _simulated(drive: Drive, tight: float) -> DynamicTension:
+    """:func:`simulated_dynamic_tension`, remembered for the last 64 drives (a drive is
+    immutable; the design procedure and the studio ask again for the same one)."""
     import warnings
 
     from ..chains.stiffness import chain_axial_stiffness
@@ -234,10 +267,14 @@ def simulated_dynamic_tension(drive: Drive, tight: float) -> DynamicTension:
     design = drive.replace(load=dataclasses.replace(
         load, power=None if load.power is None else load.power * ks,
         torque=None if load.torque is None else load.torque * ks, service_factor=1.0))
-    with warnings.catch_warnings():
-        warnings.simplefilter("ignore")
-        state = steady_state(model_from_drive(design, axial_stiffness=chain_axial_stiffness(chain) * n,
-                                              contact_stiffness=kc))
+    token = _SIMULATING.set(True)
+    try:
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            state = steady_state(model_from_drive(design, axial_stiffness=chain_axial_stiffness(chain) * n,
+                                                  contact_stiffness=kc))
+    finally:
+        _SIMULATING.reset(token)
     peak = float(state.period_peak_tension)
     return DynamicTension(
         value=max(peak - tight, 0.0), moving_mass=drive.mass_per_length * drive.pitch, stiffness=kc,
