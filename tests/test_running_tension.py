@@ -394,3 +394,20 @@ def test_analysis_keeps_the_model_where_the_drive_cannot_be_assembled():
     a = analyze_drive(load_project(ROOT / "examples" / "multi_wheel.toml"), include=["loads"])
     assert "running_peak_tension" in a.loads.dynamic_source
     assert any("could not be simulated" in w and "wheels = 4" in w for w in a.warnings)
+
+
+def test_long_reference_does_not_rescue_the_worst_drives():
+    # eleven sweep drives run on to 4 s (benchmarks/_dynamic_sweep.py --long): their six window
+    # medians lie 1.7-20.6 % apart, and the left-out model errors against the median of all six
+    # stay beyond 15 % on seven of the eight drives it missed by more (S27 -15.0 %); the misses
+    # are the model's, not the window's (docs/design.md, "The reference is not one number")
+    cs = _calibration_script()
+    a, long = cs.load(), cs.load("long")
+    assert len(long["index"]) == 11
+    apart = long["window_peak_high"] / long["window_peak_low"] - 1
+    assert 0.01 < apart.min() < 0.03 and 0.18 < apart.max() < 0.23
+    loo = dict(zip(a["index"].tolist(), cs.leave_one_out(a).tolist(), strict=True))
+    short = dict(zip(a["index"].tolist(), a["sim_peak"].tolist(), strict=True))
+    err = np.array([(1 + loo[i]) * short[i] / p - 1 for i, p in zip(long["index"].tolist(), long["sim_peak"], strict=True)])
+    missed = np.array([abs(loo[i]) > 0.15 for i in long["index"].tolist()])
+    assert missed.sum() == 8 and (np.abs(err[missed]) > 0.149).sum() == 8 and (np.abs(err[missed]) > 0.151).sum() == 7
