@@ -14,14 +14,20 @@ Prints
   onset's load ratio ``M/(R_e T_2)``, seven cases at 3 kN, the simulation driven slowly
   (quasi-static) and at 2 rad/s (``JUMP_CASES``, ``JUMP_CASES_MORE``; docs/life.md,
   "Jump-over");
+* ``jump-over, reduced model vs simulation: CASE X %``: the analysis' jump-over onset (the
+  compliant wrap's table, :func:`chaindrive.life.jump_onset`) against the slowly driven
+  simulation's onsets of the table of docs/life.md (``SIMULATED``), with its CPU time per call
+  next to a fresh :func:`chaindrive.life.wrap_jump_ratio` of one case (``--table`` prints these
+  lines only: no simulation);
 * the lives by mechanism of the example drives (``chaindrive life``).
 
-Run: ``PYTHONPATH=src python benchmarks/life.py``.
+Run: ``PYTHONPATH=src python benchmarks/life.py [--table]``.
 """
 
 from __future__ import annotations
 
 import math
+import sys
 import time
 import warnings
 from pathlib import Path
@@ -157,7 +163,41 @@ def jump_over_vs_simulation(teeth: int = 11, elongation: float = 0.2, back_force
           f"{rigid:.0f}; analysis {cpu:.1f} s of CPU)")
 
 
+#: The slowly driven simulation's onset load ratio ``ρ = M/(R_e T_2,nom)`` of the jump-over cases
+#: (``jump_over_vs_simulation`` at commit c65a478, docs/life.md "Jump-over": 16B, ``F`` = 3 kN, 0.5 rad/s
+#: up to 17 teeth, 0.125 rad/s above; 8 bisection steps, about 2 %): (teeth, elongation, ρ).
+SIMULATED = ((9, 0.20, 14.9), (11, 0.20, 20.5), (11, 0.10, 24.1), (13, 0.15, 30.3), (17, 0.10, 54.5),
+             (21, 0.08, 80.3), (25, 0.06, 121.7))
+
+
+def jump_table_vs_simulation(back_force: float = 3000.0) -> None:
+    """Print the analysis' reduced compliant model (:func:`chaindrive.life.jump_onset`, the table of
+    ``scripts/tabulate_wrap_jump.py``) against :data:`SIMULATED`, its CPU per call (the memo
+    cleared) and, for the 17-tooth case, a fresh :func:`chaindrive.life.wrap_jump_ratio`."""
+    from chaindrive.life import jump_onset, wrap_jump_ratio
+    from chaindrive.life import jump_table as JT
+
+    for teeth, elongation, simulated in SIMULATED:
+        calls = 20
+        cpu = time.process_time()
+        for _ in range(calls):
+            JT._rows.cache_clear()
+            got = jump_onset(0.0254, teeth, 0.01588, elongation, load=back_force)
+        cpu = (time.process_time() - cpu) / calls
+        print(f"jump-over, reduced model vs simulation: z = {teeth}, e = {100 * elongation:g} %: "
+              f"{100 * (got.load_ratio / simulated - 1):+.1f} % (onset load ratio M/(R_e T2): reduced model "
+              f"{got.load_ratio:.1f} = {got.correction:.4f} x beta^-n {got.rigid_ratio:.0f}, simulation slowly "
+              f"{simulated:.1f}; {1e3 * cpu:.2f} ms of CPU per call)")
+    cpu = time.process_time()
+    fresh = wrap_jump_ratio(0.0254, 17, 0.01588, 0.1, back_force, low=20.0, high=120.0, rtol=0.02)
+    cpu = time.process_time() - cpu
+    print(f"jump-over, the compliant model itself: z = 17, e = 10 %: {fresh.load_ratio:.1f} in {cpu:.1f} s of CPU")
+
+
 def main() -> None:
+    jump_table_vs_simulation()
+    if "--table" in sys.argv:
+        return
     for case, power, cadence, front, rear, measured in MEASURED:
         model = bicycle_efficiency(power, cadence, front, rear)
         print(f"efficiency vs measured: {case} {100 * (model - measured):+.2f} points "

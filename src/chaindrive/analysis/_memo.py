@@ -62,6 +62,15 @@ def clear() -> None:
         cached = getattr(two_wheels, name, None)
         if cached is not None and hasattr(cached, "cache_clear"):
             cached.cache_clear()
+    two_wheels._GRIDS.__dict__.clear()  # the phase grids the root search evaluated last
+    two_wheels._VERTEX_CACHE.clear()
+    from ..kinematics import entry, solver
+    from ..layout import polygon_loop, wheels
+    from ..vibration import resonance
+
+    for cached in (wheels.cached_pitch_radius, solver._cumulative, entry._checked_seats, entry._chordal_rod_schedule,
+                   resonance._stationary_frequencies, polygon_loop._polygon):
+        cached.cache_clear()
     from ..loads.safety import required_static_safety_for
 
     required_static_safety_for.cache_clear()

@@ -30,7 +30,6 @@ A part that reads the layout and reports the chain's mass:
 from __future__ import annotations
 
 import contextlib
-import dataclasses
 import importlib
 import pkgutil
 from collections.abc import Callable, Iterable, Iterator, Sequence
@@ -269,6 +268,17 @@ class PartContext:
         self._computed[self.part.name].caught.append(str(text))
 
 
+def _with_part(check: Check, name: str) -> Check:
+    """``dataclasses.replace(check, part=name)`` (a copy of the frozen check with its part; the
+    same fields, without running the generated ``__init__`` again)."""
+    if check.part == name:
+        return check
+    new = object.__new__(type(check))
+    new.__dict__.update(check.__dict__)
+    object.__setattr__(new, "part", name)
+    return new
+
+
 def compute_parts(drive: Drive, wanted: tuple[str, ...], options: dict[str, Any], *,
                   computed: dict[str, _Computed] | None = None,
                   shared_checks: dict[str, list[Check]] | None = None,
@@ -302,7 +312,7 @@ def compute_parts(drive: Drive, wanted: tuple[str, ...], options: dict[str, Any]
             ctx = PartContext(drive, part, computed, options)
             with warnings.catch_warnings(record=True) as caught:
                 warnings.simplefilter("always")
-                checks.extend(dataclasses.replace(c, part=part.name) for c in part.checks(ctx, res))
+                checks.extend(_with_part(c, part.name) for c in part.checks(ctx, res))
             computed[part.name].caught.extend(str(w.message) for w in caught)
         notes.extend(computed[part.name].notes)
     for part in plan:

@@ -36,11 +36,11 @@ and quasi-static (no impact, no centrifugal lift of the rollers). It assumes eve
 roller rides up alike; a worn chain seats unevenly (the tight-end rollers highest, one at
 the bottom of its gap, the rest on the back flank), and the holding is very sensitive to
 that seating. With the span tensions held the compliant load distribution
-(:mod:`chaindrive.life.wrap_statics`) holds 1.5–1.7 times it (9 and 17 teeth, docs/life.md):
-``β^-n`` is on the safe side there; with the torque and the sum of the
-span tensions held (a wheel on a slide) the chain jumps at a far lower mean ratio, which
-:func:`chaindrive.life.wrap_jump_ratio` gives (docs/life.md, "Jump-over"). The holding limit
-is the robust criterion.
+(:mod:`chaindrive.life.wrap_statics`) holds 1.5–1.7 times it (9 and 17 teeth, docs/life.md);
+with the torque and the sum of the span tensions held (a wheel on a slide) the chain jumps at
+a far lower mean ratio, which :func:`chaindrive.life.wrap_jump_ratio` gives (docs/life.md,
+"Jump-over"). The analysis' check takes the compliant onset from its table
+(:func:`chaindrive.life.jump_onset`) as a correction to ``β^-n``.
 """
 
 from __future__ import annotations
@@ -265,7 +265,8 @@ def tension_ratio(pitch: float, teeth: int, roller_diameter: float, elongation: 
         x_next = o + np.array([ca * v[0] + sa * v[1], -sa * v[0] + ca * v[1]])
         u_k = (x_tight - x) / float(np.hypot(*(x_tight - x)))
         u_n = (x_next - x) / float(np.hypot(*(x_next - x)))
-        beta, _normal = np.linalg.solve(np.column_stack([u_n, n]), -u_k)
+        # [u_n n] (β, N/T_k) = -u_k by Cramer's rule: β = det[-u_k n] / det[u_n n]
+        beta = (n[0] * u_k[1] - u_k[0] * n[1]) / (u_n[0] * n[1] - n[0] * u_n[1])
         out[idx] = min(max(float(beta), 0.0), 1.0)
     return float(out) if out.ndim == 0 else out
 
