@@ -411,3 +411,17 @@ def test_long_reference_does_not_rescue_the_worst_drives():
     err = np.array([(1 + loo[i]) * short[i] / p - 1 for i, p in zip(long["index"].tolist(), long["sim_peak"], strict=True)])
     missed = np.array([abs(loo[i]) > 0.15 for i in long["index"].tolist()])
     assert missed.sum() == 8 and (np.abs(err[missed]) > 0.149).sum() == 8 and (np.abs(err[missed]) > 0.151).sum() == 7
+
+
+def test_simulated_dynamic_tension_refuses_a_non_finite_simulation(monkeypatch):
+    # a steady state without a finite peak is refused (the analysis then keeps the model, warned)
+    import chaindrive.simulation.steady as S
+    from chaindrive.analysis.dynamic_tension import _simulated
+
+    class _Nan:
+        period_peak_tension = float("nan")
+
+    monkeypatch.setattr(S, "steady_state", lambda model, **kw: _Nan())
+    sw = _sweep()
+    with pytest.raises(InputError, match="no finite peak"):
+        _simulated.__wrapped__(sw.drive_of(sw.sweep_drives(64)[1]), 4000.0)

@@ -276,6 +276,9 @@ def _simulated(drive: Drive, tight: float) -> DynamicTension:
     finally:
         _SIMULATING.reset(token)
     peak = float(state.period_peak_tension)
+    if not math.isfinite(peak):
+        raise InputError(f"the steady-state simulation of the drive gave no finite peak tension ({peak})",
+                         field="drive")
     return DynamicTension(
         value=max(peak - tight, 0.0), moving_mass=drive.mass_per_length * drive.pitch, stiffness=kc,
         validity=SIMULATED_VALIDITY,
