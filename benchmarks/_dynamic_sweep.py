@@ -32,6 +32,9 @@ CACHE = ROOT / "benchmarks" / "data" / "dynamic_sweep.csv"
 LONG_CACHE = ROOT / "benchmarks" / "data" / "dynamic_sweep_long.csv"
 #: the steady state of the same drives (chaindrive.simulation.steady.steady_state, its defaults)
 STEADY_CACHE = ROOT / "benchmarks" / "data" / "dynamic_sweep_steady.csv"
+#: drives outside the sweep's input ranges (the analysis's steady-state answer checked there)
+OUTSIDE_CACHE = ROOT / "benchmarks" / "data" / "dynamic_outside.csv"
+OUTSIDE_STEADY_CACHE = ROOT / "benchmarks" / "data" / "dynamic_outside_steady.csv"
 #: windows of the long reference and their length [s]
 LONG_WINDOWS, LONG_WINDOW = 6, 0.25
 
@@ -99,6 +102,14 @@ def sweep_drives(count: int = 48, seed: int = 29) -> list[SweepDrive]:
         out.append(SweepDrive(f"S{i:02d}", chain, z1, z2, round(float(rpm), 1), round(float(25 + 35 * a), 2),
                               round(float(0.02 * 6.0 ** f), 5)))
     return out
+
+
+def outside_drives() -> list[SweepDrive]:
+    """Three drives each outside one of the sweep's input ranges: 31 driving teeth (16B), a ratio
+    of 4.4 (10B), 70 pitches between centres (12B)."""
+    return [SweepDrive("X00", "16B-1", 31, 62, 400.0, 40.0, 0.05),
+            SweepDrive("X01", "10B-1", 17, 75, 900.0, 45.0, 0.06),
+            SweepDrive("X02", "12B-1", 19, 38, 600.0, 70.0, 0.04)]
 
 
 def drive_of(s: SweepDrive):  # -> chaindrive.drive.Drive
@@ -249,14 +260,14 @@ def run_long(drives: list[SweepDrive], path: Path = LONG_CACHE) -> Iterator[Long
     return _cached_rows(drives, path, long_row)
 
 
-def steady_row(s: SweepDrive) -> dict[str, Any]:
+def steady_row(s: SweepDrive, cache: Path = CACHE) -> dict[str, Any]:
     """One drive's steady state (:func:`chaindrive.simulation.steady.steady_state` with its
     defaults: warm start, settling detected, 12 tooth periods), the seats as the sweep's: the
     mean per-tooth-period peak ``pp``, the waveform's ``peak``, the ``mean``, the CPU time."""
     from chaindrive.simulation.steady import steady_state
 
     warnings.simplefilter("ignore")
-    kc = next(float(r["contact_stiffness"]) for r in read_cache() if r["name"] == s.name)
+    kc = next(float(r["contact_stiffness"]) for r in read_cache(cache) if r["name"] == s.name)
     c0 = time.process_time()
     st = steady_state(sim_model(drive_of(s), contact_stiffness=kc))
     return {"name": s.name, "pp": st.period_peak_tension, "peak": st.peak_tension, "mean": st.mean_tension,
@@ -303,6 +314,12 @@ if __name__ == "__main__":
     import sys
 
     n = int(sys.argv[1]) if len(sys.argv) > 1 else 48
+    if "--outside" in sys.argv:
+        for row in run_sweep(outside_drives(), OUTSIDE_CACHE):
+            print(f"{row.name} from rest: peak {row.sim_peak:7.0f} mean {row.sim_mean:7.0f}", flush=True)
+        for sr in _cached_rows(outside_drives(), OUTSIDE_STEADY_CACHE, lambda d: steady_row(d, OUTSIDE_CACHE)):
+            print(f"{sr['name']} steady pp {sr['pp']:7.0f} mean {sr['mean']:7.0f} {sr['cpu']:5.2f} s CPU", flush=True)
+        sys.exit(0)
     if "--steady" in sys.argv:
         for sr in run_steady(sweep_drives(n)):
             print(f"{sr['name']} steady pp {sr['pp']:7.0f} mean {sr['mean']:7.0f} {sr['cpu']:5.2f} s CPU", flush=True)

@@ -346,6 +346,7 @@ def sweep_model() -> None:
           f"{'met' if c.accurate_worst <= 0.15 else 'NOT met'} there; beyond it the analysis warns")
     reference_reproducibility(a)
     steady_against_sweep(rows)
+    outside_against_rest()
 
 
 def _calibration_script() -> Any:
@@ -395,6 +396,30 @@ def steady_against_sweep(rows: list[dict[str, Any]]) -> None:
           f"{100 * np.abs(e).max():.1f} % ({worst}), rms {100 * np.sqrt(np.mean(e**2)):.1f} %, on average "
           f"{100 * e.mean():+.1f} %, {int((np.abs(e) > 0.15).sum())} drives beyond 15 %; mean worst "
           f"{100 * np.abs(em).max():.1f} %; CPU median {np.median(cpu):.2f} s, largest {cpu.max():.2f} s")
+
+
+def outside_against_rest() -> None:
+    """Drives outside the sweep's input ranges (``_dynamic_sweep.outside_drives``; ``python
+    benchmarks/_dynamic_sweep.py 64 --outside`` fills ``benchmarks/data/dynamic_outside*.csv``):
+    the analysis's answer there (the steady state, :func:`chaindrive.analysis.dynamic_tension.simulated_dynamic_tension`)
+    and the reduced model extrapolated, against the run from rest."""
+    import _dynamic_sweep as sw
+
+    from chaindrive.vibration.running_tension import running_peak_tension
+
+    if not (sw.OUTSIDE_CACHE.exists() and sw.OUTSIDE_STEADY_CACHE.exists()):
+        return
+    steady = {r["name"]: r for r in sw.read_cache(sw.OUTSIDE_STEADY_CACHE)}
+    for r in sw.read_cache(sw.OUTSIDE_CACHE):
+        if r["name"] not in steady:
+            continue
+        f = float(running_peak_tension(r["tight"], float(r["rpm"]) * math.pi / 30, r["pitch"], r["teeth_driving"],
+                                       r["mass_per_length"], r["contact_stiffness"]))
+        pp = float(steady[r["name"]]["pp"])
+        print(f"outside the sweep's ranges, {r['name']} ({r['chain']} {r['teeth_driving']:.0f}/{r['teeth_driven']:.0f}, "
+              f"{r['rpm']:.0f} rpm, {float(r['centre_distance']) / float(r['pitch']):.0f} pitches): run from rest "
+              f"{r['sim_peak']:.0f} N; the analysis (steady state) {pp:.0f} N ({100 * (pp / r['sim_peak'] - 1):+.1f} %); "
+              f"the reduced model extrapolated {f:.0f} N ({100 * (f / r['sim_peak'] - 1):+.1f} %)")
 
 
 def sweep_plot(path: str) -> None:
