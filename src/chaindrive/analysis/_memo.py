@@ -71,9 +71,11 @@ def clear() -> None:
     for cached in (wheels.cached_pitch_radius, solver._cumulative, entry._checked_seats, entry._chordal_rod_schedule,
                    resonance._stationary_frequencies, polygon_loop._polygon):
         cached.cache_clear()
+    from ..life import jump_over, jump_table
     from ..loads.safety import required_static_safety_for
 
-    required_static_safety_for.cache_clear()
+    for cached in (required_static_safety_for, jump_over._form_cached, jump_table._rows):
+        cached.cache_clear()
 
 
 def memo(*, maxsize: int = 128, key: Callable[..., Hashable] | None = None) -> Callable[[F], F]:
