@@ -250,11 +250,10 @@ def jump_onset(pitch: float, teeth: int, roller_diameter: float, elongation: Arr
             c_l = list(map(math.exp, _log_correction(loading, z, s_l, lam_l)))
     rho_l = [ci * ri for ci, ri in zip(c_l, rigid_l, strict=True)]
     tight_l = [f * r / (1.0 + r) for r in rho_l] if loading == "torque" else [t2 * r for r in rho_l]
-    s, lam = np.array(s_l), np.array(lam_l)
     rng = wrap_jump_range(loading)
     outside = []
-    for name, lo_v, hi_v, what in (("teeth", z, z, "teeth"), ("fraction", float(s.min()), float(s.max()), "e/e_hold"),
-                                   ("load_stiffness", float(lam.min()), float(lam.max()), "F/EA")):
+    for name, lo_v, hi_v, what in (("teeth", z, z, "teeth"), ("fraction", min(s_l), max(s_l), "e/e_hold"),
+                                   ("load_stiffness", min(lam_l), max(lam_l), "F/EA")):
         low, high = rng[name]
         if lo_v < low * (1 - 1e-9) or hi_v > high * (1 + 1e-9):
             shown = f"{lo_v:.4g}" if lo_v == hi_v else f"{lo_v:.4g}…{hi_v:.4g}"
