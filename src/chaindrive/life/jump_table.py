@@ -143,6 +143,19 @@ def _log_correction(loading: str, z: float, s: list[float], lam: list[float]) ->
     return out
 
 
+def _outside(loading: str, z: float, s: list[float], lam: list[float]) -> tuple[str, ...]:
+    """The inputs outside the table's range, in words (``s`` and ``λ`` of the points asked for)."""
+    rng = wrap_jump_range(loading)
+    outside = []
+    for name, lo_v, hi_v, what in (("teeth", z, z, "teeth"), ("fraction", min(s), max(s), "e/e_hold"),
+                                   ("load_stiffness", min(lam), max(lam), "F/EA")):
+        low, high = rng[name]
+        if lo_v < low * (1 - 1e-9) or hi_v > high * (1 + 1e-9):
+            shown = f"{lo_v:.4g}" if lo_v == hi_v else f"{lo_v:.4g}…{hi_v:.4g}"
+            outside.append(f"{what} = {shown} outside [{low:g}, {high:g}]")
+    return tuple(outside)
+
+
 @dataclass(frozen=True)
 class JumpOnset(Result):
     """Onset of jump-over of a worn wrap from the reduced compliant model (see :func:`jump_onset`)."""
@@ -250,14 +263,7 @@ def jump_onset(pitch: float, teeth: int, roller_diameter: float, elongation: Arr
             c_l = list(map(math.exp, _log_correction(loading, z, s_l, lam_l)))
     rho_l = [ci * ri for ci, ri in zip(c_l, rigid_l, strict=True)]
     tight_l = [f * r / (1.0 + r) for r in rho_l] if loading == "torque" else [t2 * r for r in rho_l]
-    rng = wrap_jump_range(loading)
-    outside = []
-    for name, lo_v, hi_v, what in (("teeth", z, z, "teeth"), ("fraction", min(s_l), max(s_l), "e/e_hold"),
-                                   ("load_stiffness", min(lam_l), max(lam_l), "F/EA")):
-        low, high = rng[name]
-        if lo_v < low * (1 - 1e-9) or hi_v > high * (1 + 1e-9):
-            shown = f"{lo_v:.4g}" if lo_v == hi_v else f"{lo_v:.4g}…{hi_v:.4g}"
-            outside.append(f"{what} = {shown} outside [{low:g}, {high:g}]")
+    outside = _outside(loading, z, s_l, lam_l)
     if warn and outside:
         warnings.warn(f"jump-over onset (the compliant wrap's table, scripts/tabulate_wrap_jump.py): "
                       f"{'; '.join(outside)}; the nearest edge of the table is used", ValidityRangeWarning,
@@ -266,5 +272,5 @@ def jump_onset(pitch: float, teeth: int, roller_diameter: float, elongation: Arr
     def shaped(v):
         return float(v[0]) if e.ndim == 0 else np.reshape(np.array(v, float), e.shape)
 
-    return JumpOnset(shaped(rho_l), shaped(tight_l), loading, shaped(rigid_l), shaped(c_l), tuple(outside), shaped(s_l),
+    return JumpOnset(shaped(rho_l), shaped(tight_l), loading, shaped(rigid_l), shaped(c_l), outside, shaped(s_l),
                      shaped(lam_l))
