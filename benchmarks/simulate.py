@@ -90,7 +90,7 @@ symplectic Euler, no contacts, no records) as the ceiling of a link-steps/s figu
 machine.
 
 Steady state (``--steady``, also in the default run): ``steady_state`` of the same drive
-from nothing against a long explicit run (benchmarks/_steady.py), printing
+from nothing against an ensemble of four long explicit runs (benchmarks/_steady.py), printing
 ``steady state, 16B 100 links: X s CPU, within Y % of the reference``.
 
 Batched (``--batched``, also after the scaling): the batched kernel

@@ -319,11 +319,12 @@ def _efficiency(drive, layout, loads, notes):
     cf = float(loads.centrifugal)
     tens = _wheel_tensions(loads, n)
     radii = np.asarray(layout.pitch_radii, float)
-    # articulation angle per joint on each wheel: 2 asin(p / 2R) (= 2π/z on a sprocket)
-    angle = 2.0 * np.arcsin(np.minimum(1.0, drive.pitch / (2.0 * radii)))
-    sides = 2.0 * math.pi / angle
-    t_in = np.array([t[0] for t in tens]) + cf
-    t_out = np.array([t[1] for t in tens]) + cf
+    # articulation angle per joint on each wheel: 2 asin(p / 2R) (= 2π/z on a sprocket), at most its wrap
+    angle = EF.articulation_angle(drive.pitch, radii, np.asarray(layout.wrap.wrap_angle, float))
+    bent = angle > 0.0  # a wheel the chain does not wrap turns no joint
+    sides = 2.0 * math.pi / angle[bent]
+    t_in = np.array([t[0] for t in tens])[bent] + cf
+    t_out = np.array([t[1] for t in tens])[bent] + cf
     loss = float(EF.articulation_power_loss(loads.chain_speed, drive.pitch, d, sides, t_in, t_out))
     power = float(loads.effective_pull) * float(loads.chain_speed) / max(float(drive.load.service_factor), 1e-12)
     if power <= 0:
