@@ -129,17 +129,39 @@ def _rows(loading: str, log_z: float) -> tuple[list[float], tuple[list[float], .
             t["fraction"].tolist(), t[loading + "_lambda"].tolist(), t["side_fraction"].tolist())
 
 
-def _log_correction(loading: str, z: float, s: list[float], lam: list[float]) -> list[float]:
-    """``ln c`` at ``z`` and each (``s``, ``λ``): linear in ``s`` and ``ln λ`` (clipped to the table)."""
+def _fraction_terms(loading: str, z: float, s: list[float]) -> tuple[list[float], list[tuple]]:
+    """What ``ln c`` takes from ``z`` and each ``s`` (:func:`_log_correction`): the ``ln λ`` axis, and per
+    point the two side rows about ``s``, the weight of the second and ``ln c`` at ``λ0``."""
     main, side, fraction, axis, sf = _rows(loading, math.log(z))
-    lo, hi, last = axis[0], axis[-1], len(sf) - 2
-    out = []
-    for si, li in zip(s, lam, strict=True):
-        log_lam = min(max(math.log(li), lo), hi)
+    last = len(sf) - 2
+    terms = []
+    for si in s:
         j = min(max(bisect.bisect_left(sf, si) - 1, 0), last)
         w = min(max((si - sf[j]) / (sf[j + 1] - sf[j]), 0.0), 1.0)
-        factor = (1.0 - w) * _interp(log_lam, axis, side[j]) + w * _interp(log_lam, axis, side[j + 1])
-        out.append(_interp(si, fraction, main) + factor)
+        terms.append((side[j], side[j + 1], w, _interp(si, fraction, main)))
+    return axis, terms
+
+
+def _log_correction(axis: list[float], terms: list[tuple], lam: list[float]) -> list[float]:
+    """``ln c`` at each point of :func:`_fraction_terms` and its ``λ``: linear in ``s`` and ``ln λ``
+    (clipped to the table); the two side rows interpolated over ``ln λ`` as ``numpy.interp`` does."""
+    lo, hi = axis[0], axis[-1]
+    out = []
+    for (row_a, row_b, w, at_lam0), li in zip(terms, lam, strict=True):
+        x = math.log(li)
+        if x <= lo:
+            a, b = row_a[0], row_b[0]
+        elif x >= hi:
+            a, b = row_a[-1], row_b[-1]
+        else:
+            k = bisect.bisect_right(axis, x) - 1
+            if axis[k] == x:
+                a, b = row_a[k], row_b[k]
+            else:
+                d, dx = x - axis[k], axis[k + 1] - axis[k]
+                a = (row_a[k + 1] - row_a[k]) / dx * d + row_a[k]
+                b = (row_b[k + 1] - row_b[k]) / dx * d + row_b[k]
+        out.append(at_lam0 + ((1.0 - w) * a + w * b))
     return out
 
 
@@ -254,13 +276,15 @@ def jump_onset(pitch: float, teeth: int, roller_diameter: float, elongation: Arr
     if load is not None:
         loading, f = "torque", float(check_positive("load", load, "N"))
         lam_l = [f / ea] * len(s_l)
-        c_l = list(map(math.exp, _log_correction(loading, z, s_l, lam_l)))
+        axis, terms = _fraction_terms(loading, z, s_l)
+        c_l = list(map(math.exp, _log_correction(axis, terms, lam_l)))
     else:
         loading, t2 = "tensions", float(check_positive("back_tension", float(back_tension or 0.0), "N"))
         c_l = [1.6] * len(s_l)  # the simulated cases' c (docs/life.md); two substitutions of F
+        axis, terms = _fraction_terms(loading, z, s_l)
         for _ in range(2):
             lam_l = [t2 * (1.0 + min(ci * ri, 1e12)) / ea for ci, ri in zip(c_l, rigid_l, strict=True)]
-            c_l = list(map(math.exp, _log_correction(loading, z, s_l, lam_l)))
+            c_l = list(map(math.exp, _log_correction(axis, terms, lam_l)))
     rho_l = [ci * ri for ci, ri in zip(c_l, rigid_l, strict=True)]
     tight_l = [f * r / (1.0 + r) for r in rho_l] if loading == "torque" else [t2 * r for r in rho_l]
     outside = _outside(loading, z, s_l, lam_l)
