@@ -303,7 +303,7 @@ def compute_parts(drive: Drive, wanted: tuple[str, ...], options: dict[str, Any]
         def recorded(start: int) -> list[str]:
             if warnings.filters != filters:
                 warnings.resetwarnings()  # marks the filters changed for the warnings module's caches
-                warnings.filters[:] = filters
+                warnings.filters[:] = filters  # type: ignore[index]  # a list at run time
             return [str(w.message) for w in caught[start:]]
 
         for part in plan:
