@@ -13,7 +13,8 @@ repeated runs of :func:`chaindrive.analysis.analyze_drive`, wall and CPU time):
   last wheel moved by 7.3 mm steps, so the centre distance and most link counts differ),
   each after :func:`chaindrive.analysis._memo.clear` (every store of the analysis and
   every formula cache it relies on emptied: layout grids, polygon vertices, pitch radii,
-  entry seatings), so nothing of that drive, or of its wheels, is known before;
+  entry seatings, the jump-over check's tooth forms and table rows), so nothing of that drive,
+  or of its wheels, is known before;
 * ``with the remedy search``: every part (the remedy is a search over designs, ~0.1-0.4 s,
   run only when the resonance check fails: the mining conveyor).
 

@@ -8,6 +8,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
+from chaindrive.errors import InputError
 from chaindrive.layout._bridges import bridge_perimeters, edge_sums
 from chaindrive.layout.two_wheels import (
     _hull_perimeter,
@@ -165,3 +166,18 @@ def test_loop_length_with_fixed_spans_equals_computing_every_span():
         fixed = [None if i in ((k - 1) % n, k) else _span_scalar(xs, ys, rho, i) for i in range(n)]
         xs[k] += 0.01
         assert _loop_length(xs, ys, r, s, fixed) == _loop_length(xs, ys, r, s)
+
+
+@pytest.mark.parametrize("centres, radii, sides, match", [
+    ([0.0489, np.inf], [[0.1, 0.1]], [1, 1], r"centres must be finite \[m\] with shape \(n, 2\)"),
+    ([[0, 0], [1, np.inf]], [[0.1, 0.1]], [1, 1], r"centres must be finite"),
+    ([[0, 0], [1, 0]], [0.1, 0.1, 0.1, 0.1, 0.1], [1, 1], r"radii must have shape \(m, 2\)"),
+    ([[0, 0], [1, 0]], [[0.1, -0.1]], [1, 1], r"radii"),
+    ([[0, 0], [1, 0]], [[0.1, 0.1]], [1, 0], r"sides must be \+1 or -1 for each of the 2 wheels"),
+])
+def test_span_lengths_refuses_bad_shapes(centres, radii, sides, match):
+    # found by the API fuzz (tests/test_public_api_finite.py): a 1-D centres or radii broadcast wrongly
+    from chaindrive.layout.wrap import span_lengths
+
+    with pytest.raises(InputError, match=match):
+        span_lengths(np.array(centres, float), np.array(radii, float), np.array(sides, float))

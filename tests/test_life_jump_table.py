@@ -204,7 +204,7 @@ def test_analysis_wheel_on_the_tensioners_slide_holds_far_less(roller_drive):
 def test_analysis_jump_elongation_where_the_margin_reaches_one(roller_drive):
     # a slack span barely loaded on a slide: the margin reaches 1 before the holding limit, at the
     # elongation the analysis names (to the grid's interpolation, 1 %)
-    from chaindrive.analysis.life import _jump_elongation
+    from chaindrive.analysis.life import _jump_elongation, _jump_points, _onset
 
     a = _analyse(roller_drive())
     tens = np.asarray(a.loads.span_tensions)
@@ -216,7 +216,8 @@ def test_analysis_jump_elongation_where_the_margin_reaches_one(roller_drive):
         notes: list[str] = []
         with warnings.catch_warnings():
             warnings.simplefilter("ignore", ValidityRangeWarning)
-            e = _jump_elongation(drive, 0, 19, seated, hi, lo, limit, notes)
+            on_grid = _onset(drive, 0, 19, seated, hi, lo, _jump_points(limit)).load_ratio * lo / hi
+            e = _jump_elongation(drive, 0, on_grid, limit, notes)
             if 0 < e < limit:
                 m = jump_onset(P16B, 19, D16B, e, back_tension=lo, seated=seated).load_ratio * lo / hi
                 assert m == pytest.approx(1.0, rel=0.05)

@@ -134,21 +134,28 @@ def _loading(drive, index):
 
 def _onset(drive, index, teeth, seated, tight, back, elongations, notes=None):
     """The compliant wrap's onset (:func:`chaindrive.life.jump_onset`) of wheel ``index`` over
-    ``elongations``; with ``notes``, a ``ValidityRangeWarning`` for what lies outside its table, except
-    a load beyond the table's where the onset's tooth load exceeds the chain's breaking force (the
-    chain breaks before it jumps: said in ``notes``)."""
+    ``elongations``; with ``notes``, what lies outside its table said (:func:`_table_range`)."""
     ch = drive.chain
     k = float(ch.strands or 1)
     kw = {"load": (tight + back) / k} if _loading(drive, index) == "torque" else {"back_tension": back / k}
     onset = JT.jump_onset(drive.pitch, teeth, ch.roller_diameter, elongations, seated=seated,
                           axial_stiffness=chain_axial_stiffness(ch), warn=False, **kw)
-    if notes is None or not onset.outside:
-        return onset
-    outside = list(onset.outside)
+    if notes is not None and onset.outside:
+        _table_range(drive, index, onset.outside, float(np.min(onset.tight_tension)), notes)
+    return onset
+
+
+def _table_range(drive, index, outside, tight_min, notes):
+    """A ``ValidityRangeWarning`` for what lies outside the compliant wrap's table (``outside``, of
+    :func:`chaindrive.life.jump_onset`), except a load beyond the table's where the onset's smallest tooth
+    load ``tight_min`` (one strand) exceeds the chain's breaking force (the chain breaks before it jumps:
+    said in ``notes``)."""
+    ch = drive.chain
+    k = float(ch.strands or 1)
+    outside = list(outside)
     name = drive.wheels[index].name
     strength = ch.breaking_force
-    if (strength and any(o.startswith("F/EA") for o in outside)
-            and float(np.min(onset.tight_tension)) * k > float(strength)):
+    if strength and any(o.startswith("F/EA") for o in outside) and tight_min * k > float(strength):
         outside = [o for o in outside if not o.startswith("F/EA")]
         notes.append(f"jump-over on '{name}': the wrap holds a tooth load beyond the chain's breaking force "
                      f"({float(strength) / 1e3:.4g} kN): the chain breaks before it jumps (the margin is the "
@@ -157,7 +164,6 @@ def _onset(drive, index, teeth, seated, tight, back, elongations, notes=None):
         warnings.warn(f"jump-over margin on '{name}' (the compliant wrap's table, scripts/tabulate_wrap_jump.py): "
                       f"{'; '.join(outside)}; the nearest edge of the table is used", ValidityRangeWarning,
                       stacklevel=2)
-    return onset
 
 
 def _margins(drive, layout, loads, grid, notes):
@@ -189,11 +195,19 @@ def _margins(drive, layout, loads, grid, notes):
             curves[i], t_jump[i], margin[i] = 0.0, 0.0, 0.0
             e_w = 0.0
         else:
-            onset = _onset(drive, i, z, seated, hi, lo, grid, notes)
-            curves[i] = np.asarray(onset.load_ratio) * lo / hi
-            t_jump[i] = float(np.asarray(onset.tight_tension)[-1]) * float(drive.chain.strands or 1)
+            # the grid's points and the jump elongation's search points in one call (pointwise: the same
+            # numbers); what lies outside the table said for the grid's
+            g = grid.size
+            onset = _onset(drive, i, z, seated, hi, lo, np.concatenate([grid, _jump_points(limit)]))
+            rho, tight = np.asarray(onset.load_ratio), np.asarray(onset.tight_tension)
+            outside = JT._outside(onset.loading, z, np.asarray(onset.fraction)[:g].tolist(),
+                                  np.asarray(onset.load_stiffness)[:g].tolist())
+            if outside:
+                _table_range(drive, i, outside, float(np.min(tight[:g])), notes)
+            curves[i] = rho[:g] * lo / hi
+            t_jump[i] = float(tight[g - 1]) * float(drive.chain.strands or 1)
             margin[i] = float(curves[i][-1])
-            e_w = _jump_elongation(drive, i, z, seated, hi, lo, limit, notes)
+            e_w = _jump_elongation(drive, i, rho[g:] * lo / hi, limit, notes)
         if e_w < e_jump:
             e_jump, wheel_jump = e_w, drive.wheels[i].name
     if not wheels:
@@ -207,11 +221,15 @@ def _margins(drive, layout, loads, grid, notes):
 _JUMP_POINTS = 17
 
 
-def _jump_elongation(drive, i, z, seated, hi, lo, limit, notes):
-    """Smallest elongation where the margin ``ρ_jump(e) T_2/T_1`` reaches 1, or the holding limit:
-    the first crossing on a grid up to the holding limit, linear in ``ln`` margin between its points."""
-    e = np.linspace(0.0, limit * (1 - 1e-9), _JUMP_POINTS)
-    m = np.asarray(_onset(drive, i, z, seated, hi, lo, e).load_ratio) * lo / hi
+def _jump_points(limit):
+    """The elongations (0 … the holding limit) on which the jump-over elongation is sought."""
+    return np.linspace(0.0, limit * (1 - 1e-9), _JUMP_POINTS)
+
+
+def _jump_elongation(drive, i, m, limit, notes):
+    """Smallest elongation where the margin ``m = ρ_jump(e) T_2/T_1`` (on :func:`_jump_points`) reaches 1,
+    or the holding limit: the first crossing on the grid, linear in ``ln`` margin between its points."""
+    e = _jump_points(limit)
     below = np.flatnonzero(m <= 1.0)
     if below.size == 0:
         return limit
@@ -301,11 +319,12 @@ def _efficiency(drive, layout, loads, notes):
     cf = float(loads.centrifugal)
     tens = _wheel_tensions(loads, n)
     radii = np.asarray(layout.pitch_radii, float)
-    # articulation angle per joint on each wheel: 2 asin(p / 2R) (= 2π/z on a sprocket)
-    angle = 2.0 * np.arcsin(np.minimum(1.0, drive.pitch / (2.0 * radii)))
-    sides = 2.0 * math.pi / angle
-    t_in = np.array([t[0] for t in tens]) + cf
-    t_out = np.array([t[1] for t in tens]) + cf
+    # articulation angle per joint on each wheel: 2 asin(p / 2R) (= 2π/z on a sprocket), at most its wrap
+    angle = EF.articulation_angle(drive.pitch, radii, np.asarray(layout.wrap.wrap_angle, float))
+    bent = angle > 0.0  # a wheel the chain does not wrap turns no joint
+    sides = 2.0 * math.pi / angle[bent]
+    t_in = np.array([t[0] for t in tens])[bent] + cf
+    t_out = np.array([t[1] for t in tens])[bent] + cf
     loss = float(EF.articulation_power_loss(loads.chain_speed, drive.pitch, d, sides, t_in, t_out))
     power = float(loads.effective_pull) * float(loads.chain_speed) / max(float(drive.load.service_factor), 1e-12)
     if power <= 0:

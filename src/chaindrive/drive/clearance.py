@@ -7,6 +7,7 @@ from __future__ import annotations
 import numpy as np
 
 from .. import layout as L
+from .._validation import as_float_array
 from ..errors import InputError
 from .model import Drive
 
@@ -51,7 +52,11 @@ def clearance_error(drive: Drive, centres: np.ndarray) -> L.WrapLayout | None:
     from ..layout.placement import _clearance
 
     radii = drive.pitch_radii()
-    problems, wrap = _clearance(np.asarray(centres, dtype=float), radii, [w.side for w in drive.wheels])
+    centres = as_float_array("centres", centres)
+    if centres.shape != (len(radii), 2) or not np.isfinite(centres).all():
+        raise InputError(f"centres must have shape ({len(radii)}, 2): a point [m] for each of the drive's "
+                         f"{len(radii)} wheels, finite, got shape {centres.shape}", field="centres")
+    problems, wrap = _clearance(centres, radii, [w.side for w in drive.wheels])
     if not problems:
         return wrap
     kind, i, j, dist = problems[0]

@@ -160,7 +160,25 @@ def span_lengths(centres: np.ndarray, radii: np.ndarray, sides: np.ndarray) -> n
     """:attr:`WrapLayout.span_length` for many sets of radii at once: ``radii`` (m, n) on
     checked ``centres`` (n, 2) and ``sides`` (n,) -> (m, n) [m], by the operations of
     :func:`wrap_layout` (the same numbers); ``None`` when a row has no layout (the caller
-    asks :func:`wrap_layout` for the error)."""
+    asks :func:`wrap_layout` for the error).
+
+    Raises
+    ------
+    InputError
+        ``centres`` not (n, 2) with n >= 2, ``radii`` not positive of shape (m, n), ``sides``
+        not +1 or -1 for each wheel, or a value not finite.
+    """
+    centres = as_float_array("centres", centres)
+    if centres.ndim != 2 or centres.shape[1] != 2 or centres.shape[0] < 2 or not np.isfinite(centres).all():
+        raise InputError(f"centres must be finite [m] with shape (n, 2), n >= 2, got shape {centres.shape}")
+    n = centres.shape[0]
+    radii = check_positive("radii", radii, "m")
+    if radii.ndim != 2 or radii.shape[1] != n:
+        raise InputError(f"radii must have shape (m, {n}): a row of radii for each of the {n} wheels, "
+                         f"got {radii.shape}")
+    sides = as_float_array("sides", sides)
+    if sides.shape != (n,) or not ((sides == 1.0) | (sides == -1.0)).all():
+        raise InputError(f"sides must be +1 or -1 for each of the {n} wheels, got shape {sides.shape}")
     rho = sides * radii
     c_next = np.concatenate((centres[1:], centres[:1]))
     rho_next = np.concatenate((rho[:, 1:], rho[:, :1]), axis=1)

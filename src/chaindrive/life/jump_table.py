@@ -38,6 +38,7 @@ K. M. Marshek and M. R. Naji, "Analysis of sprocket load distribution", Mech. Ma
 
 from __future__ import annotations
 
+import bisect
 import functools
 import json
 import math
@@ -96,6 +97,19 @@ def wrap_jump_range(loading: str = "torque") -> dict[str, tuple[float, float]]:
             "load_stiffness": (float(math.exp(lam[0])), float(math.exp(lam[-1])))}
 
 
+def _interp(x: float, xp: list[float], fp: list[float]) -> float:
+    """``numpy.interp(x, xp, fp)`` for a scalar in Python floats (the same formula: ``fp`` at the
+    ends and at a node, else ``slope (x - xp[j]) + fp[j]``); the tables are short."""
+    if x <= xp[0]:
+        return fp[0]
+    if x >= xp[-1]:
+        return fp[-1]
+    j = bisect.bisect_right(xp, x) - 1
+    if xp[j] == x:
+        return fp[j]
+    return (fp[j + 1] - fp[j]) / (xp[j + 1] - xp[j]) * (x - xp[j]) + fp[j]
+
+
 def _along(x: float, axis: np.ndarray, values: np.ndarray) -> np.ndarray:
     """``values`` (first axis along ``axis``) interpolated linearly at the scalar ``x`` (clipped)."""
     x = min(max(x, float(axis[0])), float(axis[-1]))
@@ -105,25 +119,63 @@ def _along(x: float, axis: np.ndarray, values: np.ndarray) -> np.ndarray:
 
 
 @functools.lru_cache(maxsize=1024)
-def _rows(loading: str, log_z: float) -> tuple[np.ndarray, np.ndarray]:
-    """``ln c`` at ``λ0`` over the fractions, and the side table's ``ln`` factor (side fractions × λ), at ``z``."""
+def _rows(loading: str, log_z: float) -> tuple[list[float], tuple[list[float], ...], list[float], list[float],
+                                               list[float]]:
+    """At ``z``: ``ln c`` at ``λ0`` over the fractions, the side table's ``ln`` factor over ``ln λ`` at each
+    side fraction, and the axes (fractions, ``ln λ``, side fractions), as lists of floats."""
     t = _table()
-    return _along(log_z, t["teeth"], t[loading]), _along(log_z, t["side_teeth"], t[loading + "_side"])
+    side = _along(log_z, t["side_teeth"], t[loading + "_side"])
+    return (_along(log_z, t["teeth"], t[loading]).tolist(), tuple(row.tolist() for row in side),
+            t["fraction"].tolist(), t[loading + "_lambda"].tolist(), t["side_fraction"].tolist())
 
 
-def _log_correction(loading: str, z: float, s: np.ndarray, lam: np.ndarray) -> np.ndarray:
-    """``ln c`` at ``z`` and each (``s``, ``λ``): linear in ``s`` and ``ln λ`` (clipped to the table)."""
-    t = _table()
-    main, side = _rows(loading, math.log(z))
-    axis = t[loading + "_lambda"]
-    log_lam = np.clip(np.log(lam), axis[0], axis[-1])
-    sf = t["side_fraction"]
-    per_row = np.array([np.interp(log_lam, axis, row) for row in side])  # side fractions × points
-    j = np.clip(np.searchsorted(sf, s) - 1, 0, len(sf) - 2)
-    w = np.clip((s - sf[j]) / (sf[j + 1] - sf[j]), 0.0, 1.0)
-    cols = np.arange(s.size)
-    factor = (1.0 - w) * per_row[j, cols] + w * per_row[j + 1, cols]
-    return np.interp(s, t["fraction"], main) + factor
+def _fraction_terms(loading: str, z: float, s: list[float]) -> tuple[list[float], list[tuple]]:
+    """What ``ln c`` takes from ``z`` and each ``s`` (:func:`_log_correction`): the ``ln λ`` axis, and per
+    point the two side rows about ``s``, the weight of the second and ``ln c`` at ``λ0``."""
+    main, side, fraction, axis, sf = _rows(loading, math.log(z))
+    last = len(sf) - 2
+    terms = []
+    for si in s:
+        j = min(max(bisect.bisect_left(sf, si) - 1, 0), last)
+        w = min(max((si - sf[j]) / (sf[j + 1] - sf[j]), 0.0), 1.0)
+        terms.append((side[j], side[j + 1], w, _interp(si, fraction, main)))
+    return axis, terms
+
+
+def _log_correction(axis: list[float], terms: list[tuple], lam: list[float]) -> list[float]:
+    """``ln c`` at each point of :func:`_fraction_terms` and its ``λ``: linear in ``s`` and ``ln λ``
+    (clipped to the table); the two side rows interpolated over ``ln λ`` as ``numpy.interp`` does."""
+    lo, hi = axis[0], axis[-1]
+    out = []
+    for (row_a, row_b, w, at_lam0), li in zip(terms, lam, strict=True):
+        x = math.log(li)
+        if x <= lo:
+            a, b = row_a[0], row_b[0]
+        elif x >= hi:
+            a, b = row_a[-1], row_b[-1]
+        else:
+            k = bisect.bisect_right(axis, x) - 1
+            if axis[k] == x:
+                a, b = row_a[k], row_b[k]
+            else:
+                d, dx = x - axis[k], axis[k + 1] - axis[k]
+                a = (row_a[k + 1] - row_a[k]) / dx * d + row_a[k]
+                b = (row_b[k + 1] - row_b[k]) / dx * d + row_b[k]
+        out.append(at_lam0 + ((1.0 - w) * a + w * b))
+    return out
+
+
+def _outside(loading: str, z: float, s: list[float], lam: list[float]) -> tuple[str, ...]:
+    """The inputs outside the table's range, in words (``s`` and ``λ`` of the points asked for)."""
+    rng = wrap_jump_range(loading)
+    outside = []
+    for name, lo_v, hi_v, what in (("teeth", z, z, "teeth"), ("fraction", min(s), max(s), "e/e_hold"),
+                                   ("load_stiffness", min(lam), max(lam), "F/EA")):
+        low, high = rng[name]
+        if lo_v < low * (1 - 1e-9) or hi_v > high * (1 + 1e-9):
+            shown = f"{lo_v:.4g}" if lo_v == hi_v else f"{lo_v:.4g}…{hi_v:.4g}"
+            outside.append(f"{what} = {shown} outside [{low:g}, {high:g}]")
+    return tuple(outside)
 
 
 @dataclass(frozen=True)
@@ -215,38 +267,34 @@ def jump_onset(pitch: float, teeth: int, roller_diameter: float, elongation: Arr
         raise InputError(f"seated must be a whole number of rollers, got {seated}", field="seated")
     e = np.asarray(check_nonnegative("elongation", elongation), float)
     flat = e.ravel()
-    beta = np.atleast_1d(np.asarray(tension_ratio(p, int(z), roller_diameter, flat), float))  # refuses e > e_hold
-    s = flat / holding_limit(p, int(z), roller_diameter)
-    with np.errstate(divide="ignore"):
-        rigid = np.where(beta > 0, beta ** (-float(n)), np.inf)
+    beta = np.atleast_1d(np.asarray(tension_ratio(p, int(z), roller_diameter, flat), float)).tolist()  # refuses e > e_hold
+    hold = holding_limit(p, int(z), roller_diameter)
+    # point by point in Python floats (an analysis asks for 7 … 17 points: numpy's per-call cost would dominate)
+    s_l = [x / hold for x in flat.tolist()]
+    rigid_l = [b ** (-float(n)) if b > 0 else math.inf for b in beta]
     f = t2 = 0.0
     if load is not None:
         loading, f = "torque", float(check_positive("load", load, "N"))
-        lam = np.full(s.shape, f / ea)
-        c = np.exp(_log_correction(loading, z, s, lam))
+        lam_l = [f / ea] * len(s_l)
+        axis, terms = _fraction_terms(loading, z, s_l)
+        c_l = list(map(math.exp, _log_correction(axis, terms, lam_l)))
     else:
         loading, t2 = "tensions", float(check_positive("back_tension", float(back_tension or 0.0), "N"))
-        c = np.full(s.shape, 1.6)  # the simulated cases' c (docs/life.md); two substitutions of F
+        c_l = [1.6] * len(s_l)  # the simulated cases' c (docs/life.md); two substitutions of F
+        axis, terms = _fraction_terms(loading, z, s_l)
         for _ in range(2):
-            lam = t2 * (1.0 + np.minimum(c * rigid, 1e12)) / ea
-            c = np.exp(_log_correction(loading, z, s, lam))
-    rho = c * rigid
-    tight = f * rho / (1.0 + rho) if loading == "torque" else t2 * rho
-    rng = wrap_jump_range(loading)
-    outside = []
-    for name, lo_v, hi_v, what in (("teeth", z, z, "teeth"), ("fraction", float(s.min()), float(s.max()), "e/e_hold"),
-                                   ("load_stiffness", float(lam.min()), float(lam.max()), "F/EA")):
-        low, high = rng[name]
-        if lo_v < low * (1 - 1e-9) or hi_v > high * (1 + 1e-9):
-            shown = f"{lo_v:.4g}" if lo_v == hi_v else f"{lo_v:.4g}…{hi_v:.4g}"
-            outside.append(f"{what} = {shown} outside [{low:g}, {high:g}]")
+            lam_l = [t2 * (1.0 + min(ci * ri, 1e12)) / ea for ci, ri in zip(c_l, rigid_l, strict=True)]
+            c_l = list(map(math.exp, _log_correction(axis, terms, lam_l)))
+    rho_l = [ci * ri for ci, ri in zip(c_l, rigid_l, strict=True)]
+    tight_l = [f * r / (1.0 + r) for r in rho_l] if loading == "torque" else [t2 * r for r in rho_l]
+    outside = _outside(loading, z, s_l, lam_l)
     if warn and outside:
         warnings.warn(f"jump-over onset (the compliant wrap's table, scripts/tabulate_wrap_jump.py): "
                       f"{'; '.join(outside)}; the nearest edge of the table is used", ValidityRangeWarning,
                       stacklevel=2)
 
     def shaped(v):
-        return float(v[0]) if e.ndim == 0 else np.reshape(v, e.shape)
+        return float(v[0]) if e.ndim == 0 else np.reshape(np.array(v, float), e.shape)
 
-    return JumpOnset(shaped(rho), shaped(tight), loading, shaped(rigid), shaped(c), tuple(outside), shaped(s),
-                     shaped(lam))
+    return JumpOnset(shaped(rho_l), shaped(tight_l), loading, shaped(rigid_l), shaped(c_l), outside, shaped(s_l),
+                     shaped(lam_l))
