@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import os
 from collections.abc import Sequence
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, fields
 from typing import TYPE_CHECKING
 
 import numpy as np
@@ -132,10 +132,16 @@ class SimulationResult(Result):
         other = self.slack_span if span is self.tight_span else self.tight_span
         return span_tension(self.positions, self.tension, span, other)
 
-    def save_npz(self, path: str | os.PathLike[str]) -> None:
-        """Write every array (and scalars) to a ``.npz`` file."""
-        data = {k: v for k, v in self.__dict__.items() if k != "summary"}
-        np.savez_compressed(path, **data)
+    def save_npz(self, path: str | os.PathLike[str], *, compressed: bool = False) -> None:
+        """Write every array (and scalars) to a ``.npz`` file (``numpy.load`` reads it
+        without ``allow_pickle``): the dataclass fields but the summary; not the
+        ``final_state``.
+
+        Uncompressed by default: the recorded floats compress by a quarter at most
+        (6.6 MB to 4.9 MB for the 0.5 s roller example) and the compression costs 0.2 s;
+        ``compressed=True`` for a smaller file."""
+        data = {f.name: getattr(self, f.name) for f in fields(self) if f.name != "summary"}
+        (np.savez_compressed if compressed else np.savez)(path, **data)
 
     def plot(self, *, ax: Sequence[Axes] | None = None) -> Figure:
         """Standard views (see :func:`chaindrive.plotting.simulation.simulation_plot`)."""
