@@ -4,6 +4,10 @@ PYTHON ?= python3
 VENV := .venv
 PY := $(VENV)/bin/python
 OUT ?= out
+# compiled bytecode (and pytest's rewritten test modules) are cached in __pycache__ and reused:
+# a shell that sets PYTHONDONTWRITEBYTECODE would recompile all of src/ and tests/ on every run
+# (collection 15 s instead of 8 s of CPU per test process)
+unexport PYTHONDONTWRITEBYTECODE
 
 .PHONY: demo test test-fast bench lint clean venv fuzz docs test-dist
 

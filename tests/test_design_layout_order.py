@@ -11,7 +11,7 @@ import pytest
 
 from chaindrive.chains import get
 from chaindrive.design import Duty, design_drive
-from chaindrive.design.procedure import _series
+from chaindrive.selection import _series
 
 
 @pytest.mark.parametrize(("power", "rpm", "centre"), [(11e3, 1460, 0.6), (3e3, 960, None), (40e3, 300, 1.2),

@@ -108,6 +108,12 @@ def test_drive_object_errors():
         Wheel("a", "sprocket", None, (0, 0), diameter=0.1)
     with pytest.raises(InputError, match="teeth must be a whole number >= 3"):
         Wheel("a", "sprocket", 2, (0, 0))
+    # the one whole-number field check (drive._fields._whole): a non-number, a fraction, a bool
+    for bad in ("19x", 19.5, True, float("nan"), float("inf")):
+        with pytest.raises(InputError, match=r"wheel 'a': teeth must be a whole number >= 3, got") as exc:
+            Wheel("a", "sprocket", bad, (0, 0))
+        assert exc.value.field == "teeth"
+    assert Wheel("a", "sprocket", 19.0, (0, 0)).teeth == 19
     with pytest.raises(InputError, match="exactly one of power and torque"):
         Load()
     with pytest.raises(InputError, match="service_factor must be >= 1"):

@@ -125,6 +125,23 @@ def test_select_ranking_and_consistency():
     assert len(S.select(15e3, w, 3.0, limit=2)) == 2
 
 
+def test_select_and_design_rows_share_one_chain_choice():
+    # the fields a select row and a design_drive row have in common are declared once
+    # (selection.ChainChoice, #31): same names, units and display in both
+    import dataclasses
+
+    from chaindrive.design import DesignCandidate
+
+    shared = [f.name for f in dataclasses.fields(S.ChainChoice)]
+    assert shared[:3] == ["chain", "names", "family"] and "rated_power" in shared
+    for cls in (S.Candidate, DesignCandidate):
+        assert issubclass(cls, S.ChainChoice)
+        assert [f.name for f in dataclasses.fields(cls)][:len(shared)] == shared
+        assert cls.unit_of("speed") == "rad/s" and cls.unit_of("pitch") == "m"
+    c = S.select(15e3, 960 * RPM, 3.0, teeth_driving=19, limit=1)[0]
+    assert list(c.to_dict())[:len(shared)] == shared and c.pitch > 0 and c.teeth_driving == 19
+
+
 def get_catalogue_pitches():
     from chaindrive.chains import catalogue
 

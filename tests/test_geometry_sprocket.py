@@ -370,3 +370,24 @@ def test_minimum_gap_form_removes_less_material(z):
         return Outline(_full_from_half(half, z), rp, np.zeros((0, 2))).area()
 
     assert area(ah, rh) == max(area(al, rl), area(ah, rl), area(al, rh), area(ah, rh))
+
+
+@given(st.floats(-1.0, 1.0), st.floats(-1.0, 1.0), st.floats(0.05, 1.0), st.floats(-1.0, 1.0),
+       st.floats(-1.0, 1.0), st.floats(0.05, 1.0))
+@settings(max_examples=200, deadline=None)
+def test_circle_intersections_lie_on_both_circles(x1, y1, r1, x2, y2, r2):
+    # independent check of the shared helper (tooth outline, worn-chain seat): each point is at
+    # r1 from c1 and r2 from c2; none exactly when the circles are apart, nested or concentric
+    from chaindrive.geometry.outline import circle_intersections
+
+    d = math.hypot(x2 - x1, y2 - y1)
+    hit = circle_intersections((x1, y1), r1, (x2, y2), r2)
+    if d > r1 + r2 or d < abs(r1 - r2) or d == 0:
+        assert hit is None
+        return
+    assert hit is not None
+    for p in hit:
+        assert math.hypot(p[0] - x1, p[1] - y1) == pytest.approx(r1, abs=1e-9 / min(1.0, d))
+        assert math.hypot(p[0] - x2, p[1] - y2) == pytest.approx(r2, abs=1e-9 / min(1.0, d))
+    # the first lies to the left of c1 -> c2
+    assert (x2 - x1) * (hit[0][1] - y1) - (y2 - y1) * (hit[0][0] - x1) >= -1e-12

@@ -322,3 +322,21 @@ def test_property_exact_model(z, frac, w, extra, entry):
     assert s["v_max"] <= w * r.radius * (1 + 1e-9)
     # x monotone (the chain never runs back)
     assert np.all(np.diff(r.x) > 0)
+
+
+def test_entry_and_crawler_share_period_motion():
+    # the motion fields of a chain driven over one tooth period, declared once (#31)
+    import dataclasses
+
+    from chaindrive.kinematics.crawler import crawler_drive
+    from chaindrive.kinematics.histories import PeriodMotion
+
+    shared = {f.name for f in dataclasses.fields(PeriodMotion)}
+    assert shared == {"velocity", "acceleration", "summary", "pitch", "radius", "teeth",
+                      "angular_velocity", "period"}
+    e = chain_entry(0.064, 8, 5.0, bar_diameter=0.018)
+    c = crawler_drive(0.1, 9, 3.0)
+    for r in (e, c):
+        assert isinstance(r, PeriodMotion)
+        assert r.period == pytest.approx(2 * np.pi / r.teeth)
+        assert set(SUMMARY_KEYS) <= set(r.summary) and shared <= set(r.to_dict())

@@ -12,7 +12,7 @@ from __future__ import annotations
 import math
 import warnings
 from dataclasses import dataclass
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING, Any, Protocol, TypeVar
 
 from ._finite import finite_guard
 from ._results import Result, quantity
@@ -30,6 +30,7 @@ __all__ = [
     "ChainRating",
     "chain_rating",
     "Candidate",
+    "ChainChoice",
     "select",
 ]
 # the rating's names, re-exported for existing callers (one list: chaindrive.rating.ansi's)
@@ -48,8 +49,10 @@ def _outside_diameter(pitch: float, teeth: int) -> float:
 
 
 @dataclass(frozen=True)
-class Candidate(Result):
-    """One chain that carries the load (a row of :func:`select`).
+class ChainChoice(Result):
+    """A catalogue chain that carries a duty, with the duty and the chain's rated power: what
+    a row of :func:`select` (:class:`Candidate`) and of :func:`chaindrive.design.design_drive`
+    (:class:`~chaindrive.design.DesignCandidate`) have in common.
 
     Attributes
     ----------
@@ -62,20 +65,43 @@ class Candidate(Result):
     pitch : float
         [m].
     strands : int
-    teeth_driving, teeth_driven : int
     speed : float
         Small (driving) sprocket speed [rad/s].
     power : float
         Transmitted power [W].
     service_factor : float
-    chain_speed : float
-        [m/s].
-    rated_power : float
-        ANSI/ACA rating of the chain (all strands, galling included) [W].
     design_power : float
         Power times service factor [W].
+    rated_power : float
+        Rating of the chain (all strands) [W].
     power_margin : float
-        ``rated_power / design_power`` [-] (>= 1).
+        ``rated_power / design_power`` [-] (>= 1 for a chain that carries the duty).
+    chain_speed : float
+        [m/s].
+    """
+
+    chain: str
+    names: tuple[str, ...]
+    family: str
+    pitch: float = quantity("m", display="mm")
+    strands: int = quantity("1")
+    speed: float = quantity("rad/s", display="rpm")
+    power: float = quantity("W")
+    service_factor: float = quantity("1")
+    design_power: float = quantity("W")
+    rated_power: float = quantity("W")
+    power_margin: float = quantity("1")
+    chain_speed: float = quantity("m/s")
+
+
+@dataclass(frozen=True)
+class Candidate(ChainChoice):
+    """One chain that carries the load (a row of :func:`select`): the fields of
+    :class:`ChainChoice` (``rated_power``: the ANSI/ACA rating, galling included) and these.
+
+    Attributes
+    ----------
+    teeth_driving, teeth_driven : int
     governing_limit : str
         ``"link_plate"``, ``"roller_bushing"`` or ``"galling"``.
     working_tension : float
@@ -95,20 +121,8 @@ class Candidate(Result):
     notes : tuple of str
     """
 
-    chain: str
-    names: tuple[str, ...]
-    family: str
-    pitch: float = quantity("m")
-    strands: int = quantity("1")
     teeth_driving: int = quantity("1")
     teeth_driven: int = quantity("1")
-    speed: float = quantity("rad/s")
-    power: float = quantity("W")
-    service_factor: float = quantity("1")
-    chain_speed: float = quantity("m/s")
-    rated_power: float = quantity("W")
-    design_power: float = quantity("W")
-    power_margin: float = quantity("1")
     governing_limit: str
     working_tension: float = quantity("N")
     static_safety: float | None = quantity("1")
@@ -123,6 +137,38 @@ class Candidate(Result):
 def _series(chain: Chain) -> str:
     """Proportion series: ``"B"`` (ISO B) or ``"A"`` (ISO A/C = ANSI numbers)."""
     return "B" if chain.family == "iso606" and "B" in chain.name else "A"
+
+
+class _SizedRow(Protocol):
+    """What :func:`_smallest_per_series` reads of a row (a :class:`Candidate`, a design candidate)."""
+
+    @property
+    def chain(self) -> str: ...
+    @property
+    def strands(self) -> int: ...
+    @property
+    def lubrication(self) -> str: ...
+    @property
+    def pitch(self) -> float: ...
+
+
+_Row = TypeVar("_Row", bound=_SizedRow)
+
+
+def _smallest_per_series(rows: list[_Row]) -> list[_Row]:
+    """Of ``rows`` (sorted outside the galling region first, then by pitch), per proportion
+    series and strand count: the smallest adequate pitch outside the galling region, or, when
+    every adequate chain of the group galls, the smallest (shared by :func:`select_chains` and
+    :func:`chaindrive.design.design_drive`)."""
+    from .chains import get
+
+    def key(c: _Row) -> tuple[str, int]:
+        return _series(get(c.chain)), c.strands
+
+    smallest: dict[tuple[str, int], tuple[bool, float]] = {}
+    for c in rows:
+        smallest.setdefault(key(c), (c.lubrication == "C'", c.pitch))
+    return [c for c in rows if smallest[key(c)] == (c.lubrication == "C'", c.pitch)]
 
 
 @finite_guard
@@ -309,17 +355,7 @@ def select(power: float, speed: float, ratio: float, *, service_factor: float = 
     rows = sorted(found.values(), key=lambda c: (c.lubrication == "C'", c.strands, c.pitch,
                                                  -(c.static_safety or 0.0), c.chain))
     if not all_sizes:
-        from .chains import get
-
-        def key(c: Candidate) -> tuple[str, int]:
-            return _series(get(c.chain)), c.strands
-
-        # per series and strand count: the smallest adequate pitch outside the galling
-        # region (rows are sorted so), or, when every adequate chain galls, the smallest
-        smallest: dict[tuple[str, int], tuple[bool, float]] = {}
-        for c in rows:
-            smallest.setdefault(key(c), (c.lubrication == "C'", c.pitch))
-        rows = [c for c in rows if smallest[key(c)] == (c.lubrication == "C'", c.pitch)]
+        rows = _smallest_per_series(rows)
     return rows[:limit] if limit else rows
 
 

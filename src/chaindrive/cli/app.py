@@ -246,6 +246,22 @@ def motion_json(summary: Mapping[str, Any], keys: Sequence[str], arrays: Mapping
     echo_json({**arrays, "summary": ordered, **(after or {})})
 
 
+def motion_output(result: Any, keys: Sequence[str], arrays: Mapping[str, Any], *, as_json: bool,
+                  head: str, tail: str, rows: Sequence[tuple[str, str]] = (),
+                  after: Mapping[str, Any] | None = None, plot: Any = None) -> None:
+    """Print the result of ``kinematics`` or ``crawler``: with ``as_json`` its :func:`motion_json`
+    (``arrays``, the summary, ``after``); else the table titled ``head``, the pitch radius and
+    the wheel speed (:func:`motion_title`), ``tail``, of the speed summary (:func:`motion_rows`)
+    and ``rows``, and the ``--plot`` file written."""
+    if as_json:
+        motion_json(result.summary, keys, arrays, after)
+        return
+    title = motion_title(head, result.radius, result.angular_velocity)
+    print_rows(title + tail, motion_rows(result.summary) + list(rows))
+    if plot is not None:
+        print(f"wrote {plot}")
+
+
 def check_plot(plot: Any, force: bool) -> None:
     """Refuse a ``--plot`` file before any work: a figure suffix, not there unless ``--force``."""
     if plot is not None:

@@ -19,10 +19,7 @@ from .app import (
     app,
     check_plot,
     force_option,
-    motion_json,
-    motion_rows,
-    motion_title,
-    print_rows,
+    motion_output,
     quantity,
     save_plot,
     unit_help,
@@ -101,14 +98,8 @@ def crawler_command(
         from ..plotting.crawler import crawler_plot
 
         save_plot(crawler_plot([main, other] if guide else [other, main]), plot, force)
-    if as_json:
-        motion_json(r.summary, SUMMARY_KEYS, {"psi": r.psi, "displacement": r.displacement,
-                    "velocity": r.velocity, "acceleration": r.acceleration},
-                    None if r.force is None else {"force": r.force})
-        return
     s = r.summary
-    what = "tangent guide" if guide else "no guide"
-    rows = motion_rows(s)
+    rows: list[tuple[str, str]] = []
     if r.force is not None:
         rows += [
             ("cam stiffness", f"{s['cam_stiffness']:.6g} N/m"),
@@ -120,7 +111,8 @@ def crawler_command(
         ]
     if "guide_reaction_max" in s:
         rows.append(("largest guide reaction at the guide end, T tan(phi1)", f"{s['guide_reaction_max']:.6g} N"))
-    title = motion_title(f"crawler drive chain (t = {mm(r.pitch):g} mm, z = {r.teeth}", r.radius, r.angular_velocity)
-    print_rows(f"{title}): {what}", rows)
-    if plot is not None:
-        print(f"wrote {plot}")
+    motion_output(r, SUMMARY_KEYS, {"psi": r.psi, "displacement": r.displacement, "velocity": r.velocity,
+                                    "acceleration": r.acceleration},
+                  after=None if r.force is None else {"force": r.force}, as_json=as_json,
+                  head=f"crawler drive chain (t = {mm(r.pitch):g} mm, z = {r.teeth}",
+                  tail=f"): {'tangent guide' if guide else 'no guide'}", rows=rows, plot=plot)

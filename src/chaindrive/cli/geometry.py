@@ -8,8 +8,11 @@ outline (in mm).
 from __future__ import annotations
 
 import dataclasses
+import functools
+import inspect
+from collections.abc import Callable
 from pathlib import Path
-from typing import Any
+from typing import Annotated, Any
 
 import numpy as np
 import typer
@@ -18,26 +21,78 @@ from ..display import mm
 from ..errors import InputError
 from .app import app, echo_json, print_rows, quantity, unit_help
 
-# Path options as module-level singletons (ruff B008)
-_SPROCKET_DXF = typer.Option(None, "--dxf", help="Write the workshop drawing to this DXF file (mm): front view with measuring pins, section A-A with the tooth chamfer, hub, bore H7 and DIN 6885-1 keyway, ISO 606:2015 dimensions, data table, title block. Needs the tooth width (a catalogue chain or --inner-width).")
-_SPROCKET_STEP = typer.Option(None, "--step", help="Write the 3-D solid to this STEP file (mm; build123d, extra 'cad3d'): ISO 606 teeth with the tooth side chamfer rx, ba (5.6.2), hub, bore and DIN 6885-1 keyway.")
-_SPROCKET_SVG = typer.Option(None, "--svg", help="Write the outline to this SVG file (viewBox in mm).")
-_POCKET_DXF = typer.Option(None, "--dxf", help="Write the workshop drawing to this DXF file (mm): front view, section A-A with pockets and the groove for the vertical links, hub, bore H7 and DIN 6885-1 keyway, data table, title block.")
-_POCKET_STEP = typer.Option(None, "--step", help="Write the 3-D solid to this STEP file (mm; build123d, extra 'cad3d'): pockets for the horizontal links, groove for the vertical links, hub, bore, DIN 6885-1 keyway.")
-_BORE = typer.Option(None, "--bore", help=unit_help("Bore diameter d (tolerance H7); default hub diameter / 1.8 rounded down to 5 mm. Refused when its DIN 6885-1 keyway leaves less than one key height h of wall to the hub (or to the root / groove bottom without hub); the message gives the range.", "m", "40 mm"))
-_HUB_DIAMETER = typer.Option(None, "--hub-diameter", help=unit_help("Hub diameter; at most ISO 606:2015 5.6.2 dg (sprocket) or the groove bottom (pocket wheel); default 1.8 x bore rounded up to 5 mm.", "m", "100 mm"))
-_HUB_LENGTH = typer.Option(None, "--hub-length", help=unit_help("Hub projection beyond the plate on one side ('0 mm' for a plate wheel); default 1.2 x bore overall, rounded up to 5 mm.", "m", "50 mm"))
-_MATERIAL = typer.Option(None, "--material", help="Material and heat-treatment note for the title block, e.g. 'C45, teeth induction hardened 45...55 HRC'.")
-_FORCE = typer.Option(False, "--force", help="Overwrite existing output files (default: refuse).")
-
-_POCKET_SVG = typer.Option(None, "--svg", help="Write the outline to this SVG file (viewBox in mm).")
+# Help of the file options (the wheel-part commands build theirs in _part_parameters); the
+# track wheel's options as module-level singletons (ruff B008)
+_SPROCKET_DXF = "Write the workshop drawing to this DXF file (mm): front view with measuring pins, section A-A with the tooth chamfer, hub, bore H7 and DIN 6885-1 keyway, ISO 606:2015 dimensions, data table, title block. Needs the tooth width (a catalogue chain or --inner-width)."
+_SPROCKET_STEP = "Write the 3-D solid to this STEP file (mm; build123d, extra 'cad3d'): ISO 606 teeth with the tooth side chamfer rx, ba (5.6.2), hub, bore and DIN 6885-1 keyway."
+_POCKET_DXF = "Write the workshop drawing to this DXF file (mm): front view, section A-A with pockets and the groove for the vertical links, hub, bore H7 and DIN 6885-1 keyway, data table, title block."
+_POCKET_STEP = "Write the 3-D solid to this STEP file (mm; build123d, extra 'cad3d'): pockets for the horizontal links, groove for the vertical links, hub, bore, DIN 6885-1 keyway."
+_SVG_HELP = "Write the outline to this SVG file (viewBox in mm)."
+_FORCE_HELP = "Overwrite existing output files (default: refuse)."
+_FORCE = typer.Option(False, "--force", help=_FORCE_HELP)
 _TRACK_DXF = typer.Option(None, "--dxf", help="Write the outline to this DXF file (mm; layers OUTLINE, PITCH_CIRCLE, CENTRES, ROOT, TIP).")
-_TRACK_SVG = typer.Option(None, "--svg", help="Write the outline to this SVG file (viewBox in mm).")
+_TRACK_SVG = typer.Option(None, "--svg", help=_SVG_HELP)
 
 
-def _json_option() -> Any:
-    """The ``--json`` option of the wheel commands."""
-    return typer.Option(False, "--json", help="Print every computed dimension as JSON in SI units (m, rad).")
+@dataclasses.dataclass(frozen=True)
+class _PartOptions:
+    """The options every wheel-part command shares (``sprocket``, ``pocket-wheel``): the files
+    it writes and the part's hub and material, as typed (see :func:`_part_command`)."""
+
+    dxf: Path | None
+    svg: Path | None
+    step: Path | None
+    bore: str | None
+    hub_diameter: str | None
+    hub_length: str | None
+    material: str | None
+    force: bool
+    as_json: bool
+
+    def part_kwargs(self) -> dict[str, Any]:
+        """The hub options in SI units and the material note (if given) of the part builder."""
+        out: dict[str, Any] = {name: quantity(getattr(self, name), "m", name)
+                               for name in ("bore", "hub_diameter", "hub_length")}
+        if self.material:
+            out["material"] = self.material
+        return out
+
+
+def _part_parameters(dxf_help: str, step_help: str) -> list[inspect.Parameter]:
+    """The shared options of a wheel-part command, in ``--help`` order (Typer ``Annotated`` style)."""
+    def opt(name: str, kind: Any, default: Any, *decls: str, help: str) -> inspect.Parameter:
+        return inspect.Parameter(name, inspect.Parameter.KEYWORD_ONLY, default=default,
+                                 annotation=Annotated[kind, typer.Option(*decls, help=help)])
+
+    return [
+        opt("dxf", Path | None, None, "--dxf", help=dxf_help),
+        opt("svg", Path | None, None, "--svg", help=_SVG_HELP),
+        opt("step", Path | None, None, "--step", help=step_help),
+        opt("bore", str | None, None, "--bore", help=unit_help("Bore diameter d (tolerance H7); default hub diameter / 1.8 rounded down to 5 mm. Refused when its DIN 6885-1 keyway leaves less than one key height h of wall to the hub (or to the root / groove bottom without hub); the message gives the range.", "m", "40 mm")),
+        opt("hub_diameter", str | None, None, "--hub-diameter", help=unit_help("Hub diameter; at most ISO 606:2015 5.6.2 dg (sprocket) or the groove bottom (pocket wheel); default 1.8 x bore rounded up to 5 mm.", "m", "100 mm")),
+        opt("hub_length", str | None, None, "--hub-length", help=unit_help("Hub projection beyond the plate on one side ('0 mm' for a plate wheel); default 1.2 x bore overall, rounded up to 5 mm.", "m", "50 mm")),
+        opt("material", str | None, None, "--material", help="Material and heat-treatment note for the title block, e.g. 'C45, teeth induction hardened 45...55 HRC'."),
+        opt("force", bool, False, "--force", help=_FORCE_HELP),
+        opt("as_json", bool, False, "--json", help="Print every computed dimension as JSON in SI units (m, rad)."),
+    ]
+
+
+def _part_command(name: str, *, dxf_help: str, step_help: str) -> Callable[[Callable[..., None]], Callable[..., None]]:
+    """Register a wheel-part command whose last parameter ``opts: _PartOptions`` stands for the
+    shared options of :func:`_part_parameters` (one declaration, not one copy per command)."""
+    def register(func: Callable[..., None]) -> Callable[..., None]:
+        own = [p for p in inspect.signature(func, eval_str=True).parameters.values() if p.name != "opts"]
+        shared = _part_parameters(dxf_help, step_help)
+
+        @functools.wraps(func)
+        def command(**kwargs: Any) -> None:
+            opts = _PartOptions(**{p.name: kwargs.pop(p.name) for p in shared})
+            func(**kwargs, opts=opts)
+
+        command.__signature__ = inspect.Signature(own + shared, return_annotation=None)  # type: ignore[attr-defined]
+        command.__annotations__ = {p.name: p.annotation for p in own + shared}
+        return app.command(name)(command)
+    return register
 
 
 def _chain(name: str | None):
@@ -118,7 +173,7 @@ def _rng(lo, hi) -> str:
     return f"{mm(lo):.3f} ... {mm(hi):.3f} mm"
 
 
-@app.command("sprocket")
+@_part_command("sprocket", dxf_help=_SPROCKET_DXF, step_help=_SPROCKET_STEP)
 def sprocket_command(
     chain: str | None = typer.Option(None, "--chain", "-c", help="Chain designation from the catalogue, e.g. 16B or 80 (ISO 606 / ANSI B29.1)."),
     teeth: int = typer.Option(..., "--teeth", "-z", help="Number of teeth z, dimensionless count, 9...10000 (chaindrive.limits.MAX_TEETH; ISO 606:2015 Annex A tabulates 9...150; a STEP solid at most 150)."),
@@ -129,15 +184,7 @@ def sprocket_command(
     inner_width: str | None = typer.Option(None, "--inner-width", help=unit_help("Width between inner plates b1 for the tooth width bf1 (ISO 606:2015 5.6).", "m", "17.02 mm")),
     plate_height: str | None = typer.Option(None, "--plate-height", help=unit_help("Inner plate depth h2 for the max hub diameter dg (ISO 606:2015 5.6).", "m", "21 mm")),
     tip_diameter: str | None = typer.Option(None, "--tip-diameter", help=unit_help("Tip diameter da of the outline, inside da min...da max (ISO 606:2015 5.5).", "m", "170 mm")),
-    dxf: Path | None = _SPROCKET_DXF,
-    svg: Path | None = _SPROCKET_SVG,
-    step: Path | None = _SPROCKET_STEP,
-    bore: str | None = _BORE,
-    hub_diameter: str | None = _HUB_DIAMETER,
-    hub_length: str | None = _HUB_LENGTH,
-    material: str | None = _MATERIAL,
-    force: bool = _FORCE,
-    as_json: bool = _json_option(),
+    *, opts: _PartOptions,
 ) -> None:
     """Roller-chain sprocket dimensions and tooth outline to ISO 606:2015 clause 5 (or ASME B29.1).
 
@@ -145,9 +192,10 @@ def sprocket_command(
     minimum and maximum tooth gap forms (5.4); bf1, rx, ba, dg (5.6); measurement over
     pins MR (5.3).
     """
+    from ..geometry.part import sprocket_part
     from ..geometry.sprocket import Sprocket
 
-    _check_paths(dxf, svg, step, force)
+    _check_paths(opts.dxf, opts.svg, opts.step, opts.force)
     ch = _chain(chain)
     if ch is not None:
         s = Sprocket.from_chain(ch, teeth, method=method)
@@ -167,16 +215,8 @@ def sprocket_command(
     tip = quantity(tip_diameter, "m", "tip_diameter")
     outline = s.outline(form=form, tip_diameter=tip)  # validates form / tip before any output
     d = s.dimensions()
-    part = None
-    if dxf is not None or step is not None:
-        from ..geometry.part import DEFAULT_MATERIAL, sprocket_part
-
-        part = sprocket_part(s, form=form, tip_diameter=tip, **_hub(bore, hub_diameter, hub_length),
-                             material=material or DEFAULT_MATERIAL)
-    _write_outline(outline, s.label(), None, svg, force=force)
-    if part is not None:
-        _write_part(part, dxf, step, force)
-    if as_json:
+    part = _write_files(opts, outline, s.label(), lambda **kw: sprocket_part(s, form=form, tip_diameter=tip, **kw))
+    if opts.as_json:
         out = s.to_dict()
         out["outline"] = {"form": form or ("min" if method == "iso606" else None),
                           "tip_diameter": 2 * outline.circles["TIP"],
@@ -200,17 +240,23 @@ def sprocket_command(
         ("max hub diameter dg", _mm(d.max_hub_diameter), "ISO 606:2015 5.6.2"),
         ("outline tip diameter", _mm(2 * outline.circles["TIP"]), f"drawn ({method}, form {form or 'min' if method == 'iso606' else 'ASME B29.1'})"),
     ]
-    _finish(s.label(), rows, part, dxf, svg, step)
+    _finish(s.label(), rows, part, opts.dxf, opts.svg, opts.step)
 
 
 def _write_msgs(dxf, svg, step=None):
     return [f"wrote {p}" for p in (dxf, svg, step) if p is not None]
 
 
-def _hub(bore: str | None, hub_diameter: str | None, hub_length: str | None) -> dict[str, Any]:
-    """The hub options of a wheel part in SI units (``sprocket_part``, ``pocket_wheel_part``)."""
-    return {"bore": quantity(bore, "m", "bore"), "hub_diameter": quantity(hub_diameter, "m", "hub_diameter"),
-            "hub_length": quantity(hub_length, "m", "hub_length")}
+def _write_files(opts: _PartOptions, outline: Any, label: str, make_part: Callable[..., Any]) -> Any:
+    """Write a wheel's files (SVG outline, DXF drawing, STEP solid) as ``opts`` asks; the part
+    (``make_part(**opts.part_kwargs())``), built only when a drawing or a solid is written, or None."""
+    part = None
+    if opts.dxf is not None or opts.step is not None:
+        part = make_part(**opts.part_kwargs())
+    _write_outline(outline, label, None, opts.svg, force=opts.force)
+    if part is not None:
+        _write_part(part, opts.dxf, opts.step, opts.force)
+    return part
 
 
 def _echo_with_part(out: dict[str, Any], part: Any) -> None:
@@ -227,7 +273,7 @@ def _finish(label: str, rows: list[tuple[str, str, str]], part: Any, dxf, svg, s
         print(line)
 
 
-@app.command("pocket-wheel")
+@_part_command("pocket-wheel", dxf_help=_POCKET_DXF, step_help=_POCKET_STEP)
 def pocket_wheel_command(
     chain: str | None = typer.Option(None, "--chain", "-c", help="Round link chain from the catalogue, e.g. 18x64 (DIN 22252: d x t in mm)."),
     teeth: int = typer.Option(..., "--teeth", "-z", help="Number of pockets z (horizontal links per turn), >= 3 (dimensionless count)."),
@@ -235,21 +281,14 @@ def pocket_wheel_command(
     bar_diameter: str | None = typer.Option(None, "--bar-diameter", help=unit_help("Bar diameter d when no --chain is given.", "m", "18 mm")),
     inner_width: str | None = typer.Option(None, "--inner-width", help=unit_help("Inner width of a link b; default 21/18 d (DIN 22252, 18x64). Sets the slot depth.", "m", "21 mm")),
     clearance: str = typer.Option("0 mm", "--clearance", help=unit_help("Play round the link in pocket and slot (drawing only).", "m", "1 mm")),
-    dxf: Path | None = _POCKET_DXF,
-    svg: Path | None = _POCKET_SVG,
-    step: Path | None = _POCKET_STEP,
-    bore: str | None = _BORE,
-    hub_diameter: str | None = _HUB_DIAMETER,
-    hub_length: str | None = _HUB_LENGTH,
-    material: str | None = _MATERIAL,
-    force: bool = _FORCE,
-    as_json: bool = _json_option(),
+    *, opts: _PartOptions,
 ) -> None:
     """Pocket wheel for a round link chain: pitch radius (Dolipiński et al. eq. 6), central angles
     δ1, δ2 (Dolipiński et al. eqs 7-9), pocket and hinge positions, and a basic outline."""
+    from ..geometry.part import pocket_wheel_part
     from ..geometry.pocket_wheel import PocketWheel
 
-    _check_paths(dxf, svg, step, force)
+    _check_paths(opts.dxf, opts.svg, opts.step, opts.force)
     kw: dict[str, Any] = {"clearance": quantity(clearance, "m", "clearance")}
     width = quantity(inner_width, "m", "inner_width")
     ch = _chain(chain)
@@ -264,19 +303,10 @@ def pocket_wheel_command(
             raise InputError("give --chain NAME, or both --pitch and --bar-diameter")
         w = PocketWheel(pitch=quantity(pitch, "m", "pitch"), bar_diameter=quantity(bar_diameter, "m", "bar_diameter"),
                         teeth=teeth, **kw)
-    w.outline()  # validate before output
-    part = None
-    if dxf is not None or step is not None:
-        from ..geometry.part import pocket_wheel_part
-
-        extra: dict[str, Any] = {} if material is None else {"material": material}
-        part = pocket_wheel_part(w, **_hub(bore, hub_diameter, hub_length), **extra)
-    if svg is not None:
-        _write_outline(w.outline(), w.label(), None, svg, force=force)
-    if part is not None:
-        _write_part(part, dxf, step, force)
+    outline = w.outline()  # validate before output
+    part = _write_files(opts, outline, w.label(), lambda **kw: pocket_wheel_part(w, **kw))
     d = w.dimensions()
-    if as_json:
+    if opts.as_json:
         out = w.to_dict()
         _echo_with_part(out, part)
         return
@@ -291,7 +321,7 @@ def pocket_wheel_command(
         ("tip radius", _mm(d.tip_radius), "R + d/2 (drawing choice)"),
         ("pocket centre angles", ", ".join(f"{a:.2f}" for a in deg(d.pocket_angles)) + " °", "θk = 90° + 360° k/z"),
     ]
-    _finish(w.label(), rows, part, dxf, svg, step)
+    _finish(w.label(), rows, part, opts.dxf, opts.svg, opts.step)
 
 
 @app.command("track-wheel")

@@ -18,10 +18,7 @@ from .app import (
     app,
     check_plot,
     force_option,
-    motion_json,
-    motion_rows,
-    motion_title,
-    print_rows,
+    motion_output,
     quantity,
     save_plot,
     unit_help,
@@ -81,17 +78,12 @@ def kinematics_command(
         from ..plotting.kinematics import kinematics_plot
 
         save_plot(kinematics_plot(res), plot, force)
-    if as_json:
-        motion_json(r.summary, SUMMARY_KEYS, {"phi": r.phi, "x": r.x, "velocity": r.velocity,
-                                              "acceleration": r.acceleration})
-        return
     what = f"{r.entry} entry" + (f", H = {mm(r.guide_height):.2f} mm" if r.guide_height is not None else "")
     if r.guide_end_distance is not None:
         what += f", l = {mm(r.guide_end_distance):.1f} mm"
-    title = motion_title(f"chain entry kinematics ({r.chain_type} chain, z = {r.teeth}", r.radius, r.angular_velocity)
-    print_rows(f"{title}, model {r.model}): {what}", motion_rows(r.summary))
-    if plot is not None:
-        print(f"wrote {plot}")
+    motion_output(r, SUMMARY_KEYS, {"phi": r.phi, "x": r.x, "velocity": r.velocity, "acceleration": r.acceleration},
+                  as_json=as_json, head=f"chain entry kinematics ({r.chain_type} chain, z = {r.teeth}",
+                  tail=f", model {r.model}): {what}", plot=plot)
 
 
 def _chain_geometry(chain, pitch, bar_diameter, roller):

@@ -44,6 +44,7 @@ from ..errors import (
     ValidityRangeWarning,
 )
 from ..loads import mean_chain_speed
+from ..selection import ChainChoice
 from ..units import angular_velocity_to_rpm
 from .duty import Duty, Factor, design_power, duty_factors
 from .policy import DEFAULT_CENTRE_PITCHES, default_centre_distance
@@ -59,27 +60,17 @@ __all__ = ["DesignCandidate", "DesignResult", "NearMiss", "design_drive", "proje
 
 
 @dataclass(frozen=True)
-class DesignCandidate(Result):
-    """One chain that carries the duty, laid out and analysed (a row of :func:`design_drive`)."""
+class DesignCandidate(ChainChoice):
+    """One chain that carries the duty, laid out and analysed (a row of :func:`design_drive`):
+    the fields of :class:`~chaindrive.selection.ChainChoice` and the layout, the checks and the
+    advice."""
 
-    chain: str
-    names: tuple[str, ...]
-    family: str
     method: str
     limited_by: str
-    pitch: float = quantity("m", display="mm")
-    strands: int = quantity("1")
     driving_teeth: int = quantity("1")
     driven_teeth: int = quantity("1")
     links: int = quantity("1")
     centre_distance: float = quantity("m", display="mm")
-    speed: float = quantity("rad/s", display="rpm")
-    power: float = quantity("W")
-    service_factor: float = quantity("1")
-    design_power: float = quantity("W")
-    rated_power: float = quantity("W")
-    power_margin: float = quantity("1")
-    chain_speed: float = quantity("m/s")
     lubrication: str = ""
     lubrication_method: str = ""
     static_safety: float | None = quantity("1", default=None)
@@ -211,10 +202,6 @@ def _written(drive: Drive) -> str:
 def _outside_diameter(pitch: float, teeth: int) -> float:
     # ANSI B29.1 sprocket outside diameter, OD = p (0.6 + cot(180°/N))
     return pitch * (0.6 + 1.0 / math.tan(math.pi / teeth))
-
-
-def _series(chain: Chain) -> str:
-    return "B" if chain.family == "iso606" and "B" in chain.name else "A"
 
 
 @memo(maxsize=1024, key=lambda chain, duty, given: (chain.pitch, duty.character, duty.speed_ratio, duty.speed,
@@ -588,6 +575,8 @@ def _lay_out(rated: list[_Rated | _Pending], duty: Duty, factors: tuple[Factor, 
     if all_sizes:
         return [c for r in rated if isinstance(r, _Rated)
                 and (c := _laid_out(r, duty, factors, ks, required, dropped)) is not None]
+    from ..selection import _series
+
     groups: dict[tuple[str, int], list[_Rated | _Pending]] = {}
     for r in rated:
         groups.setdefault((_series(r.chain), r.chain.strands), []).append(r)
@@ -721,15 +710,9 @@ def design_drive(request: DesignRequest | Duty, **options: Any) -> DesignResult:
     rows = sorted(found, key=lambda c: (c.lubrication == "C'", c.strands, c.pitch, -(c.static_safety or 0.0),
                                         c.chain))
     if not all_sizes:
-        from ..chains import get
+        from ..selection import _smallest_per_series
 
-        def key(c: DesignCandidate) -> tuple[str, int]:
-            return _series(get(c.chain)), c.strands
-
-        smallest: dict[tuple[str, int], tuple[bool, float]] = {}
-        for c in rows:
-            smallest.setdefault(key(c), (c.lubrication == "C'", c.pitch))
-        rows = [c for c in rows if smallest[key(c)] == (c.lubrication == "C'", c.pitch)]
+        rows = _smallest_per_series(rows)
     # the recommended drive passes every check (rated power, galling, wrap, static safety computed
     # and met): the first such row, moved to the front; none (in practice: every chain that carries
     # the duty runs in the galling region, type C'): no drive the procedure could defend

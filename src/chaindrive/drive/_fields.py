@@ -24,6 +24,18 @@ def _finite(value: Any, what: str, *, positive: bool = False, nonnegative: bool 
     return x
 
 
+def _whole(value: Any, what: str, minimum: int, maximum: int | None = None, *, field: str | None = None) -> int:
+    """``value`` as an ``int``: a whole number (not a bool) in ``[minimum, maximum]``."""
+    try:
+        ok = not isinstance(value, bool) and int(value) == value and minimum <= value
+    except (TypeError, ValueError, OverflowError):
+        ok = False
+    if ok and (maximum is None or value <= maximum):
+        return int(value)
+    bounds = f">= {minimum}" if maximum is None else f"in [{minimum}, {maximum}]"
+    raise InputError(f"{what} must be a whole number {bounds}, got {value!r}", field=field or what)
+
+
 def _direction(value: Any, what: str) -> tuple[float, float]:
     d = tuple(value)
     if len(d) != 2:

@@ -32,7 +32,7 @@ from .. import loads as F
 from .._presenters import view
 from ..errors import InputError
 from ..loads import mean_chain_speed, sides_per_turn
-from ._fields import _direction, _finite
+from ._fields import _direction, _finite, _whole
 from .specs import (  # noqa: F401 - the optional tables, importable from here as before
     RETURN_STRANDS,
     ContactSpec,
@@ -109,10 +109,7 @@ class Wheel:
         if self.teeth is None and self.diameter is None:
             raise InputError(f"{what}: give teeth or (for a toothless idler) diameter", field="teeth")
         if self.teeth is not None:
-            if isinstance(self.teeth, bool) or int(self.teeth) != self.teeth or self.teeth < 3:
-                raise InputError(f"{what}: teeth must be a whole number >= 3, got {self.teeth!r}",
-                                 field="teeth")
-            object.__setattr__(self, "teeth", int(self.teeth))
+            object.__setattr__(self, "teeth", _whole(self.teeth, f"{what}: teeth", 3, field="teeth"))
         if self.diameter is not None:
             object.__setattr__(self, "diameter", _finite(self.diameter, f"{what}: diameter", positive=True))
         if self.side not in (1, -1):
@@ -462,10 +459,7 @@ class Drive:
             raise InputError("wheels: the power_share of the driven wheels must sum to 1, got "
                              f"{' + '.join(f'{x:g}' for x in shares)} = {math.fsum(shares):.12g}", field="wheels")
         if self.links is not None:
-            if isinstance(self.links, bool) or int(self.links) != self.links or self.links < 3:
-                raise InputError(f"drive.links must be a whole number >= 3, got {self.links!r}",
-                                 field="drive.links")
-            object.__setattr__(self, "links", int(self.links))
+            object.__setattr__(self, "links", _whole(self.links, "drive.links", 3))
         if self.slack_tension is not None:
             object.__setattr__(self, "slack_tension",
                                _finite(self.slack_tension, "drive.slack_tension", positive=True))

@@ -12,7 +12,7 @@ from dataclasses import dataclass
 from typing import Any
 
 from ..errors import InputError
-from ._fields import _finite
+from ._fields import _finite, _whole
 
 __all__ = ["ContactSpec", "RimBoltsSpec", "TrackSpec", "CrawlerSpec", "FrettingSpec", "RETURN_STRANDS", "Conveyor"]
 
@@ -97,9 +97,7 @@ class RimBoltsSpec:
         if self.joint not in ("fitted", "friction"):
             raise InputError(f"track.bolts.joint must be 'fitted' or 'friction', got {self.joint!r}",
                              field="track.bolts.joint")
-        if isinstance(self.count, bool) or int(self.count) != self.count or not 1 <= self.count <= 1000:
-            raise InputError(f"track.bolts.count must be a whole number in [1, 1000], got {self.count!r}",
-                             field="track.bolts.count")
+        _whole(self.count, "track.bolts.count", 1, 1000)
         from .schema import check_declared
 
         check_declared(self, "track.bolts", ("circle_radius", "diameter", "plate_thickness", "allowable_shear",
@@ -195,8 +193,7 @@ class CrawlerSpec:
                                  "cam_pitch and cam_index (l = l1 + k t_K)", field="crawler.cam_distance")
             l1 = _finite(self.engagement_distance, "crawler.engagement_distance", positive=True)
             k = self.cam_index
-            if isinstance(k, bool) or int(k) != k or k < 0:
-                raise InputError(f"crawler.cam_index must be a whole number >= 0, got {k!r}", field="crawler.cam_index")
+            _whole(k, "crawler.cam_index", 0)
             tk = 0.0 if k == 0 else _finite(self.cam_pitch, "crawler.cam_pitch", positive=True)
             object.__setattr__(self, "cam_distance", l1 + int(k) * tk)
         object.__setattr__(self, "cam_distance", _finite(self.cam_distance, "crawler.cam_distance", positive=True))

@@ -35,6 +35,34 @@ def rotate_points(points: ArrayLike, angle: float) -> np.ndarray:
     return np.stack([c * p[..., 0] - s * p[..., 1], s * p[..., 0] + c * p[..., 1]], axis=-1)
 
 
+def circle_intersections(c1: ArrayLike, r1: float, c2: ArrayLike, r2: float) -> tuple[np.ndarray, np.ndarray] | None:
+    """Both points where two circles meet (centres ``c1``, ``c2`` [m], radii [m]); ``None`` if
+    they do not meet (or are concentric). The first lies to the left of ``c1 → c2``.
+
+    Internal (no input checks): the tooth outline and the worn-chain seat
+    (:mod:`chaindrive.life.jump_over`) share it.
+
+    Examples
+    --------
+    >>> p, q = circle_intersections((0.0, 0.0), 5.0, (6.0, 0.0), 5.0)
+    >>> p.tolist(), q.tolist()
+    ([3.0, 4.0], [3.0, -4.0])
+    >>> circle_intersections((0.0, 0.0), 1.0, (3.0, 0.0), 1.0) is None
+    True
+    """
+    c1 = np.asarray(c1, float)
+    c2 = np.asarray(c2, float)
+    d = float(np.hypot(*(c2 - c1)))
+    if d > r1 + r2 or d < abs(r1 - r2) or d == 0:
+        return None
+    a = (r1**2 - r2**2 + d**2) / (2 * d)
+    h = np.sqrt(max(r1**2 - a**2, 0.0))
+    u = (c2 - c1) / d
+    m = c1 + a * u
+    nrm = np.array([-u[1], u[0]])
+    return m + h * nrm, m - h * nrm
+
+
 @dataclass(frozen=True)
 class Line:
     """Straight segment from ``start`` to ``end`` [m]."""

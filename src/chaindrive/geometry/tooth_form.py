@@ -27,7 +27,7 @@ from .iso606 import (
     seating_radius_limits,
     tip_diameter_limits,
 )
-from .outline import Arc, Line, Outline, _drop_short, _repeat
+from .outline import Arc, Line, Outline, _drop_short, _repeat, circle_intersections
 
 if TYPE_CHECKING:
 
@@ -149,21 +149,6 @@ def ansi_tooth_form(pitch: ArrayLike, teeth: ArrayLike, roller_diameter: ArrayLi
 
 
 # --------------------------------------------------------------------------- outlines
-def _circle_circle(c1, r1, c2, r2):
-    """Both intersections of two circles (internal); None if they do not meet."""
-    c1 = np.asarray(c1, float)
-    c2 = np.asarray(c2, float)
-    d = np.hypot(*(c2 - c1))
-    if d > r1 + r2 or d < abs(r1 - r2) or d == 0:
-        return None
-    a = (r1**2 - r2**2 + d**2) / (2 * d)
-    h = np.sqrt(max(r1**2 - a**2, 0.0))
-    u = (c2 - c1) / d
-    m = c1 + a * u
-    nrm = np.array([-u[1], u[0]])
-    return m + h * nrm, m - h * nrm
-
-
 def _convex_flank_to_tip(centre, radius, start_angle, tip_radius, half_angle):
     """Walk a convex flank circle clockwise from ``start_angle`` until the tip circle or the
     tooth centreline (polar angle π/2 − half_angle), whichever comes first (internal).
@@ -172,7 +157,7 @@ def _convex_flank_to_tip(centre, radius, start_angle, tip_radius, half_angle):
     """
     centre = np.asarray(centre, float)
     cands = []
-    hit = _circle_circle(centre, radius, (0.0, 0.0), tip_radius)
+    hit = circle_intersections(centre, radius, (0.0, 0.0), tip_radius)
     if hit is not None:
         for q in hit:
             ang = np.arctan2(q[1] - centre[1], q[0] - centre[0])

@@ -71,12 +71,12 @@ from numpy.typing import ArrayLike
 from .._deprecation import renamed_attributes as _renamed_attributes
 from .._finite import finite_guard
 from .._registry import Registry
-from .._results import Result, quantity
+from .._results import quantity
 from .._validation import as_float_array, check_nonnegative, check_positive, check_teeth
 from ..errors import InfeasibleError, InputError
 from ..geometry.polygon import bi_regular_polygon, roller_chain_pitch_radius
 from . import paper as _paper
-from .histories import PaperEntry
+from .histories import PaperEntry, PeriodMotion
 from .solver import (
     GuideEnd,
     WheelPolygon,
@@ -152,8 +152,9 @@ SUMMARY_QUANTITIES: dict[str, tuple[str, str]] = {
 
 
 @dataclass(frozen=True)
-class EntryKinematics(Result):
-    """Kinematics of the chain over the requested wheel angles.
+class EntryKinematics(PeriodMotion):
+    """Kinematics of the chain over the requested wheel angles (the fields of
+    :class:`~chaindrive.kinematics.histories.PeriodMotion` first).
 
     Attributes
     ----------
@@ -184,18 +185,14 @@ class EntryKinematics(Result):
         Entry type and model.
     chain_type : str
         ``"link"`` or ``"roller"``.
-    pitch, bar_diameter, radius : float
-        ``t`` (``p``), ``d`` (0 for a roller chain), ``R`` [m].
-    teeth : int
-        ``z``.
-    angular_velocity : float
-        ``ω`` [rad/s].
+    pitch, radius, teeth, angular_velocity, period
+        ``t`` (``p``), ``R`` [m], ``z``, ``ω`` [rad/s], ``2π/z`` [rad] (:class:`PeriodMotion`).
+    bar_diameter : float
+        ``d`` [m] (0 for a roller chain).
     delta1, delta2 : float
         Central angles [rad].
     guide_height, guide_end_distance : float or None
         ``H``, ``l`` [m].
-    period : float
-        ``2π/z`` [rad].
     seating_angles : ndarray
         Wheel angles of the seatings inside ``[0, 2π/z)`` (exact model, and tangential
         paper model ``φ_g1, φ_g2``) [rad].
@@ -203,25 +200,17 @@ class EntryKinematics(Result):
 
     phi: np.ndarray = quantity("rad")
     x: np.ndarray = quantity("m")
-    velocity: np.ndarray = quantity("m/s")
-    acceleration: np.ndarray = quantity("m/s^2")
     transverse_position: np.ndarray | None = quantity("m")
     transverse_velocity: np.ndarray | None = quantity("m/s")
     transverse_acceleration: np.ndarray | None = quantity("m/s^2")
-    summary: dict
     entry: str
     model: str
     chain_type: str
-    pitch: float = quantity("m")
     bar_diameter: float = quantity("m")
-    teeth: int = quantity("1")
-    angular_velocity: float = quantity("rad/s")
-    radius: float = quantity("m")
     delta1: float = quantity("rad")
     delta2: float = quantity("rad")
     guide_height: float | None = quantity("m")
     guide_end_distance: float | None = quantity("m")
-    period: float = quantity("rad")
     seating_angles: np.ndarray = quantity("rad", default_factory=lambda: np.zeros(0))
 
 

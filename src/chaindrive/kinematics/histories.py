@@ -15,7 +15,41 @@ import numpy as np
 
 from .._results import Result, quantity
 
-__all__ = ["EntryHistory", "PaperEntry", "TautEntry", "RodEntry"]
+__all__ = ["EntryHistory", "PaperEntry", "TautEntry", "RodEntry", "PeriodMotion"]
+
+
+@dataclasses.dataclass(frozen=True)
+class PeriodMotion(Result):
+    """The motion of a chain driven by a wheel over one tooth period, what every such result
+    has (:class:`~chaindrive.kinematics.EntryKinematics`,
+    :class:`~chaindrive.kinematics.crawler.CrawlerKinematics`).
+
+    Attributes
+    ----------
+    velocity, acceleration : ndarray
+        Chain velocity [m/s] and acceleration [m/s²] over the wheel angles.
+    summary : dict
+        ``v_mean``, ``v_min``, ``v_max`` [m/s], ``nonuniformity`` = (v_max - v_min)/v_mean
+        [-], ``a_min``, ``a_max`` [m/s²], ``sign_change_at_period_end`` (bool),
+        ``transverse_throw`` [m], and what the subclass adds.
+    pitch, radius : float
+        Chain pitch ``t`` (``p``) and the wheel's pitch radius ``R`` [m].
+    teeth : int
+        ``z``.
+    angular_velocity : float
+        ``ω`` [rad/s].
+    period : float
+        ``2π/z`` [rad].
+    """
+
+    velocity: np.ndarray = quantity("m/s")
+    acceleration: np.ndarray = quantity("m/s^2")
+    summary: dict
+    pitch: float = quantity("m")
+    radius: float = quantity("m")
+    teeth: int = quantity("1")
+    angular_velocity: float = quantity("rad/s")
+    period: float = quantity("rad")
 
 
 @dataclasses.dataclass(frozen=True)

@@ -56,6 +56,7 @@ from .._results import Result, quantity
 from .._typing import FloatOrArray
 from .._validation import check_nonnegative, check_positive
 from ..errors import InputError
+from ..geometry.outline import circle_intersections
 from ..geometry.tooth_form import iso_tooth_form
 
 __all__ = ["WornSeat", "worn_seat", "holding_limit", "tension_ratio", "jump_over_tension"]
@@ -105,15 +106,9 @@ def _centre_at(radius, rp, c, half_seat, cf, rho):
             x = np.array([a, b])
             return x, -x / max(c, 1e-300), False
     # flank path: circle of radius rho about cf
-    d = float(np.hypot(*(cf - o)))
-    if d > radius + rho or d < abs(radius - rho):
+    cands = circle_intersections(o, radius, cf, rho)
+    if cands is None:
         return None
-    aa = (radius**2 - rho**2 + d**2) / (2 * d)
-    h = math.sqrt(max(radius**2 - aa**2, 0.0))
-    uu = (cf - o) / d
-    m = o + aa * uu
-    nrm = np.array([-uu[1], uu[0]])
-    cands = [m + h * nrm, m - h * nrm]
     # the one on the gap side of the flank centre (b below the flank centre's b)
     x = min(cands, key=lambda q: q[1])
     n = (x - cf) / rho

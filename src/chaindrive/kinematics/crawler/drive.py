@@ -11,11 +11,12 @@ from numpy.typing import ArrayLike
 
 from ..._finite import finite_guard
 from ..._registry import Registry
-from ..._results import Result, quantity
+from ..._results import quantity
 from ..._typing import FloatOrArray
 from ..._validation import as_float_array, check_nonnegative, check_positive, check_teeth
 from ...errors import InfeasibleError, InputError
 from ...loads import mean_chain_speed
+from ..histories import PeriodMotion
 from .cam import cam_force, cam_pushing_off_force, cam_stiffness, guide_reaction
 from .laws import (
     GUIDES,
@@ -46,8 +47,9 @@ SUMMARY_KEYS = (
 
 
 @dataclass(frozen=True)
-class CrawlerKinematics(Result):
-    """Kinematics (and optionally the cam force) of the crawler drive over ``psi``.
+class CrawlerKinematics(PeriodMotion):
+    """Kinematics (and optionally the cam force) of the crawler drive over ``psi`` (the fields
+    of :class:`~chaindrive.kinematics.histories.PeriodMotion` first).
 
     Attributes
     ----------
@@ -65,40 +67,25 @@ class CrawlerKinematics(Result):
         (``u_П = v_mean t``), minus its mean over a period (the mean is the transmitted
         load, not a kinematic quantity); ``None`` without ``stiffness``.
     summary : dict
-        ``v_mean``, ``v_min``, ``v_max`` [m/s], ``nonuniformity`` = (v_max - v_min)/v_mean
-        [-], ``a_min``, ``a_max`` [m/s²], ``sign_change_at_period_end`` (bool),
-        ``transverse_throw`` [m], ``a_end_left``, ``a_end_right``, ``a_jump_at_period_end``
-        [m/s²], ``psi_v_min`` [rad], ``peak_deviation`` = max|v - v_mean| [m/s]; with stiffness ``cam_stiffness`` [N/m],
-        ``force_min``, ``force_max``, ``force_range`` [N]. Exact over a whole period
+        The keys of :attr:`PeriodMotion.summary <chaindrive.kinematics.histories.PeriodMotion>`,
+        plus ``a_end_left``, ``a_end_right``, ``a_jump_at_period_end`` [m/s²], ``psi_v_min``
+        [rad], ``peak_deviation`` = max|v - v_mean| [m/s]; with stiffness ``cam_stiffness``
+        [N/m], ``force_min``, ``force_max``, ``force_range`` [N]. Exact over a whole period
         (the minimum of the guided speed is found by root finding), not on ``psi``.
     guide : str
         ``"none"`` or ``"tangent"``.
-    pitch, radius : float
-        ``t``, ``R`` [m].
-    teeth : int
-        ``z``.
-    angular_velocity : float
-        ``ω`` [rad/s].
-    period : float
-        ``2π/z`` [rad].
+    pitch, radius, teeth, angular_velocity, period
+        ``t``, ``R`` [m], ``z``, ``ω`` [rad/s], ``2π/z`` [rad] (:class:`PeriodMotion`).
     stiffness, sprocket_distance, cam_distance : float or None
         ``E_П`` [N], ``A`` [m], ``l`` [m].
     """
 
     psi: np.ndarray = quantity("rad")
     displacement: np.ndarray = quantity("m")
-    velocity: np.ndarray = quantity("m/s")
-    acceleration: np.ndarray = quantity("m/s^2")
     transverse_position: np.ndarray = quantity("m")
     link_angle: np.ndarray | None = quantity("rad")
     force: np.ndarray | None = quantity("N")
-    summary: dict
     guide: str
-    pitch: float = quantity("m")
-    radius: float = quantity("m")
-    teeth: int = quantity("1")
-    angular_velocity: float = quantity("rad/s")
-    period: float = quantity("rad")
     stiffness: float | None = quantity("N", default=None)
     sprocket_distance: float | None = quantity("m", default=None)
     cam_distance: float | None = quantity("m", default=None)

@@ -1,0 +1,167 @@
+"""Published measurements kept as data (tests/data/published/*.csv) and the model they check.
+
+Each CSV carries its provenance in its ``#`` header (source, table or sentence read, conditions,
+what is derived and what is assumed); docs/validation_sources.md records what was searched and
+what was not readable. Here the articulation-friction efficiency model
+(:mod:`chaindrive.life.efficiency`) meets the bicycle-chain measurements found so far, and the
+tests keep both where the model agrees and by how much it does not, so that a change of the model
+or of its calibration shows.
+"""
+
+from __future__ import annotations
+
+import csv
+import math
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from chaindrive.life import articulation_power_loss, transmission_efficiency
+
+DATA = Path(__file__).parent / "data" / "published"
+
+
+def _read(name: str) -> list[dict[str, str]]:
+    """Rows of a published-data CSV (the ``#`` provenance header skipped)."""
+    with (DATA / name).open(encoding="utf-8") as fh:
+        return list(csv.DictReader(line for line in fh if not line.startswith("#")))
+
+
+def _bicycle(power: float, cadence_rpm: float, front: int, rear: int) -> tuple[float, float, float]:
+    """Tight tension [N], loss [W] and efficiency of a 1/2-inch bicycle chain (pin 3.6 mm) by the
+    model, slack side unloaded (the rigs below run without a loaded slack side)."""
+    pitch = 0.0127
+    omega = cadence_rpm * math.pi / 30
+    radius = pitch / (2 * math.sin(math.pi / front))
+    tension = power / omega / radius
+    loss = float(articulation_power_loss(omega * radius, pitch, 0.0036, [front, rear],
+                                         [tension, 0.0], [0.0, tension]))
+    return tension, loss, float(transmission_efficiency(power, loss))
+
+
+def test_every_dataset_states_its_source():
+    files = sorted(DATA.glob("*.csv"))
+    assert len(files) >= 4
+    for path in files:
+        header = [line for line in path.read_text(encoding="utf-8").splitlines() if line.startswith("#")]
+        text = " ".join(header)
+        assert "source" in text or "original" in text, path.name
+        assert "used by" in text, path.name
+        assert _read(path.name), path.name  # and data below the header
+
+
+# --------------------------------------------------------------------------- Friction Facts, run time
+def _runtime() -> dict[str, dict[float, float]]:
+    out: dict[str, dict[float, float]] = {}
+    for row in _read("friction_facts_chain_runtime.csv"):
+        out.setdefault(row["chain"], {})[float(row["run_time_h"])] = float(row["loss_W"])
+    return out
+
+
+def test_friction_facts_running_in_is_small():
+    # The calibration uses the losses after 8 h of running-in; the running-in itself (the model has
+    # none) moves each chain by 0.26-0.61 W at 250 W, i.e. at most 0.25 percentage point.
+    for chain, series in _runtime().items():
+        drop = series[0.0] - series[8.0]
+        assert 0.2 < drop < 0.65, chain
+        assert drop / 250.0 < 0.0025, chain
+        assert series[8.0] == min(series.values()), chain  # the loss falls over the run time
+
+
+def test_friction_facts_chains_against_the_model():
+    _t, loss, eta = _bicycle(250.0, 95.0, 53, 11)
+    series = _runtime()
+    # chain A (Campagnolo) after 8 h is the calibration point of ARTICULATION_FRICTION
+    assert loss == pytest.approx(series["A"][8.0], abs=0.02)
+    # chain B (Shimano CN-7901): within the 0.5 point aim of issue 32 (-0.09 point)
+    assert abs(eta - (1 - series["B"][8.0] / 250.0)) < 0.005
+    # chain C (SRAM PC-1091R, factory lube) loses 34 % more on the same rig: the one effective
+    # coefficient of the model cannot hold it; the model is 0.90 point above it (kept, not hidden)
+    gap_c = eta - (1 - series["C"][8.0] / 250.0)
+    assert gap_c == pytest.approx(0.0090, abs=0.0005)
+
+
+# --------------------------------------------------------------------------- Friction Facts, ring size
+def test_ring_size_difference():
+    # 39-11 against 53-15 (same ratio, chain coplanar): measured 1.5 W more at (assumed) 250 W.
+    (row,) = _read("friction_facts_ring_size.csv")
+    power = float(row["power_W_assumed"])
+    small = [int(z) for z in row["small_pair"].split("-")]
+    large = [int(z) for z in row["large_pair"].split("-")]
+    extra = _bicycle(power, 95.0, *small)[1] - _bicycle(power, 95.0, *large)[1]
+    # the model: 1.88 W (its loss fraction ~ 1/z1 + 1/z2), +0.38 W = +0.15 point of 250 W
+    assert extra == pytest.approx(1.885, abs=0.01)
+    assert abs(extra - float(row["extra_loss_of_small_pair_W"])) / power < 0.005
+    # independent of the cadence (slack side unloaded), as the measurement's "same speed" needs
+    assert _bicycle(power, 60.0, *small)[1] - _bicycle(power, 60.0, *large)[1] == pytest.approx(extra, rel=1e-9)
+
+
+# --------------------------------------------------------------------------- Spicer et al., cadence
+def _spicer() -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    rows = _read("spicer2001_efficiency_cadence.csv")
+    cadence = np.array([float(r["cadence_rpm"]) for r in rows])
+    measured = np.array([float(r["measured_efficiency_percent"]) for r in rows]) / 100
+    tension = np.array([_bicycle(float(r["power_W"]), float(r["cadence_rpm"]), int(r["chainring"]),
+                                 int(r["sprocket"]))[0] for r in rows])
+    return cadence, tension, measured
+
+
+def test_spicer_cadence_series_is_the_published_form():
+    # Spicer et al. fit their data as eta = eta_inf - alpha / T; the secondary reading does too,
+    # with the >100 % intercept that Connelly and Allen pointed out (so the reading is consistent
+    # with what was said of the original)
+    _c, tension, measured = _spicer()
+    design = np.vstack([np.ones_like(tension), 1 / tension]).T
+    (eta_inf, slope), *_ = np.linalg.lstsq(design, measured, rcond=None)
+    fit = design @ np.array([eta_inf, slope])
+    r2 = 1 - ((measured - fit) ** 2).sum() / ((measured - measured.mean()) ** 2).sum()
+    assert r2 > 0.99
+    assert eta_inf == pytest.approx(1.039, abs=0.002) and slope < 0
+
+
+def test_spicer_cadence_series_against_the_model():
+    # The model (articulation friction, slack side unloaded) gives 98.37 % at every cadence of
+    # this series. At the highest tension (227 N, 40 rpm) it is 0.57 point above the measurement;
+    # the gap grows as 1/T to 8.5 points at 101 N (90 rpm). Spicer et al. found the same:
+    # friction does not account for the low-tension losses. Kept as a known limit of the model.
+    _c, tension, measured = _spicer()
+    model = np.array([_bicycle(100.0, c, 52, 21)[2] for c in _c])
+    assert np.ptp(model) < 1e-12 and model[0] == pytest.approx(0.9837, abs=5e-5)
+    gap = model - measured
+    assert gap[np.argmax(tension)] == pytest.approx(0.0057, abs=5e-4)
+    assert np.all(np.diff(gap[np.argsort(-tension)]) > 0)  # the gap grows as the tension falls
+    assert gap.max() == pytest.approx(0.0847, abs=5e-4)
+
+
+def test_spicer_sprocket_effect():
+    # Spicer: 52-11 loses 2-5 points more than 52-21. The model's friction gives 1.05 points, below
+    # the measured range by a factor 2-5 (while Friction Facts' 39-11 against 53-15 agrees with it,
+    # test_ring_size_difference): the two sources disagree; the model follows the later one.
+    (row,) = _read("spicer2000_sprocket_effect.csv")
+    front, small, large = int(row["chainring"]), int(row["small_sprocket"]), int(row["large_sprocket"])
+    diff = 100 * (_bicycle(200.0, 80.0, front, large)[2] - _bicycle(200.0, 80.0, front, small)[2])
+    assert diff == pytest.approx(1.052, abs=0.005)
+    assert diff < float(row["loss_difference_min_percent"])
+
+
+# --------------------------------------------------------------------------- Wilson, Bicycling Science
+def test_wilson_derailleur_table():
+    rows = _read("wilson2004_derailleur_efficiency.csv")
+    table = {(float(r["power_W"]), int(r["cog_teeth"])): float(r["efficiency_percent"]) / 100 for r in rows}
+    cogs = sorted({cog for _p, cog in table})
+    powers = sorted({p for p, _cog in table})
+    # the measured loss fraction falls with the power for every cog (a load-independent loss: pulleys,
+    # bearings, the slack side's tension); the model has none, its efficiency does not depend on power
+    for cog in cogs:
+        series = [table[(p, cog)] for p in powers]
+        assert np.all(np.diff(series) > 0), cog
+    # at the highest power (400 W) the model is within the 0.5 point aim for every cog, whatever the
+    # (unstated) chainring of a road bicycle, 39 to 53 teeth
+    for front in (39, 42, 46, 50, 52, 53):
+        for cog in cogs:
+            eta = _bicycle(400.0, 80.0, front, cog)[2]
+            assert abs(eta - table[(400.0, cog)]) < 0.005, (front, cog)
+    # at 50 W it is 2-6 points above: the measured losses there are not articulation friction
+    gaps = [_bicycle(50.0, 80.0, 52, cog)[2] - table[(50.0, cog)] for cog in cogs]
+    assert 0.02 < min(gaps) and max(gaps) < 0.06
