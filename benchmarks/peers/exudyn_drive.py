@@ -34,7 +34,7 @@ solved by the implicit generalized-α integrator with a sparse solver and modifi
   0.6–1.1 kN, T·2 sin(π/z); measured on this drive, mean tension against the reference: zone 1 mm/s
   +1.56 %, 5 mm/s +1.31 %, 20 mm/s +1.22 %); the rollers each wheel's contact checks
   limited to those that can reach it in the run (:func:`near_rollers`, 37 and 36 of 100
-  for 0.3 s: a broad phase by hand, checked against chaindrive's run; 1.4 times faster);
+  for 0.3 s: a broad phase by hand, checked against chaindrive's run; 2.5 times faster);
 * wheels: ``ObjectRigidBody2D`` pinned by ``CoordinateConstraint`` (x, y) with the same
   inertias; the driver's prescribed speed ramp by a stiff angle servo
   (``ObjectConnectorCoordinateSpringDamperExt``: offset and velocity offset the ramp's
@@ -47,9 +47,10 @@ iteration cycles between two residuals, ~1e3 N, the contacts' stick/slip switchi
 without friction it converges, 2-3 discontinuous iterations of 4-7 Newton steps a step);
 the explicit Euler of Exudyn (forward, not symplectic) blows up within 0.1 ms at 2 µs;
 ``VelocityVerlet`` (and ``RK44``) runs at chaindrive's stable step, so this peer uses it
-(``SOLVER``) on the ladder ``LADDER``. Cost: about 1.8 ms CPU a step, nearly all in the
-curve contact (every roller against every segment of every contact object: 100 × 357
-per wheel), 34 µs a step without it.
+(``SOLVER``) on the ladder ``LADDER``. Cost: 0.69 ms CPU a step (229 s per simulated
+second at 3 µs), nearly all in the curve contact (every listed roller against every
+segment of every contact object: 37 × 357 per wheel; 1.7–1.8 ms with all 100 rollers),
+34 µs a step without it.
 
 What else was tried on this drive (0.3 s, 3 µs, mean tight-side tension against the
 reference): without contact damping (Exudyn's linear law lets the damping pull while the
