@@ -28,6 +28,15 @@ if TYPE_CHECKING:
 
 ROOT = Path(__file__).resolve().parents[1]
 CACHE = ROOT / "benchmarks" / "data" / "dynamic_sweep.csv"
+#: the long reference: the same drives measured over six 0.25 s windows after the settling
+LONG_CACHE = ROOT / "benchmarks" / "data" / "dynamic_sweep_long.csv"
+#: the steady state of the same drives (chaindrive.simulation.steady.steady_state, its defaults)
+STEADY_CACHE = ROOT / "benchmarks" / "data" / "dynamic_sweep_steady.csv"
+#: drives outside the sweep's input ranges (the analysis's steady-state answer checked there)
+OUTSIDE_CACHE = ROOT / "benchmarks" / "data" / "dynamic_outside.csv"
+OUTSIDE_STEADY_CACHE = ROOT / "benchmarks" / "data" / "dynamic_outside_steady.csv"
+#: windows of the long reference and their length [s]
+LONG_WINDOWS, LONG_WINDOW = 6, 0.25
 
 #: chains of the sweep: ISO 606 B series simplex, 12.7 … 31.75 mm pitch
 CHAINS = ("08B-1", "10B-1", "12B-1", "16B-1", "20B-1")
@@ -93,6 +102,14 @@ def sweep_drives(count: int = 48, seed: int = 29) -> list[SweepDrive]:
         out.append(SweepDrive(f"S{i:02d}", chain, z1, z2, round(float(rpm), 1), round(float(25 + 35 * a), 2),
                               round(float(0.02 * 6.0 ** f), 5)))
     return out
+
+
+def outside_drives() -> list[SweepDrive]:
+    """Three drives each outside one of the sweep's input ranges: 31 driving teeth (16B), a ratio
+    of 4.4 (10B), 70 pitches between centres (12B)."""
+    return [SweepDrive("X00", "16B-1", 31, 62, 400.0, 40.0, 0.05),
+            SweepDrive("X01", "10B-1", 17, 75, 900.0, 45.0, 0.06),
+            SweepDrive("X02", "12B-1", 19, 38, 600.0, 70.0, 0.04)]
 
 
 def drive_of(s: SweepDrive):  # -> chaindrive.drive.Drive
@@ -199,27 +216,97 @@ def simulate_row(s: SweepDrive) -> SweepRow:
                     float(np.quantile(peaks, 0.9)), float(ts.max()), wall)
 
 
+@dataclass(frozen=True)
+class LongRow:
+    """One drive's long reference: the tight-span tension after the same 2.5 s settling as
+    :func:`simulate_row`, measured over ``LONG_WINDOWS`` windows of ``LONG_WINDOW`` s each
+    (continued from one another, samples every 8 µs at most)."""
+    name: str
+    long_mean: float           # mean over all windows [N]
+    long_peak: float           # median of all the per-tooth-period peaks [N]
+    long_p90: float            # their 90th percentile [N]
+    window_peak_low: float     # smallest and largest window median of the per-tooth-period peaks [N]
+    window_peak_high: float
+    cpu_seconds: float
+
+
+def long_row(s: SweepDrive, windows: int = LONG_WINDOWS, length: float = LONG_WINDOW) -> LongRow:
+    """Simulate one sweep drive for the long reference (see :class:`LongRow`)."""
+    from chaindrive.simulation import simulate
+
+    warnings.simplefilter("ignore")
+    d = drive_of(s)
+    kc = next(float(r["contact_stiffness"]) for r in read_cache() if r["name"] == s.name)
+    _, settle = periods_and_settle(d)
+    c0 = time.process_time()
+    model = sim_model(d, contact_stiffness=kc)
+    state = simulate(model, settle, samples=50).final_state
+    peaks, means, medians = [], [], []
+    for _ in range(windows):
+        res = simulate(model, length, state=state, samples=int(min(40000, max(20000, length / 8e-6))))
+        state = res.final_state
+        t, ts = np.asarray(res.time), res.tight_side_tension()
+        pk = tooth_peaks(d, t, ts)
+        peaks.append(pk)
+        means.append(float(ts.mean()))
+        medians.append(float(np.median(pk)))
+    allp = np.concatenate(peaks)
+    return LongRow(s.name, float(np.mean(means)), float(np.median(allp)), float(np.quantile(allp, 0.9)),
+                   min(medians), max(medians), time.process_time() - c0)
+
+
+def run_long(drives: list[SweepDrive], path: Path = LONG_CACHE) -> Iterator[LongRow]:
+    """Simulate the long reference of the drives not yet in its cache, appending each row."""
+    return _cached_rows(drives, path, long_row)
+
+
+def steady_row(s: SweepDrive, cache: Path = CACHE) -> dict[str, Any]:
+    """One drive's steady state (:func:`chaindrive.simulation.steady.steady_state` with its
+    defaults: warm start, settling detected, 12 tooth periods), the seats as the sweep's: the
+    mean per-tooth-period peak ``pp``, the waveform's ``peak``, the ``mean``, the CPU time."""
+    from chaindrive.simulation.steady import steady_state
+
+    warnings.simplefilter("ignore")
+    kc = next(float(r["contact_stiffness"]) for r in read_cache(cache) if r["name"] == s.name)
+    c0 = time.process_time()
+    st = steady_state(sim_model(drive_of(s), contact_stiffness=kc))
+    return {"name": s.name, "pp": st.period_peak_tension, "peak": st.peak_tension, "mean": st.mean_tension,
+            "cpu": time.process_time() - c0, "method": st.method, "settled": st.settled}
+
+
+def run_steady(drives: list[SweepDrive], path: Path = STEADY_CACHE) -> Iterator[dict[str, Any]]:
+    """The steady state of the drives not yet in its cache, appending each row."""
+    return _cached_rows(drives, path, steady_row)
+
+
 def read_cache(path: Path = CACHE) -> list[dict[str, float | str]]:
     """The cached rows (numbers as floats)."""
     with path.open() as f:
         rows = list(csv.DictReader(f))
-    return [{k: (v if k in ("name", "chain") else float(v)) for k, v in r.items()} for r in rows]
+    return [{k: (v if k in ("name", "chain", "method", "settled") else float(v)) for k, v in r.items()} for r in rows]
 
 
 def run_sweep(drives: list[SweepDrive], path: Path = CACHE) -> Iterator[SweepRow]:
     """Simulate the drives not yet in the cache, appending each row as it is done."""
+    return _cached_rows(drives, path, simulate_row)
+
+
+def _cached_rows(drives: list[SweepDrive], path: Path, make: Any) -> Iterator[Any]:
+    """``make(drive)`` of each drive not yet in the CSV ``path``, appended to it as it is done
+    (a dataclass or a dict per row)."""
     path.parent.mkdir(parents=True, exist_ok=True)
     done = {r["name"] for r in read_cache(path)} if path.exists() else set()
     for s in drives:
         if s.name in done:
             continue
-        row = simulate_row(s)
+        row = make(s)
+        values = row if isinstance(row, dict) else asdict(row)
         new = not path.exists()
         with path.open("a", newline="") as f:
-            w = csv.DictWriter(f, fieldnames=list(asdict(row)))
+            w = csv.DictWriter(f, fieldnames=list(values))
             if new:
                 w.writeheader()
-            w.writerow(asdict(row))
+            w.writerow(values)
         yield row
 
 
@@ -227,6 +314,28 @@ if __name__ == "__main__":
     import sys
 
     n = int(sys.argv[1]) if len(sys.argv) > 1 else 48
+    if "--outside" in sys.argv:
+        for row in run_sweep(outside_drives(), OUTSIDE_CACHE):
+            print(f"{row.name} from rest: peak {row.sim_peak:7.0f} mean {row.sim_mean:7.0f}", flush=True)
+        for sr in _cached_rows(outside_drives(), OUTSIDE_STEADY_CACHE, lambda d: steady_row(d, OUTSIDE_CACHE)):
+            print(f"{sr['name']} steady pp {sr['pp']:7.0f} mean {sr['mean']:7.0f} {sr['cpu']:5.2f} s CPU", flush=True)
+        sys.exit(0)
+    if "--steady" in sys.argv:
+        for sr in run_steady(sweep_drives(n)):
+            print(f"{sr['name']} steady pp {sr['pp']:7.0f} mean {sr['mean']:7.0f} {sr['cpu']:5.2f} s CPU", flush=True)
+        sys.exit(0)
+    if "--long" in sys.argv:
+        # --long [--part K/M] [--names S13,S04]: drive i only when i mod M == K (to run M processes
+        # side by side; each its own file), only the named drives
+        part = sys.argv[sys.argv.index("--part") + 1] if "--part" in sys.argv else "0/1"
+        names = sys.argv[sys.argv.index("--names") + 1].split(",") if "--names" in sys.argv else None
+        k, m = (int(v) for v in part.split("/"))
+        out = LONG_CACHE.with_name(f"dynamic_sweep_long.part{k}.csv") if m > 1 else LONG_CACHE
+        chosen = [s for s in sweep_drives(n) if names is None or s.name in names]
+        for lr in run_long([s for i, s in enumerate(chosen) if i % m == k], out):
+            print(f"{lr.name} peak {lr.long_peak:7.0f} windows {lr.window_peak_low:7.0f}..{lr.window_peak_high:7.0f} "
+                  f"mean {lr.long_mean:7.0f} {lr.cpu_seconds:5.1f} s CPU", flush=True)
+        sys.exit(0)
     for row in run_sweep(sweep_drives(n)):
         print(f"{row.name} {row.chain} {row.teeth_driving}/{row.teeth_driven} {row.rpm:7.1f} rpm "
               f"tight {row.tight:7.0f} mean {row.sim_mean:7.0f} peak {row.sim_peak:7.0f} "

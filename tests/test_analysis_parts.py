@@ -174,3 +174,36 @@ def test_every_check_knows_its_part():
     for example in ("roller_industrial.toml", "mining_conveyor.toml", "tractor_track.toml"):
         a = analyze_drive(load_project(EXAMPLES / example))
         assert all(c.part in a.parts for c in a.checks), example
+
+
+def test_each_parts_warnings_are_its_own_and_a_filter_change_does_not_leak():
+    """The analysis records warnings in one context: each part gets the warnings it raised
+    (compute and checks), in order, and a part that silences warnings (a filter left behind)
+    does not silence the next part's."""
+    import warnings as W
+
+    def loud(ctx):
+        W.warn("toy_loud: computed", UserWarning, stacklevel=2)
+        return 1.0
+
+    def silencer(ctx):
+        W.simplefilter("ignore")  # left behind on purpose
+        W.warn("toy_silencer: not recorded", UserWarning, stacklevel=2)
+        return 2.0
+
+    def after(ctx):
+        W.warn("toy_after: computed", UserWarning, stacklevel=2)
+        return 3.0
+
+    def after_checks(ctx, res):
+        W.warn("toy_after: checked", UserWarning, stacklevel=2)
+        return []
+
+    parts = [Part("toy_loud", "l", loud, order=1), Part("toy_silencer", "s", silencer, needs=("toy_loud",), order=2),
+             Part("toy_after", "a", after, needs=("toy_silencer",), checks=after_checks, order=3)]
+    with temporary_part(parts[0]), temporary_part(parts[1]), temporary_part(parts[2]):
+        filters = list(W.filters)
+        a = analyze_drive(load_project(EXAMPLES / "roller_industrial.toml"), include=["toy_after"])
+        assert list(W.filters) == filters  # the caller's filters untouched
+    got = [w for w in a.warnings if w.startswith("toy_")]
+    assert got == ["toy_loud: computed", "toy_after: computed", "toy_after: checked"]

@@ -11,8 +11,16 @@ import math
 
 import numpy as np
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
-from chaindrive._finite import _nonfinite_number, finite_guard, first_nonfinite, guard_scope
+from chaindrive._finite import (
+    _finite_tree,
+    _nonfinite_number,
+    finite_guard,
+    first_nonfinite,
+    guard_scope,
+)
 from chaindrive.errors import InfeasibleError, InputError
 
 
@@ -68,3 +76,31 @@ def test_guard_scope_sets_the_error_state_once_and_restores_it():
             ratio(math.nan, 1.0)
         assert ratio(1.0, 4.0) == 0.25
     assert np.geterr() == before
+
+
+# ------------------------------------------------- the guard's fast result check (no path built)
+@dataclasses.dataclass(frozen=True)
+class _Holder:
+    a: object = None
+    b: object = None
+
+
+_LEAVES = st.one_of(st.floats(allow_nan=True, allow_infinity=True), st.integers(-5, 5), st.none(), st.text(max_size=2),
+                    st.booleans(), st.lists(st.floats(allow_nan=True, allow_infinity=True), max_size=20).map(np.array),
+                    st.floats(allow_nan=True, allow_infinity=True).map(np.float64))
+
+
+@settings(max_examples=300, deadline=None)
+@given(st.recursive(_LEAVES, lambda kids: st.one_of(st.lists(kids, max_size=4), st.tuples(kids, kids),
+                                                    st.builds(_Holder, kids, kids),
+                                                    st.dictionaries(st.text(max_size=2), kids, max_size=3)),
+                    max_leaves=30))
+def test_fast_result_check_agrees_with_first_nonfinite(obj):
+    assert _finite_tree(obj) == (first_nonfinite(obj) is None)
+
+
+def test_fast_result_check_looks_as_deep_as_first_nonfinite():
+    deep: object = float("nan")
+    for depth in range(16):
+        deep = [deep] if depth % 2 else _Holder(deep)
+        assert _finite_tree(deep) == (first_nonfinite(deep) is None)

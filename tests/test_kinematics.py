@@ -324,6 +324,31 @@ def test_property_exact_model(z, frac, w, extra, entry):
     assert np.all(np.diff(r.x) > 0)
 
 
+@pytest.mark.parametrize("kwargs", [dict(), dict(bar_diameter=0.018, entry="tangential", guide_end_distance=0.256),
+                                    dict(bar_diameter=0.018, entry="free")])
+def test_summary_limits_equal_separate_evaluations(kwargs):
+    # the summary evaluates the grid and the one-sided limits in one call of the exact model;
+    # each limit equals the kinematics asked for at that angle alone, bit for bit
+    pitch = 0.064 if kwargs else 0.0254
+    r = chain_entry(pitch, 8, 5.0, **kwargs)
+    T = r.period
+    left = chain_entry(pitch, 8, 5.0, phi=[T - 1e-12 * T], **kwargs).acceleration[0]
+    right = chain_entry(pitch, 8, 5.0, phi=[1e-12 * T], **kwargs).acceleration[0]
+    assert r.summary["a_end_left"] == left and r.summary["a_end_right"] == right
+
+
+@pytest.mark.parametrize("phi", [None, 0.1, [-1.0, 0.0, 2 * np.pi / 8, 5.0], np.linspace(0.0, 1.0, 12).reshape(3, 4)])
+def test_exact_entry_at_angles_equals_each_angle_alone(phi):
+    # the exact model evaluates the angles asked for with the summary's in one call; each
+    # angle alone gives the same numbers, bit for bit
+    r = chain_entry(0.0254, 8, 5.0, phi=phi)
+    flat = np.ravel(r.phi)
+    alone = [chain_entry(0.0254, 8, 5.0, phi=[x]) for x in flat]
+    for name in ("x", "velocity", "acceleration", "transverse_position"):
+        assert np.array_equal(np.ravel(getattr(r, name)), [getattr(a, name)[0] for a in alone])
+    assert np.shape(r.velocity) == np.shape(r.phi)
+
+
 def test_entry_and_crawler_share_period_motion():
     # the motion fields of a chain driven over one tooth period, declared once (#31)
     import dataclasses

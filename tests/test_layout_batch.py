@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 import pytest
 from hypothesis import given, settings
@@ -88,3 +90,43 @@ def test_varying_geometry_errors_are_each_variants_own():
     changes = [{("wheels", 0, "teeth"): 19, ("wheels", 1, "position"): (a, 0.0)} for a in (1.0, 0.05, 1.1)]
     out = _equal_to_analyze_drive(_roller(), changes, include=["layout", "loads"])
     assert isinstance(out[1], Exception) and not isinstance(out[0], Exception)
+
+
+@settings(max_examples=60, deadline=None)
+@given(chord=st.floats(0.05, 20.0), incl=st.floats(-1.4, 1.4), ratio=st.floats(1e-5, 0.3),
+       q=st.floats(0.1, 100.0))
+def test_tension_for_sag_stops_where_the_100_halvings_end(chord, incl, ratio, q):
+    # the bisection stops once lo and hi are adjacent floats; the full 100 halvings of the
+    # documented method (written out here) end on the same number, bit for bit
+    from chaindrive.layout.sag import _catenary_parts, _catenary_sag
+
+    span, rise, w = _catenary_parts(chord, incl, 1.0, q, 9.80665)
+    f = ratio * chord
+    H0 = w * span**2 / (8.0 * f)
+    lo, hi = np.log(H0) - 15.0 * np.log(10.0), np.log(H0) + 15.0 * np.log(10.0)
+    with np.errstate(all="ignore"):  # as the guarded function (a far halving may overflow)
+        for _ in range(100):
+            mid = 0.5 * (lo + hi)
+            if _catenary_sag(span, rise, w / np.exp(mid)) > f:
+                lo = mid
+            else:
+                hi = mid
+    assert float(tension_for_sag(chord, incl, f, q)) == float(np.exp(0.5 * (lo + hi)))
+    both = tension_for_sag(np.array([chord, chord]), np.array([incl, incl]), np.array([f, f]), q)
+    assert float(both[0]) == float(np.exp(0.5 * (lo + hi)))
+
+
+def test_log_tension_near_holds_the_root_or_declines():
+    # the Python-float root the bisection skips its far halvings by: within 2e-12 of the
+    # sag's root where it answers (tension_for_sag is then bit-equal to the full bisection,
+    # tested above); None for a nearly straight span whose sag loses its digits
+    from chaindrive.layout.sag import _catenary_parts, _log_tension_near, _sag_at
+
+    span, rise, w = (float(v) for v in _catenary_parts(1.4, 0.2, 1.0, 6.0, 9.80665))
+    for ratio, answers in ((0.02, True), (0.3, True), (1e-6, False)):
+        f = ratio * 1.4
+        t0 = math.log(w * span**2 / (8.0 * f))
+        t = _log_tension_near(t0 - 34.5, t0 + 34.5, span, rise, w, f)
+        assert (t is not None) == answers
+        if t is not None:
+            assert _sag_at(t - 2e-12 * abs(t), span, rise, w) > f >= _sag_at(t + 2e-12 * abs(t), span, rise, w)

@@ -253,3 +253,178 @@ def test_worst_drive_is_friction_driven_not_a_damped_resonance():
                                           cached["teeth_driving"], cached["mass_per_length"],
                                           cached["contact_stiffness"]))
     assert model / peaks[0.1] - 1 < -0.25
+
+
+_RANGE_ARGS = dict(pitch=0.0254, teeth=19, teeth_driven=57, angular_velocity=100.5, centre_distance=1.05,
+                   pull=1940.0, breaking_force=60e3)
+
+
+@pytest.mark.parametrize(("change", "name", "value"), [
+    (dict(teeth=29), "teeth", 29.0), (dict(wheels=3), "wheels", 3.0),
+    (dict(centre_distance=2.5), "centre_pitches", 2.5 / 0.0254), (dict(pull=12e3), "pull_ratio", 0.2)])
+def test_range_violations_name_each_input_outside(change, name, value):
+    assert RT.running_tension_range_violations(**_RANGE_ARGS) == ()
+    out = RT.running_tension_range_violations(**{**_RANGE_ARGS, **change})
+    assert [v[0] for v in out] == [name]
+    assert out[0][1] == pytest.approx(value) and tuple(out[0][2:]) == RT.calibration().ranges[name]
+
+
+def test_leave_one_out_regression():
+    # issue 29.4, out of sample: each of the 64 drives predicted by the constants fitted on the 63
+    # others (measured: worst 36.5 % (S13), rms 10.9 %, 10 drives beyond 15 %): the aim of 15 %
+    # worst is not met by the reduced model; a regression of that finding
+    cs = _calibration_script()
+    err = np.abs(cs.leave_one_out(cs.load()))
+    assert len(err) == 64
+    assert 0.30 < err.max() < 0.42 and 0.09 < np.sqrt(np.mean(err**2)) < 0.13
+    assert 6 <= int((err > 0.15).sum()) <= 14
+
+
+def test_steady_state_against_the_sweep_cached():
+    # the steady state of the simulation (warm start, settling detected; benchmarks/_dynamic_sweep.py
+    # --steady) against the sweep's runs from rest: lower on average, worst on S13 (measured -35 %,
+    # rms 13.5 %, mean -8.6 %): not a better stand-in for the reference than the reduced model
+    # (docs/design.md, "The running peak tension")
+    sw = _sweep()
+    ref = {r["name"]: r for r in sw.read_cache()}
+    e = {r["name"]: float(r["pp"]) / ref[r["name"]]["sim_peak"] - 1 for r in sw.read_cache(sw.STEADY_CACHE)}
+    err = np.array(list(e.values()))
+    assert len(err) == 64
+    assert min(e, key=e.get) == "S13" and -0.40 < err.min() < -0.30
+    assert -0.12 < err.mean() < -0.05 and 0.11 < np.sqrt(np.mean(err**2)) < 0.16
+
+
+@pytest.mark.slow
+def test_simulated_dynamic_tension_is_the_cached_steady_state():
+    # analysis.dynamic_tension.simulated_dynamic_tension on sweep drive S01 (20B 22/45 at 107 rpm,
+    # nominal torque) reproduces the cached steady state (same seats, EA, drive): F_t + F_d = pp
+    from chaindrive.analysis.dynamic_tension import SIMULATED_VALIDITY, simulated_dynamic_tension
+
+    sw = _sweep()
+    s = next(d for d in sw.sweep_drives(64) if d.name == "S01")
+    row = next(r for r in sw.read_cache() if r["name"] == "S01")
+    steady = next(r for r in sw.read_cache(sw.STEADY_CACHE) if r["name"] == "S01")
+    dyn = simulated_dynamic_tension(sw.drive_of(s), row["tight"])
+    assert dyn.value + row["tight"] == pytest.approx(steady["pp"], rel=1e-6)
+    assert dyn.stiffness == pytest.approx(row["contact_stiffness"], rel=1e-12)
+    assert dyn.validity == SIMULATED_VALIDITY and "steady-state simulation" in dyn.model
+
+
+def test_simulated_dynamic_tension_refuses_a_chain_without_width():
+    import dataclasses
+
+    from chaindrive.analysis.dynamic_tension import simulated_dynamic_tension
+
+    sw = _sweep()
+    d = sw.drive_of(sw.sweep_drives(64)[1])
+    bare = d.replace(chain=dataclasses.replace(d.chain, inner_width=None))
+    with pytest.raises(InputError, match="inner width"):
+        simulated_dynamic_tension(bare, 4000.0)
+
+
+def test_accurate_range_stored_and_recomputed():
+    # the accurate range: the sweep drives whose predicted F_peak/F_t <= 1.3 (measured: 18 drives
+    # within 10.4 % out of sample, the other 46 within 36.5 %); recomputed from the cached sweep
+    cs = _calibration_script()
+    a = cs.load()
+    c = RT.calibration()
+    pred = RT.running_peak_tension(a["tight"], a["rpm"] * math.pi / 30, a["pitch"], a["teeth_driving"],
+                                   a["mass_per_length"], a["contact_stiffness"])
+    inside = RT.within_accurate_range(pred, a["tight"])
+    out = np.maximum(np.abs(cs.crossvalidate(a)), np.abs(cs.leave_one_out(a)))
+    assert int(inside.sum()) == c.accurate_drives == 18
+    assert out[inside].max() == pytest.approx(c.accurate_worst, abs=1e-3) and c.accurate_worst <= 0.15
+    assert out[~inside].max() > 0.30
+    assert c.loo_worst == pytest.approx(np.abs(cs.leave_one_out(a)).max(), abs=1e-3)
+
+
+def test_analysis_states_the_accurate_range_or_warns():
+    # the roller example (16B 19/57 at 960 rpm, F_peak/F_t 3.08) is outside the accurate range: a
+    # ValidityRangeWarning; sweep drive S06 (08B 25/54 at 162 rpm, 1.05) is inside: its validity says so
+    from chaindrive.analysis import analyze_drive
+    from chaindrive.drive.project import load_project
+
+    a = analyze_drive(load_project(ROOT / "examples" / "roller_industrial.toml"), include=["loads"])
+    assert any("above 1.3" in str(w) for w in a.warnings)
+    assert "accurate range" not in a.loads.dynamic_validity
+    sw = _sweep()
+    s06 = analyze_drive(sw.drive_of(sw.sweep_drives(64)[6]), include=["loads"])
+    assert not any("above 1.3" in str(w) for w in s06.warnings)
+    assert "in its accurate range" in s06.loads.dynamic_validity and "10.4 %" in s06.loads.dynamic_validity
+    assert s06.loads.maximum / s06.loads.tight <= 1.3
+
+
+def test_accurate_range_refuses_bad_input():
+    with pytest.raises(InputError, match="tight_tension"):
+        RT.within_accurate_range(2000.0, 0.0)
+    with pytest.raises(InputError, match="peak"):
+        RT.within_accurate_range(float("nan"), 2000.0)
+
+
+def test_analysis_keeps_the_reduced_model_outside_the_input_ranges_warned(monkeypatch):
+    # the self-regulating example's 23.4-pitch tight span is outside the sweep's 25-60 pitches: the
+    # reduced model's F_d (4982 N), warned; the steady state is not taken instead (on the three drives
+    # outside the ranges checked from rest it was -6.7, -7.8, -39.4 % off, the model -16.0, -9.9,
+    # -18.8 %: benchmarks/data/dynamic_outside*.csv), and the analysis never simulates
+    import chaindrive.analysis.dynamic_tension as DT
+    from chaindrive.analysis import analyze_drive
+    from chaindrive.drive.project import load_project
+
+    def refuse(drive, tight):
+        raise AssertionError("the analysis must not simulate")
+
+    monkeypatch.setattr(DT, "_simulated", refuse)
+    a = analyze_drive(load_project(ROOT / "examples" / "self_regulating.toml"), include=["loads"])
+    assert "running_peak_tension" in a.loads.dynamic_source
+    assert a.loads.dynamic == pytest.approx(4982, rel=0.01)
+    assert any("centre_pitches = 23.4286 is outside the validity range [25, 60]" in w for w in a.warnings)
+
+
+def test_long_reference_does_not_rescue_the_worst_drives():
+    # eleven sweep drives run on to 4 s (benchmarks/_dynamic_sweep.py --long): their six window
+    # medians lie 1.7-20.6 % apart, and the left-out model errors against the median of all six
+    # stay beyond 15 % on seven of the eight drives it missed by more (S27 -15.0 %); the misses
+    # are the model's, not the window's (docs/design.md, "The reference is not one number")
+    cs = _calibration_script()
+    a, long = cs.load(), cs.load("long")
+    assert len(long["index"]) == 11
+    apart = long["window_peak_high"] / long["window_peak_low"] - 1
+    assert 0.01 < apart.min() < 0.03 and 0.18 < apart.max() < 0.23
+    loo = dict(zip(a["index"].tolist(), cs.leave_one_out(a).tolist(), strict=True))
+    short = dict(zip(a["index"].tolist(), a["sim_peak"].tolist(), strict=True))
+    err = np.array([(1 + loo[i]) * short[i] / p - 1 for i, p in zip(long["index"].tolist(), long["sim_peak"], strict=True)])
+    missed = np.array([abs(loo[i]) > 0.15 for i in long["index"].tolist()])
+    assert missed.sum() == 8 and (np.abs(err[missed]) > 0.149).sum() == 8 and (np.abs(err[missed]) > 0.151).sum() == 7
+
+
+def test_simulated_dynamic_tension_refuses_a_non_finite_simulation(monkeypatch):
+    # a steady state without a finite peak is refused (the analysis then keeps the model, warned)
+    import chaindrive.simulation.steady as S
+    from chaindrive.analysis.dynamic_tension import _simulated
+
+    class _Nan:
+        period_peak_tension = float("nan")
+
+    monkeypatch.setattr(S, "steady_state", lambda model, **kw: _Nan())
+    sw = _sweep()
+    with pytest.raises(InputError, match="no finite peak"):
+        _simulated.__wrapped__(sw.drive_of(sw.sweep_drives(64)[1]), 4000.0)
+
+
+def test_outside_the_ranges_cached():
+    # three drives each outside one of the sweep's ranges (benchmarks/_dynamic_sweep.py --outside):
+    # the analysis's steady state against the run from rest is -6.7, -7.8 and -39.4 % (the long
+    # span X02), the reduced model extrapolated -16.0, -9.9 and -18.8 % (docs/design.md): neither
+    # is validated there; a regression of that finding
+    sw = _sweep()
+    rest = {r["name"]: r for r in sw.read_cache(sw.OUTSIDE_CACHE)}
+    steady = {r["name"]: float(r["pp"]) for r in sw.read_cache(sw.OUTSIDE_STEADY_CACHE)}
+    err = {n: steady[n] / rest[n]["sim_peak"] - 1 for n in rest}
+    assert sorted(err) == ["X00", "X01", "X02"]
+    assert -0.10 < err["X00"] < -0.03 and -0.11 < err["X01"] < -0.04 and -0.45 < err["X02"] < -0.33
+    for s in sw.outside_drives():
+        r = rest[s.name]
+        assert RT.running_tension_range_violations(
+            pitch=r["pitch"], teeth=r["teeth_driving"], teeth_driven=r["teeth_driven"],
+            angular_velocity=r["rpm"] * math.pi / 30, centre_distance=r["tight_span"], pull=r["pull"],
+            breaking_force=r["pull"] / s.pull_ratio)

@@ -10,13 +10,18 @@ statistics; they are in fact bit-equal). Every error path. No timing here
 
 from __future__ import annotations
 
+import dataclasses
+
 import numpy as np
 import pytest
 
+from chaindrive import chains
+from chaindrive.drive.model import Conveyor, Drive, Load, Tensioner, Wheel
 from chaindrive.errors import InputError
+from chaindrive.simulation import SimWheel, link_example, roller_example
 from chaindrive.simulation import _kernel as K
-from chaindrive.simulation import link_example, roller_example
-from chaindrive.simulation._batched import empty_batch_records, integrate_batch, stack_tables
+from chaindrive.simulation._batched import LANES, empty_batch_records, integrate_batch, stack_tables
+from chaindrive.simulation.from_drive import model_from_drive
 from chaindrive.simulation.steady import steady_state, warm_start
 from chaindrive.simulation.steady_batch import batch_step, steady_states
 
@@ -43,12 +48,35 @@ def _batched(states, nsteps=STEPS, every=EVERY):
     return pos, vel, ws, recs, written
 
 
+def _idler_drive(load):
+    """The roller drive with a free toothless idler under its slack span (the rim contact)."""
+    m = roller_example(links=100, teeth=17, angular_velocity=10.0, load_torque=load)
+    idler = SimWheel.at((m.wheels[1].centre[0] / 2, -0.25), 3, 2e-3, "free", name="idler",
+                        plain_radius=0.06)
+    return dataclasses.replace(m, wheels=[m.wheels[0], idler, *m.wheels[1:]])
+
+
+def _conveyor(material):
+    """A 4 m 18x64 conveyor on pans with material, the tail on a spring slide: guides, the
+    scraped material's inertia and a slide (tests/test_simulation_conveyor.py's drive)."""
+    wheels = (Wheel("head", "pocket_wheel", 8, (0.0, 0.0), driving=True),
+              Wheel("tail", "pocket_wheel", 8, (4.0, 0.0)))
+    return model_from_drive(Drive(
+        chain=chains.get("18x64"), wheels=wheels, speed=5.0, load=Load(power=10e3),
+        tensioner=Tensioner("tail", 200.0, 1e6, "spring", (1.0, 0.0), 20e3),
+        conveyor=Conveyor(return_strand="supported", material_load=material)))
+
+
 @pytest.mark.parametrize("models", [
     # roller chain on ISO 606 sprockets: speeds, loads and (so) time steps differ
     [roller_example(links=50, teeth=12, angular_velocity=w, load_torque=tq)
      for w, tq in ((20.0, 60.0), (28.0, 30.0), (14.0, 120.0))],
     # round-link chain on pocket wheels (bi-regular seats), different loads
     [link_example(load_torque=tq) for tq in (200.0, 800.0)],
+    # a toothless idler (rim contact, a free wheel)
+    [_idler_drive(tq) for tq in (80.0, 150.0)],
+    # pans with material (guides, the material's inertia), a tensioner on a slide
+    [_conveyor(mat) for mat in (40.0, 60.0)],
 ])
 def test_batched_kernel_equals_the_single_kernel_per_variant(models):
     states = [warm_start(m) for m in models]
@@ -65,6 +93,25 @@ def test_batched_kernel_equals_the_single_kernel_per_variant(models):
         np.testing.assert_array_equal(recs[1][v], r1[2])   # link tensions
         np.testing.assert_array_equal(recs[2][v], r1[4])   # wheel states
         np.testing.assert_array_equal(recs[3][v], r1[5])   # positions
+
+
+def test_more_variants_than_one_block_of_lanes():
+    # LANES + 2 variants: two blocks of the contact loop, the second one partly filled
+    # (one drive, each variant with its own link damping)
+    model = roller_example(links=30, teeth=9, angular_velocity=10.0, load_torque=20.0, gravity=False)
+    start = warm_start(model)
+    states = []
+    for v in range(LANES + 2):
+        par = start.par.copy()
+        par[K.P_DT] = model.stable_time_step()
+        par[K.P_C] *= 1.0 + 0.01 * v
+        states.append(dataclasses.replace(start, par=par))
+    pos, vel, ws, _, _ = _batched(states, 300, 100)
+    for v in (0, LANES - 1, LANES, LANES + 1):
+        p1, v1, w1, _ = _single(states[v], 300, 100)
+        np.testing.assert_array_equal(pos[v], p1)
+        np.testing.assert_array_equal(vel[v], v1)
+        np.testing.assert_array_equal(ws[v], w1)
 
 
 def test_seat_tables_padded_to_the_largest_wheel():

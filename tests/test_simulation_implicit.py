@@ -41,6 +41,41 @@ def test_cyclic_tridiagonal_solve_equals_dense_solve(n):
     np.testing.assert_allclose(x, np.linalg.solve(_cyclic(d, e), b), rtol=1e-10, atol=1e-12)
 
 
+@pytest.mark.parametrize("n", [3, 4, 7, 101])
+def test_fused_solves_equal_the_separate_ones_to_the_last_bit(n):
+    # _factor_solve4 (the implicit step's link system with up to three wheel unknowns)
+    # against the factorisation and one substitution per right-hand side: the same
+    # arithmetic, so bit-equal; and the solution against the dense solve
+    from chaindrive.simulation._banded import (
+        _factor_solve4,
+        cyclic_tridiagonal_factor,
+        cyclic_tridiagonal_substitute,
+    )
+
+    rng = np.random.default_rng(n)
+    e = rng.normal(size=n)
+    d = np.abs(e) + np.abs(np.roll(e, 1)) + rng.uniform(0.01, 1.0, n)
+    bs = rng.normal(size=(4, n))
+    idd, ff = np.empty(n), np.empty(n)
+    dlast = cyclic_tridiagonal_factor(d, e, idd, ff)
+    sep = np.empty_like(bs)
+    for k in range(4):
+        cyclic_tridiagonal_substitute(e, idd, ff, dlast, bs[k], sep[k])
+    idd4, ff4 = np.empty(n), np.empty(n)
+    four = bs.copy()
+    dlast4 = _factor_solve4(d, e, idd4, ff4, four[0], four[1], four[2], four[3], True)
+    two = bs.copy()
+    dlast2 = _factor_solve4(d, e, np.empty(n), np.empty(n), two[0], two[1], two[2], two[3],
+                            False)
+    assert dlast4 == dlast2 == dlast
+    assert np.array_equal(two[:2], sep[:2]) and np.array_equal(two[2:], bs[2:])
+    # (entry n - 1 of the factors is not used)
+    assert np.array_equal(idd4[:-1], idd[:-1]) and np.array_equal(ff4[:-1], ff[:-1])
+    assert np.array_equal(four, sep)
+    np.testing.assert_allclose(four.T, np.linalg.solve(_cyclic(d, e), bs.T), rtol=1e-10,
+                               atol=1e-12)
+
+
 def test_cyclic_tridiagonal_solve_chain_laplacian():
     # the integrator's matrix for a straight-sided loop: 1/a + h/m (2, -1 cyclic), nearly
     # singular (1/a ≪ h/m): the loop's uniform-tension mode

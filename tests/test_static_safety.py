@@ -294,3 +294,14 @@ def test_bad_load_character_one_line_exit_2(args, capsys):
     assert main(["select", "--power", "11 kW", "--speed", "1460 rpm", "--ratio", "3", *args]) == 2
     err = capsys.readouterr().err.strip().splitlines()
     assert len([e for e in err if not e.startswith("warning:")]) == 1 and "load" in err[-1]
+
+
+def test_required_safety_one_point_equals_the_array_path():
+    # one (pitch, speed) takes the two columns it interpolates; the array path all of them
+    rng = np.random.default_rng(4)
+    p, w = rng.uniform(0.005, 0.08, 200), rng.uniform(1.0, 400.0, 200)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        many = F.required_static_safety_table(p, w)
+        one = [float(F.required_static_safety_table(a, b)) for a, b in zip(p, w, strict=True)]
+    assert np.array_equal(many, one)

@@ -453,3 +453,28 @@ def test_span_vibration_bundle(tmp_path):
     assert bare.passed is None and bare.heavy_tensioner_frequency is None
     with pytest.raises(InputError, match="no Campbell data"):
         bare.plot()
+
+
+@settings(max_examples=40, deadline=None)
+@given(s=st.floats(100.0, 5e4), l1=st.floats(0.1, 3.0), l2=st.floats(0.1, 3.0), b1=st.floats(0.0, 1.2),
+       b2=st.floats(0.0, 1.2), m=st.floats(0.0, 200.0), c=st.sampled_from([0.0, 5e4, 1e7, np.inf]),
+       modes=st.integers(1, 6))
+def test_tensioner_frequencies_scalar_roots_equal_the_array_roots(s, l1, l2, b1, b2, m, c, modes):
+    # a handful of roots is iterated in Python floats; the same Illinois steps as the array path
+    from chaindrive.vibration import tensioner as T
+
+    few = tensioner_frequencies(s, 2.6, l1, l2, b1, b2, m, c, modes=modes)
+    with pytest.MonkeyPatch.context() as patch:
+        patch.setattr(T, "_SCALAR_ROOTS", 0)
+        many = tensioner_frequencies(s, 2.6, l1, l2, b1, b2, m, c, modes=modes)
+    np.testing.assert_allclose(few, many, rtol=1e-14, atol=0)
+
+
+def test_stationary_span_frequencies_kept_and_copied():
+    from chaindrive.vibration import TensionerSpan
+
+    s = TensionerSpan(2000.0, 2.6, 0.8, 1.1, 0.3, 0.3, 3.0, 5e4)
+    first = s.frequencies(3)
+    first[0] = -1.0  # the caller's own copy
+    again = s.frequencies(3)
+    assert np.array_equal(again, tensioner_frequencies(2000.0, 2.6, 0.8, 1.1, 0.3, 0.3, 3.0, 5e4, modes=3))

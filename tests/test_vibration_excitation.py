@@ -111,3 +111,18 @@ def test_span_excitations_rows_and_errors():
         forced_span_response(SPAN, 10.0, 1e-3, damping_ratio=0.0)
     with pytest.raises(InputError, match="frequency"):
         forced_span_response(SPAN, -1.0, 1e-3)
+
+
+def test_span_excitations_equal_one_forced_response_each():
+    # the excitations are answered in one call, each frequency with its own amplitude; each
+    # equals forced_span_response asked alone, bit for bit
+    from chaindrive.vibration.excitation import forced_span_response, span_excitations
+    from chaindrive.vibration.resonance import TensionerSpan
+
+    s = TensionerSpan(2000.0, 2.6, 0.8, 1.1, 0.3, 0.3, 3.0, 5e4)
+    rows = span_excitations(s, 10.0, ratio=2.0, teeth_driving=17, teeth_driven=34, radius_driving=0.069,
+                            radius_driven=0.1376, pitch=0.0254)
+    for r in rows:
+        w, u = forced_span_response(s, [r.frequency, 1e-6 * 10.0], r.end_amplitude, r.end_amplitude)
+        assert r.response == float(w[0]) and r.tensioner_amplitude == float(u[0])
+        assert r.amplification == (float(w[0] / w[1]) if r.end_amplitude > 0 else 0.0)

@@ -156,6 +156,39 @@ def first_nonfinite(obj: Any, _depth: int = 0) -> str | None:
     return None
 
 
+def _finite_tree(obj: Any, _depth: int = 0) -> bool:
+    """``first_nonfinite(obj) is None``, answered faster: no path built, the common members
+    (plain values, floats, arrays) of dataclasses and sequences checked without a call."""
+    t = type(obj)
+    if t in _PLAIN or _depth > 12:
+        return True
+    if t in _FLOATS:
+        return math.isfinite(obj)
+    if t is np.ndarray:
+        return obj.dtype.kind not in "fc" or not obj.size or _all_finite(obj)
+    names = _FIELDS.get(t)
+    if names is None and hasattr(t, "__dataclass_fields__") and dataclasses.is_dataclass(t):
+        names = _field_names(t)
+    if names is not None:
+        values: Any = [getattr(obj, name, None) for name in names]
+    elif t is tuple or t is list:
+        values = obj
+    else:
+        return first_nonfinite(obj, _depth) is None
+    if _depth >= 12:  # first_nonfinite looks no deeper
+        return True
+    for v in values:
+        tv = type(v)
+        if tv in _PLAIN:
+            continue
+        if tv in _FLOATS:
+            if not math.isfinite(v):
+                return False
+        elif not _finite_tree(v, _depth + 1):
+            return False
+    return True
+
+
 def _show(value: Any) -> str:
     if isinstance(value, np.ndarray):
         bad = value[~np.isfinite(value)] if value.dtype.kind in "fc" else value
@@ -247,13 +280,17 @@ def finite_guard(function: F | None = None, *, check_result: bool = True,
     @functools.wraps(function)
     def wrapper(*args, **kwargs):
         for i, value in enumerate(args):
-            if _nonfinite_number(value):
-                names = parameter_names()
-                name = names[i] if i < len(names) else f"argument {i + 1}"
-                _refuse(name, value, allow_infinite)
+            t = type(value)  # the common arguments answered here, without a call
+            if (math.isfinite(value) if t in _FLOATS else t in _PLAIN) or not _nonfinite_number(value):
+                continue
+            names = parameter_names()
+            name = names[i] if i < len(names) else f"argument {i + 1}"
+            _refuse(name, value, allow_infinite)
         for name, value in kwargs.items():
-            if _nonfinite_number(value):
-                _refuse(name, value, allow_infinite)
+            t = type(value)
+            if (math.isfinite(value) if t in _FLOATS else t in _PLAIN) or not _nonfinite_number(value):
+                continue
+            _refuse(name, value, allow_infinite)
         try:
             if _GUARD.depth:  # an outer guard has set numpy's error state already
                 _GUARD.depth += 1
@@ -294,7 +331,7 @@ def finite_guard(function: F | None = None, *, check_result: bool = True,
                 raise InfeasibleError(f"{label}: the geometry is degenerate for these inputs (the points are "
                                       "collinear or the numbers overflow); check the dimensions") from None
             raise
-        if check_result:
+        if check_result and not _finite_tree(result):
             where = first_nonfinite(result)
             if where is not None:
                 raise InfeasibleError(

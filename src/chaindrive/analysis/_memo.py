@@ -28,6 +28,8 @@ from typing import Any, TypeVar, cast
 
 import numpy as np
 
+from .._finite import _field_names
+
 __all__ = ["memo", "clear", "freeze"]
 
 F = TypeVar("F", bound=Callable[..., Any])
@@ -35,15 +37,21 @@ F = TypeVar("F", bound=Callable[..., Any])
 _STORES: list[OrderedDict[Any, Any]] = []
 
 
+_LEAVES = frozenset({float, int, str, bool, type(None), np.float64})
+
+
 def freeze(obj: Any, _depth: int = 0) -> None:
     """Make every numpy array reachable in ``obj`` (dataclasses, tuples, lists, dicts) read-only."""
-    if _depth > 8:
+    t = type(obj)
+    if _depth > 8 or t in _LEAVES:
         return
-    if isinstance(obj, np.ndarray):
+    if t is np.ndarray:
         obj.flags.writeable = False
-    elif dataclasses.is_dataclass(obj) and not isinstance(obj, type):
-        for f in dataclasses.fields(obj):
-            freeze(getattr(obj, f.name, None), _depth + 1)
+    elif hasattr(t, "__dataclass_fields__") and dataclasses.is_dataclass(t):
+        for name in _field_names(t):
+            freeze(getattr(obj, name, None), _depth + 1)
+    elif isinstance(obj, np.ndarray):
+        obj.flags.writeable = False
     elif isinstance(obj, (tuple, list)):
         for v in obj:
             freeze(v, _depth + 1)
@@ -62,9 +70,20 @@ def clear() -> None:
         cached = getattr(two_wheels, name, None)
         if cached is not None and hasattr(cached, "cache_clear"):
             cached.cache_clear()
+    two_wheels._GRIDS.__dict__.clear()  # the phase grids the root search evaluated last
+    two_wheels._VERTEX_CACHE.clear()
+    from ..kinematics import entry, solver
+    from ..layout import polygon_loop, wheels
+    from ..vibration import resonance
+
+    for cached in (wheels.cached_pitch_radius, solver._cumulative, entry._checked_seats, entry._chordal_rod_schedule,
+                   resonance._stationary_frequencies, polygon_loop._polygon):
+        cached.cache_clear()
+    from ..life import jump_over, jump_table
     from ..loads.safety import required_static_safety_for
 
-    required_static_safety_for.cache_clear()
+    for cached in (required_static_safety_for, jump_over._form_cached, jump_table._rows):
+        cached.cache_clear()
 
 
 def memo(*, maxsize: int = 128, key: Callable[..., Hashable] | None = None) -> Callable[[F], F]:

@@ -167,8 +167,8 @@ def _geometry(drive: Drive, phases: int) -> DriveLayout:
     chain = drive.chain
     sides = [w.side for w in wheels]
     positions = np.array([w.position for w in wheels], dtype=float)
-    clearance_error(drive, positions)
-    links_required, polygon, loop, centre, wrap = _required_length(drive, positions, phases)
+    drawn = clearance_error(drive, positions)
+    links_required, polygon, loop, centre, wrap = _required_length(drive, positions, phases, drawn)
     needed = loop.links_max if loop is not None and loop.exact else links_required
     check_links_needed(needed)  # chaindrive.limits: the documented maximum at every door
     links = int(drive.links) if drive.links is not None else int(L.even_links(needed))
@@ -234,13 +234,15 @@ def _geometry(drive: Drive, phases: int) -> DriveLayout:
     )
 
 
-def _required_length(drive: Drive, positions: np.ndarray, phases: int):
+def _required_length(drive: Drive, positions: np.ndarray, phases: int, wrap: L.WrapLayout | None = None):
     """Chain length the wheels at ``positions`` need: (links on the circles with the wraps counted in seated
     links, or the two-wheel polygon's largest; the two-wheel polygon; the loop polygon of three or more
-    wheels; the two-wheel centre distance; the wrap layout on the pitch circles)."""
+    wheels; the two-wheel centre distance; the wrap layout on the pitch circles). ``wrap``: that wrap
+    layout when the caller has it (:func:`~chaindrive.drive.clearance.clearance_error` draws it)."""
     wheels = drive.wheels
     p = drive.pitch
-    wrap = L.wrap_layout(positions, drive.pitch_radii(), [w.side for w in wheels])
+    if wrap is None:
+        wrap = L.wrap_layout(positions, drive.pitch_radii(), [w.side for w in wheels])
     wrap_links = np.array([
         wrap.wrap_angle[i] * w.sides_per_turn(drive.chain) / (2 * np.pi)
         if w.teeth is not None else wrap.wrap_length[i] / p

@@ -7,9 +7,12 @@ One life per mechanism, each decided here once:
   (:mod:`chaindrive.analysis.service_life`), never recomputed; the elongation over hours follows
   it (:func:`chaindrive.life.elongation.elongation_at_hours`). The makers' replacement
   limit by tooth count is a check on the drive's limit.
-- **jump-over**: for every loaded ISO 606 sprocket, the tight-side tooth load at which the
-  wrap lets the chain ride over (:mod:`chaindrive.life.jump_over`), over the elongation
-  from new to the limit; the elongation at which the margin reaches 1 and the hours to it.
+- **jump-over**: for every loaded ISO 606 sprocket, the load ratio at which the wrap lets
+  the chain ride over — the compliant wrap's, checked against the simulation, from its table
+  (:mod:`chaindrive.life.jump_table`: ``c β^-n``), the wheel on the tensioner's slide with its
+  torque and ``T_1 + T_2`` held, the others with their back tension held — over the running
+  ``T_1/T_2`` (the margin), over the elongation from new to the limit; the elongation at which
+  the margin reaches 1 (or the tooth form's holding limit) and the hours to it.
 - **fatigue**: rainflow counting of one link's tension over a lap (span tensions, the
   centrifugal part and the polygonal dynamic tension on the tight span) against the link
   plate S–N curve tied to the rating's link-plate line (:mod:`chaindrive.life.fatigue`).
@@ -24,6 +27,7 @@ grid ``elongations`` (new → the drive's limit), the worst point named.
 from __future__ import annotations
 
 import math
+import warnings
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
@@ -32,11 +36,14 @@ import numpy as np
 from .. import layout as L
 from .._results import Result, quantity
 from .._validation import check_nonnegative
-from ..errors import InputError
+from ..chains.stiffness import chain_axial_stiffness
+from ..errors import InputError, ValidityRangeWarning
+from ..layout.wrap import span_lengths
 from ..life import efficiency as EF
 from ..life import elongation as EL
 from ..life import fatigue as FA
 from ..life import jump_over as JO
+from ..life import jump_table as JT
 from ..vibration.resonance import resonance_margin
 from ..vibration.string import moving_string_frequencies
 from ._memo import memo
@@ -56,8 +63,12 @@ __all__ = ["DriveLife", "WornState", "drive_life", "worn_state", "ELONGATION_STE
 ELONGATION_STEPS = 7
 _SOURCE_LIMIT = ("makers' replacement rule (Diamond Chain, Regal Rexnord): 3 %, 200/z % above 67 teeth, "
                  "1.5 % on fixed centres")
-_SOURCE_JUMP = ("ISO 606 tooth form, frictionless roller balance (Binder 1956 ch. 5; Naji & Marshek, "
-                "Mech. Mach. Theory 18 (1983) 349); docs/life.md")
+_SOURCE_JUMP = ("compliant wrap on the ISO 606 tooth form (after Marshek & Naji, Mech. Mach. Theory 18 (1983) 349), "
+                "checked against the simulation within 10 %; its table (scripts/tabulate_wrap_jump.py) as a "
+                "correction to the rigid roller balance beta^-n (Binder 1956 ch. 5); docs/life.md, 'Jump-over'")
+_SOURCE_HOLD = ("ISO 606 tooth form: the roller centre at the tooth corner (Binder 1956 ch. 5); docs/life.md")
+_LOADING_NOTE = {"torque": "the wheel on the tensioner's slide: torque and T1 + T2 held",
+                 "tensions": "back tension held (tensioner on the slack span, sag or given)"}
 
 
 @dataclass(frozen=True)
@@ -76,6 +87,7 @@ class DriveLife(Result):
     holding_limit: tuple[float | None, ...] = quantity("1", default=())
     jump_over_tension: tuple[float | None, ...] = quantity("N", default=())
     jump_over_margin: tuple[float | None, ...] = quantity("1", default=())
+    jump_over_loading: tuple[str | None, ...] = ()
     jump_over_margins: np.ndarray | None = quantity("1", default=None)
     jump_over_elongation: float | None = quantity("1", default=None)
     jump_over_hours: float | None = quantity("h", default=None)
@@ -113,6 +125,47 @@ def _wheel_tensions(loads, n):
     return [(float(s[(i - 1) % n]), float(s[i])) for i in range(n)]
 
 
+def _loading(drive, index):
+    """``torque`` for a loaded wheel carried by the tensioner (its slide holds ``T_1 + T_2``), else
+    ``tensions`` (the back tension held: by the tensioner on the slack span, by the sag, or given)."""
+    t = drive.tensioner
+    return "torque" if t is not None and drive.wheel_index(t.wheel) == index else "tensions"
+
+
+def _onset(drive, index, teeth, seated, tight, back, elongations, notes=None):
+    """The compliant wrap's onset (:func:`chaindrive.life.jump_onset`) of wheel ``index`` over
+    ``elongations``; with ``notes``, what lies outside its table said (:func:`_table_range`)."""
+    ch = drive.chain
+    k = float(ch.strands or 1)
+    kw = {"load": (tight + back) / k} if _loading(drive, index) == "torque" else {"back_tension": back / k}
+    onset = JT.jump_onset(drive.pitch, teeth, ch.roller_diameter, elongations, seated=seated,
+                          axial_stiffness=chain_axial_stiffness(ch), warn=False, **kw)
+    if notes is not None and onset.outside:
+        _table_range(drive, index, onset.outside, float(np.min(onset.tight_tension)), notes)
+    return onset
+
+
+def _table_range(drive, index, outside, tight_min, notes):
+    """A ``ValidityRangeWarning`` for what lies outside the compliant wrap's table (``outside``, of
+    :func:`chaindrive.life.jump_onset`), except a load beyond the table's where the onset's smallest tooth
+    load ``tight_min`` (one strand) exceeds the chain's breaking force (the chain breaks before it jumps:
+    said in ``notes``)."""
+    ch = drive.chain
+    k = float(ch.strands or 1)
+    outside = list(outside)
+    name = drive.wheels[index].name
+    strength = ch.breaking_force
+    if strength and any(o.startswith("F/EA") for o in outside) and tight_min * k > float(strength):
+        outside = [o for o in outside if not o.startswith("F/EA")]
+        notes.append(f"jump-over on '{name}': the wrap holds a tooth load beyond the chain's breaking force "
+                     f"({float(strength) / 1e3:.4g} kN): the chain breaks before it jumps (the margin is the "
+                     "compliant wrap's at the load edge of its table)")
+    if outside:
+        warnings.warn(f"jump-over margin on '{name}' (the compliant wrap's table, scripts/tabulate_wrap_jump.py): "
+                      f"{'; '.join(outside)}; the nearest edge of the table is used", ValidityRangeWarning,
+                      stacklevel=2)
+
+
 def _margins(drive, layout, loads, grid, notes):
     n = len(drive.wheels)
     wheels = _tooth_form_wheels(drive, layout)
@@ -121,6 +174,7 @@ def _margins(drive, layout, loads, grid, notes):
     hold = [None] * n
     t_jump = [None] * n
     margin = [None] * n
+    loading = [None] * n
     curves = np.full((n, grid.size), np.nan)
     e_jump, wheel_jump = None, ""
     p, d1 = drive.pitch, drive.chain.roller_diameter
@@ -136,42 +190,59 @@ def _margins(drive, layout, loads, grid, notes):
             continue  # the holding check fails; no margin past the corner
         if hi - lo <= 1e-9 * max(hi, 1.0) or seated < 1:
             continue  # no tooth load: an idler sprocket, or nothing seated
-        betas = JO.tension_ratio(p, z, d1, grid)
-        with np.errstate(divide="ignore"):
-            tj = np.where(betas > 0, lo * betas ** (-float(seated)), np.inf)
-        curves[i] = tj / hi
-        t_jump[i] = float(tj[-1])
-        margin[i] = float(tj[-1] / hi)
-        # elongation where the margin reaches 1 (or the holding limit), by bisection on the ratio
-        e_w = _jump_elongation(p, z, d1, seated, lo / hi, limit)
+        loading[i] = _loading(drive, i)
+        if lo <= 0.0:  # no back tension: nothing holds the wrap
+            curves[i], t_jump[i], margin[i] = 0.0, 0.0, 0.0
+            e_w = 0.0
+        else:
+            # the grid's points and the jump elongation's search points in one call (pointwise: the same
+            # numbers); what lies outside the table said for the grid's
+            g = grid.size
+            onset = _onset(drive, i, z, seated, hi, lo, np.concatenate([grid, _jump_points(limit)]))
+            rho, tight = np.asarray(onset.load_ratio), np.asarray(onset.tight_tension)
+            outside = JT._outside(onset.loading, z, np.asarray(onset.fraction)[:g].tolist(),
+                                  np.asarray(onset.load_stiffness)[:g].tolist())
+            if outside:
+                _table_range(drive, i, outside, float(np.min(tight[:g])), notes)
+            curves[i] = rho[:g] * lo / hi
+            t_jump[i] = float(tight[g - 1]) * float(drive.chain.strands or 1)
+            margin[i] = float(curves[i][-1])
+            e_w = _jump_elongation(drive, i, rho[g:] * lo / hi, limit, notes)
         if e_w < e_jump:
             e_jump, wheel_jump = e_w, drive.wheels[i].name
     if not wheels:
         notes.append("jump-over: no ISO 606 sprocket on a roller chain (pocket wheels and track wheels "
                      "are not modelled)")
     curves_out = None if np.all(np.isnan(curves)) else curves
-    return rise, hold, t_jump, margin, curves_out, e_jump, wheel_jump
+    return rise, hold, t_jump, margin, loading, curves_out, e_jump, wheel_jump
 
 
-def _jump_elongation(p, z, d1, seated, back_ratio, limit):
-    """Smallest elongation where ``β(e)^-n T2/T1 <= 1``, or the holding limit."""
-    def excess(e):
-        b = float(JO.tension_ratio(p, z, d1, e))
-        return math.inf if b <= 0 else back_ratio * b ** (-float(seated)) - 1.0
+#: Points of the elongation grid (0 … the holding limit) on which the jump-over elongation is sought.
+_JUMP_POINTS = 17
 
-    top = limit * (1 - 1e-9)
-    if excess(top) > 0:
+
+def _jump_points(limit):
+    """The elongations (0 … the holding limit) on which the jump-over elongation is sought."""
+    return np.linspace(0.0, limit * (1 - 1e-9), _JUMP_POINTS)
+
+
+def _jump_elongation(drive, i, m, limit, notes):
+    """Smallest elongation where the margin ``m = ρ_jump(e) T_2/T_1`` (on :func:`_jump_points`) reaches 1,
+    or the holding limit: the first crossing on the grid, linear in ``ln`` margin between its points."""
+    e = _jump_points(limit)
+    below = np.flatnonzero(m <= 1.0)
+    if below.size == 0:
         return limit
-    lo_e, hi_e = 0.0, top
-    if excess(0.0) <= 0:
+    j = int(below[0])
+    if j == 0:
         return 0.0
-    for _ in range(40):
-        mid = 0.5 * (lo_e + hi_e)
-        if excess(mid) > 0:
-            lo_e = mid
-        else:
-            hi_e = mid
-    return hi_e
+    a, b = math.log(m[j - 1]), math.log(max(m[j], 1e-300))
+    found = float(e[j - 1] + (e[j] - e[j - 1]) * a / (a - b))
+    top = JT.wrap_jump_range()["fraction"][1]
+    if found > top * limit:
+        notes.append(f"jump-over on '{drive.wheels[i].name}' at {found / limit:.2f} of its holding limit, past the "
+                     f"compliant wrap's table ({top:g} of it): its last point is used there")
+    return found
 
 
 def _span_frequencies(drive, layout, loads, grid):
@@ -182,8 +253,11 @@ def _span_frequencies(drive, layout, loads, grid):
     w = layout.wrap
     v = float(loads.chain_speed)
     tension = np.asarray(loads.span_tensions, float) + float(loads.centrifugal)
-    lengths = np.column_stack([L.wrap_layout(w.centres, np.asarray(w.radii) * (1.0 + e), w.sides).span_length
-                               for e in grid])
+    rows = np.asarray(w.radii)[None, :] * (1.0 + grid[:, None])
+    lengths = span_lengths(np.asarray(w.centres, float), rows, np.asarray(w.sides, float))
+    if lengths is None:  # no layout at some elongation: wrap_layout says why
+        lengths = np.stack([L.wrap_layout(w.centres, r, w.sides).span_length for r in rows])
+    lengths = lengths.T
     return moving_string_frequencies(tension[:, None], q / (1.0 + grid[None, :]), lengths, chain_speed=v,
                                      modes=1)[..., 0]
 
@@ -245,11 +319,12 @@ def _efficiency(drive, layout, loads, notes):
     cf = float(loads.centrifugal)
     tens = _wheel_tensions(loads, n)
     radii = np.asarray(layout.pitch_radii, float)
-    # articulation angle per joint on each wheel: 2 asin(p / 2R) (= 2π/z on a sprocket)
-    angle = 2.0 * np.arcsin(np.minimum(1.0, drive.pitch / (2.0 * radii)))
-    sides = 2.0 * math.pi / angle
-    t_in = np.array([t[0] for t in tens]) + cf
-    t_out = np.array([t[1] for t in tens]) + cf
+    # articulation angle per joint on each wheel: 2 asin(p / 2R) (= 2π/z on a sprocket), at most its wrap
+    angle = EF.articulation_angle(drive.pitch, radii, np.asarray(layout.wrap.wrap_angle, float))
+    bent = angle > 0.0  # a wheel the chain does not wrap turns no joint
+    sides = 2.0 * math.pi / angle[bent]
+    t_in = np.array([t[0] for t in tens])[bent] + cf
+    t_out = np.array([t[1] for t in tens])[bent] + cf
     loss = float(EF.articulation_power_loss(loads.chain_speed, drive.pitch, d, sides, t_in, t_out))
     power = float(loads.effective_pull) * float(loads.chain_speed) / max(float(drive.load.service_factor), 1e-12)
     if power <= 0:
@@ -289,7 +364,7 @@ def drive_life(drive: Drive, layout: DriveLayout, loads: DriveLoads, rating: Dri
     replacement = None
     if drive.chain.roller_diameter is not None and sprockets:
         replacement = float(EL.replacement_limit(max(sprockets), fixed_centres=layout.take_up is None))
-    rise, hold, t_jump, margin, curves, e_jump, wheel_jump = _margins(drive, layout, loads, grid, notes)
+    rise, hold, t_jump, margin, loading, curves, e_jump, wheel_jump = _margins(drive, layout, loads, grid, notes)
     jump_hours = None if e_jump is None else float(EL.hours_to_elongation(e_jump, t_lim, limit))
     take_up = None
     if layout.take_up is not None:
@@ -315,7 +390,8 @@ def drive_life(drive: Drive, layout: DriveLayout, loads: DriveLoads, rating: Dri
     return DriveLife(hours=hours, elongation=np.asarray(elong, float), elongation_limit=limit,
                      replacement_limit=replacement, replacement_hours=t_lim, elongations=grid,
                      wheel_names=drive.wheel_names, seating_rise=tuple(rise), holding_limit=tuple(hold),
-                     jump_over_tension=tuple(t_jump), jump_over_margin=tuple(margin), jump_over_margins=curves,
+                     jump_over_tension=tuple(t_jump), jump_over_margin=tuple(margin), jump_over_loading=tuple(loading),
+                     jump_over_margins=curves,
                      jump_over_elongation=e_jump, jump_over_hours=jump_hours, jump_over_wheel=wheel_jump,
                      take_up=take_up, span_frequencies=freqs, resonance_margins=res_margins,
                      resonance_worst=res_worst, endurance_range=endurance,
@@ -375,8 +451,7 @@ def worn_state(drive: Drive, layout: DriveLayout, loads: DriveLoads, life: Drive
         rise[i] = float(seat.rise)
         hi, lo = max(tens[i]), min(tens[i])
         if hi - lo > 1e-9 * max(hi, 1.0) and seated >= 1:
-            beta = float(JO.tension_ratio(p, z, d1, e))
-            margin[i] = math.inf if beta <= 0 else lo * beta ** (-float(seated)) / hi
+            margin[i] = 0.0 if lo <= 0.0 else float(_onset(drive, i, z, seated, hi, lo, e, []).load_ratio) * lo / hi
     take_up = None if life.take_up is None else float(np.interp(e, life.elongations, life.take_up))
     freqs = None
     if life.span_frequencies is not None:
@@ -403,16 +478,18 @@ def _checks(ctx: PartContext, r: DriveLife) -> list[Check]:
         out.append(Check("wear elongation limit <= makers' replacement limit", r.elongation_limit,
                          r.replacement_limit, "-", bool(r.elongation_limit <= r.replacement_limit + 1e-12),
                          _SOURCE_LIMIT, relation="<="))
-    for name, hold, m in zip(r.wheel_names, r.holding_limit, r.jump_over_margin, strict=True):
+    loadings = r.jump_over_loading or (None,) * len(r.wheel_names)
+    for name, hold, m, ld in zip(r.wheel_names, r.holding_limit, r.jump_over_margin, loadings, strict=True):
         if hold is None:
             continue
         if r.elongation_limit > hold:
             out.append(Check(f"tooth form of '{name}' holds the chain at the elongation limit", hold,
-                             r.elongation_limit, "-", False, _SOURCE_JUMP, relation=">=",
+                             r.elongation_limit, "-", False, _SOURCE_HOLD, relation=">=",
                              note="the rollers ride over the tooth corner before the limit"))
         elif m is not None:
             out.append(Check(f"jump-over margin on '{name}' at the elongation limit", m, 1.0, "-", bool(m >= 1.0),
-                             _SOURCE_JUMP, note="tight-side tooth load at jump-over / running tooth load"))
+                             _SOURCE_JUMP, note="load ratio M/(R_e T2) at jump-over / running T1/T2; "
+                             + _LOADING_NOTE.get(ld or "", "")))
     if r.fatigue_life_hours is not None or r.fatigue_utilisation is not None:
         out.append(Check("link-plate fatigue: equivalent range / endurance", r.fatigue_utilisation, None, "-", None,
                          "rainflow (ASTM E1049) + Miner; endurance at the ANSI link-plate line (Tsubaki 1997 "

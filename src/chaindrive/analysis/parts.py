@@ -30,7 +30,6 @@ A part that reads the layout and reports the chain's mass:
 from __future__ import annotations
 
 import contextlib
-import dataclasses
 import importlib
 import pkgutil
 from collections.abc import Callable, Iterable, Iterator, Sequence
@@ -269,6 +268,17 @@ class PartContext:
         self._computed[self.part.name].caught.append(str(text))
 
 
+def _with_part(check: Check, name: str) -> Check:
+    """``dataclasses.replace(check, part=name)`` (a copy of the frozen check with its part; the
+    same fields, without running the generated ``__init__`` again)."""
+    if check.part == name:
+        return check
+    new = object.__new__(type(check))
+    new.__dict__.update(check.__dict__)
+    object.__setattr__(new, "part", name)
+    return new
+
+
 def compute_parts(drive: Drive, wanted: tuple[str, ...], options: dict[str, Any], *,
                   computed: dict[str, _Computed] | None = None,
                   shared_checks: dict[str, list[Check]] | None = None,
@@ -281,30 +291,39 @@ def compute_parts(drive: Drive, wanted: tuple[str, ...], options: dict[str, Any]
 
     computed = {} if computed is None else computed
     plan = resolve(wanted)
-    for part in plan:
-        if part.name in computed:
-            continue
-        entry = computed[part.name] = _Computed()
-        ctx = PartContext(drive, part, computed, options)
-        with warnings.catch_warnings(record=True) as caught:
-            warnings.simplefilter("always")
-            entry.result = part.compute(ctx)
-        entry.caught = [str(w.message) for w in caught]
     results: dict[str, Any] = {}
     checks: list[Check] = []
     notes: list[str] = []
-    for part in sorted((p for p in plan if p.name in wanted), key=lambda p: (p.order, p.name)):
-        res = computed[part.name].result
-        results[part.name] = res
-        if shared_checks is not None and part.name in shared_checks:
-            checks.extend(shared_checks[part.name])
-        elif res is not None and part.checks is not None:
-            ctx = PartContext(drive, part, computed, options)
-            with warnings.catch_warnings(record=True) as caught:
-                warnings.simplefilter("always")
-                checks.extend(dataclasses.replace(c, part=part.name) for c in part.checks(ctx, res))
-            computed[part.name].caught.extend(str(w.message) for w in caught)
-        notes.extend(computed[part.name].notes)
+    # one recording context for the whole analysis (each part's warnings are the records it
+    # added); a part that changed the filters has them put back before the next part
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        filters = list(warnings.filters)
+
+        def recorded(start: int) -> list[str]:
+            if warnings.filters != filters:
+                warnings.resetwarnings()  # marks the filters changed for the warnings module's caches
+                warnings.filters[:] = filters  # type: ignore[index]  # a list at run time
+            return [str(w.message) for w in caught[start:]]
+
+        for part in plan:
+            if part.name in computed:
+                continue
+            entry = computed[part.name] = _Computed()
+            start = len(caught)
+            entry.result = part.compute(PartContext(drive, part, computed, options))
+            entry.caught = recorded(start)
+        for part in sorted((p for p in plan if p.name in wanted), key=lambda p: (p.order, p.name)):
+            res = computed[part.name].result
+            results[part.name] = res
+            if shared_checks is not None and part.name in shared_checks:
+                checks.extend(shared_checks[part.name])
+            elif res is not None and part.checks is not None:
+                start = len(caught)
+                checks.extend(_with_part(c, part.name) for c in part.checks(PartContext(drive, part, computed, options),
+                                                                            res))
+                computed[part.name].caught.extend(recorded(start))
+            notes.extend(computed[part.name].notes)
     for part in plan:
         notes.extend(computed[part.name].caught)
     return results, checks, notes

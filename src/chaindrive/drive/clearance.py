@@ -7,13 +7,14 @@ from __future__ import annotations
 import numpy as np
 
 from .. import layout as L
+from .._validation import as_float_array
 from ..errors import InputError
 from .model import Drive
 
 __all__ = ["clearance_error"]
 
 
-def clearance_error(drive: Drive, centres: np.ndarray) -> None:
+def clearance_error(drive: Drive, centres: np.ndarray) -> L.WrapLayout | None:
     """Refuse overlapping wheels (coincident centres included) and spans crossing a wheel,
     naming the wheels (:func:`chaindrive.layout.clearance_problems`).
 
@@ -22,6 +23,12 @@ def clearance_error(drive: Drive, centres: np.ndarray) -> None:
     drive : Drive
     centres : ndarray, shape (n, 2)
         Where the wheels are [m] (as drawn, or as the layout sets an adjustable wheel).
+
+    Returns
+    -------
+    WrapLayout or None
+        The chain path on the pitch circles the check drew (:func:`chaindrive.layout.wrap_layout`
+        of ``centres``, the drive's pitch radii and sides), for reuse; ``None`` where there is none.
 
     Raises
     ------
@@ -42,10 +49,16 @@ def clearance_error(drive: Drive, centres: np.ndarray) -> None:
     ...
     chaindrive.errors.InputError: wheels 'machine A' and 'machine B' overlap: centres 150.0 mm apart, pitch radii 153.8 + 121.5 = 275.3 mm; move 'machine B' so that the centres are at least 275.3 mm apart (the sum of the pitch radii)
     """
+    from ..layout.placement import _clearance
+
     radii = drive.pitch_radii()
-    problems = L.clearance_problems(centres, radii, [w.side for w in drive.wheels])
+    centres = as_float_array("centres", centres)
+    if centres.shape != (len(radii), 2) or not np.isfinite(centres).all():
+        raise InputError(f"centres must have shape ({len(radii)}, 2): a point [m] for each of the drive's "
+                         f"{len(radii)} wheels, finite, got shape {centres.shape}", field="centres")
+    problems, wrap = _clearance(centres, radii, [w.side for w in drive.wheels])
     if not problems:
-        return
+        return wrap
     kind, i, j, dist = problems[0]
     names = drive.wheel_names
     n = len(names)

@@ -31,6 +31,7 @@ from .. import layout as L
 from .. import loads as F
 from .._presenters import view
 from ..errors import InputError
+from ..layout.wheels import cached_pitch_radius
 from ..loads import mean_chain_speed, sides_per_turn
 from ._fields import _direction, _finite, _whole
 from .specs import (  # noqa: F401 - the optional tables, importable from here as before
@@ -137,7 +138,10 @@ class Wheel:
                                  field="teeth")
             return 0.5 * float(self.diameter)
         bar = chain.bar_diameter if chain.is_link_chain else None
-        return float(L.pitch_radius(chain.pitch, self.teeth, bar))
+        try:
+            return cached_pitch_radius(chain.pitch, self.teeth, bar)  # the same number, kept
+        except TypeError:  # an argument that cannot be hashed
+            return float(L.pitch_radius(chain.pitch, self.teeth, bar))
 
     def sides_per_turn(self, chain: Chain) -> int:
         """Chain links seated per turn (:func:`sides_per_turn`); 0 for a toothless idler."""

@@ -63,7 +63,7 @@ from __future__ import annotations
 import dataclasses
 from dataclasses import dataclass
 from functools import lru_cache
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING, Any, cast
 
 import numpy as np
 from numpy.typing import ArrayLike
@@ -265,10 +265,14 @@ def _exact(case: _Case, phi):
     guide = case.guide()
     seats = _checked_seats(case)
     r = taut_entry(poly, phi, case.w, guide, seats)
+    return dataclasses.replace(r, seats=_period_seats(case, seats), advance=poly.advance)
+
+
+def _period_seats(case: _Case, seats: np.ndarray) -> np.ndarray:
+    """The seating angles within one period, sorted (the exact model's ``seats``)."""
     T = case.period
     s = np.mod(seats[:-1], T)
-    return dataclasses.replace(r, seats=np.sort(np.where(np.isclose(s, T, rtol=0, atol=1e-12), 0.0, s)),
-                               advance=poly.advance)
+    return np.sort(np.where(np.abs(s - T) <= 1e-12, 0.0, s))  # np.isclose(s, T, rtol=0, atol=1e-12)
 
 
 @lru_cache(maxsize=64)
@@ -452,41 +456,60 @@ def _explain_infeasible(case: _Case, model: str, exc: Exception):
     raise InfeasibleError(msg) from None
 
 
-def _summary(case: _Case, model: str, seats) -> dict:
+def _summary(case: _Case, model: str, seats, first: np.ndarray | None = None) -> Any:
+    """The summary of the entry (seats: the model's seating angles in one period). With
+    ``first`` (the exact model): also the entry at those angles, from the same call of the
+    model (a pointwise model: the same numbers), as ``(summary, entry)``."""
     T = case.period
     base = np.linspace(0.0, T, 4001)
     eps = 1e-9 * T
     extra = np.concatenate([seats - eps, seats + eps, [T - eps, eps, T - 1e-4 * T, 1e-4 * T]])
     extra = extra[(extra > 0) & (extra < T)]
     grid = np.sort(np.concatenate([base[:-1], extra]))
-    r = _run(case, model, grid)
-    v, a = r.velocity, r.acceleration
+    s_in = np.asarray(seats, dtype=float)
+    s_in = s_in[(s_in > eps) & (s_in < T - eps)]
+    # one-sided limits of the acceleration at the period end (left) and start (right), and
+    # at the seatings (and resets) inside the period
+    ends = np.array([T - 1e-12 * T, 1e-12 * T])
+    head = None
+    if model == "exact":  # a pointwise model: every angle in one call (the same numbers)
+        n0 = 0 if first is None else first.size
+        m = n0 + grid.size
+        r = _run(case, model, np.concatenate([[] if first is None else first, grid, ends, s_in - 1e-12 * T,
+                                              s_in + 1e-12 * T]))
+        limits = r.acceleration[m:]
+        v, a, y = r.velocity[n0:m], r.acceleration[n0:m], None if r.y is None else r.y[n0:m]
+        if first is not None:
+            head = dataclasses.replace(r, **{f.name: getattr(r, f.name)[:n0] for f in dataclasses.fields(r)
+                                             if f.name not in ("seats", "advance")
+                                             and isinstance(getattr(r, f.name), np.ndarray)})
+    else:
+        r = _run(case, model, grid)
+        limits = np.concatenate([_run(case, model, ends[:1])["acceleration"],
+                                 _run(case, model, ends[1:])["acceleration"]]
+                                + ([_run(case, model, s_in - 1e-12 * T)["acceleration"],
+                                    _run(case, model, s_in + 1e-12 * T)["acceleration"]] if s_in.size else []))
+        v, a, y = r.velocity, r.acceleration, getattr(r, "y", None)
     advance = float(r.advance)
     v_mean = advance / (T / case.w)
-    # one-sided limits of the acceleration at the period end (left) and start (right)
-    a_left = float(_run(case, model, np.array([T - 1e-12 * T]))["acceleration"][0])
-    a_right = float(_run(case, model, np.array([1e-12 * T]))["acceleration"][0])
+    a_left, a_right = float(limits[0]), float(limits[1])
     amax = float(np.max(np.abs(a)))
     tol = 1e-6 * amax
     sign_change = bool((abs(a_left) > tol) and (abs(a_right) > tol) and (a_left * a_right < 0))
-    # jumps of the acceleration at the seatings (and resets) inside the period
-    s_in = np.asarray(seats, dtype=float)
-    s_in = s_in[(s_in > eps) & (s_in < T - eps)]
     jump_list = [a_right - a_left]
     sign_jumps = np.zeros(0, dtype=bool)
     if s_in.size:
-        lo = _run(case, model, s_in - 1e-12 * T)["acceleration"]
-        hi = _run(case, model, s_in + 1e-12 * T)["acceleration"]
+        lo, hi = limits[2:2 + s_in.size], limits[2 + s_in.size:]
         jump_list += list(hi - lo)
         sign_jumps = (np.abs(lo) > tol) & (np.abs(hi) > tol) & (lo * hi < 0)
     jumps = np.asarray(jump_list)
     if case.entry == "free":
-        y = r.y
         throw = float(case.R - case.R * np.cos(0.5 * max(case.d1, case.d2)))
+        y = cast(np.ndarray, y)  # free entry: every model gives the transverse motion
         throw = max(throw, float(np.max(y) - np.min(y)))
     else:
         throw = 0.0
-    return {
+    summary = {
         "v_mean": v_mean,
         "v_min": float(np.min(v)),
         "v_max": float(np.max(v)),
@@ -503,6 +526,7 @@ def _summary(case: _Case, model: str, seats) -> dict:
         "a_jump_max": float(np.max(np.abs(jumps))),
         "sign_changing_jumps": int(np.sum(sign_jumps) + sign_change),
     }
+    return summary if first is None else (summary, head)
 
 
 @finite_guard
@@ -610,15 +634,19 @@ def chain_entry(
         if not np.all(np.isfinite(phi_arr)):
             raise InputError("phi must be finite [rad] (-inf < phi < inf)")
     ev = np.atleast_1d(phi_arr).astype(float).copy()
-    at_end = np.isclose(np.mod(ev, T), 0.0, rtol=0, atol=1e-14) & (ev > 0)
+    at_end = (np.abs(np.mod(ev, T)) <= 1e-14) & (ev > 0)  # np.isclose(.., 0, rtol=0, atol=1e-14)
     ev[at_end] = np.nextafter(ev[at_end], -np.inf)  # left limit at the period end
     try:
-        r = _run(case, model, ev)
+        if model == "exact":  # the angles asked for and the summary's in one call
+            summary, r = _summary(case, model, _period_seats(case, _checked_seats(case)), ev.ravel())
+        else:
+            r = _run(case, model, ev)
     except InfeasibleError as exc:
         if case.entry == "free":
             raise
         _explain_infeasible(case, model, exc)
-    summary = _summary(case, model, np.asarray(r.seats, dtype=float))
+    if model != "exact":
+        summary = _summary(case, model, np.asarray(r.seats, dtype=float))
     shape = np.shape(phi_arr)
 
     def out(key):

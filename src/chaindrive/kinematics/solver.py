@@ -56,6 +56,7 @@ ogniwowego na koło gniazdowe"), Figs 1, 4, 5 and eqs (1)-(43).
 
 from __future__ import annotations
 
+import functools
 from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Any
@@ -138,9 +139,10 @@ class WheelPolygon:
         return float(sum(self.links))
 
     def _cum(self) -> tuple[np.ndarray, np.ndarray]:
-        ca = np.concatenate(([0.0], np.cumsum(self.angles)))
-        cl = np.concatenate(([0.0], np.cumsum(self.links)))
-        return ca, cl
+        try:
+            return _cumulative(self.angles, self.links)
+        except TypeError:  # links or angles given as a list: not kept
+            return _cumulative.__wrapped__(self.angles, self.links)
 
     def vertex(self, k: ArrayLike) -> tuple[np.ndarray, np.ndarray]:
         """Angle ``β_k`` at ``φ = 0`` [rad] and material coordinate ``c_k`` [m] of vertex ``k``."""
@@ -158,14 +160,24 @@ class WheelPolygon:
         return self.angles[k % len(self.angles)]
 
 
+@functools.lru_cache(maxsize=64)
+def _cumulative(angles: tuple[float, ...], links: tuple[float, ...]) -> tuple[np.ndarray, np.ndarray]:
+    # WheelPolygon._cum: the cumulative angles and links from vertex 0, once per polygon (read only)
+    ca = np.concatenate(([0.0], np.cumsum(angles)))
+    cl = np.concatenate(([0.0], np.cumsum(links)))
+    ca.flags.writeable = cl.flags.writeable = False
+    return ca, cl
+
+
 def _pos(radius: float, beta: ArrayLike) -> tuple[np.ndarray, np.ndarray]:
     return radius * np.sin(beta), radius * np.cos(beta)
 
 
-def _taut_gap(poly: WheelPolygon, k: int, phi: np.ndarray, guide: GuideEnd | None) -> np.ndarray:
-    """Cross product (N - S) x (G - S): > 0 while vertex k+1 is inside the span line."""
-    b0, _ = poly.vertex(k)
-    b1, _ = poly.vertex(k + 1)
+def _taut_gap(poly: WheelPolygon, k: int, phi: np.ndarray, guide: GuideEnd | None,
+              angles: tuple[Any, Any] | None = None) -> np.ndarray:
+    """Cross product (N - S) x (G - S): > 0 while vertex k+1 is inside the span line;
+    ``angles``: ``poly.vertex(k)[0], poly.vertex(k + 1)[0]`` when the caller has them."""
+    b0, b1 = (poly.vertex(k)[0], poly.vertex(k + 1)[0]) if angles is None else angles
     sx, sy = _pos(poly.radius, b0 - phi)
     nx, ny = _pos(poly.radius, b1 - phi)
     wx: FloatOrArray
@@ -248,8 +260,8 @@ def taut_seating_angles(poly: WheelPolygon, guide: GuideEnd | None = None) -> np
         # estimate: link (j-1, j) symmetric about the tangent point
         est = float(0.5 * (b_j + b_prev) - beta_t)
 
-        def gap(p: np.ndarray, j: int = j) -> np.ndarray:
-            return _taut_gap(poly, j - 1, p, guide)
+        def gap(p: np.ndarray, j: int = j, angles: tuple[Any, Any] = (b_prev, b_j)) -> np.ndarray:
+            return _taut_gap(poly, j - 1, p, guide, angles)
 
         out[j] = _find_crossing(gap, est, f"hinge {j}")
     out[n] = out[0] + poly.period

@@ -138,7 +138,8 @@ def _support(w: _Wheel, phase: np.ndarray, alpha: np.ndarray) -> tuple[np.ndarra
         return alpha - w.side * math.pi / 2, np.full(alpha.shape, -1)
     a = phase[..., None] + w.offsets  # (..., K)
     k = np.argmin(w.side * np.sin(a - alpha[..., None]), axis=-1)
-    return np.take_along_axis(a, k[..., None], axis=-1)[..., 0], k
+    # a at k (np.take_along_axis(a, k[..., None], axis=-1)[..., 0]: the same sums, gathered directly)
+    return np.broadcast_to(phase, k.shape) + w.offsets[k], k
 
 
 def _span(wa: _Wheel, wb: _Wheel, pa: np.ndarray, pb: np.ndarray, alpha0: float):

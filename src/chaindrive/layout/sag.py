@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 from numpy.typing import ArrayLike
 
@@ -183,9 +185,12 @@ def tension_for_sag(chord_length: ArrayLike, inclination: ArrayLike, sag: ArrayL
         return _bisect_scalar(lo[()], hi[()], span[()], rise[()], w[()], np.asarray(f)[()])
     for _ in range(100):
         mid = 0.5 * (lo + hi)
+        settled = bool(np.all((mid == lo) | (mid == hi)))
         too_slack = _catenary_sag(span, rise, w / np.exp(mid)) > f
         lo = np.where(too_slack, mid, lo)
         hi = np.where(too_slack, hi, mid)
+        if settled:  # see _bisect_scalar: no later halving changes a bit
+            break
     return np.exp(0.5 * (lo + hi))
 
 
@@ -196,13 +201,63 @@ def _bisect_scalar(lo, hi, span, rise, w, f):
     # _catenary_sag's steps, with those that do not depend on the tension done once
     half, m = span / 2, rise / span
     asinh_m = np.arcsinh(m)
+    # the root in log H from Python floats (a few Newton steps): a halving whose midpoint lies
+    # farther from it than `near` has the test's answer known (the sag falls with H, and the
+    # evaluation's rounding is ~1e-15 of it), so only the halvings near the root evaluate; the
+    # same halvings, the same answers, the same result, bit for bit
+    root = _log_tension_near(float(lo), float(hi), float(span), float(rise), float(w), float(f))
+    near = math.inf if root is None else 1e-11 * max(1.0, abs(root))
     for _ in range(100):
         mid = 0.5 * (lo + hi)
-        k = w / np.exp(mid)
-        x0 = half - np.arcsinh(k * rise / (2 * np.sinh(k * span / 2))) / k
-        xs = x0 + asinh_m / k
-        if m * xs - (np.cosh(k * (xs - x0)) - np.cosh(k * x0)) / k > f:
+        # lo and hi adjacent (or equal): the midpoint rounds to one of them, and from this
+        # halving on the state no longer changes (the same test on the same mid), so the
+        # remaining halvings of the 100 are skipped with the same result, bit for bit
+        settled = mid == lo or mid == hi
+        if root is not None and abs(mid - root) > near:
+            too_slack = mid < root
+        else:
+            k = w / np.exp(mid)
+            x0 = half - np.arcsinh(k * rise / (2 * np.sinh(k * span / 2))) / k
+            xs = x0 + asinh_m / k
+            too_slack = m * xs - (np.cosh(k * (xs - x0)) - np.cosh(k * x0)) / k > f
+        if too_slack:
             lo = mid
         else:
             hi = mid
+        if settled:
+            break
     return np.exp(0.5 * (lo + hi))
+
+
+def _sag_at(t: float, span: float, rise: float, w: float) -> float:
+    # _catenary_sag at H = exp(t) in Python floats
+    k = w / math.exp(t)
+    x0 = span / 2 - math.asinh(k * rise / (2 * math.sinh(k * span / 2))) / k
+    xs = x0 + math.asinh(rise / span) / k
+    return rise / span * xs - (math.cosh(k * (xs - x0)) - math.cosh(k * x0)) / k
+
+
+def _log_tension_near(lo: float, hi: float, span: float, rise: float, w: float, f: float) -> float | None:
+    """log H where the sag is ``f``, to ~1e-14, by Newton steps in Python floats from the middle
+    of [lo, hi]; checked to hold the root within 2e-12 (sag above ``f`` just below, not above
+    just above); ``None`` when not (the bisection then evaluates every halving)."""
+    try:
+        t = 0.5 * (lo + hi)
+        for _ in range(40):
+            g = _sag_at(t, span, rise, w) - f
+            h = 1e-6 * max(1.0, abs(t))
+            slope = (_sag_at(t + h, span, rise, w) - _sag_at(t - h, span, rise, w)) / (2 * h)
+            step = g / slope
+            t -= step
+            if not lo < t < hi:
+                return None
+            if abs(step) <= 1e-14 * max(1.0, abs(t)):
+                break
+        else:
+            return None
+        d = 2e-12 * max(1.0, abs(t))
+        if _sag_at(t - d, span, rise, w) > f and not _sag_at(t + d, span, rise, w) > f:
+            return t
+    except (ValueError, OverflowError, ZeroDivisionError):
+        pass
+    return None

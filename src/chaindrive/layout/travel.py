@@ -10,7 +10,7 @@ from .._validation import as_float_array, check_nonnegative, check_positive
 from ..errors import InfeasibleError, InputError
 from .two_wheels import _belt_length
 from .wheels import pitch_radius
-from .wrap import _loop_lengths, wrap_layout
+from .wrap import _loop_length, _loop_lengths, _span_scalar, wrap_layout
 
 
 @finite_guard
@@ -159,8 +159,20 @@ def tensioner_travel(
         cc[..., k, :] = c[k] + np.asarray(s)[..., None] * u
         return cc
 
-    def length(s):
-        return float(_loop_lengths(positions(np.array([s])), r, sd)[0])
+    if c.shape[0] <= 7:  # Python floats for a few wheels (the same numbers, _loop_length)
+        xs, ys, rl, sl = c[:, 0].tolist(), c[:, 1].tolist(), r.tolist(), sd.tolist()
+        ck, uk = c[k].tolist(), u.tolist()
+        n = len(xs)
+        rho = [a * b for a, b in zip(sl, rl, strict=True)]
+        # the spans that do not touch the moving wheel, once
+        fixed = [None if i in ((k - 1) % n, k) else _span_scalar(xs, ys, rho, i) for i in range(n)]
+
+        def length(s):
+            xs[k], ys[k] = ck[0] + s * uk[0], ck[1] + s * uk[1]
+            return _loop_length(xs, ys, rl, sl, fixed)
+    else:
+        def length(s):
+            return float(_loop_lengths(positions(np.array([s])), r, sd)[0])
 
     out = np.empty(e.size)
     smax = float(np.max(np.hypot(*(c - c[k]).T))) + float(np.max(lay0.radii)) * 4

@@ -16,7 +16,8 @@ from .._results import Result, quantity
 from .._typing import FloatOrArray
 from .._validation import as_float_array, check_positive, check_teeth
 from ..errors import ConvergenceError, InfeasibleError, InputError
-from .wheels import _radius_and_offsets, pitch_radius
+from ._bridges import bridge_perimeters, edge_sums, pair_root
+from .wheels import _radius_and_offsets, cached_pitch_radius, pitch_radius
 
 
 @finite_guard
@@ -339,10 +340,44 @@ class PolygonLength(Result):
 
 def _polygon_links(p, z1, z2, a, d, n):
     # period of each polygon: 2π/z (a bi-regular 2z-gon repeats every 2π/z too)
-    ph1 = np.arange(n) * (2 * np.pi / z1) / n
-    ph2 = np.arange(n) * (2 * np.pi / z2) / n
+    ph1, ph2 = _phase_grid(z1, n), _phase_grid(z2, n)
+    return ph1, ph2, _perimeters(p, z1, z2, a, d, ph1, ph2) / p
+
+
+def _phase_grid(z, n):
+    # the sampled phases of a wheel: n over one tooth period 2π/z (a bi-regular 2z-gon repeats
+    # every 2π/z too)
+    return np.arange(n) * (2 * np.pi / z) / n
+
+
+def _perimeters(p, z1, z2, a, d, ph1, ph2, bridges=None):
+    # hull perimeters of every phase pair [m]: by the two bridges where the pitch circles are
+    # apart (chaindrive.layout._bridges), else (or where a bridge did not settle) by the
+    # integral; `bridges`: a dict that receives the bridges' vertices (k1, k2) when found
     v1, v2 = _phase_vertices(p, z1, ph1, d), _phase_vertices(p, z2, ph2, d)
-    return ph1, ph2, _hull_perimeters(v1, _shifted(v2, a), _first_terms(p, z1, ph1, d)) / p
+    r1, r2 = _radius(p, z1, d), _radius(p, z2, d)
+    v2a = _shifted(v2, a)
+    if a > (r1 + r2) * (1.0 + 1e-9):
+        out, k1, k2 = bridge_perimeters(v1, v2a, _edge_sums(p, z1, ph1, d), _edge_sums(p, z2, ph2, d),
+                                        r1, r2, a, vertices=True, regular=None if d else (ph1, z1, ph2, z2))
+        if not np.isnan(out).any():
+            if bridges is not None:
+                bridges["k"] = (k1, k2)
+            return out
+    return _hull_perimeters(v1, v2a, _first_terms(p, z1, ph1, d))
+
+
+def _edge_sums(p, z, phases, d):
+    # edge_sums(_phase_vertices(p, z, phases, d)), cached with the vertices
+    key = ("sums", *_vertex_key(p, z, phases, d))
+    found = _VERTEX_CACHE.get(key)
+    if found is None:
+        found = edge_sums(_phase_vertices(p, z, phases, d))
+        found.flags.writeable = False
+        if len(_VERTEX_CACHE) > 256:
+            _VERTEX_CACHE.clear()
+        _VERTEX_CACHE[key] = found
+    return found
 
 
 def _first_terms(p, z, phases, d):
@@ -468,10 +503,9 @@ def chain_length_polygon(pitch: float, teeth_1: int, teeth_2: int, centre_distan
     return replace(found, phase_1=found.phase_1.copy(), phase_2=found.phase_2.copy(), links=found.links.copy())
 
 
-@functools.lru_cache(maxsize=256)
 def _radius(p: float, z: int, bar_diameter: float | None) -> float:
     # float(pitch_radius(p, z, bar_diameter)) on checked scalars, kept
-    return float(pitch_radius(p, z, bar_diameter))
+    return cached_pitch_radius(p, z, bar_diameter)
 
 
 @functools.lru_cache(maxsize=256)
@@ -479,7 +513,9 @@ def _chain_length_polygon(p: float, z1: int, z2: int, a: float, bar_diameter: fl
                           phases: int) -> PolygonLength:
     # chain_length_polygon on checked scalars; cached because it depends on them only and
     # an analysis asks for the same pair of wheels again (the results are plain numbers)
-    ph1, ph2, X = _polygon_links(p, z1, z2, a, bar_diameter, phases)
+    # the grid kept for the root search too (_grid_at: the same numbers as _polygon_links): the
+    # centre distance for the links asked next starts from it
+    ph1, ph2, X = _grid_at(p, z1, z2, a, bar_diameter, phases)
     r1, r2 = _radius(p, z1, bar_diameter), _radius(p, z2, bar_diameter)
     # chain_length_circles(p, z1, z2, a, bar_diameter) on the checked inputs (a > |R2 - R1|)
     circles = float(_belt_length(a, r1, r2) / p) if a > abs(r2 - r1) else float("nan")
@@ -547,9 +583,7 @@ def _newton_fixed_slope(fun, target, a0, r1, r2, p, lo, hi):
 
 
 def _pair_links(p, z1, z2, a, d, f1, f2):
-    v1 = _phase_vertices(p, z1, (f1,), d)
-    v2 = _shifted(_phase_vertices(p, z2, (f2,), d), a)
-    return float(_hull_perimeters(v1, v2, _first_terms(p, z1, (f1,), d))[0, 0]) / p
+    return float(_perimeters(p, z1, z2, a, d, (f1,), (f2,))[0, 0]) / p
 
 
 #: The phase grids :func:`_extreme_phase_root` evaluated last (the loose root starts where the
@@ -558,7 +592,8 @@ _GRIDS = threading.local()
 
 
 def _grid_at(p, z1, z2, a, d, n):
-    # _polygon_links(p, z1, z2, a, d, n), the last few kept (read only by the root search)
+    # _polygon_links(p, z1, z2, a, d, n), the last few kept (read only by the root search),
+    # with the bridges' vertices of every pair where the bridges gave it (_grid_bridges)
     grids = getattr(_GRIDS, "grids", None)
     if grids is None:
         grids = _GRIDS.grids = {}
@@ -567,27 +602,72 @@ def _grid_at(p, z1, z2, a, d, n):
     if found is None:
         if len(grids) >= 4:
             grids.clear()
-        found = grids[key] = _polygon_links(p, z1, z2, a, d, n)
+        ph1, ph2 = _phase_grid(z1, n), _phase_grid(z2, n)
+        bridges: dict = {}
+        found = grids[key] = (ph1, ph2, _perimeters(p, z1, z2, a, d, ph1, ph2, bridges) / p)
+        grids[("bridges", *key)] = bridges.get("k")
     return found
 
 
-def _extreme_phase_root(pick, p, z1, z2, d, n, target, a0, r1, r2, lo, hi):
+def _grid_bridges(p, z1, z2, a, d, n, i, j):
+    # the bridges' vertices ((upper, lower) on wheel 1, on wheel 2) of pair (i, j) of the grid
+    # _grid_at evaluated at a, or None
+    found = _GRIDS.grids.get(("bridges", p, z1, z2, a, d, n))
+    if found is None:
+        return None
+    k1, k2 = found
+    return (int(k1[0, i, j]), int(k1[1, i, j])), (int(k2[0, i, j]), int(k2[1, i, j]))
+
+
+def _pair_root(p, z1, z2, d, n, i, j, ks, target, a):
+    # the centre distance where pair (i, j) of the phase grid is `target` links long, its
+    # bridges' vertices `ks` held (chaindrive.layout._bridges.pair_root)
+    ph1, ph2 = _phase_grid(z1, n), _phase_grid(z2, n)
+    return pair_root(_edge_sums(p, z1, ph1, d)[i], _edge_sums(p, z2, ph2, d)[j], _phase_vertices(p, z1, ph1, d)[i],
+                     _phase_vertices(p, z2, ph2, d)[j], ks[0], ks[1], target * p, a)
+
+
+def _kept_grid_near(p, z1, z2, d, n, lo, hi):
+    """The centre distance of the last phase grid :func:`_grid_at` kept for these wheels with its
+    bridges (chain_length_polygon's, at the drive's centre distance), or None."""
+    grids = getattr(_GRIDS, "grids", None) or {}
+    for key in reversed(list(grids)):
+        if key[0] != "bridges" and key[:3] == (p, z1, z2) and key[4:] == (d, n) and lo < key[3] < hi \
+                and grids.get(("bridges", *key)) is not None:
+            return key[3]
+    return None
+
+
+def _extreme_phase_root(pick, p, z1, z2, d, n, target, a0, r1, r2, lo, hi, start=None):
     """Root of max (``pick=np.argmax``) or min over the phase grid of X(a) = target.
+
+    ``start``: a centre distance whose grid is kept already, to choose the first pair from
+    instead of ``a0`` (the root is the same: it is checked on the grid there).
 
     Newton steps run on the phase pair that governs at the current estimate (one hull
     per step instead of n² of them); the whole grid is then evaluated at the root, and if
     another pair governs there the search goes on from it. The result is the root of the
     grid's max (min) itself, as when every step evaluated the whole grid.
     """
-    a = a0
+    a = a0 if start is None else start
+    held = None  # (pair, bridges' vertices) of the last root with the vertices held
     for _ in range(20):
         ph1, ph2, grid = _grid_at(p, z1, z2, a, d, n)
         i, j = np.unravel_index(pick(grid), grid.shape)
-        if abs(grid[i, j] - target) <= 1e-9 and a != a0:
+        ks = _grid_bridges(p, z1, z2, a, d, n, i, j)
+        if held is not None and held == ((i, j), ks):
+            return a  # the pair governs at its root, where its bridges are those held
+        if abs(grid[i, j] - target) <= 1e-9 and a != a0 and a != start and held is None:
             return a
         f1, f2 = ph1[i], ph2[j]
-        a_new = _newton_fixed_slope(lambda x, f1=f1, f2=f2: _pair_links(p, z1, z2, x, d, f1, f2),
-                                    target, a, r1, r2, p, lo, hi)
+        if ks is not None and held is None:
+            # Newton with the exact slope on the pair, its bridges' vertices held; checked
+            # on the grid at the root (the next pass)
+            a_new, held = _pair_root(p, z1, z2, d, n, i, j, ks, target, a), ((i, j), ks)
+        else:
+            held = None
+            a_new = _newton_fixed_slope(lambda x, f1=f1, f2=f2: _pair_links(p, z1, z2, x, d, f1, f2),
+                                        target, a, r1, r2, p, lo, hi)
         if a_new == a:
             return a
         a = a_new
@@ -668,7 +748,8 @@ def _centre_distance_polygon(p: float, z1: int, z2: int, N: int, bar_diameter: f
         return float(_belt_length(a, r1, r2) / p)
 
     circ = _solve_increasing(xcirc, N, lo, hi, "centre distance")
-    taut = _extreme_phase_root(np.argmax, p, z1, z2, bar_diameter, n, N, circ, r1, r2, lo, hi)
+    taut = _extreme_phase_root(np.argmax, p, z1, z2, bar_diameter, n, N, circ, r1, r2, lo, hi,
+                               _kept_grid_near(p, z1, z2, bar_diameter, n, lo, hi))
     loose = _extreme_phase_root(np.argmin, p, z1, z2, bar_diameter, n, N, taut, r1, r2, lo, hi)
     approx = None
     if not bar_diameter:

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import functools
+
 import numpy as np
 from numpy.typing import ArrayLike
 
@@ -128,3 +130,10 @@ def _radius_and_offsets(pitch, teeth, bar_diameter):
         d1, d2 = (float(x) for x in link_chain_central_angles(t, d, z))
         steps = np.tile([d1, d2], z)
     return R, np.concatenate([[0.0], np.cumsum(steps)[:-1]])
+
+
+@functools.lru_cache(maxsize=256)
+def cached_pitch_radius(pitch: float, teeth: int, bar_diameter: float | None = None) -> float:
+    """``float(pitch_radius(pitch, teeth, bar_diameter))`` for scalars, kept (an analysis asks
+    for the same wheels' radii many times; errors are raised each time, not kept) [m]."""
+    return float(pitch_radius(pitch, teeth, bar_diameter))

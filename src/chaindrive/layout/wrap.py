@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 import numpy as np
@@ -155,6 +156,45 @@ def wrap_layout(centres: ArrayLike, radii: ArrayLike, sides: ArrayLike | None = 
                       length=float(ell.sum() + arc.sum()))
 
 
+def span_lengths(centres: np.ndarray, radii: np.ndarray, sides: np.ndarray) -> np.ndarray | None:
+    """:attr:`WrapLayout.span_length` for many sets of radii at once: ``radii`` (m, n) on
+    checked ``centres`` (n, 2) and ``sides`` (n,) -> (m, n) [m], by the operations of
+    :func:`wrap_layout` (the same numbers); ``None`` when a row has no layout (the caller
+    asks :func:`wrap_layout` for the error).
+
+    Raises
+    ------
+    InputError
+        ``centres`` not (n, 2) with n >= 2, ``radii`` not positive of shape (m, n), ``sides``
+        not +1 or -1 for each wheel, or a value not finite.
+    """
+    centres = as_float_array("centres", centres)
+    if centres.ndim != 2 or centres.shape[1] != 2 or centres.shape[0] < 2 or not np.isfinite(centres).all():
+        raise InputError(f"centres must be finite [m] with shape (n, 2), n >= 2, got shape {centres.shape}")
+    n = centres.shape[0]
+    radii = check_positive("radii", radii, "m")
+    if radii.ndim != 2 or radii.shape[1] != n:
+        raise InputError(f"radii must have shape (m, {n}): a row of radii for each of the {n} wheels, "
+                         f"got {radii.shape}")
+    sides = as_float_array("sides", sides)
+    if sides.shape != (n,) or not ((sides == 1.0) | (sides == -1.0)).all():
+        raise InputError(f"sides must be +1 or -1 for each of the {n} wheels, got shape {sides.shape}")
+    rho = sides * radii
+    c_next = np.concatenate((centres[1:], centres[:1]))
+    rho_next = np.concatenate((rho[:, 1:], rho[:, :1]), axis=1)
+    d = c_next - centres
+    D = np.hypot(d[:, 0], d[:, 1])
+    drho = rho_next - rho
+    if np.any(D <= np.abs(drho)):
+        return None
+    alpha = np.arctan2(d[:, 1], d[:, 0]) - np.arcsin(drho / D)
+    turn = np.mod(sides * (alpha - np.concatenate((alpha[:, -1:], alpha[:, :-1]), axis=1)), 2 * np.pi)
+    wrap = np.where(np.abs(turn) <= 1e-12, 0.0, turn)
+    if not np.all(np.abs(np.sum(sides * wrap, axis=1) - 2 * np.pi) <= 1e-6 + 1e-5 * 2 * np.pi):
+        return None
+    return np.sqrt(D**2 - drho**2)
+
+
 def _loop_lengths(centres: np.ndarray, radii: np.ndarray, sides: np.ndarray) -> np.ndarray:
     """:attr:`WrapLayout.length` for many layouts at once, ``-inf`` where there is none.
 
@@ -175,6 +215,44 @@ def _loop_lengths(centres: np.ndarray, radii: np.ndarray, sides: np.ndarray) -> 
     ok = np.all(D > np.abs(drho), axis=-1) & (np.abs(total_turn - 2 * np.pi) <= 1e-6 + 1e-5 * 2 * np.pi)
     length = np.sum(ell, axis=-1) + np.sum(radii * wrap, axis=-1)
     return np.where(ok, length, -np.inf)
+
+
+def _span_scalar(xs: list[float], ys: list[float], rho: list[float], i: int) -> tuple[float, float] | None:
+    """Direction and length of span ``i`` as :func:`_loop_lengths` has them, or ``None`` where
+    the span has no common tangent."""
+    j = i + 1 if i + 1 < len(xs) else 0
+    dx, dy = xs[j] - xs[i], ys[j] - ys[i]
+    D = float(np.hypot(dx, dy))
+    drho = rho[j] - rho[i]
+    if not D > abs(drho):
+        return None
+    return float(np.arctan2(dy, dx)) - float(np.arcsin(drho / D)), math.sqrt(D * D - drho * drho)
+
+
+def _loop_length(xs: list[float], ys: list[float], radii: list[float], sides: list[float],
+                 fixed: list[tuple[float, float] | None] | None = None) -> float:
+    """:func:`_loop_lengths` of one layout of up to 7 wheels in Python floats (the same
+    numbers: the same operations, numpy's own arc tangent and arc sine, the sums in order),
+    for the scalar root searches; ``fixed``: the spans (:func:`_span_scalar`) that do not change
+    between the calls, ``None`` for those computed each time."""
+    n = len(xs)
+    rho = [s * r for s, r in zip(sides, radii, strict=True)]
+    alpha, ell = [], []
+    for i in range(n):
+        span = fixed[i] if fixed is not None and fixed[i] is not None else _span_scalar(xs, ys, rho, i)
+        if span is None:
+            return -math.inf
+        alpha.append(span[0])
+        ell.append(span[1])
+    total = arcs = length = 0.0
+    for i in range(n):
+        turn = (sides[i] * (alpha[i] - alpha[i - 1])) % (2 * math.pi)
+        wrap = 0.0 if abs(turn) <= 1e-12 else turn
+        total += sides[i] * wrap
+        arcs += radii[i] * wrap
+    for v in ell:
+        length += v
+    return length + arcs if abs(total - 2 * np.pi) <= 1e-6 + 1e-5 * 2 * np.pi else -math.inf
 
 
 @finite_guard

@@ -16,12 +16,13 @@ One module per topic, each a set of pure vectorised functions in SI units:
 The drive-level decisions are the analysis part :mod:`chaindrive.analysis.life`.
 """
 
-from . import efficiency, elongation, fatigue, jump_over, wrap_statics
+from . import efficiency, elongation, fatigue, jump_over, jump_table, wrap_statics
 from .efficiency import *  # noqa: F403
 from .elongation import *  # noqa: F403
 from .fatigue import *  # noqa: F403
 from .jump_over import *  # noqa: F403
+from .jump_table import *  # noqa: F403
 from .wrap_statics import *  # noqa: F403
 
-__all__ = [*elongation.__all__, *jump_over.__all__, *fatigue.__all__, *efficiency.__all__,
+__all__ = [*elongation.__all__, *jump_over.__all__, *jump_table.__all__, *fatigue.__all__, *efficiency.__all__,
            *wrap_statics.__all__]

@@ -1,22 +1,31 @@
 r"""Power lost in a chain drive by articulation friction, and its efficiency.
 
-Each joint articulates where it enters and where it leaves a wheel: by ``2π/z`` under the
-tension of the span on that side. The pin turns in its bushing against Coulomb friction,
-so one articulation dissipates ``μ T r θ`` (``r`` the pin radius); ``v/p`` joints pass a
-wheel's entry (and its exit) per second. Summed over the wheels:
+Each joint articulates where it enters and where it leaves a wheel: by ``2π/z`` (at most the
+wheel's wrap angle) under the tension of the span on that side. The pin turns in its bushing
+against Coulomb friction, so one articulation dissipates ``μ T r θ`` (``r`` the pin radius);
+``v/p`` joints pass a wheel's entry (and its exit) per second. Summed over the wheels:
 
-.. math:: P_{loss} = μ\,r\,\frac{v}{p}\sum_w \frac{2π}{z_w}\,(T_{in,w} + T_{out,w})
+.. math:: P_{loss} = μ\,r\,\frac{v}{p}\sum_w θ_w\,(T_{in,w} + T_{out,w})
 
-and the efficiency ``η = 1 − P_loss / P``. With a slack side near zero and two wheels this
-is Spicer et al.'s result that efficiency does not depend on the speed and rises with
-larger sprockets: ``1 − η = μ r (2π/p)(1/z_1 + 1/z_2)`` (the tight tension cancels
-against ``P = T v``).
+and the efficiency ``η = 1 − P_loss / P``. On a two-wheel drive the tight span carries
+``T_1 = F + T_2`` (``F = P/v`` the effective pull): two articulations under ``T_1`` (leaving
+the driver, entering the driven wheel), two under the slack tension ``T_2``, and two under
+``T_2`` on every idler of the slack side (a derailleur's two jockey wheels, a tensioner):
+
+.. math:: 1 − η = μ\,r\,\frac{2π}{p}\Bigl[\Bigl(\frac{1}{z_1} + \frac{1}{z_2}\Bigr)
+          \Bigl(1 + \frac{2T_2}{F}\Bigr) + \frac{2T_2}{F}\sum_i \frac{1}{z_i}\Bigr]
+
+(:func:`two_wheel_power_loss`). With the slack side unloaded it is Spicer et al.'s result that
+efficiency depends neither on the speed nor on the load and rises with larger sprockets; a
+fixed slack tension ``T_2`` adds a loss that does not fall with the load, so the efficiency
+falls at low load as ``1/F`` — the form in which Spicer et al. fit their measurements.
 
 ``μ`` here is an effective coefficient: it lumps the pin–bushing sliding with the
 bushing–roller sliding at the tooth (Lodge & Burgess's model carries both). Its default
 is calibrated on a published chain-efficiency measurement (Friction Facts, 53T/11T,
-95 rpm, 250 W, loss 6.67 W) and checked against a second one (Spicer et al., the
-98.6 % maximum); ``tests/test_life.py`` keeps both with their provenance.
+95 rpm, 250 W, loss 6.67 W, the rig's slack side taken as unloaded);
+``tests/test_published_data.py`` checks it against the other published measurements found
+(docs/life.md, "Efficiency and heat", lists where it holds).
 """
 
 from __future__ import annotations
@@ -30,12 +39,62 @@ from .._typing import FloatOrArray
 from .._validation import check_nonnegative, check_positive
 from ..errors import InputError
 
-__all__ = ["ARTICULATION_FRICTION", "articulation_power_loss", "transmission_efficiency"]
+__all__ = ["ARTICULATION_FRICTION", "articulation_angle", "articulation_power_loss", "transmission_efficiency",
+           "two_wheel_power_loss"]
 
 #: Effective articulation friction coefficient (pin radius basis), calibrated on the
 #: Friction Facts measurement of a 10-speed bicycle chain (53T/11T, 95 rpm, 250 W,
 #: 6.67 W lost after 8 h running-in; pin diameter 3.6 mm): ``μ = 0.273``.
 ARTICULATION_FRICTION = 0.273
+
+
+def articulation_angle(pitch: ArrayLike, pitch_radius: ArrayLike,
+                       wrap_angle: ArrayLike | None = None) -> FloatOrArray:
+    r"""Angle by which a joint turns where it enters (or leaves) a wheel.
+
+    .. math:: θ = \min\bigl(2 \arcsin\frac{p}{2R},\ φ\bigr)
+
+    ``2 asin(p/2R)`` is the angle between two links seated on the wheel (``2π/z`` on a
+    sprocket of ``z`` teeth, whose pitch radius is ``p / (2 sin(π/z))``); a wheel the chain
+    wraps by less than that (a road wheel under a track, a lightly deflected idler) turns
+    the chain, and so each joint, by its wrap angle ``φ`` only.
+
+    Parameters
+    ----------
+    pitch : float or array_like
+        ``p`` [m].
+    pitch_radius : float or array_like
+        ``R >= p/2`` [m] (the radius of the circle through the seated joints).
+    wrap_angle : float or array_like, optional
+        ``φ`` [rad]; without it the wrap is taken as at least one pitch.
+
+    Returns
+    -------
+    ndarray
+        [rad].
+
+    References
+    ----------
+    ISO 606:2015, sprocket dimensions: the pitch circle diameter ``d = p / sin(180°/z)``, on
+    which the seated joints form a polygon of ``z`` sides (the angle ``2π/z`` between two
+    seated links); the wrap limit is the geometry of a chain turned by ``φ`` in all.
+
+    Examples
+    --------
+    >>> round(float(articulation_angle(0.0127, 0.0127 / (2 * math.sin(math.pi / 11)))), 6) == round(2 * math.pi / 11, 6)
+    True
+    >>> float(articulation_angle(0.0127, 0.05, 0.1))
+    0.1
+    """
+    p = check_positive("pitch", pitch, "m")
+    r = check_positive("pitch_radius", pitch_radius, "m")
+    if np.any(r < 0.5 * p * (1 - 1e-12)):
+        raise InputError(f"pitch_radius must be at least half the pitch (two links span a diameter at most), "
+                         f"got {pitch_radius!r} m for a pitch of {pitch!r} m", field="pitch_radius")
+    angle = 2.0 * np.arcsin(np.minimum(1.0, p / (2.0 * r)))
+    if wrap_angle is None:
+        return angle
+    return np.minimum(angle, check_nonnegative("wrap_angle", wrap_angle, "rad"))
 
 
 def articulation_power_loss(chain_speed: ArrayLike, pitch: ArrayLike, pin_diameter: ArrayLike,
@@ -95,6 +154,75 @@ def articulation_power_loss(chain_speed: ArrayLike, pitch: ArrayLike, pin_diamet
     mu = float(check_nonnegative("friction", friction))
     per_wheel = 2.0 * math.pi / z * (t_in + t_out)
     return mu * 0.5 * (d / p) * v * np.sum(per_wheel, axis=-1)
+
+
+def two_wheel_power_loss(power: ArrayLike, chain_speed: ArrayLike, pitch: float, pin_diameter: float,
+                         teeth: ArrayLike, *, slack_tension: ArrayLike = 0.0, idler_teeth: ArrayLike = (),
+                         friction: float = ARTICULATION_FRICTION) -> FloatOrArray:
+    r"""Articulation loss of a two-wheel drive whose slack side carries ``T_2`` over its idlers.
+
+    The tight span carries ``T_1 = P/v + T_2``; it leaves the driver and enters the driven
+    wheel; the slack span (``T_2``) leaves the driven wheel, passes every idler (in and out)
+    and enters the driver. Each articulation as in :func:`articulation_power_loss`:
+
+    .. math:: P_{loss} = μ\,r\,\frac{2π v}{p}\Bigl[(T_1 + T_2)\Bigl(\frac{1}{z_1}
+              + \frac{1}{z_2}\Bigr) + 2 T_2 \sum_i \frac{1}{z_i}\Bigr]
+
+    (the idlers wrapped by at least one pitch). ``T_2`` is what holds the slack side: a
+    derailleur's cage spring, a tensioner, the sag; with ``T_2 = 0`` the efficiency is
+    ``1 − μ r (2π/p)(1/z_1 + 1/z_2)`` at any load and speed.
+
+    Parameters
+    ----------
+    power : float or array_like
+        ``P > 0`` put in at the driver [W].
+    chain_speed : float or array_like
+        ``v > 0`` [m/s].
+    pitch, pin_diameter : float
+        ``p``, ``d_p`` [m].
+    teeth : array_like
+        ``(z_1, z_2)``: driver, driven wheel.
+    slack_tension : float or array_like
+        ``T_2 >= 0`` [N].
+    idler_teeth : array_like
+        Teeth of the idlers on the slack side (a rear derailleur: its two jockey wheels).
+    friction : float
+        ``μ`` (default :data:`ARTICULATION_FRICTION`).
+
+    Returns
+    -------
+    ndarray
+        [W].
+
+    References
+    ----------
+    Spicer et al., J. Mech. Des. 123 (2001) 598–605 (articulation loss ``μ T r θ`` at the
+    sprockets); Lodge & Burgess, Proc. IMechE C 216 (2002) 385–394 (both spans' tensions);
+    D. Connelly, "drivetrain losses: simple model" and "... Spicer's data",
+    djconnel.blogspot.com, 12–13 January 2010 (the same sum with a derailleur: the lower
+    span at the spring's tension over the two pulleys).
+
+    Examples
+    --------
+    >>> round(float(two_wheel_power_loss(250.0, 1.0664, 0.0127, 0.0036, [53, 11])), 2)
+    6.67
+    >>> round(float(two_wheel_power_loss(250.0, 1.0664, 0.0127, 0.0036, [53, 11], slack_tension=11.6,
+    ...                                  idler_teeth=[11, 11])), 2)
+    8.43
+    """
+    pw = check_positive("power", power, "W")
+    v = check_positive("chain_speed", chain_speed, "m/s")
+    t2 = check_nonnegative("slack_tension", slack_tension, "N")
+    z = np.asarray(teeth, dtype=float)
+    if z.shape != (2,):
+        raise InputError(f"teeth must be the two wheels' teeth (driver, driven), got {teeth!r}", field="teeth")
+    idl = np.atleast_1d(np.asarray(idler_teeth, dtype=float))
+    t1 = pw / v + t2
+    t_in = [np.broadcast_to(t2, t1.shape), t1] + [np.broadcast_to(t2, t1.shape)] * idl.size
+    t_out = [t1, np.broadcast_to(t2, t1.shape)] + [np.broadcast_to(t2, t1.shape)] * idl.size
+    wheels = np.concatenate([z, idl])
+    return articulation_power_loss(v, pitch, pin_diameter, wheels, np.stack(t_in, axis=-1),
+                                   np.stack(t_out, axis=-1), friction=friction)
 
 
 def transmission_efficiency(power: ArrayLike, power_loss: ArrayLike) -> FloatOrArray:

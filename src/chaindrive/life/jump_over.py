@@ -36,11 +36,11 @@ and quasi-static (no impact, no centrifugal lift of the rollers). It assumes eve
 roller rides up alike; a worn chain seats unevenly (the tight-end rollers highest, one at
 the bottom of its gap, the rest on the back flank), and the holding is very sensitive to
 that seating. With the span tensions held the compliant load distribution
-(:mod:`chaindrive.life.wrap_statics`) holds 1.5–1.7 times it (9 and 17 teeth, docs/life.md):
-``β^-n`` is on the safe side there; with the torque and the sum of the
-span tensions held (a wheel on a slide) the chain jumps at a far lower mean ratio, which
-:func:`chaindrive.life.wrap_jump_ratio` gives (docs/life.md, "Jump-over"). The holding limit
-is the robust criterion.
+(:mod:`chaindrive.life.wrap_statics`) holds 1.5–1.7 times it (9 and 17 teeth, docs/life.md);
+with the torque and the sum of the span tensions held (a wheel on a slide) the chain jumps at
+a far lower mean ratio, which :func:`chaindrive.life.wrap_jump_ratio` gives (docs/life.md,
+"Jump-over"). The analysis' check takes the compliant onset from its table
+(:func:`chaindrive.life.jump_onset`) as a correction to ``β^-n``.
 """
 
 from __future__ import annotations
@@ -56,7 +56,6 @@ from .._results import Result, quantity
 from .._typing import FloatOrArray
 from .._validation import check_nonnegative, check_positive
 from ..errors import InputError
-from ..geometry.outline import circle_intersections
 from ..geometry.tooth_form import iso_tooth_form
 
 __all__ = ["WornSeat", "worn_seat", "holding_limit", "tension_ratio", "jump_over_tension"]
@@ -95,24 +94,38 @@ def _form_cached(pitch, teeth, roller_diameter, form):
     return f, r, c, cf, rho, x_corner
 
 
-def _centre_at(radius, rp, c, half_seat, cf, rho):
-    """Roller centre on the seat or flank path at distance ``radius`` from the wheel centre."""
-    o = np.array([-rp, 0.0])
-    # seat path: circle of radius c about the origin
-    a = (radius**2 - rp**2 - c**2) / (2.0 * rp)
-    if abs(a) <= c:
-        b = math.sqrt(max(c * c - a * a, 0.0))
-        if -a >= c * math.cos(half_seat):  # contact on the seating arc
-            x = np.array([a, b])
-            return x, -x / max(c, 1e-300), False
-    # flank path: circle of radius rho about cf
-    cands = circle_intersections(o, radius, cf, rho)
-    if cands is None:
-        return None
-    # the one on the gap side of the flank centre (b below the flank centre's b)
-    x = min(cands, key=lambda q: q[1])
-    n = (x - cf) / rho
-    return x, n, True
+def _centres_at(elongations, rp, c, half_seat, cf, rho):
+    """Roller centre on the seat or flank path at distance ``R_e = rp (1 + e)`` from the wheel centre,
+    for each elongation ``e`` of a list, in Python floats (short loops of them beat numpy's per-call
+    cost): a list of ``(x_a, x_b, n_a, n_b, on_flank)``, the centre and the unit contact normal on the
+    roller, or ``None`` where neither path reaches ``R_e``."""
+    rp, c, rho, cf_a, cf_b = float(rp), float(c), float(rho), float(cf[0]), float(cf[1])
+    seat_edge = c * math.cos(half_seat)
+    scale = max(c, 1e-300)
+    # the flank path, circle of radius rho about cf, met by |X - O| = R_e, O = (-rp, 0)
+    # (the construction of chaindrive.geometry.outline.circle_intersections, in floats)
+    da, db = cf_a + rp, cf_b
+    d = math.hypot(da, db)
+    ua, ub = da / d, db / d
+    out = []
+    for e in elongations:
+        radius = rp * (1.0 + e)
+        # seat path: circle of radius c about the origin
+        a = (radius**2 - rp**2 - c**2) / (2.0 * rp)
+        if abs(a) <= c and -a >= seat_edge:  # contact on the seating arc
+            b = math.sqrt(max(c * c - a * a, 0.0))
+            out.append((a, b, -a / scale, -b / scale, False))
+            continue
+        if d > radius + rho or d < abs(radius - rho) or d == 0:
+            out.append(None)
+            continue
+        along = (radius**2 - rho**2 + d**2) / (2 * d)
+        h = math.sqrt(max(radius**2 - along**2, 0.0))
+        ma, mb = -rp + along * ua, along * ub
+        # the one on the gap side of the flank centre (b below the flank centre's b; the first on a tie)
+        xa, xb = (ma - h * ub, mb + h * ua) if mb + h * ua <= mb - h * ua else (ma + h * ub, mb - h * ua)
+        out.append((xa, xb, (xa - cf_a) / rho, (xb - cf_b) / rho, True))
+    return out
 
 
 def worn_seat(pitch: float, teeth: int, roller_diameter: float, elongation: float, *,
@@ -169,10 +182,10 @@ def worn_seat(pitch: float, teeth: int, roller_diameter: float, elongation: floa
         raise InputError(f"elongation {e:.4g} is more than the ISO 606 tooth form of a {f.teeth}-tooth wheel "
                          f"can hold ({limit:.4g}): the rollers would ride over the tooth corner", field="elongation")
     radius = rp * (1.0 + e)
-    got = _centre_at(radius, rp, c, 0.5 * f.seat_angle, cf, rho)
+    got = _centres_at([e], rp, c, 0.5 * f.seat_angle, cf, rho)[0]
     if got is None:  # pragma: no cover - excluded by the limit above
         raise InputError(f"no seat for elongation {e:.4g} on a {f.teeth}-tooth wheel", field="elongation")
-    x, n, on_flank = got
+    x, n, on_flank = np.array(got[:2]), np.array(got[2:4]), got[4]
     # chain line at the roller: tangent to the circle |X - O| = R_e, towards +b
     radial = (x - np.array([-rp, 0.0])) / radius
     tangent = np.array([-radial[1], radial[0]])
@@ -253,21 +266,24 @@ def tension_ratio(pitch: float, teeth: int, roller_diameter: float, elongation: 
         raise InputError(f"elongation {float(np.max(e)):.4g} is more than the ISO 606 tooth form of a "
                          f"{f.teeth}-tooth wheel can hold ({limit:.4g}): the rollers would ride over the tooth "
                          "corner", field="elongation")
-    o = np.array([-rp, 0.0])
     step = 2.0 * math.pi / f.teeth
     ca, sa = math.cos(step), math.sin(step)
-    out = np.empty(e.shape)
-    for idx, ei in np.ndenumerate(e):
-        radius = rp * (1.0 + float(ei))
-        x, n, _ = _centre_at(radius, rp, c, 0.5 * f.seat_angle, cf, rho)
-        v = x - o
-        x_tight = o + np.array([ca * v[0] - sa * v[1], sa * v[0] + ca * v[1]])
-        x_next = o + np.array([ca * v[0] + sa * v[1], -sa * v[0] + ca * v[1]])
-        u_k = (x_tight - x) / float(np.hypot(*(x_tight - x)))
-        u_n = (x_next - x) / float(np.hypot(*(x_next - x)))
-        beta, _normal = np.linalg.solve(np.column_stack([u_n, n]), -u_k)
-        out[idx] = min(max(float(beta), 0.0), 1.0)
-    return float(out) if out.ndim == 0 else out
+    rp = float(rp)
+    out = []
+    # in floats: the arrays are short (an analysis asks for 7 … 17 points)
+    for xa, xb, na, nb, _ in _centres_at(np.ravel(e).tolist(), rp, c, 0.5 * f.seat_angle, cf, rho):
+        va, vb = xa + rp, xb  # the roller centre from the wheel centre O = (-rp, 0)
+        # the neighbouring roller centres, one pitch angle towards the tight side and away from it
+        ka, kb = (-rp + (ca * va - sa * vb)) - xa, (sa * va + ca * vb) - xb
+        ta, tb = (-rp + (ca * va + sa * vb)) - xa, (-sa * va + ca * vb) - xb
+        lk, ln = math.hypot(ka, kb), math.hypot(ta, tb)
+        uka, ukb, una, unb = ka / lk, kb / lk, ta / ln, tb / ln
+        # [u_n n] (β, N/T_k) = -u_k by Cramer's rule: β = det[-u_k n] / det[u_n n]
+        beta = (na * ukb - uka * nb) / (una * nb - na * unb)
+        out.append(min(max(beta, 0.0), 1.0))
+    if np.ndim(e) == 0:
+        return out[0]
+    return np.reshape(np.array(out, float), np.shape(e))
 
 
 def jump_over_tension(back_tension: float, ratio: float, seated: int) -> float:

@@ -61,6 +61,11 @@ REQUIRED_SAFETY_TABLE = np.array([
 ])
 
 
+#: The last printed speed of every pitch column of the table [rpm].
+_LAST_PRINTED_SPEEDS = np.array([REQUIRED_SAFETY_SPEEDS[~np.isnan(REQUIRED_SAFETY_TABLE[:, k])][-1]
+                                 for k in range(REQUIRED_SAFETY_TABLE.shape[1])])
+
+
 def _column_at(column: np.ndarray, rpm: np.ndarray) -> np.ndarray:
     """One pitch column of the table at ``rpm``: linear between rows, the 50 rpm value below
     50 rpm, linear from the column's last two printed rows beyond its last printed row."""
@@ -125,13 +130,19 @@ def required_static_safety_table(pitch: ArrayLike, speed: ArrayLike) -> FloatOrA
     w = check_positive("speed", speed, "rad/s")
     rpm = angular_velocity_to_rpm(w)
     p, rpm = np.broadcast_arrays(p, rpm)
-    cols = np.stack([_column_at(REQUIRED_SAFETY_TABLE[:, j], rpm) for j in range(len(REQUIRED_SAFETY_PITCHES))],
-                    axis=-1)
     P = REQUIRED_SAFETY_PITCHES
     j = np.clip(np.searchsorted(P, p) - 1, 0, len(P) - 2)
     t = (np.maximum(p, P[0]) - P[j]) / (P[j + 1] - P[j])  # beyond 50.8 mm: t > 1, the line of the last two
-    lo = np.take_along_axis(cols, j[..., None], axis=-1)[..., 0]
-    hi = np.take_along_axis(cols, (j + 1)[..., None], axis=-1)[..., 0]
+    if j.ndim == 0:  # one point: its two columns (the same operations as below)
+        k = int(j)
+        lo, hi = _column_at(REQUIRED_SAFETY_TABLE[:, k], rpm), _column_at(REQUIRED_SAFETY_TABLE[:, k + 1], rpm)
+    else:
+        # the pitch columns the interpolation reads (the others are never taken)
+        used = set(np.unique(j).tolist()) | set((np.unique(j) + 1).tolist())
+        cols = np.stack([_column_at(REQUIRED_SAFETY_TABLE[:, k], rpm) if k in used else np.full(rpm.shape, np.nan)
+                         for k in range(len(P))], axis=-1)
+        lo = np.take_along_axis(cols, j[..., None], axis=-1)[..., 0]
+        hi = np.take_along_axis(cols, (j + 1)[..., None], axis=-1)[..., 0]
     out = lo + t * (hi - lo)
     if np.any(outside_required_safety_table(p, w)):
         warnings.warn("required static safety: pitch or small-sprocket speed outside Chernavsky et al. "
@@ -150,8 +161,7 @@ def outside_required_safety_table(pitch: Any, speed: Any) -> Any:
     """
     P = REQUIRED_SAFETY_PITCHES
     p, rpm = np.asarray(pitch, dtype=float), angular_velocity_to_rpm(np.asarray(speed, dtype=float))
-    last = np.array([REQUIRED_SAFETY_SPEEDS[~np.isnan(REQUIRED_SAFETY_TABLE[:, k])][-1] for k in range(len(P))])
-    reach = np.interp(np.clip(p, P[0], P[-1]), P, last)
+    reach = np.interp(np.clip(p, P[0], P[-1]), P, _LAST_PRINTED_SPEEDS)
     return (p < P[0] - 1e-12) | (p > P[-1] + 1e-12) | (rpm < REQUIRED_SAFETY_SPEEDS[0] - 1e-9) | (rpm > reach + 1e-9)
 
 

@@ -68,7 +68,7 @@ def life_plot(result: DriveLife) -> Figure:
         ax2.text(0.5, 0.5, "no ISO 606 sprocket:\njump-over not modelled", ha="center", va="center",
                  transform=ax2.transAxes)
     ax2.set_xlabel("chain elongation [%]")
-    ax2.set_ylabel("jump-over tension / tooth load [-]")
+    ax2.set_ylabel("load ratio at jump-over / running T1/T2 [-]")
     ax2.set_title("Jump-over margin")
     if result.take_up is not None:
         tu, unit = _shown(result.take_up, "m")

@@ -108,19 +108,48 @@ def _apply_inverse(gx, gy, ox, oy, wxx, wxy, wyy, ux, uy, of, idd, ff, dlast, la
     _link_back(ox, oy, wxx, wxy, wyy, ux, uy, lam)
 
 
+@njit(cache=True, fastmath=False, inline="always")
+def _forward(p, bl, ip, el, fl, b, ll):
+    """One row of :func:`cyclic_tridiagonal_substitute`'s elimination."""
+    q = p * ip
+    bl -= fl * q
+    p = b[ll + 1] - el * q
+    b[ll + 1] = p
+    return p, bl
+
+
+@njit(cache=True, fastmath=False, inline="always")
+def _last_rows(p, bl, ip, fl, dlast, b):
+    """The last two unknowns of :func:`cyclic_tridiagonal_substitute`."""
+    n = b.shape[0]
+    xl = (bl - fl * p * ip) / dlast
+    nxt = (p - fl * xl) * ip
+    b[n - 1] = xl
+    b[n - 2] = nxt
+    return xl, nxt
+
+
+@njit(cache=True, fastmath=False, inline="always")
+def _backward(nxt, xl, ip, el, fl, b, ll):
+    """One row of :func:`cyclic_tridiagonal_substitute`'s back substitution."""
+    nxt = (b[ll] - el * nxt - fl * xl) * ip
+    b[ll] = nxt
+    return nxt
+
+
 @njit(cache=True, fastmath=False)
-def _factor_solve2(d, e, idd, ff, b0, b1):
+def _factor_solve4(d, e, idd, ff, b0, b1, b2, b3, wide):
     """:func:`cyclic_tridiagonal_factor` fused with the solution of two right-hand sides
-    (in place): the division recurrence of the factorisation and the multiply–add
-    recurrences of the substitutions run in one loop, so that they overlap."""
+    (``b0``, ``b1``), four if ``wide`` (in place): the division recurrence of the
+    factorisation and the substitutions' multiply–add recurrences run in one loop, so
+    that they overlap (each the same arithmetic as :func:`cyclic_tridiagonal_substitute`:
+    the results are those of the separate solves to the last bit)."""
     n = d.shape[0]
     dcur = d[0]
     ff[0] = e[n - 1]
     dlast = d[n - 1]
-    bl0 = b0[n - 1]
-    bl1 = b1[n - 1]
-    p0 = b0[0]
-    p1 = b1[0]
+    bl0, bl1, bl2, bl3 = b0[n - 1], b1[n - 1], b2[n - 1], b3[n - 1]
+    p0, p1, p2, p3 = b0[0], b1[0], b2[0], b3[0]
     for ll in range(n - 2):
         ip = 1.0 / dcur
         idd[ll] = ip
@@ -129,35 +158,31 @@ def _factor_solve2(d, e, idd, ff, b0, b1):
         dcur = d[ll + 1] - el * el * ip
         ff[ll + 1] = -el * ip * fl
         dlast -= fl * fl * ip
-        q0 = p0 * ip
-        q1 = p1 * ip
-        bl0 -= fl * q0
-        bl1 -= fl * q1
-        p0 = b0[ll + 1] - el * q0
-        p1 = b1[ll + 1] - el * q1
-        b0[ll + 1] = p0
-        b1[ll + 1] = p1
+        p0, bl0 = _forward(p0, bl0, ip, el, fl, b0, ll)
+        p1, bl1 = _forward(p1, bl1, ip, el, fl, b1, ll)
+        if wide:
+            p2, bl2 = _forward(p2, bl2, ip, el, fl, b2, ll)
+            p3, bl3 = _forward(p3, bl3, ip, el, fl, b3, ll)
     ip = 1.0 / dcur
     idd[n - 2] = ip
     fl = ff[n - 2] + e[n - 2]
     ff[n - 2] = fl
     dlast -= fl * fl * ip
-    xl0 = (bl0 - fl * p0 * ip) / dlast
-    xl1 = (bl1 - fl * p1 * ip) / dlast
-    b0[n - 1] = xl0
-    b1[n - 1] = xl1
-    n0 = (p0 - fl * xl0) * ip
-    n1 = (p1 - fl * xl1) * ip
-    b0[n - 2] = n0
-    b1[n - 2] = n1
+    xl0, n0 = _last_rows(p0, bl0, ip, fl, dlast, b0)
+    xl1, n1 = _last_rows(p1, bl1, ip, fl, dlast, b1)
+    xl2, n2, xl3, n3 = 0.0, 0.0, 0.0, 0.0
+    if wide:
+        xl2, n2 = _last_rows(p2, bl2, ip, fl, dlast, b2)
+        xl3, n3 = _last_rows(p3, bl3, ip, fl, dlast, b3)
     for ll in range(n - 3, -1, -1):
         el = e[ll]
         fl = ff[ll]
         ip = idd[ll]
-        n0 = (b0[ll] - el * n0 - fl * xl0) * ip
-        n1 = (b1[ll] - el * n1 - fl * xl1) * ip
-        b0[ll] = n0
-        b1[ll] = n1
+        n0 = _backward(n0, xl0, ip, el, fl, b0, ll)
+        n1 = _backward(n1, xl1, ip, el, fl, b1, ll)
+        if wide:
+            n2 = _backward(n2, xl2, ip, el, fl, b2, ll)
+            n3 = _backward(n3, xl3, ip, el, fl, b3, ll)
     return dlast
 
 

@@ -33,7 +33,7 @@ from . import _contact as C
 from . import _kernel as K
 from ._banded import (  # noqa: F401 - the cyclic solver is part of this module's interface
     _apply_inverse,
-    _factor_solve2,
+    _factor_solve4,
     _link_back,
     _link_entries,
     _link_rhs,
@@ -104,7 +104,7 @@ def _drop_tensile(cinfo, ncand, cand, qrot, qsl, dq, dvx, dvy, yx, yy, mxx, mxy,
 
 
 @njit(cache=True, fastmath=False)
-def _solve(n, nw, yx, yy, wxx, wxy, wyy, ux, uy, dg, of, dd, ff, lam, lam1, inv_ak, dvx, dvy, ws,
+def _solve(n, nw, yx, yy, wxx, wxy, wyy, ux, uy, dg, of, dd, ff, lam, lamq, inv_ak, dvx, dvy, ws,
            wp, ncand, cand, cinfo, qrot, qsl, bx, by, zx, zy, sq, fq, wtq, wsf, h, t, gx, gy):
     """Velocity changes of the pins (``dvx``, ``dvy``) and of the wheels' rotations and
     slides in contact (``fq[qrot[w]]``, ``fq[qsl[w]]``) of one linearly implicit step."""
@@ -171,17 +171,23 @@ def _solve(n, nw, yx, yy, wxx, wxy, wyy, ux, uy, dg, of, dd, ff, lam, lam1, inv_
             if qr >= 0 and qs >= 0:
                 sq[qr, qs] += be * lev * dn + s * levt * dtt
                 sq[qs, qr] += be * lev * dn + s * levt * dtt
-    # P⁻¹ F and P⁻¹ B_0 with the factorisation in one pass, further border columns after
+    # P⁻¹ F and P⁻¹ B_0 (up to B_2) with the factorisation in one pass, further border
+    # columns after
     _link_rhs(yx, yy, dvx, dvy, wxx, wxy, wyy, ux, uy, lam)
-    if nq > 0:
-        _link_rhs(bx[0], by[0], zx[0], zy[0], wxx, wxy, wyy, ux, uy, lam1)
-    dlast = _factor_solve2(dg, of, dd, ff, lam, lam1)
+    fused = min(nq, 3)
+    for q in range(fused):
+        _link_rhs(bx[q], by[q], zx[q], zy[q], wxx, wxy, wyy, ux, uy, lamq[q])
+    if nq > 1:
+        for q in range(fused, 3):
+            lamq[q, :] = 0.0   # an unused right-hand side: zeros stay zeros
+    dlast = _factor_solve4(dg, of, dd, ff, lam, lamq[0], lamq[1], lamq[2], nq > 1)
     _link_back(dvx, dvy, wxx, wxy, wyy, ux, uy, lam)
     if nq > 0:
-        _link_back(zx[0], zy[0], wxx, wxy, wyy, ux, uy, lam1)
-        for q in range(1, nq):
+        for q in range(fused):
+            _link_back(zx[q], zy[q], wxx, wxy, wyy, ux, uy, lamq[q])
+        for q in range(fused, nq):
             _apply_inverse(bx[q], by[q], zx[q], zy[q], wxx, wxy, wyy, ux, uy, of, dd, ff,
-                           dlast, lam1)
+                           dlast, lamq[0])
         # Schur complement S = Q − Bᵀ P⁻¹ B, right-hand side F_q − Bᵀ P⁻¹ F; B is
         # sparse (its rows live on their wheel's candidate pins)
         for w in range(nw):
@@ -266,7 +272,7 @@ def integrate_implicit(pos: np.ndarray, vel: np.ndarray, force: np.ndarray, work
     dg = np.empty(n)
     of = np.empty(n)
     lam = np.empty(n)
-    lam1 = np.zeros(n)
+    lamq = np.zeros((3, n))
     dd = np.empty(n)
     ff = np.empty(n)
     dvx = np.empty(n)
@@ -473,7 +479,7 @@ def integrate_implicit(pos: np.ndarray, vel: np.ndarray, force: np.ndarray, work
         # active set of the wheel contacts: a contact whose normal force at the end of
         # the step comes out tensile is dropped and the step solved again
         for it in range(4):
-            _solve(n, nw, yx, yy, wxx, wxy, wyy, ux, uy, dg, of, dd, ff, lam, lam1, inv_ak, dvx,
+            _solve(n, nw, yx, yy, wxx, wxy, wyy, ux, uy, dg, of, dd, ff, lam, lamq, inv_ak, dvx,
                    dvy, ws, wp, ncand, cand, cinfo, qrot, qsl, bx, by, zx, zy, sq, fq, wtq, wsf, h,
                    t, gx, gy)
             if it == 3 or not _drop_tensile(cinfo, ncand, cand, qrot, qsl, fq, dvx, dvy, yx, yy,

@@ -8,7 +8,7 @@ import math
 from typing import TYPE_CHECKING, Any
 
 from .._validation import check_positive, check_range
-from ..errors import InputError
+from ..errors import ChainDriveError, InputError
 
 if TYPE_CHECKING:
     from ..drive.model import Drive
@@ -161,7 +161,7 @@ def model_from_drive(drive: Drive, *, ramp_time: float = 0.2, axial_stiffness: f
                          f"drive has {int(links)} (set links = {int(links) + 1} in the project)")
     try:
         slack = float(drive_loads(drive).slack)
-    except Exception:  # noqa: BLE001 - a pretension guess is enough for the assembly
+    except ChainDriveError:  # a drive the loads part refuses: a pretension guess is enough for the assembly
         slack = 200.0
     if axial_stiffness is not None:
         ea = axial_stiffness

@@ -14,7 +14,9 @@ over one tooth period) in a fraction of a second:
    tension over the last ``window`` periods differ from those over the ``window``
    periods before by at most ``settle_tolerance`` (relative).
 3. **The step checked against its half.** The linearly implicit integrator is first
-   order: from the settled state one tooth period is run at ``Δt`` and at ``Δt/2`` and
+   order: from the settled state one tooth period is run at ``Δt`` and at ``Δt/2``
+   (recording at the same instants: on two sample grids the largest sample of a
+   period moves with the grid, by up to 1.8 % on the benchmark drive) and
    the relative change of its mean and peak tension is the step's error estimate; above
    ``step_tolerance`` the step is halved (and the check repeated) before measuring. A
    step that would fall below four explicit stable steps (where the implicit step costs
@@ -287,6 +289,13 @@ class _Runner:
         self.steps = max(int(round(period / dt)), 1)
         self.every = max(self.steps // samples, 1)
 
+    def halve(self) -> None:
+        """Go on at half the step, over the same time and with records at the same
+        instants (twice the steps between them)."""
+        self.dt *= 0.5
+        self.steps *= 2
+        self.every *= 2
+
     def period(self, state: State | None = None, count: int = 1
                ) -> tuple[State, np.ndarray, np.ndarray]:
         """``count`` tooth periods from ``state`` (default the current one) in one call of
@@ -444,7 +453,7 @@ def steady_state(drive_or_model: Any, *, periods: int = 12, bins: int = 16, wind
     if check_step and method == "implicit":
         while True:
             after, full, ang = run.period()
-            run.set_step(0.5 * run.dt, period, samples)
+            run.halve()
             half = run.period()[1]
             step_error = max(abs(float(np.mean(full)) / float(np.mean(half)) - 1.0),
                              abs(float(np.max(full)) / float(np.max(half)) - 1.0))

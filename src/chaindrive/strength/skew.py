@@ -175,7 +175,7 @@ def skew_gamma(pitch: ArrayLike, *, interpolation: str = "log", outside: str = "
         g = np.interp(pc, GAMMA_TABLE_PITCH, GAMMA_TABLE_VALUE)
     # snap exact table values (avoid exp/log round-off at the nodes)
     for pt, gt in zip(GAMMA_TABLE_PITCH, GAMMA_TABLE_VALUE, strict=True):
-        g = np.where(np.isclose(pc, pt, rtol=1e-12, atol=0), gt, g)
+        g = np.where(np.abs(pc - pt) <= 1e-12 * abs(pt), gt, g)  # np.isclose(pc, pt, rtol=1e-12, atol=0)
     g = np.where(out_lo, GAMMA_TABLE_VALUE[0] * lo / p, g)
     g = np.where(out_hi, GAMMA_TABLE_VALUE[-1] * hi / p, g)
     return _out(g)

@@ -20,6 +20,7 @@ Derivations and the independent check (the planar bead model): docs/vibration.md
 from __future__ import annotations
 
 import dataclasses
+from typing import Any
 
 import numpy as np
 from numpy.typing import ArrayLike
@@ -256,10 +257,11 @@ def forced_span_response(span: TensionerSpan, frequency: ArrayLike, end_amplitud
     return w_max[0], u_amp[0]
 
 
-def _span_response(span: TensionerSpan, om: np.ndarray, y1: float, y2: float, zeta: float, n: int,
+def _span_response(span: TensionerSpan, om: np.ndarray, y1: Any, y2: Any, zeta: float, n: int,
                    mass: np.ndarray, stiffness: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """:func:`forced_span_response` for K tensioners at once: ``mass``, ``stiffness`` of shape
-    (K,) [kg], [N/m]; returns the largest span amplitude and the tensioner's, shape (K, len(om))."""
+    (K,) [kg], [N/m]; returns the largest span amplitude and the tensioner's, shape (K, len(om)).
+    ``y1``, ``y2``: the end amplitudes [m], or one per frequency (arrays like ``om``)."""
     g = COUPLING_MODELS.get(span.model)
     parts = [(span.length_1, span.angle_1), (span.length_2, span.angle_2)]
     t_hat = [span.tension / np.cos(b) * (1 + 2j * zeta) for _, b in parts]
@@ -272,14 +274,16 @@ def _span_response(span: TensionerSpan, om: np.ndarray, y1: float, y2: float, ze
     w_max = np.zeros(G.shape)
     u_amp = np.zeros(G.shape)
     for a, y in ((0, y1), (1, y2)):  # the excited part a, the other b
-        if y == 0.0:
+        if np.all(np.asarray(y) == 0.0):
             continue
         b = 1 - a
+        # y: one amplitude, or one per frequency (F,) (the same products element by element)
+        yc = y if np.ndim(y) == 0 else np.asarray(y, dtype=float)[:, None]
         u = (t_hat[a] * gg[a] * k[a] * y / np.sin(k[a] * ell[a]))[None, :] / G          # (K, F)
         sa = s_unit * ell[a]
         ka = k[a][:, None]                                                             # (F, 1)
-        wa = (y * np.cos(ka * sa))[None] + ((gg[a] * u[..., None] - (y * np.cos(ka * ell[a])))
-                                            / np.sin(ka * ell[a])) * np.sin(ka * sa)[None]
+        wa = (yc * np.cos(ka * sa))[None] + ((gg[a] * u[..., None] - (yc * np.cos(ka * ell[a])))
+                                             / np.sin(ka * ell[a])) * np.sin(ka * sa)[None]
         sb = s_unit * ell[b]
         kb = k[b][:, None]
         wb = gg[b] * u[..., None] * (np.sin(kb * (ell[b] - sb)) / np.sin(kb * ell[b]))[None]
@@ -419,13 +423,41 @@ def span_excitations(span: TensionerSpan, speed: float, *, ratio: float, teeth_d
         "link pair (t ± d)": float(polygon[0]),
         "link passing": float(polygon[1]) if link else 0.0,
     }
+    responses = _responses(span, w1, ks, amplitude, damping_ratio)
     rows = []
     for name, k in ks.items():
         a = amplitude[name]
-        w, u = forced_span_response(span, np.array([k * w1, 1e-6 * w1]), a, a, damping_ratio=damping_ratio)
+        w, u = responses[name]
         amp = float(w[0] / w[1]) if a > 0 else 0.0
         rows.append(ExcitationResponse(name=name, frequency=k * w1, end_amplitude=a, response=float(w[0]),
                                        tensioner_amplitude=float(u[0]), amplification=amp,
                                        passed=bool(amp <= AMPLIFICATION_LIMIT) if a > 0 else None,
                                        source=_SOURCES[name]))
     return tuple(rows)
+
+
+def _responses(span: TensionerSpan, w1: float, ks: dict[str, float], amplitude: dict[str, float],
+               damping_ratio: float) -> dict[str, tuple[np.ndarray, np.ndarray]]:
+    """``forced_span_response(span, [k w1, 1e-6 w1], a, a)`` of every excitation, those with an
+    amplitude in one call (each frequency with its own amplitude: the same numbers); an
+    excitation without amplitude has no response. Where a response is not finite, each is
+    asked for alone (which says why)."""
+    live = [name for name in ks if amplitude[name] != 0.0]
+    out = {name: (np.zeros(2), np.zeros(2)) for name in ks if name not in live}
+    if not live:
+        return out
+    om = np.array([ks[name] * w1 for name in live] + [1e-6 * w1 for _ in live])
+    y = np.array([amplitude[name] for name in live] * 2)
+    if np.all(om > 0) and np.all(y >= 0) and 0.0 < damping_ratio < 1.0:
+        w, u = _span_response(span, om, y, y, float(damping_ratio), 101, np.array([float(span.mass)]),
+                              np.array([float(span.stiffness)]))
+        if np.all(np.isfinite(w)) and np.all(np.isfinite(u)):
+            m = len(live)
+            for i, name in enumerate(live):
+                out[name] = (w[0, [i, m + i]], u[0, [i, m + i]])
+            return out
+    for name in live:
+        a = amplitude[name]
+        out[name] = forced_span_response(span, np.array([ks[name] * w1, 1e-6 * w1]), a, a,
+                                         damping_ratio=damping_ratio)
+    return out

@@ -7,6 +7,7 @@ The design help built on them (Campbell diagram, resonance map, the nearest safe
 from __future__ import annotations
 
 import dataclasses
+import functools
 from collections.abc import Mapping, Sequence
 from typing import Any, overload
 
@@ -367,6 +368,13 @@ def resonance_check(natural_frequencies: ArrayLike, excitations: Mapping[str, Ar
 
 
 # --------------------------------------------------------------------------- thin object
+@functools.lru_cache(maxsize=64)
+def _stationary_frequencies(span: TensionerSpan, modes: int) -> np.ndarray:
+    """``span.frequencies(modes)`` of a stationary span (no mass or stiffness given), kept."""
+    return tensioner_frequencies(*span._args(), span.mass, span.stiffness, modes=modes, model=span.model,
+                                 chain_speed=0.0)
+
+
 @dataclasses.dataclass(frozen=True)
 class TensionerSpan(Result):
     """The slack span with a tensioner (the tensioner paper), SI units.
@@ -401,6 +409,12 @@ class TensionerSpan(Result):
     def frequencies(self, modes: int = 3, *, mass: ArrayLike | None = None, stiffness: ArrayLike | None = None,
                     chain_speed: ArrayLike = 0.0) -> np.ndarray:
         """Natural frequencies [rad/s] (:func:`tensioner_frequencies`)."""
+        if mass is None and stiffness is None and type(chain_speed) is float and chain_speed == 0.0 \
+                and type(modes) is int:
+            try:  # the stationary span's, kept (a design's check, Campbell data and report ask again)
+                return _stationary_frequencies(self, modes).copy()
+            except TypeError:  # a field that cannot be hashed
+                pass
         m = self.mass if mass is None else mass
         c = self.stiffness if stiffness is None else stiffness
         return tensioner_frequencies(*self._args(), m, c, modes=modes, model=self.model,

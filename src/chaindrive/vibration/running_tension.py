@@ -36,7 +36,7 @@ from ..units import angular_velocity_to_rpm
 
 __all__ = ["PALMGREN_LINE_CONTACT", "RunningTensionCalibration", "calibration", "seat_contact_stiffness",
            "seating_impact_velocity", "seating_impact_force", "running_peak_tension",
-           "check_running_tension_range"]
+           "running_tension_range_violations", "check_running_tension_range", "within_accurate_range"]
 
 #: Palmgren's roller–raceway (steel on steel line contact) deformation
 #: ``δ = 3.84e-5 Q^0.9 / l^0.8`` (δ in mm, Q in N, l in mm); in SI
@@ -197,6 +197,16 @@ class RunningTensionCalibration:
     crossval_worst, crossval_rms : float
         Out-of-fold relative errors of a four-fold cross-validation over the whole sweep
         (each fold predicted by the constants fitted on the other three) [1].
+    loo_worst, loo_rms : float
+        Leave-one-out relative errors (each drive predicted by the constants fitted on all
+        the others) [1].
+    accurate_factor : float
+        The accurate range: drives whose predicted ``F_peak / F_t`` is at most this [1]
+        (:func:`within_accurate_range`).
+    accurate_drives : int
+        Sweep drives in that range.
+    accurate_worst : float
+        Their worst out-of-sample error (the larger of the four-fold and the leave-one-out) [1].
     """
     coefficient: float
     impact_exponent: float
@@ -209,6 +219,11 @@ class RunningTensionCalibration:
     holdout_worst: float
     crossval_worst: float
     crossval_rms: float
+    loo_worst: float
+    loo_rms: float
+    accurate_factor: float
+    accurate_drives: int
+    accurate_worst: float
 
 
 @cache
@@ -226,7 +241,10 @@ def calibration() -> RunningTensionCalibration:
         ranges={k: (float(v[0]), float(v[1])) for k, v in raw["ranges"].items()},
         provenance=str(raw["provenance"]), calibration_worst=float(raw["calibration_worst"]),
         calibration_rms=float(raw["calibration_rms"]), holdout_worst=float(raw["holdout_worst"]),
-        crossval_worst=float(raw["crossval_worst"]), crossval_rms=float(raw["crossval_rms"]))
+        crossval_worst=float(raw["crossval_worst"]), crossval_rms=float(raw["crossval_rms"]),
+        loo_worst=float(raw["loo_worst"]), loo_rms=float(raw["loo_rms"]),
+        accurate_factor=float(raw["accurate_factor"]), accurate_drives=int(raw["accurate_drives"]),
+        accurate_worst=float(raw["accurate_worst"]))
 
 
 def running_peak_tension(tight_tension: ArrayLike, angular_velocity: ArrayLike, pitch: ArrayLike,
@@ -303,11 +321,44 @@ def running_peak_tension(tight_tension: ArrayLike, angular_velocity: ArrayLike, 
     return np.asarray(ft * (1.0 + c.coefficient * x**c.impact_exponent * (z / c.reference_teeth) ** c.teeth_exponent))
 
 
-def check_running_tension_range(*, pitch: float, teeth: float, teeth_driven: float, angular_velocity: float,
-                                centre_distance: float, pull: float, breaking_force: float, wheels: int = 2,
-                                stacklevel: int = 3) -> None:
-    """Warn (:class:`chaindrive.errors.ValidityRangeWarning`) for each input of
-    :func:`running_peak_tension` outside the calibration sweep's range.
+def within_accurate_range(peak: ArrayLike, tight_tension: ArrayLike) -> np.ndarray:
+    """Whether the reduced model's peak is in its accurate range: ``F_peak / F_t ≤`` the stored
+    ``accurate_factor`` (1.3).
+
+    .. math:: \\frac{F_{peak}}{F_t} \\le f_{acc}
+
+    Where the predicted dynamic part is small the model's out-of-sample error against the
+    simulation stays small: over the calibration sweep, the 18 drives with ``F_peak / F_t ≤
+    1.3`` are within 10.4 % (four-fold cross-validation and leave-one-out, the larger), the
+    other 46 within 36.5 % (``calibration()``). The bound is empirical, chosen on the sweep:
+    the sweep's two worst drives (model 20 % and 36 % low) lie just above it, at 1.36 and
+    1.37 (docs/design.md, "The running peak tension").
+
+    Parameters
+    ----------
+    peak : array_like
+        ``F_peak`` of :func:`running_peak_tension` [N].
+    tight_tension : array_like
+        ``F_t`` [N], > 0.
+
+    Returns
+    -------
+    numpy.ndarray of bool
+
+    Examples
+    --------
+    >>> within_accurate_range([2400.0, 6951.0], 2254.0).tolist()
+    [True, False]
+    """
+    ft = check_positive("tight_tension", tight_tension, "N")
+    f = check_positive("peak", peak, "N")
+    return np.asarray(f / ft <= calibration().accurate_factor)
+
+
+def running_tension_range_violations(*, pitch: float, teeth: float, teeth_driven: float, angular_velocity: float,
+                                     centre_distance: float, pull: float, breaking_force: float,
+                                     wheels: int = 2) -> tuple[tuple[str, float, float, float], ...]:
+    """The inputs of :func:`running_peak_tension` outside the calibration sweep's range.
 
     Parameters
     ----------
@@ -325,6 +376,44 @@ def check_running_tension_range(*, pitch: float, teeth: float, teeth_driven: flo
         Chain's ``F_B`` [N] (all strands).
     wheels : int
         Wheels of the drive (the sweep's drives have two).
+
+    Returns
+    -------
+    tuple of (name, value, low, high)
+        One entry per quantity outside its range (``calibration().ranges``); empty inside.
+
+    Examples
+    --------
+    >>> running_tension_range_violations(pitch=0.0254, teeth=19, teeth_driven=57, angular_velocity=100.5,
+    ...                                  centre_distance=1.05, pull=1940.0, breaking_force=60e3)
+    ()
+    >>> [v[0] for v in running_tension_range_violations(pitch=0.0254, teeth=19, teeth_driven=57,
+    ...     angular_velocity=100.5, centre_distance=1.05, pull=1940.0, breaking_force=60e3, wheels=3)]
+    ['wheels']
+    """
+    given = {"pitch": pitch, "teeth": teeth, "teeth_driven": teeth_driven, "angular_velocity": angular_velocity,
+             "centre_distance": centre_distance, "pull": pull, "breaking_force": breaking_force}
+    pitch, teeth, teeth_driven, angular_velocity, centre_distance, pull, breaking_force = (
+        float(check_positive(name, value)) for name, value in given.items())
+    r = calibration().ranges
+    values = {"pitch": pitch, "teeth": teeth, "ratio": teeth_driven / teeth, "rpm": float(angular_velocity_to_rpm(angular_velocity)),
+              "chain_speed": angular_velocity * teeth * pitch / (2 * math.pi), "centre_pitches": centre_distance / pitch,
+              "pull_ratio": pull / breaking_force, "wheels": float(wheels)}
+    return tuple((name, value, *r[name]) for name, value in values.items()
+                 if not r[name][0] <= value <= r[name][1])
+
+
+def check_running_tension_range(*, pitch: float, teeth: float, teeth_driven: float, angular_velocity: float,
+                                centre_distance: float, pull: float, breaking_force: float, wheels: int = 2,
+                                stacklevel: int = 3) -> None:
+    """Warn (:class:`chaindrive.errors.ValidityRangeWarning`) for each input of
+    :func:`running_peak_tension` outside the calibration sweep's range
+    (:func:`running_tension_range_violations`).
+
+    Parameters
+    ----------
+    pitch, teeth, teeth_driven, angular_velocity, centre_distance, pull, breaking_force, wheels
+        As :func:`running_tension_range_violations`.
     stacklevel : int
         For the warning.
 
@@ -338,17 +427,10 @@ def check_running_tension_range(*, pitch: float, teeth: float, teeth_driven: flo
     >>> len(w)
     0
     """
-    given = {"pitch": pitch, "teeth": teeth, "teeth_driven": teeth_driven, "angular_velocity": angular_velocity,
-             "centre_distance": centre_distance, "pull": pull, "breaking_force": breaking_force}
-    pitch, teeth, teeth_driven, angular_velocity, centre_distance, pull, breaking_force = (
-        float(check_positive(name, value)) for name, value in given.items())
-    r = calibration().ranges
     source = "the running peak tension model (its calibration sweep)"
-    values = {"pitch": pitch, "teeth": teeth, "ratio": teeth_driven / teeth, "rpm": float(angular_velocity_to_rpm(angular_velocity)),
-              "chain_speed": angular_velocity * teeth * pitch / (2 * math.pi), "centre_pitches": centre_distance / pitch,
-              "pull_ratio": pull / breaking_force, "wheels": float(wheels)}
-    for name, value in values.items():
-        low, high = r[name]
+    for name, value, low, high in running_tension_range_violations(
+            pitch=pitch, teeth=teeth, teeth_driven=teeth_driven, angular_velocity=angular_velocity,
+            centre_distance=centre_distance, pull=pull, breaking_force=breaking_force, wheels=wheels):
         warn_outside(name, value, low, high, source, stacklevel=stacklevel + 1)
 
 

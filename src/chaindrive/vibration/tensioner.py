@@ -18,6 +18,8 @@ between consecutive distinct poles, and a pole shared by both parts is itself a 
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 from numpy.typing import ArrayLike
 
@@ -261,6 +263,47 @@ def _poles(w1, w2, modes):
     return p[..., :modes]
 
 
+#: Up to this many roots, :func:`_solve_interlaced` iterates each in Python floats (the same
+#: steps; numpy's per-call cost dominates a handful of roots).
+_SCALAR_ROOTS = 16
+
+
+def _illinois_scalar(xs, idx, lo_f, hi_f, flo_f, fhi_f, pars, iterations, rtol) -> bool:
+    """The Illinois steps of :func:`_solve_interlaced` root by root in Python floats, written
+    into ``xs[idx]``; ``False`` (nothing kept) where a step leaves the floats (a zero
+    division, an infinite argument) or does not converge: the array steps then run."""
+    out = []
+    try:
+        for n in range(idx.size):
+            lo, hi, flo, fhi = float(lo_f[n]), float(hi_f[n]), float(flo_f[n]), float(fhi_f[n])
+            pb1, pb2, pal1, pal2, pc, pm = (float(v[n]) for v in pars)
+            lo0, hi0, side, xn = lo, hi, 0, math.nan
+            for _ in range(iterations):
+                den = fhi - flo
+                xn = (lo * fhi - hi * flo) / den if den != 0 else math.nan
+                if not lo < xn < hi:
+                    xn = 0.5 * (lo + hi)
+                t1, t2 = xn * pb1, xn * pb2
+                g = (pal1 * xn * math.cos(t1) / math.sin(t1) + pal2 * xn * math.cos(t2) / math.sin(t2)
+                     + pc - pm * xn * xn)
+                fx = g * (hi0 - xn) * (xn - lo0 if lo0 > 0 else 1.0)
+                if fx > 0:  # H > 0 left of the root: replace the end with the same sign
+                    flo, fhi, lo, side = fx, (0.5 * fhi if side == 1 else fhi), xn, 1
+                else:
+                    flo, fhi, hi, side = (0.5 * flo if side == -1 else flo), fx, xn, -1
+                if hi - lo <= rtol * hi or fx == 0:
+                    break
+            else:
+                return False
+            if not math.isfinite(xn):
+                return False
+            out.append(xn)
+    except (ValueError, ZeroDivisionError, OverflowError):
+        return False
+    xs[idx] = out
+    return True
+
+
 def _solve_interlaced(c1, l1, a1, c2, l2, a2, m, c, modes, *, iterations=60, rtol=1e-13):
     """Vectorised root finder: one root of G in each gap between consecutive poles.
 
@@ -309,6 +352,8 @@ def _solve_interlaced(c1, l1, a1, c2, l2, a2, m, c, modes, *, iterations=60, rto
     hi0_f = hi_f.copy()
     xs = x.ravel().copy()
     pars = [np.broadcast_to(v, shape).ravel()[idx] for v in (b1, b2, al1, al2, c_fin, m)]
+    if 0 < idx.size <= _SCALAR_ROOTS and _illinois_scalar(xs, idx, lo_f, hi_f, flo_f, fhi_f, pars, iterations, rtol):
+        idx = idx[:0]
     for _ in range(iterations):
         if idx.size == 0:
             break

@@ -332,7 +332,7 @@ def life_chart(result: Any) -> Chart:
     p1 = {"traces": [line(result.hours, _shown(result.elongation, "1", "%")[0], "wear elongation", color_="C0")],
           "shapes": shapes1, "x": "operating time [h]", "y": "chain elongation [%]",
           "title": f"Elongation over the life (governed by {result.governing})"}
-    p2: dict[str, Any] = {"traces": [], "x": "chain elongation [%]", "y": "jump-over tension / tooth load [-]",
+    p2: dict[str, Any] = {"traces": [], "x": "chain elongation [%]", "y": "load ratio at jump-over / running T1/T2 [-]",
                           "title": "Jump-over margin", "ylog": True}
     if result.jump_over_margins is not None:
         for k, (name, curve) in enumerate(zip(result.wheel_names, result.jump_over_margins, strict=True)):
