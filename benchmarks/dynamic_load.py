@@ -401,7 +401,7 @@ def steady_against_sweep(rows: list[dict[str, Any]]) -> None:
 def outside_against_rest() -> None:
     """Drives outside the sweep's input ranges (``_dynamic_sweep.outside_drives``; ``python
     benchmarks/_dynamic_sweep.py 64 --outside`` fills ``benchmarks/data/dynamic_outside*.csv``):
-    the analysis's answer there (the steady state, :func:`chaindrive.analysis.dynamic_tension.simulated_dynamic_tension`)
+    the analysis's answer there (the steady state, :func:`chaindrive.simulation.running_tension.simulated_dynamic_tension`)
     and the reduced model extrapolated, against the run from rest."""
     import _dynamic_sweep as sw
 

@@ -722,9 +722,11 @@ def main():
     for label, key in (("MuJoCo rigid links", "mujoco rigid"), ("MuJoCo stiff links", "mujoco stiff"),
                        ("Exudyn stiff links, VelocityVerlet", "exudyn stiff")):
         if key in picks:
-            x, _, near = picks[key]
+            x, ok, near = picks[key]
             print(f"vs {label}: {x['wall_per_sim_s'] / imp['wall_per_sim_s']:.3g} x"
                   f"{'' if near and imp_near else '  (not at equal accuracy: see the lines above)'}")
+            if key.startswith("exudyn") and ok:
+                _at_peer_accuracy(label, x, ref, imp_rows)
     if args.diagnose and stiff_rows:
         diagnose(model, state, args.duration, stiff_rows[0]["dt"], own)
     print()
@@ -733,6 +735,25 @@ def main():
         print()
         scaling()
         batched_rate()
+
+
+def _at_peer_accuracy(label, peer, ref, own_rows):
+    """Print the ratio at the peer's own accuracy: chaindrive's implicit integrator at its
+    largest step converged against its half and no farther from the reference than the
+    peer's converged run (mean tension and mean speed), against the peer's run."""
+    tol_s, tol_v = abs(_rel(peer, ref, "tight_mean")), abs(_rel(peer, ref, "v_mean"))
+    fits = [x for x in own_rows if x.get("conv") and abs(_rel(x, ref, "tight_mean")) <= tol_s
+            and abs(_rel(x, ref, "v_mean")) <= max(tol_v, 1e-4)]
+    if not fits:
+        print(f"  no chaindrive implicit step as close to the reference as {label}")
+        return
+    own = fits[0]
+    print(f"vs {label} at equal accuracy (both within {100 * tol_s:.2g} % of the reference in mean "
+          f"tension, {100 * max(tol_v, 1e-4):.2g} % in mean speed: the peer's error): "
+          f"{peer['wall_per_sim_s'] / own['wall_per_sim_s']:.3g} x (peer at {1e6 * peer['dt']:.3g} us, "
+          f"{100 * _rel(peer, ref, 'tight_mean'):+.2f} % / {100 * _rel(peer, ref, 'v_mean'):+.2f} %; "
+          f"chaindrive implicit at {1e6 * own['dt']:.3g} us, {100 * _rel(own, ref, 'tight_mean'):+.2f} % / "
+          f"{100 * _rel(own, ref, 'v_mean'):+.2f} %; both converged against their half step)")
 
 
 def diagnose(model, state, duration, dt, own):

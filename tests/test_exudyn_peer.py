@@ -49,3 +49,20 @@ def test_ramp_matches_the_kernel_convention():
 
     assert E.ramp(W, 0.05) == pytest.approx((0.25, 10.0))  # 0.5 * 20 * 0.05**2 / 0.1
     assert E.ramp(W, 0.2) == pytest.approx((20.0 * 0.15, 20.0))
+
+
+def test_near_rollers_cover_every_roller_that_reaches_a_wheel():
+    # the broad phase by hand against chaindrive's own run: every roller that comes within
+    # a roller radius and 3 mm of a wheel's pitch circle during the run is in its list
+    from chaindrive.simulation import simulate
+
+    model = roller_example(links=30, teeth=11, angular_velocity=20.0, ramp_time=0.005)
+    state = assemble(model)
+    near = E.near_rollers(model, state, 0.05)
+    r = simulate(model, 0.05, state=state, samples=200)
+    for j, ids in enumerate(near):
+        c, rad = r.wheel_centres[j], r.pitch_radii[j]
+        d = np.hypot(r.positions[..., 0] - c[0], r.positions[..., 1] - c[1])
+        reached = set(np.nonzero(d < rad + model.roller_radius + 0.003)[1].tolist())
+        assert reached <= set(ids.tolist())
+        assert len(ids) < model.links  # a broad phase: not every roller

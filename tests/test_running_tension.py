@@ -298,7 +298,7 @@ def test_steady_state_against_the_sweep_cached():
 def test_simulated_dynamic_tension_is_the_cached_steady_state():
     # analysis.dynamic_tension.simulated_dynamic_tension on sweep drive S01 (20B 22/45 at 107 rpm,
     # nominal torque) reproduces the cached steady state (same seats, EA, drive): F_t + F_d = pp
-    from chaindrive.analysis.dynamic_tension import SIMULATED_VALIDITY, simulated_dynamic_tension
+    from chaindrive.simulation.running_tension import SIMULATED_VALIDITY, simulated_dynamic_tension
 
     sw = _sweep()
     s = next(d for d in sw.sweep_drives(64) if d.name == "S01")
@@ -313,7 +313,7 @@ def test_simulated_dynamic_tension_is_the_cached_steady_state():
 def test_simulated_dynamic_tension_refuses_a_chain_without_width():
     import dataclasses
 
-    from chaindrive.analysis.dynamic_tension import simulated_dynamic_tension
+    from chaindrive.simulation.running_tension import simulated_dynamic_tension
 
     sw = _sweep()
     d = sw.drive_of(sw.sweep_drives(64)[1])
@@ -361,19 +361,15 @@ def test_accurate_range_refuses_bad_input():
         RT.within_accurate_range(float("nan"), 2000.0)
 
 
-def test_analysis_keeps_the_reduced_model_outside_the_input_ranges_warned(monkeypatch):
+def test_analysis_keeps_the_reduced_model_outside_the_input_ranges_warned():
     # the self-regulating example's 23.4-pitch tight span is outside the sweep's 25-60 pitches: the
     # reduced model's F_d (4982 N), warned; the steady state is not taken instead (on the three drives
     # outside the ranges checked from rest it was -6.7, -7.8, -39.4 % off, the model -16.0, -9.9,
-    # -18.8 %: benchmarks/data/dynamic_outside*.csv), and the analysis never simulates
-    import chaindrive.analysis.dynamic_tension as DT
+    # -18.8 %: benchmarks/data/dynamic_outside*.csv); the analysis imports no simulation
+    # (tests/test_architecture.py: the simulation is the floor above)
     from chaindrive.analysis import analyze_drive
     from chaindrive.drive.project import load_project
 
-    def refuse(drive, tight):
-        raise AssertionError("the analysis must not simulate")
-
-    monkeypatch.setattr(DT, "_simulated", refuse)
     a = analyze_drive(load_project(ROOT / "examples" / "self_regulating.toml"), include=["loads"])
     assert "running_peak_tension" in a.loads.dynamic_source
     assert a.loads.dynamic == pytest.approx(4982, rel=0.01)
@@ -398,9 +394,9 @@ def test_long_reference_does_not_rescue_the_worst_drives():
 
 
 def test_simulated_dynamic_tension_refuses_a_non_finite_simulation(monkeypatch):
-    # a steady state without a finite peak is refused (the analysis then keeps the model, warned)
-    import chaindrive.simulation.steady as S
-    from chaindrive.analysis.dynamic_tension import _simulated
+    # a steady state without a finite peak is refused
+    import chaindrive.simulation.running_tension as S
+    from chaindrive.simulation.running_tension import _simulated
 
     class _Nan:
         period_peak_tension = float("nan")

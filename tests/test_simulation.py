@@ -164,8 +164,12 @@ def test_result_arrays_and_npz(tmp_path):
     assert r.tension.shape == (len(r.time), 30)
     assert r.positions.shape == (len(r.time), 30, 2)
     r.save_npz(tmp_path / "s.npz")
-    data = np.load(tmp_path / "s.npz")
+    data = np.load(tmp_path / "s.npz")  # no pickled object (the final state) in it
     assert data["tension"].shape == r.tension.shape
+    assert "final_state" not in data.files and "summary" not in data.files
+    assert all(data[k].dtype != object for k in data.files)
+    r.save_npz(tmp_path / "c.npz", compressed=True)
+    np.testing.assert_array_equal(np.load(tmp_path / "c.npz")["positions"], r.positions)
     d = r.to_dict()
     assert "wheel_speed" in d and "summary" in d
 

@@ -15,7 +15,7 @@ from chaindrive.cli import main
 def test_cli_example(tmp_path, capsys, example, links):
     out = tmp_path / "out"
     assert main(["simulate", "--example", example, "--duration", "20 ms", "--ramp", "5 ms",
-                 "-o", str(out), "--frames", "3", "--json"]) == 0
+                 "-o", str(out), "--frames", "3", "--plots", "--json"]) == 0
     summary = json.loads(capsys.readouterr().out)
     # the load is carried by the tight span
     assert summary["tight_side_tension_mean"] > summary["slack_side_tension_mean"] > 0
@@ -81,11 +81,18 @@ def test_cli_conveyor_example(tmp_path, capsys):
     assert "conveyor example must be positive" in capsys.readouterr().err
 
 
-def test_cli_gif_is_opt_in(tmp_path, capsys):
-    """The animation only with --gif (or --frames N); the run's other files as before."""
+def test_cli_pictures_are_opt_in(tmp_path, capsys):
+    """By default the arrays and the summary only; the PNGs with --plots, the animation
+    with --gif (or --frames N); --no-plots: no pictures at all."""
     out = tmp_path / "plain"
     assert main(["simulate", "--example", "roller", "--duration", "4 ms", "--ramp", "2 ms",
                  "-o", str(out), "--json"]) == 0
+    capsys.readouterr()
+    assert {p.name for p in out.iterdir() if not p.name.startswith(".")} == {
+        "simulation.npz", "simulation.json"}
+    out = tmp_path / "png"
+    assert main(["simulate", "--example", "roller", "--duration", "4 ms", "--ramp", "2 ms",
+                 "-o", str(out), "--plots", "--json"]) == 0
     capsys.readouterr()
     assert {p.name for p in out.iterdir() if not p.name.startswith(".")} == {
         "simulation.npz", "simulation.json", "simulation.png", "frame.png"}
@@ -96,4 +103,22 @@ def test_cli_gif_is_opt_in(tmp_path, capsys):
     out = tmp_path / "gif2"
     assert main(["simulate", "--example", "roller", "--duration", "4 ms", "--ramp", "2 ms",
                  "-o", str(out), "--gif", "--json"]) == 0
-    assert (out / "simulation.gif").exists()
+    assert {p.name for p in out.iterdir() if not p.name.startswith(".")} == {
+        "simulation.npz", "simulation.json", "simulation.gif"}
+
+
+def test_default_run_loads_neither_matplotlib_nor_scipy_linalg(tmp_path):
+    """The footprint of a plain run (#33: `simulate --example roller` < 200 MB): no
+    pictures asked, so no matplotlib; no scipy.linalg (numba's BLAS probe, the assembly's
+    band solve). A guard on what is imported, not on time."""
+    import subprocess
+    import sys
+
+    code = ("import sys\n"
+            "from chaindrive.cli import main\n"
+            f"code = main(['simulate', '--example', 'roller', '--duration', '4 ms', '--ramp', '2 ms', "
+            f"'-o', {str(tmp_path / 'o')!r}])\n"
+            "loaded = [m for m in ('matplotlib', 'scipy.linalg') if m in sys.modules]\n"
+            "print(code, loaded)\n")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=300)
+    assert out.stdout.strip().splitlines()[-1] == "0 []", out.stdout[-500:] + out.stderr[-2000:]

@@ -28,8 +28,13 @@ solved by the implicit generalized-α integrator with a sparse solver and modifi
   is proportional to its length ``l_seg``), so every class of equally long segments (seat
   faces, flank faces, tip chords) is one contact object with ``k_c = k / l_seg`` and
   ``d_c = c / l_seg`` (chaindrive's contact stiffness ``k`` and damping ``c`` per roller);
-  regularised Coulomb friction ``μ = 0.1`` with chaindrive's regularisation velocity
-  (``frictionProportionalZone`` = ``model.friction_velocity``);
+  regularised Coulomb friction ``μ = 0.1``, linear below ``frictionProportionalZone``
+  (``CONFIG``: 0.02 m/s; chaindrive's own regularisation velocity grows with the normal
+  force, ``v_e = max(μ f_n Δt_ref/m, 1 mm/s)``, 5–10 mm/s for the seated rollers'
+  0.6–1.1 kN, T·2 sin(π/z); measured on this drive, mean tension against the reference: zone 1 mm/s
+  +1.56 %, 5 mm/s +1.31 %, 20 mm/s +1.22 %); the rollers each wheel's contact checks
+  limited to those that can reach it in the run (:func:`near_rollers`, 37 and 36 of 100
+  for 0.3 s: a broad phase by hand, checked against chaindrive's run; 2.5 times faster);
 * wheels: ``ObjectRigidBody2D`` pinned by ``CoordinateConstraint`` (x, y) with the same
   inertias; the driver's prescribed speed ramp by a stiff angle servo
   (``ObjectConnectorCoordinateSpringDamperExt``: offset and velocity offset the ramp's
@@ -42,9 +47,17 @@ iteration cycles between two residuals, ~1e3 N, the contacts' stick/slip switchi
 without friction it converges, 2-3 discontinuous iterations of 4-7 Newton steps a step);
 the explicit Euler of Exudyn (forward, not symplectic) blows up within 0.1 ms at 2 µs;
 ``VelocityVerlet`` (and ``RK44``) runs at chaindrive's stable step, so this peer uses it
-(``SOLVER``) on the ladder ``LADDER``. Cost: about 1.8 ms CPU a step, nearly all in the
-curve contact (every roller against every segment of every contact object: 100 × 357
-per wheel), 34 µs a step without it.
+(``SOLVER``) on the ladder ``LADDER``. Cost: 0.69 ms CPU a step (229 s per simulated
+second at 3 µs), nearly all in the curve contact (every listed roller against every
+segment of every contact object: 37 × 357 per wheel; 1.7–1.8 ms with all 100 rollers),
+34 µs a step without it.
+
+What else was tried on this drive (0.3 s, 3 µs, mean tight-side tension against the
+reference): without contact damping (Exudyn's linear law lets the damping pull while the
+penetration is positive; chaindrive's never pulls) +1.52 %; 9 seat and 12 flank faces
++1.49 %; at rest (driver held) Exudyn's tension is chaindrive's within 0.04 % (8 seat and 6
+flank faces: −0.04 %; 9 and 12: −0.005 %), so the offset of the running drive is
+dynamic, not the outline's; 4 µs diverges (the links' stable step, as chaindrive's).
 
 Exudyn settings used (exudyn.readthedocs.io): ``ObjectContactCurveCircles``
 (Items/ObjectContactCurveCircles), ``SolveDynamic`` with ``GeneralizedAlpha`` and
@@ -69,6 +82,9 @@ FLANK_FACES = 6
 SOLVER = "VelocityVerlet"
 #: explicit step ladder [s] (the links' stable step is about 3 µs, as chaindrive's)
 LADDER = (3.0e-6, 1.5e-6)
+#: the configuration of the ladder (measured on this drive, module docstring): the friction's
+#: regularisation velocity [m/s] and the faces per seat and per flank arc
+CONFIG = {"friction_zone": 0.02, "seat_faces": SEAT_FACES, "flank_faces": FLANK_FACES}
 #: the driver's angle servo: stiffness [N m/rad] and damping [N m s/rad]
 SERVO_K = 1.0e7
 SERVO_C = 5.0e2  # about critical on the driver's inertia: 2 sqrt(K J) = 473
@@ -127,9 +143,40 @@ def tooth_segments(model, teeth, seat_faces=SEAT_FACES, flank_faces=FLANK_FACES)
             l_tip: np.array(classes["tip"])}
 
 
-def build(model, state, rigid=False):
+def near_rollers(model, state, duration, margin=3):
+    """Per wheel, the rollers that can touch it within ``duration`` [s] of ``state``: those
+    within a pitch of its pitch circle now, the ``travel + margin`` links that run onto it
+    (``travel`` the links the chain passes at the driver's final speed) and ``margin``
+    links on the other side, as sorted index arrays. A broad phase by hand: Exudyn's curve
+    contact checks every circle against every segment; a roller that cannot reach a wheel
+    in the run is left out of that wheel's contact."""
+    n = model.links
+    w0 = model.wheels[0]
+    rad0 = model.pitch / (2 * math.sin(math.pi / w0.teeth))
+    travel = int(math.ceil(abs(w0.angular_velocity) * rad0 * duration / model.pitch))
+    # the chain's direction in index terms: on the driver, does pin i + 1 lie ahead of pin i
+    # in its turning sense (counter-clockwise for a positive speed)?
+    c0 = state.wp[0, [K.W_CX, K.W_CY]]
+    i0 = int(np.argmin(np.hypot(*(state.pos - c0).T)))
+    a, b = state.pos[i0] - c0, state.pos[(i0 + 1) % n] - state.pos[i0]
+    ahead = 1 if (a[0] * b[1] - a[1] * b[0]) * (1.0 if w0.angular_velocity >= 0 else -1.0) > 0 else -1
+    out = []
+    for j, w in enumerate(model.wheels):
+        rad = model.pitch / (2 * math.sin(math.pi / w.teeth))
+        centre = state.wp[j, [K.W_CX, K.W_CY]]
+        close = np.nonzero(np.hypot(*(state.pos - centre).T) < rad + model.pitch)[0]
+        # the pins now behind the wheel's arc reach it: indices i - ahead * k
+        idx = {(i - ahead * k) % n for i in close for k in range(-margin, travel + margin + 1)}
+        out.append(np.array(sorted(idx)))
+    return out
+
+
+def build(model, state, rigid=False, near=None, friction_zone=None, seat_faces=SEAT_FACES,
+          flank_faces=FLANK_FACES, contact_damping=None):
     """The Exudyn system of the drive at chaindrive's assembled ``state``: (SystemContainer,
-    MainSystem, handles)."""
+    MainSystem, handles). ``near``: per wheel the rollers its contacts check
+    (:func:`near_rollers`; default all); ``friction_zone``: the friction's regularisation
+    velocity [m/s] (default ``model.friction_velocity``)."""
     import exudyn as exu
     from exudyn import itemInterface as ii
 
@@ -170,17 +217,20 @@ def build(model, state, rigid=False):
             links.append(mbs.AddObject(ii.ObjectConnectorSpringDamper(
                 markerNumbers=[a, b], referenceLength=model.pitch, stiffness=model.link_stiffness,
                 damping=model.link_damping)))
-    kc, cc = model.contact_stiffness, model.contact_damping
+    kc = model.contact_stiffness
+    cc = model.contact_damping if contact_damping is None else contact_damping
+    zone = model.friction_velocity if friction_zone is None else friction_zone
     for j, w in enumerate(model.wheels):
-        for length, seg in tooth_segments(model, w.teeth).items():
+        mk = markers if near is None else [markers[i] for i in near[j]]
+        for length, seg in tooth_segments(model, w.teeth, seat_faces, flank_faces).items():
             nseg = len(seg)
             data = mbs.AddNode(ii.NodeGenericData(initialCoordinates=[-1, 0, 0] * nseg,
                                                   numberOfDataCoordinates=3 * nseg))
             mbs.AddObject(ii.ObjectContactCurveCircles(
-                markerNumbers=[wheels[j][2]] + markers, nodeNumber=data, circlesRadii=[rr] * n,
+                markerNumbers=[wheels[j][2]] + mk, nodeNumber=data, circlesRadii=[rr] * len(mk),
                 segmentsData=exu.MatrixContainer(seg), contactStiffness=kc / length,
                 contactDamping=cc / length, dynamicFriction=model.friction,
-                frictionProportionalZone=model.friction_velocity))
+                frictionProportionalZone=zone))
     # the driver: a stiff angle servo to the ramp's angle (offset set before each step)
     ground_angle = mbs.AddMarker(ii.MarkerNodeCoordinate(nodeNumber=ground_node, coordinate=0))
     servo = mbs.AddObject(ii.ObjectConnectorCoordinateSpringDamperExt(
@@ -223,7 +273,7 @@ def settings(dt, duration, solver=SOLVER, spectral_radius=0.9):
 
 
 def run(model, state, duration, dt, probe, tight_mid, sample, steady, rigid=False, solver=SOLVER,
-        spectral_radius=0.9, name=None):
+        spectral_radius=0.9, name=None, **options):
     """One timed Exudyn run from chaindrive's assembled ``state``: the same keys as the
     MuJoCo peer's rows (``benchmarks/simulate.py``), or None when it failed (diverged, the
     chain off the wheels). Sampled every ``sample`` s by Exudyn's sensors (stored in
@@ -231,7 +281,7 @@ def run(model, state, duration, dt, probe, tight_mid, sample, steady, rigid=Fals
     import exudyn as exu
     from exudyn import itemInterface as ii
 
-    sc, mbs, h = build(model, state, rigid=rigid)
+    sc, mbs, h = build(model, state, rigid=rigid, **options)
     ovt = exu.OutputVariableType
     pos = [mbs.AddSensor(ii.SensorNode(nodeNumber=nd, storeInternal=True, writeToFile=False,
                                        outputVariableType=ovt.Position)) for nd in h["rollers"]]
@@ -300,11 +350,13 @@ def run(model, state, duration, dt, probe, tight_mid, sample, steady, rigid=Fals
 
 
 def ladder(model, state, duration, probe, tight_mid, sample, steady, converged, steps=LADDER):
-    """Rows of the step ladder (each a :func:`run`), stopping at the first step converged
-    against its half (``converged(rows)``, ``benchmarks/simulate.py``'s test)."""
+    """Rows of the step ladder (each a :func:`run` in the configuration ``CONFIG``, the
+    broad phase :func:`near_rollers`), stopping at the first step converged against its
+    half (``converged(rows)``, ``benchmarks/simulate.py``'s test)."""
     rows: list[dict] = []
+    near = near_rollers(model, state, duration)
     for dt in steps:
-        res = run(model, state, duration, dt, probe, tight_mid, sample, steady)
+        res = run(model, state, duration, dt, probe, tight_mid, sample, steady, near=near, **CONFIG)
         status = "failed" if res is None else "ran"
         print(f"  exudyn stiff links ({SOLVER}) dt = {dt:g} s: {status}", flush=True)
         rows += [] if res is None else [res]

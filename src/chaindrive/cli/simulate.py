@@ -1,8 +1,10 @@
 """``chaindrive simulate``: planar dynamic simulation of a chain drive.
 
-Writes ``simulation.npz`` (all arrays), ``simulation.json`` (summary), ``simulation.png``
-(standard views), ``frame.png`` (the drive at the last instant) and, with ``--gif`` (or
-``--frames N``), ``simulation.gif`` (animation) into the output directory.
+Writes ``simulation.npz`` (all arrays) and ``simulation.json`` (summary) into the output
+directory; with ``--plots`` also ``simulation.png`` (standard views) and ``frame.png`` (the
+drive at the last instant), with ``--gif`` (or ``--frames N``) ``simulation.gif``
+(animation). The pictures are on request: matplotlib costs the 0.5 s example run about
+1 s and 30 MB (docs/simulation.md).
 """
 
 from __future__ import annotations
@@ -32,7 +34,7 @@ def simulate_command(
     ramp: str | None = typer.Option(None, "--ramp", help=unit_help("Speed ramp of the driver (default 0.1 s; 2 s for --example conveyor: a 100 m chain started faster runs into longitudinal shocks near its breaking force).", "s", "100 ms")),
     gif: bool = typer.Option(False, "--gif", help="Also write the animation simulation.gif (60 frames unless --frames; about 1 s more)."),
     frames: int | None = typer.Option(None, "--frames", help=f"Frames of the GIF animation, 0...{MAX_FRAMES} (dimensionless count; a number above 0 implies --gif; default 60 with --gif, else 0: none)."),
-    no_plots: bool = typer.Option(False, "--no-plots", help="Skip PNGs and GIF."),
+    plots: bool | None = typer.Option(None, "--plots/--no-plots", help="--plots: also draw the PNGs (simulation.png: tensions, speeds and contact forces; frame.png: the drive at the last instant; startup.png of a project run; about 1 s more). --no-plots: no pictures at all, not even a --gif. Default: the GIF only if asked, no PNGs."),
     as_json: bool = typer.Option(False, "--json", help="Print the summary as JSON (SI units)."),
     motor: bool = typer.Option(False, "--motor", help="Project files: drive the driving wheel with an induction motor on the Kloss curve, rated at [load] power at the drive speed (chaindrive.drivetrain.motor.Motor.rated: rated slip and breakdown-torque ratio of a high-slip mining motor), switched on direct at t = 0, instead of the prescribed speed ramp."),
     motor_inertia: str | None = typer.Option(None, "--motor-inertia", help=unit_help("With --motor: rotor and coupling inertia reduced to the driving wheel's shaft (J_motor times the gear ratio squared), added to the wheel's (default 0); with --coupling the inertia of the motor's own degree of freedom (required, > 0).", "kg*m**2", "835 kg*m**2")),
@@ -58,7 +60,7 @@ def simulate_command(
     # needs --force, a folder with other files is refused
     with claim_output_dir(output, force=force, inputs=(project,) if project is not None else ()):
         _simulate(project, example, duration, output, speed, load, ramp,
-                  (60 if gif else 0) if frames is None else frames, no_plots, as_json, force,
+                  (60 if gif else 0) if frames is None else frames, plots, as_json, force,
                   DriveProfile(motor, motor_inertia, stop, stop_ramp, ripple, ripple_frequency, coupling,
                                coupling_slip, coupling_stall, secondary_inertia), cad_frame)
 
@@ -80,7 +82,7 @@ class DriveProfile:
 
 
 def _simulate(project: Path | None, example: str | None, duration: str | None, output: Path,
-              speed: str | None, load: str | None, ramp: str | None, frames: int, no_plots: bool,
+              speed: str | None, load: str | None, ramp: str | None, frames: int, plots: bool | None,
               as_json: bool, force: bool, profile: DriveProfile | None = None, cad_frame: str | None = None) -> None:
     profile = DriveProfile() if profile is None else profile
     motor, motor_inertia, stop, stop_ramp = profile.motor, profile.motor_inertia, profile.stop, profile.stop_ramp
@@ -194,9 +196,9 @@ def _simulate(project: Path | None, example: str | None, duration: str | None, o
     final_output = output
     with atomic_output_dir(final_output, force=force,
                            inputs=(project,) if project is not None else ()) as output:  # moved into place when complete
-        _write_outputs(res, output, no_plots, frames)
+        _write_outputs(res, output, plots, frames)
         if project is not None:
-            _write_start_up(res, model, output, no_plots)
+            _write_start_up(res, model, output, bool(plots))
         if frame_time is not None:
             from ..cad.assembly import frame_assembly
             from .cad import export_assembly
@@ -230,23 +232,26 @@ def _coupling(profile: DriveProfile, drive: Any, motor: Any) -> Any:
                                nominal_slip=s_n, stall_ratio=k)
 
 
-def _write_outputs(res, output: Path, no_plots: bool, frames: int) -> None:
-    """Write the npz, JSON, PNGs and GIF of a run into ``output``."""
+def _write_outputs(res, output: Path, plots: bool | None, frames: int) -> None:
+    """Write the npz and JSON of a run into ``output``; the PNGs if ``plots``, the GIF if
+    ``frames`` and not ``plots is False`` (``--no-plots``: no pictures at all)."""
     res.save_npz(output / "simulation.npz")
     (output / "simulation.json").write_text(json.dumps(res.summary, indent=2) + "\n")
-    if not no_plots:
+    if plots:
         # bare Agg figures, without pyplot (plotting._axes.subplots): 0.2-0.3 s and 25 MB less
-        from ..plotting.simulation import drive_frame_plot, simulation_animation, simulation_plot
+        from ..plotting.simulation import drive_frame_plot, simulation_plot
 
         simulation_plot(res).savefig(output / "simulation.png", dpi=100)
         drive_frame_plot(res).savefig(output / "frame.png", dpi=100)
-        if frames > 0:
-            simulation_animation(res, output / "simulation.gif", frames=frames)
+    if frames > 0 and plots is not False:
+        from ..plotting.simulation import simulation_animation
+
+        simulation_animation(res, output / "simulation.gif", frames=frames)
 
 
-def _write_start_up(res, model, output: Path, no_plots: bool) -> None:
+def _write_start_up(res, model, output: Path, plots: bool) -> None:
     """The start-up's tensions at the head and the peak-tension envelope along the path:
-    ``startup.json`` (SI units) and ``startup.png``."""
+    ``startup.json`` (SI units) and, if ``plots``, ``startup.png``."""
     from ..simulation.conveyor import start_up_of
 
     su = start_up_of(res, model)
@@ -254,7 +259,7 @@ def _write_start_up(res, model, output: Path, no_plots: bool) -> None:
             "envelope": {"position": su.envelope_position.tolist(), "peak": su.envelope_peak.tolist(),
                          "low": su.envelope_low.tolist()}}
     (output / "startup.json").write_text(json.dumps(data) + "\n")
-    if not no_plots:
+    if plots:
         import matplotlib.pyplot as plt
 
         from ..plotting.conveyor import startup_plot

@@ -222,3 +222,76 @@ def static_system(x, npins, wp, theta, slide, th_idx, s_idx, gd, tab, par, th_sp
                 nnz = _put(rows, cols, vals, nnz, 2 * i + 1, 2 * i, kg * mx * my)
                 nnz = _put(rows, cols, vals, nnz, 2 * i + 1, 2 * i + 1, kg * my * my)
     return energy, nnz
+
+
+@njit(cache=True)
+def band_solve(ab, kl, b):
+    """Solve ``A x = b`` for a banded ``A`` by LU with partial pivoting (internal).
+
+    ``ab`` (kl + ku + 1, n): ``A`` in LAPACK's band storage, ``ab[ku + i − j, j] = A[i, j]``
+    (the layout of ``scipy.linalg.solve_banded``); ``b`` (n, m). The steps of LAPACK's
+    ``dgbtf2`` (the column's largest entry as pivot, the row interchange, the multipliers
+    by the pivot's reciprocal, the rank-one update of the columns the pivots reach) and
+    ``dgbtrs`` (forward substitution with the interchanges, back substitution with the
+    upper band of width ``kl + ku``): cost ``n kl (kl + ku)``. Returns ``(x, info)``,
+    ``info = j + 1`` when the pivot of column ``j`` is zero (``A`` singular), else 0.
+
+    References: E. Anderson et al., *LAPACK Users' Guide*, 3rd ed., SIAM 1999, section
+    2.4.2 (``xGBSV``) and 5.3.3 (band storage); G. H. Golub, C. F. Van Loan, *Matrix
+    Computations*, 4th ed., section 4.3.5 (band Gaussian elimination with pivoting).
+    """
+    n = ab.shape[1]
+    ku = ab.shape[0] - 1 - kl
+    kv = kl + ku
+    w = np.zeros((2 * kl + ku + 1, n))
+    w[kl:, :] = ab
+    x = b.copy()
+    m = x.shape[1]
+    ipiv = np.empty(n, np.int64)
+    ju = 0
+    for j in range(n):  # A[i, c] is w[kv + i − c, c]
+        km = min(kl, n - 1 - j)
+        jp = 0
+        big = abs(w[kv, j])
+        for i in range(1, km + 1):
+            if abs(w[kv + i, j]) > big:
+                big = abs(w[kv + i, j])
+                jp = i
+        ipiv[j] = j + jp
+        if w[kv + jp, j] == 0.0:
+            return x, j + 1
+        ju = max(ju, min(j + ku + jp, n - 1))
+        if jp != 0:
+            for c in range(j, ju + 1):
+                t = w[kv + j - c, c]
+                w[kv + j - c, c] = w[kv + j + jp - c, c]
+                w[kv + j + jp - c, c] = t
+        if km > 0:
+            r = 1.0 / w[kv, j]
+            for i in range(1, km + 1):
+                w[kv + i, j] *= r
+            for c in range(j + 1, ju + 1):
+                u = w[kv + j - c, c]
+                if u != 0.0:
+                    for i in range(1, km + 1):
+                        w[kv + j + i - c, c] -= w[kv + i, j] * u
+    for j in range(n - 1):
+        p = ipiv[j]
+        if p != j:
+            for k in range(m):
+                t = x[p, k]
+                x[p, k] = x[j, k]
+                x[j, k] = t
+        for i in range(1, min(kl, n - 1 - j) + 1):
+            f = w[kv + i, j]
+            for k in range(m):
+                x[j + i, k] -= f * x[j, k]
+    for j in range(n - 1, -1, -1):
+        d = w[kv, j]
+        for k in range(m):
+            x[j, k] /= d
+        for i in range(max(0, j - kv), j):
+            f = w[kv + i - j, j]
+            for k in range(m):
+                x[i, k] -= f * x[j, k]
+    return x, 0

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import os
 from collections.abc import Sequence
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, fields
 from typing import TYPE_CHECKING
 
 import numpy as np
@@ -132,10 +132,16 @@ class SimulationResult(Result):
         other = self.slack_span if span is self.tight_span else self.tight_span
         return span_tension(self.positions, self.tension, span, other)
 
-    def save_npz(self, path: str | os.PathLike[str]) -> None:
-        """Write every array (and scalars) to a ``.npz`` file."""
-        data = {k: v for k, v in self.__dict__.items() if k != "summary"}
-        np.savez_compressed(path, **data)
+    def save_npz(self, path: str | os.PathLike[str], *, compressed: bool = False) -> None:
+        """Write every array (and scalars) to a ``.npz`` file (``numpy.load`` reads it
+        without ``allow_pickle``): the dataclass fields but the summary; not the
+        ``final_state``.
+
+        Uncompressed by default: the recorded floats compress by a quarter at most
+        (6.6 MB to 4.9 MB for the 0.5 s roller example) and the compression costs 0.2 s;
+        ``compressed=True`` for a smaller file."""
+        data = {f.name: getattr(self, f.name) for f in fields(self) if f.name != "summary"}
+        (np.savez_compressed if compressed else np.savez)(path, **data)
 
     def plot(self, *, ax: Sequence[Axes] | None = None) -> Figure:
         """Standard views (see :func:`chaindrive.plotting.simulation.simulation_plot`)."""
@@ -150,7 +156,20 @@ def span_tension(positions: np.ndarray, tension: np.ndarray, span: np.ndarray,
     The link nearest the span's mid-point among the links nearer to this span's line
     than to the ``other`` span's (a deeply sagging span lies nearer another span's
     mid-point). ``positions`` (R, N, 2) [m], ``tension`` (R, N) [N], spans (2, 2) [m].
+    Computed in blocks of ``_ROWS`` records (the temporaries are a dozen arrays of the
+    positions' size: 15 MB for the 0.5 s roller example at once).
     """
+    out = np.empty(len(positions), dtype=np.result_type(tension, np.float64))
+    for a in range(0, len(positions), _ROWS):
+        out[a:a + _ROWS] = _span_tension_rows(positions[a:a + _ROWS], tension[a:a + _ROWS], span, other)
+    return out
+
+
+#: records per block of :func:`span_tension`
+_ROWS = 256
+
+
+def _span_tension_rows(positions, tension, span, other):
     mid = 0.5 * (span[0] + span[1])
     lm = 0.5 * (positions + np.roll(positions, -1, axis=1))
 
