@@ -5,10 +5,11 @@ from __future__ import annotations
 import dataclasses
 import itertools
 import math
+import warnings
 from typing import TYPE_CHECKING, Any
 
 from .._validation import check_positive, check_range
-from ..errors import ChainDriveError, InputError
+from ..errors import ChainDriveError, ChainDriveWarning, InputError
 
 if TYPE_CHECKING:
     from ..drive.model import Drive
@@ -160,7 +161,11 @@ def model_from_drive(drive: Drive, *, ramp_time: float = 0.2, axial_stiffness: f
         raise InputError(f"simulation: a round link chain needs an even number of links, the "
                          f"drive has {int(links)} (set links = {int(links) + 1} in the project)")
     try:
-        slack = float(drive_loads(drive).slack)
+        # only the slack tension, as the assembly's pretension guess: the loads part's other
+        # numbers (and their validity warnings: the running tension's, ...) are not this run's
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", ChainDriveWarning)
+            slack = float(drive_loads(drive).slack)
     except ChainDriveError:  # a drive the loads part refuses: a pretension guess is enough for the assembly
         slack = 200.0
     if axial_stiffness is not None:
