@@ -122,3 +122,12 @@ def test_default_run_loads_neither_matplotlib_nor_scipy_linalg(tmp_path):
             "print(code, loaded)\n")
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=300)
     assert out.stdout.strip().splitlines()[-1] == "0 []", out.stdout[-500:] + out.stderr[-2000:]
+
+
+def test_bad_option_is_refused_before_any_progress(tmp_path, capsys):
+    # the options are read before "assembling the model...": a refused run shows one line only
+    assert main(["simulate", "--example", "roller", "--duration", "5", "-o", str(tmp_path / "out")]) == 2
+    err = capsys.readouterr().err
+    assert "assembling" not in err
+    assert err.strip().splitlines() == ["error: --duration: give a unit, e.g. \"5 s\" or \"5 ms\" (got '5')"]
+    assert not (tmp_path / "out").exists()

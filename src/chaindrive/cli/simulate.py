@@ -89,15 +89,6 @@ def _simulate(project: Path | None, example: str | None, duration: str | None, o
     ripple, ripple_frequency = profile.ripple, profile.ripple_frequency
     from .._io import atomic_output_dir
 
-    typer.echo("assembling the model...", err=True)
-    from ..simulation import (
-        conveyor_example,
-        link_example,
-        model_from_drive,
-        roller_example,
-        simulate,
-    )
-
     long = example == "conveyor"
     frame_time = quantity(cad_frame, "s", "cad-frame") if cad_frame else None
     if frame_time is not None and project is None:
@@ -116,6 +107,14 @@ def _simulate(project: Path | None, example: str | None, duration: str | None, o
                                 or profile.coupling):
         raise InputError("--motor, --motor-inertia, --coupling, --stop, --stop-ramp, --ripple and "
                          "--ripple-frequency apply to project files, not to --example")
+    typer.echo("assembling the model...", err=True)  # the options above read: progress from here
+    from ..simulation import (
+        conveyor_example,
+        link_example,
+        model_from_drive,
+        roller_example,
+        simulate,
+    )
     if example is not None:
 
         def conveyor(angular_velocity: float, load_torque: float, ramp_time: float) -> Any:
