@@ -7,7 +7,6 @@ Roller chains on sprockets and round link chains on pocket wheels (links ``t + d
 See ``docs/simulation.md`` for the model, the integrator and the validation.
 """
 
-from . import _numba_setup  # noqa: F401 - first: numba's BLAS probe would load scipy.linalg
 from .examples import link_example, roller_example
 from .from_drive import (
     channel_guides,

@@ -105,13 +105,13 @@ def _bordered_solve(nx, npins, hessian, diagonal, rhs):
     """Solve ``(H + diag) y = rhs`` for the chain's bordered band structure.
 
     Pins 1 … N−1 (unknowns 2 … 2N−1) couple only to their neighbours: a band of half
-    width 3, solved by banded LU (LAPACK's ``gbsv`` steps, compiled:
-    :func:`._statics.band_solve`, so that an assembly does not load scipy.linalg, 16 MB
-    and 0.15 s); pin 0 (which closes the loop) and the
+    width 3, solved by banded LU (LAPACK ``gbsv``); pin 0 (which closes the loop) and the
     wheel unknowns form a small border, eliminated through its Schur complement. The
     cost is linear in the number of pins. Entries outside that structure (none in this
     model) fall back to a general sparse LU.
     """
+    from scipy.linalg import solve_banded
+
     rows, cols, vals = hessian
     lo, hi = 2, 2 * npins
     nin = hi - lo
@@ -142,9 +142,7 @@ def _bordered_solve(nx, npins, hessian, diagonal, rhs):
     sel = ~inner_r & ~inner_c
     np.add.at(f, (where[rows[sel]], where[cols[sel]]), vals[sel])
     f[np.arange(nb), np.arange(nb)] += diagonal[border]
-    z, info = S.band_solve(ab, 3, np.column_stack([rhs[lo:hi], e_in]))
-    if info:
-        raise np.linalg.LinAlgError(f"singular matrix (band pivot {info})")
+    z = solve_banded((3, 3), ab, np.column_stack([rhs[lo:hi], e_in]), check_finite=False)
     schur = f - e_out @ z[:, 1:]
     v = np.linalg.solve(schur, rhs[border] - e_out @ z[:, 0])
     y = np.empty(nx)
