@@ -65,6 +65,10 @@ __all__ = ["Lanes", "integrate_implicit_lanes", "start_lane"]
 _OPTS = {"cache": True, "fastmath": False, "error_model": "numpy"}
 
 
+#: the attributes of :class:`Lanes` with the lanes as their second dimension
+_PIN_ARRAYS = frozenset({"x", "y", "vx", "vy"})
+
+
 class Lanes:
     """The state and the work arrays of ``V`` lanes of one layout (``n`` pins, ``nw``
     wheels, ``ng`` guides, seat tables of ``smax`` seats), ``R`` records per segment.
@@ -108,6 +112,14 @@ class Lanes:
                 self.t0, self.nsteps, self.every, self.step, self.nrec, self.active,
                 self.countdown, self.vmax_s, self.cand, self.gcache, self.ncand, self.gcand,
                 self.ngcand, self.rec_t, self.rec_tension, self.rec_ws, self.rec_pos)
+
+    def take(self, keep) -> Lanes:
+        """A new :class:`Lanes` of the lanes ``keep`` (in that order), each where it stands
+        (mid-segment included)."""
+        new = object.__new__(Lanes)
+        for name, value in vars(self).items():
+            setattr(new, name, value[:, keep].copy() if name in _PIN_ARRAYS else value[keep].copy())
+        return new
 
     def load(self, v: int, pos, vel, ws, wp, gd, tab, par, t0: float, nsteps: int,
              every: int) -> None:
@@ -226,17 +238,16 @@ def _lane_contacts(v, x, y, vx, vy, fx, fy, mxx, mxy, myy, ws, wp, gd, tab, par,
             dn = nx * ddx + ny * ddy
             dtt = -ny * ddx + nx * ddy
             fsl += fn0 * dn - ft0 * dtt
-            ci = cinfo[v, w, ic]
-            ci[C_BETA] = betac
-            ci[C_S] = s
-            ci[C_NX] = nx
-            ci[C_NY] = ny
-            ci[C_L] = lev
-            ci[C_LT] = levt
-            ci[C_DN] = dn
-            ci[C_DT] = dtt
-            ci[C_FN0] = fn0
-            ci[C_FT0] = ft0
+            cinfo[v, w, ic, C_BETA] = betac
+            cinfo[v, w, ic, C_S] = s
+            cinfo[v, w, ic, C_NX] = nx
+            cinfo[v, w, ic, C_NY] = ny
+            cinfo[v, w, ic, C_L] = lev
+            cinfo[v, w, ic, C_LT] = levt
+            cinfo[v, w, ic, C_DN] = dn
+            cinfo[v, w, ic, C_DT] = dtt
+            cinfo[v, w, ic, C_FN0] = fn0
+            cinfo[v, w, ic, C_FT0] = ft0
         wtq[v, w] = tq
         wsf[v, w] = fsl
         wsv[w, K.S_TORQUE] = tq
@@ -291,28 +302,27 @@ def _drop_tensile(v, cinfo, ncand, cand, qrot, qsl, dq, dvx, dvy, yx, yy, mxx, m
         dom = dq[v, qrot[v, w]] if qrot[v, w] >= 0 else 0.0
         dsd = dq[v, qsl[v, w]] if qsl[v, w] >= 0 else 0.0
         for ic in range(ncand[v, w]):
-            ci = cinfo[v, w, ic]
-            be = ci[C_BETA]
+            be = cinfo[v, w, ic, C_BETA]
             if be == 0.0:
                 continue
             i = cand[v, w, ic]
-            nx = ci[C_NX]
-            ny = ci[C_NY]
-            dvn = nx * dvx[i, v] + ny * dvy[i, v] - dom * ci[C_L] - dsd * ci[C_DN]
-            fn0 = ci[C_FN0]
+            nx = cinfo[v, w, ic, C_NX]
+            ny = cinfo[v, w, ic, C_NY]
+            dvn = nx * dvx[i, v] + ny * dvy[i, v] - dom * cinfo[v, w, ic, C_L] - dsd * cinfo[v, w, ic, C_DN]
+            fn0 = cinfo[v, w, ic, C_FN0]
             if fn0 + be * dvn >= 0.0:
                 continue
             changed = True
-            ft0 = ci[C_FT0]
-            s = ci[C_S]
+            ft0 = cinfo[v, w, ic, C_FT0]
+            s = cinfo[v, w, ic, C_S]
             yx[i, v] += fn0 * nx + ft0 * ny
             yy[i, v] += fn0 * ny - ft0 * nx
             _add_pin(mxx, mxy, myy, i, v, -be, nx, ny)
             _add_pin(mxx, mxy, myy, i, v, -s, -ny, nx)
-            wtq[v, w] -= fn0 * ci[C_L] - ft0 * ci[C_LT]
-            wsf[v, w] -= fn0 * ci[C_DN] - ft0 * ci[C_DT]
-            ci[C_BETA] = 0.0
-            ci[C_S] = 0.0
+            wtq[v, w] -= fn0 * cinfo[v, w, ic, C_L] - ft0 * cinfo[v, w, ic, C_LT]
+            wsf[v, w] -= fn0 * cinfo[v, w, ic, C_DN] - ft0 * cinfo[v, w, ic, C_DT]
+            cinfo[v, w, ic, C_BETA] = 0.0
+            cinfo[v, w, ic, C_S] = 0.0
     return changed
 
 
@@ -360,18 +370,17 @@ def _border_rows(v, ws, wp, par, ncand, cand, cinfo, qrot, qsl, bx, by, sq, fq, 
         if qr < 0 and qs < 0:
             continue
         for ic in range(ncand[v, w]):
-            ci = cinfo[v, w, ic]
-            be = ci[C_BETA]
+            be = cinfo[v, w, ic, C_BETA]
             if be == 0.0:
                 continue
-            s = ci[C_S]
+            s = cinfo[v, w, ic, C_S]
             i = cand[v, w, ic]
-            nx = ci[C_NX]
-            ny = ci[C_NY]
-            lev = ci[C_L]
-            levt = ci[C_LT]
-            dn = ci[C_DN]
-            dtt = ci[C_DT]
+            nx = cinfo[v, w, ic, C_NX]
+            ny = cinfo[v, w, ic, C_NY]
+            lev = cinfo[v, w, ic, C_L]
+            levt = cinfo[v, w, ic, C_LT]
+            dn = cinfo[v, w, ic, C_DN]
+            dtt = cinfo[v, w, ic, C_DT]
             if qr >= 0:
                 bx[qr, i, v] -= be * lev * nx - s * levt * ny
                 by[qr, i, v] -= be * lev * ny + s * levt * nx
