@@ -44,7 +44,9 @@ def _seat_lane(qx, qy, ex, ey, cth, sth, rad, rr, delta, cps, sps, re, arcflank,
     :func:`._contact.seat_penetration` evaluated with the same operations, the one that
     applies selected (one square root, two divisions), so that the variants' loop runs
     as vector instructions and each lane's result equals the scalar one to the last bit.
-    Returns ``(pen, nx, ny)``; the normal is meaningless where ``pen <= 0``."""
+    Returns ``(pen, nx, ny, ds)``; the normal is meaningless where ``pen <= 0``; ``ds`` the
+    distance from the seating arc's centre where the roller is in the seat (−1 elsewhere:
+    the seat's curvature is ``1/ds``)."""
     erx = ex * cth - ey * sth
     ery = ex * sth + ey * cth
     a = qx * erx + qy * ery - rad
@@ -73,7 +75,7 @@ def _seat_lane(qx, qy, ex, ey, cth, sth, rad, rr, delta, cps, sps, re, arcflank,
     den = 1.0 if straight else d
     na = nan_ / den
     nb = nbn / den
-    return pen, na * erx - nb * ery, na * ery + nb * erx
+    return pen, na * erx - nb * ery, na * ery + nb * erx, d if seat else -1.0
 
 
 #: lanes of a block: the branch-free contact loop runs over the variants of one block, its
@@ -184,7 +186,7 @@ def _slot_forces(sq, so, gc, g0, pt, p0, nb):
     for v in range(nb):
         qx = sq[Q_QX * LANES + v]
         qy = sq[Q_QY * LANES + v]
-        pen, nx, ny = _seat_lane(qx, qy, sq[Q_EX * LANES + v], sq[Q_EY * LANES + v],
+        pen, nx, ny, _ = _seat_lane(qx, qy, sq[Q_EX * LANES + v], sq[Q_EY * LANES + v],
                                  sq[Q_CTH * LANES + v], sq[Q_STH * LANES + v],
                                  gb[G_RAD * LANES + v], pb[L.P_RROLLER * LANES + v],
                                  gb[G_DELTA * LANES + v], gb[G_CPS * LANES + v],
@@ -224,6 +226,54 @@ def _slot_forces(sq, so, gc, g0, pt, p0, nb):
         so[O_FX * LANES + v] = cfx
         so[O_FY * LANES + v] = cfy
         so[O_ON * LANES + v] = 1.0 if act else 0.0
+
+
+@njit(cache=True, fastmath=False, inline="always")
+def gather_slot(sq, b, i, v, w, nw, x, y, vx, vy, gc, g0, tab2, gcache, reach):
+    """Lane ``b`` of a candidate slot: pin ``i`` of variant ``v`` against wheel ``w``, its
+    offset and velocity in ``sq``, and its state there: none (outside the annulus where a
+    roller can touch), on the rim of a toothless idler (:func:`._contact.rim_gap` with
+    ``reach``) or in its seat (the last one kept when the pin is still within it, else the
+    walk of :func:`._contact.nearest_seat`; ``gcache`` updated)."""
+    qx = x[i, v] - sq[Q_CX * LANES + b]
+    qy = y[i, v] - sq[Q_CY * LANES + b]
+    sq[Q_QX * LANES + b] = qx
+    sq[Q_QY * LANES + b] = qy
+    sq[Q_VX * LANES + b] = vx[i, v]
+    sq[Q_VY * LANES + b] = vy[i, v]
+    r2 = qx * qx + qy * qy
+    if r2 > gc[g0 + G_ROUT2 * LANES + b] or r2 < gc[g0 + G_RIN2 * LANES + b]:
+        return
+    if gc[g0 + G_PLAIN * LANES + b] > 0.5:
+        pen, nx, ny, _ = C.rim_gap(qx, qy, r2, gc[g0 + G_RAD * LANES + b], reach)
+        sq[Q_ON * LANES + b] = 2.0
+        sq[Q_PEN * LANES + b] = pen
+        sq[Q_EX * LANES + b] = nx
+        sq[Q_EY * LANES + b] = ny
+        return
+    cth = sq[Q_CTH * LANES + b]
+    sth = sq[Q_STH * LANES + b]
+    qxw = qx * cth + qy * sth
+    qyw = -qx * sth + qy * cth
+    # the pin's last seat first (within both half-way boundaries: kept), as
+    # the first pass of the walk of nearest_seat; else the walk
+    g = gcache[v, w, i]
+    wv = v * nw + w
+    kept = False
+    if g >= 0:
+        ex = tab2[wv, g, 0]
+        ey = tab2[wv, g, 1]
+        ar = qxw * ex + qyw * ey
+        bt = -qxw * ey + qyw * ex
+        kept = not bt * tab2[wv, g, 2] > ar * tab2[wv, g, 3] \
+            and not -bt * tab2[wv, g, 4] > ar * tab2[wv, g, 5]
+    if not kept:
+        g, ex, ey = C.nearest_seat(tab2, wv, g, int(gc[g0 + G_IZ * LANES + b]), qxw, qyw,
+                                   gc[g0 + G_PA * LANES + b])
+    gcache[v, w, i] = g
+    sq[Q_ON * LANES + b] = 1.0
+    sq[Q_EX * LANES + b] = ex
+    sq[Q_EY * LANES + b] = ey
 
 
 @njit(cache=True, fastmath=False, error_model="numpy")
@@ -274,45 +324,7 @@ def _wheel_contacts(w, x, y, vx, vy, fx, fy, ws, wp, tab2, gc, pt, cand, gcache,
                     continue
                 i = cand[v, w, ic]
                 si[b] = i
-                qx = x[i, v] - sq[Q_CX * LANES + b]
-                qy = y[i, v] - sq[Q_CY * LANES + b]
-                sq[Q_QX * LANES + b] = qx
-                sq[Q_QY * LANES + b] = qy
-                sq[Q_VX * LANES + b] = vx[i, v]
-                sq[Q_VY * LANES + b] = vy[i, v]
-                r2 = qx * qx + qy * qy
-                if r2 > gc[g0 + G_ROUT2 * LANES + b] or r2 < gc[g0 + G_RIN2 * LANES + b]:
-                    continue
-                if gc[g0 + G_PLAIN * LANES + b] > 0.5:
-                    pen, nx, ny, _ = C.rim_gap(qx, qy, r2, gc[g0 + G_RAD * LANES + b], 0.0)
-                    sq[Q_ON * LANES + b] = 2.0
-                    sq[Q_PEN * LANES + b] = pen
-                    sq[Q_EX * LANES + b] = nx
-                    sq[Q_EY * LANES + b] = ny
-                    continue
-                cth = sq[Q_CTH * LANES + b]
-                sth = sq[Q_STH * LANES + b]
-                qxw = qx * cth + qy * sth
-                qyw = -qx * sth + qy * cth
-                # the pin's last seat first (within both half-way boundaries: kept), as
-                # the first pass of the walk of nearest_seat; else the walk
-                g = gcache[v, w, i]
-                wv = v * nw + w
-                kept = False
-                if g >= 0:
-                    ex = tab2[wv, g, 0]
-                    ey = tab2[wv, g, 1]
-                    ar = qxw * ex + qyw * ey
-                    bt = -qxw * ey + qyw * ex
-                    kept = not bt * tab2[wv, g, 2] > ar * tab2[wv, g, 3] \
-                        and not -bt * tab2[wv, g, 4] > ar * tab2[wv, g, 5]
-                if not kept:
-                    g, ex, ey = C.nearest_seat(tab2, wv, g, int(gc[g0 + G_IZ * LANES + b]), qxw, qyw,
-                                               gc[g0 + G_PA * LANES + b])
-                gcache[v, w, i] = g
-                sq[Q_ON * LANES + b] = 1.0
-                sq[Q_EX * LANES + b] = ex
-                sq[Q_EY * LANES + b] = ey
+                gather_slot(sq, b, i, v, w, nw, x, y, vx, vy, gc, g0, tab2, gcache, 0.0)
             _slot_forces(sq, so, gc, g0, pt, p0, nb)
             # scatter
             for b in range(nb):

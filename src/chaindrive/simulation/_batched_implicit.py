@@ -10,11 +10,14 @@ alone: the same operations in the same order, so the results are equal to the la
 
 Layout: the pins' coordinates, velocities and the link system's work arrays as
 ``(N, V)`` arrays, the lanes the inner, contiguous dimension, so that the link forces,
-the pins' 2 x 2 inverses, the Woodbury passes, the fused cyclic tridiagonal
-factorisation and substitutions (:func:`._banded._factor_solve4`, here with every
-recurrence carried per lane) and the pins' update run as vector instructions across the
-lanes. The wheel contacts, the wheels' bordered (Schur complement) rows, the active set
-of the contacts and the wheels' update per lane, with the single kernel's code.
+the pins' 2 x 2 inverses, the Woodbury passes, the cyclic tridiagonal factorisation and
+substitutions (:func:`._banded._factor_solve4`'s arithmetic with every recurrence carried
+per lane) and the pins' update run as vector instructions across the lanes
+(:mod:`._lane_passes`); the contact candidates listed with the pins read across the
+lanes; the wheel contacts a candidate slot at a time across the lanes, their law
+branch-free (:mod:`._lane_contacts`); the guides, the wheels' bordered (Schur
+complement) rows, the active set of the contacts (a lane solved again alone by
+``_implicit._solve`` on its columns) and the wheels' update per lane.
 
 Lanes run segments. A segment is one call of the single kernel: ``nsteps`` steps from
 time ``t0`` with a record every ``every`` steps, the contact candidates and the seats'
@@ -28,12 +31,15 @@ loops vectorise; the values are the same).
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 from numba import njit
 
 from . import _contact as C
 from . import _kernel as K
 from ._banded import _apply_inverse, _small_solve
+from ._batched import LANES, NQ, _wheel_constants
 from ._implicit import (
     C_BETA,
     C_DN,
@@ -49,6 +55,7 @@ from ._implicit import (
     _solve,
 )
 from ._kernel import advance_motor, speed_factor, wheel_drive_torque
+from ._lane_contacts import NO, _add_pin, wheel_contacts
 from ._lane_passes import (
     _back,
     _entries,
@@ -164,18 +171,15 @@ def start_lane(v, t0, nsteps, every, t0s, nstepss, everys, step, nrec, active, c
 
 
 @njit(**_OPTS)
-def _lane_contacts(v, x, y, vx, vy, fx, fy, mxx, mxy, myy, ws, wp, gd, tab, par, omu, cand,
-                   gcache, ncand, gcand, ngcand, cinfo, wtq, wsf, rebuild, margin, t):
-    """The wheel and guide contacts of lane ``v`` (forces and 2 x 2 matrix terms on its
-    pins, the wheels' linearised torque and slide force), as the single kernel."""
-    nw = ws.shape[1]
+def _lane_guides(v, x, y, vx, vy, fx, fy, mxx, mxy, myy, gd, par, gcand, ngcand, rebuild,
+                 margin):
+    """The guide contacts of lane ``v`` (forces and 2 x 2 matrix terms on its pins), as
+    the single kernel."""
     ng = gd.shape[1]
     h = par[v, K.P_DT]
     th = par[v, K.P_THETA]
     thh = th * h
     rr = par[v, K.P_RROLLER]
-    kc = par[v, K.P_KC]
-    cc = par[v, K.P_CC]
     mu = par[v, K.P_MU]
     veps = par[v, K.P_VEPS]
     dtref = par[v, K.P_DTREF]
@@ -184,74 +188,7 @@ def _lane_contacts(v, x, y, vx, vy, fx, fy, mxx, mxy, myy, ws, wp, gd, tab, par,
     cg = par[v, K.P_CG]
     gx = par[v, K.P_GX]
     gy = par[v, K.P_GY]
-    betac = th * (h * kc + cc)
     betag = th * (h * kg + cg)
-    wsv = ws[v]
-    wpv = wp[v]
-    tabv = tab[v]
-    for w in range(nw):
-        geo = C.wheel_geometry(wpv, wsv, w, rr)
-        cx = geo[0]
-        cy = geo[1]
-        om = omu[v, w]
-        sd = wsv[w, K.S_SDOT]
-        ddx = wpv[w, K.W_DX]
-        ddy = wpv[w, K.W_DY]
-        tq = 0.0
-        fsl = 0.0
-        if rebuild:
-            rc = geo[10] + margin
-            C.wheel_candidates(x[:, v], y[:, v], cx, cy, rc * rc, cand[v], gcache[v], ncand[v], w)
-        for ic in range(ncand[v, w]):
-            cinfo[v, w, ic, C_BETA] = 0.0
-            cinfo[v, w, ic, C_S] = 0.0
-            i = cand[v, w, ic]
-            pen, nx, ny, curv, qx, qy, g = C.pin_contact(x[i, v], y[i, v], cx, cy, geo, tabv, w,
-                                                         gcache[v, w, i], rr, margin)
-            gcache[v, w, i] = g
-            if pen <= -margin:
-                continue
-            rvx = vx[i, v] - (-om * qy + sd * ddx)
-            rvy = vy[i, v] - (om * qx + sd * ddy)
-            vn = rvx * nx + rvy * ny
-            fn0 = kc * (pen + thh * vn) + cc * vn
-            if fn0 <= 0.0 and pen <= 0.0:
-                continue
-            fn = kc * pen + cc * vn if pen > 0.0 else 0.0
-            if fn < 0.0:
-                fn = 0.0
-            vt = -rvx * ny + rvy * nx
-            ft0, ve = C.friction(mu, fn, vt, dtref, inv_m, veps)
-            s = mu * fn / ve if abs(vt) < ve else 0.0
-            if curv > 0.0:
-                kt = fn * curv
-                ft0 -= thh * kt * vt
-                s += h * kt
-            s *= th
-            fx[i, v] += -fn0 * nx - ft0 * ny
-            fy[i, v] += -fn0 * ny + ft0 * nx
-            _add_pin(mxx, mxy, myy, i, v, betac, nx, ny)
-            _add_pin(mxx, mxy, myy, i, v, s, -ny, nx)
-            lev = qx * ny - qy * nx
-            levt = qx * nx + qy * ny
-            tq += fn0 * lev - ft0 * levt
-            dn = nx * ddx + ny * ddy
-            dtt = -ny * ddx + nx * ddy
-            fsl += fn0 * dn - ft0 * dtt
-            cinfo[v, w, ic, C_BETA] = betac
-            cinfo[v, w, ic, C_S] = s
-            cinfo[v, w, ic, C_NX] = nx
-            cinfo[v, w, ic, C_NY] = ny
-            cinfo[v, w, ic, C_L] = lev
-            cinfo[v, w, ic, C_LT] = levt
-            cinfo[v, w, ic, C_DN] = dn
-            cinfo[v, w, ic, C_DT] = dtt
-            cinfo[v, w, ic, C_FN0] = fn0
-            cinfo[v, w, ic, C_FT0] = ft0
-        wtq[v, w] = tq
-        wsf[v, w] = fsl
-        wsv[w, K.S_TORQUE] = tq
-        wsv[w, K.S_SFORCE] = fsl
     gdv = gd[v]
     for g in range(ng):
         if rebuild:
@@ -284,14 +221,6 @@ def _lane_contacts(v, x, y, vx, vy, fx, fy, mxx, mxy, myy, ws, wp, gd, tab, par,
             fy[i, v] += fn0 * my - ft0 * mx
             _add_pin(mxx, mxy, myy, i, v, betag, mx, my)
             _add_pin(mxx, mxy, myy, i, v, s, my, -mx)
-
-
-@njit(cache=True, fastmath=False, inline="always")
-def _add_pin(mxx, mxy, myy, i, v, coef, ax, ay):
-    """``M_i += coef (a aᵀ)`` of lane ``v``."""
-    mxx[i, v] += coef * ax * ax
-    mxy[i, v] += coef * ax * ay
-    myy[i, v] += coef * ay * ay
 
 
 @njit(**_OPTS)
@@ -454,6 +383,53 @@ def _wheels(v, ws, wp, par, qrot, qsl, fq, omu, t):
 
 
 @njit(**_OPTS)
+def _rebuild(due, x, y, vx, vy, ws, wp, par, margin, h, countdown, vmax_s, cand, gcache, ncand,
+             vm, rc2):
+    """The contact candidates of the lanes ``due``, as the single kernel lists them
+    (:func:`._contact.rebuild_every`, :func:`._contact.wheel_candidates`: the same pins in
+    the same order, the same countdown), the pins read across the lanes (contiguous)."""
+    n, nv = x.shape
+    nw = ws.shape[1]
+    for v in range(nv):
+        vm[v] = 0.0
+    for i in range(n):
+        for v in range(nv):
+            v2 = vx[i, v] * vx[i, v] + vy[i, v] * vy[i, v]
+            vm[v] = v2 if v2 > vm[v] else vm[v]
+    for v in range(nv):
+        if not due[v]:
+            continue
+        vmax = math.sqrt(vm[v])
+        vs = vmax_s[v]
+        for w in range(nw):
+            vmax_w = abs(ws[v, w, K.S_SDOT])
+            if vmax_w > vs:
+                vs = vmax_w
+        vmax_s[v] = vs
+        cnt = margin[v] / (4.0 * (vmax + vs + 1e-12) * h[v])
+        countdown[v] = 1 if cnt < 1.0 else (200 if cnt > 200.0 else int(cnt))
+        rr = par[v, K.P_RROLLER]
+        for w in range(nw):
+            geo = C.wheel_geometry(wp[v], ws[v], w, rr)
+            rc = geo[10] + margin[v]
+            rc2[v, w, 0] = geo[0]
+            rc2[v, w, 1] = geo[1]
+            rc2[v, w, 2] = rc * rc
+            for ic in range(ncand[v, w]):
+                gcache[v, w, cand[v, w, ic]] = -1
+            ncand[v, w] = 0
+    for w in range(nw):
+        for i in range(n):
+            for v in range(nv):
+                if due[v]:
+                    qx = x[i, v] - rc2[v, w, 0]
+                    qy = y[i, v] - rc2[v, w, 1]
+                    if qx * qx + qy * qy <= rc2[v, w, 2]:
+                        cand[v, w, ncand[v, w]] = i
+                        ncand[v, w] += 1
+
+
+@njit(**_OPTS)
 def _solve_all(act, nq, ws, wp, par, ncand, cand, cinfo, qrot, qsl, bx, by, zx, zy, sq, fq, wtq,
                wsf, tl, yx, yy, wxx, wxy, wyy, ux, uy, dg, of, dd, ff, dlast, bl, lams, inv_ak,
                dvx, dvy):
@@ -521,6 +497,7 @@ def integrate_implicit_lanes(x, y, vx, vy, ws, wp, gd, tab, par, t0, nsteps, eve
     lane is left inactive with its state and ``nrec[v]`` records."""
     n, nv = x.shape
     nw = ws.shape[1]
+    ng = gd.shape[1]
     # per-lane constants
     k = par[:, K.P_K].copy()
     c = par[:, K.P_C].copy()
@@ -568,6 +545,14 @@ def integrate_implicit_lanes(x, y, vx, vy, ws, wp, gd, tab, par, t0, nsteps, eve
     wsf = f2((nv, nw))
     omu = f2((nv, nw))
     act = np.zeros(nv, np.bool_)
+    gc, pt = _wheel_constants(wp, par)
+    tab2 = tab.reshape((nv * nw, tab.shape[2], tab.shape[3]))
+    sqb = f2(NQ * LANES)
+    sob = f2(NO * LANES)
+    sib = np.zeros(LANES, np.int64)
+    due = np.zeros(nv, np.bool_)
+    vm = f2(nv)
+    rc2 = f2((nv, nw, 3))
     tl = f2(nv)
     nrmax = rec_t.shape[1]
     taken = 0
@@ -579,6 +564,13 @@ def integrate_implicit_lanes(x, y, vx, vy, ws, wp, gd, tab, par, t0, nsteps, eve
         if not anyact:
             break
         _links(x, y, vx, vy, k, c, thh, rest, tension, tstar, ux, uy)
+        anydue = False
+        for v in range(nv):
+            due[v] = act[v] and countdown[v] <= 0
+            anydue = anydue or due[v]
+        if anydue:
+            _rebuild(due, x, y, vx, vy, ws, wp, par, margin, h, countdown, vmax_s, cand, gcache,
+                     ncand, vm, rc2)
         for v in range(nv):
             if not act[v]:
                 continue
@@ -593,14 +585,17 @@ def integrate_implicit_lanes(x, y, vx, vy, ws, wp, gd, tab, par, t0, nsteps, eve
                     omu[v, w] = 0.0
                 else:
                     omu[v, w] = ws[v, w, K.S_OMEGA]
-            rebuild = countdown[v] <= 0
-            if rebuild:
-                countdown[v], vmax_s[v] = C.rebuild_every(vx[:, v], vy[:, v], ws[v], margin[v],
-                                                          h[v], vmax_s[v])
             countdown[v] -= 1
-            _lane_contacts(v, x, y, vx, vy, fx, fy, mxx, mxy, myy, ws, wp, gd, tab, par, omu,
-                           cand, gcache, ncand, gcand, ngcand, cinfo, wtq, wsf, rebuild,
-                           margin[v], t)
+        for w in range(nw):
+            wheel_contacts(w, act, x, y, vx, vy, fx, fy, mxx, mxy, myy, ws, wp, par, omu, tab2,
+                           gc, pt, cand, gcache, ncand, cinfo, wtq, wsf, sqb, sob, sib)
+        for v in range(nv):
+            if not act[v]:
+                continue
+            if ng > 0:
+                _lane_guides(v, x, y, vx, vy, fx, fy, mxx, mxy, myy, gd, par, gcand, ngcand,
+                             due[v], margin[v])
+            t = tl[v]
             r = nrec[v]
             if step[v] % every[v] == 0 and r < nrmax:
                 rec_t[v, r] = t
