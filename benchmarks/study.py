@@ -24,8 +24,9 @@ Dynamic study (``--dynamic N``): N variants of the same drive (speed 300...1500 
 5...25 kW) with the outputs ``dynamics.peak_tension`` and ``dynamics.mean_tension`` (the
 running drive's steady state per variant) on 2 workers: ``dynamic study, N variants: T s on
 W workers`` (aim: 1,000 variants in < 2 min on 2 cores), each batch's drives stepped
-together by the batched implicit kernel (the study's default) and, in the same run, one
-``steady_state`` per variant (the same results), then the CPU time per variant of both and
+together by the batched implicit kernel (``chaindrive.study._dynamics.LANES = 64`` on the
+workers) and, in the same run, one ``steady_state`` per variant (the study's default;
+the same results), then the CPU time per variant of both and
 of the batched explicit kernel in one process.
 Usage: ``python benchmarks/study.py [--variants N] [--million] [--per-core] [--dynamic N]``
 (``--per-core``: only the three per-core figures).

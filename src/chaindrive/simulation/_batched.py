@@ -228,54 +228,6 @@ def _slot_forces(sq, so, gc, g0, pt, p0, nb):
         so[O_ON * LANES + v] = 1.0 if act else 0.0
 
 
-@njit(cache=True, fastmath=False, inline="always")
-def gather_slot(sq, b, i, v, w, nw, x, y, vx, vy, gc, g0, tab2, gcache, reach):
-    """Lane ``b`` of a candidate slot: pin ``i`` of variant ``v`` against wheel ``w``, its
-    offset and velocity in ``sq``, and its state there: none (outside the annulus where a
-    roller can touch), on the rim of a toothless idler (:func:`._contact.rim_gap` with
-    ``reach``) or in its seat (the last one kept when the pin is still within it, else the
-    walk of :func:`._contact.nearest_seat`; ``gcache`` updated)."""
-    qx = x[i, v] - sq[Q_CX * LANES + b]
-    qy = y[i, v] - sq[Q_CY * LANES + b]
-    sq[Q_QX * LANES + b] = qx
-    sq[Q_QY * LANES + b] = qy
-    sq[Q_VX * LANES + b] = vx[i, v]
-    sq[Q_VY * LANES + b] = vy[i, v]
-    r2 = qx * qx + qy * qy
-    if r2 > gc[g0 + G_ROUT2 * LANES + b] or r2 < gc[g0 + G_RIN2 * LANES + b]:
-        return
-    if gc[g0 + G_PLAIN * LANES + b] > 0.5:
-        pen, nx, ny, _ = C.rim_gap(qx, qy, r2, gc[g0 + G_RAD * LANES + b], reach)
-        sq[Q_ON * LANES + b] = 2.0
-        sq[Q_PEN * LANES + b] = pen
-        sq[Q_EX * LANES + b] = nx
-        sq[Q_EY * LANES + b] = ny
-        return
-    cth = sq[Q_CTH * LANES + b]
-    sth = sq[Q_STH * LANES + b]
-    qxw = qx * cth + qy * sth
-    qyw = -qx * sth + qy * cth
-    # the pin's last seat first (within both half-way boundaries: kept), as
-    # the first pass of the walk of nearest_seat; else the walk
-    g = gcache[v, w, i]
-    wv = v * nw + w
-    kept = False
-    if g >= 0:
-        ex = tab2[wv, g, 0]
-        ey = tab2[wv, g, 1]
-        ar = qxw * ex + qyw * ey
-        bt = -qxw * ey + qyw * ex
-        kept = not bt * tab2[wv, g, 2] > ar * tab2[wv, g, 3] \
-            and not -bt * tab2[wv, g, 4] > ar * tab2[wv, g, 5]
-    if not kept:
-        g, ex, ey = C.nearest_seat(tab2, wv, g, int(gc[g0 + G_IZ * LANES + b]), qxw, qyw,
-                                   gc[g0 + G_PA * LANES + b])
-    gcache[v, w, i] = g
-    sq[Q_ON * LANES + b] = 1.0
-    sq[Q_EX * LANES + b] = ex
-    sq[Q_EY * LANES + b] = ey
-
-
 @njit(cache=True, fastmath=False, error_model="numpy")
 def _wheel_contacts(w, x, y, vx, vy, fx, fy, ws, wp, tab2, gc, pt, cand, gcache, ncand, sq, so,
                     si):
@@ -324,7 +276,45 @@ def _wheel_contacts(w, x, y, vx, vy, fx, fy, ws, wp, tab2, gc, pt, cand, gcache,
                     continue
                 i = cand[v, w, ic]
                 si[b] = i
-                gather_slot(sq, b, i, v, w, nw, x, y, vx, vy, gc, g0, tab2, gcache, 0.0)
+                qx = x[i, v] - sq[Q_CX * LANES + b]
+                qy = y[i, v] - sq[Q_CY * LANES + b]
+                sq[Q_QX * LANES + b] = qx
+                sq[Q_QY * LANES + b] = qy
+                sq[Q_VX * LANES + b] = vx[i, v]
+                sq[Q_VY * LANES + b] = vy[i, v]
+                r2 = qx * qx + qy * qy
+                if r2 > gc[g0 + G_ROUT2 * LANES + b] or r2 < gc[g0 + G_RIN2 * LANES + b]:
+                    continue
+                if gc[g0 + G_PLAIN * LANES + b] > 0.5:
+                    pen, nx, ny, _ = C.rim_gap(qx, qy, r2, gc[g0 + G_RAD * LANES + b], 0.0)
+                    sq[Q_ON * LANES + b] = 2.0
+                    sq[Q_PEN * LANES + b] = pen
+                    sq[Q_EX * LANES + b] = nx
+                    sq[Q_EY * LANES + b] = ny
+                    continue
+                cth = sq[Q_CTH * LANES + b]
+                sth = sq[Q_STH * LANES + b]
+                qxw = qx * cth + qy * sth
+                qyw = -qx * sth + qy * cth
+                # the pin's last seat first (within both half-way boundaries: kept), as
+                # the first pass of the walk of nearest_seat; else the walk
+                g = gcache[v, w, i]
+                wv = v * nw + w
+                kept = False
+                if g >= 0:
+                    ex = tab2[wv, g, 0]
+                    ey = tab2[wv, g, 1]
+                    ar = qxw * ex + qyw * ey
+                    bt = -qxw * ey + qyw * ex
+                    kept = not bt * tab2[wv, g, 2] > ar * tab2[wv, g, 3] \
+                        and not -bt * tab2[wv, g, 4] > ar * tab2[wv, g, 5]
+                if not kept:
+                    g, ex, ey = C.nearest_seat(tab2, wv, g, int(gc[g0 + G_IZ * LANES + b]), qxw, qyw,
+                                               gc[g0 + G_PA * LANES + b])
+                gcache[v, w, i] = g
+                sq[Q_ON * LANES + b] = 1.0
+                sq[Q_EX * LANES + b] = ex
+                sq[Q_EY * LANES + b] = ey
             _slot_forces(sq, so, gc, g0, pt, p0, nb)
             # scatter
             for b in range(nb):

@@ -22,6 +22,7 @@ import math
 
 from numba import njit
 
+from . import _contact as C
 from . import _layout as L
 from ._batched import (
     G_ARC,
@@ -33,8 +34,13 @@ from ._batched import (
     G_DTB,
     G_DX,
     G_DY,
+    G_IZ,
+    G_PA,
+    G_PLAIN,
     G_RAD,
     G_RE,
+    G_RIN2,
+    G_ROUT2,
     G_SPS,
     G_STIP,
     G_TCA,
@@ -56,7 +62,6 @@ from ._batched import (
     Q_VX,
     Q_VY,
     _seat_lane,
-    gather_slot,
 )
 from ._implicit import C_BETA, C_DN, C_DT, C_FN0, C_FT0, C_L, C_LT, C_NX, C_NY, C_S
 
@@ -187,50 +192,92 @@ def wheel_contacts(w, act, x, y, vx, vy, fx, fy, mxx, mxy, myy, ws, wp, par, omu
                 cinfo[v, w, ic, C_S] = 0.0
                 i = cand[v, w, ic]
                 si[b] = i
-                gather_slot(sq, b, i, v, w, nw, x, y, vx, vy, gc, g0, tab2, gcache,
-                            0.25 * par[v, L.P_RROLLER])
+                # the gather of _batched._wheel_contacts (an inlined function taking the
+                # arrays would cost their reference counts per call), the rim with reach
+                qx = x[i, v] - sq[Q_CX * LANES + b]
+                qy = y[i, v] - sq[Q_CY * LANES + b]
+                sq[Q_QX * LANES + b] = qx
+                sq[Q_QY * LANES + b] = qy
+                sq[Q_VX * LANES + b] = vx[i, v]
+                sq[Q_VY * LANES + b] = vy[i, v]
+                r2 = qx * qx + qy * qy
+                if r2 > gc[g0 + G_ROUT2 * LANES + b] or r2 < gc[g0 + G_RIN2 * LANES + b]:
+                    continue
+                if gc[g0 + G_PLAIN * LANES + b] > 0.5:
+                    pen, nx, ny, _ = C.rim_gap(qx, qy, r2, gc[g0 + G_RAD * LANES + b],
+                                               0.25 * par[v, L.P_RROLLER])
+                    sq[Q_ON * LANES + b] = 2.0
+                    sq[Q_PEN * LANES + b] = pen
+                    sq[Q_EX * LANES + b] = nx
+                    sq[Q_EY * LANES + b] = ny
+                    continue
+                cth = sq[Q_CTH * LANES + b]
+                sth = sq[Q_STH * LANES + b]
+                qxw = qx * cth + qy * sth
+                qyw = -qx * sth + qy * cth
+                g = gcache[v, w, i]
+                wv = v * nw + w
+                kept = False
+                ex = 1.0
+                ey = 0.0
+                if g >= 0:
+                    ex = tab2[wv, g, 0]
+                    ey = tab2[wv, g, 1]
+                    ar = qxw * ex + qyw * ey
+                    bt = -qxw * ey + qyw * ex
+                    kept = not bt * tab2[wv, g, 2] > ar * tab2[wv, g, 3] \
+                        and not -bt * tab2[wv, g, 4] > ar * tab2[wv, g, 5]
+                if not kept:
+                    g, ex, ey = C.nearest_seat(tab2, wv, g, int(gc[g0 + G_IZ * LANES + b]), qxw,
+                                               qyw, gc[g0 + G_PA * LANES + b])
+                gcache[v, w, i] = g
+                sq[Q_ON * LANES + b] = 1.0
+                sq[Q_EX * LANES + b] = ex
+                sq[Q_EY * LANES + b] = ey
             _slot_law(sq, so, gc, g0, pt, p0, nb)
             for b in range(nb):
                 if so[O_ON * LANES + b] == 0.0:
                     continue
                 v = v0 + b
                 i = si[b]
-                _scatter(v, w, ic, i, sq[Q_QX * LANES + b], sq[Q_QY * LANES + b],
-                         so[O_NX * LANES + b], so[O_NY * LANES + b], so[O_FN0 * LANES + b],
-                         so[O_FT0 * LANES + b], so[O_S * LANES + b],
-                         fx, fy, mxx, mxy, myy, wp, par, cinfo, wtq, wsf)
+                # one contact on its pin, wheel and row (the single kernel's arithmetic)
+                qx = sq[Q_QX * LANES + b]
+                qy = sq[Q_QY * LANES + b]
+                nx = so[O_NX * LANES + b]
+                ny = so[O_NY * LANES + b]
+                fn0 = so[O_FN0 * LANES + b]
+                ft0 = so[O_FT0 * LANES + b]
+                s = so[O_S * LANES + b]
+                th = par[v, L.P_THETA]
+                betac = th * (par[v, L.P_DT] * par[v, L.P_KC] + par[v, L.P_CC])
+                ddx = wp[v, w, L.W_DX]
+                ddy = wp[v, w, L.W_DY]
+                fx[i, v] += -fn0 * nx - ft0 * ny
+                fy[i, v] += -fn0 * ny + ft0 * nx
+                mxx[i, v] += betac * nx * nx
+                mxy[i, v] += betac * nx * ny
+                myy[i, v] += betac * ny * ny
+                mxx[i, v] += s * -ny * -ny
+                mxy[i, v] += s * -ny * nx
+                myy[i, v] += s * nx * nx
+                lev = qx * ny - qy * nx
+                levt = qx * nx + qy * ny
+                wtq[v, w] += fn0 * lev - ft0 * levt
+                dn = nx * ddx + ny * ddy
+                dtt = -ny * ddx + nx * ddy
+                wsf[v, w] += fn0 * dn - ft0 * dtt
+                cinfo[v, w, ic, C_BETA] = betac
+                cinfo[v, w, ic, C_S] = s
+                cinfo[v, w, ic, C_NX] = nx
+                cinfo[v, w, ic, C_NY] = ny
+                cinfo[v, w, ic, C_L] = lev
+                cinfo[v, w, ic, C_LT] = levt
+                cinfo[v, w, ic, C_DN] = dn
+                cinfo[v, w, ic, C_DT] = dtt
+                cinfo[v, w, ic, C_FN0] = fn0
+                cinfo[v, w, ic, C_FT0] = ft0
         for b in range(nb):
             v = v0 + b
             if act[v]:
                 ws[v, w, L.S_TORQUE] = wtq[v, w]
                 ws[v, w, L.S_SFORCE] = wsf[v, w]
-
-
-@njit(cache=True, fastmath=False, inline="always")
-def _scatter(v, w, ic, i, qx, qy, nx, ny, fn0, ft0, s, fx, fy, mxx, mxy, myy, wp, par, cinfo,
-             wtq, wsf):
-    """One contact of lane ``v`` on its pin, wheel and row (the single kernel's arithmetic)."""
-    th = par[v, L.P_THETA]
-    betac = th * (par[v, L.P_DT] * par[v, L.P_KC] + par[v, L.P_CC])
-    ddx = wp[v, w, L.W_DX]
-    ddy = wp[v, w, L.W_DY]
-    fx[i, v] += -fn0 * nx - ft0 * ny
-    fy[i, v] += -fn0 * ny + ft0 * nx
-    _add_pin(mxx, mxy, myy, i, v, betac, nx, ny)
-    _add_pin(mxx, mxy, myy, i, v, s, -ny, nx)
-    lev = qx * ny - qy * nx
-    levt = qx * nx + qy * ny
-    wtq[v, w] += fn0 * lev - ft0 * levt
-    dn = nx * ddx + ny * ddy
-    dtt = -ny * ddx + nx * ddy
-    wsf[v, w] += fn0 * dn - ft0 * dtt
-    cinfo[v, w, ic, C_BETA] = betac
-    cinfo[v, w, ic, C_S] = s
-    cinfo[v, w, ic, C_NX] = nx
-    cinfo[v, w, ic, C_NY] = ny
-    cinfo[v, w, ic, C_L] = lev
-    cinfo[v, w, ic, C_LT] = levt
-    cinfo[v, w, ic, C_DN] = dn
-    cinfo[v, w, ic, C_DT] = dtt
-    cinfo[v, w, ic, C_FN0] = fn0
-    cinfo[v, w, ic, C_FT0] = ft0

@@ -6,11 +6,15 @@
 (:func:`chaindrive.simulation.model_from_drive`, then
 :func:`chaindrive.simulation.steady_state` with its defaults): the tight-span tension of
 the running drive, about 0.1 s of computing per 100-link roller drive. Computed only
-when an output asks for them. The variants of a batch are computed together
-(:func:`dynamics_results`: :func:`chaindrive.simulation.steady_lanes.steady_states_implicit`,
-the implicit steps of up to ``LANES`` drives taken by one batched kernel); each result is
-the one ``steady_state`` gives the variant alone, to the last bit (``cpu_time`` apart: the
-batched one is the variant's share).
+when an output asks for them. The variants of a batch go through
+:func:`dynamics_results`: one ``steady_state`` per variant (``LANES = 0``, the default),
+or, with ``LANES`` > 0, :func:`chaindrive.simulation.steady_lanes.steady_states_implicit`
+(the implicit steps of up to ``LANES`` drives taken together by the batched implicit
+kernel), whose every result is the one ``steady_state`` gives the variant alone, to the
+last bit (``cpu_time`` apart: the batched one is the variant's share). The default is the
+per-variant path because it measured faster: 1,000 variants of
+``examples/roller_industrial.toml`` on two workers, 261 s against 346 s with 64 lanes
+(``benchmarks/study.py --dynamic 1000``, docs/studies.md).
 """
 
 from __future__ import annotations
@@ -24,8 +28,8 @@ __all__ = ["HEAD", "LANES", "wanted", "dynamics_result", "dynamics_results"]
 HEAD = "dynamics"
 
 #: Drives stepped together by :func:`dynamics_results` (0: one ``steady_state`` per
-#: variant; the results are the same).
-LANES = 64
+#: variant, the default; the results are the same to the last bit).
+LANES = 0
 
 
 def wanted(outputs: Sequence[str]) -> bool:
