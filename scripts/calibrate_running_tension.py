@@ -20,7 +20,11 @@ not kept"): the tight span's transverse modes (:func:`chaindrive.vibration.strin
 forced at the tooth frequency through the chordal rise of the entering roller, the tension
 of the stretched span added to the model, at several damping ratios.
 
-Run: ``PYTHONPATH=src python scripts/calibrate_running_tension.py [--write] [--resonance]``.
+``--physics`` tests the physics of the worst drives as terms on the model (:func:`physics_test`:
+the longitudinal resonance of the driven side on its spans, its polygonal inertia, the tight
+span's transverse resonance), out of sample over the whole sweep.
+
+Run: ``PYTHONPATH=src python scripts/calibrate_running_tension.py [--write] [--resonance] [--physics]``.
 """
 
 from __future__ import annotations
@@ -172,6 +176,76 @@ def resonance_test(a: dict[str, np.ndarray], cal: np.ndarray) -> None:
                   f"{100 * np.abs(cv).max():5.1f} %")
 
 
+def driven_side(a: dict[str, np.ndarray]) -> tuple[np.ndarray, np.ndarray]:
+    """The driven side of each row as a mass on its spans, ``(m, k)``
+    (:func:`chaindrive.analysis.dynamic_tension.polygonal_spring_mass`, the sweep's drives)."""
+    sys.path.insert(0, str(ROOT / "benchmarks"))
+    import _dynamic_sweep as sw
+
+    from chaindrive.analysis.dynamic_tension import polygonal_spring_mass
+    from chaindrive.analysis.layout import drive_layout
+
+    drives = {d.name: d for d in sw.sweep_drives(64)}
+    mk = []
+    for i in a["index"]:
+        d = sw.drive_of(drives[f"S{int(i):02d}"])
+        sm = polygonal_spring_mass(d, drive_layout(d))
+        assert sm is not None
+        mk.append(sm[1:])
+    m, k = np.array(mk).T
+    return m, k
+
+
+def magnification(r: np.ndarray, zeta: float) -> np.ndarray:
+    """Steady-state magnification of a damped single-degree oscillator at the frequency ratio ``r``,
+    ``1/√((1 − r²)² + (2ζr)²)`` (S. S. Rao, Mechanical Vibrations, 5th ed., §3.4, eq. 3.30)."""
+    return np.asarray(1.0 / np.sqrt((1 - r**2) ** 2 + (2 * zeta * r) ** 2))
+
+
+def physics_test(a: dict[str, np.ndarray]) -> None:
+    """Issue 29.4 (2): the physics of the worst drives as terms on the model, each fitted with its
+    few constants and checked out of sample over the whole sweep against ``a`` (four-fold and
+    leave-one-out): (1) the tight span's longitudinal resonance: the dynamic part magnified by the
+    single-degree oscillator of the driven side on its spans (``m``, ``k``) at ``r = zω/√(k/m)``,
+    ``ζ`` fitted; (2) the rigid polygonal inertia of the driven side ``m ω² R sin(π/z)`` added,
+    magnified likewise at ``r/α``, its weight, ``α`` and ``ζ`` fitted; (3) the tight span's
+    transverse resonance: the dynamic part times ``1 + A n^-k / (1 + (d/w)²)``, ``d`` the distance of
+    ``zω/ω₁`` from the nearest whole number ``n`` (or even number: the parametric resonance at twice
+    the mode's frequency), ``A``, ``w``, ``k`` fitted."""
+    m, k = driven_side(a)
+    w = a["rpm"] * math.pi / 30
+    z = a["teeth_driving"]
+    extra = {"rl": z * w / np.sqrt(k / m), "rr": frequency_ratio(a),
+             "y": m * w**2 * a["pitch"] / 2 / a["tight"]}
+    a = {**a, **extra}
+
+    def longitudinal(c: np.ndarray, s: dict[str, np.ndarray]) -> np.ndarray:
+        return s["tight"] * (1 + c[0] * impact_ratio(s) ** c[1] * (s["teeth_driving"] / REFERENCE_TEETH) ** c[2]
+                             * magnification(s["rl"], abs(c[3])))
+
+    def polygon(c: np.ndarray, s: dict[str, np.ndarray]) -> np.ndarray:
+        return model(c[:3], s) + s["tight"] * abs(c[3]) * s["y"] * magnification(s["rl"] / c[4], abs(c[5]))
+
+    def transverse(step: float) -> Callable[[np.ndarray, dict[str, np.ndarray]], np.ndarray]:
+        def f(c: np.ndarray, s: dict[str, np.ndarray]) -> np.ndarray:
+            n = np.maximum(np.round(s["rr"] / step), 1)
+            term = abs(c[3]) * n ** (-abs(c[5])) / (1 + ((s["rr"] - step * n) / c[4]) ** 2)
+            return s["tight"] * (1 + c[0] * impact_ratio(s) ** c[1] * (s["teeth_driving"] / REFERENCE_TEETH) ** c[2]
+                                 * (1 + term))
+        return f
+
+    cases = [("the model as it is", model, START), ("(1) longitudinal resonance, zeta fitted", longitudinal, START + [0.5]),
+             ("(2) polygonal inertia, resonant", polygon, START + [0.4, 0.26, 0.05]),
+             ("(3) transverse resonance, whole numbers", transverse(1.0), START + [0.5, 0.05, 0.5]),
+             ("(3) transverse resonance, even numbers", transverse(2.0), START + [0.5, 0.05, 0.5])]
+    for name, f, start in cases:
+        cv, loo = crossvalidate(a, f, start), leave_one_out(a, f, start)
+        c = fit(a, np.ones(len(a["index"]), bool), f, start)
+        print(f"  {name:42s}: 4-fold worst {100 * np.abs(cv).max():5.1f} %, rms {100 * np.sqrt(np.mean(cv**2)):4.1f} %; "
+              f"leave-one-out worst {100 * np.abs(loo).max():5.1f} % (S{a['index'][np.argmax(np.abs(loo))]:02d}), "
+              f"{int((np.abs(loo) > AIM).sum())} beyond {100 * AIM:g} %; constants " + ", ".join(f"{x:.3g}" for x in c))
+
+
 def frequency_ratio(a: dict[str, np.ndarray]) -> np.ndarray:
     """``z ω / ω₁`` of each row (:func:`chaindrive.vibration.running_tension.tooth_frequency_ratio`)."""
     from chaindrive.vibration.running_tension import tooth_frequency_ratio
@@ -253,7 +327,7 @@ def _stats(e: np.ndarray) -> tuple[float, float]:
     return float(np.abs(e).max()), float(np.sqrt(np.mean(e**2)))
 
 
-def main(write: bool, resonance: bool) -> None:
+def main(write: bool, resonance: bool, physics: bool = False) -> None:
     a, short = load(REFERENCE), load("short")
     if len(a["index"]) != len(short["index"]):
         raise SystemExit(f"the long reference has {len(a['index'])} of {len(short['index'])} drives: "
@@ -289,6 +363,9 @@ def main(write: bool, resonance: bool) -> None:
           f"{int((~inside).sum())} drives outside the range: worst {100 * outside_worst:.1f} %")
     if resonance:
         resonance_test(short, short["index"] < CALIBRATION_DRIVES)
+    if physics:
+        print("physics of the worst drives as terms, out of sample over the whole sweep (long reference):")
+        physics_test(a)
     if write:
         data = {
             "coefficient": round(float(c[0]), 5), "impact_exponent": round(float(c[1]), 5),
@@ -321,4 +398,4 @@ def main(write: bool, resonance: bool) -> None:
 
 
 if __name__ == "__main__":
-    main("--write" in sys.argv[1:], "--resonance" in sys.argv[1:])
+    main("--write" in sys.argv[1:], "--resonance" in sys.argv[1:], "--physics" in sys.argv[1:])
