@@ -270,9 +270,18 @@ def _place_exact(model: SimulationModel):
         wrap = {x[1][0]: x[2] / t * 2 * math.pi / nseat[x[1][0]] for x in pieces if x[0] == "arc"}
         return centres, pieces, wrap
 
+    walks: dict[float, tuple] = {}
+
+    def walk(s):
+        # each offset walked once: Brent's method starts from the bracket's ends, which
+        # the bracket search has walked, and its root is one of its own points
+        if s not in walks:
+            centres, pieces, wrap = layout(s)
+            walks[s] = (centres, pieces, wrap, _walk(centres, radii, pieces, wrap, lengths, n))
+        return walks[s]
+
     def closure(s):
-        centres, pieces, wrap = layout(s)
-        return _walk(centres, radii, pieces, wrap, lengths, n)[2]
+        return walk(s)[3][2]
 
     s0 = _solve_offset(excess, n, t, adj)
     step = 0.25 * t
@@ -292,8 +301,7 @@ def _place_exact(model: SimulationModel):
     if f1 * f0 > 0:
         raise InfeasibleError(f"no position of wheel {adj} closes a loop of {n} links")
     sc = brentq(closure, min(s0, s1), max(s0, s1), xtol=1e-13) if f0 != 0 else s0
-    centres, pieces, wrap = layout(sc)
-    pos, where, _ = _walk(centres, radii, pieces, wrap, lengths, n)
+    centres, pieces, wrap, (pos, where, _) = walk(sc)
     npc = len(pieces)
     theta = np.full(len(model.wheels), np.nan)
     # wheel 0: pin 0 (even seat 0) at its exit point
