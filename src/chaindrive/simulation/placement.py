@@ -119,23 +119,28 @@ def _solve_offset(excess, n, p, adj):
     except (ValueError, InfeasibleError):
         s0 = None
     if s0 is None:
-        # search a bracket near 0
+        # search a bracket near 0: the grid's intervals nearest 0 first (ties: the lower
+        # one, as np.argmin over all of them would choose)
         grid = np.linspace(lo, hi, 401)
-        vals = []
-        reason = ""
-        for g in grid:
-            try:
-                vals.append(excess(g))
-            except InfeasibleError as exc:
-                vals.append(np.nan)
-                reason = str(exc)
-        vals = np.array(vals)
-        idx = np.where(np.isfinite(vals[:-1]) & np.isfinite(vals[1:]) & (vals[:-1] * vals[1:] <= 0))[0]
-        if len(idx) == 0:
-            why = f" ({reason})" if not np.any(np.isfinite(vals)) and reason else ""
-            raise InfeasibleError(f"no position of wheel {adj} fits a loop of {n} links{why}")
-        k0 = idx[np.argmin(np.abs(grid[idx]))]
-        s0 = brentq(excess, grid[k0], grid[k0 + 1], xtol=1e-12)
+        known: dict[int, float] = {}
+        reasons: dict[int, str] = {}
+
+        def value(k):
+            if k not in known:
+                try:
+                    known[k] = excess(grid[k])
+                except InfeasibleError as exc:
+                    known[k] = np.nan
+                    reasons[k] = str(exc)
+            return known[k]
+
+        for k in np.argsort(np.abs(grid[:-1]), kind="stable"):
+            a, b = value(k), value(k + 1)
+            if np.isfinite(a) and np.isfinite(b) and a * b <= 0:
+                return brentq(excess, grid[k], grid[k + 1], xtol=1e-12)
+        reason = reasons[max(reasons)] if reasons else ""   # the last one along the grid
+        why = f" ({reason})" if not np.any(np.isfinite(list(known.values()))) and reason else ""
+        raise InfeasibleError(f"no position of wheel {adj} fits a loop of {n} links{why}")
     return s0
 
 
