@@ -10,6 +10,8 @@ from __future__ import annotations
 import math
 
 import numpy as np
+from numba import njit, types
+from numba.extending import intrinsic
 
 from ..errors import InfeasibleError
 from .model import SimulationModel
@@ -206,6 +208,58 @@ def _hit(piece, centres, radii, wrap, point, length, after):
     return best
 
 
+@intrinsic
+def _fma(typingctx, a, b, c):
+    """``a b + c`` rounded once (LLVM's ``fma``)."""
+    def codegen(context, builder, signature, args):
+        return builder.fma(*args)
+    return types.float64(types.float64, types.float64, types.float64), codegen
+
+
+@njit(cache=True, fastmath=False)
+def _span_pins(pos, pars, k, n, par, q0, q1, u0, u1, metric, length0, length1):
+    """Pins ``k + 1, k + 2, ...`` placed along one span while they fall on it (the span
+    case of :func:`_hit`, as numpy rounds it: its two-element dot products ``w·u`` as
+    ``fma(w₁, u₁, w₀ u₀)``); returns the last pin placed and its parameter."""
+    while k < n:
+        length = length0 if k % 2 == 0 else length1
+        w0 = pos[k, 0] - q0
+        w1 = pos[k, 1] - q1
+        b = _fma(w1, u1, w0 * u0)
+        disc = b * b - (_fma(w1, w1, w0 * w0) - length * length)
+        if disc < 0.0:
+            break
+        s = b + math.sqrt(disc)
+        if not (par + 1e-12 < s <= metric + 1e-12):
+            break
+        pos[k + 1, 0] = q0 + s * u0
+        pos[k + 1, 1] = q1 + s * u1
+        pars[k + 1] = s
+        par = s
+        k += 1
+    return k, par
+
+
+_DOT_IS_FMA: list[bool] = []
+
+
+def _dot_is_fma() -> bool:
+    """Does numpy round a two-element dot product ``w @ u`` as ``fma(w₁, u₁, w₀ u₀)``
+    (its BLAS kernel on this machine)? Then :func:`_span_pins` places the pins exactly
+    as :func:`_hit` does; else the walk stays in Python."""
+    if not _DOT_IS_FMA:
+        from fractions import Fraction
+
+        rng = np.random.default_rng(20261129)
+        same = True
+        for _ in range(64):
+            w, u = rng.standard_normal(2) * 10.0, rng.standard_normal(2)
+            exact = Fraction(float(w[1])) * Fraction(float(u[1])) + Fraction(float(w[0]) * float(u[0]))
+            same &= float(w @ u) == float(exact)
+        _DOT_IS_FMA.append(bool(same))
+    return _DOT_IS_FMA[0]
+
+
 def _walk(centres, radii, pieces, wrap, lengths, n):
     """Pins 0..n placed link by link (exact link lengths) along the path from wheel 0's exit.
 
@@ -218,7 +272,19 @@ def _walk(centres, radii, pieces, wrap, lengths, n):
     where = [(0, 0.0)]
     pos[0] = pieces[0][1][0]
     ip, par = 0, 0.0
-    for k in range(n):
+    fast = _dot_is_fma()
+    pars = np.zeros(n + 1)
+    k = 0
+    while k < n:
+        kind, data, metric = pieces[ip % npc]
+        if fast and kind == "span":
+            # the pins that follow on this span, compiled
+            last, par = _span_pins(pos, pars, k, n, par, data[0][0], data[0][1], data[1][0],
+                                   data[1][1], metric, lengths[0], lengths[1])
+            where.extend((ip, float(pars[i])) for i in range(k + 1, last + 1))
+            k = last
+            if k == n:
+                break
         length = lengths[k % 2]
         after = par + 1e-12
         for step in range(npc + 1):
@@ -238,6 +304,7 @@ def _walk(centres, radii, pieces, wrap, lengths, n):
             a = a_in + sense * par
             pos[k + 1] = centres[j] + abs(radii[j]) * np.array([math.cos(a), math.sin(a)])
         where.append((ip, par))
+        k += 1
     ip, par = where[-1]
     kind, data, metric = pieces[ip % npc]
     frac = par / wrap[data[0]] if kind == "arc" else par / metric
