@@ -19,7 +19,7 @@ and the same for ``tight tension``, ``sag`` (then in m) and ``tensioner force``;
 exceeds 5 %.
 
 ``--steady [--reference S]``: the running steady state of the 2,194-link 100 m conveyor
-(``conveyor_example()``) from nothing, :func:`chaindrive.simulation.conveyor.running_steady_state`
+(``conveyor_example()``) from nothing, :func:`chaindrive.simulation.conveyor_steady.running_steady_state`
 (assembly included, CPU time, the best of ``--repeat`` calls after a first one that loads the
 numba cache), against a long reference: one implicit run from the same warm start, 2 s, then
 ``--reference`` seconds (default 40) measured with the same statistics (its two halves against
@@ -93,7 +93,7 @@ def steady_lines(reference=40.0, repeat=3):
     import os
 
     from chaindrive.simulation import assemble, conveyor_example
-    from chaindrive.simulation.conveyor import running_steady_state
+    from chaindrive.simulation.conveyor_steady import running_steady_state
     from chaindrive.simulation.steady import steady_state
 
     load = os.getloadavg()

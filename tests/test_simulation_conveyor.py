@@ -154,7 +154,7 @@ def test_startup_and_pull_plots_label_their_units():
 
 def test_running_steady_state_is_the_steady_state_measured_from_the_warm_start():
     from chaindrive.simulation import roller_example
-    from chaindrive.simulation.conveyor import running_steady_state
+    from chaindrive.simulation.conveyor_steady import running_steady_state
     from chaindrive.simulation.steady import steady_state as drive_steady_state
 
     m = roller_example(links=40, teeth=12, angular_velocity=10.0, load_torque=50.0, gravity=False)
@@ -174,7 +174,7 @@ def test_running_steady_state_of_the_100_m_conveyor():
     # 0.3 % (mean) and 0.8 % (peak); the mean ~1 % above the static tension of the tight
     # span's middle link (106.79 kN: the assembly), the polygon's dynamics
     from chaindrive.simulation import conveyor_example
-    from chaindrive.simulation.conveyor import running_steady_state
+    from chaindrive.simulation.conveyor_steady import running_steady_state
 
     s = running_steady_state(conveyor_example())
     assert s.settled and s.method == "implicit" and s.settle_time < 0.5

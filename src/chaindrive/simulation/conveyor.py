@@ -32,13 +32,12 @@ if TYPE_CHECKING:
     from ..drivetrain.coupling import FluidCoupling
     from ..drivetrain.motor import Motor
     from .run import SimulationResult
-    from .steady import SteadyState as RunningState
 
 #: Clearance of a pan below the tangent line of its span, in bar (roller) radii.
 PAN_GAP = 0.1
 
 __all__ = ["conveyor_pans", "SteadyState", "steady_state", "peak_tension_envelope", "span_kinds", "StartUp",
-           "start_up_of", "with_drive_profile", "path_envelope", "compare", "running_steady_state"]
+           "start_up_of", "with_drive_profile", "path_envelope", "compare"]
 
 
 def span_kinds(model: SimulationModel, drive: Drive) -> list[str]:
@@ -213,54 +212,6 @@ def steady_state(result: SimulationResult, model: SimulationModel, drive: Drive,
         force = _chain_on_tensioner(pos, ten, c, radii, model, step=1.5 * model.pitch)
     return SteadyState(float(np.mean(slack)), float(np.mean(tight)), float(np.mean(sag)),
                        float(np.std(slack)), float(np.std(tight)), float(np.std(sag)), t0, force)
-
-
-def running_steady_state(drive_or_model: Any, *, min_settle_time: float = 0.0, window: int = 1,
-                         **options: Any) -> RunningState:
-    r"""Tight-span tension of a running conveyor from nothing, measured from its warm start.
-
-    :func:`chaindrive.simulation.steady.steady_state` (warm start, settling detected,
-    the implicit step checked against its half, ``periods`` tooth periods measured) with
-    no minimum settling time and the settling compared over single tooth periods: the
-    long free spans of a conveyor vibrate without damping of their own, so the settling
-    that waits two periods of their first transverse mode (``2L/\sqrt{S/q}``, Irvine,
-    *Cable Structures*, MIT Press 1981, ch. 3; 2.26 s on the 100 m conveyor) waits for a
-    state that never comes: the tight-span tension of ``conveyor_example()`` beats over
-    20–30 s (12 tooth periods measured anywhere in a 60 s run lie up to 3.4 % from the
-    whole run's statistics), and the periods right after the warm start are as close to
-    that as any (0.9–1.0 % measured from the warm start, 1.8 % after the 4.6 s of
-    settling; docs/simulation.md, "Steady state").
-
-    Parameters
-    ----------
-    drive_or_model : chaindrive.drive.Drive or SimulationModel
-        As :func:`~chaindrive.simulation.steady.steady_state`.
-    min_settle_time : float
-        Simulated time [s] before the settling test may pass.
-    window : int
-        Tooth periods compared with those before them to detect the settling.
-    **options
-        Other arguments of :func:`~chaindrive.simulation.steady.steady_state`.
-
-    Returns
-    -------
-    chaindrive.simulation.steady.SteadyState
-
-    Examples
-    --------
-    >>> from chaindrive.simulation import roller_example
-    >>> s = running_steady_state(roller_example(links=40, teeth=12, angular_velocity=10.0,
-    ...                                         load_torque=50.0, gravity=False), periods=4)
-    >>> bool(s.peak_tension >= s.mean_tension > 0), s.waveform.shape
-    (True, (16,))
-
-    References
-    ----------
-    Irvine, H. M. *Cable Structures*, MIT Press 1981, ch. 3 (the span's transverse modes).
-    """
-    from .steady import steady_state as _steady_state
-
-    return _steady_state(drive_or_model, min_settle_time=min_settle_time, window=window, **options)
 
 
 def _chain_on_tensioner(pos: np.ndarray, ten: np.ndarray, c: np.ndarray, radii: np.ndarray,
