@@ -18,7 +18,7 @@ Usage: ``python benchmarks/conveyor.py [--duration S]``. Prints per example
 and the same for ``tight tension``, ``sag`` (then in m) and ``tensioner force``; exits 1 if any difference
 exceeds 5 %.
 
-``--steady [--reference S]``: the running steady state of the 2,194-link 100 m conveyor
+``--steady [--reference S]`` (also at the end of the default run): the running steady state of the 2,194-link 100 m conveyor
 (``conveyor_example()``) from nothing, :func:`chaindrive.simulation.conveyor_steady.running_steady_state`
 (assembly included, CPU time, the best of ``--repeat`` calls after a first one that loads the
 numba cache), against a long reference: one implicit run from the same warm start, 2 s, then
@@ -140,7 +140,8 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--duration", type=float, default=6.0, help="simulated time per example [s]")
     ap.add_argument("--only", choices=sorted(EXAMPLES), help="run one example")
     ap.add_argument("--steady", action="store_true",
-                    help="the 2,194-link conveyor's running steady state against a long run")
+                    help="only the 2,194-link conveyor's running steady state against a long run "
+                         "(also part of the default run)")
     ap.add_argument("--reference", type=float, default=40.0, help="measured seconds of the reference [s]")
     ap.add_argument("--repeat", type=int, default=3)
     args = ap.parse_args(argv)
@@ -168,6 +169,8 @@ def main(argv: list[str] | None = None) -> int:
               f"tension std over the window: slack {state.slack_tension_std:.0f} N, "
               f"tight {state.tight_tension_std:.0f} N; sag std {state.return_sag_std * 1e3:.1f} mm")
     print(f"# worst difference {worst:.2f} % (limit {LIMIT:g} %)")
+    if not args.only:
+        steady_lines(args.reference, max(args.repeat, 1))
     return 0 if worst <= LIMIT else 1
 
 
