@@ -408,12 +408,20 @@ def test_tooth_frequency_ratio_against_the_string_by_hand():
 
 
 @given(st.floats(0.2, 30.0), st.floats(0.0, 0.3), st.integers(0, 20))
-def test_span_resonance_mode_is_a_near_whole_number(r, band, modes):
+def test_span_resonance_mode_is_a_mode_within_the_band(r, band, modes):
+    # independent: every mode 1..N checked one by one
     n = int(RT.span_resonance_mode(r, band=band, modes=modes))
-    if n:
-        assert 1 <= n <= modes and abs(r / n - 1) < band
+    within = [k for k in range(1, modes + 1) if abs(r / k - 1) < band]
+    if within:
+        assert n == min(within, key=lambda k: abs(r / k - 1))
     else:
-        assert all(abs(r / k - 1) >= band for k in range(1, modes + 1) if abs(round(r) - k) == 0)
+        assert n == 0
+
+
+def test_span_resonance_mode_either_side():
+    # the band is relative: 16.495 is nearer 16 but within 3 % of 17 only
+    assert int(RT.span_resonance_mode(16.495, band=0.03, modes=20)) == 17
+    assert int(RT.span_resonance_mode(12.55, band=0.05, modes=12)) == 12
 
 
 def test_validated_range_refuses_bad_input():

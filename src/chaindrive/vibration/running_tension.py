@@ -415,9 +415,15 @@ def span_resonance_mode(frequency_ratio: ArrayLike, band: float | None = None, m
     r = check_positive("frequency_ratio", frequency_ratio)
     d = float(calibration().validated["resonance_band"] if band is None else check_nonnegative("band", band))
     top = int(calibration().validated["resonance_modes"] if modes is None else check_nonnegative("modes", modes))
-    n = np.clip(np.rint(r), 1, max(top, 1))
-    hit = (np.abs(r / n - 1) < d) & (top >= 1)
-    return np.asarray(np.where(hit, n, 0).astype(int))
+    low = np.maximum(np.floor(r), 1.0)
+    out = np.zeros(np.shape(r), dtype=int)
+    best = np.full(np.shape(r), np.inf)
+    for n in (low, low + 1):   # the whole numbers either side (the band is relative: either may hold it)
+        off = np.abs(r / n - 1)
+        hit = (off < d) & (n <= top) & (off < best)
+        out = np.where(hit, n.astype(int), out)
+        best = np.where(hit, off, best)
+    return np.asarray(out)
 
 
 def validated_range_violations(chain_speed: float, frequency_ratio: float) -> tuple[str, ...]:
