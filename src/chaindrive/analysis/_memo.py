@@ -84,6 +84,10 @@ def clear() -> None:
 
     for cached in (required_static_safety_for, jump_over._form_cached, jump_table._rows):
         cached.cache_clear()
+    from ..drive import model
+
+    for cached in model.DERIVED_CACHES:
+        cached.cache_clear()
 
 
 def memo(*, maxsize: int = 128, key: Callable[..., Hashable] | None = None) -> Callable[[F], F]:

@@ -332,35 +332,37 @@ def taut_entry(
         seats = taut_seating_angles(poly, guide)
     R = poly.radius
     w = angular_velocity
-
-    def geometry(ph: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
-        k, b0, c = _locate(poly, seats, ph)
-        beta = b0 - ph
-        sb, cb = np.sin(beta), np.cos(beta)
-        return k, c, sb, cb
-
-    k, c, sb, cb = geometry(phi)
+    # the angles asked for and φ = 0 (the origin of x) in one pass (a pointwise computation:
+    # the same numbers as two)
+    both = np.append(phi, 0.0)
+    k, b0, c = _locate(poly, seats, both)
+    beta = b0 - both
+    sb, cb = np.sin(beta), np.cos(beta)
     sx, sy = R * sb, R * cb
-    spx, spy = -R * cb, R * sb  # dS/dφ
+    shape = phi.shape
     if guide is None:
-        m = c - sx
-        m0 = _free_m0(poly, seats)
-        dm = -spx
-        ddm = sx
+        m0 = float(c[-1] - sx[-1])
+        m = c[:-1] - sx[:-1]
+        dm = R * cb[:-1]  # -dS_x/dφ
+        ddm = sx[:-1]
+        span = None
     else:
         gx, gy = guide
         wx, wy = gx - sx, gy - sy
         D = np.hypot(wx, wy)
+        m0 = float(c[-1] + D[-1])
+        sx, sy, sb, cb, wx, wy, D = sx[:-1], sy[:-1], sb[:-1], cb[:-1], wx[:-1], wy[:-1], D[:-1]
         ux, uy = wx / D, wy / D
-        us = ux * spx + uy * spy
-        m = c + D
-        _, c0, sb0, cb0 = geometry(np.zeros(1))
-        m0 = float(c0[0] + np.hypot(gx - R * sb0[0], gy - R * cb0[0]))
+        us = ux * (-R * cb) + uy * (R * sb)  # u · dS/dφ
+        m = c[:-1] + D
         dm = -us
         ddm = (R * R - us * us) / D + (ux * sx + uy * sy)
-    span = None if guide is None else D
-    return TautEntry(x=m - m0, velocity=w * dm, acceleration=w * w * ddm, span=span, y=sy, vy=w * spy,
-                     ay=-w * w * sy, k=k, seats=seats)
+        span = D.reshape(shape)
+    sy = sy[:-1] if guide is None else sy
+    return TautEntry(x=(m - m0).reshape(shape), velocity=(w * dm).reshape(shape),
+                     acceleration=(w * w * ddm).reshape(shape), span=span, y=sy.reshape(shape),
+                     vy=(w * (R * sb[:-1] if guide is None else R * sb)).reshape(shape),
+                     ay=(-w * w * sy).reshape(shape), k=k[:-1].reshape(shape), seats=seats)
 
 
 def _free_m0(poly: WheelPolygon, seats: np.ndarray) -> float:
