@@ -11,6 +11,8 @@ chain is the case ``d -> 0`` with ``z/2`` pairs of equal sides.
 
 from __future__ import annotations
 
+import functools
+
 import numpy as np
 from numpy.typing import ArrayLike
 
@@ -73,6 +75,24 @@ def bi_regular_polygon(
     >>> round(float(R), 6), round(float(d1 + d2), 6), round(2 * np.pi / 8, 6)
     (0.164283, 0.785398, 0.785398)
     """
+    if type(long_side) in _PLAIN and type(short_side) in _PLAIN and type(pairs) in _PLAIN:
+        # one polygon asked for again (the layout, the entry and the wheel speeds of one drive)
+        return _bi_regular_kept(long_side, short_side, pairs)
+    return _bi_regular(long_side, short_side, pairs)
+
+
+#: Plain number types whose value is the whole key of a kept polygon.
+_PLAIN = frozenset({float, int, np.float64, np.int64})
+
+
+@functools.lru_cache(maxsize=256)
+def _bi_regular_kept(long_side: float, short_side: float, pairs: float) -> tuple[FloatOrArray, ...]:
+    # the results are numpy scalars (immutable); an InputError is raised, not kept
+    return _bi_regular(long_side, short_side, pairs)
+
+
+def _bi_regular(long_side: ArrayLike, short_side: ArrayLike, pairs: ArrayLike) -> tuple[FloatOrArray, ...]:
+    """:func:`bi_regular_polygon`, computed."""
     a = check_positive("long_side", long_side, "m")
     b = check_positive("short_side", short_side, "m")
     n = check_positive("pairs", pairs)
