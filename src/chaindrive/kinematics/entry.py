@@ -465,7 +465,7 @@ def _summary(case: _Case, model: str, seats, first: np.ndarray | None = None) ->
     eps = 1e-9 * T
     extra = np.concatenate([seats - eps, seats + eps, [T - eps, eps, T - 1e-4 * T, 1e-4 * T]])
     extra = extra[(extra > 0) & (extra < T)]
-    grid = np.sort(np.concatenate([base[:-1], extra]))
+    grid = np.concatenate([base[:-1], extra])  # unsorted: only its extremes are taken
     s_in = np.asarray(seats, dtype=float)
     s_in = s_in[(s_in > eps) & (s_in < T - eps)]
     # one-sided limits of the acceleration at the period end (left) and start (right), and

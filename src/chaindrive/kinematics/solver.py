@@ -57,6 +57,7 @@ ogniwowego na koło gniazdowe"), Figs 1, 4, 5 and eqs (1)-(43).
 from __future__ import annotations
 
 import functools
+import math
 from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Any
@@ -178,6 +179,13 @@ def _taut_gap(poly: WheelPolygon, k: int, phi: np.ndarray, guide: GuideEnd | Non
     """Cross product (N - S) x (G - S): > 0 while vertex k+1 is inside the span line;
     ``angles``: ``poly.vertex(k)[0], poly.vertex(k + 1)[0]`` when the caller has them."""
     b0, b1 = (poly.vertex(k)[0], poly.vertex(k + 1)[0]) if angles is None else angles
+    if type(phi) is float:  # a root search's point: Python floats (math.sin and cos round as numpy's)
+        R, a0, a1 = float(poly.radius), float(b0) - phi, float(b1) - phi
+        sx, sy, nx, ny = R * math.sin(a0), R * math.cos(a0), R * math.sin(a1), R * math.cos(a1)
+        if guide is None:
+            return (nx - sx) * 0.0 - (ny - sy) * 1.0
+        wx, wy = guide[0] - sx, guide[1] - sy
+        return (nx - sx) * wy - (ny - sy) * wx
     sx, sy = _pos(poly.radius, b0 - phi)
     nx, ny = _pos(poly.radius, b1 - phi)
     wx: FloatOrArray
@@ -190,8 +198,26 @@ def _taut_gap(poly: WheelPolygon, k: int, phi: np.ndarray, guide: GuideEnd | Non
 
 
 def _find_crossing(fun: Callable[[Any], Any], estimate: float, what: str) -> float:
-    """Root of ``fun`` where it goes from + to -, nearest to ``estimate``."""
+    """Root of ``fun`` where it goes from + to -, nearest to ``estimate``.
+
+    Bracketed on a 1441-point scan of ``estimate ± π/2``; the scan starts with the
+    ``2 _SCAN_WINDOW + 1`` points about the estimate and takes the whole grid only when
+    a crossing outside them could be as near (``fun`` is pointwise: the same values, the
+    same bracket)."""
     grid = estimate + np.linspace(-0.5 * np.pi, 0.5 * np.pi, 1441)
+    centre = 720
+    lo, hi = centre - _SCAN_WINDOW, centre + _SCAN_WINDOW + 1
+    g = fun(grid[lo:hi])
+    idx = np.nonzero((g[:-1] > 0) & (g[1:] <= 0))[0] + lo
+    if idx.size:
+        dist = np.abs(grid[idx] - estimate)
+        k = int(np.argmin(dist))
+        # a crossing not seen starts at index lo - 1 or below, or hi - 1 or above
+        if dist[k] < min(abs(grid[lo - 1] - estimate), abs(grid[hi - 1] - estimate)):
+            i = int(idx[k])
+            if g[i + 1 - lo] == 0.0:
+                return float(grid[i + 1])
+            return float(brentq(fun, grid[i], grid[i + 1], xtol=1e-15, rtol=1e-15, maxiter=200))
     g = fun(grid)
     idx = np.nonzero((g[:-1] > 0) & (g[1:] <= 0))[0]
     if idx.size == 0:
@@ -200,6 +226,10 @@ def _find_crossing(fun: Callable[[Any], Any], estimate: float, what: str) -> flo
     if g[i + 1] == 0.0:
         return float(grid[i + 1])
     return float(brentq(fun, grid[i], grid[i + 1], xtol=1e-15, rtol=1e-15, maxiter=200))
+
+
+#: Points either side of the estimate that :func:`_find_crossing` scans first (of 720).
+_SCAN_WINDOW = 180
 
 
 def taut_seating_angles(poly: WheelPolygon, guide: GuideEnd | None = None) -> np.ndarray:
