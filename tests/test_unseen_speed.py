@@ -106,6 +106,8 @@ def test_taut_entry_is_pointwise(wheel, seed):
         one = solver.taut_entry(poly, phi[i:i + 1], 3.0, guide, seats)
         for name in ("x", "velocity", "acceleration", "y", "vy", "ay", "k") + (() if guide is None else ("span",)):
             assert getattr(one, name)[0] == getattr(whole, name)[i], name
+    if guide is not None:  # the reach check's span alone
+        assert np.array_equal(solver._taut_span_length(poly, phi, guide, seats), whole.span)
     # x is measured from φ = 0, exactly; a scalar angle gives 0-d arrays
     assert solver.taut_entry(poly, 0.0, 3.0, guide, seats).x == 0.0
     assert solver.taut_entry(poly, 0.3, 3.0, guide, seats).velocity.shape == ()

@@ -80,6 +80,7 @@ from .histories import PaperEntry, PeriodMotion
 from .solver import (
     GuideEnd,
     WheelPolygon,
+    _taut_span_length,
     rod_entry,
     rod_seating_schedule,
     taut_entry,
@@ -295,7 +296,7 @@ def _checked_seats(case: _Case) -> np.ndarray:
 def _check_reach(case, poly, seats):
     """At every instant the free span must hold at least one whole (longest) link."""
     grid = np.linspace(seats[0], seats[-1], 721)
-    span = taut_entry(poly, grid, case.w, case.guide(), seats).span
+    span = _taut_span_length(poly, grid, case.guide(), seats)
     longest = max(poly.links)
     if np.min(span) < longest:
         raise InfeasibleError(

@@ -395,9 +395,13 @@ def taut_entry(
                      ay=(-w * w * sy).reshape(shape), k=k[:-1].reshape(shape), seats=seats)
 
 
-def _free_m0(poly: WheelPolygon, seats: np.ndarray) -> float:
-    k, b0, c = _locate(poly, seats, np.zeros(1))
-    return float(c[0] - poly.radius * np.sin(b0[0]))
+def _taut_span_length(poly: WheelPolygon, phi: np.ndarray, guide: GuideEnd, seats: np.ndarray) -> np.ndarray:
+    """``taut_entry(poly, phi, ω, guide, seats).span`` alone (the same operations): the free span
+    length ``|G - S|`` [m] at the wheel angles ``phi`` (a 1-d array)."""
+    k, b0, c = _locate(poly, seats, phi)
+    beta = b0 - phi
+    R = poly.radius
+    return np.hypot(guide[0] - R * np.sin(beta), guide[1] - R * np.cos(beta))
 
 
 # ----------------------------------------------------------------------------- rod model
