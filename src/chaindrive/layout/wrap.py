@@ -9,7 +9,7 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import ArrayLike
 
-from .._finite import finite_guard
+from .._finite import finite_guard, refuse_nonfinite_result
 from .._results import Result, quantity
 from .._validation import as_float_array, check_nonnegative, check_positive, check_teeth
 from ..errors import InfeasibleError, InputError
@@ -54,7 +54,7 @@ class WrapLayout(Result):
     length: float = quantity("m")
 
 
-@finite_guard
+@finite_guard(check_result=False)  # a result computed afresh is checked below; a kept one was
 def wrap_layout(centres: ArrayLike, radii: ArrayLike, sides: ArrayLike | None = None) -> WrapLayout:
     r"""Spans, wrap angles and length of a chain around wheels at given positions.
 
@@ -127,6 +127,7 @@ def wrap_layout(centres: ArrayLike, radii: ArrayLike, sides: ArrayLike | None = 
         _KEPT.move_to_end(key)
         return WrapLayout(**{name: (v.copy() if type(v) is np.ndarray else v) for name, v in kept.items()})
     lay = _wrap_layout(c, r, s)
+    refuse_nonfinite_result("wrap_layout", lay)
     _KEPT[key] = {name: (v.copy() if type(v) is np.ndarray else v) for name, v in lay.__dict__.items()}
     if len(_KEPT) > 64:
         _KEPT.popitem(last=False)
