@@ -26,7 +26,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 from numpy.typing import ArrayLike
 
-from .._finite import finite_guard
+from .._finite import finite_guard, refuse_nonfinite_result
 from .._registry import Registry
 from .._results import Result, quantity
 from .._typing import FloatOrArray
@@ -407,7 +407,7 @@ class TrackDriveWheel(WheelFiles):
             )
         return float(self.root_factor), float(self.tip_factor)
 
-    @finite_guard
+    @finite_guard(check_result=False)  # a result computed afresh is checked below; a kept one was
     def dimensions(self) -> TrackDriveWheelDimensions:
         """Pitch, root and tip radii with their ranges from Sharipov, and the drawn flank."""
         # kept with the fields it was computed from (the tooth check and the worn-tip check of
@@ -422,6 +422,7 @@ class TrackDriveWheel(WheelFiles):
         with warnings.catch_warnings(record=True) as caught:
             warnings.simplefilter("always")
             dims = self._dimensions()
+        refuse_nonfinite_result("dimensions", dims)
         replay = tuple((w.category, str(w.message)) for w in caught)
         for category, text in replay:
             warnings.warn(text, category, stacklevel=2)
