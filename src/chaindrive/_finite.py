@@ -174,6 +174,8 @@ def _finite_tree(obj: Any, _depth: int = 0) -> bool:
         values: Any = [getattr(obj, name, None) for name in names]
     elif t is tuple or t is list:
         values = obj
+    elif t is dict:  # first_nonfinite walks a mapping's values the same way
+        values = obj.values()
     else:
         return first_nonfinite(obj, _depth) is None
     if _depth >= 12:  # first_nonfinite looks no deeper
