@@ -151,6 +151,10 @@ def test_a_kept_polygon_equals_a_computed_one_and_errors_are_raised_each_time():
     computed = polygon._bi_regular(0.082, 0.046, 8)
     assert kept == again == computed
     assert polygon.bi_regular_polygon(np.array([0.082]), 0.046, 8)[0][0] == computed[0]
+    # 0-d arrays (what the input checks return) are kept by their value: the same numbers
+    zero_d = polygon.bi_regular_polygon(np.asarray(0.082), np.asarray(0.046), np.asarray(8))
+    assert zero_d == computed and polygon._bi_regular_kept.cache_info().hits >= 2
+    assert polygon.link_chain_pitch_radius(0.064, 0.018, 8) == polygon._bi_regular(0.082, 0.046, 8)[0]
     for _ in range(2):
         with pytest.raises(InputError, match="short_side must not exceed long_side"):
             polygon.bi_regular_polygon(0.04, 0.046, 8)
