@@ -97,12 +97,14 @@ def _plain(value: object) -> float | int | None:
 
 
 @functools.lru_cache(maxsize=256)
-def _bi_regular_kept(long_side: float, short_side: float, pairs: float) -> tuple[FloatOrArray, ...]:
+def _bi_regular_kept(long_side: float, short_side: float,
+                     pairs: float) -> tuple[FloatOrArray, FloatOrArray, FloatOrArray]:
     # the results are numpy scalars (immutable); an InputError is raised, not kept
     return _bi_regular(long_side, short_side, pairs)
 
 
-def _bi_regular(long_side: ArrayLike, short_side: ArrayLike, pairs: ArrayLike) -> tuple[FloatOrArray, ...]:
+def _bi_regular(long_side: ArrayLike, short_side: ArrayLike,
+                pairs: ArrayLike) -> tuple[FloatOrArray, FloatOrArray, FloatOrArray]:
     """:func:`bi_regular_polygon`, computed."""
     a = check_positive("long_side", long_side, "m")
     b = check_positive("short_side", short_side, "m")

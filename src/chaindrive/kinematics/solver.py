@@ -180,12 +180,7 @@ def _taut_gap(poly: WheelPolygon, k: int, phi: np.ndarray, guide: GuideEnd | Non
     ``angles``: ``poly.vertex(k)[0], poly.vertex(k + 1)[0]`` when the caller has them."""
     b0, b1 = (poly.vertex(k)[0], poly.vertex(k + 1)[0]) if angles is None else angles
     if type(phi) is float:  # a root search's point: Python floats (math.sin and cos round as numpy's)
-        R, a0, a1 = float(poly.radius), float(b0) - phi, float(b1) - phi
-        sx, sy, nx, ny = R * math.sin(a0), R * math.cos(a0), R * math.sin(a1), R * math.cos(a1)
-        if guide is None:
-            return (nx - sx) * 0.0 - (ny - sy) * 1.0
-        wx, wy = guide[0] - sx, guide[1] - sy
-        return (nx - sx) * wy - (ny - sy) * wx
+        return _taut_gap_float(float(poly.radius), float(b0) - phi, float(b1) - phi, guide)  # type: ignore[return-value]
     sx, sy = _pos(poly.radius, b0 - phi)
     nx, ny = _pos(poly.radius, b1 - phi)
     wx: FloatOrArray
@@ -195,6 +190,15 @@ def _taut_gap(poly: WheelPolygon, k: int, phi: np.ndarray, guide: GuideEnd | Non
     else:
         wx, wy = guide[0] - sx, guide[1] - sy
     return (nx - sx) * wy - (ny - sy) * wx
+
+
+def _taut_gap_float(R: float, a0: float, a1: float, guide: GuideEnd | None) -> float:
+    """:func:`_taut_gap` at one angle in Python floats (the same operations), ``a0``, ``a1`` the
+    angles of the two vertices at it."""
+    sx, sy, nx, ny = R * math.sin(a0), R * math.cos(a0), R * math.sin(a1), R * math.cos(a1)
+    if guide is None:
+        return (nx - sx) * 0.0 - (ny - sy) * 1.0
+    return (nx - sx) * (guide[1] - sy) - (ny - sy) * (guide[0] - sx)
 
 
 def _find_crossing(fun: Callable[[Any], Any], estimate: float, what: str) -> float:

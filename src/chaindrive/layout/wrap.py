@@ -5,6 +5,7 @@ from __future__ import annotations
 import math
 from collections import OrderedDict
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 from numpy.typing import ArrayLike
@@ -125,7 +126,8 @@ def wrap_layout(centres: ArrayLike, radii: ArrayLike, sides: ArrayLike | None = 
     kept = _KEPT.get(key)
     if kept is not None:  # the same wheels asked for again (an analysis draws its layout several times)
         _KEPT.move_to_end(key)
-        return WrapLayout(**{name: (v.copy() if type(v) is np.ndarray else v) for name, v in kept.items()})
+        fields: dict[str, Any] = {name: (v.copy() if type(v) is np.ndarray else v) for name, v in kept.items()}
+        return WrapLayout(**fields)
     lay = _wrap_layout(c, r, s)
     refuse_nonfinite_result("wrap_layout", lay)
     _KEPT[key] = {name: (v.copy() if type(v) is np.ndarray else v) for name, v in lay.__dict__.items()}
