@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import contextlib
 import math
 from collections import OrderedDict
 from dataclasses import dataclass
@@ -125,14 +126,16 @@ def wrap_layout(centres: ArrayLike, radii: ArrayLike, sides: ArrayLike | None = 
     key = (c.tobytes(), r.tobytes(), s.tobytes())
     kept = _KEPT.get(key)
     if kept is not None:  # the same wheels asked for again (an analysis draws its layout several times)
-        _KEPT.move_to_end(key)
+        with contextlib.suppress(KeyError):  # another thread may have dropped it meanwhile
+            _KEPT.move_to_end(key)
         fields: dict[str, Any] = {name: (v.copy() if type(v) is np.ndarray else v) for name, v in kept.items()}
         return WrapLayout(**fields)
     lay = _wrap_layout(c, r, s)
     refuse_nonfinite_result("wrap_layout", lay)
     _KEPT[key] = {name: (v.copy() if type(v) is np.ndarray else v) for name, v in lay.__dict__.items()}
     if len(_KEPT) > 64:
-        _KEPT.popitem(last=False)
+        with contextlib.suppress(KeyError):
+            _KEPT.popitem(last=False)
     return lay
 
 
