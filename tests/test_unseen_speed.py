@@ -210,3 +210,17 @@ def test_never_seen_analysis_equals_a_reused_one(name):
     fresh = analyze_drive(moved, exclude=["remedy"]).to_dict()
     again = analyze_drive(moved, exclude=["remedy"]).to_dict()
     assert repr(fresh) == repr(again)
+
+
+def test_span_response_of_repeated_frequencies_equals_each_alone():
+    from chaindrive.vibration.excitation import _span_response
+    from chaindrive.vibration.resonance import TensionerSpan
+
+    span = TensionerSpan(2000.0, 2.6, 0.8, 1.1, 0.3, 0.25, 3.0, 5e4)
+    om = np.array([40.0, 1e-5, 77.0, 1e-5, 40.0, 1e-5])
+    y = np.array([1e-3, 1e-3, 2e-4, 2e-4, 5e-4, 5e-4])
+    mass, stiffness = np.array([3.0, 5.0]), np.array([5e4, 8e4])
+    w, u = _span_response(span, om, y, y, 0.02, 101, mass, stiffness)
+    for i in range(om.size):
+        wi, ui = _span_response(span, om[i:i + 1], y[i:i + 1], y[i:i + 1], 0.02, 101, mass, stiffness)
+        assert np.array_equal(w[:, i], wi[:, 0]) and np.array_equal(u[:, i], ui[:, 0])
