@@ -422,6 +422,7 @@ def test_span_resonance_mode_either_side():
     # the band is relative: 16.495 is nearer 16 but within 3 % of 17 only
     assert int(RT.span_resonance_mode(16.495, band=0.03, modes=20)) == 17
     assert int(RT.span_resonance_mode(12.55, band=0.05, modes=12)) == 12
+    assert int(RT.span_resonance_mode(11.5, band=0.3, modes=9)) == 9   # above the last mode
 
 
 def test_validated_range_refuses_bad_input():

@@ -415,10 +415,11 @@ def span_resonance_mode(frequency_ratio: ArrayLike, band: float | None = None, m
     r = check_positive("frequency_ratio", frequency_ratio)
     d = float(calibration().validated["resonance_band"] if band is None else check_nonnegative("band", band))
     top = int(calibration().validated["resonance_modes"] if modes is None else check_nonnegative("modes", modes))
-    low = np.maximum(np.floor(r), 1.0)
+    # the modes either side of r (the band is relative: either may hold it); above the last mode, the last
+    low = np.clip(np.floor(r), 1.0, max(top, 1))
     out = np.zeros(np.shape(r), dtype=int)
     best = np.full(np.shape(r), np.inf)
-    for n in (low, low + 1):   # the whole numbers either side (the band is relative: either may hold it)
+    for n in (low, np.minimum(low + 1, max(top, 1))):
         off = np.abs(r / n - 1)
         hit = (off < d) & (n <= top) & (off < best)
         out = np.where(hit, n.astype(int), out)
