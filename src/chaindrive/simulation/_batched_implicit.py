@@ -120,7 +120,7 @@ class Lanes:
                 self.countdown, self.vmax_s, self.cand, self.gcache, self.ncand, self.gcand,
                 self.ngcand, self.rec_t, self.rec_tension, self.rec_ws, self.rec_pos)
 
-    def take(self, keep) -> Lanes:
+    def take(self, keep: np.ndarray) -> Lanes:
         """A new :class:`Lanes` of the lanes ``keep`` (in that order), each where it stands
         (mid-segment included)."""
         new = object.__new__(Lanes)
@@ -128,7 +128,8 @@ class Lanes:
             setattr(new, name, value[:, keep].copy() if name in _PIN_ARRAYS else value[keep].copy())
         return new
 
-    def load(self, v: int, pos, vel, ws, wp, gd, tab, par, t0: float, nsteps: int,
+    def load(self, v: int, pos: np.ndarray, vel: np.ndarray, ws: np.ndarray, wp: np.ndarray,
+             gd: np.ndarray, tab: np.ndarray, par: np.ndarray, t0: float, nsteps: int,
              every: int) -> None:
         """Start a segment of lane ``v`` from the given state (as one call of the single
         kernel with these arguments)."""
