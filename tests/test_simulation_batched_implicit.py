@@ -126,3 +126,19 @@ def test_an_idle_lane_is_left_untouched():
     np.testing.assert_array_equal(q, states[1].vel)
     np.testing.assert_array_equal(w, states[1].ws)
     assert lanes.nrec[1] == 0
+
+
+def test_more_lanes_than_one_block_of_the_contact_loop():
+    # LANES + 2 lanes: two blocks of the slot-wise contact loop, the second partly filled
+    from chaindrive.simulation._batched import LANES
+
+    count = LANES + 2
+    models = [roller_example(links=40, teeth=12, angular_velocity=8.0 + 0.1 * v, load_torque=50.0)
+              for v in range(count)]
+    states = [warm_start(m) for m in models]
+    lanes, tabs = _lanes(models, states)
+    for v in range(count):
+        _load(lanes, v, models[v], states[v], tabs[v], 40 + v % 5, 7)
+    _run(lanes)
+    for v in (0, LANES - 1, LANES, count - 1):
+        _assert_lane_equals(lanes, v, _single(models[v], states[v], 40 + v % 5, 7))
