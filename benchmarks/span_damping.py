@@ -73,7 +73,14 @@ def steady(alphas, members=2):
 
 
 def sweep(name, alphas):
-    from _dynamic_sweep import drive_of, periods_and_settle, read_cache, settled_run, sweep_drives, tooth_peaks
+    from _dynamic_sweep import (
+        drive_of,
+        periods_and_settle,
+        read_cache,
+        settled_run,
+        sweep_drives,
+        tooth_peaks,
+    )
 
     warnings.simplefilter("ignore")
     s = next(d for d in sweep_drives(64) if d.name == name)
