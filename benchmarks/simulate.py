@@ -90,7 +90,9 @@ symplectic Euler, no contacts, no records) as the ceiling of a link-steps/s figu
 machine.
 
 Steady state (``--steady``, also in the default run): ``steady_state`` of the same drive
-from nothing against an ensemble of four long explicit runs (benchmarks/_steady.py), printing
+from nothing against an ensemble of four explicit runs measured 8 s, 8 s after the warm start
+(benchmarks/_steady.py; also the early reference 0.5-8.5 s and the exact integrator over the
+steady state's own window), printing
 ``steady state, 16B 100 links: X s CPU, within Y % of the reference``.
 
 Batched (``--batched``, also after the scaling): the batched kernel

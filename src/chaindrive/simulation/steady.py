@@ -32,10 +32,13 @@ over one tooth period) in a fraction of a second:
 The tight-span tension is that of :meth:`SimulationResult.tight_side_tension` (the link
 nearest the middle of the span entering the driver). A drive whose spans vibrate without
 damping (a long, lightly tensioned slack span) has no periodic steady state: its
-statistics wander by a few per cent over tenths of a second (the benchmark drive of
-``benchmarks/simulate.py``: means of 0.5 s windows of a 5 s run between −1.4 % and
-+1.6 % of the whole run's); ``standard_error`` and ``settled`` say how far a short
-measurement can be trusted. docs/simulation.md, "Steady state".
+statistics wander by a few per cent over tenths of a second, and its running tension
+builds up over seconds as the slack span's vibration grows (the benchmark drive of
+``benchmarks/simulate.py``: means of 8 s windows of one 30 s explicit run from 3.14 kN
+at 0.5 s to 3.59 kN at 22 s; the steady state at 0.6 s is 4–5 % below an ensemble of
+runs measured 8 s after the warm start, as the exact integrator is over the same
+window); ``standard_error`` (of the measured periods only) and ``settled`` say how far
+a short measurement can be trusted. docs/simulation.md, "Steady state".
 """
 
 from __future__ import annotations
