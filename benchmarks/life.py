@@ -6,8 +6,9 @@ Prints
   (:mod:`chaindrive.life.efficiency`) against every published chain-efficiency measurement kept in
   ``tests/data/published/`` (provenance in each file's header), each with its configuration;
   the slack side unloaded where the rig had no derailleur, else at the measured derailleur spring
-  tension over two 11T jockey wheels (assumed), and a count of the points within the 0.5
-  percentage-point aim;
+  tension over two 11T jockey wheels (assumed) with the cage's drag
+  (:data:`~chaindrive.life.DERAILLEUR_DRAG`, fitted on Wilson's 50 W points), and a count of the
+  points within the 0.5 percentage-point aim;
 * ``holding limit vs makers' rule: z = N``: the largest elongation the ISO 606 tooth form
   holds (the roller centre at the tooth corner) next to the makers' replacement limit;
 * ``jump-over, analysis vs simulation: CASE X %``: the worn chain in the dynamic
@@ -166,6 +167,9 @@ def _run_worn(teeth, elongation, tight, back_force, duration=0.8, angular_veloci
 JUMP_CASES = ((9, 0.2), (11, 0.2), (11, 0.1), (13, 0.15), (17, 0.1))
 #: further cases on larger wheels (smaller elongations: the holding limit falls as 1/z)
 JUMP_CASES_MORE = ((21, 0.08), (25, 0.06))
+#: (teeth, elongation, F [N]): three cases chosen before they were run (issue 32: spread over the teeth, the
+#: elongation, 0.2 to 0.8 of the holding limit, and the load F = T1 + T2; not picked by their result)
+JUMP_CASES_NEW = ((15, 0.12, 3000.0), (19, 0.03, 1500.0), (31, 0.07, 6000.0))
 
 
 def simulated_jump_ratio(teeth: int, elongation: float, back_force: float = 3000.0, steps: int = 8,
@@ -234,31 +238,38 @@ def jump_over_vs_simulation(teeth: int = 11, elongation: float = 0.2, back_force
 
 #: The slowly driven simulation's onset load ratio ``ρ = M/(R_e T_2,nom)`` of the jump-over cases
 #: (``jump_over_vs_simulation`` at commit c65a478, docs/life.md "Jump-over": 16B, ``F`` = 3 kN, 0.5 rad/s
-#: up to 17 teeth, 0.125 rad/s above; 8 bisection steps, about 2 %): (teeth, elongation, ρ).
-SIMULATED = ((9, 0.20, 14.9), (11, 0.20, 20.5), (11, 0.10, 24.1), (13, 0.15, 30.3), (17, 0.10, 54.5),
-             (21, 0.08, 80.3), (25, 0.06, 121.7))
+#: up to 17 teeth, 0.125 rad/s above; 8 bisection steps, about 2 %), and of :data:`JUMP_CASES_NEW`
+#: (``simulated_jump_ratio`` at ``quasi_static_speed``, branch life5): (teeth, elongation, ρ, F [N]).
+SIMULATED = ((9, 0.20, 14.9, 3000.0), (11, 0.20, 20.5, 3000.0), (11, 0.10, 24.1, 3000.0), (13, 0.15, 30.3, 3000.0),
+             (17, 0.10, 54.5, 3000.0), (21, 0.08, 80.3, 3000.0), (25, 0.06, 121.7, 3000.0),
+             (15, 0.12, 41.8, 3000.0), (19, 0.03, 86.9, 1500.0), (31, 0.07, 161.9, 6000.0))
 
 
-def jump_table_vs_simulation(back_force: float = 3000.0) -> None:
+def jump_table_vs_simulation() -> None:
     """Print the analysis' reduced compliant model (:func:`chaindrive.life.jump_onset`, the table of
     ``scripts/tabulate_wrap_jump.py``) against :data:`SIMULATED`, its CPU per call (the memo
     cleared) and, for the 17-tooth case, a fresh :func:`chaindrive.life.wrap_jump_ratio`."""
     from chaindrive.life import jump_onset, wrap_jump_ratio
     from chaindrive.life import jump_table as JT
 
-    for teeth, elongation, simulated in SIMULATED:
+    for teeth, elongation, simulated, back_force in SIMULATED:
         calls = 20
         cpu = time.process_time()
         for _ in range(calls):
             JT._rows.cache_clear()
-            got = jump_onset(0.0254, teeth, 0.01588, elongation, load=back_force)
+            with warnings.catch_warnings():  # outside the table: said on the line
+                warnings.simplefilter("ignore")
+                got = jump_onset(0.0254, teeth, 0.01588, elongation, load=back_force)
         cpu = (time.process_time() - cpu) / calls
-        print(f"jump-over, reduced model vs simulation: z = {teeth}, e = {100 * elongation:g} %: "
+        new = " (new case)" if (teeth, elongation, back_force) in JUMP_CASES_NEW else ""
+        print(f"jump-over, reduced model vs simulation: z = {teeth}, e = {100 * elongation:g} %, "
+              f"F = {back_force / 1e3:g} kN{new}: "
               f"{100 * (got.load_ratio / simulated - 1):+.1f} % (onset load ratio M/(R_e T2): reduced model "
-              f"{got.load_ratio:.1f} = {got.correction:.4f} x beta^-n {got.rigid_ratio:.0f}, simulation slowly "
+              f"{got.load_ratio:.1f} = {got.correction:.4f} x beta^-n {got.rigid_ratio:.0f}, e/e_hold "
+              f"{got.fraction:.2f}{' (outside the table)' if got.outside else ''}, simulation slowly "
               f"{simulated:.1f}; {1e3 * cpu:.2f} ms of CPU per call)")
     cpu = time.process_time()
-    fresh = wrap_jump_ratio(0.0254, 17, 0.01588, 0.1, back_force, low=20.0, high=120.0, rtol=0.02)
+    fresh = wrap_jump_ratio(0.0254, 17, 0.01588, 0.1, 3000.0, low=20.0, high=120.0, rtol=0.02)
     cpu = time.process_time() - cpu
     print(f"jump-over, the compliant model itself: z = 17, e = 10 %: {fresh.load_ratio:.1f} in {cpu:.1f} s of CPU")
 
@@ -274,6 +285,8 @@ def main() -> None:
               f"{100 * float(replacement_limit(z)):.2f} %")
     for teeth, elongation in JUMP_CASES + JUMP_CASES_MORE:
         jump_over_vs_simulation(teeth, elongation)
+    for teeth, elongation, back_force in JUMP_CASES_NEW:
+        jump_over_vs_simulation(teeth, elongation, back_force)
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
         for name in ("roller_industrial", "multi_wheel", "mining_conveyor", "crawler_conveyor"):
