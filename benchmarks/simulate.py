@@ -100,7 +100,10 @@ Batched (``--batched``, also after the scaling): the batched kernel
 variants of the 100-link drive (speed and load drawn at random), printing ``batched, N
 variants: R link-steps/s per core, F of the ceiling`` (and of the ceiling compiled with
 ``error_model="numpy"``, whose link loop runs as vector instructions; the batched kernel is
-compiled so).
+compiled so); then the batched implicit kernel (``chaindrive.simulation._batched_implicit``,
+each variant bit-equal to the single implicit kernel) on the same 64 variants at their
+accurate implicit step: ``batched implicit, N variants: R link-steps/s per core, F of the
+ceiling`` and its ratio to the single implicit kernel on the same variants in the same run.
 
 Exudyn (``--exudyn``): the same drive, benchmarks/peers/exudyn_drive.py (its docstring).
 
@@ -528,6 +531,66 @@ def batched_rate(variants=64, links=100, steps=3000):
     return best, plain
 
 
+def batched_implicit_rate(variants=64, links=100, steps=1200, plain=None):
+    """Link-steps per second (CPU time) of the batched implicit kernel
+    (``chaindrive.simulation._batched_implicit``, each lane bit-equal to the single
+    implicit kernel) on ``variants`` variants of the benchmark drive (as
+    :func:`batched_rate`, each at its accurate implicit step), against the single implicit
+    kernel on the same variants in the same run, and its fraction of the point-mass
+    ceiling (:func:`plain_chain_rate`)."""
+    from chaindrive.simulation._batched_implicit import Lanes, integrate_implicit_lanes
+    from chaindrive.simulation._implicit import integrate_implicit
+    from chaindrive.simulation.steady import warm_start
+
+    rng = np.random.default_rng(1)
+    models = [roller_example(links=links, teeth=17, ramp_time=0.1,
+                             angular_velocity=float(rng.uniform(15.0, 25.0)),
+                             load_torque=float(rng.uniform(100.0, 300.0)))
+              for _ in range(variants)]
+    states = [warm_start(m) for m in models]
+    tabs = [K.seat_table(s.wp) for s in states]
+    pars = []
+    for m, s in zip(models, states, strict=True):
+        par = s.par.copy()
+        par[K.P_DT] = m.accurate_time_step()
+        pars.append(par)
+
+    def batch(nsteps):
+        lanes = Lanes(variants, links, states[0].ws.shape[0], states[0].gd.shape[0],
+                      max(t.shape[1] for t in tabs), 1)
+        for v, s in enumerate(states):
+            lanes.load(v, s.pos, s.vel, s.ws, s.wp, s.gd, tabs[v], pars[v], s.time, nsteps,
+                       nsteps)
+        t0 = time.process_time()
+        integrate_implicit_lanes(*lanes.arrays(), nsteps)
+        return time.process_time() - t0
+
+    def single(nsteps):
+        spent = 0.0
+        for v, s in enumerate(states):
+            pos, vel, ws = s.pos.copy(), s.vel.copy(), s.ws.copy()
+            recs = K.empty_records(1, links, ws.shape[0], 1)
+            t0 = time.process_time()
+            integrate_implicit(pos, vel, np.zeros_like(pos), np.zeros_like(pos), np.zeros(links),
+                               np.zeros(links), ws, s.wp, s.gd, tabs[v], pars[v], s.time, nsteps,
+                               nsteps, np.zeros((1, 4)), *recs, 0)
+            spent += time.process_time() - t0
+        return spent
+
+    batch(5)
+    single(5)  # compile / warm the cache
+    best_b = variants * links * steps / min(batch(steps) for _ in range(3))
+    best_s = variants * links * steps / min(single(steps) for _ in range(2))
+    plain = plain_chain_rate() if plain is None else plain
+    print(f"batched implicit, {variants} variants: {best_b:.3g} link-steps/s per core, "
+          f"{best_b / plain:.2f} of the ceiling ({1e9 / best_b:.1f} ns per link-step; the "
+          f"single implicit kernel on the same variants {best_s:.3g}, {1e9 / best_s:.1f} ns: "
+          f"{best_b / best_s:.2f}x; the point-mass ceiling {plain:.3g}; {links}-link 16B "
+          f"drives at their accurate implicit step, CPU time, load average "
+          f"{__import__('os').getloadavg()[0]:.1f})", flush=True)
+    return best_b, best_s
+
+
 def scaling(lengths=(100, 500, 1000, 2000, 5000), link_steps=1.5e8):
     """One line per chain length: assembly time and kernel link-steps/s (CPU time) of both
     integrators, and the implicit one's CPU time per simulated second."""
@@ -614,7 +677,8 @@ def main():
     ap.add_argument("--no-scaling", action="store_true",
                     help="only the comparison (the default runs both, `make bench`)")
     ap.add_argument("--batched", action="store_true",
-                    help="only the batched kernel's rate on 64 variants of the drive")
+                    help="only the batched kernels' rates (explicit, implicit) on 64 variants "
+                         "of the drive")
     ap.add_argument("--steady", action="store_true",
                     help="only the steady state against its long reference run "
                          "(benchmarks/_steady.py; also part of the default run)")
@@ -623,7 +687,8 @@ def main():
         scaling()
         return
     if args.batched:
-        batched_rate()
+        _, plain = batched_rate()
+        batched_implicit_rate(plain=plain)
         return
     import sys
     from pathlib import Path
@@ -736,7 +801,8 @@ def main():
     if not args.no_scaling:
         print()
         scaling()
-        batched_rate()
+        _, plain = batched_rate()
+        batched_implicit_rate(plain=plain)
 
 
 def _at_peer_accuracy(label, peer, ref, own_rows):

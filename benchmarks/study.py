@@ -23,7 +23,11 @@ stress, maximum chain force, wear life, verdict.
 Dynamic study (``--dynamic N``): N variants of the same drive (speed 300...1500 rpm, power
 5...25 kW) with the outputs ``dynamics.peak_tension`` and ``dynamics.mean_tension`` (the
 running drive's steady state per variant) on 2 workers: ``dynamic study, N variants: T s on
-W workers`` (aim: 1,000 variants in < 2 min on 2 cores).
+W workers`` (aim: 1,000 variants in < 2 min on 2 cores), each batch's drives stepped
+together by the batched implicit kernel (``chaindrive.study._dynamics.LANES = 64`` on the
+workers) and, in the same run, one ``steady_state`` per variant (the study's default;
+the same results), then the CPU time per variant of both and
+of the batched explicit kernel in one process.
 Usage: ``python benchmarks/study.py [--variants N] [--million] [--per-core] [--dynamic N]``
 (``--per-core``: only the three per-core figures).
 """
@@ -109,32 +113,52 @@ seed = 5
 """ + STUDY[STUDY.index("[[vary]]"):STUDY.index("[[vary]]\npath = \"contact.skew\"")]
 
 
-def dynamic_study(variants: int, workers: int = 2) -> None:
-    """The running drive's steady state (``dynamics.*`` outputs, one
-    :func:`chaindrive.simulation.steady_state` per variant) of ``variants`` variants on
-    ``workers`` dask workers: wall time, the workers' CPU time inside the variants."""
+def _set_lanes(lanes: int) -> int:
+    """On a worker: the drives stepped together per batch of the study's dynamics."""
+    from chaindrive.study import _dynamics
+
+    _dynamics.LANES = lanes
+    return lanes
+
+
+def dynamic_study(variants: int, workers: int = 2, lanes: int = 64) -> float:
+    """The running drive's steady state (``dynamics.*`` outputs) of ``variants`` variants on
+    ``workers`` dask workers (a local cluster, one thread each), each batch's drives
+    stepped together by the batched implicit kernel (``lanes`` > 0,
+    ``steady_states_implicit``) or one ``steady_state`` per variant (``lanes`` 0; the same
+    results): wall time, the workers' CPU time inside the variants. Returns the wall time."""
+    import logging
+
+    from distributed import Client, LocalCluster
+
     study = parse_study(DYNAMIC.format(samples=variants), filename="dynamic.toml",
                         folder=ROOT / "examples")
     load0 = os.getloadavg()[0]
-    with tempfile.TemporaryDirectory() as tmp:
-        run = run_study(study, Path(tmp) / "out", workers=workers, progress=False)
+    with LocalCluster(n_workers=workers, threads_per_worker=1, processes=True,
+                      dashboard_address="127.0.0.1:0", silence_logs=logging.CRITICAL) as cluster, \
+            Client(cluster) as client, tempfile.TemporaryDirectory() as tmp:
+        client.run(_set_lanes, lanes)
+        run = run_study(study, Path(tmp) / "out", scheduler=cluster.scheduler_address,
+                        progress=False)
         table = read_results(Path(tmp) / "out")
         cpu = sum(table.column("cpu_seconds").to_pylist())
         settled = sum(bool(x) for x in table.column("dynamics.settled").to_pylist())
+    how = f"batched implicit, {lanes} lanes" if lanes else "per-variant steady_state"
     print(f"dynamic study, {run.computed} variants: {run.seconds:.1f} s on {run.workers} workers "
-          f"(compute {run.compute_seconds:.1f} s; {run.failed} failed; CPU inside the variants "
-          f"{cpu:.1f} s = {1e3 * cpu / max(run.computed, 1):.0f} ms per variant, "
+          f"({how}; compute {run.compute_seconds:.1f} s; {run.failed} failed; CPU inside the "
+          f"variants {cpu:.1f} s = {1e3 * cpu / max(run.computed, 1):.0f} ms per variant, "
           f"{run.computed / max(cpu, 1e-9) * workers:.1f} variants/s on {workers} free cores; "
           f"{settled} settled within 40 tooth periods; load average {load0:.1f} before, "
           f"{os.getloadavg()[0]:.1f} after)", flush=True)
+    return run.seconds
 
 
 def dynamic_per_core(study, count: int = 48) -> None:
     """CPU time per variant in one process of the study's dynamic outputs: the per-variant
-    steady state (``steady_state``, the linearly implicit integrator, what ``dynamics.*``
-    runs) against the batched one (``steady_states``: the explicit batched kernel, the
-    variants stepped together), on the first ``count`` variants (drives built outside the
-    clock)."""
+    steady state (``steady_state``, the linearly implicit integrator) against the batched
+    implicit one (``steady_states_implicit``: the same calls, the drives' implicit steps
+    taken together; bit-equal) and the batched explicit one (``steady_states``: the explicit
+    batched kernel), on the first ``count`` variants (drives built outside the clock)."""
     import copy
     import warnings
 
@@ -142,6 +166,7 @@ def dynamic_per_core(study, count: int = 48) -> None:
     from chaindrive.simulation import model_from_drive
     from chaindrive.simulation.steady import steady_state
     from chaindrive.simulation.steady_batch import steady_states
+    from chaindrive.simulation.steady_lanes import steady_states_implicit
     from chaindrive.study.spec import set_path
 
     models = []
@@ -153,17 +178,24 @@ def dynamic_per_core(study, count: int = 48) -> None:
                 set_path(data, path, value)
             models.append(model_from_drive(project_from_mapping(data, filename="variant")))
     steady_states(models[:2], periods=2)  # compiled code loaded outside the clock
+    steady_states_implicit(models[:2], periods=2)
     steady_state(models[0], periods=2)
     c0 = time.process_time()
     batched = steady_states(models)
     c1 = time.process_time()
-    single = [steady_state(m) for m in models]
+    lanes = steady_states_implicit(models)
     c2 = time.process_time()
+    single = [steady_state(m) for m in models]
+    c3 = time.process_time()
     diff = [abs(b.peak_tension / s.peak_tension - 1.0) for b, s in zip(batched, single, strict=True)]
+    same = sum(a.peak_tension == s.peak_tension and a.mean_tension == s.mean_tension
+               for a, s in zip(lanes, single, strict=True))
     print(f"dynamic outputs in one process, {len(models)} variants: per-variant steady state "
-          f"{1e3 * (c2 - c1) / len(models):.0f} ms CPU per variant, batched (explicit) "
-          f"{1e3 * (c1 - c0) / len(models):.0f} ms; peak tension batched/per-variant: mean "
-          f"|difference| {100 * sum(diff) / len(diff):.1f} % (the span vibration's scatter; "
+          f"{1e3 * (c3 - c2) / len(models):.0f} ms CPU per variant, batched implicit "
+          f"{1e3 * (c2 - c1) / len(models):.0f} ms ({same} of {len(models)} peak and mean "
+          f"tensions bit-equal), batched explicit {1e3 * (c1 - c0) / len(models):.0f} ms; "
+          f"peak tension batched explicit/per-variant: mean |difference| "
+          f"{100 * sum(diff) / len(diff):.1f} % (the span vibration's scatter; "
           f"load average {os.getloadavg()[0]:.1f})", flush=True)
 
 
@@ -234,7 +266,9 @@ def main() -> None:
     args = parser.parse_args()
     print(f"machine: {os.cpu_count()} cores, load average {os.getloadavg()[0]:.1f}")
     if args.dynamic:
-        dynamic_study(args.dynamic)
+        batched = dynamic_study(args.dynamic)
+        single = dynamic_study(args.dynamic, lanes=0)
+        print(f"dynamic study, batched implicit / per-variant wall time: {batched / single:.2f}")
         dynamic_per_core(parse_study(DYNAMIC.format(samples=args.dynamic), filename="dynamic.toml",
                                      folder=ROOT / "examples"))
         return

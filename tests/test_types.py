@@ -18,7 +18,9 @@ import chaindrive
 ROOT = Path(chaindrive.__file__).parent
 #: Modules compiled by numba (``@njit``): typed by numba, not by annotations.
 NUMBA_KERNELS = {"simulation/_kernel.py", "simulation/_statics.py", "simulation/_implicit.py",
-                 "simulation/_batched.py", "simulation/_contact.py"}
+                 "simulation/_batched.py", "simulation/_contact.py",
+                 "simulation/_batched_implicit.py", "simulation/_lane_contacts.py",
+                 "simulation/_lane_passes.py"}
 
 
 def _public_functions(tree: ast.Module) -> list[tuple[str, ast.FunctionDef | ast.AsyncFunctionDef, bool]]:

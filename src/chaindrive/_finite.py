@@ -32,7 +32,8 @@ import numpy as np
 
 from .errors import ChainDriveError, ConvergenceError, InfeasibleError, InputError
 
-__all__ = ["finite_guard", "first_nonfinite", "check_finite_fields", "finite_fields", "guard_public", "guard_scope"]
+__all__ = ["finite_guard", "first_nonfinite", "check_finite_fields", "finite_fields", "guard_public", "guard_scope",
+           "refuse_nonfinite_result"]
 
 F = TypeVar("F", bound=Callable[..., Any])
 
@@ -173,6 +174,8 @@ def _finite_tree(obj: Any, _depth: int = 0) -> bool:
         values: Any = [getattr(obj, name, None) for name in names]
     elif t is tuple or t is list:
         values = obj
+    elif t is dict:  # first_nonfinite walks a mapping's values the same way
+        values = obj.values()
     else:
         return first_nonfinite(obj, _depth) is None
     if _depth >= 12:  # first_nonfinite looks no deeper
@@ -332,16 +335,25 @@ def finite_guard(function: F | None = None, *, check_result: bool = True,
                                       "collinear or the numbers overflow); check the dimensions") from None
             raise
         if check_result and not _finite_tree(result):
-            where = first_nonfinite(result)
-            if where is not None:
-                raise InfeasibleError(
-                    f"{label}: the result{' ' + where.lstrip('.') if where else ''} is not a finite number "
-                    f"({_bad_value(result, where)}) for these inputs: they lie outside the range where the "
-                    "formula is defined, or the numbers overflow double precision")
+            refuse_nonfinite_result(label, result)
         return result
 
     wrapper._finite_guarded = True  # type: ignore[attr-defined]
     return cast(F, wrapper)  # functools.wraps keeps the signature
+
+
+def refuse_nonfinite_result(label: str, result: Any) -> None:
+    """Raise :class:`~chaindrive.errors.InfeasibleError` naming ``label`` and the place of the first
+    NaN/inf in ``result`` (what :func:`finite_guard` raises); nothing when it holds none. For a
+    function guarded with ``check_result=False`` that checks a result it computes afresh itself."""
+    if _finite_tree(result):
+        return
+    where = first_nonfinite(result)
+    if where is not None:
+        raise InfeasibleError(
+            f"{label}: the result{' ' + where.lstrip('.') if where else ''} is not a finite number "
+            f"({_bad_value(result, where)}) for these inputs: they lie outside the range where the "
+            "formula is defined, or the numbers overflow double precision")
 
 
 class guard_scope:  # noqa: N801 - used like a function (``with guard_scope():``)

@@ -72,6 +72,9 @@ def clear() -> None:
             cached.cache_clear()
     two_wheels._GRIDS.__dict__.clear()  # the phase grids the root search evaluated last
     two_wheels._VERTEX_CACHE.clear()
+    from ..layout import wrap
+
+    wrap._KEPT.clear()
     from ..kinematics import entry, solver
     from ..layout import polygon_loop, wheels
     from ..vibration import resonance
@@ -84,6 +87,13 @@ def clear() -> None:
 
     for cached in (required_static_safety_for, jump_over._form_cached, jump_table._rows):
         cached.cache_clear()
+    from ..drive import model
+
+    for cached in model.DERIVED_CACHES:
+        cached.cache_clear()
+    from ..geometry import polygon
+
+    polygon._bi_regular_kept.cache_clear()
 
 
 def memo(*, maxsize: int = 128, key: Callable[..., Hashable] | None = None) -> Callable[[F], F]:

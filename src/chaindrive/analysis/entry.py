@@ -6,6 +6,7 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 from typing import Any
 
+from .._finite import finite_guard
 from .._results import Result
 from ..drive.model import Drive
 from ..kinematics import EntryKinematics, chain_entry
@@ -114,6 +115,9 @@ def entry_cases(drive: Drive) -> tuple[EntryCase, ...]:
     return tuple(out)
 
 
+# the result is not walked again: its cases were checked when built (EntryCase refuses NaN/inf
+# fields) and its kinematics by chain_entry's own guard
+@finite_guard(check_result=False)
 def drive_entry(drive: Drive, *, points: int = 361) -> DriveEntry:
     """Entry kinematics (exact rigid-link model, Dolipiński et al. eqs (1)–(43) corrected).
 

@@ -20,6 +20,7 @@ design studies start from one.
 from __future__ import annotations
 
 import dataclasses
+import functools
 import math
 from collections.abc import Mapping
 from dataclasses import dataclass, field
@@ -63,6 +64,33 @@ TENSIONER_PARTS: dict[str, dict[str, str]] = {
                 "spring_angle": "rad"},
 }
 GUIDE_KINDS = ("tangential", "chordal", "guided")
+
+
+# The drive's derived quantities, kept by value (an analysis asks for the chain speed, the wheel speeds
+# and the torque a dozen times): the same numbers as the formulas give, emptied by
+# chaindrive.analysis._memo.clear with the analysis' other stores.
+@functools.lru_cache(maxsize=256)
+def _sides_per_turn(teeth: int, link_chain: bool) -> int:
+    return sides_per_turn(teeth, link_chain)
+
+
+@functools.lru_cache(maxsize=256)
+def _mean_chain_speed(sides: int, pitch: float, speed: float) -> float:
+    return float(mean_chain_speed(sides, pitch, speed))
+
+
+@functools.lru_cache(maxsize=256)
+def _torque_from_power(power: float, speed: float) -> float:
+    return float(F.torque_from_power(power, speed))
+
+
+@functools.lru_cache(maxsize=256)
+def _power_from_torque(torque: float, speed: float) -> float:
+    return float(F.power_from_torque(torque, speed))
+
+
+#: The stores above (for chaindrive.analysis._memo.clear).
+DERIVED_CACHES = (_sides_per_turn, _mean_chain_speed, _torque_from_power, _power_from_torque)
 
 
 @dataclass(frozen=True)
@@ -147,7 +175,10 @@ class Wheel:
         """Chain links seated per turn (:func:`sides_per_turn`); 0 for a toothless idler."""
         if self.teeth is None:
             return 0
-        return sides_per_turn(self.teeth, bool(chain.is_link_chain))
+        try:
+            return _sides_per_turn(self.teeth, bool(chain.is_link_chain))  # the same number, kept
+        except TypeError:  # an argument that cannot be hashed
+            return sides_per_turn(self.teeth, bool(chain.is_link_chain))
 
 
 @dataclass(frozen=True)
@@ -568,7 +599,7 @@ class Drive:
     def chain_speed(self) -> float:
         """Mean chain speed [m/s]: sides per turn × pitch × ω / 2π."""
         w = self.driving_wheel
-        return float(mean_chain_speed(w.sides_per_turn(self.chain), self.pitch, self.speed))
+        return _mean_chain_speed(w.sides_per_turn(self.chain), self.pitch, self.speed)
 
     def angular_velocities(self) -> np.ndarray:
         """Mean angular velocity of every wheel [rad/s]."""
@@ -598,10 +629,10 @@ class Drive:
         """(torque [N·m], power [W]) on the driving wheel: the one the load gives, the other at the drive's speed."""
         torque, power = self.load.torque, self.load.power
         if torque is not None:
-            return float(torque), float(F.power_from_torque(torque, self.speed))
+            return float(torque), _power_from_torque(float(torque), self.speed)
         if power is None:  # refused by Load(); the check narrows the type
             raise InputError("load: give exactly one of power and torque", field="load")
-        return float(F.torque_from_power(power, self.speed)), float(power)
+        return _torque_from_power(float(power), self.speed), float(power)
 
     def design_power(self) -> float:
         """Power times service factor [W]."""

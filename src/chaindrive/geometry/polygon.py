@@ -11,6 +11,8 @@ chain is the case ``d -> 0`` with ``z/2`` pairs of equal sides.
 
 from __future__ import annotations
 
+import functools
+
 import numpy as np
 from numpy.typing import ArrayLike
 
@@ -73,6 +75,37 @@ def bi_regular_polygon(
     >>> round(float(R), 6), round(float(d1 + d2), 6), round(2 * np.pi / 8, 6)
     (0.164283, 0.785398, 0.785398)
     """
+    key = (_plain(long_side), _plain(short_side), _plain(pairs))
+    if None not in key:
+        # one polygon asked for again (the layout, the entry and the wheel speeds of one drive;
+        # a number or a 0-d array of it: the checks below make the same 0-d float arrays of both)
+        return _bi_regular_kept(*key)
+    return _bi_regular(long_side, short_side, pairs)
+
+
+#: Plain number types whose value is the whole key of a kept polygon.
+_PLAIN = frozenset({float, int, np.float64, np.int64})
+
+
+def _plain(value: object) -> float | int | None:
+    """``value`` as a plain number when it is one, or a 0-d numeric array of one; else None."""
+    if type(value) in _PLAIN:
+        return value  # type: ignore[return-value]
+    if type(value) is np.ndarray and value.ndim == 0 and value.dtype.kind in "fi":
+        return value.item()
+    return None
+
+
+@functools.lru_cache(maxsize=256)
+def _bi_regular_kept(long_side: float, short_side: float,
+                     pairs: float) -> tuple[FloatOrArray, FloatOrArray, FloatOrArray]:
+    # the results are numpy scalars (immutable); an InputError is raised, not kept
+    return _bi_regular(long_side, short_side, pairs)
+
+
+def _bi_regular(long_side: ArrayLike, short_side: ArrayLike,
+                pairs: ArrayLike) -> tuple[FloatOrArray, FloatOrArray, FloatOrArray]:
+    """:func:`bi_regular_polygon`, computed."""
     a = check_positive("long_side", long_side, "m")
     b = check_positive("short_side", short_side, "m")
     n = check_positive("pairs", pairs)

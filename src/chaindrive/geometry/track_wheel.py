@@ -19,13 +19,14 @@ the line joining the two pins.
 
 from __future__ import annotations
 
+import warnings
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
 import numpy as np
 from numpy.typing import ArrayLike
 
-from .._finite import finite_guard
+from .._finite import finite_guard, refuse_nonfinite_result
 from .._registry import Registry
 from .._results import Result, quantity
 from .._typing import FloatOrArray
@@ -406,9 +407,29 @@ class TrackDriveWheel(WheelFiles):
             )
         return float(self.root_factor), float(self.tip_factor)
 
-    @finite_guard
+    @finite_guard(check_result=False)  # a result computed afresh is checked below; a kept one was
     def dimensions(self) -> TrackDriveWheelDimensions:
         """Pitch, root and tip radii with their ranges from Sharipov, and the drawn flank."""
+        # kept with the fields it was computed from (the tooth check and the worn-tip check of
+        # one analysis ask for it in turn; a changed field computes it again), its warnings replayed
+        fields = (self.pitch, self.teeth, self.pin_radius, self.link, self.root_factor, self.tip_factor,
+                  self.elongation_limit)
+        kept = self.__dict__.get("_dimensions_kept")
+        if kept is not None and kept[0] == fields:
+            for category, text in kept[2]:
+                warnings.warn(text, category, stacklevel=2)
+            return kept[1]
+        with warnings.catch_warnings(record=True) as caught:
+            warnings.simplefilter("always")
+            dims = self._dimensions()
+        refuse_nonfinite_result("dimensions", dims)
+        replay = tuple((w.category, str(w.message)) for w in caught)
+        for category, text in replay:
+            warnings.warn(text, category, stacklevel=2)
+        self.__dict__["_dimensions_kept"] = (fields, dims, replay)
+        return dims
+
+    def _dimensions(self) -> TrackDriveWheelDimensions:
         t, z, r = self.pitch, self.teeth, self.pin_radius
         root_factor, tip_factor = self._factors()
         r0 = float(track_wheel_pitch_radius(t, z))

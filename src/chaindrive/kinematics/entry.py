@@ -80,6 +80,7 @@ from .histories import PaperEntry, PeriodMotion
 from .solver import (
     GuideEnd,
     WheelPolygon,
+    _taut_span_length,
     rod_entry,
     rod_seating_schedule,
     taut_entry,
@@ -295,7 +296,7 @@ def _checked_seats(case: _Case) -> np.ndarray:
 def _check_reach(case, poly, seats):
     """At every instant the free span must hold at least one whole (longest) link."""
     grid = np.linspace(seats[0], seats[-1], 721)
-    span = taut_entry(poly, grid, case.w, case.guide(), seats).span
+    span = _taut_span_length(poly, grid, case.guide(), seats)
     longest = max(poly.links)
     if np.min(span) < longest:
         raise InfeasibleError(
@@ -465,7 +466,7 @@ def _summary(case: _Case, model: str, seats, first: np.ndarray | None = None) ->
     eps = 1e-9 * T
     extra = np.concatenate([seats - eps, seats + eps, [T - eps, eps, T - 1e-4 * T, 1e-4 * T]])
     extra = extra[(extra > 0) & (extra < T)]
-    grid = np.sort(np.concatenate([base[:-1], extra]))
+    grid = np.concatenate([base[:-1], extra])  # unsorted: only its extremes are taken
     s_in = np.asarray(seats, dtype=float)
     s_in = s_in[(s_in > eps) & (s_in < T - eps)]
     # one-sided limits of the acceleration at the period end (left) and start (right), and

@@ -57,6 +57,7 @@ ogniwowego na koło gniazdowe"), Figs 1, 4, 5 and eqs (1)-(43).
 from __future__ import annotations
 
 import functools
+import math
 from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Any
@@ -178,6 +179,8 @@ def _taut_gap(poly: WheelPolygon, k: int, phi: np.ndarray, guide: GuideEnd | Non
     """Cross product (N - S) x (G - S): > 0 while vertex k+1 is inside the span line;
     ``angles``: ``poly.vertex(k)[0], poly.vertex(k + 1)[0]`` when the caller has them."""
     b0, b1 = (poly.vertex(k)[0], poly.vertex(k + 1)[0]) if angles is None else angles
+    if type(phi) is float:  # a root search's point: Python floats (math.sin and cos round as numpy's)
+        return _taut_gap_float(float(poly.radius), float(b0) - phi, float(b1) - phi, guide)  # type: ignore[return-value]
     sx, sy = _pos(poly.radius, b0 - phi)
     nx, ny = _pos(poly.radius, b1 - phi)
     wx: FloatOrArray
@@ -189,9 +192,36 @@ def _taut_gap(poly: WheelPolygon, k: int, phi: np.ndarray, guide: GuideEnd | Non
     return (nx - sx) * wy - (ny - sy) * wx
 
 
+def _taut_gap_float(R: float, a0: float, a1: float, guide: GuideEnd | None) -> float:
+    """:func:`_taut_gap` at one angle in Python floats (the same operations), ``a0``, ``a1`` the
+    angles of the two vertices at it."""
+    sx, sy, nx, ny = R * math.sin(a0), R * math.cos(a0), R * math.sin(a1), R * math.cos(a1)
+    if guide is None:
+        return (nx - sx) * 0.0 - (ny - sy) * 1.0
+    return (nx - sx) * (guide[1] - sy) - (ny - sy) * (guide[0] - sx)
+
+
 def _find_crossing(fun: Callable[[Any], Any], estimate: float, what: str) -> float:
-    """Root of ``fun`` where it goes from + to -, nearest to ``estimate``."""
+    """Root of ``fun`` where it goes from + to -, nearest to ``estimate``.
+
+    Bracketed on a 1441-point scan of ``estimate ± π/2``; the scan starts with the
+    ``2 _SCAN_WINDOW + 1`` points about the estimate and takes the whole grid only when
+    a crossing outside them could be as near (``fun`` is pointwise: the same values, the
+    same bracket)."""
     grid = estimate + np.linspace(-0.5 * np.pi, 0.5 * np.pi, 1441)
+    centre = 720
+    lo, hi = centre - _SCAN_WINDOW, centre + _SCAN_WINDOW + 1
+    g = fun(grid[lo:hi])
+    idx = np.nonzero((g[:-1] > 0) & (g[1:] <= 0))[0] + lo
+    if idx.size:
+        dist = np.abs(grid[idx] - estimate)
+        k = int(np.argmin(dist))
+        # a crossing not seen starts at index lo - 1 or below, or hi - 1 or above
+        if dist[k] < min(abs(grid[lo - 1] - estimate), abs(grid[hi - 1] - estimate)):
+            i = int(idx[k])
+            if g[i + 1 - lo] == 0.0:
+                return float(grid[i + 1])
+            return float(brentq(fun, grid[i], grid[i + 1], xtol=1e-15, rtol=1e-15, maxiter=200))
     g = fun(grid)
     idx = np.nonzero((g[:-1] > 0) & (g[1:] <= 0))[0]
     if idx.size == 0:
@@ -200,6 +230,10 @@ def _find_crossing(fun: Callable[[Any], Any], estimate: float, what: str) -> flo
     if g[i + 1] == 0.0:
         return float(grid[i + 1])
     return float(brentq(fun, grid[i], grid[i + 1], xtol=1e-15, rtol=1e-15, maxiter=200))
+
+
+#: Points either side of the estimate that :func:`_find_crossing` scans first (of 720).
+_SCAN_WINDOW = 180
 
 
 def taut_seating_angles(poly: WheelPolygon, guide: GuideEnd | None = None) -> np.ndarray:
@@ -332,40 +366,46 @@ def taut_entry(
         seats = taut_seating_angles(poly, guide)
     R = poly.radius
     w = angular_velocity
-
-    def geometry(ph: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
-        k, b0, c = _locate(poly, seats, ph)
-        beta = b0 - ph
-        sb, cb = np.sin(beta), np.cos(beta)
-        return k, c, sb, cb
-
-    k, c, sb, cb = geometry(phi)
+    # the angles asked for and φ = 0 (the origin of x) in one pass (a pointwise computation:
+    # the same numbers as two)
+    both = np.append(phi, 0.0)
+    k, b0, c = _locate(poly, seats, both)
+    beta = b0 - both
+    sb, cb = np.sin(beta), np.cos(beta)
     sx, sy = R * sb, R * cb
-    spx, spy = -R * cb, R * sb  # dS/dφ
+    shape = phi.shape
     if guide is None:
-        m = c - sx
-        m0 = _free_m0(poly, seats)
-        dm = -spx
-        ddm = sx
+        m0 = float(c[-1] - sx[-1])
+        m = c[:-1] - sx[:-1]
+        dm = R * cb[:-1]  # -dS_x/dφ
+        ddm = sx[:-1]
+        span = None
     else:
         gx, gy = guide
         wx, wy = gx - sx, gy - sy
         D = np.hypot(wx, wy)
+        m0 = float(c[-1] + D[-1])
+        sx, sy, sb, cb, wx, wy, D = sx[:-1], sy[:-1], sb[:-1], cb[:-1], wx[:-1], wy[:-1], D[:-1]
         ux, uy = wx / D, wy / D
-        us = ux * spx + uy * spy
-        m = c + D
-        _, c0, sb0, cb0 = geometry(np.zeros(1))
-        m0 = float(c0[0] + np.hypot(gx - R * sb0[0], gy - R * cb0[0]))
+        us = ux * (-R * cb) + uy * (R * sb)  # u · dS/dφ
+        m = c[:-1] + D
         dm = -us
         ddm = (R * R - us * us) / D + (ux * sx + uy * sy)
-    span = None if guide is None else D
-    return TautEntry(x=m - m0, velocity=w * dm, acceleration=w * w * ddm, span=span, y=sy, vy=w * spy,
-                     ay=-w * w * sy, k=k, seats=seats)
+        span = D.reshape(shape)
+    sy = sy[:-1] if guide is None else sy
+    return TautEntry(x=(m - m0).reshape(shape), velocity=(w * dm).reshape(shape),
+                     acceleration=(w * w * ddm).reshape(shape), span=span, y=sy.reshape(shape),
+                     vy=(w * (R * sb[:-1] if guide is None else R * sb)).reshape(shape),
+                     ay=(-w * w * sy).reshape(shape), k=k[:-1].reshape(shape), seats=seats)
 
 
-def _free_m0(poly: WheelPolygon, seats: np.ndarray) -> float:
-    k, b0, c = _locate(poly, seats, np.zeros(1))
-    return float(c[0] - poly.radius * np.sin(b0[0]))
+def _taut_span_length(poly: WheelPolygon, phi: np.ndarray, guide: GuideEnd, seats: np.ndarray) -> np.ndarray:
+    """``taut_entry(poly, phi, ω, guide, seats).span`` alone (the same operations): the free span
+    length ``|G - S|`` [m] at the wheel angles ``phi`` (a 1-d array)."""
+    k, b0, c = _locate(poly, seats, phi)
+    beta = b0 - phi
+    R = poly.radius
+    return np.hypot(guide[0] - R * np.sin(beta), guide[1] - R * np.cos(beta))
 
 
 # ----------------------------------------------------------------------------- rod model

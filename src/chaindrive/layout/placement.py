@@ -72,6 +72,8 @@ def _clearance(c: np.ndarray, r: np.ndarray, sides: ArrayLike | None):
         wrap = wrap_layout(c, r, sides)
     except InfeasibleError:
         return out, None
+    if n <= 2:  # every centre is an end of both spans: none to check
+        return out, wrap
     a, b = np.asarray(wrap.span_start), np.asarray(wrap.span_end)
     ab = b - a
     den = np.maximum(np.sum(ab * ab, axis=1), 1e-300)

@@ -126,7 +126,7 @@ def _radius_and_offsets(pitch, teeth, bar_diameter):
         from ..geometry.polygon import link_chain_central_angles
 
         d = float(bar_diameter)
-        R = float(pitch_radius(t, z, d))
+        R = cached_pitch_radius(t, z, d)  # float(pitch_radius(t, z, d)), kept
         d1, d2 = (float(x) for x in link_chain_central_angles(t, d, z))
         steps = np.tile([d1, d2], z)
     return R, np.concatenate([[0.0], np.cumsum(steps)[:-1]])

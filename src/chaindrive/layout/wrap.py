@@ -2,13 +2,16 @@
 
 from __future__ import annotations
 
+import contextlib
 import math
+from collections import OrderedDict
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 from numpy.typing import ArrayLike
 
-from .._finite import finite_guard
+from .._finite import finite_guard, refuse_nonfinite_result
 from .._results import Result, quantity
 from .._validation import as_float_array, check_nonnegative, check_positive, check_teeth
 from ..errors import InfeasibleError, InputError
@@ -53,7 +56,7 @@ class WrapLayout(Result):
     length: float = quantity("m")
 
 
-@finite_guard
+@finite_guard(check_result=False)  # a result computed afresh is checked below; a kept one was
 def wrap_layout(centres: ArrayLike, radii: ArrayLike, sides: ArrayLike | None = None) -> WrapLayout:
     r"""Spans, wrap angles and length of a chain around wheels at given positions.
 
@@ -120,6 +123,30 @@ def wrap_layout(centres: ArrayLike, radii: ArrayLike, sides: ArrayLike | None = 
     s = np.ones(n) if sides is None else as_float_array("sides", sides)
     if s.shape != (n,) or not ((s == 1.0) | (s == -1.0)).all():
         raise InputError(f"sides must be +1 or -1 for each of the {n} wheels, got {sides!r}")
+    key = (c.tobytes(), r.tobytes(), s.tobytes())
+    kept = _KEPT.get(key)
+    if kept is not None:  # the same wheels asked for again (an analysis draws its layout several times)
+        with contextlib.suppress(KeyError):  # another thread may have dropped it meanwhile
+            _KEPT.move_to_end(key)
+        fields: dict[str, Any] = {name: (v.copy() if type(v) is np.ndarray else v) for name, v in kept.items()}
+        return WrapLayout(**fields)
+    lay = _wrap_layout(c, r, s)
+    refuse_nonfinite_result("wrap_layout", lay)
+    _KEPT[key] = {name: (v.copy() if type(v) is np.ndarray else v) for name, v in lay.__dict__.items()}
+    if len(_KEPT) > 64:
+        with contextlib.suppress(KeyError):
+            _KEPT.popitem(last=False)
+    return lay
+
+
+#: The last layouts computed, by the bytes of their checked inputs (chaindrive.analysis._memo.clear
+#: empties it); a kept layout is handed out as copies, so no caller shares its arrays.
+_KEPT: OrderedDict[tuple[bytes, bytes, bytes], dict] = OrderedDict()
+
+
+def _wrap_layout(c: np.ndarray, r: np.ndarray, s: np.ndarray) -> WrapLayout:
+    """:func:`wrap_layout` of checked inputs."""
+    n = c.shape[0]
     rho = s * r
     # wheel i + 1 beside wheel i (np.roll(..., -1) without its overhead: the same values)
     c_next = np.concatenate((c[1:], c[:1]))

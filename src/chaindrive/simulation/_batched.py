@@ -44,7 +44,9 @@ def _seat_lane(qx, qy, ex, ey, cth, sth, rad, rr, delta, cps, sps, re, arcflank,
     :func:`._contact.seat_penetration` evaluated with the same operations, the one that
     applies selected (one square root, two divisions), so that the variants' loop runs
     as vector instructions and each lane's result equals the scalar one to the last bit.
-    Returns ``(pen, nx, ny)``; the normal is meaningless where ``pen <= 0``."""
+    Returns ``(pen, nx, ny, ds)``; the normal is meaningless where ``pen <= 0``; ``ds`` the
+    distance from the seating arc's centre where the roller is in the seat (−1 elsewhere:
+    the seat's curvature is ``1/ds``)."""
     erx = ex * cth - ey * sth
     ery = ex * sth + ey * cth
     a = qx * erx + qy * ery - rad
@@ -73,7 +75,7 @@ def _seat_lane(qx, qy, ex, ey, cth, sth, rad, rr, delta, cps, sps, re, arcflank,
     den = 1.0 if straight else d
     na = nan_ / den
     nb = nbn / den
-    return pen, na * erx - nb * ery, na * ery + nb * erx
+    return pen, na * erx - nb * ery, na * ery + nb * erx, d if seat else -1.0
 
 
 #: lanes of a block: the branch-free contact loop runs over the variants of one block, its
@@ -184,7 +186,7 @@ def _slot_forces(sq, so, gc, g0, pt, p0, nb):
     for v in range(nb):
         qx = sq[Q_QX * LANES + v]
         qy = sq[Q_QY * LANES + v]
-        pen, nx, ny = _seat_lane(qx, qy, sq[Q_EX * LANES + v], sq[Q_EY * LANES + v],
+        pen, nx, ny, _ = _seat_lane(qx, qy, sq[Q_EX * LANES + v], sq[Q_EY * LANES + v],
                                  sq[Q_CTH * LANES + v], sq[Q_STH * LANES + v],
                                  gb[G_RAD * LANES + v], pb[L.P_RROLLER * LANES + v],
                                  gb[G_DELTA * LANES + v], gb[G_CPS * LANES + v],

@@ -10,6 +10,8 @@ from __future__ import annotations
 import math
 
 import numpy as np
+from numba import njit, types
+from numba.extending import intrinsic
 
 from ..errors import InfeasibleError
 from .model import SimulationModel
@@ -119,23 +121,28 @@ def _solve_offset(excess, n, p, adj):
     except (ValueError, InfeasibleError):
         s0 = None
     if s0 is None:
-        # search a bracket near 0
+        # search a bracket near 0: the grid's intervals nearest 0 first (ties: the lower
+        # one, as np.argmin over all of them would choose)
         grid = np.linspace(lo, hi, 401)
-        vals = []
-        reason = ""
-        for g in grid:
-            try:
-                vals.append(excess(g))
-            except InfeasibleError as exc:
-                vals.append(np.nan)
-                reason = str(exc)
-        vals = np.array(vals)
-        idx = np.where(np.isfinite(vals[:-1]) & np.isfinite(vals[1:]) & (vals[:-1] * vals[1:] <= 0))[0]
-        if len(idx) == 0:
-            why = f" ({reason})" if not np.any(np.isfinite(vals)) and reason else ""
-            raise InfeasibleError(f"no position of wheel {adj} fits a loop of {n} links{why}")
-        k0 = idx[np.argmin(np.abs(grid[idx]))]
-        s0 = brentq(excess, grid[k0], grid[k0 + 1], xtol=1e-12)
+        known: dict[int, float] = {}
+        reasons: dict[int, str] = {}
+
+        def value(k):
+            if k not in known:
+                try:
+                    known[k] = excess(grid[k])
+                except InfeasibleError as exc:
+                    known[k] = np.nan
+                    reasons[k] = str(exc)
+            return known[k]
+
+        for k in np.argsort(np.abs(grid[:-1]), kind="stable"):
+            a, b = value(k), value(k + 1)
+            if np.isfinite(a) and np.isfinite(b) and a * b <= 0:
+                return brentq(excess, grid[k], grid[k + 1], xtol=1e-12)
+        reason = reasons[max(reasons)] if reasons else ""   # the last one along the grid
+        why = f" ({reason})" if not np.any(np.isfinite(list(known.values()))) and reason else ""
+        raise InfeasibleError(f"no position of wheel {adj} fits a loop of {n} links{why}")
     return s0
 
 
@@ -201,6 +208,58 @@ def _hit(piece, centres, radii, wrap, point, length, after):
     return best
 
 
+@intrinsic
+def _fma(typingctx, a, b, c):
+    """``a b + c`` rounded once (LLVM's ``fma``)."""
+    def codegen(context, builder, signature, args):
+        return builder.fma(*args)
+    return types.float64(types.float64, types.float64, types.float64), codegen
+
+
+@njit(cache=True, fastmath=False)
+def _span_pins(pos, pars, k, n, par, q0, q1, u0, u1, metric, length0, length1):
+    """Pins ``k + 1, k + 2, ...`` placed along one span while they fall on it (the span
+    case of :func:`_hit`, as numpy rounds it: its two-element dot products ``w·u`` as
+    ``fma(w₁, u₁, w₀ u₀)``); returns the last pin placed and its parameter."""
+    while k < n:
+        length = length0 if k % 2 == 0 else length1
+        w0 = pos[k, 0] - q0
+        w1 = pos[k, 1] - q1
+        b = _fma(w1, u1, w0 * u0)
+        disc = b * b - (_fma(w1, w1, w0 * w0) - length * length)
+        if disc < 0.0:
+            break
+        s = b + math.sqrt(disc)
+        if not (par + 1e-12 < s <= metric + 1e-12):
+            break
+        pos[k + 1, 0] = q0 + s * u0
+        pos[k + 1, 1] = q1 + s * u1
+        pars[k + 1] = s
+        par = s
+        k += 1
+    return k, par
+
+
+_DOT_IS_FMA: list[bool] = []
+
+
+def _dot_is_fma() -> bool:
+    """Does numpy round a two-element dot product ``w @ u`` as ``fma(w₁, u₁, w₀ u₀)``
+    (its BLAS kernel on this machine)? Then :func:`_span_pins` places the pins exactly
+    as :func:`_hit` does; else the walk stays in Python."""
+    if not _DOT_IS_FMA:
+        from fractions import Fraction
+
+        rng = np.random.default_rng(20261129)
+        same = True
+        for _ in range(64):
+            w, u = rng.standard_normal(2) * 10.0, rng.standard_normal(2)
+            exact = Fraction(float(w[1])) * Fraction(float(u[1])) + Fraction(float(w[0]) * float(u[0]))
+            same &= float(w @ u) == float(exact)
+        _DOT_IS_FMA.append(bool(same))
+    return _DOT_IS_FMA[0]
+
+
 def _walk(centres, radii, pieces, wrap, lengths, n):
     """Pins 0..n placed link by link (exact link lengths) along the path from wheel 0's exit.
 
@@ -213,7 +272,19 @@ def _walk(centres, radii, pieces, wrap, lengths, n):
     where = [(0, 0.0)]
     pos[0] = pieces[0][1][0]
     ip, par = 0, 0.0
-    for k in range(n):
+    fast = _dot_is_fma()
+    pars = np.zeros(n + 1)
+    k = 0
+    while k < n:
+        kind, data, metric = pieces[ip % npc]
+        if fast and kind == "span":
+            # the pins that follow on this span, compiled
+            last, par = _span_pins(pos, pars, k, n, par, data[0][0], data[0][1], data[1][0],
+                                   data[1][1], metric, lengths[0], lengths[1])
+            where.extend((ip, float(pars[i])) for i in range(k + 1, last + 1))
+            k = last
+            if k == n:
+                break
         length = lengths[k % 2]
         after = par + 1e-12
         for step in range(npc + 1):
@@ -233,6 +304,7 @@ def _walk(centres, radii, pieces, wrap, lengths, n):
             a = a_in + sense * par
             pos[k + 1] = centres[j] + abs(radii[j]) * np.array([math.cos(a), math.sin(a)])
         where.append((ip, par))
+        k += 1
     ip, par = where[-1]
     kind, data, metric = pieces[ip % npc]
     frac = par / wrap[data[0]] if kind == "arc" else par / metric
@@ -270,9 +342,18 @@ def _place_exact(model: SimulationModel):
         wrap = {x[1][0]: x[2] / t * 2 * math.pi / nseat[x[1][0]] for x in pieces if x[0] == "arc"}
         return centres, pieces, wrap
 
+    walks: dict[float, tuple] = {}
+
+    def walk(s):
+        # each offset walked once: Brent's method starts from the bracket's ends, which
+        # the bracket search has walked, and its root is one of its own points
+        if s not in walks:
+            centres, pieces, wrap = layout(s)
+            walks[s] = (centres, pieces, wrap, _walk(centres, radii, pieces, wrap, lengths, n))
+        return walks[s]
+
     def closure(s):
-        centres, pieces, wrap = layout(s)
-        return _walk(centres, radii, pieces, wrap, lengths, n)[2]
+        return walk(s)[3][2]
 
     s0 = _solve_offset(excess, n, t, adj)
     step = 0.25 * t
@@ -292,8 +373,7 @@ def _place_exact(model: SimulationModel):
     if f1 * f0 > 0:
         raise InfeasibleError(f"no position of wheel {adj} closes a loop of {n} links")
     sc = brentq(closure, min(s0, s1), max(s0, s1), xtol=1e-13) if f0 != 0 else s0
-    centres, pieces, wrap = layout(sc)
-    pos, where, _ = _walk(centres, radii, pieces, wrap, lengths, n)
+    centres, pieces, wrap, (pos, where, _) = walk(sc)
     npc = len(pieces)
     theta = np.full(len(model.wheels), np.nan)
     # wheel 0: pin 0 (even seat 0) at its exit point

@@ -105,13 +105,12 @@ def _bordered_solve(nx, npins, hessian, diagonal, rhs):
     """Solve ``(H + diag) y = rhs`` for the chain's bordered band structure.
 
     Pins 1 … N−1 (unknowns 2 … 2N−1) couple only to their neighbours: a band of half
-    width 3, solved by banded LU (LAPACK ``gbsv``); pin 0 (which closes the loop) and the
-    wheel unknowns form a small border, eliminated through its Schur complement. The
-    cost is linear in the number of pins. Entries outside that structure (none in this
-    model) fall back to a general sparse LU.
+    width 3, solved by banded LU (LAPACK ``gbsv``, as ``scipy.linalg.solve_banded`` calls
+    it); pin 0 (which closes the loop) and the wheel unknowns form a small border,
+    eliminated through its Schur complement. The cost is linear in the number of pins.
+    Entries outside that structure (none in this model) fall back to a general sparse
+    LU. The triplets are summed in their order (``np.bincount``, as ``np.add.at`` would).
     """
-    from scipy.linalg import solve_banded
-
     rows, cols, vals = hessian
     lo, hi = 2, 2 * npins
     nin = hi - lo
@@ -125,30 +124,41 @@ def _bordered_solve(nx, npins, hessian, diagonal, rhs):
 
         a = csc_matrix((vals, (rows, cols)), shape=(nx, nx)) + diags(diagonal)
         return splu(a.tocsc(), permc_spec="MMD_AT_PLUS_A").solve(rhs)
-    ab = np.zeros((7, nin))
-    np.add.at(ab, (band, cols[both] - lo), vals[both])
-    ab[3] += diagonal[lo:hi]
+    # LAPACK's band storage: 3 rows for the LU's fill-in above the 7 diagonals
+    ab = np.zeros((10, nin))
+    ab[3:] = np.bincount(band * nin + (cols[both] - lo), vals[both], 7 * nin).reshape(7, nin)
+    ab[6] += diagonal[lo:hi]
     border = np.r_[0:lo, hi:nx]
     where = np.full(nx, -1)
     where[border] = np.arange(border.size)
     nb = border.size
-    e_in = np.zeros((nin, nb))     # rows inner, columns border
-    sel = inner_r & ~inner_c
-    np.add.at(e_in, (rows[sel] - lo, where[cols[sel]]), vals[sel])
-    e_out = np.zeros((nb, nin))    # rows border, columns inner
-    sel = ~inner_r & inner_c
-    np.add.at(e_out, (where[rows[sel]], cols[sel] - lo), vals[sel])
-    f = np.zeros((nb, nb))
+    b = np.empty((nb + 1, nin))     # the right-hand sides, column-major for LAPACK
+    b[0] = rhs[lo:hi]
+    sel = inner_r & ~inner_c        # rows inner, columns border
+    b[1:] = np.bincount(where[cols[sel]] * nin + (rows[sel] - lo), vals[sel],
+                        nb * nin).reshape(nb, nin)
+    sel = ~inner_r & inner_c        # rows border, columns inner
+    e_out = np.bincount(where[rows[sel]] * nin + (cols[sel] - lo), vals[sel],
+                        nb * nin).reshape(nb, nin)
     sel = ~inner_r & ~inner_c
-    np.add.at(f, (where[rows[sel]], where[cols[sel]]), vals[sel])
+    f = np.bincount(where[rows[sel]] * nb + where[cols[sel]], vals[sel], nb * nb).reshape(nb, nb)
     f[np.arange(nb), np.arange(nb)] += diagonal[border]
-    z = solve_banded((3, 3), ab, np.column_stack([rhs[lo:hi], e_in]), check_finite=False)
+    _, _, z, info = _gbsv()(3, 3, ab, b.T, overwrite_ab=True, overwrite_b=True)
+    if info > 0:
+        raise np.linalg.LinAlgError("singular matrix")
     schur = f - e_out @ z[:, 1:]
     v = np.linalg.solve(schur, rhs[border] - e_out @ z[:, 0])
     y = np.empty(nx)
     y[lo:hi] = z[:, 0] - z[:, 1:] @ v
     y[border] = v
     return y
+
+
+def _gbsv():
+    """LAPACK's ``dgbsv`` (the routine ``scipy.linalg.solve_banded`` uses for a band)."""
+    from scipy.linalg import get_lapack_funcs
+
+    return get_lapack_funcs(("gbsv",), (np.zeros((1, 1)),))[0]
 
 
 def solve_static(x0: np.ndarray, npins: int, wp: np.ndarray, theta: np.ndarray,

@@ -180,22 +180,7 @@ def steady_states(drives_or_models: Sequence[Any], *, periods: int = 12, bins: i
     """
     check_counts(periods=periods, bins=bins, window=window, max_settle=max_settle,
                  samples=samples, settle_tolerance=settle_tolerance)
-    if not isinstance(batch, (int, np.integer)) or not 1 <= batch <= 4096:
-        raise InputError(f"batch must be a whole number from 1 to 4096, got {batch!r}",
-                         field="batch")
-    if min_settle_time is not None and not min_settle_time >= 0.0:
-        raise InputError(f"min_settle_time must be >= 0 s, got {min_settle_time!r}",
-                         field="min_settle_time")
-    if isinstance(drives_or_models, (str, bytes)) or not hasattr(drives_or_models, "__iter__"):
-        raise InputError("drives_or_models must be a sequence of drives or simulation models, "
-                         f"got {type(drives_or_models).__name__}", field="drives_or_models")
-    items = list(drives_or_models)
-    if not 1 <= len(items) <= MAX_BATCH_DRIVES:
-        raise InputError(f"drives_or_models: 1 to {MAX_BATCH_DRIVES} drives, got {len(items)}",
-                         field="drives_or_models")
-    if states is not None and len(states) != len(items):
-        raise InputError(f"states: one per drive ({len(items)}), got {len(states)}",
-                         field="states")
+    items = check_many(drives_or_models, states, min_settle_time, batch=batch)
     models = [x if isinstance(x, SimulationModel) else _model_of(x) for x in items]
     drives = [_Drive(i, m, None if states is None else states[i], min_settle_time, samples,
                      max_settle) for i, m in enumerate(models)]
@@ -213,6 +198,31 @@ def steady_states(drives_or_models: Sequence[Any], *, periods: int = 12, bins: i
                                  d.settle_time, d.settled, d.steps, d.dt, float("nan"),
                                  "explicit", time.process_time() - d.cpu)
     return out  # type: ignore[return-value]
+
+
+def check_many(drives_or_models: Any, states: Sequence[State | None] | None,
+               min_settle_time: float | None, **lanes: int) -> list[Any]:
+    """The drives of a call for many drives as a list, their arguments checked: the one
+    keyword ``lanes`` (its name the argument's) 1 to 4,096, ``min_settle_time`` >= 0, 1 to
+    ``MAX_BATCH_DRIVES`` drives, one state per drive (``InputError`` naming the argument)."""
+    (name, count), = lanes.items()
+    if not isinstance(count, (int, np.integer)) or not 1 <= count <= 4096:
+        raise InputError(f"{name} must be a whole number from 1 to 4096, got {count!r}",
+                         field=name)
+    if min_settle_time is not None and not min_settle_time >= 0.0:
+        raise InputError(f"min_settle_time must be >= 0 s, got {min_settle_time!r}",
+                         field="min_settle_time")
+    if isinstance(drives_or_models, (str, bytes)) or not hasattr(drives_or_models, "__iter__"):
+        raise InputError("drives_or_models must be a sequence of drives or simulation models, "
+                         f"got {type(drives_or_models).__name__}", field="drives_or_models")
+    items = list(drives_or_models)
+    if not 1 <= len(items) <= MAX_BATCH_DRIVES:
+        raise InputError(f"drives_or_models: 1 to {MAX_BATCH_DRIVES} drives, got {len(items)}",
+                         field="drives_or_models")
+    if states is not None and len(states) != len(items):
+        raise InputError(f"states: one per drive ({len(items)}), got {len(states)}",
+                         field="states")
+    return items
 
 
 def _run(active: list[_Drive], window: int, tolerance: float, max_settle: int,

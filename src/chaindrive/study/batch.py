@@ -162,6 +162,17 @@ class _Outputs:
         from ._dynamics import wanted
 
         self.dynamics = wanted(outputs)
+        #: the dynamics of rows computed together (:meth:`prepare`), by row
+        self.steady: dict[int, Any] = {}
+
+    def prepare(self, rows: Sequence[tuple[int, Any]]) -> None:
+        """The dynamics of the rows ``(i, analysis)`` computed together
+        (:func:`chaindrive.study._dynamics.dynamics_results`), when an output reads them."""
+        if self.dynamics and rows:
+            from ._dynamics import dynamics_results
+
+            found = dynamics_results([analysis.drive for _, analysis in rows])
+            self.steady.update(zip((i for i, _ in rows), found, strict=True))
 
     def _field(self, part: Any, result: Any, head: str, rest: str | None, out: str) -> Any:
         """The output read from the JSON of the one field it starts with, where the part's
@@ -188,7 +199,10 @@ class _Outputs:
             from ._dynamics import HEAD, dynamics_result
 
             try:
-                special[HEAD] = dynamics_result(analysis.drive)
+                found = self.steady.pop(i, None)
+                if isinstance(found, Exception):
+                    raise found
+                special[HEAD] = found if found is not None else dynamics_result(analysis.drive)
             except Exception as exc:  # noqa: BLE001 - a failing variant is a result, not a stop
                 columns["error"][i] = one_line(exc)
                 return
@@ -298,6 +312,7 @@ def evaluate_columns(base: dict, variants: Sequence[dict[str, Any]], outputs: Se
             if uniform and i not in refused else str(i)
         groups.setdefault(key, []).append(i)
     outs = _Outputs(outputs)
+    deferred: list[tuple[list[tuple[int, Any]], list[str], bool]] = []
     for members in groups.values():
         first = variants[members[0]]
         rows_of_group: list[tuple[int, Any]] = []
@@ -320,10 +335,15 @@ def evaluate_columns(base: dict, variants: Sequence[dict[str, Any]], outputs: Se
         except Exception as exc:  # noqa: BLE001 - the group's project fails: per variant, as before
             extra = []
             rows_of_group = [(i, exc) for i in members]
+        deferred.append((rows_of_group, extra, len(members) > 1))
+    # the dynamics of every analysed row at once (the drives stepped together), then the rows
+    outs.prepare([(i, a) for rows_of_group, _, _ in deferred for i, a in rows_of_group
+                  if not isinstance(a, BaseException)])
+    for rows_of_group, extra, grouped in deferred:
         joined: dict[tuple[str, ...], str | None] = {}  # the warnings column, per distinct tuple
         for i, analysis in rows_of_group:
             if isinstance(analysis, BaseException):
-                if len(members) > 1 or fast:
+                if grouped or fast:
 
                     row = evaluate_variant(base, variants[i], outputs, parts=parts)  # the exact message
                     for name in [*outputs, "error", "warnings"]:

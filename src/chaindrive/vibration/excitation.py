@@ -273,6 +273,15 @@ def _span_response(span: TensionerSpan, om: np.ndarray, y1: Any, y2: Any, zeta: 
     s_unit = np.linspace(0.0, 1.0, n)
     w_max = np.zeros(G.shape)
     u_amp = np.zeros(G.shape)
+    # the shapes along the span of each distinct frequency once (a frequency asked for again, the
+    # quasi-static one of every excitation: its rows gathered, the same numbers)
+    distinct, again = np.unique(om, return_inverse=True) if om.ndim == 1 else (om, None)
+    repeated = distinct.size < om.size
+    kd = [distinct * np.sqrt(span.mass_per_length / t) for t in t_hat] if repeated else k
+
+    def rows(x: np.ndarray) -> np.ndarray:
+        return x[again] if repeated else x
+
     for a, y in ((0, y1), (1, y2)):  # the excited part a, the other b
         if np.all(np.asarray(y) == 0.0):
             continue
@@ -282,11 +291,12 @@ def _span_response(span: TensionerSpan, om: np.ndarray, y1: Any, y2: Any, zeta: 
         u = (t_hat[a] * gg[a] * k[a] * y / np.sin(k[a] * ell[a]))[None, :] / G          # (K, F)
         sa = s_unit * ell[a]
         ka = k[a][:, None]                                                             # (F, 1)
-        wa = (yc * np.cos(ka * sa))[None] + ((gg[a] * u[..., None] - (yc * np.cos(ka * ell[a])))
-                                             / np.sin(ka * ell[a])) * np.sin(ka * sa)[None]
+        kda = kd[a][:, None]
+        wa = (yc * rows(np.cos(kda * sa)))[None] + ((gg[a] * u[..., None] - (yc * np.cos(ka * ell[a])))
+                                                    / np.sin(ka * ell[a])) * rows(np.sin(kda * sa))[None]
         sb = s_unit * ell[b]
-        kb = k[b][:, None]
-        wb = gg[b] * u[..., None] * (np.sin(kb * (ell[b] - sb)) / np.sin(kb * ell[b]))[None]
+        kdb = kd[b][:, None]
+        wb = gg[b] * u[..., None] * rows(np.sin(kdb * (ell[b] - sb)) / np.sin(kdb * ell[b]))[None]
         w_max += np.maximum(np.abs(wa).max(axis=-1), np.abs(wb).max(axis=-1))
         u_amp += np.abs(u)
     return w_max, u_amp

@@ -36,7 +36,8 @@ from ..units import angular_velocity_to_rpm
 
 __all__ = ["PALMGREN_LINE_CONTACT", "RunningTensionCalibration", "calibration", "seat_contact_stiffness",
            "seating_impact_velocity", "seating_impact_force", "running_peak_tension",
-           "running_tension_range_violations", "check_running_tension_range", "within_accurate_range"]
+           "running_tension_range_violations", "check_running_tension_range", "tooth_frequency_ratio",
+           "span_resonance_mode", "validated_range_violations"]
 
 #: Palmgren's roller–raceway (steel on steel line contact) deformation
 #: ``δ = 3.84e-5 Q^0.9 / l^0.8`` (δ in mm, Q in N, l in mm); in SI
@@ -180,7 +181,7 @@ def seating_impact_force(velocity: ArrayLike, stiffness: ArrayLike, mass: ArrayL
 
 @dataclass(frozen=True)
 class RunningTensionCalibration:
-    """The reduced model's constants and validity range, with their provenance.
+    """The reduced model's constants, validity and validated ranges, with their provenance.
 
     Attributes
     ----------
@@ -191,22 +192,28 @@ class RunningTensionCalibration:
     ranges : dict
         Validity range of each input, ``name -> (low, high)``, the sweep's span.
     provenance : str
-        How the constants were obtained (the sweep, the fit, its accuracy).
-    calibration_worst, calibration_rms, holdout_worst : float
-        Relative errors of the model against the simulated peaks [1].
+        How the constants were obtained (the sweep, the reference, the fit, the accuracy).
+    reference : str
+        The simulated reference the constants are fitted to: ``"long"``, the median of all the
+        per-tooth-period peaks of six 0.25 s windows after 2.5 s of settling.
+    calibration_worst, calibration_rms : float
+        In-sample relative errors over the drives the constants are fitted to (the validated
+        range's) [1].
     crossval_worst, crossval_rms : float
-        Out-of-fold relative errors of a four-fold cross-validation over the whole sweep
-        (each fold predicted by the constants fitted on the other three) [1].
+        Over the whole sweep, out of sample: four-fold cross-validation (each fold predicted by
+        the constants fitted on the other three), against the long reference [1].
     loo_worst, loo_rms : float
-        Leave-one-out relative errors (each drive predicted by the constants fitted on all
-        the others) [1].
-    accurate_factor : float
-        The accurate range: drives whose predicted ``F_peak / F_t`` is at most this [1]
-        (:func:`within_accurate_range`).
-    accurate_drives : int
-        Sweep drives in that range.
-    accurate_worst : float
-        Their worst out-of-sample error (the larger of the four-fold and the leave-one-out) [1].
+        The same by leave-one-out [1].
+    short_crossval_worst, short_crossval_rms : float
+        The four-fold cross-validation against the short reference (one window), refitted [1].
+    validated : dict
+        The validated range (:func:`validated_range_violations`): ``chain_speed_max`` [m/s],
+        ``resonance_band`` and ``resonance_modes`` (:func:`span_resonance_mode`), the sweep's
+        ``drives`` inside it, their out-of-sample ``worst`` and ``rms`` (the larger of four-fold
+        and leave-one-out; long reference), ``short_worst``, ``short_rms`` (short reference),
+        the check of the range's choice (``nested_drives``, ``nested_worst``, ``nested_rms``:
+        the range chosen again inside each fold, the held-out drives inside it) and the
+        stored model's ``outside_worst`` on the drives outside it.
     """
     coefficient: float
     impact_exponent: float
@@ -214,22 +221,22 @@ class RunningTensionCalibration:
     reference_teeth: float
     ranges: dict[str, tuple[float, float]]
     provenance: str
+    reference: str
     calibration_worst: float
     calibration_rms: float
-    holdout_worst: float
     crossval_worst: float
     crossval_rms: float
     loo_worst: float
     loo_rms: float
-    accurate_factor: float
-    accurate_drives: int
-    accurate_worst: float
+    short_crossval_worst: float
+    short_crossval_rms: float
+    validated: dict[str, float]
 
 
 @cache
 def calibration() -> RunningTensionCalibration:
     """The stored calibration (``vibration/data/running_tension.json``, written by
-    ``scripts/calibrate_running_tension.py`` from ``benchmarks/data/dynamic_sweep.csv``).
+    ``scripts/calibrate_running_tension.py`` from ``benchmarks/data/dynamic_sweep*.csv``).
 
     >>> 0 < calibration().coefficient < 5
     True
@@ -239,12 +246,12 @@ def calibration() -> RunningTensionCalibration:
         coefficient=float(raw["coefficient"]), impact_exponent=float(raw["impact_exponent"]),
         teeth_exponent=float(raw["teeth_exponent"]), reference_teeth=float(raw["reference_teeth"]),
         ranges={k: (float(v[0]), float(v[1])) for k, v in raw["ranges"].items()},
-        provenance=str(raw["provenance"]), calibration_worst=float(raw["calibration_worst"]),
-        calibration_rms=float(raw["calibration_rms"]), holdout_worst=float(raw["holdout_worst"]),
+        provenance=str(raw["provenance"]), reference=str(raw["reference"]),
+        calibration_worst=float(raw["calibration_worst"]), calibration_rms=float(raw["calibration_rms"]),
         crossval_worst=float(raw["crossval_worst"]), crossval_rms=float(raw["crossval_rms"]),
         loo_worst=float(raw["loo_worst"]), loo_rms=float(raw["loo_rms"]),
-        accurate_factor=float(raw["accurate_factor"]), accurate_drives=int(raw["accurate_drives"]),
-        accurate_worst=float(raw["accurate_worst"]))
+        short_crossval_worst=float(raw["short_crossval_worst"]), short_crossval_rms=float(raw["short_crossval_rms"]),
+        validated={k: float(v) for k, v in raw["validated"].items()})
 
 
 def running_peak_tension(tight_tension: ArrayLike, angular_velocity: ArrayLike, pitch: ArrayLike,
@@ -321,38 +328,145 @@ def running_peak_tension(tight_tension: ArrayLike, angular_velocity: ArrayLike, 
     return np.asarray(ft * (1.0 + c.coefficient * x**c.impact_exponent * (z / c.reference_teeth) ** c.teeth_exponent))
 
 
-def within_accurate_range(peak: ArrayLike, tight_tension: ArrayLike) -> np.ndarray:
-    """Whether the reduced model's peak is in its accurate range: ``F_peak / F_t ≤`` the stored
-    ``accurate_factor`` (1.3).
+def tooth_frequency_ratio(angular_velocity: ArrayLike, teeth: ArrayLike, pitch: ArrayLike, tight_tension: ArrayLike,
+                          mass_per_length: ArrayLike, span_length: ArrayLike) -> np.ndarray:
+    """Tooth frequency over the tight span's first transverse natural frequency, ``z ω / ω₁`` [1].
 
-    .. math:: \\frac{F_{peak}}{F_t} \\le f_{acc}
+    .. math:: \\frac{z\\omega}{\\omega_1},\\qquad \\omega_1 = \\frac{\\pi}{l}\\sqrt{\\frac{F_t}{q}}
+              \\left(1 - \\frac{v^2}{c^2}\\right),\\quad v = \\frac{z\\omega p}{2\\pi}
 
-    Where the predicted dynamic part is small the model's out-of-sample error against the
-    simulation stays small: over the calibration sweep, the 18 drives with ``F_peak / F_t ≤
-    1.3`` are within 10.4 % (four-fold cross-validation and leave-one-out, the larger), the
-    other 46 within 36.5 % (``calibration()``). The bound is empirical, chosen on the sweep:
-    the sweep's two worst drives (model 20 % and 36 % low) lie just above it, at 1.36 and
-    1.37 (docs/design.md, "The running peak tension").
+    The tight span as an axially moving string at the tight-side tension
+    (:func:`chaindrive.vibration.string.moving_string_frequencies`), its ``n``-th natural
+    frequency ``n ω₁``; the polygon drives it at the tooth frequency ``z ω``. A whole number ``n``
+    is a span resonance of mode ``n`` (:func:`span_resonance_mode`).
 
     Parameters
     ----------
-    peak : array_like
-        ``F_peak`` of :func:`running_peak_tension` [N].
+    angular_velocity : array_like
+        Driving wheel ``ω`` [rad/s], > 0.
+    teeth : array_like
+        Driving wheel teeth ``z``, > 0.
+    pitch : array_like
+        [m], > 0.
     tight_tension : array_like
         ``F_t`` [N], > 0.
+    mass_per_length : array_like
+        ``q`` [kg/m], > 0.
+    span_length : array_like
+        Tight span ``l`` [m], > 0.
 
     Returns
     -------
-    numpy.ndarray of bool
+    numpy.ndarray
+
+    References
+    ----------
+    J. A. Wickert, C. D. Mote, Classical vibration analysis of axially moving continua,
+    J. Appl. Mech. 57 (1990) 738-744, eq. (29).
 
     Examples
     --------
-    >>> within_accurate_range([2400.0, 6951.0], 2254.0).tolist()
-    [True, False]
+    >>> round(float(tooth_frequency_ratio(15.95, 18, 0.03175, 4246.0, 3.802, 1.4335)), 2)   # sweep drive S13
+    3.93
     """
-    ft = check_positive("tight_tension", tight_tension, "N")
-    f = check_positive("peak", peak, "N")
-    return np.asarray(f / ft <= calibration().accurate_factor)
+    from .string import moving_string_frequencies
+
+    w = check_positive("angular_velocity", angular_velocity, "rad/s")
+    z = check_positive("teeth", teeth)
+    p = check_positive("pitch", pitch, "m")
+    zw = z * w
+    omega = moving_string_frequencies(check_positive("tight_tension", tight_tension, "N"),
+                                      check_positive("mass_per_length", mass_per_length, "kg/m"),
+                                      check_positive("span_length", span_length, "m"),
+                                      chain_speed=zw * p / (2 * math.pi), modes=1)
+    return np.asarray(zw / omega[..., 0])
+
+
+def span_resonance_mode(frequency_ratio: ArrayLike, band: float | None = None, modes: int | None = None) -> np.ndarray:
+    """The transverse mode ``n`` of the tight span the tooth frequency is in resonance with, 0 for none.
+
+    .. math:: n:\\ \\left|\\frac{z\\omega}{n\\,\\omega_1} - 1\\right| < \\delta,\\qquad 1 \\le n \\le N
+
+    Parameters
+    ----------
+    frequency_ratio : array_like
+        ``z ω / ω₁`` (:func:`tooth_frequency_ratio`), > 0.
+    band : float, optional
+        ``δ``, the relative half-width of the resonance band (default the calibration's).
+    modes : int, optional
+        ``N``, the modes checked (default the calibration's).
+
+    Returns
+    -------
+    numpy.ndarray of int
+
+    Notes
+    -----
+    The band and the modes are not derived: they are the validated range's
+    (:func:`calibration`, ``validated``), chosen on the calibration sweep (docs/design.md,
+    "The running peak tension"): the sweep's two worst drives are at ``n`` = 4 (``z ω / ω₁``
+    3.93) and ``n`` = 6 (5.99), their tension swinging at twice the tooth frequency.
+
+    Examples
+    --------
+    >>> span_resonance_mode([3.93, 4.5, 5.99, 25.0]).tolist()
+    [4, 0, 6, 0]
+    """
+    r = check_positive("frequency_ratio", frequency_ratio)
+    d = float(calibration().validated["resonance_band"] if band is None else check_nonnegative("band", band))
+    top = int(calibration().validated["resonance_modes"] if modes is None else check_nonnegative("modes", modes))
+    # the modes either side of r (the band is relative: either may hold it); above the last mode, the last
+    low = np.clip(np.floor(r), 1.0, max(top, 1))
+    out = np.zeros(np.shape(r), dtype=int)
+    best = np.full(np.shape(r), np.inf)
+    for n in (low, np.minimum(low + 1, max(top, 1))):
+        off = np.abs(r / n - 1)
+        hit = (off < d) & (n <= top) & (off < best)
+        out = np.where(hit, n.astype(int), out)
+        best = np.where(hit, off, best)
+    return np.asarray(out)
+
+
+def validated_range_violations(chain_speed: float, frequency_ratio: float) -> tuple[str, ...]:
+    """Why a drive lies outside the reduced model's validated range (empty inside).
+
+    The validated range (:func:`calibration`, ``validated``): chain speed at most ``v_max``
+    (12 m/s, the sweep's whole range) and the tooth frequency not within ``±δ`` (5 %) of any of
+    the tight span's first ``N`` (20) transverse natural frequencies (:func:`span_resonance_mode`).
+    Inside it, over the sweep's drives, the model is within ``validated["worst"]`` of the
+    simulation out of sample (docs/design.md, "The running peak tension").
+
+    Parameters
+    ----------
+    chain_speed : float
+        Mean chain speed ``v`` [m/s], > 0.
+    frequency_ratio : float
+        ``z ω / ω₁`` (:func:`tooth_frequency_ratio`), > 0.
+
+    Returns
+    -------
+    tuple of str
+
+    Examples
+    --------
+    >>> validated_range_violations(1.45, 4.5)
+    ()
+    >>> for why in validated_range_violations(13.0, 3.93):
+    ...     print(why)
+    chain speed 13 m/s is above 12 m/s
+    the tooth frequency is within 5 % of the tight span's transverse mode 4 (z w / w1 = 3.93)
+    """
+    v = float(check_positive("chain_speed", chain_speed, "m/s"))
+    r = float(check_positive("frequency_ratio", frequency_ratio))
+    c = calibration().validated
+    out = []
+    if v > float(c["chain_speed_max"]):
+        out.append(f"chain speed {v:.3g} m/s is above {float(c['chain_speed_max']):g} m/s")
+    n = int(span_resonance_mode(r))
+    if n:
+        out.append(f"the tooth frequency is within {100 * float(c['resonance_band']):g} % of the tight span's "
+                   f"transverse mode {n} (z w / w1 = {r:.3g})")
+    return tuple(out)
 
 
 def running_tension_range_violations(*, pitch: float, teeth: float, teeth_driven: float, angular_velocity: float,
