@@ -15,9 +15,9 @@ Prints
   simulation (``SimulationModel.wheel_pitch``), its slack side slackening as the load
   grows, driven until a tooth is skipped, against the compliant quasi-static wrap
   (:func:`chaindrive.life.wrap_jump_ratio`) under the same torque and span-tension sum: the
-  onset's load ratio ``M/(R_e T_2)``, seven cases at 3 kN, the simulation driven slowly
-  (quasi-static) and at 2 rad/s (``JUMP_CASES``, ``JUMP_CASES_MORE``; docs/life.md,
-  "Jump-over");
+  onset's load ratio ``M/(R_e T_2)``, seven cases at 3 kN and three chosen before they were run
+  (``JUMP_CASES_NEW``: other loads ``F``), the simulation driven slowly (quasi-static) and at
+  2 rad/s (``JUMP_CASES``, ``JUMP_CASES_MORE``; docs/life.md, "Jump-over");
 * ``jump-over, reduced model vs simulation: CASE X %``: the analysis' jump-over onset (the
   compliant wrap's table, :func:`chaindrive.life.jump_onset`) against the slowly driven
   simulation's onsets of the table of docs/life.md (``SIMULATED``), with its CPU time per call
