@@ -4,8 +4,9 @@ docs/simulation.md "Span damping: a study").
 Independent reference: for the viscous term ``−α m v_⊥`` on every pin of a span, each
 transverse mode of the span obeys ``q̈ + α q̇ + ω² q = 0`` (the damping is mass-proportional:
 the undamped modes decouple), so a plucked span's amplitude decays by ``exp(−α t / 2)`` against
-the undamped run whatever its frequency (Rao, *Mechanical Vibrations*, 5th ed., §2.6 and
-§6.14: proportional damping). The default (0) leaves the kernel's arithmetic as it was: the
+the undamped run whatever its frequency (Rao, *Mechanical Vibrations*, 5th ed., §2.6 for one
+mode; mass-proportional damping keeps the undamped modes, its chapter on multidegree-of-freedom
+systems). The default (0) leaves the kernel's arithmetic as it was: the
 calibration cache (tests/test_running_tension.py, slow) checks that to the last bit.
 """
 
