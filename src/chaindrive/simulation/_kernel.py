@@ -514,6 +514,18 @@ def integrate(pos, vel, force, work, tension, contact, ws, wp, gd, tab, par, t0,
     return nrec
 
 
+@njit(cache=True, fastmath=False, inline="always")
+def neighbour_chord(x, y, i):
+    """``(tx, ty, 1/|t|²)``: the chord ``t`` from pin ``i``'s previous neighbour to its next
+    (closed loop)."""
+    n = x.shape[0]
+    a = i - 1 if i > 0 else n - 1
+    b = i + 1 if i < n - 1 else 0
+    tx = x[b] - x[a]
+    ty = y[b] - y[a]
+    return tx, ty, 1.0 / (tx * tx + ty * ty)
+
+
 @njit(cache=True, fastmath=False)
 def span_damping_forces(x, y, vx, vy, fx, fy, cspan):
     """Add the transverse span damping ``−α m v_⊥`` to ``(fx, fy)``: ``v_⊥`` the pin's
@@ -527,13 +539,8 @@ def span_damping_forces(x, y, vx, vy, fx, fy, cspan):
     moves along that chord (zero force), so does a straight span's axial motion. Each
     transverse mode ``n`` of a span gets the damping ratio ``ζ_n = α / (2 ω_n)``.
     """
-    n = x.shape[0]
-    for i in range(n):
-        a = i - 1 if i > 0 else n - 1
-        b = i + 1 if i < n - 1 else 0
-        tx = x[b] - x[a]
-        ty = y[b] - y[a]
-        inv = 1.0 / (tx * tx + ty * ty)
+    for i in range(x.shape[0]):
+        tx, ty, inv = neighbour_chord(x, y, i)
         vn = (vx[i] * ty - vy[i] * tx)
         # v_perp = vn * (ty, -tx) / |t|^2
         fx[i] -= cspan * vn * ty * inv

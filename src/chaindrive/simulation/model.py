@@ -405,8 +405,8 @@ class SimulationModel:
         Transverse span damping rate ``α`` [1/s], ``>= 0`` (a study, docs/simulation.md
         "Span damping: a study"): each pin feels ``−α m v_⊥``, ``v_⊥`` its velocity normal
         to the chord of its neighbours, so a span's transverse mode of angular frequency
-        ``ω_n`` has the damping ratio ``α / (2 ω_n)``; 0 (default): none. Explicit
-        integrator only.
+        ``ω_n`` has the damping ratio ``α / (2 ω_n)``; 0 (default): none. Both
+        single-drive integrators (explicit and implicit); not the batched kernels.
     """
 
     pitch: float

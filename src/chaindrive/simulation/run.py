@@ -553,9 +553,6 @@ def simulate(model: SimulationModel, duration: float, *, dt: float | None = None
     if method not in INTEGRATORS:
         raise UnknownNameError(f"method must be one of {', '.join(INTEGRATORS)}, got {method!r}")
     integrate = INTEGRATORS[method]
-    if method != "explicit" and model.span_damping > 0.0:
-        raise InputError("span_damping (a study) is implemented in the explicit integrator only; "
-                         "use method='explicit'", field="span_damping")
     if dt is None and method == "implicit":
         dt = model.accurate_time_step()
     if dt is not None:

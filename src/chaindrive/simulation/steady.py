@@ -272,9 +272,6 @@ class _Runner:
 
     def __init__(self, model: SimulationModel, state: State, method: str, dt: float,
                  period: float, samples: int, drv: int):
-        if method != "explicit" and model.span_damping > 0.0:
-            raise InputError("span_damping (a study) is implemented in the explicit integrator only; "
-                             "use method='explicit'", field="span_damping")
         self.model, self.method, self.drv = model, method, drv
         self.integrate = INTEGRATORS[method]
         self.span = np.array(tight_span(model, state))
