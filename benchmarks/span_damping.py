@@ -3,7 +3,7 @@ span damping ``SimulationModel.span_damping`` (α [1/s]) on the benchmark drive 
 drives of the dynamic-load sweep. Not imported by the package; not run by CI.
 
     python benchmarks/span_damping.py bench [α ...]     # 16B benchmark drive, 16 s each
-    python benchmarks/span_damping.py steady [α ...]    # steady_state (explicit) vs 2 runs 8 s after 8 s
+    python benchmarks/span_damping.py steady [α ...]    # steady_state (explicit, implicit) vs 2 runs 8 s after 8 s
     python benchmarks/span_damping.py sweep S13 [α ...] # a sweep drive, as benchmarks/_dynamic_sweep.py
 """
 
@@ -21,7 +21,7 @@ import numpy as np
 sys.path.insert(0, os.path.dirname(__file__))
 
 from chaindrive.simulation import assemble, simulate  # noqa: E402
-from chaindrive.simulation.steady import steady_state, warm_start  # noqa: E402
+from chaindrive.simulation.steady import warm_start  # noqa: E402
 
 
 def bench(alphas, seconds=16.0):
@@ -55,21 +55,23 @@ def bench(alphas, seconds=16.0):
               f" slack {ts[t >= 8].mean():.0f}, median peak {np.median(peaks[tp >= 8]):.0f}")
 
 
-def steady(alphas, members=2):
-    from _steady import bench_model, compare, references
+def steady(alphas, members=2, methods=("explicit", "implicit")):
+    from _steady import bench_model, compare, references, timed
 
     base = bench_model()
+    print(f"# load {os.getloadavg()[0]:.1f}; CPU: best of 3 calls (first call in brackets)")
     for a in alphas:
         m = dataclasses.replace(base, span_damping=a)
         ref, early, _, _ = references(m, seconds=8.0, settle=8.0, members=members)
-        c0 = time.process_time()
-        s = steady_state(m, method="explicit")
-        cpu = time.process_time() - c0
-        for name, rf in (("8 s after 8 s", ref), ("early 0.5-8.5 s", early)):
-            dm, dp, dpp, rms = compare(s, rf)
-            print(f"alpha {a:g}: steady {s.mean_tension:.0f} N (settled {s.settled} at {s.settle_time:.2f} s, "
-                  f"CPU {cpu:.2f} s) vs {name} {rf.mean_tension:.0f} N +- {rf.standard_error:.0f}: mean {dm:+.2%} "
-                  f"wave peak {dp:+.2%} period peak {dpp:+.2%} rms {rms:.2%}  Y {max(abs(dm), abs(dp), rms):.2%}")
+        for method in methods:
+            s, cpu, first = timed(m, repeat=3, method=method)
+            for name, rf in (("8 s after 8 s", ref), ("early 0.5-8.5 s", early)):
+                dm, dp, dpp, rms = compare(s, rf)
+                print(f"alpha {a:g} {s.method} ({method}, dt {s.dt * 1e6:.1f} us, step error {s.step_error:.2%}): "
+                      f"steady {s.mean_tension:.0f} N (settled {s.settled} at {s.settle_time:.2f} s, "
+                      f"CPU {cpu:.3f} s [{first:.3f}]) vs {name} {rf.mean_tension:.0f} N +- {rf.standard_error:.0f}: "
+                      f"mean {dm:+.2%} wave peak {dp:+.2%} period peak {dpp:+.2%} rms {rms:.2%}  "
+                      f"Y {max(abs(dm), abs(dp), rms):.2%}", flush=True)
 
 
 def sweep(name, alphas):
