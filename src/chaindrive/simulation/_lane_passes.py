@@ -12,15 +12,34 @@ from __future__ import annotations
 
 import math
 
-import numpy as np
 from numba import njit
+from numba.core.compiler import CompilerBase, DefaultPassBuilder
 
 from . import _contact as C
 
-__all__ = ["_back", "_entries", "_factor_solve", "_links", "_pin_forces", "_pin_inverses",
+__all__ = ["BLOCK", "_back", "_entries", "_factor_solve", "_links", "_pin_forces", "_pin_inverses",
            "_rhs", "_update"]
 
-_OPTS = {"cache": True, "fastmath": False, "error_model": "numpy"}
+
+
+class _NoAlias(CompilerBase):
+    """numba's nopython pipeline with the array arguments marked ``noalias`` (no pass
+    is called with overlapping arrays), so that the lane loops vectorise without
+    run-time overlap checks (too many of them: LLVM would give up)."""
+
+    def define_pipelines(self):
+        self.state.flags.noalias = True
+        pm = DefaultPassBuilder.define_nopython_pipeline(self.state)
+        pm.finalize()
+        return [pm]
+
+
+_OPTS = {"cache": True, "fastmath": False, "error_model": "numpy", "pipeline_class": _NoAlias}
+
+#: lanes per block (a divisor of ``_batched.LANES``): the passes work on a block's
+#: ``(N, BLOCK)`` arrays, their lane loops of this fixed length (so that they compile to
+#: whole vector instructions), small enough for the core's caches
+BLOCK = 16
 
 
 @njit(**_OPTS)
@@ -82,13 +101,13 @@ def _back(ox, oy, wxx, wxy, wyy, ux, uy, lam):
 
 
 @njit(**_OPTS)
-def _factor_solve(d, e, idd, ff, dlast, bl, bs, nb):
+def _factor_solve(d, e, idd, ff, dlast, bl, bs, nb, dcur):
     """:func:`._banded._factor_solve4` of every lane: the cyclic tridiagonal ``(d, e)``
     factored (inverse pivots ``idd``, fill-in ``ff``, last pivot ``dlast``) and the first
     ``nb`` right-hand sides ``bs[r]`` ``(N, V)`` solved in place, each with the same
-    arithmetic as :func:`._banded.cyclic_tridiagonal_substitute`; ``bl`` ``(4, V)`` work."""
+    arithmetic as :func:`._banded.cyclic_tridiagonal_substitute`; ``bl`` ``(4, V)`` and
+    ``dcur`` ``(V,)`` work."""
     n, nv = d.shape
-    dcur = np.empty(nv)
     for v in range(nv):
         dcur[v] = d[0, v]
         ff[0, v] = e[n - 1, v]
