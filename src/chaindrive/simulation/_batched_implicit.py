@@ -8,8 +8,12 @@ loads and time steps) with the linearly implicit step of
 alone: the same operations in the same order, so the results are equal to the last bit
 (``tests/test_simulation_batched_implicit.py``).
 
-Layout: the pins' coordinates, velocities and the link system's work arrays as
-``(N, V)`` arrays, the lanes the inner, contiguous dimension, so that the link forces,
+Layout: the lanes go in blocks of :data:`._lane_passes.BLOCK` (32); each step runs a
+block through all its passes before the next block, on the link system's work arrays
+``(N, BLOCK)`` shared by the blocks (a block's working set stays in the core's L2
+cache; the pins' state is kept blocked ``(blocks, N, BLOCK)`` during a call, copied back
+to the ``(N, V)`` arrays of :class:`Lanes` at its end), the lanes the inner, contiguous
+dimension, so that the link forces,
 the pins' 2 x 2 inverses, the Woodbury passes, the cyclic tridiagonal factorisation and
 substitutions (:func:`._banded._factor_solve4`'s arithmetic with every recurrence carried
 per lane) and the pins' update run as vector instructions across the lanes

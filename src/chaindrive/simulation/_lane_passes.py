@@ -37,9 +37,9 @@ class _NoAlias(CompilerBase):
 _OPTS = {"cache": True, "fastmath": False, "error_model": "numpy", "pipeline_class": _NoAlias}
 
 #: lanes per block (a divisor of ``_batched.LANES``): the passes work on a block's
-#: ``(N, BLOCK)`` arrays, their lane loops of this fixed length (so that they compile to
-#: whole vector instructions), small enough for the core's caches
-BLOCK = 16
+#: ``(N, BLOCK)`` arrays, small enough for the core's L2 cache; not fewer than 32: LLVM's
+#: vector loop takes 16 lanes an iteration (blocks of 8 ran scalar, 27 % slower)
+BLOCK = 32
 
 
 @njit(**_OPTS)
@@ -113,9 +113,8 @@ def _factor_solve(d, e, idd, ff, dlast, bl, bs, nb, dcur):
         ff[0, v] = e[n - 1, v]
         dlast[v] = d[n - 1, v]
     for r in range(nb):
-        b = bs[r]
         for v in range(nv):
-            bl[r, v] = b[n - 1, v]
+            bl[r, v] = bs[r, n - 1, v]
     for ll in range(n - 2):
         for v in range(nv):
             ip = 1.0 / dcur[v]
@@ -126,13 +125,12 @@ def _factor_solve(d, e, idd, ff, dlast, bl, bs, nb, dcur):
             ff[ll + 1, v] = -el * ip * fl
             dlast[v] -= fl * fl * ip
         for r in range(nb):
-            b = bs[r]
-            blr = bl[r]
             for v in range(nv):
-                # the forward row of the substitution (``p`` is b[ll])
-                q = b[ll, v] * idd[ll, v]
-                blr[v] -= ff[ll, v] * q
-                b[ll + 1, v] = b[ll + 1, v] - e[ll, v] * q
+                # the forward row of the substitution (``p`` is b[ll]; the right-hand
+                # sides indexed, not viewed: a view per row would cost its reference count)
+                q = bs[r, ll, v] * idd[ll, v]
+                bl[r, v] -= ff[ll, v] * q
+                bs[r, ll + 1, v] = bs[r, ll + 1, v] - e[ll, v] * q
     for v in range(nv):
         ip = 1.0 / dcur[v]
         idd[n - 2, v] = ip
@@ -140,18 +138,17 @@ def _factor_solve(d, e, idd, ff, dlast, bl, bs, nb, dcur):
         ff[n - 2, v] = fl
         dlast[v] -= fl * fl * ip
     for r in range(nb):
-        b = bs[r]
         for v in range(nv):
             ip = idd[n - 2, v]
             fl = ff[n - 2, v]
-            p = b[n - 2, v]
+            p = bs[r, n - 2, v]
             xl = (bl[r, v] - fl * p * ip) / dlast[v]
-            b[n - 2, v] = (p - fl * xl) * ip
-            b[n - 1, v] = xl
+            bs[r, n - 2, v] = (p - fl * xl) * ip
+            bs[r, n - 1, v] = xl
         for ll in range(n - 3, -1, -1):
             for v in range(nv):
-                b[ll, v] = (b[ll, v] - e[ll, v] * b[ll + 1, v] - ff[ll, v] * b[n - 1, v]) \
-                    * idd[ll, v]
+                bs[r, ll, v] = (bs[r, ll, v] - e[ll, v] * bs[r, ll + 1, v]
+                                - ff[ll, v] * bs[r, n - 1, v]) * idd[ll, v]
 
 
 @njit(**_OPTS)
