@@ -87,9 +87,11 @@ def test_jump_onset_point_by_point_equals_its_arrays(loading):
     lam = np.asarray(r.load_stiffness)
     s = np.asarray(r.fraction)
     per_row = np.array([np.interp(np.clip(np.log(lam), axis[0], axis[-1]), axis, row) for row in side])
-    sf = t["side_fraction"]
-    w = np.clip((s - sf[0]) / (sf[1] - sf[0]), 0.0, 1.0)
-    c = np.exp(np.interp(s, t["fraction"], main) + (1 - w) * per_row[0] + w * per_row[1])
+    sf = t["side_fraction"]  # the side table's fractions: linear between the two about each s, clipped at the ends
+    j = np.clip(np.searchsorted(sf, s, side="left") - 1, 0, len(sf) - 2)
+    w = np.clip((s - sf[j]) / (sf[j + 1] - sf[j]), 0.0, 1.0)
+    k = np.arange(s.size)
+    c = np.exp(np.interp(s, t["fraction"], main) + (1 - w) * per_row[j, k] + w * per_row[j + 1, k])
     np.testing.assert_allclose(r.correction, c, rtol=1e-13)
     beta = tension_ratio(P16B, 19, D16B, e)
     np.testing.assert_allclose(r.load_ratio, c * beta ** (-9.0), rtol=1e-13)

@@ -18,9 +18,12 @@ EA16B = 1.0e8  # the simulation's 16B link stiffness (chaindrive.chains.stiffnes
 
 #: The slowly driven simulation's onset load ratio rho = M/(R_e T2,nom) of the seven cases of
 #: docs/life.md, "Jump-over" (benchmarks/life.py at commit c65a478: 16B, F = 3 kN, the driven
-#: wheel on a slide, 0.5 rad/s up to 17 teeth, 0.125 rad/s above; 8 bisection steps, ~2 %).
-SIMULATED = [(9, 0.20, 14.9), (11, 0.20, 20.5), (11, 0.10, 24.1), (13, 0.15, 30.3), (17, 0.10, 54.5),
-             (21, 0.08, 80.3), (25, 0.06, 121.7)]
+#: wheel on a slide, 0.5 rad/s up to 17 teeth, 0.125 rad/s above; 8 bisection steps, ~2 %), and the
+#: three cases chosen before they were run (benchmarks/life.py JUMP_CASES_NEW, branch life5: 15 teeth at
+#: 12 %, 19 at 3 % under F = 1.5 kN, 31 at 7 % under 6 kN): (teeth, elongation, rho, F [N]).
+SIMULATED = [(9, 0.20, 14.9, 3000.0), (11, 0.20, 20.5, 3000.0), (11, 0.10, 24.1, 3000.0), (13, 0.15, 30.3, 3000.0),
+             (17, 0.10, 54.5, 3000.0), (21, 0.08, 80.3, 3000.0), (25, 0.06, 121.7, 3000.0),
+             (15, 0.12, 41.8, 3000.0), (19, 0.03, 86.9, 1500.0), (31, 0.07, 161.9, 6000.0)]
 
 
 def _stored():
@@ -31,11 +34,12 @@ def _stored():
 def test_table_has_its_provenance_and_range():
     raw = _stored()
     assert "wrap_jump_ratio" in raw["provenance"] and "commit" in raw["provenance"]
+    assert "d_a max" in raw["provenance"]  # the tooth form of holding_limit: the table reaches it
     for loading in ("torque", "tensions"):
         c = np.asarray(raw[loading]["correction"])
         assert c.shape == (len(raw["teeth"]), len(raw["fraction"])) and np.all(c > 0)
     r = wrap_jump_range("torque")
-    assert r["teeth"] == (9.0, 57.0) and r["fraction"] == (0.0, 0.7)
+    assert r["teeth"] == (9.0, 57.0) and r["fraction"] == (0.0, 0.999)
     assert r["load_stiffness"][0] < 3e-5 < r["load_stiffness"][1]
 
 
@@ -49,49 +53,69 @@ def test_jump_onset_reproduces_the_table_at_its_points(loading):
             e = s * holding_limit(P16B, z, D16B)
             rigid = float(tension_ratio(P16B, z, D16B, e)) ** -(z // 2)
             c = raw[loading]["correction"][i][j]
+            if c > 100.0:  # 9 teeth, a new chain, the back tension held: held every ratio tried (a lower bound, 1e7)
+                continue
             with warnings.catch_warnings():
                 warnings.simplefilter("ignore", ValidityRangeWarning)
                 if loading == "torque":
                     got = jump_onset(P16B, z, D16B, e, load=lam0 * EA16B)
                 else:  # the back tension that puts F = T2 (1 + rho) at lambda0
                     got = jump_onset(P16B, z, D16B, e, back_tension=lam0 * EA16B / (1 + c * rigid))
-            # (tensions: F = T2 (1 + rho) found by two substitutions, so lambda0 to a fraction of a per cent)
-            assert got.correction == pytest.approx(c, rel=1e-2 if loading == "tensions" else 1e-9)
-            assert got.load_ratio == pytest.approx(c * rigid, rel=1e-2 if loading == "tensions" else 1e-9)
+            # (tensions: F = T2 (1 + rho) found by two substitutions, so lambda0 to a per cent or two)
+            assert got.correction == pytest.approx(c, rel=2e-2 if loading == "tensions" else 1e-9)
+            assert got.load_ratio == pytest.approx(c * rigid, rel=2e-2 if loading == "tensions" else 1e-9)
 
 
 def test_jump_onset_within_10_percent_of_the_slowly_driven_simulation():
-    # the reduced model against the simulated onsets (SIMULATED: provenance above) at the
-    # simulation's F = 3 kN on 16B (lambda = 3e-5, a table row), torque loading: the aim of the issue
-    # is 10 %; the compliant model itself is within -1.1 … +8.1 %. 11 teeth at 20 % lies at 0.76 of
-    # the holding limit, past the table's 0.7: the table's edge is used, with a warning, and is on the
-    # safe side there (a lower onset: -15 %)
-    for teeth, elongation, simulated in SIMULATED:
-        with warnings.catch_warnings(record=True) as caught:
-            warnings.simplefilter("always")
-            got = jump_onset(P16B, teeth, D16B, elongation, load=3000.0)
-        inside = got.fraction <= 0.7
-        assert bool(caught) == (not inside)
-        if inside:
-            assert got.load_ratio == pytest.approx(simulated, rel=0.10)
-        else:
-            assert 0.8 * simulated < got.load_ratio < simulated
+    # the reduced model against the simulated onsets (SIMULATED: provenance above), torque loading, each case at its
+    # own F on 16B: every case now lies inside the table (11 teeth at 20 % is 0.76 of the holding limit: past the
+    # former table's 0.7, -15.4 % there). The aim of the issue is 10 %: the first seven and two of the three new
+    # cases meet it (-0.4 ... +7.9 %); 19 teeth at 3 % under 1.5 kN is -20.8 % (the compliant model itself -18.5 %;
+    # the simulation driven at half the speed -13.9 %: not yet quasi-static at that load; docs/life.md)
+    errors = {}
+    for teeth, elongation, simulated, load in SIMULATED:
+        with warnings.catch_warnings():
+            warnings.simplefilter("error", ValidityRangeWarning)
+            got = jump_onset(P16B, teeth, D16B, elongation, load=load)
+        assert not got.outside
+        errors[(teeth, elongation)] = got.load_ratio / simulated - 1
+    assert sum(abs(e) <= 0.10 for e in errors.values()) == 9
+    assert errors[(11, 0.20)] == pytest.approx(0.077, abs=0.01)
+    assert errors[(19, 0.03)] == pytest.approx(-0.208, abs=0.01)  # on the safe side: a lower onset
+
+
+def test_the_table_reaches_the_holding_limit():
+    # the tabulated wheel has ISO 606's largest tip diameter, the tooth form of holding_limit, so every elongation up to
+    # 0.999 of the holding limit is inside the table for 9-57 teeth, where the simulation's wheel (the middle of ISO
+    # 606's tip range) lets the rollers over at 0.74-0.83 of it; both tips give the same onset with the torque held
+    # where both hold (11 teeth at 20 %: 22.1, 17 at 10 %: 56.4; wrap_jump_ratio to 2 %, docs/life.md)
+    for teeth in (9, 12, 19, 26, 44, 57):
+        limit = holding_limit(P16B, teeth, D16B)
+        e = np.array([0.75, 0.9, 0.999]) * limit
+        with warnings.catch_warnings():
+            warnings.simplefilter("error", ValidityRangeWarning)
+            got = jump_onset(P16B, teeth, D16B, e, load=3000.0)
+        assert not got.outside and np.all(np.isfinite(got.load_ratio)) and np.all(got.load_ratio > 1.0)
 
 
 @pytest.mark.slow
-@pytest.mark.parametrize("loading, teeth, fraction, lam", [
-    ("torque", 11, 0.38, 3e-5),   # a simulated case (11 teeth at 10 %), off the table's teeth and fractions
-    ("torque", 21, 0.22, 3e-5),
-    ("torque", 31, 0.52, 8e-5),   # off every axis
-    ("tensions", 15, 0.4, 3e-4),
-    ("tensions", 33, 0.22, 1.5e-4),  # off every axis
+@pytest.mark.parametrize("loading, teeth, fraction, lam, measured", [
+    ("torque", 11, 0.38, 3e-5, -0.011),   # the former table's worst torque point (-10.3 %)
+    ("torque", 15, 0.65, 3e-5, -0.011),
+    ("torque", 35, 0.85, 3e-5, -0.032),   # past the former table's 0.7
+    ("torque", 13, 0.95, 3e-5, -0.032),   # near the holding limit
+    ("torque", 47, 0.5, 3e-5, -0.093),    # between 40 and 57 teeth, the coarsest teeth interval
+    ("torque", 33, 0.52, 8e-5, -0.032),   # off every axis (the former 31 teeth: -8.3 %)
+    ("tensions", 15, 0.4, 3e-4, 0.022),    # the back tension held (former table: -1.1 %)
+    ("tensions", 33, 0.22, 1.5e-4, -0.103),  # off every axis (former: -12.2 %)
+    ("tensions", 19, 0.85, 3e-4, -0.011),  # past the former table's 0.7
 ])
-def test_jump_onset_against_fresh_wrap_jump_ratio(loading, teeth, fraction, lam):
-    # the table interpolated off its grid against a fresh call of the compliant model it tabulates:
-    # within 12 % with the torque held (the loading the simulation checks), 15 % with the back tension
-    # held (its onsets scatter more over the teeth): the table's own resolution (the bisection's 3 %,
-    # and the onset is reproducible to a few per cent: docs/life.md) and the interpolation.
-    # Measured (docs/life.md, in the order below): -10.3, +1.1, -8.3 % (torque), -1.1, -12.2 % (tensions)
+def test_jump_onset_against_fresh_wrap_jump_ratio(loading, teeth, fraction, lam, measured):
+    # the table interpolated off its grid against a fresh call of the compliant model it tabulates (the same tooth
+    # form, d_a max; the bisection to 1.5 % from well below the table's value): the points chosen before they were
+    # run, where the former table erred most and in the range it did not cover. Measured (docs/life.md) in the
+    # last column; with the torque held within 10 %, mostly on the low, safe side
+    from chaindrive.geometry.sprocket import tip_diameter_limits
     from chaindrive.life import wrap_jump_ratio
 
     e = fraction * holding_limit(P16B, teeth, D16B)
@@ -101,9 +125,12 @@ def test_jump_onset_against_fresh_wrap_jump_ratio(loading, teeth, fraction, lam)
         red = jump_onset(P16B, teeth, D16B, e, back_tension=lam * EA16B / (1 + 1.6 * float(
             tension_ratio(P16B, teeth, D16B, e)) ** -(teeth // 2)))
     load = float(red.load_stiffness) * EA16B
-    fresh = wrap_jump_ratio(P16B, teeth, D16B, e, load, low=red.load_ratio / 2, high=red.load_ratio * 2,
-                            rtol=0.02, loading=loading)
-    assert red.load_ratio == pytest.approx(fresh.load_ratio, rel=0.12 if loading == "torque" else 0.15)
+    fresh = wrap_jump_ratio(P16B, teeth, D16B, e, load, low=max(1.01, red.load_ratio / 8), high=red.load_ratio * 2,
+                            rtol=0.015, loading=loading, tip_diameter=float(tip_diameter_limits(P16B, teeth, D16B)[1]))
+    error = red.load_ratio / fresh.load_ratio - 1
+    assert error == pytest.approx(measured, abs=0.02)
+    if loading == "torque":
+        assert abs(error) <= 0.10
 
 
 def test_jump_onset_vectorised_and_regression():
@@ -126,8 +153,8 @@ def test_jump_onset_warns_outside_the_table():
     assert r.outside and r.load_ratio > 0
     with pytest.warns(ValidityRangeWarning, match=r"F/EA = .* outside"):
         jump_onset(P16B, 19, D16B, 0.01, load=1e5)
-    with pytest.warns(ValidityRangeWarning, match=r"e/e_hold = .* outside \[0, 0.7\]"):
-        jump_onset(P16B, 19, D16B, 0.9 * holding_limit(P16B, 19, D16B), load=3000.0)
+    with pytest.warns(ValidityRangeWarning, match=r"e/e_hold = .* outside \[0, 0.999\]"):
+        jump_onset(P16B, 19, D16B, (1 - 1e-6) * holding_limit(P16B, 19, D16B), load=3000.0)
     with warnings.catch_warnings():
         warnings.simplefilter("error")
         assert jump_onset(P16B, 80, D16B, 0.01, load=3000.0, warn=False).outside

@@ -20,6 +20,12 @@ efficiency depends neither on the speed nor on the load and rises with larger sp
 fixed slack tension ``T_2`` adds a loss that does not fall with the load, so the efficiency
 falls at low load as ``1/F`` — the form in which Spicer et al. fit their measurements.
 
+A derailleur cage costs more than the articulation of the chain over its two jockey wheels:
+their bearings and seals, the chain's sliding on the pulleys and the cage. That part does not
+depend on the load either; it is taken as a drag force ``F_d`` on the chain, ``P = F_d v``
+(:data:`DERAILLEUR_DRAG`, fitted on Wilson's 50 W points and checked on his 100–400 W ones and on
+Friction Facts' pulley-size test: docs/life.md, "Efficiency and heat").
+
 ``μ`` here is an effective coefficient: it lumps the pin–bushing sliding with the
 bushing–roller sliding at the tooth (Lodge & Burgess's model carries both). Its default
 is calibrated on a published chain-efficiency measurement (Friction Facts, 53T/11T,
@@ -39,13 +45,22 @@ from .._typing import FloatOrArray
 from .._validation import check_nonnegative, check_positive
 from ..errors import InputError
 
-__all__ = ["ARTICULATION_FRICTION", "articulation_angle", "articulation_power_loss", "transmission_efficiency",
+__all__ = ["ARTICULATION_FRICTION", "DERAILLEUR_DRAG", "articulation_angle", "articulation_power_loss", "transmission_efficiency",
            "two_wheel_power_loss"]
 
 #: Effective articulation friction coefficient (pin radius basis), calibrated on the
 #: Friction Facts measurement of a 10-speed bicycle chain (53T/11T, 95 rpm, 250 W,
 #: 6.67 W lost after 8 h running-in; pin diameter 3.6 mm): ``μ = 0.273``.
 ARTICULATION_FRICTION = 0.273
+
+#: Load-independent drag of a bicycle's rear-derailleur cage on the chain [N], beyond the chain's own
+#: articulation over the jockey wheels (their bearings and seals, the chain sliding on the pulleys and the
+#: cage): ``P = F_d v``. Fitted (least squares in watts) on the three 50 W points of Wilson's derailleur
+#: table (Bicycling Science, 3rd ed., 2004, p. 343; 52T, 80 rpm and the road derailleur's 11.6 N assumed),
+#: checked on his nine 100-400 W points; independent of the pulley size (Friction Facts' pulley-size test,
+#: the same bearings moved between 10T and 15T pulleys, leaves no room for a bearing torque of this size:
+#: docs/life.md, "Efficiency and heat").
+DERAILLEUR_DRAG = 1.20
 
 
 def articulation_angle(pitch: ArrayLike, pitch_radius: ArrayLike,
@@ -158,7 +173,7 @@ def articulation_power_loss(chain_speed: ArrayLike, pitch: ArrayLike, pin_diamet
 
 def two_wheel_power_loss(power: ArrayLike, chain_speed: ArrayLike, pitch: float, pin_diameter: float,
                          teeth: ArrayLike, *, slack_tension: ArrayLike = 0.0, idler_teeth: ArrayLike = (),
-                         friction: float = ARTICULATION_FRICTION) -> FloatOrArray:
+                         friction: float = ARTICULATION_FRICTION, drag_force: ArrayLike = 0.0) -> FloatOrArray:
     r"""Articulation loss of a two-wheel drive whose slack side carries ``T_2`` over its idlers.
 
     The tight span carries ``T_1 = P/v + T_2``; it leaves the driver and enters the driven
@@ -168,9 +183,10 @@ def two_wheel_power_loss(power: ArrayLike, chain_speed: ArrayLike, pitch: float,
     .. math:: P_{loss} = μ\,r\,\frac{2π v}{p}\Bigl[(T_1 + T_2)\Bigl(\frac{1}{z_1}
               + \frac{1}{z_2}\Bigr) + 2 T_2 \sum_i \frac{1}{z_i}\Bigr]
 
-    (the idlers wrapped by at least one pitch). ``T_2`` is what holds the slack side: a
-    derailleur's cage spring, a tensioner, the sag; with ``T_2 = 0`` the efficiency is
-    ``1 − μ r (2π/p)(1/z_1 + 1/z_2)`` at any load and speed.
+    (the idlers wrapped by at least one pitch), plus ``F_d v`` for a load-independent drag
+    ``F_d`` on the chain (a derailleur cage: :data:`DERAILLEUR_DRAG`). ``T_2`` is what holds the
+    slack side: a derailleur's cage spring, a tensioner, the sag; with ``T_2 = 0`` and no drag the
+    efficiency is ``1 − μ r (2π/p)(1/z_1 + 1/z_2)`` at any load and speed.
 
     Parameters
     ----------
@@ -188,6 +204,9 @@ def two_wheel_power_loss(power: ArrayLike, chain_speed: ArrayLike, pitch: float,
         Teeth of the idlers on the slack side (a rear derailleur: its two jockey wheels).
     friction : float
         ``μ`` (default :data:`ARTICULATION_FRICTION`).
+    drag_force : float or array_like
+        ``F_d >= 0``, a drag on the chain that does not depend on the load [N] (a bicycle's
+        rear derailleur: :data:`DERAILLEUR_DRAG`; default none).
 
     Returns
     -------
@@ -197,7 +216,8 @@ def two_wheel_power_loss(power: ArrayLike, chain_speed: ArrayLike, pitch: float,
     References
     ----------
     Spicer et al., J. Mech. Des. 123 (2001) 598–605 (articulation loss ``μ T r θ`` at the
-    sprockets); Lodge & Burgess, Proc. IMechE C 216 (2002) 385–394 (both spans' tensions);
+    sprockets); D. G. Wilson, *Bicycling Science*, 3rd ed., MIT Press (2004), p. 343 (the
+    derailleur drive's efficiency against power: ``F_d`` fitted on its 50 W points); Lodge & Burgess, Proc. IMechE C 216 (2002) 385–394 (both spans' tensions);
     D. Connelly, "drivetrain losses: simple model" and "... Spicer's data",
     djconnel.blogspot.com, 12–13 January 2010 (the same sum with a derailleur: the lower
     span at the spring's tension over the two pulleys).
@@ -209,10 +229,14 @@ def two_wheel_power_loss(power: ArrayLike, chain_speed: ArrayLike, pitch: float,
     >>> round(float(two_wheel_power_loss(250.0, 1.0664, 0.0127, 0.0036, [53, 11], slack_tension=11.6,
     ...                                  idler_teeth=[11, 11])), 2)
     8.43
+    >>> round(float(two_wheel_power_loss(250.0, 1.0664, 0.0127, 0.0036, [53, 11], slack_tension=11.6,
+    ...                                  idler_teeth=[11, 11], drag_force=DERAILLEUR_DRAG)), 2)
+    9.71
     """
     pw = check_positive("power", power, "W")
     v = check_positive("chain_speed", chain_speed, "m/s")
     t2 = check_nonnegative("slack_tension", slack_tension, "N")
+    drag = check_nonnegative("drag_force", drag_force, "N")
     z = np.asarray(teeth, dtype=float)
     if z.shape != (2,):
         raise InputError(f"teeth must be the two wheels' teeth (driver, driven), got {teeth!r}", field="teeth")
@@ -222,7 +246,7 @@ def two_wheel_power_loss(power: ArrayLike, chain_speed: ArrayLike, pitch: float,
     t_out = [t1, np.broadcast_to(t2, t1.shape)] + [np.broadcast_to(t2, t1.shape)] * idl.size
     wheels = np.concatenate([z, idl])
     return articulation_power_loss(v, pitch, pin_diameter, wheels, np.stack(t_in, axis=-1),
-                                   np.stack(t_out, axis=-1), friction=friction)
+                                   np.stack(t_out, axis=-1), friction=friction) + drag * v
 
 
 def transmission_efficiency(power: ArrayLike, power_loss: ArrayLike) -> FloatOrArray:

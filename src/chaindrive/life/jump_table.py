@@ -26,8 +26,10 @@ onset is tabulated here as a correction to the rigid, uniformly seated model of
 from :func:`wrap_jump_ratio`, provenance in the file) on ``z × s`` at ``λ = 3·10⁻⁵`` (torque) or
 ``3·10⁻⁴`` (tensions) with a coarse factor for ``λ``; it is interpolated linearly in ``ln c`` over ``ln z``, ``s`` and
 ``ln λ``. The table is for the half wrap (180°) of ISO 606 16B proportions
-(``d_1/p = 0.625``); ``n`` carries the wheel's own wrap into ``β^-n``, ``c`` is the half
-wrap's. Outside the table's range (:func:`wrap_jump_range`) the nearest edge is used and a
+(``d_1/p = 0.625``) and the tip diameter ``d_a max`` of the tooth form of
+:func:`~chaindrive.life.holding_limit`, so that ``s`` runs up to the holding limit (0.999 of it);
+``n`` carries the wheel's own wrap into ``β^-n``, ``c`` is the half wrap's. Outside the table's
+range (:func:`wrap_jump_range`) the nearest edge is used and a
 :class:`~chaindrive.errors.ValidityRangeWarning` says so.
 
 References
@@ -86,7 +88,7 @@ def wrap_jump_range(loading: str = "torque") -> dict[str, tuple[float, float]]:
 
     >>> r = wrap_jump_range()
     >>> r["teeth"], r["fraction"]
-    ((9.0, 57.0), (0.0, 0.7))
+    ((9.0, 57.0), (0.0, 0.999))
     """
     if loading not in LOADINGS:
         raise InputError(f"loading must be one of {', '.join(LOADINGS)}, got {loading!r}", field="loading")

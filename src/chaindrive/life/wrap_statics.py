@@ -400,7 +400,7 @@ class WrapJump(Result):
 def wrap_jump_ratio(pitch: float, teeth: int, roller_diameter: float, elongation: float, load: float, *,
                     axial_stiffness: float = 1.0e8, contact_stiffness: float = 2.0e8, phases: int = 10,
                     low: float = 2.0, high: float = 3000.0, rtol: float = 0.03,
-                    loading: str = "torque") -> WrapJump:
+                    loading: str = "torque", tip_diameter: float | None = None) -> WrapJump:
     r"""The span-tension ratio at which a compliant worn wrap under a torque lets the chain jump (quasi-static).
 
     The wheel carries ``M = F ρ/(1+ρ) R (1+e)`` with the span tensions' sum ``F``
@@ -433,6 +433,8 @@ def wrap_jump_ratio(pitch: float, teeth: int, roller_diameter: float, elongation
     loading : {"torque", "tensions"}
         The wheel's torque with ``T_1 + T_2 = F`` held (a wheel on a slide; default), or the
         span tensions held (a back tension set by the slack span's sag): :meth:`WrapModel.holds`.
+    tip_diameter : float, optional
+        The wheel's ``d_a`` [m]; default the middle of ISO 606's range (:class:`WrapModel`).
 
     Returns
     -------
@@ -466,7 +468,8 @@ def wrap_jump_ratio(pitch: float, teeth: int, roller_diameter: float, elongation
         raise InputError(f"the bracket must be 0 < low < high <= 1e9, got [{lo:g}, {hi:g}]", field="high")
     if not 1e-3 <= float(rtol) <= 10.0:
         raise InputError(f"rtol must lie in [0.001, 10], got {rtol}", field="rtol")
-    model = WrapModel(pitch, int(z), roller_diameter, elongation, axial_stiffness, contact_stiffness)
+    model = WrapModel(pitch, int(z), roller_diameter, elongation, axial_stiffness, contact_stiffness,
+                      tip_diameter=tip_diameter)
     held, measured = model.holds(load, lo, phases=int(phases), loading=loading)
     if not held:
         raise InputError(f"the worn wrap ({teeth} teeth, elongation {elongation:g}) does not hold even "

@@ -16,7 +16,12 @@ not by the stability of the link springs (derivation in ``docs/simulation.md``,
   the link force increments ``(1/a + G W Gᵀ) λ = G W F`` (``a = h k + c``), solved by
   :func:`cyclic_tridiagonal_solve`, linear in the number of links;
 * the wheels' rotations and slides after the pins (Gauss–Seidel): implicit in their
-  own contact stiffness, with the pins' new velocities.
+  own contact stiffness, with the pins' new velocities;
+* the optional transverse span damping ``−α m v_⊥`` (``P_CSPAN`` > 0, a study): linear in
+  the pin's own velocity, it adds ``θ α m n nᵀ`` to the pin's 2 x 2 block (``n`` the unit
+  normal to its neighbours' chord, frozen at the start of the step) and its value at
+  the start of the step to the force (:func:`._kernel.span_damping_forces`), as the link
+  dampers.
 
 Layout: positions and velocities in separate ``x``/``y`` arrays inside the kernel, the
 link rest lengths in one array (no odd/even branch).
@@ -54,6 +59,19 @@ def _add_pin_matrix(mxx, mxy, myy, i, coef, ax, ay):
     mxx[i] += coef * ax * ax
     mxy[i] += coef * ax * ay
     myy[i] += coef * ay * ay
+
+
+@njit(cache=True, fastmath=False)
+def _span_damping_matrix(x, y, mxx, mxy, myy, coef):
+    """``M_i += coef n nᵀ`` for the span damping: ``n`` the unit normal to the chord of
+    pin ``i``'s neighbours (``coef = θ α m`` [N s/m]; the implicit part of
+    :func:`._kernel.span_damping_forces`)."""
+    for i in range(x.shape[0]):
+        tx, ty, inv = K.neighbour_chord(x, y, i)
+        ci = coef * inv
+        mxx[i] += ci * ty * ty
+        mxy[i] -= ci * tx * ty
+        myy[i] += ci * tx * tx
 
 
 @njit(cache=True, fastmath=False, inline="always")
@@ -248,6 +266,7 @@ def integrate_implicit(pos: np.ndarray, vel: np.ndarray, force: np.ndarray, work
     inv_m = 1.0 / m
     mh = m / h
     th = par[K.P_THETA]
+    cspan = par[K.P_CSPAN] * m
     ak = th * (h * k + c)
     inv_ak = 1.0 / ak
     betac = th * (h * kc + cc)
@@ -320,6 +339,10 @@ def integrate_implicit(pos: np.ndarray, vel: np.ndarray, force: np.ndarray, work
         tstar[n - 1] = tt + thh * k * ldot
         ux[n - 1] = ex
         uy[n - 1] = ey
+        if cspan > 0.0:
+            # span damping: its force at the start of the step, its slope implicit
+            K.span_damping_forces(x, y, vx, vy, fx, fy, cspan)
+            _span_damping_matrix(x, y, mxx, mxy, myy, th * cspan)
         # wheel speeds used in the contacts: the prescribed ones at the end of the step
         # (known), the free ones at its start (updated after the pins)
         for w in range(nw):

@@ -56,6 +56,7 @@ from ._layout import (  # noqa: F401 - the layout is part of this module's inter
     P_CC,
     P_CG,
     P_CGLOB,
+    P_CSPAN,
     P_DT,
     P_DTREF,
     P_GX,
@@ -330,6 +331,7 @@ def integrate(pos, vel, force, work, tension, contact, ws, wp, gd, tab, par, t0,
     kg = par[P_KG]
     cg = par[P_CG]
     dtref = par[P_DTREF]
+    cspan = par[P_CSPAN] * m
     inv_m = 1.0 / m
     nrec = rec_start
     margin = 0.25 * rr
@@ -372,6 +374,8 @@ def integrate(pos, vel, force, work, tension, contact, ws, wp, gd, tab, par, t0,
         wky[n] = tt * uy
         wkx[0] = wkx[n]
         wky[0] = wky[n]
+        if cspan > 0.0:
+            span_damping_forces(x, y, vx, vy, fx, fy, cspan)
         # wheels: penalty contact of each roller with the nearest tooth gap; the pins
         # near each wheel are listed every `countdown` steps, often enough that no pin
         # can cover the margin in between (4 x the fastest relative speed)
@@ -508,6 +512,39 @@ def integrate(pos, vel, force, work, tension, contact, ws, wp, gd, tab, par, t0,
         advance_wheels(wp, ws, t, dt, gx, gy)
     store_pins(pos, vel, x, y, vx, vy)
     return nrec
+
+
+@njit(cache=True, fastmath=False, inline="always")
+def neighbour_chord(x, y, i):
+    """``(tx, ty, 1/|t|²)``: the chord ``t`` from pin ``i``'s previous neighbour to its next
+    (closed loop)."""
+    n = x.shape[0]
+    a = i - 1 if i > 0 else n - 1
+    b = i + 1 if i < n - 1 else 0
+    tx = x[b] - x[a]
+    ty = y[b] - y[a]
+    return tx, ty, 1.0 / (tx * tx + ty * ty)
+
+
+@njit(cache=True, fastmath=False)
+def span_damping_forces(x, y, vx, vy, fx, fy, cspan):
+    """Add the transverse span damping ``−α m v_⊥`` to ``(fx, fy)``: ``v_⊥`` the pin's
+    velocity normal to the chord of its two neighbours (``cspan = α m`` [N s/m]).
+
+    On an axially moving string the velocity normal to the local tangent is, to first
+    order, the Eulerian transverse velocity ``∂y/∂t`` (the material velocity is
+    ``(V, ∂y/∂t + V ∂y/∂x)``, the tangent ``(1, ∂y/∂x)``): the force is the viscous term
+    ``−c ∂y/∂t`` of the damped travelling string (Mahalingam 1957, eq. (1) with its
+    damping coefficient ``c``; Wickert & Mote 1990). A pin seated on a rotating wheel
+    moves along that chord (zero force), so does a straight span's axial motion. Each
+    transverse mode ``n`` of a span gets the damping ratio ``ζ_n = α / (2 ω_n)``.
+    """
+    for i in range(x.shape[0]):
+        tx, ty, inv = neighbour_chord(x, y, i)
+        vn = (vx[i] * ty - vy[i] * tx)
+        # v_perp = vn * (ty, -tx) / |t|^2
+        fx[i] -= cspan * vn * ty * inv
+        fy[i] += cspan * vn * tx * inv
 
 
 @njit(cache=True, fastmath=False, inline="always")

@@ -401,6 +401,12 @@ class SimulationModel:
         chain is ``pitch = p (1 + e)`` on wheels of ``wheel_pitch = p``: the chain is placed on
         its own pitch polygons (the rollers ridden out to ``R (1 + e)``), the tooth gaps are
         the wheels' (docs/life.md). ``pitch / 1.3 <= wheel_pitch <= pitch``.
+    span_damping : float
+        Transverse span damping rate ``α`` [1/s], ``>= 0`` (a study, docs/simulation.md
+        "Span damping: a study"): each pin feels ``−α m v_⊥``, ``v_⊥`` its velocity normal
+        to the chord of its neighbours, so a span's transverse mode of angular frequency
+        ``ω_n`` has the damping ratio ``α / (2 ω_n)``; 0 (default): none. Both
+        single-drive integrators (explicit and implicit); not the batched kernels.
     """
 
     pitch: float
@@ -425,12 +431,15 @@ class SimulationModel:
     tooth_flank: str = "arc"
     bar_diameter: float | None = None
     wheel_pitch: float | None = None
+    span_damping: float = 0.0
 
     def __post_init__(self):
         for name in ("pitch", "link_mass", "axial_stiffness", "roller_radius",
                      "contact_stiffness"):
             check_positive(name, getattr(self, name))
         from ..limits import MAX_LINKS
+
+        check_nonnegative("span_damping", self.span_damping, "1/s")
 
         if int(self.links) != self.links or not 4 <= self.links <= MAX_LINKS:
             raise InputError(f"links must be a whole number in [4, {MAX_LINKS}], got {self.links!r}")

@@ -46,7 +46,7 @@ from collections.abc import Callable
 import numpy as np
 from numpy.typing import ArrayLike
 
-from ..errors import ConvergenceError, UnknownNameError
+from ..errors import ConvergenceError, InputError, UnknownNameError
 from . import _kernel as K
 from ._implicit import integrate_implicit
 from .model import SimulationModel, iso_flank
@@ -84,6 +84,7 @@ def kernel_arrays(model: SimulationModel, dt: float | None = None) -> tuple[np.n
     par[K.P_GX], par[K.P_GY] = model.gravity
     par[K.P_DT] = dt
     par[K.P_THETA] = 1.0
+    par[K.P_CSPAN] = model.span_damping
     # friction slope cap m / dt_ref (see the kernel), dt_ref = 2 dt_stable: the cap
     # m / dt makes the friction dead-beat on its own, and with the link springs and
     # large seat forces the alternating mode of the seated pins then grows (period 2:
@@ -559,6 +560,7 @@ def simulate(model: SimulationModel, duration: float, *, dt: float | None = None
     if state is None:
         state = assemble(model, dt=dt)
     par = state.par.copy()
+    par[K.P_CSPAN] = model.span_damping  # the model's, whatever state it starts from
     if dt is not None:
         par[K.P_DT] = dt
     dt = float(par[K.P_DT])
@@ -664,8 +666,6 @@ def step_for_accuracy(model: SimulationModel, duration: float, *, state: State |
     >>> step_for_accuracy(m, 0.02, tolerance=0.02) >= m.stable_time_step()
     True
     """
-    from ..errors import InputError
-
     if not 1e-9 <= tolerance < 1.0:
         raise InputError(f"tolerance must be in [1e-9, 1) (relative; below 1e-9 rounding decides), got {tolerance!r}",
                          field="tolerance")
