@@ -8,8 +8,12 @@ loads and time steps) with the linearly implicit step of
 alone: the same operations in the same order, so the results are equal to the last bit
 (``tests/test_simulation_batched_implicit.py``).
 
-Layout: the pins' coordinates, velocities and the link system's work arrays as
-``(N, V)`` arrays, the lanes the inner, contiguous dimension, so that the link forces,
+Layout: the lanes go in blocks of :data:`._lane_passes.BLOCK` (32); each step runs a
+block through all its passes before the next block, on the link system's work arrays
+``(N, BLOCK)`` shared by the blocks (a block's working set stays in the core's L2
+cache; the pins' state is kept blocked ``(blocks, N, BLOCK)`` during a call, copied back
+to the ``(N, V)`` arrays of :class:`Lanes` at its end), the lanes the inner, contiguous
+dimension, so that the link forces,
 the pins' 2 x 2 inverses, the Woodbury passes, the cyclic tridiagonal factorisation and
 substitutions (:func:`._banded._factor_solve4`'s arithmetic with every recurrence carried
 per lane) and the pins' update run as vector instructions across the lanes
@@ -57,6 +61,7 @@ from ._implicit import (
 from ._kernel import advance_motor, speed_factor, wheel_drive_torque
 from ._lane_contacts import NO, _add_pin, wheel_contacts
 from ._lane_passes import (
+    BLOCK,
     _back,
     _entries,
     _factor_solve,
@@ -172,10 +177,10 @@ def start_lane(v, t0, nsteps, every, t0s, nstepss, everys, step, nrec, active, c
 
 
 @njit(**_OPTS)
-def _lane_guides(v, x, y, vx, vy, fx, fy, mxx, mxy, myy, gd, par, gcand, ngcand, rebuild,
+def _lane_guides(v, b, x, y, vx, vy, fx, fy, mxx, mxy, myy, gd, par, gcand, ngcand, rebuild,
                  margin):
-    """The guide contacts of lane ``v`` (forces and 2 x 2 matrix terms on its pins), as
-    the single kernel."""
+    """The guide contacts of lane ``v`` (forces and 2 x 2 matrix terms on its pins, the
+    block's column ``b``), as the single kernel."""
     ng = gd.shape[1]
     h = par[v, K.P_DT]
     th = par[v, K.P_THETA]
@@ -193,20 +198,20 @@ def _lane_guides(v, x, y, vx, vy, fx, fy, mxx, mxy, myy, gd, par, gcand, ngcand,
     gdv = gd[v]
     for g in range(ng):
         if rebuild:
-            C.guide_candidates(x[:, v], y[:, v], gdv, g, rr + margin, gcand[v], ngcand[v])
+            C.guide_candidates(x[:, b], y[:, b], gdv, g, rr + margin, gcand[v], ngcand[v])
         for ic in range(ngcand[v, g]):
             i = gcand[v, g, ic]
-            pen, mx, my = C.guide_penetration(x[i, v], y[i, v], gdv, g, rr, margin)
+            pen, mx, my = C.guide_penetration(x[i, b], y[i, b], gdv, g, rr, margin)
             if pen <= -margin:
                 continue
-            vn = vx[i, v] * mx + vy[i, v] * my
+            vn = vx[i, b] * mx + vy[i, b] * my
             fn0 = kg * (pen - thh * vn) - cg * vn
             if fn0 <= 0.0:
                 continue
             fn = kg * pen - cg * vn if pen > 0.0 else 0.0
             if fn < 0.0:
                 fn = 0.0
-            vt = vx[i, v] * my - vy[i, v] * mx
+            vt = vx[i, b] * my - vy[i, b] * mx
             mug = C.guide_mu(gdv, g, mu)
             ft0, ve = C.friction(mug, fn, vt, dtref, inv_m, veps)
             s = mug * fn / ve if abs(vt) < ve else 0.0
@@ -216,17 +221,19 @@ def _lane_guides(v, x, y, vx, vy, fx, fy, mxx, mxy, myy, gd, par, gcand, ngcand,
                 ft0 += fdrag
                 if abs(vt) < vem:
                     s += fm / vem
-                _add_pin(mxx, mxy, myy, i, v, mmat / h, my, -mx)
+                _add_pin(mxx, mxy, myy, i, b, mmat / h, my, -mx)
             s *= th
-            fx[i, v] += fn0 * mx + ft0 * my
-            fy[i, v] += fn0 * my - ft0 * mx
-            _add_pin(mxx, mxy, myy, i, v, betag, mx, my)
-            _add_pin(mxx, mxy, myy, i, v, s, my, -mx)
+            fx[i, b] += fn0 * mx + ft0 * my
+            fy[i, b] += fn0 * my - ft0 * mx
+            _add_pin(mxx, mxy, myy, i, b, betag, mx, my)
+            _add_pin(mxx, mxy, myy, i, b, s, my, -mx)
 
 
 @njit(**_OPTS)
-def _drop_tensile(v, cinfo, ncand, cand, qrot, qsl, dq, dvx, dvy, yx, yy, mxx, mxy, myy, wtq, wsf):
-    """:func:`._implicit._drop_tensile` for lane ``v`` (without the contact record)."""
+def _drop_tensile(v, b, cinfo, ncand, cand, qrot, qsl, dq, dvx, dvy, yx, yy, mxx, mxy, myy, wtq,
+                  wsf):
+    """:func:`._implicit._drop_tensile` for lane ``v`` (the block's column ``b``; without
+    the contact record)."""
     changed = False
     for w in range(qrot.shape[1]):
         dom = dq[v, qrot[v, w]] if qrot[v, w] >= 0 else 0.0
@@ -238,17 +245,17 @@ def _drop_tensile(v, cinfo, ncand, cand, qrot, qsl, dq, dvx, dvy, yx, yy, mxx, m
             i = cand[v, w, ic]
             nx = cinfo[v, w, ic, C_NX]
             ny = cinfo[v, w, ic, C_NY]
-            dvn = nx * dvx[i, v] + ny * dvy[i, v] - dom * cinfo[v, w, ic, C_L] - dsd * cinfo[v, w, ic, C_DN]
+            dvn = nx * dvx[i, b] + ny * dvy[i, b] - dom * cinfo[v, w, ic, C_L] - dsd * cinfo[v, w, ic, C_DN]
             fn0 = cinfo[v, w, ic, C_FN0]
             if fn0 + be * dvn >= 0.0:
                 continue
             changed = True
             ft0 = cinfo[v, w, ic, C_FT0]
             s = cinfo[v, w, ic, C_S]
-            yx[i, v] += fn0 * nx + ft0 * ny
-            yy[i, v] += fn0 * ny - ft0 * nx
-            _add_pin(mxx, mxy, myy, i, v, -be, nx, ny)
-            _add_pin(mxx, mxy, myy, i, v, -s, -ny, nx)
+            yx[i, b] += fn0 * nx + ft0 * ny
+            yy[i, b] += fn0 * ny - ft0 * nx
+            _add_pin(mxx, mxy, myy, i, b, -be, nx, ny)
+            _add_pin(mxx, mxy, myy, i, b, -s, -ny, nx)
             wtq[v, w] -= fn0 * cinfo[v, w, ic, C_L] - ft0 * cinfo[v, w, ic, C_LT]
             wsf[v, w] -= fn0 * cinfo[v, w, ic, C_DN] - ft0 * cinfo[v, w, ic, C_DT]
             cinfo[v, w, ic, C_BETA] = 0.0
@@ -258,10 +265,10 @@ def _drop_tensile(v, cinfo, ncand, cand, qrot, qsl, dq, dvx, dvy, yx, yy, mxx, m
 
 
 @njit(**_OPTS)
-def _border_rows(v, ws, wp, par, ncand, cand, cinfo, qrot, qsl, bx, by, sq, fq, wtq, wsf, t):
+def _border_rows(v, b, ws, wp, par, ncand, cand, cinfo, qrot, qsl, bx, by, sq, fq, wtq, wsf, t):
     """The wheels' rows of lane ``v``'s bordered system ``[[P, B], [Bᵀ, Q]]`` (as
     ``_implicit._solve``): ``qrot``, ``qsl``, ``Q`` in ``sq[v]``, ``F_q`` in ``fq[v]``,
-    ``B`` in ``bx``, ``by`` ``(2W, N, V)``; returns their number ``nq``."""
+    ``B`` in ``bx``, ``by`` ``(2W, N, block)`` column ``b``; returns their number ``nq``."""
     nw = ws.shape[1]
     h = par[v, K.P_DT]
     gx = par[v, K.P_GX]
@@ -312,12 +319,12 @@ def _border_rows(v, ws, wp, par, ncand, cand, cinfo, qrot, qsl, bx, by, sq, fq, 
             dn = cinfo[v, w, ic, C_DN]
             dtt = cinfo[v, w, ic, C_DT]
             if qr >= 0:
-                bx[qr, i, v] -= be * lev * nx - s * levt * ny
-                by[qr, i, v] -= be * lev * ny + s * levt * nx
+                bx[qr, i, b] -= be * lev * nx - s * levt * ny
+                by[qr, i, b] -= be * lev * ny + s * levt * nx
                 sq[v, qr, qr] += be * lev * lev + s * levt * levt
             if qs >= 0:
-                bx[qs, i, v] -= be * dn * nx - s * dtt * ny
-                by[qs, i, v] -= be * dn * ny + s * dtt * nx
+                bx[qs, i, b] -= be * dn * nx - s * dtt * ny
+                by[qs, i, b] -= be * dn * ny + s * dtt * nx
                 sq[v, qs, qs] += be * dn * dn + s * dtt * dtt
             if qr >= 0 and qs >= 0:
                 sq[v, qr, qs] += be * lev * dn + s * levt * dtt
@@ -326,7 +333,7 @@ def _border_rows(v, ws, wp, par, ncand, cand, cinfo, qrot, qsl, bx, by, sq, fq, 
 
 
 @njit(**_OPTS)
-def _schur(v, nq, ncand, cand, qrot, qsl, bx, by, zx, zy, dvx, dvy, sq, fq):
+def _schur(v, b, nq, ncand, cand, qrot, qsl, bx, by, zx, zy, dvx, dvy, sq, fq):
     """Lane ``v``'s Schur complement ``S = Q − Bᵀ P⁻¹ B`` and right-hand side
     ``F_q − Bᵀ P⁻¹ F`` (``B`` cleared after use), solved in place in ``fq[v]``."""
     for w in range(qrot.shape[1]):
@@ -335,15 +342,15 @@ def _schur(v, nq, ncand, cand, qrot, qsl, bx, by, zx, zy, dvx, dvy, sq, fq):
                 continue
             for ic in range(ncand[v, w]):
                 i = cand[v, w, ic]
-                bxq = bx[q, i, v]
-                byq = by[q, i, v]
+                bxq = bx[q, i, b]
+                byq = by[q, i, b]
                 if bxq == 0.0 and byq == 0.0:
                     continue
-                fq[v, q] -= bxq * dvx[i, v] + byq * dvy[i, v]
+                fq[v, q] -= bxq * dvx[i, b] + byq * dvy[i, b]
                 for q2 in range(nq):
-                    sq[v, q, q2] -= bxq * zx[q2, i, v] + byq * zy[q2, i, v]
-                bx[q, i, v] = 0.0
-                by[q, i, v] = 0.0
+                    sq[v, q, q2] -= bxq * zx[q2, i, b] + byq * zy[q2, i, b]
+                bx[q, i, b] = 0.0
+                by[q, i, b] = 0.0
     _small_solve(sq[v], fq[v], nq)
 
 
@@ -384,23 +391,25 @@ def _wheels(v, ws, wp, par, qrot, qsl, fq, omu, t):
 
 
 @njit(**_OPTS)
-def _rebuild(due, x, y, vx, vy, ws, wp, par, margin, h, countdown, vmax_s, cand, gcache, ncand,
-             vm, rc2):
-    """The contact candidates of the lanes ``due``, as the single kernel lists them
-    (:func:`._contact.rebuild_every`, :func:`._contact.wheel_candidates`: the same pins in
-    the same order, the same countdown), the pins read across the lanes (contiguous)."""
-    n, nv = x.shape
+def _rebuild(v0, nb, due, x, y, vx, vy, ws, wp, par, margin, h, countdown, vmax_s, cand, gcache,
+             ncand, vm, rc2):
+    """The contact candidates of the lanes ``due`` of the block of ``nb`` lanes from lane
+    ``v0``, as the single kernel lists them (:func:`._contact.rebuild_every`,
+    :func:`._contact.wheel_candidates`: the same pins in the same order, the same
+    countdown), the pins read across the block's lanes (contiguous)."""
+    n = x.shape[0]
     nw = ws.shape[1]
-    for v in range(nv):
-        vm[v] = 0.0
+    for b in range(nb):
+        vm[b] = 0.0
     for i in range(n):
-        for v in range(nv):
-            v2 = vx[i, v] * vx[i, v] + vy[i, v] * vy[i, v]
-            vm[v] = v2 if v2 > vm[v] else vm[v]
-    for v in range(nv):
+        for b in range(nb):
+            v2 = vx[i, b] * vx[i, b] + vy[i, b] * vy[i, b]
+            vm[b] = v2 if v2 > vm[b] else vm[b]
+    for b in range(nb):
+        v = v0 + b
         if not due[v]:
             continue
-        vmax = math.sqrt(vm[v])
+        vmax = math.sqrt(vm[b])
         vs = vmax_s[v]
         for w in range(nw):
             vmax_w = abs(ws[v, w, K.S_SDOT])
@@ -413,37 +422,40 @@ def _rebuild(due, x, y, vx, vy, ws, wp, par, margin, h, countdown, vmax_s, cand,
         for w in range(nw):
             geo = C.wheel_geometry(wp[v], ws[v], w, rr)
             rc = geo[10] + margin[v]
-            rc2[v, w, 0] = geo[0]
-            rc2[v, w, 1] = geo[1]
-            rc2[v, w, 2] = rc * rc
+            rc2[b, w, 0] = geo[0]
+            rc2[b, w, 1] = geo[1]
+            rc2[b, w, 2] = rc * rc
             for ic in range(ncand[v, w]):
                 gcache[v, w, cand[v, w, ic]] = -1
             ncand[v, w] = 0
     for w in range(nw):
         for i in range(n):
-            for v in range(nv):
+            for b in range(nb):
+                v = v0 + b
                 if due[v]:
-                    qx = x[i, v] - rc2[v, w, 0]
-                    qy = y[i, v] - rc2[v, w, 1]
-                    if qx * qx + qy * qy <= rc2[v, w, 2]:
+                    qx = x[i, b] - rc2[b, w, 0]
+                    qy = y[i, b] - rc2[b, w, 1]
+                    if qx * qx + qy * qy <= rc2[b, w, 2]:
                         cand[v, w, ncand[v, w]] = i
                         ncand[v, w] += 1
 
 
 @njit(**_OPTS)
-def _solve_all(act, nq, ws, wp, par, ncand, cand, cinfo, qrot, qsl, bx, by, zx, zy, sq, fq, wtq,
-               wsf, tl, yx, yy, wxx, wxy, wyy, ux, uy, dg, of, dd, ff, dlast, bl, lams, inv_ak,
-               dvx, dvy):
-    """``_implicit._solve`` of every stepping lane: the link system's passes across the
-    lanes, the wheels' border per lane."""
-    n, nv = yx.shape
+def _solve_all(v0, nb, act, nq, ws, wp, par, ncand, cand, cinfo, qrot, qsl, bx, by, zx, zy, sq,
+               fq, wtq, wsf, tl, yx, yy, wxx, wxy, wyy, ux, uy, dg, of, dd, ff, dlast, bl, dcur,
+               lams, inv_ak, dvx, dvy):
+    """``_implicit._solve`` of every stepping lane of the block of ``nb`` lanes from lane
+    ``v0``: the link system's passes across the block's lanes, the wheels' border per
+    lane."""
+    n = yx.shape[0]
     _entries(dg, of, wxx, wxy, wyy, ux, uy, inv_ak)
     maxnq = 0
-    for v in range(nv):
+    for b in range(nb):
+        v = v0 + b
         nq[v] = 0
         if act[v]:
-            nq[v] = _border_rows(v, ws, wp, par, ncand, cand, cinfo, qrot, qsl, bx, by, sq, fq,
-                                 wtq, wsf, tl[v])
+            nq[v] = _border_rows(v, b, ws, wp, par, ncand, cand, cinfo, qrot, qsl, bx, by, sq,
+                                 fq, wtq, wsf, tl[v])
             maxnq = max(maxnq, nq[v])
     _rhs(yx, yy, dvx, dvy, wxx, wxy, wyy, ux, uy, lams[0])
     fused = min(maxnq, 3)
@@ -452,41 +464,104 @@ def _solve_all(act, nq, ws, wp, par, ncand, cand, cinfo, qrot, qsl, bx, by, zx, 
     if maxnq > 1:
         for q in range(fused, 3):
             lams[q + 1, :, :] = 0.0
-    _factor_solve(dg, of, dd, ff, dlast, bl, lams, 4 if maxnq > 1 else 2)
+    _factor_solve(dg, of, dd, ff, dlast, bl, lams, 4 if maxnq > 1 else 2, dcur)
     _back(dvx, dvy, wxx, wxy, wyy, ux, uy, lams[0])
     if maxnq == 0:
         return
     for q in range(fused):
         _back(zx[q], zy[q], wxx, wxy, wyy, ux, uy, lams[q + 1])
-    for v in range(nv):
+    for b in range(nb):
+        v = v0 + b
         if nq[v] == 0:
             continue
         for q in range(min(nq[v], 3), nq[v]):
-            _apply_inverse(bx[q, :, v], by[q, :, v], zx[q, :, v], zy[q, :, v], wxx[:, v],
-                           wxy[:, v], wyy[:, v], ux[:, v], uy[:, v], of[:, v], dd[:, v],
-                           ff[:, v], dlast[v], lams[1, :, v])
-        _schur(v, nq[v], ncand, cand, qrot, qsl, bx, by, zx, zy, dvx, dvy, sq, fq)
+            _apply_inverse(bx[q, :, b], by[q, :, b], zx[q, :, b], zy[q, :, b], wxx[:, b],
+                           wxy[:, b], wyy[:, b], ux[:, b], uy[:, b], of[:, b], dd[:, b],
+                           ff[:, b], dlast[b], lams[1, :, b])
+        _schur(v, b, nq[v], ncand, cand, qrot, qsl, bx, by, zx, zy, dvx, dvy, sq, fq)
     for q in range(maxnq):
         for i in range(n):
-            for v in range(nv):
-                dvx[i, v] = dvx[i, v] - zx[q, i, v] * fq[v, q] if q < nq[v] else dvx[i, v]
-                dvy[i, v] = dvy[i, v] - zy[q, i, v] * fq[v, q] if q < nq[v] else dvy[i, v]
+            for b in range(nb):
+                v = v0 + b
+                dvx[i, b] = dvx[i, b] - zx[q, i, b] * fq[v, q] if q < nq[v] else dvx[i, b]
+                dvy[i, b] = dvy[i, b] - zy[q, i, b] * fq[v, q] if q < nq[v] else dvy[i, b]
 
 
 @njit(**_OPTS)
-def _lane_solve(v, mh, mxx, mxy, myy, wxx, wxy, wyy, yx, yy, ux, uy, dg, of, dd, ff, lams, inv_ak,
-                dvx, dvy, ws, wp, par, ncand, cand, cinfo, qrot, qsl, bx, by, zx, zy, sq, fq, wtq,
-                wsf, t):
-    """Lane ``v`` solved again after a dropped contact: its pins' inverses and
-    ``_implicit._solve`` itself on the lane's columns."""
+def _lane_solve(v, b, mh, mxx, mxy, myy, wxx, wxy, wyy, yx, yy, ux, uy, dg, of, dd, ff, lams,
+                inv_ak, dvx, dvy, ws, wp, par, ncand, cand, cinfo, qrot, qsl, bx, by, zx, zy, sq,
+                fq, wtq, wsf, t):
+    """Lane ``v`` (the block's column ``b``) solved again after a dropped contact: its
+    pins' inverses and ``_implicit._solve`` itself on the lane's columns."""
     n = yx.shape[0]
     for i in range(n):
-        _pin_inverse(i, mh[v], mxx[:, v], mxy[:, v], myy[:, v], wxx[:, v], wxy[:, v], wyy[:, v])
-    _solve(n, ws.shape[1], yx[:, v], yy[:, v], wxx[:, v], wxy[:, v], wyy[:, v], ux[:, v],
-           uy[:, v], dg[:, v], of[:, v], dd[:, v], ff[:, v], lams[0, :, v], lams[1:, :, v],
-           inv_ak[v], dvx[:, v], dvy[:, v], ws[v], wp[v], ncand[v], cand[v], cinfo[v], qrot[v],
-           qsl[v], bx[:, :, v], by[:, :, v], zx[:, :, v], zy[:, :, v], sq[v], fq[v], wtq[v],
+        _pin_inverse(i, mh[b], mxx[:, b], mxy[:, b], myy[:, b], wxx[:, b], wxy[:, b], wyy[:, b])
+    _solve(n, ws.shape[1], yx[:, b], yy[:, b], wxx[:, b], wxy[:, b], wyy[:, b], ux[:, b],
+           uy[:, b], dg[:, b], of[:, b], dd[:, b], ff[:, b], lams[0, :, b], lams[1:, :, b],
+           inv_ak[b], dvx[:, b], dvy[:, b], ws[v], wp[v], ncand[v], cand[v], cinfo[v], qrot[v],
+           qsl[v], bx[:, :, b], by[:, :, b], zx[:, :, b], zy[:, :, b], sq[v], fq[v], wtq[v],
            wsf[v], par[v, K.P_DT], t, par[v, K.P_GX], par[v, K.P_GY])
+
+
+@njit(**_OPTS)
+def _blocked(a, nblk):
+    """``(N, V)`` as ``(blocks, N, BLOCK)``, the last block padded with the last lane."""
+    n, nv = a.shape
+    out = np.empty((nblk, n, BLOCK))
+    for blk in range(nblk):
+        for i in range(n):
+            for b in range(BLOCK):
+                out[blk, i, b] = a[i, min(blk * BLOCK + b, nv - 1)]
+    return out
+
+
+@njit(**_OPTS)
+def _unblocked(out, a):
+    """The lanes of the blocked ``a`` back into ``out`` ``(N, V)``."""
+    n, nv = out.shape
+    for i in range(n):
+        for v in range(nv):
+            out[i, v] = a[v // BLOCK, i, v % BLOCK]
+
+
+@njit(**_OPTS)
+def _lane_constants(par, nblk):
+    """Per lane (padded to whole blocks, ``(blocks, BLOCK)``): ``k``, ``c``, ``h``,
+    ``θ h``, ``m/h``, ``1/a``, the weight and the global damping; and the links' rest
+    lengths ``(blocks, N, BLOCK)``."""
+    nv = par.shape[0]
+    out = np.empty((9, nblk, BLOCK))
+    for blk in range(nblk):
+        for b in range(BLOCK):
+            v = min(blk * BLOCK + b, nv - 1)
+            m = par[v, K.P_MASS]
+            k = par[v, K.P_K]
+            c = par[v, K.P_C]
+            h = par[v, K.P_DT]
+            th = par[v, K.P_THETA]
+            out[0, blk, b] = k
+            out[1, blk, b] = c
+            out[2, blk, b] = h
+            out[3, blk, b] = th * h
+            out[4, blk, b] = m / h
+            out[5, blk, b] = 1.0 / (th * (h * k + c))
+            out[6, blk, b] = m * par[v, K.P_GX]
+            out[7, blk, b] = m * par[v, K.P_GY]
+            out[8, blk, b] = par[v, K.P_CGLOB] * m
+    return out
+
+
+@njit(**_OPTS)
+def _rest_lengths(par, n, nblk):
+    """The links' rest lengths ``(blocks, N, BLOCK)`` (padded as :func:`_lane_constants`)."""
+    nv = par.shape[0]
+    rest = np.empty((nblk, n, BLOCK))
+    for blk in range(nblk):
+        for i in range(n):
+            for b in range(BLOCK):
+                v = min(blk * BLOCK + b, nv - 1)
+                rest[blk, i, b] = par[v, K.P_PITCH] if i % 2 == 0 else par[v, K.P_PITCH2]
+    return rest
 
 
 @njit(**_OPTS)
@@ -495,47 +570,37 @@ def integrate_implicit_lanes(x, y, vx, vy, ws, wp, gd, tab, par, t0, nsteps, eve
                              rec_t, rec_tension, rec_ws, rec_pos, max_steps):
     """Step every active lane through its segment (see the module notes) until one or
     more finishes it, at most ``max_steps`` steps; return the steps taken. A finished
-    lane is left inactive with its state and ``nrec[v]`` records."""
+    lane is left inactive with its state and ``nrec[v]`` records.
+
+    The lanes go in blocks of ``BLOCK``: each step runs a block through all its passes
+    before the next block, on work arrays ``(N, BLOCK)`` shared by the blocks (so that a
+    block's working set stays in the core's caches), the pins' state kept blocked
+    ``(blocks, N, BLOCK)`` during the call."""
     n, nv = x.shape
     nw = ws.shape[1]
     ng = gd.shape[1]
-    # per-lane constants
-    k = par[:, K.P_K].copy()
-    c = par[:, K.P_C].copy()
+    nblk = (nv + BLOCK - 1) // BLOCK
     h = par[:, K.P_DT].copy()
-    th = par[:, K.P_THETA]
-    thh = np.empty(nv)
-    mh = np.empty(nv)
-    inv_ak = np.empty(nv)
-    fgx = np.empty(nv)
-    fgy = np.empty(nv)
-    cm = np.empty(nv)
     margin = np.empty(nv)
     for v in range(nv):
-        m = par[v, K.P_MASS]
-        mh[v] = m / h[v]
-        ak = th[v] * (h[v] * k[v] + c[v])
-        inv_ak[v] = 1.0 / ak
-        thh[v] = th[v] * h[v]
-        fgx[v] = m * par[v, K.P_GX]
-        fgy[v] = m * par[v, K.P_GY]
-        cm[v] = par[v, K.P_CGLOB] * m
         margin[v] = 0.25 * par[v, K.P_RROLLER]
-    rest = np.empty((n, nv))
-    for i in range(n):
-        for v in range(nv):
-            rest[i, v] = par[v, K.P_PITCH] if i % 2 == 0 else par[v, K.P_PITCH2]
+    lc = _lane_constants(par, nblk)
+    rest = _rest_lengths(par, n, nblk)
+    xb, yb, vxb, vyb = _blocked(x, nblk), _blocked(y, nblk), _blocked(vx, nblk), _blocked(vy, nblk)
     f2 = np.zeros
-    tension, tstar, ux, uy = f2((n, nv)), f2((n, nv)), f2((n, nv)), f2((n, nv))
-    fx, fy, mxx, mxy, myy = f2((n, nv)), f2((n, nv)), f2((n, nv)), f2((n, nv)), f2((n, nv))
-    wxx, wxy, wyy, yx, yy = f2((n, nv)), f2((n, nv)), f2((n, nv)), f2((n, nv)), f2((n, nv))
-    dg, of, dd, ff, dvx, dvy = (f2((n, nv)), f2((n, nv)), f2((n, nv)), f2((n, nv)),
-                                f2((n, nv)), f2((n, nv)))
-    lams = f2((4, n, nv))   # λ, then the border columns' λ_q
-    bl = f2((4, nv))
-    dlast = f2(nv)
-    bx, by = f2((2 * nw, n, nv)), f2((2 * nw, n, nv))
-    zx, zy = f2((2 * nw, n, nv)), f2((2 * nw, n, nv))
+    tension, tstar, ux, uy = f2((n, BLOCK)), f2((n, BLOCK)), f2((n, BLOCK)), f2((n, BLOCK))
+    fx, fy, mxx, mxy, myy = (f2((n, BLOCK)), f2((n, BLOCK)), f2((n, BLOCK)), f2((n, BLOCK)),
+                             f2((n, BLOCK)))
+    wxx, wxy, wyy, yx, yy = (f2((n, BLOCK)), f2((n, BLOCK)), f2((n, BLOCK)), f2((n, BLOCK)),
+                             f2((n, BLOCK)))
+    dg, of, dd, ff, dvx, dvy = (f2((n, BLOCK)), f2((n, BLOCK)), f2((n, BLOCK)), f2((n, BLOCK)),
+                                f2((n, BLOCK)), f2((n, BLOCK)))
+    lams = f2((4, n, BLOCK))   # λ, then the border columns' λ_q
+    bl = f2((4, BLOCK))
+    dlast = f2(BLOCK)
+    dcur = f2(BLOCK)
+    bx, by = f2((2 * nw, n, BLOCK)), f2((2 * nw, n, BLOCK))
+    zx, zy = f2((2 * nw, n, BLOCK)), f2((2 * nw, n, BLOCK))
     sq = f2((nv, 2 * nw, 2 * nw))
     fq = f2((nv, 2 * nw))
     qrot = np.full((nv, nw), -1, np.int64)
@@ -546,14 +611,15 @@ def integrate_implicit_lanes(x, y, vx, vy, ws, wp, gd, tab, par, t0, nsteps, eve
     wsf = f2((nv, nw))
     omu = f2((nv, nw))
     act = np.zeros(nv, np.bool_)
+    actb = np.zeros(BLOCK, np.bool_)
     gc, pt = _wheel_constants(wp, par)
     tab2 = tab.reshape((nv * nw, tab.shape[2], tab.shape[3]))
     sqb = f2(NQ * LANES)
     sob = f2(NO * LANES)
     sib = np.zeros(LANES, np.int64)
     due = np.zeros(nv, np.bool_)
-    vm = f2(nv)
-    rc2 = f2((nv, nw, 3))
+    vm = f2(BLOCK)
+    rc2 = f2((BLOCK, nw, 3))
     tl = f2(nv)
     nrmax = rec_t.shape[1]
     taken = 0
@@ -564,73 +630,27 @@ def integrate_implicit_lanes(x, y, vx, vy, ws, wp, gd, tab, par, t0, nsteps, eve
             anyact = anyact or act[v]
         if not anyact:
             break
-        _links(x, y, vx, vy, k, c, thh, rest, tension, tstar, ux, uy)
-        anydue = False
-        for v in range(nv):
-            due[v] = act[v] and countdown[v] <= 0
-            anydue = anydue or due[v]
-        if anydue:
-            _rebuild(due, x, y, vx, vy, ws, wp, par, margin, h, countdown, vmax_s, cand, gcache,
-                     ncand, vm, rc2)
-        for v in range(nv):
-            if not act[v]:
+        for blk in range(nblk):
+            v0 = blk * BLOCK
+            nb = min(BLOCK, nv - v0)
+            anyb = False
+            for b in range(BLOCK):
+                actb[b] = b < nb and act[v0 + b]
+                anyb = anyb or actb[b]
+            if not anyb:
                 continue
-            t = t0[v] + step[v] * h[v]
-            tl[v] = t
-            tn = t + h[v]
-            for w in range(nw):
-                mode = wp[v, w, K.W_MODE]
-                if mode == K.MODE_SPEED:
-                    omu[v, w] = wp[v, w, K.W_OMEGA0] * speed_factor(wp[v], w, tn)
-                elif mode == K.MODE_LOCKED:
-                    omu[v, w] = 0.0
-                else:
-                    omu[v, w] = ws[v, w, K.S_OMEGA]
-            countdown[v] -= 1
-        for w in range(nw):
-            wheel_contacts(w, act, x, y, vx, vy, fx, fy, mxx, mxy, myy, ws, wp, par, omu, tab2,
-                           gc, pt, cand, gcache, ncand, cinfo, wtq, wsf, sqb, sob, sib)
-        for v in range(nv):
-            if not act[v]:
-                continue
-            if ng > 0:
-                _lane_guides(v, x, y, vx, vy, fx, fy, mxx, mxy, myy, gd, par, gcand, ngcand,
-                             due[v], margin[v])
-            t = tl[v]
-            r = nrec[v]
-            if step[v] % every[v] == 0 and r < nrmax:
-                rec_t[v, r] = t
-                for i in range(n):
-                    rec_tension[v, r, i] = tension[i, v]
-                    rec_pos[v, r, i, 0] = x[i, v]
-                    rec_pos[v, r, i, 1] = y[i, v]
-                for w in range(nw):
-                    for col in range(ws.shape[2]):
-                        rec_ws[v, r, w, col] = ws[v, w, col]
-                nrec[v] = r + 1
-        _pin_forces(fx, fy, fgx, fgy, cm, vx, vy, tstar, ux, uy, yx, yy)
-        _pin_inverses(mh, mxx, mxy, myy, wxx, wxy, wyy)
-        _solve_all(act, nq, ws, wp, par, ncand, cand, cinfo, qrot, qsl, bx, by, zx, zy, sq, fq,
-                   wtq, wsf, tl, yx, yy, wxx, wxy, wyy, ux, uy, dg, of, dd, ff, dlast, bl, lams,
-                   inv_ak, dvx, dvy)
-        # the active set of the wheel contacts (as the single kernel): a lane whose
-        # contact comes out tensile is solved again, alone, by the single kernel's solve
-        for v in range(nv):
-            if not act[v]:
-                continue
-            for _ in range(3):
-                if not _drop_tensile(v, cinfo, ncand, cand, qrot, qsl, fq, dvx, dvy, yx, yy, mxx,
-                                     mxy, myy, wtq, wsf):
-                    break
-                _lane_solve(v, mh, mxx, mxy, myy, wxx, wxy, wyy, yx, yy, ux, uy, dg, of, dd, ff,
-                            lams, inv_ak, dvx, dvy, ws, wp, par, ncand, cand, cinfo, qrot, qsl,
-                            bx, by, zx, zy, sq, fq, wtq, wsf, tl[v])
-        _update(act, h, x, y, vx, vy, dvx, dvy, fx, fy, mxx, mxy, myy)
+            _block_step(v0, nb, n, nw, ng, actb, act, due, xb[blk], yb[blk], vxb[blk], vyb[blk],
+                        rest[blk], lc[0, blk], lc[1, blk], lc[2, blk], lc[3, blk], lc[4, blk],
+                        lc[5, blk], lc[6, blk], lc[7, blk], lc[8, blk], h, margin, ws, wp, gd,
+                        par, t0, step, every, nrec, countdown, vmax_s, cand, gcache, ncand,
+                        gcand, ngcand, rec_t, rec_tension, rec_ws, rec_pos, nrmax, tension,
+                        tstar, ux, uy, fx, fy, mxx, mxy, myy, wxx, wxy, wyy, yx, yy, dg, of, dd,
+                        ff, dvx, dvy, lams, bl, dlast, dcur, bx, by, zx, zy, sq, fq, qrot, qsl,
+                        nq, cinfo, wtq, wsf, omu, gc, pt, tab2, sqb, sob, sib, vm, rc2, tl)
         done = False
         for v in range(nv):
             if not act[v]:
                 continue
-            _wheels(v, ws, wp, par, qrot, qsl, fq, omu, tl[v])
             step[v] += 1
             if step[v] >= nsteps[v]:
                 active[v] = False
@@ -638,4 +658,90 @@ def integrate_implicit_lanes(x, y, vx, vy, ws, wp, gd, tab, par, t0, nsteps, eve
         taken += 1
         if done:
             break
+    _unblocked(x, xb)
+    _unblocked(y, yb)
+    _unblocked(vx, vxb)
+    _unblocked(vy, vyb)
     return taken
+
+
+@njit(**_OPTS)
+def _block_step(v0, nb, n, nw, ng, actb, act, due, x, y, vx, vy, rest, k, c, hb, thh, mh, inv_ak,
+                fgx, fgy, cm, h, margin, ws, wp, gd, par, t0, step, every, nrec, countdown,
+                vmax_s, cand, gcache, ncand, gcand, ngcand, rec_t, rec_tension, rec_ws, rec_pos,
+                nrmax, tension, tstar, ux, uy, fx, fy, mxx, mxy, myy, wxx, wxy, wyy, yx, yy, dg,
+                of, dd, ff, dvx, dvy, lams, bl, dlast, dcur, bx, by, zx, zy, sq, fq, qrot, qsl,
+                nq, cinfo, wtq, wsf, omu, gc, pt, tab2, sqb, sob, sib, vm, rc2, tl):
+    """One step of the block of ``nb`` lanes from lane ``v0`` (its pins ``x`` ... and
+    per-lane constants ``k`` ... ``cm`` the block's ``(N, BLOCK)``, ``(BLOCK,)`` arrays,
+    ``actb`` its stepping lanes), every pass of the single kernel's step in its order."""
+    _links(x, y, vx, vy, k, c, thh, rest, tension, tstar, ux, uy)
+    anydue = False
+    for b in range(nb):
+        v = v0 + b
+        due[v] = act[v] and countdown[v] <= 0
+        anydue = anydue or due[v]
+    if anydue:
+        _rebuild(v0, nb, due, x, y, vx, vy, ws, wp, par, margin, h, countdown, vmax_s, cand,
+                 gcache, ncand, vm, rc2)
+    for b in range(nb):
+        v = v0 + b
+        if not act[v]:
+            continue
+        t = t0[v] + step[v] * h[v]
+        tl[v] = t
+        tn = t + h[v]
+        for w in range(nw):
+            mode = wp[v, w, K.W_MODE]
+            if mode == K.MODE_SPEED:
+                omu[v, w] = wp[v, w, K.W_OMEGA0] * speed_factor(wp[v], w, tn)
+            elif mode == K.MODE_LOCKED:
+                omu[v, w] = 0.0
+            else:
+                omu[v, w] = ws[v, w, K.S_OMEGA]
+        countdown[v] -= 1
+    for w in range(nw):
+        wheel_contacts(w, v0, nb, act, x, y, vx, vy, fx, fy, mxx, mxy, myy, ws, wp, par, omu,
+                       tab2, gc, pt, cand, gcache, ncand, cinfo, wtq, wsf, sqb, sob, sib)
+    for b in range(nb):
+        v = v0 + b
+        if not act[v]:
+            continue
+        if ng > 0:
+            _lane_guides(v, b, x, y, vx, vy, fx, fy, mxx, mxy, myy, gd, par, gcand, ngcand,
+                         due[v], margin[v])
+        t = tl[v]
+        r = nrec[v]
+        if step[v] % every[v] == 0 and r < nrmax:
+            rec_t[v, r] = t
+            for i in range(n):
+                rec_tension[v, r, i] = tension[i, b]
+                rec_pos[v, r, i, 0] = x[i, b]
+                rec_pos[v, r, i, 1] = y[i, b]
+            for w in range(nw):
+                for col in range(ws.shape[2]):
+                    rec_ws[v, r, w, col] = ws[v, w, col]
+            nrec[v] = r + 1
+    _pin_forces(fx, fy, fgx, fgy, cm, vx, vy, tstar, ux, uy, yx, yy)
+    _pin_inverses(mh, mxx, mxy, myy, wxx, wxy, wyy)
+    _solve_all(v0, nb, act, nq, ws, wp, par, ncand, cand, cinfo, qrot, qsl, bx, by, zx, zy, sq,
+               fq, wtq, wsf, tl, yx, yy, wxx, wxy, wyy, ux, uy, dg, of, dd, ff, dlast, bl, dcur,
+               lams, inv_ak, dvx, dvy)
+    # the active set of the wheel contacts (as the single kernel): a lane whose contact
+    # comes out tensile is solved again, alone, by the single kernel's solve
+    for b in range(nb):
+        v = v0 + b
+        if not act[v]:
+            continue
+        for _ in range(3):
+            if not _drop_tensile(v, b, cinfo, ncand, cand, qrot, qsl, fq, dvx, dvy, yx, yy, mxx,
+                                 mxy, myy, wtq, wsf):
+                break
+            _lane_solve(v, b, mh, mxx, mxy, myy, wxx, wxy, wyy, yx, yy, ux, uy, dg, of, dd, ff,
+                        lams, inv_ak, dvx, dvy, ws, wp, par, ncand, cand, cinfo, qrot, qsl, bx,
+                        by, zx, zy, sq, fq, wtq, wsf, tl[v])
+    _update(actb, hb, x, y, vx, vy, dvx, dvy, fx, fy, mxx, mxy, myy)
+    for b in range(nb):
+        v = v0 + b
+        if act[v]:
+            _wheels(v, ws, wp, par, qrot, qsl, fq, omu, tl[v])

@@ -64,10 +64,13 @@ from ._batched import (
     _seat_lane,
 )
 from ._implicit import C_BETA, C_DN, C_DT, C_FN0, C_FT0, C_L, C_LT, C_NX, C_NY, C_S
+from ._lane_passes import _NoAlias
 
 __all__ = ["wheel_contacts"]
 
 _OPTS = {"cache": True, "fastmath": False, "error_model": "numpy"}
+#: the slot's law's arrays never overlap: vectorised without run-time overlap checks
+_NOALIAS = {**_OPTS, "pipeline_class": _NoAlias}
 
 #: rows of the slot's law ``so``: in contact, normal, force at the end of the step
 #: without the implicit increment, friction, sticking slope
@@ -75,7 +78,7 @@ O_ON, O_NX, O_NY, O_FN0, O_FT0, O_S = range(6)
 NO = 6
 
 
-@njit(**_OPTS)
+@njit(**_NOALIAS)
 def _slot_law(sq, so, gc, g0, pt, p0, nb):
     """The linearised contact law of one candidate slot in the ``nb`` lanes of a block,
     branch-free (see the module notes); each lane's operations those of the single
@@ -146,20 +149,21 @@ def _add_pin(mxx, mxy, myy, i, v, coef, ax, ay):
 
 
 @njit(**_OPTS)
-def wheel_contacts(w, act, x, y, vx, vy, fx, fy, mxx, mxy, myy, ws, wp, par, omu, tab2, gc, pt,
-                   cand, gcache, ncand, cinfo, wtq, wsf, sq, so, si):
-    """The contacts of wheel ``w`` in the stepping lanes ``act`` (see the module notes):
-    forces and matrix terms on the pins, ``wtq``, ``wsf`` and the wheel state's torque
-    and slide force, the contacts' rows ``cinfo``. ``gc``, ``pt`` from
-    :func:`._batched._wheel_constants`; ``tab2`` the seat tables ``(V W, smax, 6)``;
-    ``sq`` ``(NQ LANES,)``, ``so`` ``(NO LANES,)``, ``si`` ``(LANES,)`` work arrays."""
-    nv = x.shape[1]
+def wheel_contacts(w, v0, nb, act, x, y, vx, vy, fx, fy, mxx, mxy, myy, ws, wp, par, omu, tab2,
+                   gc, pt, cand, gcache, ncand, cinfo, wtq, wsf, sq, so, si):
+    """The contacts of wheel ``w`` in the stepping lanes ``act`` of the block of ``nb``
+    lanes from lane ``v0`` (see the module notes): forces and matrix terms on the pins
+    (the block's ``(N, nb…)`` arrays, column ``v - v0``), ``wtq``, ``wsf`` and the wheel
+    state's torque and slide force, the contacts' rows ``cinfo``. ``gc``, ``pt`` from
+    :func:`._batched._wheel_constants` (``v0 % LANES + nb <= LANES``); ``tab2`` the seat
+    tables ``(V W, smax, 6)``; ``sq`` ``(NQ LANES,)``, ``so`` ``(NO LANES,)``, ``si``
+    ``(LANES,)`` work arrays."""
     nw = ws.shape[1]
-    for blk in range((nv + LANES - 1) // LANES):
-        v0 = blk * LANES
-        nb = min(LANES, nv - v0)
-        g0 = (blk * nw + w) * NGC * LANES
-        p0 = blk * L.NPAR * LANES
+    if nb > 0:
+        blk = v0 // LANES
+        off = v0 - blk * LANES
+        g0 = (blk * nw + w) * NGC * LANES + off
+        p0 = blk * L.NPAR * LANES + off
         maxc = 0
         for b in range(nb):
             v = v0 + b
@@ -194,12 +198,12 @@ def wheel_contacts(w, act, x, y, vx, vy, fx, fy, mxx, mxy, myy, ws, wp, par, omu
                 si[b] = i
                 # the gather of _batched._wheel_contacts (an inlined function taking the
                 # arrays would cost their reference counts per call), the rim with reach
-                qx = x[i, v] - sq[Q_CX * LANES + b]
-                qy = y[i, v] - sq[Q_CY * LANES + b]
+                qx = x[i, b] - sq[Q_CX * LANES + b]
+                qy = y[i, b] - sq[Q_CY * LANES + b]
                 sq[Q_QX * LANES + b] = qx
                 sq[Q_QY * LANES + b] = qy
-                sq[Q_VX * LANES + b] = vx[i, v]
-                sq[Q_VY * LANES + b] = vy[i, v]
+                sq[Q_VX * LANES + b] = vx[i, b]
+                sq[Q_VY * LANES + b] = vy[i, b]
                 r2 = qx * qx + qy * qy
                 if r2 > gc[g0 + G_ROUT2 * LANES + b] or r2 < gc[g0 + G_RIN2 * LANES + b]:
                     continue
@@ -252,14 +256,14 @@ def wheel_contacts(w, act, x, y, vx, vy, fx, fy, mxx, mxy, myy, ws, wp, par, omu
                 betac = th * (par[v, L.P_DT] * par[v, L.P_KC] + par[v, L.P_CC])
                 ddx = wp[v, w, L.W_DX]
                 ddy = wp[v, w, L.W_DY]
-                fx[i, v] += -fn0 * nx - ft0 * ny
-                fy[i, v] += -fn0 * ny + ft0 * nx
-                mxx[i, v] += betac * nx * nx
-                mxy[i, v] += betac * nx * ny
-                myy[i, v] += betac * ny * ny
-                mxx[i, v] += s * -ny * -ny
-                mxy[i, v] += s * -ny * nx
-                myy[i, v] += s * nx * nx
+                fx[i, b] += -fn0 * nx - ft0 * ny
+                fy[i, b] += -fn0 * ny + ft0 * nx
+                mxx[i, b] += betac * nx * nx
+                mxy[i, b] += betac * nx * ny
+                myy[i, b] += betac * ny * ny
+                mxx[i, b] += s * -ny * -ny
+                mxy[i, b] += s * -ny * nx
+                myy[i, b] += s * nx * nx
                 lev = qx * ny - qy * nx
                 levt = qx * nx + qy * ny
                 wtq[v, w] += fn0 * lev - ft0 * levt
