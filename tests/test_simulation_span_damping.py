@@ -157,3 +157,18 @@ def test_steady_state_implicit_takes_span_damping():
     assert si.method == "implicit" and si.settled
     assert si.mean_tension == pytest.approx(se.mean_tension, rel=0.02)
     assert si.mean_tension < steady_state(dataclasses.replace(m, span_damping=0.0)).mean_tension
+
+
+def test_batched_kernels_refuse_span_damping():
+    # the batched kernels (explicit and implicit lanes) do not model the term: refused, not ignored
+    from chaindrive.errors import InputError
+    from chaindrive.simulation import roller_example
+    from chaindrive.simulation.steady_batch import steady_states
+    from chaindrive.simulation.steady_lanes import steady_states_implicit
+
+    m = roller_example(links=40, teeth=12, angular_velocity=10.0, load_torque=50.0, gravity=False,
+                       span_damping=5.0)
+    with pytest.raises(InputError, match="span_damping: the batched kernels do not model it"):
+        steady_states([m], periods=4)
+    out = steady_states_implicit([m], periods=4)  # one drive's failure is its result
+    assert isinstance(out[0], InputError) and "span_damping" in str(out[0])
