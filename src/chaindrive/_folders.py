@@ -72,6 +72,25 @@ __all__ = [
 
 #: Marker file that identifies a folder written by chaindrive (a "run folder").
 RUN_MARKER = ".chaindrive-run"
+#: run folders this process has moved into place complete (as given), for a Ctrl-C that comes
+#: after the move (the command's last lines): :func:`completed_note`
+_COMPLETED: list[str] = []
+
+
+def completed_note() -> str:
+    """What an interrupt after the last run folder was moved into place keeps: that
+    folder's results are complete ("" when this process has completed none).
+
+    Examples
+    --------
+    >>> _COMPLETED.append("out"); completed_note()
+    "the results in 'out' were complete before the interrupt"
+    >>> _COMPLETED.clear(); completed_note()
+    ''
+    """
+    if not _COMPLETED:
+        return ""
+    return f"the results in {show_path(_COMPLETED[-1])} were complete before the interrupt"
 
 #: Longest path shown in a message [characters]; longer ones are shortened in the middle.
 SHOWN_PATH = 100
@@ -643,6 +662,7 @@ def atomic_output_dir(path: str | os.PathLike, *, force: bool = False,
                     exc.add_note(_nothing_note(text, had_run))
                 raise
             moved = _move_into_place(tmp, real, text, force=force, option=option, inputs=inputs)
+            _COMPLETED.append(text)
         finally:
             if not moved:
                 shutil.rmtree(tmp, ignore_errors=True)

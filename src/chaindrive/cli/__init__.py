@@ -103,6 +103,15 @@ def _notes(exc: BaseException | None) -> str:
     return "".join(f"; {n}" for n in notes)
 
 
+def _completed() -> str:
+    """For an interrupt without a note (it came after the command's run folder was moved
+    into place, while its last lines were printed): the folder's results are complete."""
+    from .._folders import completed_note
+
+    note = completed_note()
+    return f"; {note}" if note else ""
+
+
 def _cap(text: object, limit: int = MAX_ERROR_LINES) -> str:
     lines = shorten_numbers(str(text)).splitlines() or [""]
     if len(lines) <= limit:
@@ -184,7 +193,7 @@ def _main(argv: list[str], debug: bool) -> int:
         print(f"error: {code}", file=sys.stderr)
         return 2
     except (KeyboardInterrupt, Interrupted) as exc:  # the note says what is kept
-        print(f"interrupted{_notes(exc)}", file=sys.stderr)
+        print(f"interrupted{_notes(exc) or _completed()}", file=sys.stderr)
         return 130
     except BrokenPipeError:  # e.g. `chaindrive chains | head`
         try:
@@ -209,7 +218,7 @@ def _main(argv: list[str], debug: bool) -> int:
             return 2
         if type(exc).__name__ == "Abort":  # click's answer to Ctrl-C (or EOF at a prompt)
             if isinstance(exc.__context__, KeyboardInterrupt):
-                print(f"interrupted{_notes(exc.__context__)}", file=sys.stderr)
+                print(f"interrupted{_notes(exc.__context__) or _completed()}", file=sys.stderr)
                 return 130
             return 1
         if debug:
