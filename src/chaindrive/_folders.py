@@ -72,14 +72,12 @@ __all__ = [
 
 #: Marker file that identifies a folder written by chaindrive (a "run folder").
 RUN_MARKER = ".chaindrive-run"
-#: run folders this process has moved into place complete (as given), for a Ctrl-C that comes
-#: after the move (the command's last lines): :func:`completed_note`
-_COMPLETED: list[str] = []
+_COMPLETED: list[str] = []  #: run folders this process moved into place (for completed_note)
 
 
 def completed_note() -> str:
-    """What an interrupt after the last run folder was moved into place keeps: that
-    folder's results are complete ("" when this process has completed none).
+    """What a Ctrl-C after the last run folder was moved into place keeps: its results
+    are complete ("" when this process has completed none).
 
     Examples
     --------
