@@ -13,14 +13,16 @@ Prints
   holds (the roller centre at the tooth corner) next to the makers' replacement limit;
 * ``jump-over, analysis vs simulation: CASE X %``: the worn chain in the dynamic
   simulation (``SimulationModel.wheel_pitch``), its slack side slackening as the load
-  grows, driven until a tooth is skipped, against the compliant quasi-static wrap
-  (:func:`chaindrive.life.wrap_jump_ratio`) under the same torque and span-tension sum: the
-  onset's load ratio ``M/(R_e T_2)``, seven cases at 3 kN and three chosen before they were run
-  (``JUMP_CASES_NEW``: other loads ``F``), the simulation driven slowly (quasi-static) and at
-  2 rad/s (``JUMP_CASES``, ``JUMP_CASES_MORE``; docs/life.md, "Jump-over");
+  grows (the driven wheel on a slide pulled by a constant force), driven until a tooth is
+  skipped, against the compliant quasi-static wrap (:func:`chaindrive.life.wrap_jump_ratio`)
+  under the same torque and span-tension sum: the onset's load ratio ``M/(R_e T_2)``, seven
+  cases at 3 kN and three chosen before they were run (``JUMP_CASES_NEW``: other loads ``F``);
+  the simulation's quasi-static onset from three ever slower runs (:func:`quasi_static_jump_ratio`:
+  the onsets at each speed, their extrapolation to zero speed, the reference taken) and, for
+  contrast, at 2 rad/s (``JUMP_CASES``, ``JUMP_CASES_MORE``; docs/life.md, "Jump-over");
 * ``jump-over, reduced model vs simulation: CASE X %``: the analysis' jump-over onset (the
-  compliant wrap's table, :func:`chaindrive.life.jump_onset`) against the slowly driven
-  simulation's onsets of the table of docs/life.md (``SIMULATED``), with its CPU time per call
+  compliant wrap's table, :func:`chaindrive.life.jump_onset`) against the simulation's
+  quasi-static onsets of the table of docs/life.md (``SIMULATED``), with its CPU time per call
   next to a fresh :func:`chaindrive.life.wrap_jump_ratio` of one case (``--table`` prints these
   lines only: no simulation);
 * the lives by mechanism of the example drives (``chaindrive life``).
@@ -36,6 +38,7 @@ import sys
 import time
 import warnings
 from pathlib import Path
+from typing import NamedTuple
 
 from chaindrive.analysis import analyze_drive
 from chaindrive.drive.project import load_project
@@ -129,9 +132,18 @@ def efficiency_vs_measured() -> None:
           "(Friction Facts chain A: the articulation friction; Wilson at 50 W: the derailleur cage's drag)")
 
 
-def _run_worn(teeth, elongation, tight, back_force, duration=0.8, angular_velocity=2.0):
+#: The driven wheel's slide [kg, N s/m, N/m]: a mass and a damper pulled by the constant force ``F``
+#: (no spring, the loading of the analysis, ``T_1 + T_2 = F`` held; a spring of 1000 N/m, this benchmark's
+#: before, added ``k Δx`` of about 5 N to the slack span's few newtons while the riding-up rollers pulled the
+#: slide in by some millimetres near the onset: docs/life.md, "Jump-over").
+SLIDE_MASS, SLIDE_DAMPING, SLIDE_STIFFNESS = 2.0, 200.0, 0.0
+
+
+def _run_worn(teeth, elongation, tight, back_force, duration=0.8, angular_velocity=2.0,
+              slide_stiffness=SLIDE_STIFFNESS):
     """The worn chain on two ``teeth`` wheels (16B, no friction, no gravity), the driven wheel on a
-    slide pulled by ``back_force`` (a soft spring), the load torque for the tight tension ``tight``.
+    slide pulled by ``back_force`` (:data:`SLIDE_MASS`, :data:`SLIDE_DAMPING`, the spring
+    ``slide_stiffness`` [N/m]), the load torque for the tight tension ``tight``.
 
     Returns ``(skipped, ratio, slack)``: the teeth the chain skipped (the driven wheel's angle
     relative to the driver's, in teeth, from the end of the load ramp to the end of the run: equal
@@ -149,7 +161,7 @@ def _run_worn(teeth, elongation, tight, back_force, duration=0.8, angular_veloci
     p = 0.0254
     ramp = 0.05
     radius = p * (1 + elongation) / (2 * math.sin(math.pi / teeth))
-    slide = SimTensioner.at(1, (1.0, 0.0), 2.0, 1000.0, damping=200.0, preload=back_force)
+    slide = SimTensioner.at(1, (1.0, 0.0), SLIDE_MASS, slide_stiffness, damping=SLIDE_DAMPING, preload=back_force)
     m = roller_example(teeth=teeth, links=40, angular_velocity=angular_velocity, load_torque=tight * radius,
                        ramp_time=ramp, gravity=False, pitch=p * (1 + elongation), wheel_pitch=p, friction=0.0,
                        pretension=10.0, tensioner=slide)
@@ -173,67 +185,143 @@ JUMP_CASES_NEW = ((15, 0.12, 3000.0), (19, 0.03, 1500.0), (31, 0.07, 6000.0))
 
 
 def simulated_jump_ratio(teeth: int, elongation: float, back_force: float = 3000.0, steps: int = 8,
-                         angular_velocity: float = 2.0):
+                         angular_velocity: float = 2.0, bracket: tuple[float, float] | None = None,
+                         slide_stiffness: float = SLIDE_STIFFNESS, shifts: int = 4):
     """The tension ratio ``T_1/T_2`` at which the simulated worn chain skips a tooth: the driven
     wheel on a slide pulled by ``F`` (``T_2 ≈ F − T_1``: the slack side slackens as the load grows),
-    the load set for a ratio ``ρ`` (``T_1 = F ρ / (1 + ρ)``), ``ρ`` bisected geometrically between 2
-    (held) and 1.5 times the analysis' ratio; a run skipped when the wheels' relative angle moved by
-    half a tooth or more after the load ramp. The run lasts as long as 1.6 rad of the driver.
+    the load set for a ratio ``ρ`` (``T_1 = F ρ / (1 + ρ)``), ``ρ`` bisected geometrically in ``steps``
+    runs between ``bracket`` (default 2, held, and 1.5 times the analysis' rigid ratio); a bracket
+    given is checked at the end it never moved from and shifted by its width (at most ``shifts``
+    times) until it brackets the onset. A run skipped when the wheels' relative angle moved by half a tooth or more after the load
+    ramp. The run lasts as long as 1.6 rad of the driver.
     Returns (the measured ``T_1/T_2`` of the highest load that skipped no tooth, or ``None``, that
-    ``ρ``, and the slack span's tension percentiles (5, 50, 95) [N] of that run)."""
+    ``ρ``, the slack span's tension percentiles (5, 50, 95) [N] of that run, and the final bracket's
+    ratio ``hi/lo``)."""
     from chaindrive.layout import teeth_in_mesh
     from chaindrive.life import tension_ratio
 
-    seated = int(teeth_in_mesh(math.pi, teeth))
-    lo, hi = 2.0, 1.5 * float(tension_ratio(0.0254, teeth, 0.01588, elongation)) ** -seated
-    held, slack = None, None
+    def run(rho):
+        skipped, ratio, spread = _run_worn(teeth, elongation, back_force * rho / (1 + rho), back_force,
+                                           duration=1.6 / angular_velocity, angular_velocity=angular_velocity,
+                                           slide_stiffness=slide_stiffness)
+        return skipped < 0.5, ratio, spread  # half a tooth: the chain is riding over
+
+    if bracket is None:
+        seated = int(teeth_in_mesh(math.pi, teeth))
+        bracket = (2.0, 1.5 * float(tension_ratio(0.0254, teeth, 0.01588, elongation)) ** -seated)
+        shifts = 0
+    start = lo, hi = bracket
+    held = slack = None
     for _ in range(steps):
         rho = math.sqrt(lo * hi)
-        skipped, ratio, spread = _run_worn(teeth, elongation, back_force * rho / (1 + rho), back_force,
-                                           duration=1.6 / angular_velocity, angular_velocity=angular_velocity)
-        if skipped >= 0.5:  # half a tooth: the chain is riding over
-            hi = rho
-        else:
+        ok, ratio, spread = run(rho)
+        if ok:
             lo, held, slack = rho, ratio, spread
-    return held, lo, slack
+        else:
+            hi = rho
+    if shifts and (held is None or hi == start[1]):  # an end never moved from: does the bracket hold the onset?
+        width = start[1] / start[0]
+        ok, ratio, spread = run(start[0] if held is None else start[1])
+        if held is None and ok:
+            held, slack = ratio, spread
+        elif held is None or ok:  # the onset lies outside: the bracket shifted by its width
+            moved = (start[0] / width, start[0]) if held is None else (start[1], start[1] * width)
+            return simulated_jump_ratio(teeth, elongation, back_force, steps, angular_velocity, moved,
+                                        slide_stiffness, shifts - 1)
+    return held, lo, slack, hi / lo
 
 
 def quasi_static_speed(teeth: int) -> float:
-    """The driver's speed [rad/s] of the quasi-static simulated onset: slow enough that the slide's
-    and the slack span's dynamic forces are small against the slack span's few newtons at the
-    onset (docs/life.md, "Jump-over"): 0.5 rad/s up to 17 teeth, 0.125 rad/s above."""
+    """The driver's speed [rad/s] of the first of the slowly driven runs (:func:`quasi_static_jump_ratio`
+    halves it twice): 0.5 rad/s up to 17 teeth, 0.125 rad/s above (docs/life.md, "Jump-over")."""
     return 0.5 if teeth <= 17 else 0.125
+
+
+class QuasiStatic(NamedTuple):
+    """The simulated onset driven ever slower: the onsets ``rho`` at the ``speeds`` [rad/s], their
+    extrapolation to zero speed and the reference taken (see :func:`quasi_static_jump_ratio`)."""
+
+    speeds: tuple[float, ...]
+    rho: tuple[float, ...]
+    tension_ratio: float
+    slack: tuple[float, float, float]
+    resolution: float
+    extrapolated: float
+    reference: float
+    converged: bool
+
+
+def quasi_static_jump_ratio(teeth: int, elongation: float, back_force: float = 3000.0, halvings: int = 2,
+                            slide_stiffness: float = SLIDE_STIFFNESS) -> QuasiStatic:
+    """The quasi-static simulated onset: :func:`simulated_jump_ratio` at :func:`quasi_static_speed`
+    (10 bisection steps, about 1 %) and at that speed halved ``halvings`` times (5 steps each in a
+    bracket of −20/+5 % about the faster run's onset: about 0.9 %).
+
+    The slide's damper and the chain's damping pass forces proportional to the speeds of the
+    quasi-static motion, so the onset's error falls as the speed ``ω``: the Richardson
+    extrapolation of the last two, ``ρ_0 = 2 ρ(ω/4) − ρ(ω/2)``, removes it. The reference is
+    that extrapolation, or the slowest run's onset where the last halving moved it by no more
+    than two bisection resolutions (``converged``: the two agree then within about that)."""
+    speed = quasi_static_speed(teeth)
+    speeds = [speed / 2**k for k in range(halvings + 1)]
+    held, rho, slack, width = simulated_jump_ratio(teeth, elongation, back_force, steps=10, angular_velocity=speeds[0],
+                                                   slide_stiffness=slide_stiffness)
+    if held is None:
+        raise RuntimeError(f"no load held: {teeth} teeth, e = {elongation:g}")
+    onsets = [rho]
+    for w in speeds[1:]:
+        held, rho, slack, width = simulated_jump_ratio(teeth, elongation, back_force, steps=5, angular_velocity=w,
+                                                       bracket=(onsets[-1] / 1.25, onsets[-1] * 1.05),
+                                                       slide_stiffness=slide_stiffness)
+        if held is None:
+            raise RuntimeError(f"no load held at {w:g} rad/s: {teeth} teeth, e = {elongation:g}")
+        onsets.append(rho)
+    extrapolated = 2 * onsets[-1] - onsets[-2]
+    converged = abs(onsets[-1] / onsets[-2] - 1) <= 2 * (width - 1)
+    return QuasiStatic(tuple(speeds), tuple(onsets), held, slack, width - 1, extrapolated,
+                       onsets[-1] if converged else extrapolated, converged)
 
 
 def jump_over_vs_simulation(teeth: int = 11, elongation: float = 0.2, back_force: float = 3000.0) -> None:
     """Print the compliant quasi-static analysis (:func:`chaindrive.life.wrap_jump_ratio`, the
     simulation's contact and link stiffness, the same torque ``M`` and span-tension sum ``F``)
-    against :func:`simulated_jump_ratio` driven slowly (:func:`quasi_static_speed`), as the onset's
-    load ratio ``ρ = M/(R_e T_2,nom)`` (``T_2,nom = F − M/R_e``: the back tension the torque needs);
-    next to it the simulation at 2 rad/s (dynamic), the span tensions' ratios at the onset and the
-    rigid, uniformly seated ``β(e)^-n`` (``n`` the rollers in the 180° wrap)."""
+    against the quasi-static simulated onset (:func:`quasi_static_jump_ratio`: the onsets at three
+    speeds, their extrapolation to zero speed and the reference taken), as the onset's load ratio
+    ``ρ = M/(R_e T_2,nom)`` (``T_2,nom = F − M/R_e``: the back tension the torque needs); next to it
+    the simulation at 2 rad/s (dynamic), the span tensions' ratios at the onset and the rigid,
+    uniformly seated ``β(e)^-n`` (``n`` the rollers in the 180° wrap)."""
     from chaindrive.layout import teeth_in_mesh
     from chaindrive.life import tension_ratio, wrap_jump_ratio
 
     seated = int(teeth_in_mesh(math.pi, teeth))
     rigid = float(tension_ratio(0.0254, teeth, 0.01588, elongation)) ** -seated
-    speed = quasi_static_speed(teeth)
-    sim, rho, slack = simulated_jump_ratio(teeth, elongation, back_force, angular_velocity=speed)
-    fast, rho_fast, slack_fast = simulated_jump_ratio(teeth, elongation, back_force)
     head = (f"jump-over, analysis vs simulation: z = {teeth}, e = {100 * elongation:g} %, n = {seated} "
             f"(16B, no friction, F = {back_force / 1e3:g} kN)")
-    if sim is None or fast is None:
+    try:
+        q = quasi_static_jump_ratio(teeth, elongation, back_force)
+    except RuntimeError:
         print(f"{head}: no load held")
         return
+    fast, rho_fast, slack_fast, _ = simulated_jump_ratio(teeth, elongation, back_force)
     cpu = time.process_time()
     got = wrap_jump_ratio(0.0254, teeth, 0.01588, elongation, back_force, high=1.5 * rigid, rtol=0.02)
     cpu = time.process_time() - cpu
-    print(f"{head}: {100 * (got.load_ratio / rho - 1):+.1f} % (onset load ratio M/(R_e T2): analysis "
-          f"{got.load_ratio:.1f}, simulation {rho:.1f} at {speed:g} rad/s, {rho_fast:.1f} at 2 rad/s; span "
-          f"tensions T1/T2 at the onset: analysis {got.tension_ratio:.0f} (means), simulation {sim:.0f} and "
-          f"{fast:.0f} (medians; slack span 5/50/95 %: {slack[0]:.0f}/{slack[1]:.0f}/{slack[2]:.0f} N and "
-          f"{slack_fast[0]:.0f}/{slack_fast[1]:.0f}/{slack_fast[2]:.0f} N); rigid uniformly seated beta^-n "
-          f"{rigid:.0f}; analysis {cpu:.1f} s of CPU)")
+    speeds = "/".join(f"{w:g}" for w in q.speeds)
+    onsets = "/".join(f"{r:.1f}" for r in q.rho)
+    taken = "the slowest (converged)" if q.converged else "extrapolated"
+    slack = q.slack
+    if fast is None:
+        print(f"{head}: no load held at 2 rad/s")
+        return
+    print(f"{head}: {100 * (got.load_ratio / q.reference - 1):+.1f} % (onset load ratio M/(R_e T2): analysis "
+          f"{got.load_ratio:.1f}, simulation {q.reference:.1f}, {taken}: at {speeds} rad/s {onsets}, last halving "
+          f"{100 * (q.rho[-1] / q.rho[-2] - 1):+.1f} % (bisection to {100 * q.resolution:.1f} %), extrapolated to 0 "
+          f"rad/s {q.extrapolated:.1f} (analysis {100 * (got.load_ratio / q.extrapolated - 1):+.1f} %); at 2 rad/s "
+          f"{rho_fast:.1f}; span tensions T1/T2 at the onset: analysis {got.tension_ratio:.0f} (means), simulation "
+          f"{q.tension_ratio:.0f} slowest and {fast:.0f} at 2 rad/s (medians; slack span 5/50/95 %: "
+          f"{slack[0]:.0f}/{slack[1]:.0f}/{slack[2]:.0f} N and {slack_fast[0]:.0f}/{slack_fast[1]:.0f}/"
+          f"{slack_fast[2]:.0f} N); rigid uniformly seated beta^-n {rigid:.0f}; analysis {cpu:.1f} s of CPU)",
+          flush=True)
 
 
 #: The slowly driven simulation's onset load ratio ``ρ = M/(R_e T_2,nom)`` of the jump-over cases

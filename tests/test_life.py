@@ -605,8 +605,8 @@ def test_jump_over_compliant_analysis_within_10_percent_of_the_simulation():
     bench = _bench_life()
     teeth, elongation = 11, 0.2
     rigid = tension_ratio(P16B, teeth, D16B, elongation) ** -int(teeth_in_mesh(math.pi, teeth))
-    simulated, rho, _slack = bench.simulated_jump_ratio(teeth, elongation,
-                                                        angular_velocity=bench.quasi_static_speed(teeth))
+    simulated, rho, _slack, _width = bench.simulated_jump_ratio(teeth, elongation,
+                                                                angular_velocity=bench.quasi_static_speed(teeth))
     assert simulated is not None
     got = wrap_jump_ratio(P16B, teeth, D16B, elongation, 3000.0, high=1.5 * rigid, rtol=0.02)
     assert got.load_ratio == pytest.approx(rho, rel=0.10)
