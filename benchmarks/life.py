@@ -153,6 +153,7 @@ def _run_worn(teeth, elongation, tight, back_force, duration=0.8, angular_veloci
     95th percentile over that half [N]."""
     import numpy as np
 
+    from chaindrive.limits import MAX_DURATION
     from chaindrive.simulation import simulate
     from chaindrive.simulation.examples import roller_example
     from chaindrive.simulation.model import SimTensioner
@@ -165,12 +166,19 @@ def _run_worn(teeth, elongation, tight, back_force, duration=0.8, angular_veloci
     m = roller_example(teeth=teeth, links=40, angular_velocity=angular_velocity, load_torque=tight * radius,
                        ramp_time=ramp, gravity=False, pitch=p * (1 + elongation), wheel_pitch=p, friction=0.0,
                        pretension=10.0, tensioner=slide)
-    r = simulate(m, duration, samples=400, state=assemble(m, method="relaxation"))
-    rel = (r.wheel_angle[:, 1] - r.wheel_angle[:, 0]) * teeth / (2 * np.pi)
-    after = rel[r.time >= 2 * ramp]
-    half = len(r.time) // 2
-    t1 = r.tight_side_tension()[half:]
-    t2 = r.slack_side_tension()[half:]
+    pieces = math.ceil(duration / MAX_DURATION)  # a run longer than the simulation's limit: continued in pieces
+    state = assemble(m, method="relaxation")
+    parts = []
+    for _ in range(pieces):
+        r = simulate(m, duration / pieces, samples=400 // pieces, state=state)
+        state = r.final_state
+        parts.append((r.time, r.wheel_angle, r.tight_side_tension(), r.slack_side_tension()))
+    time_, angle, tight_t, slack_t = (np.concatenate(k) for k in zip(*parts, strict=True))
+    rel = (angle[:, 1] - angle[:, 0]) * teeth / (2 * np.pi)
+    after = rel[time_ >= 2 * ramp]
+    half = len(time_) // 2
+    t1 = tight_t[half:]
+    t2 = slack_t[half:]
     slack = tuple(float(v) for v in np.percentile(t2, [5, 50, 95]))
     return float(np.max(np.abs(after - after[0]))), float(np.median(t1)) / max(slack[1], 1e-9), slack
 
@@ -252,34 +260,39 @@ class QuasiStatic(NamedTuple):
 
 
 def quasi_static_jump_ratio(teeth: int, elongation: float, back_force: float = 3000.0, halvings: int = 2,
-                            slide_stiffness: float = SLIDE_STIFFNESS) -> QuasiStatic:
+                            more: int = 1, slide_stiffness: float = SLIDE_STIFFNESS) -> QuasiStatic:
     """The quasi-static simulated onset: :func:`simulated_jump_ratio` at :func:`quasi_static_speed`
-    (10 bisection steps, about 1 %) and at that speed halved ``halvings`` times (5 steps each in a
-    bracket of −20/+5 % about the faster run's onset: about 0.9 %).
+    (10 bisection steps, about 1 %) and at that speed halved ``halvings`` times, and up to ``more``
+    times further while the last halving moved the onset by more than two bisection resolutions
+    (5 steps each in a bracket of −20/+5 % about the faster run's onset: about 0.9 %).
 
-    The slide's damper and the chain's damping pass forces proportional to the speeds of the
-    quasi-static motion, so the onset's error falls as the speed ``ω``: the Richardson
-    extrapolation of the last two, ``ρ_0 = 2 ρ(ω/4) − ρ(ω/2)``, removes it. The reference is
-    that extrapolation, or the slowest run's onset where the last halving moved it by no more
-    than two bisection resolutions (``converged``: the two agree then within about that)."""
+    The slide's damper and the chain's damping pass forces that grow with the speed of the
+    quasi-static motion, so the onset falls towards its quasi-static value as the speed ``ω`` falls.
+    The reference is the slowest run's onset; ``converged`` where the last halving moved it by no
+    more than two bisection resolutions. Shown next to it: the Richardson extrapolation of the last
+    two, ``ρ_0 = 2 ρ(ω/2^k) − ρ(ω/2^(k−1))`` (an error linear in ``ω``; it over-shoots where the
+    onset settles abruptly: 17 teeth at 10 %, docs/life.md)."""
     speed = quasi_static_speed(teeth)
-    speeds = [speed / 2**k for k in range(halvings + 1)]
-    held, rho, slack, width = simulated_jump_ratio(teeth, elongation, back_force, steps=10, angular_velocity=speeds[0],
+    held, rho, slack, width = simulated_jump_ratio(teeth, elongation, back_force, steps=10, angular_velocity=speed,
                                                    slide_stiffness=slide_stiffness)
     if held is None:
         raise RuntimeError(f"no load held: {teeth} teeth, e = {elongation:g}")
-    onsets = [rho]
-    for w in speeds[1:]:
+    speeds, onsets = [speed], [rho]
+    converged = False
+    for k in range(1, halvings + more + 1):
+        if k > halvings and converged:
+            break
+        w = speed / 2**k
         held, rho, slack, width = simulated_jump_ratio(teeth, elongation, back_force, steps=5, angular_velocity=w,
                                                        bracket=(onsets[-1] / 1.25, onsets[-1] * 1.05),
                                                        slide_stiffness=slide_stiffness)
         if held is None:
             raise RuntimeError(f"no load held at {w:g} rad/s: {teeth} teeth, e = {elongation:g}")
+        speeds.append(w)
         onsets.append(rho)
+        converged = abs(onsets[-1] / onsets[-2] - 1) <= 2 * (width - 1)
     extrapolated = 2 * onsets[-1] - onsets[-2]
-    converged = abs(onsets[-1] / onsets[-2] - 1) <= 2 * (width - 1)
-    return QuasiStatic(tuple(speeds), tuple(onsets), held, slack, width - 1, extrapolated,
-                       onsets[-1] if converged else extrapolated, converged)
+    return QuasiStatic(tuple(speeds), tuple(onsets), held, slack, width - 1, extrapolated, onsets[-1], converged)
 
 
 def jump_over_vs_simulation(teeth: int = 11, elongation: float = 0.2, back_force: float = 3000.0) -> None:
@@ -308,7 +321,7 @@ def jump_over_vs_simulation(teeth: int = 11, elongation: float = 0.2, back_force
     cpu = time.process_time() - cpu
     speeds = "/".join(f"{w:g}" for w in q.speeds)
     onsets = "/".join(f"{r:.1f}" for r in q.rho)
-    taken = "the slowest (converged)" if q.converged else "extrapolated"
+    taken = "the slowest, converged" if q.converged else "the slowest, NOT converged"
     slack = q.slack
     if fast is None:
         print(f"{head}: no load held at 2 rad/s")

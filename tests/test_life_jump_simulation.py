@@ -52,21 +52,26 @@ def test_bisection_without_a_held_load_says_so(monkeypatch):
         bench.quasi_static_jump_ratio(11, 0.2, 3000.0)
 
 
-@pytest.mark.parametrize("slope, converged", [(60.0, False), (0.5, True)])
-def test_quasi_static_onset_extrapolates_to_zero_speed(monkeypatch, slope, converged):
-    # an onset that falls linearly with the speed (a damper's force, proportional to the speed of the
-    # quasi-static motion): the Richardson extrapolation of the two slowest, 2 rho(w/4) - rho(w/2), is the
-    # zero-speed onset within the bisections' resolution; where the last halving moves it by no more than
-    # two resolutions the slowest run's onset is taken (converged)
+ONSETS = {"linear, slight": lambda w: 60.0 + 0.5 * w, "settles abruptly": lambda w: 60.0 + (100.0 * w if w > 0.04 else 0.0),
+          "linear, steep": lambda w: 60.0 + 200.0 * w}
+
+
+@pytest.mark.parametrize("onset, speeds, converged", [("linear, slight", 3, True), ("settles abruptly", 4, True),
+                                                      ("linear, steep", 4, False)])
+def test_quasi_static_onset_halves_the_speed_until_it_settles(monkeypatch, onset, speeds, converged):
+    # an onset that falls with the speed (linearly: a damper's force, proportional to the speed of the quasi-static
+    # motion; or abruptly, as 17 teeth at 10 %): the speed halved twice, and once more where the last halving moved
+    # the onset by more than two bisection resolutions; the reference is the slowest onset, converged or not (said);
+    # the Richardson extrapolation of the two slowest, 2 rho(w/2^k) - rho(w/2^(k-1)), is the zero-speed onset
+    # within the bisections' resolution here (linear, or settled)
     bench = _bench()
-    runs = _fake(bench, monkeypatch, lambda w: 60.0 * (1.0 + slope / 60.0 * w))
+    runs = _fake(bench, monkeypatch, ONSETS[onset])
     q = bench.quasi_static_jump_ratio(19, 0.03, 1500.0)
-    assert q.speeds == (0.125, 0.0625, 0.03125)
-    assert [w for w, _ in runs[:10]] == [0.125] * 10 and {w for w, _ in runs[10:]} == {0.0625, 0.03125}
+    assert q.speeds == (0.125, 0.0625, 0.03125, 0.015625)[:speeds]
+    assert [w for w, _ in runs[:10]] == [0.125] * 10 and {w for w, _ in runs[10:]} == set(q.speeds[1:])
     for w, rho in zip(q.speeds, q.rho, strict=True):
-        assert rho <= 60.0 + slope * w < rho * (1 + q.resolution) * 1.0001
+        assert rho <= ONSETS[onset](w) < rho * (1 + q.resolution) * 1.0001
     assert q.extrapolated == pytest.approx(60.0, rel=3 * q.resolution)
-    assert q.converged is converged
-    assert q.reference == (q.rho[-1] if converged else q.extrapolated)
+    assert q.converged is converged and q.reference == q.rho[-1]
     assert q.tension_ratio == pytest.approx(1.1 * q.rho[-1]) and q.slack == (1.0, 5.0, 9.0)
     assert math.isfinite(q.reference)
