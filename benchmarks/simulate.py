@@ -146,8 +146,10 @@ RIGID_LADDER = (1.0e-4, 5.0e-5, 2.5e-5)
 
 
 def build():
+    # the peers (MuJoCo, Exudyn) model no span damping: the same drive with none
+    # (span_damping = 0; chaindrive's default is zeta = 0.02 at the tooth frequency)
     model = roller_example(links=100, teeth=17, angular_velocity=20.0, load_torque=200.0,
-                           ramp_time=0.1)
+                           ramp_time=0.1, span_damping=0.0)
     state = assemble(model)
     return model, state
 
@@ -843,7 +845,7 @@ def diagnose(model, state, duration, dt, own):
         if res is not None:
             line(label, own, res)
     m0 = roller_example(links=100, teeth=17, angular_velocity=20.0, load_torque=200.0,
-                        ramp_time=0.1, friction=0.0)
+                        ramp_time=0.1, friction=0.0, span_damping=0.0)
     s0 = assemble(m0)
     own0, r0 = run_chaindrive(m0, s0, duration)
     res = run_mujoco(m0, s0, duration, dt, r0.probe_points[0],

@@ -205,9 +205,9 @@ def steady_states(drives_or_models: Sequence[Any], *, periods: int = 12, bins: i
 def refuse_span_damping(model: SimulationModel) -> None:
     """The batched kernels do not model the span damping (``SimulationModel.span_damping``):
     a model with it is refused (``InputError``) rather than stepped without it."""
-    if model.span_damping > 0.0:
+    if model.span_damping_rate() > 0.0:
         raise InputError("span_damping: the batched kernels do not model it (got "
-                         f"{model.span_damping:g} 1/s); use steady_state for a damped drive, "
+                         f"{model.span_damping_rate():g} 1/s); use steady_state for a damped drive, "
                          "or span_damping = 0", field="span_damping")
 
 
