@@ -208,7 +208,7 @@ def _bicycle(power, cadence_rpm, front, rear, pitch=0.0127, pin=0.0036):
 # An earlier third case, "Spicer et al. 52/21, 200 W, 80 rpm, 98.6 %", is gone: 98.6 % is the highest efficiency
 # Spicer et al.'s abstract states, but its conditions were recalled, not read; the series read since
 # (tests/data/published/spicer2001_efficiency_cadence.csv) gives 97.8 % at that chain tension (227 N), where the
-# model is 0.57 point above (tests/test_published_data.py keeps it, with the rest of the published points).
+# model is 1.39 points above (tests/test_published_data.py keeps it, with the rest of the published points).
 MEASURED = [("Friction Facts 53/11 chain A", 250.0, 95.0, 53, 11, 1 - 6.67 / 250),
             ("Friction Facts 53/11 chain B", 250.0, 95.0, 53, 11, 1 - 6.44 / 250)]
 
