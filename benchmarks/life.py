@@ -9,6 +9,9 @@ Prints
   tension over two 11T jockey wheels (assumed) with the cage's drag
   (:data:`~chaindrive.life.DERAILLEUR_DRAG`, fitted on Wilson's 50 W points), and a count of the
   points within the 0.5 percentage-point aim;
+* ``efficiency vs stated: CASE``: industrial (single-speed) drives, for which no measurement with its drive
+  stated was readable: the model's range over the makers' usual design envelope against what the sources
+  state without conditions (``industrial_efficiency_statements.csv``; not counted with the measured points);
 * ``holding limit vs makers' rule: z = N``: the largest elongation the ISO 606 tooth form
   holds (the roller centre at the tooth corner) next to the makers' replacement limit;
 * ``jump-over, analysis vs simulation: CASE X %``: the worn chain in the dynamic
@@ -37,6 +40,7 @@ import time
 import warnings
 from pathlib import Path
 
+from chaindrive import chains
 from chaindrive.analysis import analyze_drive
 from chaindrive.drive.project import load_project
 from chaindrive.life import (
@@ -162,6 +166,53 @@ def efficiency_vs_measured() -> None:
     checks = [g for name, gaps in series.items() if name != "calibration" for g in gaps]
     print(f"efficiency vs measured: {sum(abs(g) <= 0.5 for g in checks)} of {len(checks)} points not used for "
           "fitting within 0.5 point")
+
+
+#: The makers' usual single-speed design envelope the stated efficiencies are compared over: ISO 606 B-series
+#: single-strand chains 08B-24B, a small sprocket of 17-25 teeth, ratios 1-4, the slack side unloaded (the model's
+#: efficiency is then independent of load and speed).
+INDUSTRIAL_CHAINS, INDUSTRIAL_PINIONS, INDUSTRIAL_RATIOS = ("08B-1", "10B-1", "12B-1", "16B-1", "20B-1", "24B-1"), \
+    (17, 19, 21, 23, 25), (1, 2, 3, 4)
+
+
+def efficiency_vs_stated() -> None:
+    """Industrial (single-speed) drives: no measurement with its drive stated was readable, only statements without
+    conditions (``industrial_efficiency_statements.csv``); one line each, ``efficiency vs stated: CASE``, against the
+    model's range over :data:`INDUSTRIAL_CHAINS` x pinions x ratios. Not counted with the measured points."""
+    etas = []
+    for name in INDUSTRIAL_CHAINS:
+        chain = chains.get(name)
+        for z1 in INDUSTRIAL_PINIONS:
+            for ratio in INDUSTRIAL_RATIOS:
+                loss = float(two_wheel_power_loss(1000.0, 1.0, chain.pitch, chain.pin_diameter, [z1, ratio * z1]))
+                etas.append((100.0 - loss / 10.0, f"{name} {z1}/{ratio * z1}"))
+    etas.sort()
+    median = etas[len(etas) // 2][0]
+    print(f"efficiency vs stated: the model over the industrial envelope: {etas[0][0]:.2f} % ({etas[0][1]}) ... "
+          f"{etas[-1][0]:.2f} % ({etas[-1][1]}), median {median:.2f} % over {len(etas)} drives (08B-24B, z1 17-25, "
+          "ratio 1-4, slack side unloaded, no centrifugal tension)")
+    gaps = []
+    for row in published("industrial_efficiency_statements.csv"):
+        low = float(row["efficiency_low_percent"]) if row["efficiency_low_percent"] else None
+        high = float(row["efficiency_high_percent"])
+        if row["kind"] == "model":
+            stated, gap, verdict = f"{low:g}-{high:g} %", None, "another model's estimate, not compared"
+        elif low is None:  # an upper bound: how far the model's highest goes past it
+            gap = max(etas[-1][0] - high, 0.0)
+            stated, verdict = f"at most {high:g} %", f"the model's highest {etas[-1][0] - high:+.2f} points from it"
+        elif low == high:  # one number: how far it lies outside the model's range
+            gap = min(max(high, etas[0][0]), etas[-1][0]) - high
+            stated = f"{high:g} %"
+            verdict = "inside the model's range" if gap == 0 else f"{gap:+.2f} points outside the model's range"
+        else:  # "about": the model's median against the stated middle
+            gap = median - 0.5 * (low + high)
+            stated, verdict = f"{low:g}-{high:g} %", f"the model's median {gap:+.2f} points from its middle"
+        if gap is not None:
+            gaps.append(gap)
+        print(f"efficiency vs stated: {row['source']} {stated} ({row['kind']}; conditions: {row['conditions_stated']}): "
+              f"{verdict}")
+    print(f"efficiency vs stated: series industrial statements (no conditions, not measurements): largest "
+          f"{max(gaps, key=abs):+.2f} points, {sum(abs(g) <= 0.5 for g in gaps)} of {len(gaps)} within 0.5 point")
 
 
 def _run_worn(teeth, elongation, tight, back_force, duration=0.8, angular_velocity=2.0):
@@ -314,6 +365,7 @@ def main() -> None:
     if "--table" in sys.argv:
         return
     efficiency_vs_measured()
+    efficiency_vs_stated()
     for z in (12, 19, 25, 40, 57, 80, 120):
         h = holding_limit(0.0254, z, 0.01588)
         print(f"holding limit vs makers' rule: z = {z}: ISO 606 form holds {100 * h:.2f} %, makers replace at "
