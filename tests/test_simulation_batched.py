@@ -171,9 +171,9 @@ OPTS = dict(periods=3, max_settle=6, min_settle_time=0.0)
 
 @pytest.fixture(scope="module", params=["undamped", "damped"])
 def batched(request):
-    """The models (undamped, or with span damping 0, 5.3, 13.6 1/s) and their batched
+    """The models (without span damping, or with 0, 5.3, 13.6 1/s) and their batched
     steady states."""
-    models = MODELS if request.param == "undamped" else damped(MODELS)
+    models = damped(MODELS, (0.0,) if request.param == "undamped" else ALPHAS)
     return models, steady_states(models, **OPTS)
 
 
