@@ -1,13 +1,12 @@
-"""The optional transverse span damping (``SimulationModel.span_damping``, a study:
-docs/simulation.md "Span damping: a study").
+"""The transverse span damping (``SimulationModel.span_damping``, docs/simulation.md "Span
+damping"): by default ``α = 2 ζ Ω`` with the resonance check's ``ζ`` at the tooth frequency.
 
 Independent reference: for the viscous term ``−α m v_⊥`` on every pin of a span, each
 transverse mode of the span obeys ``q̈ + α q̇ + ω² q = 0`` (the damping is mass-proportional:
 the undamped modes decouple), so a plucked span's amplitude decays by ``exp(−α t / 2)`` against
 the undamped run whatever its frequency (Rao, *Mechanical Vibrations*, 5th ed., §2.6 for one
 mode; mass-proportional damping keeps the undamped modes, its chapter on multidegree-of-freedom
-systems). The default (0) leaves the kernels' arithmetic as it was: the
-calibration cache (tests/test_running_tension.py, slow) checks that to the last bit. Both
+systems). ``span_damping = 0`` leaves the kernels' arithmetic as it was before the term. Both
 single-drive integrators take it (the implicit one with its slope in the linearly implicit
 step), and so do the batched kernels, each variant with its own rate and each equal to its
 single run to the last bit (tests/test_simulation_batched*.py).
@@ -115,6 +114,45 @@ def test_implicit_matrix_is_the_forces_velocity_slope():
             span_damping_forces(x, y, v[0], v[1], fx, fy, cs)
             assert (-fx[i], -fy[i]) == pytest.approx(col, rel=1e-12, abs=1e-12)
             assert np.count_nonzero(fx) + np.count_nonzero(fy) <= 2  # its own pin only
+
+
+def test_default_is_zeta_at_the_tooth_frequency():
+    # alpha = 2 zeta Omega (Chopra, Dynamics of Structures, 4th ed., 11.4.1: zeta_n = a0/(2 w_n)),
+    # Omega = z w of the speed-driven wheel; zeta = 0.02, the resonance check's
+    from chaindrive.simulation import link_example, roller_example
+    from chaindrive.vibration.excitation import DAMPING_RATIO, span_damping_rate
+
+    m = roller_example(teeth=19, angular_velocity=17.0)
+    assert m.span_damping is None
+    assert m.tooth_frequency() == pytest.approx(19 * 17.0)
+    assert m.span_damping_rate() == pytest.approx(2 * DAMPING_RATIO * 19 * 17.0)
+    assert span_damping_rate(340.0, 0.05) == pytest.approx(34.0)
+    # a pocket wheel of z pockets seats 2 z links a turn
+    lk = link_example(teeth=8, angular_velocity=5.0)
+    assert lk.tooth_frequency() == pytest.approx(2 * 8 * 5.0)
+    # no wheel with a nominal speed (locked wheels): none; an explicit value wins
+    assert _model().span_damping_rate() == 0.0
+    assert dataclasses.replace(m, span_damping=0.0).span_damping_rate() == 0.0
+    assert dataclasses.replace(m, span_damping=3.5).span_damping_rate() == 3.5
+
+
+def test_default_follows_a_changed_speed():
+    # the rate is resolved when a run starts, so a model replaced at another speed gets its own
+    from chaindrive.simulation import roller_example
+
+    m = roller_example(teeth=17, angular_velocity=10.0)
+    w0 = dataclasses.replace(m.wheels[0], angular_velocity=20.0)
+    m2 = dataclasses.replace(m, wheels=[w0, *m.wheels[1:]])
+    assert m2.span_damping_rate() == pytest.approx(2 * m.span_damping_rate())
+
+
+@pytest.mark.parametrize("call, match", [
+    (lambda r: r(-1.0), "frequency"), (lambda r: r(10.0, -0.1), "damping_ratio")])
+def test_span_damping_rate_refuses_negative_input(call, match):
+    from chaindrive.vibration.excitation import span_damping_rate
+
+    with pytest.raises(InputError, match=match):
+        call(span_damping_rate)
 
 
 def test_negative_span_damping_is_refused():
