@@ -8,7 +8,8 @@ the undamped run whatever its frequency (Rao, *Mechanical Vibrations*, 5th ed., 
 mode; mass-proportional damping keeps the undamped modes, its chapter on multidegree-of-freedom
 systems). ``span_damping = 0`` leaves the kernels' arithmetic as it was before the term. Both
 single-drive integrators take it (the implicit one with its slope in the linearly implicit
-step).
+step), and so do the batched kernels, each variant with its own rate and each equal to its
+single run to the last bit (tests/test_simulation_batched*.py).
 """
 
 from __future__ import annotations
@@ -197,16 +198,23 @@ def test_steady_state_implicit_takes_span_damping():
     assert si.mean_tension < steady_state(dataclasses.replace(m, span_damping=0.0)).mean_tension
 
 
-def test_batched_kernels_refuse_span_damping():
-    # the batched kernels (explicit and implicit lanes) do not model the term: refused, not ignored
-    from chaindrive.errors import InputError
+def test_batched_steady_states_of_damped_variants_equal_the_single_runs():
+    # variants of one drive with different span damping (0, 5.3, 13.6 1/s) in one batch: each
+    # batched steady state (explicit kernel and implicit lanes) equal to the last bit to the
+    # single run's (steady_state alone: explicit at the batch step; implicit at its defaults)
     from chaindrive.simulation import roller_example
-    from chaindrive.simulation.steady_batch import steady_states
+    from chaindrive.simulation.steady_batch import batch_step, steady_states
     from chaindrive.simulation.steady_lanes import steady_states_implicit
 
-    m = roller_example(links=40, teeth=12, angular_velocity=10.0, load_torque=50.0, gravity=False,
-                       span_damping=5.0)
-    with pytest.raises(InputError, match="span_damping: the batched kernels do not model it"):
-        steady_states([m], periods=4)
-    out = steady_states_implicit([m], periods=4)  # one drive's failure is its result
-    assert isinstance(out[0], InputError) and "span_damping" in str(out[0])
+    ms = [roller_example(links=40, teeth=12, angular_velocity=w, load_torque=50.0, gravity=False,
+                         span_damping=a) for w, a in ((10.0, 0.0), (12.0, 5.3), (14.0, 13.6))]
+    opts = dict(periods=2, max_settle=4, min_settle_time=0.0)
+    for m, got in zip(ms, steady_states(ms, **opts), strict=True):
+        single = steady_state(m, method="explicit", dt=batch_step(m), **opts)
+        assert (got.mean_tension, got.peak_tension) == (single.mean_tension, single.peak_tension)
+        np.testing.assert_array_equal(got.waveform, single.waveform)
+    for m, got in zip(ms, steady_states_implicit(ms, lanes=2, **opts), strict=True):
+        single = steady_state(m, **opts)
+        assert (got.mean_tension, got.peak_tension, got.settle_time, got.method, got.dt) == \
+            (single.mean_tension, single.peak_tension, single.settle_time, single.method, single.dt)
+        np.testing.assert_array_equal(got.waveform, single.waveform)
