@@ -1,8 +1,8 @@
 r"""The compliant wrap's jump-over onset at the analysis' cost: a reduced model of :func:`wrap_jump_ratio`.
 
 :func:`chaindrive.life.wrap_jump_ratio` (the compliant load distribution of the worn wrap,
-after Marshek & Naji, *Mech. Mach. Theory* 18 (1983) 349; checked against the slowly driven
-simulation within 10 % on seven cases, ``benchmarks/life.py``) takes seconds per wheel. Its
+after Marshek & Naji, *Mech. Mach. Theory* 18 (1983) 349; checked against the simulation's
+quasi-static onset within 10 % on ten cases, ``benchmarks/life.py``) takes seconds per wheel. Its
 onset is tabulated here as a correction to the rigid, uniformly seated model of
 :mod:`chaindrive.life.jump_over`:
 
@@ -252,7 +252,7 @@ def jump_onset(pitch: float, teeth: int, roller_diameter: float, elongation: Arr
     Examples
     --------
     >>> r = jump_onset(0.0254, 17, 0.01588, 0.1, load=3000.0)
-    >>> 45 < r.load_ratio < 65  # wrap_jump_ratio: 56.4; the slowly driven simulation: 54.5
+    >>> 45 < r.load_ratio < 60  # wrap_jump_ratio: 52.0; the simulation, quasi-static: 50.9
     True
     """
     if (load is None) == (back_tension is None):
