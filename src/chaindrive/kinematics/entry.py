@@ -80,6 +80,7 @@ from .histories import PaperEntry, PeriodMotion
 from .solver import (
     GuideEnd,
     WheelPolygon,
+    _taut_rates,
     _taut_span_length,
     rod_entry,
     rod_seating_schedule,
@@ -473,17 +474,16 @@ def _summary(case: _Case, model: str, seats, first: np.ndarray | None = None) ->
     # at the seatings (and resets) inside the period
     ends = np.array([T - 1e-12 * T, 1e-12 * T])
     head = None
-    if model == "exact":  # a pointwise model: every angle in one call (the same numbers)
-        n0 = 0 if first is None else first.size
-        m = n0 + grid.size
-        r = _run(case, model, np.concatenate([[] if first is None else first, grid, ends, s_in - 1e-12 * T,
-                                              s_in + 1e-12 * T]))
-        limits = r.acceleration[m:]
-        v, a, y = r.velocity[n0:m], r.acceleration[n0:m], None if r.y is None else r.y[n0:m]
-        if first is not None:
-            head = dataclasses.replace(r, **{f.name: getattr(r, f.name)[:n0] for f in dataclasses.fields(r)
-                                             if f.name not in ("seats", "advance")
-                                             and isinstance(getattr(r, f.name), np.ndarray)})
+    if model == "exact":  # a pointwise model: the grid's speed, acceleration and height alone (the same numbers)
+        poly = case.polygon()
+        vel, acc, hgt = _taut_rates(poly, np.concatenate([grid, ends, s_in - 1e-12 * T, s_in + 1e-12 * T]),
+                                    case.w, case.guide(), _checked_seats(case))
+        m = grid.size
+        limits = acc[m:]
+        v, a, y = vel[:m], acc[:m], hgt[:m]
+        r = _run(case, model, first) if first is not None else None
+        head = r
+        advance = float(poly.advance)
     else:
         r = _run(case, model, grid)
         limits = np.concatenate([_run(case, model, ends[:1])["acceleration"],
@@ -491,7 +491,7 @@ def _summary(case: _Case, model: str, seats, first: np.ndarray | None = None) ->
                                 + ([_run(case, model, s_in - 1e-12 * T)["acceleration"],
                                     _run(case, model, s_in + 1e-12 * T)["acceleration"]] if s_in.size else []))
         v, a, y = r.velocity, r.acceleration, getattr(r, "y", None)
-    advance = float(r.advance)
+        advance = float(r.advance)
     v_mean = advance / (T / case.w)
     a_left, a_right = float(limits[0]), float(limits[1])
     amax = float(np.max(np.abs(a)))

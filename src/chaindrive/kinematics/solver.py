@@ -304,17 +304,26 @@ def taut_seating_angles(poly: WheelPolygon, guide: GuideEnd | None = None) -> np
     return out
 
 
-def _locate(poly: WheelPolygon, seats: np.ndarray, phi: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """Index k of the last seated vertex and its β at φ = 0 and c_k (vectorised)."""
+def _locate(poly: WheelPolygon, seats: np.ndarray, phi: np.ndarray,
+            index: bool = True) -> tuple[np.ndarray | None, np.ndarray, np.ndarray]:
+    """Index k of the last seated vertex and its β at φ = 0 and c_k (vectorised); ``index=False``:
+    ``None`` for k (β and c alone).
+
+    ``k = q n + j`` with ``0 <= j < n``, so ``poly.vertex(k)`` is ``(β0 + q T + Σδ_{<j}, q a + Σlinks_{<j})``
+    from ``q`` and ``j`` directly (the same operations: ``q`` is a whole number as a float)."""
     n = len(poly.links)
     T = poly.period
     q = np.floor((phi - seats[0]) / T)
     r = phi - q * T
     j = np.searchsorted(seats[:n], r, side="right") - 1
-    j = np.clip(j, 0, n - 1)
-    k = (q * n + j).astype(np.int64)
-    beta0, c = poly.vertex(k)
-    return k, beta0, c
+    if n > 1:
+        j = np.minimum(np.maximum(j, 0), n - 1)  # np.clip(j, 0, n - 1)
+    else:
+        j = np.zeros(j.shape, dtype=j.dtype)
+    ca, cl = poly._cum()
+    beta0 = poly.phase + q * T + ca[j]
+    c = q * poly.advance + cl[j]
+    return ((q * n + j).astype(np.int64) if index else None), beta0, c
 
 
 def taut_entry(
@@ -399,10 +408,35 @@ def taut_entry(
                      ay=(-w * w * sy).reshape(shape), k=k[:-1].reshape(shape), seats=seats)
 
 
+def _taut_rates(poly: WheelPolygon, phi: np.ndarray, angular_velocity: float, guide: GuideEnd | None,
+                seats: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """``velocity``, ``acceleration`` and ``y`` of :func:`taut_entry` alone (the same operations,
+    pointwise: the same numbers) at the wheel angles ``phi`` (a 1-d array), for the summary's
+    extremes over its period grid."""
+    _, b0, c = _locate(poly, seats, phi, index=False)
+    beta = b0 - phi
+    R = poly.radius
+    w = angular_velocity
+    sb, cb = np.sin(beta), np.cos(beta)
+    sx, sy = R * sb, R * cb
+    if guide is None:
+        dm = R * cb
+        ddm = sx
+    else:
+        gx, gy = guide
+        wx, wy = gx - sx, gy - sy
+        D = np.hypot(wx, wy)
+        ux, uy = wx / D, wy / D
+        us = ux * (-R * cb) + uy * (R * sb)
+        dm = -us
+        ddm = (R * R - us * us) / D + (ux * sx + uy * sy)
+    return w * dm, w * w * ddm, sy
+
+
 def _taut_span_length(poly: WheelPolygon, phi: np.ndarray, guide: GuideEnd, seats: np.ndarray) -> np.ndarray:
     """``taut_entry(poly, phi, ω, guide, seats).span`` alone (the same operations): the free span
     length ``|G - S|`` [m] at the wheel angles ``phi`` (a 1-d array)."""
-    k, b0, c = _locate(poly, seats, phi)
+    _, b0, c = _locate(poly, seats, phi, index=False)
     beta = b0 - phi
     R = poly.radius
     return np.hypot(guide[0] - R * np.sin(beta), guide[1] - R * np.cos(beta))
