@@ -87,7 +87,15 @@ def _nonfinite_number(value: Any) -> bool:
         return value.dtype.kind in "fc" and not bool(np.all(np.isfinite(value)))
     if isinstance(value, (list, tuple)) and len(value) <= 10_000:
         return any(_nonfinite_number(v) for v in value)
+    if not issubclass(t, _LOOKED_AT):
+        _OPAQUE.add(t)  # never a number nor a sequence of them: the guard passes it at a glance
     return False
+
+
+#: Types whose values :func:`_nonfinite_number` looks into; any other type it passes, and once
+#: seen it is kept in :data:`_OPAQUE` for the guard's first glance.
+_LOOKED_AT = (float, complex, np.number, np.ndarray, list, tuple, str, bytes, bool, type(None), int)
+_OPAQUE: set[type] = set()
 
 
 def first_nonfinite(obj: Any, _depth: int = 0) -> str | None:
@@ -284,14 +292,16 @@ def finite_guard(function: F | None = None, *, check_result: bool = True,
     def wrapper(*args, **kwargs):
         for i, value in enumerate(args):
             t = type(value)  # the common arguments answered here, without a call
-            if (math.isfinite(value) if t in _FLOATS else t in _PLAIN) or not _nonfinite_number(value):
+            if (math.isfinite(value) if t in _FLOATS else (t in _PLAIN or t in _OPAQUE)) \
+                    or not _nonfinite_number(value):
                 continue
             names = parameter_names()
             name = names[i] if i < len(names) else f"argument {i + 1}"
             _refuse(name, value, allow_infinite)
         for name, value in kwargs.items():
             t = type(value)
-            if (math.isfinite(value) if t in _FLOATS else t in _PLAIN) or not _nonfinite_number(value):
+            if (math.isfinite(value) if t in _FLOATS else (t in _PLAIN or t in _OPAQUE)) \
+                    or not _nonfinite_number(value):
                 continue
             _refuse(name, value, allow_infinite)
         try:

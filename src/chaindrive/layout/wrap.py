@@ -244,29 +244,38 @@ def _loop_lengths(centres: np.ndarray, radii: np.ndarray, sides: np.ndarray) -> 
     return np.where(ok, length, -np.inf)
 
 
-def _span_scalar(xs: list[float], ys: list[float], rho: list[float], i: int) -> tuple[float, float] | None:
+#: The hypotenuse, arc tangent and arc sine of :func:`_span_scalar`: numpy's own (the same numbers
+#: as :func:`_loop_lengths`), or the math module's (faster, within a rounding of them).
+NUMPY_TRIG = (np.hypot, np.arctan2, np.arcsin)
+MATH_TRIG = (math.hypot, math.atan2, math.asin)
+
+
+def _span_scalar(xs: list[float], ys: list[float], rho: list[float], i: int,
+                 trig: tuple = NUMPY_TRIG) -> tuple[float, float] | None:
     """Direction and length of span ``i`` as :func:`_loop_lengths` has them, or ``None`` where
     the span has no common tangent."""
+    hypot, atan2, asin = trig
     j = i + 1 if i + 1 < len(xs) else 0
     dx, dy = xs[j] - xs[i], ys[j] - ys[i]
-    D = float(np.hypot(dx, dy))
+    D = float(hypot(dx, dy))
     drho = rho[j] - rho[i]
     if not D > abs(drho):
         return None
-    return float(np.arctan2(dy, dx)) - float(np.arcsin(drho / D)), math.sqrt(D * D - drho * drho)
+    return float(atan2(dy, dx)) - float(asin(drho / D)), math.sqrt(D * D - drho * drho)
 
 
 def _loop_length(xs: list[float], ys: list[float], radii: list[float], sides: list[float],
-                 fixed: list[tuple[float, float] | None] | None = None) -> float:
+                 fixed: list[tuple[float, float] | None] | None = None, trig: tuple = NUMPY_TRIG) -> float:
     """:func:`_loop_lengths` of one layout of up to 7 wheels in Python floats (the same
-    numbers: the same operations, numpy's own arc tangent and arc sine, the sums in order),
-    for the scalar root searches; ``fixed``: the spans (:func:`_span_scalar`) that do not change
-    between the calls, ``None`` for those computed each time."""
+    numbers: the same operations, numpy's own arc tangent and arc sine, the sums in order;
+    ``trig=MATH_TRIG``: the math module's, within a rounding), for the scalar root searches;
+    ``fixed``: the spans (:func:`_span_scalar`) that do not change between the calls, ``None``
+    for those computed each time."""
     n = len(xs)
     rho = [s * r for s, r in zip(sides, radii, strict=True)]
     alpha, ell = [], []
     for i in range(n):
-        span = fixed[i] if fixed is not None and fixed[i] is not None else _span_scalar(xs, ys, rho, i)
+        span = fixed[i] if fixed is not None and fixed[i] is not None else _span_scalar(xs, ys, rho, i, trig)
         if span is None:
             return -math.inf
         alpha.append(span[0])
