@@ -137,9 +137,11 @@ def _support(w: _Wheel, phase: np.ndarray, alpha: np.ndarray) -> tuple[np.ndarra
     if w.offsets is None:
         return alpha - w.side * math.pi / 2, np.full(alpha.shape, -1)
     a = phase[..., None] + w.offsets  # (..., K)
-    k = np.argmin(w.side * np.sin(a - alpha[..., None]), axis=-1)
-    # a at k (np.take_along_axis(a, k[..., None], axis=-1)[..., 0]: the same sums, gathered directly)
-    return np.broadcast_to(phase, k.shape) + w.offsets[k], k
+    gap = np.sin(a - alpha[..., None])
+    k = np.argmin(gap if w.side == 1 else w.side * gap, axis=-1)
+    # a at k (np.take_along_axis(a, k[..., None], axis=-1)[..., 0]: the same sums, gathered directly;
+    # k has the shape of phase and alpha broadcast)
+    return phase + w.offsets[k], k
 
 
 def _span(wa: _Wheel, wb: _Wheel, pa: np.ndarray, pb: np.ndarray, alpha0: float):
@@ -147,29 +149,32 @@ def _span(wa: _Wheel, wb: _Wheel, pa: np.ndarray, pb: np.ndarray, alpha0: float)
     alpha = np.full(np.broadcast_shapes(pa.shape, pb.shape), alpha0, dtype=float)
     ok = np.zeros(alpha.shape, dtype=bool)
     ka = kb = None
+    # each support point as a circle: the vertex (radius 0) or the wheel (signed radius); its
+    # coordinates one by one (centre + R (cos, sin): the same sums as the stacked pair)
+    rho_a = 0.0 if wa.offsets is not None else wa.side * wa.radius
+    rho_b = 0.0 if wb.offsets is not None else wb.side * wb.radius
+    drho = rho_b - rho_a
+    ax, ay = float(wa.centre[0]), float(wa.centre[1])
+    bx, by = float(wb.centre[0]), float(wb.centre[1])
     for _ in range(_MAX_ITERATIONS):
         ang_a, ka_new = _support(wa, pa, alpha)
         ang_b, kb_new = _support(wb, pb, alpha)
-        # each support point as a circle: the vertex (radius 0) or the wheel (signed radius)
-        if wa.offsets is None:
-            ca, rho_a = np.broadcast_to(wa.centre, alpha.shape + (2,)), wa.side * wa.radius
-        else:
-            ca, rho_a = wa.centre + wa.radius * np.stack([np.cos(ang_a), np.sin(ang_a)], axis=-1), 0.0
-        if wb.offsets is None:
-            cb, rho_b = np.broadcast_to(wb.centre, alpha.shape + (2,)), wb.side * wb.radius
-        else:
-            cb, rho_b = wb.centre + wb.radius * np.stack([np.cos(ang_b), np.sin(ang_b)], axis=-1), 0.0
-        d = cb - ca
-        D = np.hypot(d[..., 0], d[..., 1])
-        drho = rho_b - rho_a
+        if wa.offsets is not None:
+            ax, ay = wa.centre[0] + wa.radius * np.cos(ang_a), wa.centre[1] + wa.radius * np.sin(ang_a)
+        if wb.offsets is not None:
+            bx, by = wb.centre[0] + wb.radius * np.cos(ang_b), wb.centre[1] + wb.radius * np.sin(ang_b)
+        dx, dy = bx - ax, by - ay  # numbers between two circles (the same at every phase pair)
+        D = np.hypot(dx, dy)
         with np.errstate(invalid="ignore", divide="ignore"):
-            new = np.arctan2(d[..., 1], d[..., 0]) - np.arcsin(drho / D)
+            new = np.arctan2(dy, dx) - np.arcsin(drho / D)
         new = alpha + np.angle(np.exp(1j * (new - alpha)))  # stay next to the previous direction
-        same = (ka is not None and kb is not None and np.array_equal(ka_new, ka) and np.array_equal(kb_new, kb))
+        same = (ka is not None and kb is not None and bool((ka_new == ka).all()) and bool((kb_new == kb).all()))
         ka, kb = ka_new, kb_new
         if same:
             ok = np.isfinite(new) & (D > np.abs(drho))
             length = np.sqrt(np.maximum(D**2 - drho**2, 0.0))
+            if np.shape(length) != alpha.shape:
+                length = np.full(alpha.shape, length)
             return new, length, ang_a, ka, ang_b, kb, ok
         alpha = new
     return alpha, np.full(alpha.shape, np.nan), ang_a, ka, ang_b, kb, ok
@@ -177,12 +182,12 @@ def _span(wa: _Wheel, wb: _Wheel, pa: np.ndarray, pb: np.ndarray, alpha0: float)
 
 def _arc_position(w: _Wheel, angle: np.ndarray, index: np.ndarray, phase: np.ndarray, reference: float) -> np.ndarray:
     """Arc position ``A`` of a support point, its angle unwrapped next to ``reference`` [m]."""
-    turns = np.round((angle - reference) / (2 * math.pi))
+    turns = np.rint((angle - reference) / (2 * math.pi))  # np.round(..): the same rounding, half to even
     unwrapped = angle - 2 * math.pi * turns
     if w.offsets is None or w.cumulative is None:
         return w.radius * unwrapped
     # vertex k at phase + offsets[k] + 2π m: A = m P + cumulative[k]
-    m = np.round((unwrapped - phase - w.offsets[index]) / (2 * math.pi))
+    m = np.rint((unwrapped - phase - w.offsets[index]) / (2 * math.pi))
     return m * w.perimeter + w.cumulative[index]
 
 
@@ -203,9 +208,9 @@ def _span_terms(wheels: list[_Wheel], grids: list[np.ndarray], circle) -> tuple[
         out_ref = alpha0 - wa.side * math.pi / 2
         in_ref = float(circle.span_angle[j]) - wb.side * math.pi / 2 - wb.side * float(circle.wrap_angle[j])
         alpha, length, ang_a, ka, ang_b, kb, ok = _span(wa, wb, pa, pb, alpha0)
-        a_out = _arc_position(wa, ang_a, ka, np.broadcast_to(pa, ang_a.shape), out_ref)
-        a_in = _arc_position(wb, ang_b, kb, np.broadcast_to(pb, ang_b.shape), in_ref)
-        exact &= bool(np.all(ok))
+        a_out = _arc_position(wa, ang_a, ka, pa, out_ref)  # the phases broadcast against the angles
+        a_in = _arc_position(wb, ang_b, kb, pb, in_ref)
+        exact &= bool(ok.all())
         terms.append(length + wa.side * a_out - wb.side * a_in)
         outs.append(wa.side * a_out)  # (φ_i, φ_{i+1}) on wheel i
         ins.append(wb.side * a_in)  # (φ_i, φ_{i+1}) on wheel i+1
@@ -213,7 +218,7 @@ def _span_terms(wheels: list[_Wheel], grids: list[np.ndarray], circle) -> tuple[
         for i in range(n):
             # the shortest wrap of wheel i over the phases of its neighbours, at each of its phases
             shortest = outs[i].min(axis=1) - ins[(i - 1) % n].max(axis=0)
-            exact &= bool(np.min(shortest) >= -1e-9)
+            exact &= bool(shortest.min() >= -1e-9)
     return terms, exact
 
 
