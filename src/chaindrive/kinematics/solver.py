@@ -208,12 +208,12 @@ def _find_crossing(fun: Callable[[Any], Any], estimate: float, what: str) -> flo
     points about the estimate (``2 w + 1`` of them, ``w`` in :data:`_SCAN_WINDOWS`) and
     widens only when a crossing outside them could be as near (``fun`` is pointwise: the
     same values, the same bracket)."""
-    grid = estimate + np.linspace(-0.5 * np.pi, 0.5 * np.pi, 1441)
+    grid = estimate + _SCAN
     centre = 720
     for window in _SCAN_WINDOWS:
         lo, hi = centre - window, centre + window + 1
         g = fun(grid[lo:hi])
-        idx = np.nonzero((g[:-1] > 0) & (g[1:] <= 0))[0] + lo
+        idx = ((g[:-1] > 0) & (g[1:] <= 0)).nonzero()[0] + lo
         if idx.size:
             dist = np.abs(grid[idx] - estimate)
             k = int(np.argmin(dist))
@@ -224,7 +224,7 @@ def _find_crossing(fun: Callable[[Any], Any], estimate: float, what: str) -> flo
                     return float(grid[i + 1])
                 return float(brentq(fun, grid[i], grid[i + 1], xtol=1e-15, rtol=1e-15, maxiter=200))
     g = fun(grid)
-    idx = np.nonzero((g[:-1] > 0) & (g[1:] <= 0))[0]
+    idx = ((g[:-1] > 0) & (g[1:] <= 0)).nonzero()[0]
     if idx.size == 0:
         raise InfeasibleError(f"no seating of {what} found: the span never reaches the next hinge")
     i = idx[np.argmin(np.abs(grid[idx] - estimate))]
@@ -235,6 +235,9 @@ def _find_crossing(fun: Callable[[Any], Any], estimate: float, what: str) -> flo
 
 #: Points either side of the estimate that :func:`_find_crossing` scans first, then next (of 720).
 _SCAN_WINDOWS = (24, 180)
+#: The offsets of :func:`_find_crossing`'s scan from its estimate [rad] (read only).
+_SCAN = np.linspace(-0.5 * np.pi, 0.5 * np.pi, 1441)
+_SCAN.flags.writeable = False
 
 
 def taut_seating_angles(poly: WheelPolygon, guide: GuideEnd | None = None) -> np.ndarray:
@@ -300,7 +303,7 @@ def taut_seating_angles(poly: WheelPolygon, guide: GuideEnd | None = None) -> np
 
         out[j] = _find_crossing(gap, est, f"hinge {j}")
     out[n] = out[0] + poly.period
-    if np.any(np.diff(out) <= 0):
+    if any(b <= a for a, b in zip(out.tolist(), out[1:].tolist(), strict=False)):  # np.any(np.diff(out) <= 0)
         raise InfeasibleError("seating angles are not increasing: the span cuts the wheel")
     return out
 
@@ -495,12 +498,12 @@ def _taut_extremes(poly: WheelPolygon, guide: GuideEnd | None, seats: np.ndarray
     # one-sided limits
     _, b0, _ = _locate(poly, seats, 0.5 * (lo + hi), index=False)
     phi = lo[:, None] + (hi - lo)[:, None] * np.linspace(0.0, 1.0, int(points))[None, :]  # (n, points)
-    b0 = np.broadcast_to(b0[:, None], phi.shape)
+    b0 = b0[:, None] + np.zeros(phi.shape)  # each stretch's (+ 0.0: the same numbers)
     motion = _taut_motion(R, b0 - phi, guide)
     out = []
     for f, g, which in ((motion[0], motion[1], 0), (motion[1], motion[2], 1), (motion[3], motion[4], 3)):
-        low, high = float(f.min()), float(f.max())
-        rows, cols = np.nonzero(g[:, :-1] * g[:, 1:] < 0)
+        low, high = float(np.minimum.reduce(f, axis=None)), float(np.maximum.reduce(f, axis=None))
+        rows, cols = (g[:, :-1] * g[:, 1:] < 0).nonzero()
         for r, c in zip(rows.tolist(), cols.tolist(), strict=True):
             f0, f1, g0, g1 = float(f[r, c]), float(f[r, c + 1]), float(g[r, c]), float(g[r, c + 1])
             # within the step f moves less than twice the step times the larger |f'| at its ends

@@ -64,7 +64,8 @@ def _clearance(c: np.ndarray, r: np.ndarray, sides: ArrayLike | None):
     diff = c[:, None, :] - c[None, :, :]
     dist = np.hypot(diff[..., 0], diff[..., 1])
     close = dist < (r[:, None] + r[None, :]) * (1 - 1e-9)
-    for i, j in zip(*np.nonzero(np.triu(close, 1)), strict=True):
+    # each wheel is close to itself: only more than n close pairs name an overlap
+    for i, j in (zip(*np.nonzero(np.triu(close, 1)), strict=True) if np.count_nonzero(close) > n else ()):
         out.append(("overlap", int(i), int(j), float(dist[i, j])))
     if out:
         return out, None

@@ -84,7 +84,7 @@ def _polygon(pitch: float, teeth: int, bar_diameter: float | None) -> tuple[floa
     the adjustable wheel's search and the studies ask for the same wheels again and again)."""
     R, off = _radius_and_offsets(pitch, teeth, bar_diameter)
     v = np.column_stack([np.cos(off), np.sin(off)]) * R
-    edges = np.hypot(*(np.roll(v, -1, axis=0) - v).T)
+    edges = np.hypot(*(np.concatenate((v[1:], v[:1])) - v).T)  # np.roll(v, -1, axis=0): the same rows
     cum = np.concatenate([[0.0], np.cumsum(edges)[:-1]])
     off.flags.writeable = False
     cum.flags.writeable = False
@@ -118,7 +118,7 @@ def _check_inputs(pitch, centres, teeth, sides, diameters):
     if len(teeth) != n:
         raise InputError(f"teeth must give one entry per wheel ({n}), got {len(teeth)}", field="teeth")
     s = np.ones(n) if sides is None else as_float_array("sides", sides)
-    if s.shape != (n,) or not np.all(np.isin(s, (-1.0, 1.0))):
+    if s.shape != (n,) or not all(x in (-1.0, 1.0) for x in s.tolist()):
         raise InputError(f"sides must be +1 or -1 for each of the {n} wheels, got {sides!r}", field="sides")
     if diameters is not None and len(diameters) != n:
         raise InputError(f"diameters must give one entry per wheel ({n}), got {len(diameters)}",
@@ -135,10 +135,12 @@ def _phase_grid(w: _Wheel, phases: int) -> np.ndarray:
 def _support(w: _Wheel, phase: np.ndarray, alpha: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """Support point of ``w`` for span direction ``alpha``: (polar angle [rad], vertex index or -1)."""
     if w.offsets is None:
-        return alpha - w.side * math.pi / 2, np.full(alpha.shape, -1)
+        none = np.empty(alpha.shape, dtype=int)
+        none.fill(-1)  # np.full(alpha.shape, -1)
+        return alpha - w.side * math.pi / 2, none
     a = phase[..., None] + w.offsets  # (..., K)
     gap = np.sin(a - alpha[..., None])
-    k = np.argmin(gap if w.side == 1 else w.side * gap, axis=-1)
+    k = (gap if w.side == 1 else w.side * gap).argmin(axis=-1)
     # a at k (np.take_along_axis(a, k[..., None], axis=-1)[..., 0]: the same sums, gathered directly;
     # k has the shape of phase and alpha broadcast)
     return phase + w.offsets[k], k
@@ -148,7 +150,6 @@ def _span(wa: _Wheel, wb: _Wheel, pa: np.ndarray, pb: np.ndarray, alpha0: float)
     """Common supporting line of two wheels for every phase pair: (alpha, length, angle_a, k_a, angle_b, k_b, ok)."""
     alpha = np.full(np.broadcast_shapes(pa.shape, pb.shape), alpha0, dtype=float)
     ok = np.zeros(alpha.shape, dtype=bool)
-    ka = kb = None
     # each support point as a circle: the vertex (radius 0) or the wheel (signed radius); its
     # coordinates one by one (centre + R (cos, sin): the same sums as the stacked pair)
     rho_a = 0.0 if wa.offsets is not None else wa.side * wa.radius
@@ -156,6 +157,15 @@ def _span(wa: _Wheel, wb: _Wheel, pa: np.ndarray, pb: np.ndarray, alpha0: float)
     drho = rho_b - rho_a
     ax, ay = float(wa.centre[0]), float(wa.centre[1])
     bx, by = float(wb.centre[0]), float(wb.centre[1])
+    with np.errstate(invalid="ignore", divide="ignore"):
+        return _span_iterations(wa, wb, pa, pb, alpha, ok, drho, (ax, ay), (bx, by))
+
+
+def _span_iterations(wa, wb, pa, pb, alpha, ok, drho, a_xy, b_xy):
+    """:func:`_span`'s fixed-point iterations (inside its error state)."""
+    ax, ay = a_xy
+    bx, by = b_xy
+    ka = kb = None
     for _ in range(_MAX_ITERATIONS):
         ang_a, ka_new = _support(wa, pa, alpha)
         ang_b, kb_new = _support(wb, pb, alpha)
@@ -165,9 +175,9 @@ def _span(wa: _Wheel, wb: _Wheel, pa: np.ndarray, pb: np.ndarray, alpha0: float)
             bx, by = wb.centre[0] + wb.radius * np.cos(ang_b), wb.centre[1] + wb.radius * np.sin(ang_b)
         dx, dy = bx - ax, by - ay  # numbers between two circles (the same at every phase pair)
         D = np.hypot(dx, dy)
-        with np.errstate(invalid="ignore", divide="ignore"):
-            new = np.arctan2(dy, dx) - np.arcsin(drho / D)
-        new = alpha + np.angle(np.exp(1j * (new - alpha)))  # stay next to the previous direction
+        new = np.arctan2(dy, dx) - np.arcsin(drho / D)
+        turn = np.exp(1j * (new - alpha))
+        new = alpha + np.arctan2(turn.imag, turn.real)  # np.angle: stay next to the previous direction
         same = (ka is not None and kb is not None and bool((ka_new == ka).all()) and bool((kb_new == kb).all()))
         ka, kb = ka_new, kb_new
         if same:
@@ -218,15 +228,16 @@ def _span_terms(wheels: list[_Wheel], grids: list[np.ndarray], circle) -> tuple[
         for i in range(n):
             # the shortest wrap of wheel i over the phases of its neighbours, at each of its phases
             shortest = outs[i].min(axis=1) - ins[(i - 1) % n].max(axis=0)
-            exact &= bool(shortest.min() >= -1e-9)
+            exact &= bool(np.minimum.reduce(shortest) >= -1e-9)
     return terms, exact
 
 
 def _max_plus_cycle(terms: list[np.ndarray], pick) -> float:
+    reduce = {np.min: np.minimum.reduce, np.max: np.maximum.reduce}.get(pick, pick)  # the same, without the wrapper
     acc = terms[0]
     for m in terms[1:]:
-        acc = pick(acc[:, :, None] + m[None, :, :], axis=1)
-    return float(pick(np.diag(acc)))
+        acc = reduce(acc[:, :, None] + m[None, :, :], axis=1)
+    return float(reduce(acc.diagonal(), axis=0))
 
 
 def loop_length_at_phases(
@@ -327,7 +338,9 @@ def _loop(p, c, teeth, s, diameters, bar_diameter, n, warn=True) -> LoopLength:
                           exact=False)
     return LoopLength(
         links_min=_max_plus_cycle(terms, np.min) / p, links_max=_max_plus_cycle(terms, np.max) / p,
-        links_mean=float(sum(t.mean() for t in terms)) / p, links_circles=circles, exact=True)
+        # t.mean(): its sum over its count (the same division)
+        links_mean=float(sum(np.add.reduce(t, axis=None) / t.size for t in terms)) / p, links_circles=circles,
+        exact=True)
 
 
 def chain_length_loop(

@@ -121,7 +121,7 @@ def wrap_layout(centres: ArrayLike, radii: ArrayLike, sides: ArrayLike | None = 
     if r.shape != (n,):
         raise InputError(f"radii must have shape ({n},) like centres, got {r.shape}")
     s = np.ones(n) if sides is None else as_float_array("sides", sides)
-    if s.shape != (n,) or not ((s == 1.0) | (s == -1.0)).all():
+    if s.shape != (n,) or not all(x in (1.0, -1.0) for x in s.tolist()):
         raise InputError(f"sides must be +1 or -1 for each of the {n} wheels, got {sides!r}")
     key = (c.tobytes(), r.tobytes(), s.tobytes())
     kept = _KEPT.get(key)
