@@ -104,6 +104,9 @@ compiled so); then the batched implicit kernel (``chaindrive.simulation._batched
 each variant bit-equal to the single implicit kernel) on the same 64 variants at their
 accurate implicit step: ``batched implicit, N variants: R link-steps/s per core, F of the
 ceiling`` and its ratio to the single implicit kernel on the same variants in the same run.
+With ``--batched`` alone, each kernel also with the span damping (each variant its own
+default ``α = 2 ζ z ω``, ``ζ = 0.02`` at its tooth frequency), both rates in the same run;
+the other runs measure the drives without it.
 
 Exudyn (``--exudyn``): the same drive, benchmarks/peers/exudyn_drive.py (its docstring).
 
@@ -146,8 +149,10 @@ RIGID_LADDER = (1.0e-4, 5.0e-5, 2.5e-5)
 
 
 def build():
+    # the peers (MuJoCo, Exudyn) model no span damping: the same drive with none
+    # (span_damping = 0; chaindrive's default is zeta = 0.02 at the tooth frequency)
     model = roller_example(links=100, teeth=17, angular_velocity=20.0, load_torque=200.0,
-                           ramp_time=0.1)
+                           ramp_time=0.1, span_damping=0.0)
     state = assemble(model)
     return model, state
 
@@ -496,19 +501,34 @@ def plain_chain_rate(links=5000, steps=4000, error_model="python"):
     return best
 
 
-def batched_rate(variants=64, links=100, steps=3000):
+def batched_models(variants, links, damped):
+    """``variants`` variants of the benchmark drive (driver speed 15...25 rad/s and load
+    100...300 N m drawn at random), without span damping or (``damped``) each with its own
+    default ``α = 2 ζ z ω`` (``SimulationModel.span_damping_rate``: ``ζ`` the resonance
+    check's at the tooth frequency ``z ω``)."""
+    rng = np.random.default_rng(1)
+    return [roller_example(links=links, teeth=17, ramp_time=0.1,
+                           angular_velocity=float(rng.uniform(15.0, 25.0)),
+                           load_torque=float(rng.uniform(100.0, 300.0)),
+                           span_damping=None if damped else 0.0)
+            for _ in range(variants)]
+
+
+def _span_label(damped):
+    from chaindrive.vibration.excitation import DAMPING_RATIO
+
+    return f"span damping ζ = {DAMPING_RATIO} at the tooth frequency" if damped else \
+        "no span damping"
+
+
+def batched_rate(variants=64, links=100, steps=3000, damped=False, plain=None):
     """Link-steps per second (CPU time) of the batched kernel on ``variants`` variants of
-    the benchmark drive (driver speed 15...25 rad/s and load 100...300 N m drawn at random,
-    each at its own stable step, from its warm start), and its fraction of the point-mass
-    ceiling (:func:`plain_chain_rate`)."""
+    the benchmark drive (:func:`batched_models`, each at its own stable step, from its warm
+    start), and its fraction of the point-mass ceiling (:func:`plain_chain_rate`)."""
     from chaindrive.simulation._batched import empty_batch_records, integrate_batch, stack_tables
     from chaindrive.simulation.steady import warm_start
 
-    rng = np.random.default_rng(1)
-    states = [warm_start(roller_example(links=links, teeth=17, ramp_time=0.1,
-                                        angular_velocity=float(rng.uniform(15.0, 25.0)),
-                                        load_torque=float(rng.uniform(100.0, 300.0))))
-              for _ in range(variants)]
+    states = [warm_start(m) for m in batched_models(variants, links, damped)]
     par = np.stack([s.par for s in states])
     args = [np.stack([getattr(s, a) for s in states]) for a in ("pos", "vel", "ws", "wp", "gd")]
     args += [stack_tables([K.seat_table(s.wp) for s in states]), par,
@@ -521,17 +541,17 @@ def batched_rate(variants=64, links=100, steps=3000):
         t0 = time.process_time()
         integrate_batch(*run, steps, steps, *recs)
         best = max(best, variants * links * steps / (time.process_time() - t0))
-    plain = plain_chain_rate()
+    plain = plain_chain_rate() if plain is None else plain
     simd = plain_chain_rate(error_model="numpy")
     print(f"batched, {variants} variants: {best:.3g} link-steps/s per core, "
           f"{best / plain:.2f} of the ceiling ({1e9 / best:.2f} ns per link-step; the "
           f"point-mass ceiling {plain:.3g}, {best / simd:.2f} of its vector-instruction "
-          f"form {simd:.3g}; {links}-link 16B drives, explicit, CPU time, "
+          f"form {simd:.3g}; {links}-link 16B drives, {_span_label(damped)}, explicit, CPU time, "
           f"load average {__import__('os').getloadavg()[0]:.1f})", flush=True)
     return best, plain
 
 
-def batched_implicit_rate(variants=64, links=100, steps=1200, plain=None):
+def batched_implicit_rate(variants=64, links=100, steps=1200, plain=None, damped=False):
     """Link-steps per second (CPU time) of the batched implicit kernel
     (``chaindrive.simulation._batched_implicit``, each lane bit-equal to the single
     implicit kernel) on ``variants`` variants of the benchmark drive (as
@@ -542,11 +562,7 @@ def batched_implicit_rate(variants=64, links=100, steps=1200, plain=None):
     from chaindrive.simulation._implicit import integrate_implicit
     from chaindrive.simulation.steady import warm_start
 
-    rng = np.random.default_rng(1)
-    models = [roller_example(links=links, teeth=17, ramp_time=0.1,
-                             angular_velocity=float(rng.uniform(15.0, 25.0)),
-                             load_torque=float(rng.uniform(100.0, 300.0)))
-              for _ in range(variants)]
+    models = batched_models(variants, links, damped)
     states = [warm_start(m) for m in models]
     tabs = [K.seat_table(s.wp) for s in states]
     pars = []
@@ -586,7 +602,7 @@ def batched_implicit_rate(variants=64, links=100, steps=1200, plain=None):
           f"{best_b / plain:.2f} of the ceiling ({1e9 / best_b:.1f} ns per link-step; the "
           f"single implicit kernel on the same variants {best_s:.3g}, {1e9 / best_s:.1f} ns: "
           f"{best_b / best_s:.2f}x; the point-mass ceiling {plain:.3g}; {links}-link 16B "
-          f"drives at their accurate implicit step, CPU time, load average "
+          f"drives, {_span_label(damped)}, at their accurate implicit step, CPU time, load average "
           f"{__import__('os').getloadavg()[0]:.1f})", flush=True)
     return best_b, best_s
 
@@ -688,7 +704,9 @@ def main():
         return
     if args.batched:
         _, plain = batched_rate()
+        batched_rate(damped=True, plain=plain)
         batched_implicit_rate(plain=plain)
+        batched_implicit_rate(plain=plain, damped=True)
         return
     import sys
     from pathlib import Path
@@ -843,7 +861,7 @@ def diagnose(model, state, duration, dt, own):
         if res is not None:
             line(label, own, res)
     m0 = roller_example(links=100, teeth=17, angular_velocity=20.0, load_torque=200.0,
-                        ramp_time=0.1, friction=0.0)
+                        ramp_time=0.1, friction=0.0, span_damping=0.0)
     s0 = assemble(m0)
     own0, r0 = run_chaindrive(m0, s0, duration)
     res = run_mujoco(m0, s0, duration, dt, r0.probe_points[0],

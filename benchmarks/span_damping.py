@@ -1,4 +1,4 @@
-"""Span damping study (docs/simulation.md "Span damping: a study"): the optional transverse
+"""Span damping study (docs/simulation.md "Span damping"): the transverse
 span damping ``SimulationModel.span_damping`` (α [1/s]) on the benchmark drive and on two
 drives of the dynamic-load sweep. Not imported by the package; not run by CI.
 

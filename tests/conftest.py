@@ -22,6 +22,42 @@ WHOLE = {
 }
 
 
+def _clear_stale_numba_cache() -> None:
+    """Delete the package's compiled numba files when a source they may call has changed.
+
+    Numba's on-disk cache checks only the source file of the compiled function itself
+    (``numba.core.caching``: its stamp is a hash of that one file), not the modules it
+    calls, so a working tree could run stale compiled code after an edit of a callee. A hash
+    of every package source that holds a compiled function is kept beside the caches; when it
+    differs, the ``*.nbi``/``*.nbc`` files go and numba compiles afresh (a fresh clone has none).
+    """
+    import hashlib
+
+    package = Path(__file__).resolve().parents[1] / "src" / "chaindrive"
+    if not package.is_dir():
+        return
+    digest = hashlib.sha256()
+    for path in sorted(package.rglob("*.py")):
+        text = path.read_bytes()
+        if b"njit" in text or path.parent.name == "simulation":
+            digest.update(path.relative_to(package).as_posix().encode() + b"\0" + text)
+    stamp = package / "simulation" / "__pycache__" / "numba-sources.sha256"
+    if stamp.is_file() and stamp.read_text() == digest.hexdigest():
+        return
+    for pattern in ("*.nbi", "*.nbc"):
+        for path in package.rglob(pattern):
+            path.unlink(missing_ok=True)
+    stamp.parent.mkdir(exist_ok=True)
+    stamp.write_text(digest.hexdigest())
+
+
+def pytest_configure(config: pytest.Config) -> None:
+    """Once per run, in the controlling process (before any worker compiles): clear
+    stale numba caches (:func:`_clear_stale_numba_cache`)."""
+    if not hasattr(config, "workerinput"):
+        _clear_stale_numba_cache()
+
+
 def pytest_collection_modifyitems(config: pytest.Config, items: list[pytest.Item]) -> None:
     """Mark the tests of the :data:`WHOLE` files ``whole``."""
     for item in items:

@@ -95,9 +95,48 @@ def test_batched_kernel_equals_the_single_kernel_per_variant(models):
         np.testing.assert_array_equal(recs[3][v], r1[5])   # positions
 
 
+#: span damping rates [1/s] of the variants of one batch: none, and two others (each variant
+#: its own, as the drives' own rates from their tooth frequencies)
+ALPHAS = (0.0, 5.3, 13.6)
+
+
+def damped(models, alphas=ALPHAS):
+    """The models with the span damping ``alphas`` (cycled), one rate per variant."""
+    return [dataclasses.replace(m, span_damping=alphas[v % len(alphas)])
+            for v, m in enumerate(models)]
+
+
+@pytest.mark.parametrize("family", ["roller", "round-link", "idler", "conveyor"])
+def test_span_damping_per_variant_equals_the_single_kernel(family):
+    # variants of different span damping (0, 5.3, 13.6 1/s) batched together: each one equal
+    # to the single kernel to the last bit, and the term really on (a damped variant's
+    # velocities differ from its undamped run)
+    base = {"roller": [roller_example(links=50, teeth=12, angular_velocity=w, load_torque=tq)
+                       for w, tq in ((20.0, 60.0), (28.0, 30.0), (14.0, 120.0))],
+            "round-link": [link_example(load_torque=tq) for tq in (200.0, 800.0, 500.0)],
+            "idler": [_idler_drive(tq) for tq in (80.0, 150.0, 110.0)],
+            "conveyor": [_conveyor(mat) for mat in (40.0, 60.0, 50.0)]}[family]
+    models = damped(base)
+    states = [warm_start(m) for m in models]
+    for st, m in zip(states, models, strict=True):
+        st.par[K.P_DT] = m.stable_time_step()
+    assert [st.par[K.P_CSPAN] for st in states] == list(ALPHAS)
+    pos, vel, ws, recs, _ = _batched(states)
+    for v, st in enumerate(states):
+        p1, v1, w1, r1 = _single(st)
+        np.testing.assert_array_equal(pos[v], p1)
+        np.testing.assert_array_equal(vel[v], v1)
+        np.testing.assert_array_equal(ws[v], w1)
+        np.testing.assert_array_equal(recs[1][v], r1[2])
+        np.testing.assert_array_equal(recs[3][v], r1[5])
+    undamped = states[2].par.copy()
+    undamped[K.P_CSPAN] = 0.0
+    assert not np.array_equal(vel[2], _single(dataclasses.replace(states[2], par=undamped))[1])
+
+
 def test_more_variants_than_one_block_of_lanes():
     # LANES + 2 variants: two blocks of the contact loop, the second one partly filled
-    # (one drive, each variant with its own link damping)
+    # (one drive, each variant with its own link damping, the last two with span damping)
     model = roller_example(links=30, teeth=9, angular_velocity=10.0, load_torque=20.0, gravity=False)
     start = warm_start(model)
     states = []
@@ -105,6 +144,8 @@ def test_more_variants_than_one_block_of_lanes():
         par = start.par.copy()
         par[K.P_DT] = model.stable_time_step()
         par[K.P_C] *= 1.0 + 0.01 * v
+        # the span damping in the second block only (a block without it, one with)
+        par[K.P_CSPAN] = 0.0 if v < LANES else ALPHAS[1 + v % 2]
         states.append(dataclasses.replace(start, par=par))
     pos, vel, ws, _, _ = _batched(states, 300, 100)
     for v in (0, LANES - 1, LANES, LANES + 1):
@@ -128,15 +169,19 @@ MODELS = [roller_example(links=40, teeth=12, angular_velocity=w, load_torque=tq)
 OPTS = dict(periods=3, max_settle=6, min_settle_time=0.0)
 
 
-@pytest.fixture(scope="module")
-def batched():
-    return steady_states(MODELS, **OPTS)
+@pytest.fixture(scope="module", params=["undamped", "damped"])
+def batched(request):
+    """The models (without span damping, or with 0, 5.3, 13.6 1/s) and their batched
+    steady states."""
+    models = damped(MODELS, (0.0,) if request.param == "undamped" else ALPHAS)
+    return models, steady_states(models, **OPTS)
 
 
 @pytest.mark.parametrize("v", range(len(MODELS)))
 def test_batched_steady_state_equals_the_single_run(batched, v):
-    single = steady_state(MODELS[v], method="explicit", dt=batch_step(MODELS[v]), **OPTS)
-    got = batched[v]
+    models, out = batched
+    single = steady_state(models[v], method="explicit", dt=batch_step(models[v]), **OPTS)
+    got = out[v]
     for name in ("mean_tension", "peak_tension", "period_peak_tension", "max_tension",
                  "min_tension", "settle_time", "measured_time", "dt", "chain_speed"):
         assert getattr(got, name) == pytest.approx(getattr(single, name), rel=1e-12, abs=0), name
@@ -147,9 +192,10 @@ def test_batched_steady_state_equals_the_single_run(batched, v):
 
 
 def test_a_drive_s_result_does_not_depend_on_its_batch(batched):
-    alone = steady_states(MODELS[1:2], **OPTS)[0]
-    assert alone.peak_tension == batched[1].peak_tension
-    assert alone.mean_tension == batched[1].mean_tension
+    models, out = batched
+    alone = steady_states(models[1:2], **OPTS)[0]
+    assert alone.peak_tension == out[1].peak_tension
+    assert alone.mean_tension == out[1].mean_tension
 
 
 def test_the_batch_step_is_a_whole_fraction_of_the_tooth_period_within_the_stable_step():

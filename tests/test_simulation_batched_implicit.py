@@ -10,6 +10,8 @@ timing here (benchmarks/simulate.py prints the batched implicit rate).
 
 from __future__ import annotations
 
+import dataclasses
+
 import numpy as np
 import pytest
 
@@ -17,8 +19,9 @@ from chaindrive.simulation import _kernel as K
 from chaindrive.simulation import link_example, roller_example
 from chaindrive.simulation._batched_implicit import Lanes, integrate_implicit_lanes
 from chaindrive.simulation._implicit import integrate_implicit
+from chaindrive.simulation._lane_passes import BLOCK
 from chaindrive.simulation.steady import warm_start
-from test_simulation_batched import _conveyor, _idler_drive
+from test_simulation_batched import ALPHAS, _conveyor, _idler_drive, damped
 
 
 def _single(model, st, nsteps, every):
@@ -91,6 +94,32 @@ def test_each_lane_equals_the_single_implicit_kernel(models):
         _assert_lane_equals(lanes, v, _single(m, st, steps[v], every[v]))
 
 
+@pytest.mark.parametrize("family", ["roller", "round-link", "idler", "conveyor"])
+def test_span_damping_per_lane_equals_the_single_implicit_kernel(family):
+    # lanes of different span damping (0, 5.3, 13.6 1/s) stepped together: each one equal to
+    # the single implicit kernel to the last bit (the term's force and its slope in the
+    # pins' blocks), and the term really on (a damped lane differs from its undamped run)
+    base = {"roller": [roller_example(links=40, teeth=12, angular_velocity=w, load_torque=tq,
+                                      gravity=g)
+                       for w, tq, g in ((10.0, 50.0, True), (14.0, 60.0, False), (20.0, 70.0, True))],
+            "round-link": [link_example(load_torque=tq) for tq in (200.0, 800.0, 500.0)],
+            "idler": [_idler_drive(tq) for tq in (80.0, 150.0, 110.0)],
+            "conveyor": [_conveyor(mat) for mat in (40.0, 60.0, 50.0)]}[family]
+    models = damped(base)
+    states = [warm_start(m) for m in models]
+    assert [st.par[K.P_CSPAN] for st in states] == list(ALPHAS)
+    steps = [200 - 30 * v for v in range(len(models))]
+    lanes, tabs = _lanes(models, states)
+    for v, (m, st) in enumerate(zip(models, states, strict=True)):
+        _load(lanes, v, m, st, tabs[v], steps[v], 9)
+    _run(lanes)
+    for v, (m, st) in enumerate(zip(models, states, strict=True)):
+        _assert_lane_equals(lanes, v, _single(m, st, steps[v], 9))
+    undamped = dataclasses.replace(models[2], span_damping=0.0)
+    assert not np.array_equal(lanes.state(2)[1],
+                              _single(undamped, warm_start(undamped), steps[2], 9)[1])
+
+
 def test_a_segment_split_over_calls_and_a_lane_started_again_change_nothing():
     models = [roller_example(links=40, teeth=12, angular_velocity=w, load_torque=60.0)
               for w in (11.0, 17.0)]
@@ -135,10 +164,13 @@ def test_more_lanes_than_one_block_of_the_contact_loop():
     count = LANES + 2
     models = [roller_example(links=40, teeth=12, angular_velocity=8.0 + 0.1 * v, load_torque=50.0)
               for v in range(count)]
+    # span damping from the second block of the link passes on (BLOCK lanes a block): a
+    # block without it, blocks whose lanes have different rates
+    models = models[:BLOCK] + damped(models[BLOCK:], ALPHAS[::-1])
     states = [warm_start(m) for m in models]
     lanes, tabs = _lanes(models, states)
     for v in range(count):
         _load(lanes, v, models[v], states[v], tabs[v], 40 + v % 5, 7)
     _run(lanes)
-    for v in (0, LANES - 1, LANES, count - 1):
+    for v in (0, BLOCK, BLOCK + 1, LANES - 1, LANES, count - 1):
         _assert_lane_equals(lanes, v, _single(models[v], states[v], 40 + v % 5, 7))

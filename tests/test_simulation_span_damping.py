@@ -1,15 +1,15 @@
-"""The optional transverse span damping (``SimulationModel.span_damping``, a study:
-docs/simulation.md "Span damping: a study").
+"""The transverse span damping (``SimulationModel.span_damping``, docs/simulation.md "Span
+damping"): by default ``α = 2 ζ Ω`` with the resonance check's ``ζ`` at the tooth frequency.
 
 Independent reference: for the viscous term ``−α m v_⊥`` on every pin of a span, each
 transverse mode of the span obeys ``q̈ + α q̇ + ω² q = 0`` (the damping is mass-proportional:
 the undamped modes decouple), so a plucked span's amplitude decays by ``exp(−α t / 2)`` against
 the undamped run whatever its frequency (Rao, *Mechanical Vibrations*, 5th ed., §2.6 for one
 mode; mass-proportional damping keeps the undamped modes, its chapter on multidegree-of-freedom
-systems). The default (0) leaves the kernels' arithmetic as it was: the
-calibration cache (tests/test_running_tension.py, slow) checks that to the last bit. Both
+systems). ``span_damping = 0`` leaves the kernels' arithmetic as it was before the term. Both
 single-drive integrators take it (the implicit one with its slope in the linearly implicit
-step).
+step), and so do the batched kernels, each variant with its own rate and each equal to its
+single run to the last bit (tests/test_simulation_batched*.py).
 """
 
 from __future__ import annotations
@@ -116,6 +116,45 @@ def test_implicit_matrix_is_the_forces_velocity_slope():
             assert np.count_nonzero(fx) + np.count_nonzero(fy) <= 2  # its own pin only
 
 
+def test_default_is_zeta_at_the_tooth_frequency():
+    # alpha = 2 zeta Omega (Chopra, Dynamics of Structures, 4th ed., 11.4.1: zeta_n = a0/(2 w_n)),
+    # Omega = z w of the speed-driven wheel; zeta = 0.02, the resonance check's
+    from chaindrive.simulation import link_example, roller_example
+    from chaindrive.vibration.excitation import DAMPING_RATIO, span_damping_rate
+
+    m = roller_example(teeth=19, angular_velocity=17.0)
+    assert m.span_damping is None
+    assert m.tooth_frequency() == pytest.approx(19 * 17.0)
+    assert m.span_damping_rate() == pytest.approx(2 * DAMPING_RATIO * 19 * 17.0)
+    assert span_damping_rate(340.0, 0.05) == pytest.approx(34.0)
+    # a pocket wheel of z pockets seats 2 z links a turn
+    lk = link_example(teeth=8, angular_velocity=5.0)
+    assert lk.tooth_frequency() == pytest.approx(2 * 8 * 5.0)
+    # no wheel with a nominal speed (locked wheels): none; an explicit value wins
+    assert _model().span_damping_rate() == 0.0
+    assert dataclasses.replace(m, span_damping=0.0).span_damping_rate() == 0.0
+    assert dataclasses.replace(m, span_damping=3.5).span_damping_rate() == 3.5
+
+
+def test_default_follows_a_changed_speed():
+    # the rate is resolved when a run starts, so a model replaced at another speed gets its own
+    from chaindrive.simulation import roller_example
+
+    m = roller_example(teeth=17, angular_velocity=10.0)
+    w0 = dataclasses.replace(m.wheels[0], angular_velocity=20.0)
+    m2 = dataclasses.replace(m, wheels=[w0, *m.wheels[1:]])
+    assert m2.span_damping_rate() == pytest.approx(2 * m.span_damping_rate())
+
+
+@pytest.mark.parametrize("call, match", [
+    (lambda r: r(-1.0), "frequency"), (lambda r: r(10.0, -0.1), "damping_ratio")])
+def test_span_damping_rate_refuses_negative_input(call, match):
+    from chaindrive.vibration.excitation import span_damping_rate
+
+    with pytest.raises(InputError, match=match):
+        call(span_damping_rate)
+
+
 def test_negative_span_damping_is_refused():
     with pytest.raises(InputError, match="span_damping"):
         _model(-1.0)
@@ -159,16 +198,23 @@ def test_steady_state_implicit_takes_span_damping():
     assert si.mean_tension < steady_state(dataclasses.replace(m, span_damping=0.0)).mean_tension
 
 
-def test_batched_kernels_refuse_span_damping():
-    # the batched kernels (explicit and implicit lanes) do not model the term: refused, not ignored
-    from chaindrive.errors import InputError
+def test_batched_steady_states_of_damped_variants_equal_the_single_runs():
+    # variants of one drive with different span damping (0, 5.3, 13.6 1/s) in one batch: each
+    # batched steady state (explicit kernel and implicit lanes) equal to the last bit to the
+    # single run's (steady_state alone: explicit at the batch step; implicit at its defaults)
     from chaindrive.simulation import roller_example
-    from chaindrive.simulation.steady_batch import steady_states
+    from chaindrive.simulation.steady_batch import batch_step, steady_states
     from chaindrive.simulation.steady_lanes import steady_states_implicit
 
-    m = roller_example(links=40, teeth=12, angular_velocity=10.0, load_torque=50.0, gravity=False,
-                       span_damping=5.0)
-    with pytest.raises(InputError, match="span_damping: the batched kernels do not model it"):
-        steady_states([m], periods=4)
-    out = steady_states_implicit([m], periods=4)  # one drive's failure is its result
-    assert isinstance(out[0], InputError) and "span_damping" in str(out[0])
+    ms = [roller_example(links=40, teeth=12, angular_velocity=w, load_torque=50.0, gravity=False,
+                         span_damping=a) for w, a in ((10.0, 0.0), (12.0, 5.3), (14.0, 13.6))]
+    opts = dict(periods=2, max_settle=4, min_settle_time=0.0)
+    for m, got in zip(ms, steady_states(ms, **opts), strict=True):
+        single = steady_state(m, method="explicit", dt=batch_step(m), **opts)
+        assert (got.mean_tension, got.peak_tension) == (single.mean_tension, single.peak_tension)
+        np.testing.assert_array_equal(got.waveform, single.waveform)
+    for m, got in zip(ms, steady_states_implicit(ms, lanes=2, **opts), strict=True):
+        single = steady_state(m, **opts)
+        assert (got.mean_tension, got.peak_tension, got.settle_time, got.method, got.dt) == \
+            (single.mean_tension, single.peak_tension, single.settle_time, single.method, single.dt)
+        np.testing.assert_array_equal(got.waveform, single.waveform)

@@ -20,7 +20,7 @@ ROOT = Path(chaindrive.__file__).parent
 NUMBA_KERNELS = {"simulation/_kernel.py", "simulation/_statics.py", "simulation/_implicit.py",
                  "simulation/_batched.py", "simulation/_contact.py",
                  "simulation/_batched_implicit.py", "simulation/_lane_contacts.py",
-                 "simulation/_lane_passes.py"}
+                 "simulation/_lane_passes.py", "simulation/_lane_span.py"}
 
 
 def _public_functions(tree: ast.Module) -> list[tuple[str, ast.FunctionDef | ast.AsyncFunctionDef, bool]]:

@@ -24,13 +24,15 @@ A derailleur cage costs more than the articulation of the chain over its two joc
 their bearings and seals, the chain's sliding on the pulleys and the cage. That part does not
 depend on the load either; it is taken as a drag force ``F_d`` on the chain, ``P = F_d v``
 (:data:`DERAILLEUR_DRAG`, fitted on Wilson's 50 W points and checked on his 100–400 W ones and on
-Friction Facts' pulley-size test: docs/life.md, "Efficiency and heat").
+Friction Facts' measured derailleur cage: docs/life.md, "Efficiency and heat").
 
 ``μ`` here is an effective coefficient: it lumps the pin–bushing sliding with the
 bushing–roller sliding at the tooth (Lodge & Burgess's model carries both). Its default
 is calibrated on a published chain-efficiency measurement (Friction Facts, 53T/11T,
-95 rpm, 250 W, loss 6.67 W, the rig's slack side taken as unloaded);
-``tests/test_published_data.py`` checks it against the other published measurements found
+95 rpm, 250 W, loss 6.67 W) read as what that rig does: the Full Tension Test transmits no
+power and holds the whole loop at the tension of the stated load, so all four articulations
+carry it (:func:`full_tension_rig_loss`); ``tests/test_published_data.py`` and
+``tests/test_life_efficiency.py`` check it against the other published measurements found
 (docs/life.md, "Efficiency and heat", lists where it holds).
 """
 
@@ -45,22 +47,24 @@ from .._typing import FloatOrArray
 from .._validation import check_nonnegative, check_positive
 from ..errors import InputError
 
-__all__ = ["ARTICULATION_FRICTION", "DERAILLEUR_DRAG", "articulation_angle", "articulation_power_loss", "transmission_efficiency",
-           "two_wheel_power_loss"]
+__all__ = ["ARTICULATION_FRICTION", "DERAILLEUR_DRAG", "articulation_angle", "articulation_power_loss",
+           "full_tension_rig_loss", "transmission_efficiency", "two_wheel_power_loss"]
 
 #: Effective articulation friction coefficient (pin radius basis), calibrated on the
-#: Friction Facts measurement of a 10-speed bicycle chain (53T/11T, 95 rpm, 250 W,
-#: 6.67 W lost after 8 h running-in; pin diameter 3.6 mm): ``μ = 0.273``.
-ARTICULATION_FRICTION = 0.273
+#: Friction Facts measurement of a 10-speed bicycle chain (53T/11T, 95 rpm, "250 W", 6.67 W lost
+#: after 8 h running-in; pin diameter 3.6 mm) on its Full Tension Test: no power transmitted,
+#: both spans at the 234 N of 250 W, four articulations at that tension
+#: (:func:`full_tension_rig_loss`): ``μ = 0.1365`` (read as a drive with an unloaded slack
+#: side, two articulations, it would be twice that).
+ARTICULATION_FRICTION = 0.1365
 
 #: Load-independent drag of a bicycle's rear-derailleur cage on the chain [N], beyond the chain's own
 #: articulation over the jockey wheels (their bearings and seals, the chain sliding on the pulleys and the
 #: cage): ``P = F_d v``. Fitted (least squares in watts) on the three 50 W points of Wilson's derailleur
 #: table (Bicycling Science, 3rd ed., 2004, p. 343; 52T, 80 rpm and the road derailleur's 11.6 N assumed),
-#: checked on his nine 100-400 W points; independent of the pulley size (Friction Facts' pulley-size test,
-#: the same bearings moved between 10T and 15T pulleys, leaves no room for a bearing torque of this size:
-#: docs/life.md, "Efficiency and heat").
-DERAILLEUR_DRAG = 1.20
+#: checked on his nine 100-400 W points and on Friction Facts' stock Dura-Ace cage (3.25-3.80 W measured,
+#: the model's derailleur 3.5 W at 1.07 m/s: docs/life.md, "Efficiency and heat").
+DERAILLEUR_DRAG = 2.455
 
 
 def articulation_angle(pitch: ArrayLike, pitch_radius: ArrayLike,
@@ -152,7 +156,7 @@ def articulation_power_loss(chain_speed: ArrayLike, pitch: ArrayLike, pin_diamet
     Examples
     --------
     >>> round(float(articulation_power_loss(1.0, 0.0127, 0.0036, [53, 11], [234.5, 0.0], [0.0, 234.5])), 2)
-    6.26
+    3.13
     """
     v = check_nonnegative("chain_speed", chain_speed, "m/s")
     p = check_positive("pitch", pitch, "m")
@@ -225,13 +229,13 @@ def two_wheel_power_loss(power: ArrayLike, chain_speed: ArrayLike, pitch: float,
     Examples
     --------
     >>> round(float(two_wheel_power_loss(250.0, 1.0664, 0.0127, 0.0036, [53, 11])), 2)
-    6.67
+    3.34
     >>> round(float(two_wheel_power_loss(250.0, 1.0664, 0.0127, 0.0036, [53, 11], slack_tension=11.6,
     ...                                  idler_teeth=[11, 11])), 2)
-    8.43
+    4.21
     >>> round(float(two_wheel_power_loss(250.0, 1.0664, 0.0127, 0.0036, [53, 11], slack_tension=11.6,
     ...                                  idler_teeth=[11, 11], drag_force=DERAILLEUR_DRAG)), 2)
-    9.71
+    6.83
     """
     pw = check_positive("power", power, "W")
     v = check_positive("chain_speed", chain_speed, "m/s")
@@ -247,6 +251,59 @@ def two_wheel_power_loss(power: ArrayLike, chain_speed: ArrayLike, pitch: float,
     wheels = np.concatenate([z, idl])
     return articulation_power_loss(v, pitch, pin_diameter, wheels, np.stack(t_in, axis=-1),
                                    np.stack(t_out, axis=-1), friction=friction) + drag * v
+
+
+def full_tension_rig_loss(chain_speed: ArrayLike, pitch: ArrayLike, pin_diameter: ArrayLike, teeth: ArrayLike,
+                          tension: ArrayLike, *, friction: float = ARTICULATION_FRICTION) -> FloatOrArray:
+    r"""Articulation loss on a chain-friction rig that holds the whole loop at one tension.
+
+    A rig that transmits no power (Friction Facts' / CeramicSpeed's Full Tension Test, as against
+    their Full Load Test "at 250 W actual rotational load") turns a loop tensioned by pushing its
+    two wheels apart: its spans differ only by the friction pull, so both carry the test tension
+    ``T`` and every wheel's entry and exit articulate under it:
+
+    .. math:: P_{loss} = μ\,\frac{d_p}{2}\,\frac{v}{p}\sum_w \frac{2π}{z_w}\,2T
+
+    twice what a drive transmitting ``P = T v`` with an unloaded slack side loses (two
+    articulations at ``T``, two at zero: :func:`two_wheel_power_loss`). This is what the rig's
+    published "loss at 250 W" measures, and so what calibrates :data:`ARTICULATION_FRICTION`.
+
+    Parameters
+    ----------
+    chain_speed : float or array_like
+        ``v`` [m/s].
+    pitch, pin_diameter : float
+        ``p``, ``d_p`` [m].
+    teeth : array_like
+        The rig's wheels, last axis.
+    tension : float or array_like
+        ``T >= 0``, the loop's tension [N] (the rig's stated power over the chain speed).
+    friction : float
+        The effective ``μ`` [-]; by default :data:`ARTICULATION_FRICTION`, which this rig calibrates.
+
+    Returns
+    -------
+    ndarray
+        The power the rig's motor supplies to the chain's friction [W].
+
+    References
+    ----------
+    Friction Facts (J. Smith), "Chain Efficiency vs. Run Time", ceramicspeed.com (the run at 250 W
+    "actual rotational load" by the Full Load Test, the losses read by the Full Tension Test);
+    J. Smith in "CeramicSpeed issues in-depth report on Muc-Off Nanotube Chain claims", BikeBiz,
+    2019 ("in a true bicycle drivetrain, the chain slacks as it snakes through the rear derailleur.
+    A full tension tester does not account for this occurrence"): the rig's return span is not
+    slack. The articulation per joint as in :func:`articulation_power_loss`.
+
+    Examples
+    --------
+    >>> round(float(full_tension_rig_loss(1.0664, 0.0127, 0.0036, [53, 11], 250.0 / 1.0664)), 2)
+    6.67
+    """
+    t = check_nonnegative("tension", tension, "N")
+    z = np.asarray(teeth, dtype=float)
+    both = np.broadcast_to(np.expand_dims(t, -1), np.broadcast_shapes(np.shape(t) + (1,), z.shape))
+    return articulation_power_loss(chain_speed, pitch, pin_diameter, teeth, both, both, friction=friction)
 
 
 def transmission_efficiency(power: ArrayLike, power_loss: ArrayLike) -> FloatOrArray:

@@ -15,8 +15,10 @@ pin, its offset, its seat: the last one kept when the pin is still within it, el
 walk of :func:`._contact.nearest_seat`), the forces of all lanes in one branch-free loop
 (:func:`_seat_lane`, :func:`_slot_forces`: every case of the seat profile evaluated, the
 one that applies selected, so the loop compiles to vector instructions), scattered back
-per variant. Guides per variant. Divisions by zero give inf instead of raising
-(``error_model="numpy"``, so that the loops vectorise; the values are the same). Wheels,
+per variant. Guides per variant. The span damping (``P_CSPAN``, each variant its own)
+across the variants before the contacts (:mod:`._lane_span`). Divisions by zero give inf
+instead of raising (``error_model="numpy"``, so that the loops vectorise; the values are
+the same). Wheels,
 guides and seat tables: ``(V, W, ...)``, ``(V, G, NGD)``, ``(V, W, smax, 6)`` (a table
 padded to the largest seat count). Records, per variant contiguous: time ``(V, R)``,
 link tensions ``(V, R, N)``, wheel states ``(V, R, W, NWS)``, pin positions
@@ -33,6 +35,7 @@ from numba import njit
 from . import _contact as C
 from . import _layout as L
 from ._kernel import _carry, advance_wheels
+from ._lane_span import span_damping_forces
 
 __all__ = ["empty_batch_records", "integrate_batch", "stack_tables"]
 
@@ -356,6 +359,10 @@ def integrate_batch(pos, vel, ws, wp, gd, tab, par, t0, nsteps, record_every, re
     fgx = par[:, L.P_MASS] * par[:, L.P_GX]
     fgy = par[:, L.P_MASS] * par[:, L.P_GY]
     cm = par[:, L.P_CGLOB] * par[:, L.P_MASS]
+    cspan = par[:, L.P_CSPAN] * par[:, L.P_MASS]
+    anyspan = False
+    for v in range(nv):
+        anyspan = anyspan or cspan[v] > 0.0
     hdt = np.empty(nv)
     for v in range(nv):
         hdt[v] = 1.0 / par[v, L.P_MASS] * dt[v]
@@ -398,6 +405,9 @@ def integrate_batch(pos, vel, ws, wp, gd, tab, par, t0, nsteps, record_every, re
                     C.guide_candidates(x[:, v], y[:, v], gd[v], g, rr + 0.25 * rr, gcand[v],
                                        ngcand[v])
             countdown[v] -= 1
+        if anyspan:
+            # the span damping first, as the single kernel adds it (lanes with α = 0 untouched)
+            span_damping_forces(x, y, vx, vy, fx, fy, cspan)
         # contacts: wheels across the variants, guides per variant
         for w in range(nw):
             _wheel_contacts(w, x, y, vx, vy, fx, fy, ws, wp, tab2, gc, pt, cand, gcache, ncand, sq,

@@ -17,7 +17,8 @@ dimension, so that the link forces,
 the pins' 2 x 2 inverses, the Woodbury passes, the cyclic tridiagonal factorisation and
 substitutions (:func:`._banded._factor_solve4`'s arithmetic with every recurrence carried
 per lane) and the pins' update run as vector instructions across the lanes
-(:mod:`._lane_passes`); the contact candidates listed with the pins read across the
+(:mod:`._lane_passes`), as does the span damping, its force and slope, each lane its own
+(:mod:`._lane_span`); the contact candidates listed with the pins read across the
 lanes; the wheel contacts a candidate slot at a time across the lanes, their law
 branch-free (:mod:`._lane_contacts`); the guides, the wheels' bordered (Schur
 complement) rows, the active set of the contacts (a lane solved again alone by
@@ -71,6 +72,7 @@ from ._lane_passes import (
     _rhs,
     _update,
 )
+from ._lane_span import span_damping_implicit
 
 __all__ = ["Lanes", "integrate_implicit_lanes", "start_lane"]
 
@@ -527,10 +529,10 @@ def _unblocked(out, a):
 @njit(**_OPTS)
 def _lane_constants(par, nblk):
     """Per lane (padded to whole blocks, ``(blocks, BLOCK)``): ``k``, ``c``, ``h``,
-    ``θ h``, ``m/h``, ``1/a``, the weight and the global damping; and the links' rest
-    lengths ``(blocks, N, BLOCK)``."""
+    ``θ h``, ``m/h``, ``1/a``, the weight, the global damping and the span damping's
+    ``α m`` and ``θ α m``."""
     nv = par.shape[0]
-    out = np.empty((9, nblk, BLOCK))
+    out = np.empty((11, nblk, BLOCK))
     for blk in range(nblk):
         for b in range(BLOCK):
             v = min(blk * BLOCK + b, nv - 1)
@@ -548,6 +550,8 @@ def _lane_constants(par, nblk):
             out[6, blk, b] = m * par[v, K.P_GX]
             out[7, blk, b] = m * par[v, K.P_GY]
             out[8, blk, b] = par[v, K.P_CGLOB] * m
+            out[9, blk, b] = par[v, K.P_CSPAN] * m
+            out[10, blk, b] = th * out[9, blk, b]
     return out
 
 
@@ -641,7 +645,8 @@ def integrate_implicit_lanes(x, y, vx, vy, ws, wp, gd, tab, par, t0, nsteps, eve
                 continue
             _block_step(v0, nb, n, nw, ng, actb, act, due, xb[blk], yb[blk], vxb[blk], vyb[blk],
                         rest[blk], lc[0, blk], lc[1, blk], lc[2, blk], lc[3, blk], lc[4, blk],
-                        lc[5, blk], lc[6, blk], lc[7, blk], lc[8, blk], h, margin, ws, wp, gd,
+                        lc[5, blk], lc[6, blk], lc[7, blk], lc[8, blk], lc[9, blk], lc[10, blk],
+                        h, margin, ws, wp, gd,
                         par, t0, step, every, nrec, countdown, vmax_s, cand, gcache, ncand,
                         gcand, ngcand, rec_t, rec_tension, rec_ws, rec_pos, nrmax, tension,
                         tstar, ux, uy, fx, fy, mxx, mxy, myy, wxx, wxy, wyy, yx, yy, dg, of, dd,
@@ -667,15 +672,17 @@ def integrate_implicit_lanes(x, y, vx, vy, ws, wp, gd, tab, par, t0, nsteps, eve
 
 @njit(**_OPTS)
 def _block_step(v0, nb, n, nw, ng, actb, act, due, x, y, vx, vy, rest, k, c, hb, thh, mh, inv_ak,
-                fgx, fgy, cm, h, margin, ws, wp, gd, par, t0, step, every, nrec, countdown,
+                fgx, fgy, cm, cspan, cspth, h, margin, ws, wp, gd, par, t0, step, every, nrec, countdown,
                 vmax_s, cand, gcache, ncand, gcand, ngcand, rec_t, rec_tension, rec_ws, rec_pos,
                 nrmax, tension, tstar, ux, uy, fx, fy, mxx, mxy, myy, wxx, wxy, wyy, yx, yy, dg,
                 of, dd, ff, dvx, dvy, lams, bl, dlast, dcur, bx, by, zx, zy, sq, fq, qrot, qsl,
                 nq, cinfo, wtq, wsf, omu, gc, pt, tab2, sqb, sob, sib, vm, rc2, tl):
     """One step of the block of ``nb`` lanes from lane ``v0`` (its pins ``x`` ... and
-    per-lane constants ``k`` ... ``cm`` the block's ``(N, BLOCK)``, ``(BLOCK,)`` arrays,
+    per-lane constants ``k`` ... ``cspth`` the block's ``(N, BLOCK)``, ``(BLOCK,)`` arrays,
     ``actb`` its stepping lanes), every pass of the single kernel's step in its order."""
     _links(x, y, vx, vy, k, c, thh, rest, tension, tstar, ux, uy)
+    # the span damping (its force and slope; nothing in a block without it)
+    span_damping_implicit(x, y, vx, vy, fx, fy, mxx, mxy, myy, cspan, cspth)
     anydue = False
     for b in range(nb):
         v = v0 + b

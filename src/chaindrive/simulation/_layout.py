@@ -35,8 +35,8 @@ NWS = 8
 P_MASS, P_K, P_C, P_PITCH, P_RROLLER, P_KC, P_CC, P_MU, P_VEPS, P_GX, P_GY, P_DT, P_CGLOB, \
     P_KG, P_CG, P_DTREF, P_PITCH2, P_THETA, P_CSPAN = range(19)
 NPAR = 19
-# P_CSPAN: transverse span damping rate α [1/s] (SimulationModel.span_damping; explicit
-# and single implicit kernels, 0: none and the earlier arithmetic unchanged)
+# P_CSPAN: transverse span damping rate α [1/s] (SimulationModel.span_damping; every
+# kernel, the batched ones per variant; 0: none and the earlier arithmetic unchanged)
 # P_THETA: implicitness θ of the linearly implicit integrator (forces evaluated at
 # x + θ h v⁺); unused by the explicit kernel
 # P_PITCH: rest length of the even links (i = 0, 2, ...); P_PITCH2: of the odd links

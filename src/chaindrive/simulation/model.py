@@ -401,12 +401,15 @@ class SimulationModel:
         chain is ``pitch = p (1 + e)`` on wheels of ``wheel_pitch = p``: the chain is placed on
         its own pitch polygons (the rollers ridden out to ``R (1 + e)``), the tooth gaps are
         the wheels' (docs/life.md). ``pitch / 1.3 <= wheel_pitch <= pitch``.
-    span_damping : float
-        Transverse span damping rate ``α`` [1/s], ``>= 0`` (a study, docs/simulation.md
-        "Span damping: a study"): each pin feels ``−α m v_⊥``, ``v_⊥`` its velocity normal
-        to the chord of its neighbours, so a span's transverse mode of angular frequency
-        ``ω_n`` has the damping ratio ``α / (2 ω_n)``; 0 (default): none. Both
-        single-drive integrators (explicit and implicit); not the batched kernels.
+    span_damping : float or None
+        Transverse span damping rate ``α`` [1/s], ``>= 0`` (docs/simulation.md, "Span
+        damping"): each pin feels ``−α m v_⊥``, ``v_⊥`` its velocity normal to the chord of
+        its neighbours, so a span's transverse mode of angular frequency ``ω_n`` has the
+        damping ratio ``α / (2 ω_n)``. ``None`` (default): ``α = 2 ζ Ω`` with the span
+        damping ratio ``ζ`` = :data:`chaindrive.vibration.excitation.DAMPING_RATIO` of
+        the resonance check at the drive's tooth frequency ``Ω`` (:meth:`tooth_frequency`),
+        so a span mode in resonance with the teeth has the damping the analysis assumes
+        (:meth:`span_damping_rate`); ``0``: undamped spans.
     """
 
     pitch: float
@@ -431,7 +434,7 @@ class SimulationModel:
     tooth_flank: str = "arc"
     bar_diameter: float | None = None
     wheel_pitch: float | None = None
-    span_damping: float = 0.0
+    span_damping: float | None = None
 
     def __post_init__(self):
         for name in ("pitch", "link_mass", "axial_stiffness", "roller_radius",
@@ -439,7 +442,8 @@ class SimulationModel:
             check_positive(name, getattr(self, name))
         from ..limits import MAX_LINKS
 
-        check_nonnegative("span_damping", self.span_damping, "1/s")
+        if self.span_damping is not None:
+            check_nonnegative("span_damping", self.span_damping, "1/s")
 
         if int(self.links) != self.links or not 4 <= self.links <= MAX_LINKS:
             raise InputError(f"links must be a whole number in [4, {MAX_LINKS}], got {self.links!r}")
@@ -492,6 +496,34 @@ class SimulationModel:
             raise InputError(f"tensioner.wheel must be in 0..{len(self.wheels) - 1}")
 
     # derived quantities -------------------------------------------------------------
+    def tooth_frequency(self) -> float:
+        """Nominal tooth frequency ``Ω`` [rad/s]: seats passing per second times ``2π`` on the
+        fastest driven wheel (a ``"speed"`` wheel's prescribed ``ω``, a ``"motor"`` wheel's
+        synchronous speed), ``Ω = n_s ω`` with ``n_s`` the seats per turn; 0 when no wheel
+        has a nominal speed."""
+        best = 0.0
+        for w in self.wheels:
+            if w.teeth is None or w.plain_radius is not None:
+                continue
+            if w.mode == "speed":
+                omega = abs(float(w.angular_velocity))
+            elif w.mode == "motor" and w.motor is not None:
+                omega = abs(float(w.motor.synchronous_speed))
+            else:
+                continue
+            best = max(best, self.seats_per_turn(int(w.teeth)) * omega)
+        return best
+
+    def span_damping_rate(self) -> float:
+        """The span damping rate ``α`` [1/s] the integrators use: ``span_damping`` when given,
+        else ``2 ζ Ω`` (:func:`chaindrive.vibration.excitation.span_damping_rate` at
+        :meth:`tooth_frequency`)."""
+        if self.span_damping is not None:
+            return float(self.span_damping)
+        from ..vibration.excitation import span_damping_rate
+
+        return span_damping_rate(self.tooth_frequency())
+
     @property
     def is_link_chain(self) -> bool:
         """True for a round link chain on pocket wheels (``bar_diameter`` given)."""

@@ -84,7 +84,7 @@ def kernel_arrays(model: SimulationModel, dt: float | None = None) -> tuple[np.n
     par[K.P_GX], par[K.P_GY] = model.gravity
     par[K.P_DT] = dt
     par[K.P_THETA] = 1.0
-    par[K.P_CSPAN] = model.span_damping
+    par[K.P_CSPAN] = model.span_damping_rate()
     # friction slope cap m / dt_ref (see the kernel), dt_ref = 2 dt_stable: the cap
     # m / dt makes the friction dead-beat on its own, and with the link springs and
     # large seat forces the alternating mode of the seated pins then grows (period 2:
@@ -560,7 +560,7 @@ def simulate(model: SimulationModel, duration: float, *, dt: float | None = None
     if state is None:
         state = assemble(model, dt=dt)
     par = state.par.copy()
-    par[K.P_CSPAN] = model.span_damping  # the model's, whatever state it starts from
+    par[K.P_CSPAN] = model.span_damping_rate()  # the model's, whatever state it starts from
     if dt is not None:
         par[K.P_DT] = dt
     dt = float(par[K.P_DT])

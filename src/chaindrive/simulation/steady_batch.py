@@ -182,8 +182,6 @@ def steady_states(drives_or_models: Sequence[Any], *, periods: int = 12, bins: i
                  samples=samples, settle_tolerance=settle_tolerance)
     items = check_many(drives_or_models, states, min_settle_time, batch=batch)
     models = [x if isinstance(x, SimulationModel) else _model_of(x) for x in items]
-    for m in models:
-        refuse_span_damping(m)
     drives = [_Drive(i, m, None if states is None else states[i], min_settle_time, samples,
                      max_settle) for i, m in enumerate(models)]
     groups: dict[tuple[int, ...], list[_Drive]] = {}
@@ -200,15 +198,6 @@ def steady_states(drives_or_models: Sequence[Any], *, periods: int = 12, bins: i
                                  d.settle_time, d.settled, d.steps, d.dt, float("nan"),
                                  "explicit", time.process_time() - d.cpu)
     return out  # type: ignore[return-value]
-
-
-def refuse_span_damping(model: SimulationModel) -> None:
-    """The batched kernels do not model the span damping (``SimulationModel.span_damping``):
-    a model with it is refused (``InputError``) rather than stepped without it."""
-    if model.span_damping > 0.0:
-        raise InputError("span_damping: the batched kernels do not model it (got "
-                         f"{model.span_damping:g} 1/s); use steady_state for a damped drive, "
-                         "or span_damping = 0", field="span_damping")
 
 
 def check_many(drives_or_models: Any, states: Sequence[State | None] | None,

@@ -45,7 +45,7 @@ from .steady import (
     summarise,
     warm_start,
 )
-from .steady_batch import check_many, refuse_span_damping
+from .steady_batch import check_many
 
 __all__ = ["steady_states_implicit"]
 
@@ -253,7 +253,6 @@ def steady_states_implicit(drives_or_models: Sequence[Any], *, periods: int = 12
     for i, item in enumerate(items):
         try:
             model = item if isinstance(item, SimulationModel) else _model_of(item)
-            refuse_span_damping(model)
             d = _Drive(i, model, None if states is None else states[i], o)
             c0 = time.process_time()
             d.advance(None)

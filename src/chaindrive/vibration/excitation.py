@@ -41,6 +41,7 @@ __all__ = [
     "polygon_transverse_harmonics",
     "forced_span_response",
     "span_excitations",
+    "span_damping_rate",
 ]
 
 #: Upper limit of the measured length of a roller chain over the nominal: +0.15 % (lower 0)
@@ -56,6 +57,48 @@ AMPLIFICATION_LIMIT = 1.0 / (1.0 - 1.0 / 1.4**2)
 #: assumption, not a published value for chains: steel chain spans are lightly damped;
 #: the response at resonance scales as 1/ζ).
 DAMPING_RATIO = 0.02
+
+
+def span_damping_rate(frequency: float, damping_ratio: float = DAMPING_RATIO) -> float:
+    r"""Mass-proportional damping rate ``α`` [1/s] that gives the modes at ``frequency`` the
+    damping ratio ``ζ``.
+
+    .. math:: α = 2\,ζ\,Ω
+
+    A viscous force ``−α m v`` on every mass of a discretised span (the transverse term
+    ``c ∂y/∂t`` of Mahalingam's travelling string, ``c = α q``) damps each of its modes
+    as ``exp(−α t/2)``: mode ``n`` of angular frequency ``ω_n`` has ``ζ_n = α/(2 ω_n)``
+    (mass-proportional Rayleigh damping). Choosing ``α`` at the excitation frequency
+    ``Ω`` gives a mode in resonance with it exactly ``ζ``, the ratio the forced
+    span response (:func:`forced_span_response`) assumes; lower modes get more.
+
+    Parameters
+    ----------
+    frequency : float
+        ``Ω`` [rad/s], >= 0 (a drive's tooth frequency ``z ω``).
+    damping_ratio : float
+        ``ζ`` [-], >= 0 (default :data:`DAMPING_RATIO`).
+
+    Returns
+    -------
+    float
+        ``α`` [1/s].
+
+    References
+    ----------
+    S. Mahalingam, "Transverse vibrations of power transmission chains", Br. J. Appl.
+    Phys. 8 (1957) 145–148 (the viscous transverse term). A. K. Chopra, Dynamics of
+    Structures, 4th ed., Prentice Hall 2012, §11.4.1 (mass-proportional damping,
+    ``ζ_n = a_0/(2 ω_n)``).
+
+    Examples
+    --------
+    >>> round(span_damping_rate(340.0), 2)   # 16B, 19 teeth at 17.9 rad/s: Ω = 340 rad/s
+    13.6
+    """
+    check_nonnegative("frequency", frequency, "rad/s")
+    check_nonnegative("damping_ratio", damping_ratio)
+    return 2.0 * float(damping_ratio) * float(frequency)
 
 
 @finite_guard
