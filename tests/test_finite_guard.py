@@ -112,13 +112,15 @@ _ELEMENT = st.sampled_from([0.0, -0.0, 1.0, -2.5, 1e-300, 1e308, -1e308, math.in
 @settings(max_examples=300, deadline=None)
 @given(st.lists(_ELEMENT, min_size=0, max_size=40))
 def test_array_fast_paths_equal_the_elementwise_definitions(values):
-    # _all_finite (a short array in Python floats), the checks'
+    # _all_finite (a short array in Python floats; inside a guard a long one by its dot product), the checks'
     # NaN test and their range test (short arrays in Python floats, longer by min and max)
     from chaindrive._finite import _all_finite
     from chaindrive._validation import _has_nan, _within
 
     arr = np.array(values, dtype=float)
     assert _all_finite(arr) == bool(np.isfinite(arr).all())
+    with guard_scope():  # inside a guard: a long array by its sum of squares first (1e308² overflows)
+        assert _all_finite(arr) == bool(np.isfinite(arr).all())
     assert _has_nan(arr) == bool(np.isnan(arr).any())
     if not np.isnan(arr).any():
         assert _within(arr, 0.0, True) == (not ((arr <= 0).any() or not np.isfinite(arr).all()))

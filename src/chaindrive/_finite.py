@@ -65,6 +65,13 @@ def _all_finite(a: np.ndarray) -> bool:
     """Whether the float or complex array ``a`` holds no NaN and no infinity."""
     if a.size <= 16 and a.dtype.kind == "f":  # a short array: faster in Python than a ufunc and a reduction
         return all(map(math.isfinite, a.ravel().tolist()))
+    if _GUARD.depth and a.dtype == np.float64:
+        # inside a guard numpy's floating-point errors are ignored: a finite sum of squares has
+        # finite terms only (a NaN or an infinity makes it NaN or infinite); one that overflows
+        # is looked at term by term
+        flat = a.ravel()
+        if math.isfinite(flat.dot(flat)):
+            return True
     return bool(np.isfinite(a).all())
 
 
@@ -194,6 +201,9 @@ def _finite_tree(obj: Any, _depth: int = 0) -> bool:
             continue
         if tv in _FLOATS:
             if not math.isfinite(v):
+                return False
+        elif tv is np.ndarray:  # _finite_tree(v) of an array, without the call
+            if v.dtype.kind in "fc" and v.size and not _all_finite(v):
                 return False
         elif not _finite_tree(v, _depth + 1):
             return False
