@@ -93,7 +93,14 @@ def _nonfinite_number(value: Any) -> bool:
     if isinstance(value, np.ndarray):
         return value.dtype.kind in "fc" and not bool(np.all(np.isfinite(value)))
     if isinstance(value, (list, tuple)) and len(value) <= 10_000:
-        return any(_nonfinite_number(v) for v in value)
+        for v in value:  # any(_nonfinite_number(v) for v in value), the common members without a call
+            tv = type(v)
+            if tv in _FLOATS:
+                if not math.isfinite(v):
+                    return True
+            elif tv not in _PLAIN and _nonfinite_number(v):
+                return True
+        return False
     if not issubclass(t, _LOOKED_AT):
         _OPAQUE.add(t)  # never a number nor a sequence of them: the guard passes it at a glance
     return False
