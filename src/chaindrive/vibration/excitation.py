@@ -349,8 +349,12 @@ def _span_response(span: TensionerSpan, om: np.ndarray, y1: Any, y2: Any, zeta: 
         sa = s_unit * ell[a]
         ka = k[a][:, None]                                                             # (F, 1)
         kda = kd[a][:, None]
-        wa = (yc * rows(np.cos(kda * sa)))[None] + ((gg[a] * u[..., None] - (yc * np.cos(ka * ell[a])))
-                                                    / np.sin(ka * ell[a])) * rows(np.sin(kda * sa))[None]
+        # cos and sin of the complex k s from one exponential (cos z = (e^iz + e^-iz)/2, sin z =
+        # (e^iz - e^-iz)/2i; within a few roundings of np.cos and np.sin at these damped k)
+        turn = np.exp(1j * (kda * sa))
+        back = 1.0 / turn
+        wa = (yc * rows(0.5 * (turn + back)))[None] + ((gg[a] * u[..., None] - (yc * np.cos(ka * ell[a])))
+                                                       / np.sin(ka * ell[a])) * rows(-0.5j * (turn - back))[None]
         sb = s_unit * ell[b]
         kdb = kd[b][:, None]
         wb = gg[b] * u[..., None] * rows(np.sin(kdb * (ell[b] - sb)) / np.sin(kdb * ell[b]))[None]
