@@ -207,6 +207,7 @@ def _bisect_scalar(lo, hi, span, rise, w, f):
     # same halvings, the same answers, the same result, bit for bit
     root = _log_tension_near(float(lo), float(hi), float(span), float(rise), float(w), float(f))
     near = math.inf if root is None else 1e-11 * max(1.0, abs(root))
+    lo, hi = float(lo), float(hi)  # the halvings in Python floats (the same IEEE sums and products)
     for _ in range(100):
         mid = 0.5 * (lo + hi)
         # lo and hi adjacent (or equal): the midpoint rounds to one of them, and from this
