@@ -61,11 +61,14 @@ def _field_names(cls: type) -> tuple[str, ...]:
     return names
 
 
+_FLOAT64 = np.dtype(np.float64)  # the native double's dtype (numpy hands out this one object)
+
+
 def _all_finite(a: np.ndarray) -> bool:
     """Whether the float or complex array ``a`` holds no NaN and no infinity."""
     if a.size <= 16 and a.dtype.kind == "f":  # a short array: faster in Python than a ufunc and a reduction
         return all(map(math.isfinite, a.ravel().tolist()))
-    if _GUARD.depth and a.dtype == np.float64:
+    if a.dtype is _FLOAT64 and _GUARD.depth:
         # inside a guard numpy's floating-point errors are ignored: a finite sum of squares has
         # finite terms only (a NaN or an infinity makes it NaN or infinite); one that overflows
         # is looked at term by term
@@ -212,6 +215,14 @@ def _finite_tree(obj: Any, _depth: int = 0) -> bool:
         elif tv is np.ndarray:  # _finite_tree(v) of an array, without the call
             if v.dtype.kind in "fc" and v.size and not _all_finite(v):
                 return False
+        elif (tv is tuple or tv is list) and _depth < 11:  # one of plain numbers, without the call
+            for x in v:
+                tx = type(x)
+                if tx in _FLOATS:
+                    if not math.isfinite(x):
+                        return False
+                elif tx not in _PLAIN and not _finite_tree(x, _depth + 2):
+                    return False
         elif not _finite_tree(v, _depth + 1):
             return False
     return True
