@@ -132,6 +132,11 @@ def centre_distance_approx(pitch: ArrayLike, teeth_1: ArrayLike, teeth_2: ArrayL
 
 def _belt_length(a: FloatOrArray, r1: FloatOrArray, r2: FloatOrArray) -> FloatOrArray:
     """Open-belt length on two circles (exact tangents)."""
+    if type(a) is float and type(r1) is float and type(r2) is float:
+        # Python floats (the root searches): numpy's arc sine, the correctly rounded square root,
+        # the same products and sums as below, bit for bit
+        b = float(np.arcsin((r2 - r1) / a))
+        return 2.0 * math.sqrt(a**2 - (r2 - r1) ** 2) + r1 * (math.pi - 2 * b) + r2 * (math.pi + 2 * b)
     beta = np.arcsin((r2 - r1) / a)
     return 2.0 * np.sqrt(a**2 - (r2 - r1) ** 2) + r1 * (np.pi - 2 * beta) + r2 * (np.pi + 2 * beta)
 
