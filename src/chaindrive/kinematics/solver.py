@@ -129,14 +129,14 @@ class WheelPolygon:
     angles: tuple[float, ...]
     phase: float
 
-    @property
+    @functools.cached_property
     def period(self) -> float:
-        """Angular period ``2π/z`` [rad]."""
+        """Angular period ``2π/z`` [rad] (kept on the polygon: its fields are frozen)."""
         return float(sum(self.angles))
 
-    @property
+    @functools.cached_property
     def advance(self) -> float:
-        """Chain length per period (``2t`` or ``p``) [m]."""
+        """Chain length per period (``2t`` or ``p``) [m] (kept on the polygon)."""
         return float(sum(self.links))
 
     def _cum(self) -> tuple[np.ndarray, np.ndarray]:
