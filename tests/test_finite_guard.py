@@ -122,7 +122,25 @@ def test_array_fast_paths_equal_the_elementwise_definitions(values):
     with guard_scope():  # inside a guard: a long array by its sum of squares first (1e308² overflows)
         assert _all_finite(arr) == bool(np.isfinite(arr).all())
     assert _has_nan(arr) == bool(np.isnan(arr).any())
+    import warnings
+
+    from chaindrive._validation import warn_outside
+
+    with warnings.catch_warnings(record=True) as caught:  # warn_outside: NaN outside neither bound
+        warnings.simplefilter("always")
+        warn_outside("x", arr, -1.0, 2.0, "a test")
+    assert bool(caught) == bool(((arr < -1.0) | (arr > 2.0)).any())
     if not np.isnan(arr).any():
+        from chaindrive._validation import check_range
+
+        for inclusive in (True, False):
+            try:
+                check_range("x", arr, -1.0, 1.0, low_inclusive=inclusive, high_inclusive=inclusive)
+                passed = True
+            except InputError:
+                passed = False
+            inside = (arr >= -1.0) & (arr <= 1.0) if inclusive else (arr > -1.0) & (arr < 1.0)
+            assert passed == bool(inside.all())
         assert _within(arr, 0.0, True) == (not ((arr <= 0).any() or not np.isfinite(arr).all()))
         assert _within(arr, 0.0, False) == (not ((arr < 0).any() or not np.isfinite(arr).all()))
 

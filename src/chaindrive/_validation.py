@@ -115,9 +115,14 @@ def check_range(
             and (x <= high if high_inclusive else x < high)):
         return np.asarray(x)
     arr = as_float_array(name, value)
-    lo_ok = arr >= low if low_inclusive else arr > low
-    hi_ok = arr <= high if high_inclusive else arr < high
-    if not (lo_ok & hi_ok).all():
+    if arr.size <= 16:  # a short array in Python floats (the same comparisons)
+        ok = all((v >= low if low_inclusive else v > low) and (v <= high if high_inclusive else v < high)
+                 for v in arr.ravel().tolist())
+    else:
+        lo_ok = arr >= low if low_inclusive else arr > low
+        hi_ok = arr <= high if high_inclusive else arr < high
+        ok = bool((lo_ok & hi_ok).all())
+    if not ok:
         lb = "[" if low_inclusive else "("
         hb = "]" if high_inclusive else ")"
         raise InputError(
@@ -145,7 +150,11 @@ def warn_outside(name: str, value: ArrayLike, low: float, high: float, source: s
     if x is not None and low <= x <= high:
         return
     arr = np.asarray(value, dtype=float)
-    if np.any(arr < low) or np.any(arr > high):
+    if arr.size <= 16:  # a short array in Python floats (a NaN is outside neither bound, as below)
+        outside = any(v < low or v > high for v in arr.ravel().tolist())
+    else:
+        outside = bool((arr < low).any() or (arr > high).any())
+    if outside:
         warnings.warn(
             f"{name} = {_show(arr)} is outside the validity range [{low:g}, {high:g}] of {source}",
             ValidityRangeWarning,
