@@ -44,7 +44,7 @@ _DOCS.section("span_parameters", "span_tension")
 def _catenary_parts(chord_length, inclination, tension, mass_per_length, gravity):
     L = check_positive("chord_length", chord_length, "m")
     g = as_float_array("inclination", inclination)
-    if np.any(np.abs(g) >= np.pi / 2):
+    if (np.abs(g) >= np.pi / 2).any():  # g an array (as_float_array)
         raise InputError(f"inclination must lie in (-π/2, π/2) rad (not a vertical span), got {g}")
     H = check_positive("tension", tension, "N")
     q = check_positive("mass_per_length", mass_per_length, "kg/m")

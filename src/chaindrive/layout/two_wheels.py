@@ -122,7 +122,7 @@ def centre_distance_approx(pitch: ArrayLike, teeth_1: ArrayLike, teeth_2: ArrayL
     X = check_positive("links", links)
     b = 2.0 * X - z1 - z2
     disc = b**2 - 8.0 / np.pi**2 * (z2 - z1) ** 2
-    if np.any(b <= 0) or np.any(disc < 0):
+    if np.asarray(b <= 0).any() or np.asarray(disc < 0).any():
         raise InfeasibleError(
             f"links = {X} is too short for wheels of {z1} and {z2} teeth: need "
             "2X - z1 - z2 > sqrt(8/pi^2) |z2 - z1| (links must exceed about (z1+z2)/2 + 0.45|z2-z1|)"
