@@ -473,7 +473,8 @@ def _taut_extremes(poly: WheelPolygon, guide: GuideEnd | None, seats: np.ndarray
     Each stretch between seatings is smooth: its extremes are at its ends (the one-sided
     limits at the seatings) or where its derivative vanishes. The derivative is sampled
     at ``points`` angles per stretch; each sign change that could hold an extreme is refined
-    by Brent's method on the analytic derivative (:func:`_taut_motion`) to ``1e-15`` rad.
+    by Brent's method on the analytic derivative (:func:`_taut_motion`) to ``1e-11`` rad (the
+    value, flat there, to ~1e-22 of itself).
 
     .. math:: rac{d}{dφ}rac{dx}{dφ} = 0,\qquad rac{d}{dφ}rac{d^2x}{dφ^2} = 0,\qquad
               rac{dy}{dφ} = R\sin β = 0
@@ -515,7 +516,8 @@ def _taut_extremes(poly: WheelPolygon, guide: GuideEnd | None, seats: np.ndarray
             def slope(x: float, beta0: float = beta0, which: int = which) -> float:
                 return _taut_motion(R, beta0 - x, guide)[which + 1]
 
-            x = brentq(slope, float(phi[r, c]), float(phi[r, c + 1]), xtol=1e-15, rtol=1e-15)
+            # at an extreme the value is flat: 1e-11 rad off moves it by ~1e-22 of itself
+            x = brentq(slope, float(phi[r, c]), float(phi[r, c + 1]), xtol=1e-11)
             value = float(_taut_motion(R, beta0 - x, guide)[which])
             low, high = min(low, value), max(high, value)
         out.append((low, high))
