@@ -266,7 +266,8 @@ def taut_seating_angles(poly: WheelPolygon, guide: GuideEnd | None = None) -> np
     Root of ``g(φ) = (V_{k+1} - S_k) × (G - S_k)`` where it changes from + (hinge
     outside the span line) to -, bracketed on a 1441-point scan of ``±π/2`` around the
     estimate "link symmetric about the tangent point seen from ``G``", refined by
-    Brent's method to ``1e-15`` rad. Valid for ``|G| > R``.
+    Brent's method to ``1e-15`` rad. Valid for ``|G| > R``. Free entry: the estimate
+    itself (the link level).
 
     .. math:: (V_{k+1} - S_k) \times (G - S_k) = 0
 
@@ -301,7 +302,9 @@ def taut_seating_angles(poly: WheelPolygon, guide: GuideEnd | None = None) -> np
         def gap(p: np.ndarray, j: int = j, angles: tuple[Any, Any] = (b_prev, b_j)) -> np.ndarray:
             return _taut_gap(poly, j - 1, p, guide, angles)
 
-        out[j] = _find_crossing(gap, est, f"hinge {j}")
+        # free entry: the seating is the estimate itself (the link (j-1, j) level, its ends at
+        # equal heights R cos(±(b_j - b_prev)/2): the root of the gap in closed form)
+        out[j] = est if guide is None else _find_crossing(gap, est, f"hinge {j}")
     out[n] = out[0] + poly.period
     if any(b <= a for a, b in zip(out.tolist(), out[1:].tolist(), strict=False)):  # np.any(np.diff(out) <= 0)
         raise InfeasibleError("seating angles are not increasing: the span cuts the wheel")
