@@ -148,7 +148,8 @@ def _support(w: _Wheel, phase: np.ndarray, alpha: np.ndarray) -> tuple[np.ndarra
 
 def _span(wa: _Wheel, wb: _Wheel, pa: np.ndarray, pb: np.ndarray, alpha0: float):
     """Common supporting line of two wheels for every phase pair: (alpha, length, angle_a, k_a, angle_b, k_b, ok)."""
-    alpha = np.full(np.broadcast_shapes(pa.shape, pb.shape), alpha0, dtype=float)
+    alpha = np.empty((pa.shape[0], pb.shape[1]))  # np.full(np.broadcast_shapes(pa.shape, pb.shape), alpha0)
+    alpha.fill(alpha0)
     ok = np.zeros(alpha.shape, dtype=bool)
     # each support point as a circle: the vertex (radius 0) or the wheel (signed radius); its
     # coordinates one by one (centre + R (cos, sin): the same sums as the stacked pair)
@@ -183,8 +184,9 @@ def _span_iterations(wa, wb, pa, pb, alpha, ok, drho, a_xy, b_xy):
         if same:
             ok = np.isfinite(new) & (D > np.abs(drho))
             length = np.sqrt(np.maximum(D**2 - drho**2, 0.0))
-            if np.shape(length) != alpha.shape:
-                length = np.full(alpha.shape, length)
+            if np.shape(length) != alpha.shape:  # np.full(alpha.shape, length)
+                length, value = np.empty(alpha.shape), length
+                length.fill(value)
             return new, length, ang_a, ka, ang_b, kb, ok
         alpha = new
     return alpha, np.full(alpha.shape, np.nan), ang_a, ka, ang_b, kb, ok
@@ -227,7 +229,7 @@ def _span_terms(wheels: list[_Wheel], grids: list[np.ndarray], circle) -> tuple[
     if exact and n > 2:
         for i in range(n):
             # the shortest wrap of wheel i over the phases of its neighbours, at each of its phases
-            shortest = outs[i].min(axis=1) - ins[(i - 1) % n].max(axis=0)
+            shortest = np.minimum.reduce(outs[i], axis=1) - np.maximum.reduce(ins[(i - 1) % n], axis=0)
             exact &= bool(np.minimum.reduce(shortest) >= -1e-9)
     return terms, exact
 
