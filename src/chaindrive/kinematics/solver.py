@@ -322,11 +322,10 @@ def _locate(poly: WheelPolygon, seats: np.ndarray, phi: np.ndarray,
     T = poly.period
     q = np.floor((phi - seats[0]) / T)
     r = phi - q * T
-    j = np.searchsorted(seats[:n], r, side="right") - 1
     if n > 1:
-        j = np.minimum(np.maximum(j, 0), n - 1)  # np.clip(j, 0, n - 1)
-    else:
-        j = np.zeros(j.shape, dtype=j.dtype)
+        j = np.minimum(np.maximum(seats[:n].searchsorted(r, side="right") - 1, 0), n - 1)  # np.clip(j, 0, n - 1)
+    else:  # one link a period: always the first
+        j = np.zeros(np.shape(r), dtype=np.intp)
     ca, cl = poly._cum()
     beta0 = poly.phase + q * T + ca[j]
     c = q * poly.advance + cl[j]
