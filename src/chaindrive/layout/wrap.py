@@ -154,7 +154,7 @@ def _wrap_layout(c: np.ndarray, r: np.ndarray, s: np.ndarray) -> WrapLayout:
     d = c_next - c
     D = np.hypot(d[:, 0], d[:, 1])
     drho = rho_next - rho
-    if np.any(D <= np.abs(drho)):
+    if (D <= np.abs(drho)).any():
         bad = int(np.argmax(D <= np.abs(drho)))
         raise InfeasibleError(
             f"wheels {bad} and {(bad + 1) % n} overlap so that the chain has no common "
@@ -163,14 +163,15 @@ def _wrap_layout(c: np.ndarray, r: np.ndarray, s: np.ndarray) -> WrapLayout:
     delta = np.arctan2(d[:, 1], d[:, 0])
     alpha = delta - np.arcsin(drho / D)
     ell = np.sqrt(D**2 - drho**2)
-    t = np.column_stack([np.cos(alpha), np.sin(alpha)])
-    nrm = np.column_stack([-t[:, 1], t[:, 0]])
+    # the normal (-sin, cos) of each span filled in (np.column_stack of the same columns)
+    nrm = np.empty((n, 2))
+    nrm[:, 0], nrm[:, 1] = -np.sin(alpha), np.cos(alpha)
     start = c - rho[:, None] * nrm
     end = c_next - rho_next[:, None] * nrm
     alpha_in = np.concatenate((alpha[-1:], alpha[:-1]))
     turn = np.mod(s * (alpha - alpha_in), 2 * np.pi)
     wrap = np.where(np.abs(turn) <= 1e-12, 0.0, turn)  # np.isclose(turn, 0, atol=1e-12) written out
-    total_turn = float(np.sum(s * wrap))
+    total_turn = float(np.add.reduce(s * wrap))  # np.sum
     if not abs(total_turn - 2 * np.pi) <= 1e-6 + 1e-5 * 2 * np.pi:  # np.isclose(.., 2π, atol=1e-6)
         raise InfeasibleError(
             "the wheels do not form a simple counter-clockwise loop in the given order "
@@ -180,7 +181,7 @@ def _wrap_layout(c: np.ndarray, r: np.ndarray, s: np.ndarray) -> WrapLayout:
     arc = r * wrap
     return WrapLayout(centres=c, radii=r, sides=s, span_start=start, span_end=end,
                       span_length=ell, span_angle=alpha, wrap_angle=wrap, wrap_length=arc,
-                      length=float(ell.sum() + arc.sum()))
+                      length=float(np.add.reduce(ell) + np.add.reduce(arc)))  # ell.sum() + arc.sum()
 
 
 def span_lengths(centres: np.ndarray, radii: np.ndarray, sides: np.ndarray) -> np.ndarray | None:
@@ -212,12 +213,12 @@ def span_lengths(centres: np.ndarray, radii: np.ndarray, sides: np.ndarray) -> n
     d = c_next - centres
     D = np.hypot(d[:, 0], d[:, 1])
     drho = rho_next - rho
-    if np.any(D <= np.abs(drho)):
+    if (D <= np.abs(drho)).any():  # (the array methods and the ufunc reduction: the same tests and sums)
         return None
     alpha = np.arctan2(d[:, 1], d[:, 0]) - np.arcsin(drho / D)
     turn = np.mod(sides * (alpha - np.concatenate((alpha[:, -1:], alpha[:, :-1]), axis=1)), 2 * np.pi)
     wrap = np.where(np.abs(turn) <= 1e-12, 0.0, turn)
-    if not np.all(np.abs(np.sum(sides * wrap, axis=1) - 2 * np.pi) <= 1e-6 + 1e-5 * 2 * np.pi):
+    if not (np.abs(np.add.reduce(sides * wrap, axis=1) - 2 * np.pi) <= 1e-6 + 1e-5 * 2 * np.pi).all():
         return None
     return np.sqrt(D**2 - drho**2)
 
