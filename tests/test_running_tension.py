@@ -129,7 +129,7 @@ def test_model_against_the_cached_sweep():
         inside.append(not RT.validated_range_violations(w * r["teeth_driving"] * r["pitch"] / (2 * math.pi),
                                                         float(ratio)))
     err, inside = np.abs(np.array(err)), np.array(inside)
-    assert int(inside.sum()) == c.validated["drives"] == 35
+    assert int(inside.sum()) == c.validated["drives"] == 63
     assert err[inside].max() == pytest.approx(c.calibration_worst, abs=1e-3)
     assert err[~inside].max() == pytest.approx(c.validated["outside_worst"], abs=1e-3)
 
@@ -145,8 +145,8 @@ def test_sweep_subset_simulated_again(name):
     row = sw.simulate_row(drive)
     cached = next(r for r in sw.read_cache() if r["name"] == name)
     assert row.sim_peak == pytest.approx(cached["sim_peak"], rel=0.02)
-    # all three are outside the validated range (the tooth frequency within 4 % of the span's mode 9 (S04),
-    # 2 % of mode 8 (S27), 1 % of mode 10 (S45)): the model within its stated accuracy there
+    # the model within its stated out-of-sample accuracy of each (the damped sweep; the three sat on
+    # span modes 9, 8 and 10, outside the undamped calibration's range)
     f = float(RT.running_peak_tension(row.tight, row.rpm * math.pi / 30, row.pitch, row.teeth_driving,
                                       row.mass_per_length, row.contact_stiffness))
     c = RT.calibration()
@@ -220,10 +220,11 @@ def test_cross_validation_stored_and_recomputed():
     assert np.sqrt(np.mean(err**2)) == pytest.approx(c.crossval_rms, abs=1e-3)
     short = cs.crossvalidate(cs.load())
     assert np.abs(short).max() == pytest.approx(c.short_crossval_worst, abs=1e-3)
-    # regression of the finding (docs/design.md, "The running peak tension"): over the whole sweep
-    # the aim of 15 % worst is not met against either reference, the rms is about 11 %
-    assert 0.30 < c.crossval_worst < 0.40 and 0.09 < c.crossval_rms < 0.13
-    assert 0.30 < c.short_crossval_worst < 0.40
+    # regression of the finding (docs/design.md, "The running peak tension", the damped sweep): over
+    # the whole sweep the aim of 15 % worst is not met against either reference (22.3 % long, 25.5 %
+    # short), the rms is about 8 % (undamped spans, before 2026-11-29: 33.5 % and 35.6 %, rms 11 %)
+    assert 0.20 < c.crossval_worst < 0.25 and 0.07 < c.crossval_rms < 0.09
+    assert 0.23 < c.short_crossval_worst < 0.28
 
 
 def test_chordal_rise_fundamental_against_quadrature():
@@ -241,8 +242,8 @@ def test_chordal_rise_fundamental_against_quadrature():
 
 def test_span_resonance_term_does_not_explain_the_sweep():
     # the span-resonance term with its derived coefficient (1) makes the model worse over the
-    # sweep at every damping ratio tried, the S13 outlier stays (docs/design.md): the reason it
-    # is not in the package; a regression of that finding
+    # sweep at every damping ratio tried (docs/design.md): the reason it is not in the package;
+    # a regression of that finding, on the damped sweep as on the undamped one
     cs = _calibration_script()
     a = cs.load()
     cal = a["index"] < cs.CALIBRATION_DRIVES
@@ -254,32 +255,28 @@ def test_span_resonance_term_does_not_explain_the_sweep():
             return cs.model(c, s) + extra[np.searchsorted(a["index"], s["index"])]
 
         err = f(cs.fit(a, cal, f), a) / a["sim_peak"] - 1
-        assert np.abs(err[cal]).max() > 0.9 * np.abs(base[cal]).max()
-        assert np.sqrt(np.mean(err[cal] ** 2)) > np.sqrt(np.mean(base[cal] ** 2))
+        # worse on the calibration drives' worst and on the held-out drives (S48-S63) at every zeta
+        # (damped sweep, measured: base 17.3 % / 26.4 %; zeta 0.2: 18.8 % / 30.2 %, 0.02: 265 % / 119 %)
+        assert np.abs(err[cal]).max() > np.abs(base[cal]).max()
+        assert np.abs(err[~cal]).max() > np.abs(base[~cal]).max()
 
 
 @pytest.mark.slow
-def test_worst_drive_is_friction_driven_not_a_damped_resonance():
-    # docs/design.md, "Span resonance: tested, not kept": the sweep's worst drive S13 (20B 18/53 at
-    # 152 rpm, the model 36 % low) re-simulated: without the roller-tooth friction (the
-    # simulation's damping) its peak falls (measured 9120 -> 7282 N over 40 tooth periods,
-    # benchmarks/dynamic_load.py --friction),
-    # where a linearly damped resonance would rise; a regression of that finding
+def test_undamped_spans_reproduce_the_former_sweep():
+    # sweep drive S13 (20B 18/53 at 152 rpm, its tooth frequency 0.94 of the tight span's fourth
+    # transverse mode) with span_damping = 0 reproduces the undamped sweep of the sessions before
+    # 2026-11-29 (median per-period peak 9065 N, mean 4676 N: the cache then); with the default
+    # damping (zeta = 0.02 at the tooth frequency) the cached 5350 N: the undamped resonance raised
+    # the peak by 69 % (docs/simulation.md, "Span damping"; docs/design.md, "The damped sweep")
     sw = _sweep()
     s = next(d for d in sw.sweep_drives(64) if d.name == "S13")
     cached = next(r for r in sw.read_cache() if r["name"] == "S13")
     d = sw.drive_of(s)
     periods, settle = sw.periods_and_settle(d)
-    peaks = {}
-    for mu in (0.1, 0.0):
-        t, ts = sw.settled_run(d, periods, settle, contact_stiffness=cached["contact_stiffness"], friction=mu)
-        peaks[mu] = float(np.median(sw.tooth_peaks(d, t, ts)))
-    assert peaks[0.1] == pytest.approx(cached["sim_peak"], rel=0.03)
-    assert peaks[0.0] < 0.92 * peaks[0.1]
-    model = float(RT.running_peak_tension(cached["tight"], cached["rpm"] * math.pi / 30, cached["pitch"],
-                                          cached["teeth_driving"], cached["mass_per_length"],
-                                          cached["contact_stiffness"]))
-    assert model / peaks[0.1] - 1 < -0.25
+    t, ts = sw.settled_run(d, periods, settle, contact_stiffness=cached["contact_stiffness"], span_damping=0.0)
+    assert float(np.median(sw.tooth_peaks(d, t, ts))) == pytest.approx(9065.0, rel=0.03)
+    assert float(ts.mean()) == pytest.approx(4676.0, rel=0.03)
+    assert cached["sim_peak"] == pytest.approx(5350.0, rel=0.01)
 
 
 _RANGE_ARGS = dict(pitch=0.0254, teeth=19, teeth_driven=57, angular_velocity=100.5, centre_distance=1.05,
@@ -298,30 +295,37 @@ def test_range_violations_name_each_input_outside(change, name, value):
 
 def test_leave_one_out_regression():
     # issue 29.4, out of sample over the whole sweep: each of the 64 drives predicted by the constants
-    # fitted on the 63 others (measured: short reference worst 36.5 % (S13), rms 10.9 %, 10 drives
-    # beyond 15 %; long reference 34.4 % (S13), rms 10.8 %, 11 beyond 15 %); a regression
+    # fitted on the 63 others (the damped sweep, measured: short reference worst 24.0 % (S63), rms
+    # 8.0 %, 6 drives beyond 15 %; long reference 21.1 % (S63), rms 7.8 %, 6 beyond 15 %; the undamped
+    # sweep had 36.5 % and 34.4 % (S13), 10 and 11 beyond 15 %); a regression
     cs = _calibration_script()
-    for ref, many in (("short", 10), ("long", 11)):
+    for ref, many, top in (("short", 6, 0.26), ("long", 6, 0.23)):
         a = cs.load(ref)
         err = np.abs(cs.leave_one_out(a))
-        assert len(err) == 64 and a["index"][np.argmax(err)] == 13
-        assert 0.30 < err.max() < 0.42 and 0.09 < np.sqrt(np.mean(err**2)) < 0.13
+        assert len(err) == 64 and a["index"][np.argmax(err)] == 63
+        assert 0.19 < err.max() < top and 0.07 < np.sqrt(np.mean(err**2)) < 0.09
         assert int((err > 0.15).sum()) == many
     assert RT.calibration().loo_worst == pytest.approx(np.abs(cs.leave_one_out(cs.load("long"))).max(), abs=1e-3)
 
 
 def test_steady_state_against_the_sweep_cached():
-    # the steady state of the simulation (warm start, settling detected; benchmarks/_dynamic_sweep.py
-    # --steady) against the sweep's runs from rest: lower on average, worst on S13 (measured -35 %,
-    # rms 13.5 %, mean -8.6 %): not a better stand-in for the reference than the reduced model
-    # (docs/design.md, "The running peak tension")
+    # the steady state of the simulation (warm start, settling detected, the implicit step;
+    # benchmarks/_dynamic_sweep.py --steady) against the sweep's runs from rest (the damped sweep):
+    # its MEAN tension within 1.5 % of the long reference's on every drive, its per-period peak low
+    # on average (measured -6.9 %, worst -33.7 % on S53, rms 9.5 %: the implicit step's numerical
+    # damping of the seating impacts, docs/simulation.md "Integrator"): not a better stand-in for the
+    # peak than the reduced model (docs/design.md, "The running peak tension")
     sw = _sweep()
     ref = {r["name"]: r for r in sw.read_cache()}
-    e = {r["name"]: float(r["pp"]) / ref[r["name"]]["sim_peak"] - 1 for r in sw.read_cache(sw.STEADY_CACHE)}
+    long = {r["name"]: r for r in sw.read_cache(sw.LONG_CACHE)}
+    rows = sw.read_cache(sw.STEADY_CACHE)
+    e = {r["name"]: float(r["pp"]) / ref[r["name"]]["sim_peak"] - 1 for r in rows}
     err = np.array(list(e.values()))
     assert len(err) == 64
-    assert min(e, key=e.get) == "S13" and -0.40 < err.min() < -0.30
-    assert -0.12 < err.mean() < -0.05 and 0.11 < np.sqrt(np.mean(err**2)) < 0.16
+    assert min(e, key=e.get) == "S53" and -0.37 < err.min() < -0.30
+    assert -0.09 < err.mean() < -0.05 and 0.08 < np.sqrt(np.mean(err**2)) < 0.11
+    mean = np.array([float(r["mean"]) / long[r["name"]]["long_mean"] - 1 for r in rows])
+    assert np.abs(mean).max() < 0.016
 
 
 @pytest.mark.slow
@@ -353,49 +357,43 @@ def test_simulated_dynamic_tension_refuses_a_chain_without_width():
 
 
 def test_validated_range_stored_and_recomputed():
-    # issue 29.4: the validated range chosen on the sweep (the largest candidate whose out-of-sample
-    # worst is <= 15 %: the tooth frequency clear of the tight span's transverse modes 1-20 by 5 %,
-    # the sweep's whole speed range; 35 drives, measured within 12.8 %, rms 6.6 %), and the check of
-    # that choice (chosen again inside each of four folds: 38 held-out drives within 15.8 %, rms
-    # 7.3 %: the aim missed by 0.8 point there); recomputed from the cached sweep
+    # issue 29.4: the validated range chosen on the (damped) sweep: no candidate meets the 15 % aim, so
+    # the sweep's whole range (chain speed <= 12 m/s: 63 of the 64 drives; measured out of sample worst
+    # 22.6 %, rms 8.3 %), no resonance band (the drives on a transverse mode are over-predicted now, the
+    # safe side: S63, S18, S00, S02, S11); recomputed from the cached sweep
     cs = _calibration_script()
     a = cs.load("long")
     v = RT.calibration().validated
-    vmax, band, modes, n, _ = cs.choose_range(a, np.ones(64, bool))
-    assert (vmax, band, modes, n) == (v["chain_speed_max"], v["resonance_band"], v["resonance_modes"], v["drives"])
-    assert (vmax, band, modes, n) == (12.0, 0.05, 20, 35)
-    inside = cs.in_range(a, vmax, band, modes)
+    assert cs.choose_range(a, np.ones(64, bool)) is None
+    assert (v["chain_speed_max"], v["resonance_band"], v["resonance_modes"], v["drives"]) == (12.0, 0.0, 0, 63)
+    inside = cs.in_range(a, 12.0, 0.0, 0)
+    assert int(inside.sum()) == 63
     err = cs.out_of_sample(cs.subset(a, inside))
-    assert np.abs(err).max() == pytest.approx(v["worst"], abs=1e-3) and v["worst"] <= 0.15
+    assert np.abs(err).max() == pytest.approx(v["worst"], abs=1e-3) and 0.20 < v["worst"] < 0.25
     assert np.sqrt(np.mean(err**2)) == pytest.approx(v["rms"], abs=1e-3)
     short = cs.out_of_sample(cs.subset(cs.load(), inside))
     assert np.abs(short).max() == pytest.approx(v["short_worst"], abs=1e-3)
     idx, nested = cs.nested_check(a)
-    assert len(idx) == v["nested_drives"] == 38
+    assert len(idx) == v["nested_drives"] == 63
     assert np.abs(nested).max() == pytest.approx(v["nested_worst"], abs=1e-3)
-    assert 0.15 < v["nested_worst"] < 0.17
-    # the sweep's two worst drives are span resonances, outside the range
-    r = cs.frequency_ratio(a)
-    assert RT.span_resonance_mode(r[a["index"] == 13]).tolist() == [4]
-    assert RT.span_resonance_mode(r[a["index"] == 2]).tolist() == [6]
+    # the resonance-band candidates of the undamped calibration would not meet the aim either
+    assert cs.choose_range(a, np.ones(64, bool), bands=cs.FORMER_BANDS) is None
 
 
 def test_analysis_states_the_validated_range_or_warns():
-    # the roller example (16B 19/57 at 960 rpm, z w / w1 = 23.1) is inside the validated range: its
-    # validity says so; the self-regulating example's tooth frequency is within 5 % of its tight span's
-    # ninth mode: a ValidityRangeWarning; sweep drive S13 (mode 4): warned
+    # the roller example (16B 19/57 at 960 rpm) is inside the validated range: its validity says so,
+    # with the simulation's span-damping assumption; the self-regulating example (a 23.4-pitch span,
+    # outside the sweep's 25-60) says it is outside; a drive above 12 m/s is warned
     from chaindrive.analysis import analyze_drive
     from chaindrive.drive.project import load_project
 
     a = analyze_drive(load_project(ROOT / "examples" / "roller_industrial.toml"), include=["loads"])
     assert not any("validated range" in str(w) for w in a.warnings)
-    assert "in its validated range" in a.loads.dynamic_validity and "12.8 %" in a.loads.dynamic_validity
+    assert "in its validated range" in a.loads.dynamic_validity and "22.6 %" in a.loads.dynamic_validity
+    assert "zeta = 0.02" in a.loads.dynamic_validity
     b = analyze_drive(load_project(ROOT / "examples" / "self_regulating.toml"), include=["loads"])
-    assert any("outside its validated range" in str(w) and "mode 9" in str(w) for w in b.warnings)
-    sw = _sweep()
-    s13 = analyze_drive(sw.drive_of(sw.sweep_drives(64)[13]), include=["loads"])
-    assert any("transverse mode 4" in str(w) for w in s13.warnings)
-    assert "outside its validated range" in s13.loads.dynamic_validity
+    assert "outside its validated range" in b.loads.dynamic_validity
+    assert RT.validated_range_violations(12.5, 7.0) == ("chain speed 12.5 m/s is above 12 m/s",)
 
 
 def test_tooth_frequency_ratio_against_the_string_by_hand():
@@ -438,33 +436,33 @@ def test_validated_range_refuses_bad_input():
 
 def test_analysis_keeps_the_reduced_model_outside_the_input_ranges_warned():
     # the self-regulating example's 23.4-pitch tight span is outside the sweep's 25-60 pitches: the
-    # reduced model's F_d (4201 N), warned; the steady state is not taken instead (on the three drives
-    # outside the ranges checked from rest it was -6.7, -7.8, -39.4 % off, the model -16.0, -9.9,
-    # -18.8 %: benchmarks/data/dynamic_outside*.csv); the analysis imports no simulation
+    # reduced model's F_d (2651 N; 4201 N with the undamped calibration), warned; the steady state is
+    # not taken instead (on the three drives outside the ranges checked from rest its per-period peak
+    # was -16.7, -5.2, -16.7 % off, the model -13.8, -21.2, -2.7 %: benchmarks/data/dynamic_outside*.csv);
+    # the analysis imports no simulation
     # (tests/test_architecture.py: the simulation is the floor above)
     from chaindrive.analysis import analyze_drive
     from chaindrive.drive.project import load_project
 
     a = analyze_drive(load_project(ROOT / "examples" / "self_regulating.toml"), include=["loads"])
     assert "running_peak_tension" in a.loads.dynamic_source
-    assert a.loads.dynamic == pytest.approx(4201, rel=0.01)
+    assert a.loads.dynamic == pytest.approx(2651, rel=0.01)
     assert any("centre_pitches = 23.4286 is outside the validity range [25, 60]" in w for w in a.warnings)
 
 
-def test_long_reference_does_not_rescue_the_worst_drives():
-    # all 64 sweep drives run on to 4 s (benchmarks/_dynamic_sweep.py 64 --long): their six window
-    # medians lie 0.6-34.2 % apart, the short reference is -11.1 to +7.9 % off the long; against
-    # the long reference the left-out model still misses S13 by more than 30 % (a span resonance,
-    # mode 4): the misses are the model's, not the window's (docs/design.md, "The reference")
+def test_damped_reference_is_settled():
+    # all 64 sweep drives run on to 4 s (benchmarks/_dynamic_sweep.py 64 --long) with the spans damped
+    # (zeta = 0.02 at the tooth frequency): their six window medians lie 0.01-6.5 % apart (median
+    # 0.7 %; undamped 0.6-34.2 %, median 7.4 %), and the one-window reference is within 2.3 % of the
+    # long one (undamped -11.1 to +7.9 %): the references are settled; what is left is the model's
+    # (docs/design.md, "The damped sweep")
     cs = _calibration_script()
     a, short = cs.load("long"), cs.load()
     assert len(a["index"]) == 64 and (a["index"] == short["index"]).all()
     apart = a["window_peak_high"] / a["window_peak_low"] - 1
-    assert 0.005 < apart.min() < 0.01 and 0.33 < apart.max() < 0.35
+    assert apart.max() < 0.07 and np.median(apart) < 0.01
     diff = short["sim_peak"] / a["sim_peak"] - 1
-    assert -0.12 < diff.min() < -0.10 and 0.07 < diff.max() < 0.09
-    loo = cs.leave_one_out(a)
-    assert loo[a["index"] == 13][0] < -0.30
+    assert np.abs(diff).max() < 0.025
 
 
 def test_simulated_dynamic_tension_refuses_a_non_finite_simulation(monkeypatch):
@@ -483,15 +481,15 @@ def test_simulated_dynamic_tension_refuses_a_non_finite_simulation(monkeypatch):
 
 def test_outside_the_ranges_cached():
     # three drives each outside one of the sweep's ranges (benchmarks/_dynamic_sweep.py --outside):
-    # the analysis's steady state against the run from rest is -6.7, -7.8 and -39.4 % (the long
-    # span X02), the reduced model extrapolated -16.0, -9.9 and -18.8 % (docs/design.md): neither
-    # is validated there; a regression of that finding
+    # the steady state's per-period peak against the run from rest is -16.7, -5.2 and -16.7 %, the
+    # reduced model extrapolated -13.8, -21.2 and -2.7 % (docs/design.md): neither is validated
+    # there; a regression of that finding (the damped simulation)
     sw = _sweep()
     rest = {r["name"]: r for r in sw.read_cache(sw.OUTSIDE_CACHE)}
     steady = {r["name"]: float(r["pp"]) for r in sw.read_cache(sw.OUTSIDE_STEADY_CACHE)}
     err = {n: steady[n] / rest[n]["sim_peak"] - 1 for n in rest}
     assert sorted(err) == ["X00", "X01", "X02"]
-    assert -0.10 < err["X00"] < -0.03 and -0.11 < err["X01"] < -0.04 and -0.45 < err["X02"] < -0.33
+    assert -0.20 < err["X00"] < -0.13 and -0.08 < err["X01"] < -0.02 and -0.20 < err["X02"] < -0.13
     for s in sw.outside_drives():
         r = rest[s.name]
         assert RT.running_tension_range_violations(

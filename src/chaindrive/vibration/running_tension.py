@@ -404,12 +404,14 @@ def span_resonance_mode(frequency_ratio: ArrayLike, band: float | None = None, m
     -----
     The band and the modes are not derived: they are the validated range's
     (:func:`calibration`, ``validated``), chosen on the calibration sweep (docs/design.md,
-    "The running peak tension"): the sweep's two worst drives are at ``n`` = 4 (``z ω / ω₁``
-    3.93) and ``n`` = 6 (5.99), their tension swinging at twice the tooth frequency.
+    "The running peak tension"). With the simulation's spans damped (since 2026-11-29) the
+    drives on a mode are those the model over-predicts, so the stored range excludes none
+    (band 0); the undamped calibration excluded ±5 % of modes 1–20, where its two worst
+    drives were (``n`` = 4 at ``z ω / ω₁`` 3.93, ``n`` = 6 at 5.99).
 
     Examples
     --------
-    >>> span_resonance_mode([3.93, 4.5, 5.99, 25.0]).tolist()
+    >>> span_resonance_mode([3.93, 4.5, 5.99, 25.0], band=0.05, modes=20).tolist()
     [4, 0, 6, 0]
     """
     r = check_positive("frequency_ratio", frequency_ratio)
@@ -431,8 +433,9 @@ def validated_range_violations(chain_speed: float, frequency_ratio: float) -> tu
     """Why a drive lies outside the reduced model's validated range (empty inside).
 
     The validated range (:func:`calibration`, ``validated``): chain speed at most ``v_max``
-    (12 m/s, the sweep's whole range) and the tooth frequency not within ``±δ`` (5 %) of any of
-    the tight span's first ``N`` (20) transverse natural frequencies (:func:`span_resonance_mode`).
+    (12 m/s, the sweep's whole range) and, when the calibration has a band ``δ > 0``, the
+    tooth frequency not within ``±δ`` of any of the tight span's first ``N`` transverse
+    natural frequencies (:func:`span_resonance_mode`; the stored calibration has none).
     Inside it, over the sweep's drives, the model is within ``validated["worst"]`` of the
     simulation out of sample (docs/design.md, "The running peak tension").
 
@@ -454,7 +457,6 @@ def validated_range_violations(chain_speed: float, frequency_ratio: float) -> tu
     >>> for why in validated_range_violations(13.0, 3.93):
     ...     print(why)
     chain speed 13 m/s is above 12 m/s
-    the tooth frequency is within 5 % of the tight span's transverse mode 4 (z w / w1 = 3.93)
     """
     v = float(check_positive("chain_speed", chain_speed, "m/s"))
     r = float(check_positive("frequency_ratio", frequency_ratio))
