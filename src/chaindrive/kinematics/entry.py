@@ -274,8 +274,9 @@ def _exact(case: _Case, phi):
 def _period_seats(case: _Case, seats: np.ndarray) -> np.ndarray:
     """The seating angles within one period, sorted (the exact model's ``seats``)."""
     T = case.period
-    s = np.mod(seats[:-1], T)
-    return np.sort(np.where(np.abs(s - T) <= 1e-12, 0.0, s))  # np.isclose(s, T, rtol=0, atol=1e-12)
+    # np.sort(np.where(np.abs(s - T) <= 1e-12, 0.0, s)) of the one or two seatings, in Python floats
+    # (np.isclose(s, T, rtol=0, atol=1e-12) written out)
+    return np.array(sorted(0.0 if abs(x - T) <= 1e-12 else x for x in np.mod(seats[:-1], T).tolist()))
 
 
 @lru_cache(maxsize=64)

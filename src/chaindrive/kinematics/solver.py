@@ -467,6 +467,10 @@ def _taut_motion(R: float, beta: Any, guide: GuideEnd | None) -> tuple[Any, Any,
     return -us, ddm, us * (2.0 * ddm / D + (R * R - us * us) / (D * D) + us_s / D + 1.0), sy, sx
 
 
+_UNIT_33 = np.linspace(0.0, 1.0, 33)  # _taut_extremes' default samples of a stretch (read only)
+_UNIT_33.flags.writeable = False
+
+
 def _taut_extremes(poly: WheelPolygon, guide: GuideEnd | None, seats: np.ndarray,
                   points: int = 33) -> tuple[tuple[float, float], ...]:
     r"""Smallest and largest chain speed, acceleration (per unit wheel speed: ``dx/dφ`` [m/rad],
@@ -500,7 +504,8 @@ def _taut_extremes(poly: WheelPolygon, guide: GuideEnd | None, seats: np.ndarray
     # each stretch with its own seated hinge (located at its middle), ends included: there the
     # one-sided limits
     _, b0, _ = _locate(poly, seats, 0.5 * (lo + hi), index=False)
-    phi = lo[:, None] + (hi - lo)[:, None] * np.linspace(0.0, 1.0, int(points))[None, :]  # (n, points)
+    unit = _UNIT_33 if points == 33 else np.linspace(0.0, 1.0, int(points))
+    phi = lo[:, None] + (hi - lo)[:, None] * unit[None, :]  # (n, points)
     b0 = b0[:, None] + np.zeros(phi.shape)  # each stretch's (+ 0.0: the same numbers)
     motion = _taut_motion(R, b0 - phi, guide)
     out = []
