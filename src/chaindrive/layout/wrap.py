@@ -321,7 +321,7 @@ def teeth_in_mesh(wrap_angle: ArrayLike, teeth: ArrayLike) -> np.ndarray:
     9
     """
     th = check_nonnegative("wrap_angle", wrap_angle, "rad")
-    if np.any(th > 2 * np.pi + 1e-12):
+    if np.asarray(th > 2 * np.pi + 1e-12).any():
         raise InputError(f"wrap_angle must lie in [0, 2π] rad, got {th}")
     z = check_teeth("teeth", teeth, minimum=2)
     return np.floor(th * z / (2 * np.pi) + 1e-9).astype(int)
