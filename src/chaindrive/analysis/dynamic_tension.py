@@ -110,7 +110,7 @@ def dynamic_tension(drive: Drive, layout: DriveLayout, acceleration_peak: float,
     >>> round(dynamic_tension(d, drive_layout(d), 127.0).value)
     3934
     >>> round(dynamic_tension(d, drive_layout(d), 127.0, tight=2254.09).value)
-    4040
+    2472
     """
     sm = None if moving_mass is not None else polygonal_spring_mass(drive, layout)
     if sm is None:
