@@ -138,8 +138,9 @@ def _running_tension(drive: Drive, layout: DriveLayout, tight: float, j: int, m:
     ``n`` strands a simplex chain at ``F_t / n``); a ``ValidityRangeWarning`` outside its
     calibration sweep's input ranges. The steady state of the simulation
     (:func:`chaindrive.simulation.running_tension.simulated_dynamic_tension`) is not taken there instead: on the three drives outside
-    the ranges checked against a run from rest it was −6.7, −7.8 and −39.4 % off, the reduced
-    model −16.0, −9.9 and −18.8 % (``benchmarks/_dynamic_sweep.py --outside``), at 0.1–2 s of
+    the ranges checked against a run from rest its per-period peak was −16.8, −3.9 and −9.4 % off,
+    the reduced model −13.8, −21.2 and −2.7 % (``benchmarks/_dynamic_sweep.py --outside``, the damped
+    simulation), at 0.1–2 s of
     CPU a drive against microseconds (docs/design.md, 'The running peak tension')."""
     import warnings
 
