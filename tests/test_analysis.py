@@ -6,6 +6,7 @@ import bisect
 import dataclasses
 import json
 import math
+import re
 from pathlib import Path
 
 import pytest
@@ -62,6 +63,13 @@ MOVED = ("safety.checks", "Loads and safety.tensions.dynamic", "Loads and safety
          # issue 29: the static safety by Chernavsky et al. eq. (7.40), without the dynamic tension,
          # against Table 7.19's required value (the roller example no longer states 6)
          "Loads and safety.safety.required_static_safety")
+#: Issue 33: the exact model's entry extremes are its true ones (one-sided limits at the seatings,
+#: the derivative's roots), not the largest of a 4,000-angle grid, so they and the peak acceleration
+#: taken from them moved by 1e-9 to 1e-7 (docs/kinematics.md; tests/test_kinematics.py checks them
+#: against 400,000 angles).
+MOVED_PATTERNS = (r"^\.Kinematics of the chain entering the wheels \(polygonal effect\)\.[^.]+"
+                  r"\.(v_min|v_max|nonuniformity|a_min|a_max|a_abs_max)$",
+                  r"^\.Loads and safety\.tensions\.acceleration_peak$")
 
 
 @pytest.mark.parametrize("name", NAMES)
@@ -81,7 +89,7 @@ def test_results_json_numbers_unchanged(name, tmp_path):
     values = sorted(v for _, v in _leaves(new))
     missing = []
     for path, v in _leaves({k: s["results"] for k, s in old["sections"].items()}):
-        if any(m in path for m in MOVED):
+        if any(m in path for m in MOVED) or any(re.search(m, path) for m in MOVED_PATTERNS):
             continue
         tol = abs(v) * 1e-9 + 1e-12
         i = bisect.bisect_left(values, v - tol)

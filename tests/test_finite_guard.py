@@ -104,3 +104,57 @@ def test_fast_result_check_looks_as_deep_as_first_nonfinite():
     for depth in range(16):
         deep = [deep] if depth % 2 else _Holder(deep)
         assert _finite_tree(deep) == (first_nonfinite(deep) is None)
+
+
+_ELEMENT = st.sampled_from([0.0, -0.0, 1.0, -2.5, 1e-300, 1e308, -1e308, math.inf, -math.inf, math.nan])
+
+
+@settings(max_examples=300, deadline=None)
+@given(st.lists(_ELEMENT, min_size=0, max_size=40))
+def test_array_fast_paths_equal_the_elementwise_definitions(values):
+    # _all_finite (a short array in Python floats; inside a guard a long one by its dot product), the checks'
+    # NaN test and their range test (short arrays in Python floats, longer by min and max)
+    from chaindrive._finite import _all_finite
+    from chaindrive._validation import _has_nan, _within
+
+    arr = np.array(values, dtype=float)
+    assert _all_finite(arr) == bool(np.isfinite(arr).all())
+    with guard_scope():  # inside a guard: a long array by its sum of squares first (1e308² overflows)
+        assert _all_finite(arr) == bool(np.isfinite(arr).all())
+    assert _has_nan(arr) == bool(np.isnan(arr).any())
+    import warnings
+
+    from chaindrive._validation import warn_outside
+
+    with warnings.catch_warnings(record=True) as caught:  # warn_outside: NaN outside neither bound
+        warnings.simplefilter("always")
+        warn_outside("x", arr, -1.0, 2.0, "a test")
+    assert bool(caught) == bool(((arr < -1.0) | (arr > 2.0)).any())
+    if not np.isnan(arr).any():
+        from chaindrive._validation import check_range
+
+        for inclusive in (True, False):
+            try:
+                check_range("x", arr, -1.0, 1.0, low_inclusive=inclusive, high_inclusive=inclusive)
+                passed = True
+            except InputError:
+                passed = False
+            inside = (arr >= -1.0) & (arr <= 1.0) if inclusive else (arr > -1.0) & (arr < 1.0)
+            assert passed == bool(inside.all())
+        assert _within(arr, 0.0, True) == (not ((arr <= 0).any() or not np.isfinite(arr).all()))
+        assert _within(arr, 0.0, False) == (not ((arr < 0).any() or not np.isfinite(arr).all()))
+
+
+def test_an_opaque_argument_type_is_passed_at_a_glance_once_seen():
+    from chaindrive._finite import _OPAQUE
+
+    class Thing:
+        pass
+
+    @finite_guard
+    def f(x, y):
+        return y
+
+    assert f(Thing(), 1.0) == 1.0 and Thing in _OPAQUE
+    with pytest.raises(InputError, match="y must not be NaN"):
+        f(Thing(), math.nan)

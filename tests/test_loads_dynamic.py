@@ -128,8 +128,8 @@ def test_analysis_uses_the_running_tension_model():
 def test_simulated_peak_within_15_percent():
     # the analysis's peak tension (tight + the running-tension model) at the nominal torque against
     # the median of the simulated per-tooth-period peaks of the tight span, the seats at Palmgren's
-    # stiffness and 2.5 s of settling as in the calibration sweep (docs/design.md, "The running peak
-    # tension": +2.8 %)
+    # stiffness and 2.5 s of settling as in the calibration sweep, the spans damped by default
+    # (docs/design.md, "The damped sweep": measured 4726 N against 4557 N, +3.7 %)
     import sys
     from pathlib import Path
 
@@ -147,7 +147,8 @@ def test_simulated_peak_within_15_percent():
     t, ts = sw.settled_run(d, 40, 2.5, contact_stiffness=lo.dynamic_stiffness)
     peak = float(np.median(tooth_peaks(d, t, ts)))
     assert lo.maximum == pytest.approx(peak, rel=0.15)
-    assert lo.tight + float(F.dynamic_tension(8.094, lo.acceleration_peak)) < 0.7 * peak  # the former m a_max
+    # the former m a_max is well below it (measured 0.72 of the damped simulation's peak)
+    assert lo.tight + float(F.dynamic_tension(8.094, lo.acceleration_peak)) < 0.75 * peak
 
 
 def _benchmark():

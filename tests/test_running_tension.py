@@ -311,8 +311,8 @@ def test_leave_one_out_regression():
 def test_steady_state_against_the_sweep_cached():
     # the steady state of the simulation (warm start, settling detected, the implicit step;
     # benchmarks/_dynamic_sweep.py --steady) against the sweep's runs from rest (the damped sweep):
-    # its MEAN tension within 1.5 % of the long reference's on every drive, its per-period peak low
-    # on average (measured -6.9 %, worst -33.7 % on S53, rms 9.5 %: the implicit step's numerical
+    # its MEAN tension within 1.2 % of the long reference's on every drive, its per-period peak low
+    # on average (measured -6.7 %, worst -37.0 % on S21, rms 9.2 %: the implicit step's numerical
     # damping of the seating impacts, docs/simulation.md "Integrator"): not a better stand-in for the
     # peak than the reduced model (docs/design.md, "The running peak tension")
     sw = _sweep()
@@ -322,10 +322,10 @@ def test_steady_state_against_the_sweep_cached():
     e = {r["name"]: float(r["pp"]) / ref[r["name"]]["sim_peak"] - 1 for r in rows}
     err = np.array(list(e.values()))
     assert len(err) == 64
-    assert min(e, key=e.get) == "S53" and -0.37 < err.min() < -0.30
+    assert min(e, key=e.get) == "S21" and -0.40 < err.min() < -0.33
     assert -0.09 < err.mean() < -0.05 and 0.08 < np.sqrt(np.mean(err**2)) < 0.11
     mean = np.array([float(r["mean"]) / long[r["name"]]["long_mean"] - 1 for r in rows])
-    assert np.abs(mean).max() < 0.016
+    assert np.abs(mean).max() < 0.013
 
 
 @pytest.mark.slow
@@ -438,7 +438,7 @@ def test_analysis_keeps_the_reduced_model_outside_the_input_ranges_warned():
     # the self-regulating example's 23.4-pitch tight span is outside the sweep's 25-60 pitches: the
     # reduced model's F_d (2651 N; 4201 N with the undamped calibration), warned; the steady state is
     # not taken instead (on the three drives outside the ranges checked from rest its per-period peak
-    # was -16.7, -5.2, -16.7 % off, the model -13.8, -21.2, -2.7 %: benchmarks/data/dynamic_outside*.csv);
+    # was -16.8, -3.9, -9.4 % off, the model -13.8, -21.2, -2.7 %: benchmarks/data/dynamic_outside*.csv);
     # the analysis imports no simulation
     # (tests/test_architecture.py: the simulation is the floor above)
     from chaindrive.analysis import analyze_drive
@@ -481,7 +481,7 @@ def test_simulated_dynamic_tension_refuses_a_non_finite_simulation(monkeypatch):
 
 def test_outside_the_ranges_cached():
     # three drives each outside one of the sweep's ranges (benchmarks/_dynamic_sweep.py --outside):
-    # the steady state's per-period peak against the run from rest is -16.7, -5.2 and -16.7 %, the
+    # the steady state's per-period peak against the run from rest is -16.8, -3.9 and -9.4 %, the
     # reduced model extrapolated -13.8, -21.2 and -2.7 % (docs/design.md): neither is validated
     # there; a regression of that finding (the damped simulation)
     sw = _sweep()
@@ -489,7 +489,7 @@ def test_outside_the_ranges_cached():
     steady = {r["name"]: float(r["pp"]) for r in sw.read_cache(sw.OUTSIDE_STEADY_CACHE)}
     err = {n: steady[n] / rest[n]["sim_peak"] - 1 for n in rest}
     assert sorted(err) == ["X00", "X01", "X02"]
-    assert -0.20 < err["X00"] < -0.13 and -0.08 < err["X01"] < -0.02 and -0.20 < err["X02"] < -0.13
+    assert -0.20 < err["X00"] < -0.13 and -0.07 < err["X01"] < -0.01 and -0.13 < err["X02"] < -0.06
     for s in sw.outside_drives():
         r = rest[s.name]
         assert RT.running_tension_range_violations(

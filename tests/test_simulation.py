@@ -101,7 +101,7 @@ def test_energy_conserved_without_damping():
     w = 60.0
     m = roller_example(links=20, teeth=8, angular_velocity=w, load_torque=0.0,
                        pretension=300.0, ramp_time=0.03, axial_stiffness=1e7,
-                       contact_stiffness=2e7)
+                       contact_stiffness=2e7, span_damping=0.0)
     for wheel in m.wheels:
         wheel.inertia *= 1000.0
     dt = 0.25 * m.stable_time_step()

@@ -74,11 +74,11 @@ def test_guided_entry_speed_matches_kinematics(entry):
     assert np.max(np.abs(err[away])) < 0.01
     # the mean speed is the rigid one: p z ω / 2π (chain_entry's mean)
     assert abs(np.mean(err)) < 1e-3
-    # regression of the measured worst error outside the windows (0.182 % chordal,
+    # regression of the measured worst error outside the windows (0.344 % chordal,
     # 0.268 % tangential, 16B z = 12 at 0.5 rad/s, ISO arc flanks, friction slope cap
-    # m / 2Δt)
+    # m / 2Δt, the default span damping; 0.182 % chordal with undamped spans)
     assert np.max(np.abs(err[away])) == pytest.approx(
-        {"chordal": 0.00182, "tangential": 0.00268}[entry], abs=5e-4)
+        {"chordal": 0.00344, "tangential": 0.00268}[entry], abs=5e-4)
 
 
 @pytest.mark.slow
@@ -192,7 +192,8 @@ def test_guided_entry_of_round_link_chain_matches_kinematics(entry):
     away = dist > 0.05 * per
     assert np.max(np.abs(err[away])) < 0.01
     assert abs(np.mean(err)) < 1e-3
-    # measured 0.68 % (chordal), 0.86 % (tangential) from the Newton static state (0.80 %,
-    # 0.82 % from the earlier dynamic relaxation's)
+    # measured 0.68 % (chordal), 0.70 % (tangential) from the Newton static state, the default
+    # span damping (tangential 0.86 % with undamped spans; 0.80 %, 0.82 % from the earlier
+    # dynamic relaxation's)
     assert np.max(np.abs(err[away])) == pytest.approx(
-        {"chordal": 0.0068, "tangential": 0.0086}[entry], abs=1e-3)
+        {"chordal": 0.0068, "tangential": 0.0070}[entry], abs=1e-3)

@@ -54,12 +54,14 @@ def test_benchmark_drive_against_a_long_reference_run():
     assert s.peak_tension == pytest.approx(ref.peak_tension, rel=0.03)
     rms = np.sqrt(np.mean((s.waveform - ref.waveform) ** 2)) / ref.mean_tension
     assert rms < 0.04
-    # regression (implicit, bit-reproducible): 3129.4 N measured
-    assert s.mean_tension == pytest.approx(3129.4, rel=1e-3)
+    # regression (implicit, bit-reproducible): 3078 N measured with the default span damping
+    # (zeta = 0.02 at the tooth frequency; 3129.4 N with undamped spans and the coarser settling)
+    assert s.mean_tension == pytest.approx(3077.8, rel=1e-3)
 
 
 def test_short_drive_mean_against_a_long_reference_run():
-    # 16B, 40 links, 2 x z = 16, 5 rad/s, 100 N m, 1.5 kN pretension: mean +0.4 %
+    # 16B, 40 links, 2 x z = 16, 5 rad/s, 100 N m, 1.5 kN pretension: mean -0.2 % (the default
+    # span damping; settling at twice the measuring step had left it -5.8 %: SETTLE_FACTOR)
     m = roller_example(links=40, teeth=16, angular_velocity=5.0, load_torque=100.0,
                        pretension=1500.0, ramp_time=0.05)
     ref = _reference(m, 1.5)

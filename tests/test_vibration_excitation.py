@@ -45,6 +45,21 @@ def test_bi_regular_polygon_has_a_fundamental_at_the_pair_period():
     assert a[0] == pytest.approx(0.149e-3, rel=1e-2) and a[1] == pytest.approx(1.693e-3, rel=1e-2)
 
 
+@pytest.mark.parametrize("sides", [[2 * np.pi / 17], [0.504471, 2 * np.pi / 8 - 0.504471], [np.pi / 8, np.pi / 8],
+                                   [0.3, 0.2, 0.1]])
+def test_polygon_harmonics_closed_form_is_the_limit_of_the_sampled_transform(sides):
+    # independent: the FFT of 2**16 and 2**20 samples (the former default took 4,096); a
+    # motion continuous at the seatings (equal sides) converges as 1/N², one that jumps (a round
+    # link chain's unequal sides) as 1/N: the closed form is their limit
+    r = 0.1
+    exact = polygon_transverse_harmonics(r, sides, 3)
+    coarse = polygon_transverse_harmonics(r, sides, 3, samples=2**16)
+    fine = polygon_transverse_harmonics(r, sides, 3, samples=2**20)
+    err_coarse, err_fine = (float(np.abs(x - exact).max() / exact.max()) for x in (coarse, fine))
+    assert err_fine <= max(1e-11, err_coarse / 8)  # 16 times the samples: at least 8 times closer
+    assert err_fine <= 2e-6
+
+
 def test_runout_and_unequal_links():
     assert runout_tolerance(0.1) == pytest.approx(0.16e-3)
     assert runout_tolerance(5.0) == pytest.approx(0.76e-3)  # the cap

@@ -61,10 +61,20 @@ def _field_names(cls: type) -> tuple[str, ...]:
     return names
 
 
+_FLOAT64 = np.dtype(np.float64)  # the native double's dtype (numpy hands out this one object)
+
+
 def _all_finite(a: np.ndarray) -> bool:
     """Whether the float or complex array ``a`` holds no NaN and no infinity."""
     if a.size <= 16 and a.dtype.kind == "f":  # a short array: faster in Python than a ufunc and a reduction
         return all(map(math.isfinite, a.ravel().tolist()))
+    if a.dtype is _FLOAT64 and _GUARD.depth:
+        # inside a guard numpy's floating-point errors are ignored: a finite sum of squares has
+        # finite terms only (a NaN or an infinity makes it NaN or infinite); one that overflows
+        # is looked at term by term
+        flat = a.ravel()
+        if math.isfinite(flat.dot(flat)):
+            return True
     return bool(np.isfinite(a).all())
 
 
@@ -86,8 +96,23 @@ def _nonfinite_number(value: Any) -> bool:
     if isinstance(value, np.ndarray):
         return value.dtype.kind in "fc" and not bool(np.all(np.isfinite(value)))
     if isinstance(value, (list, tuple)) and len(value) <= 10_000:
-        return any(_nonfinite_number(v) for v in value)
+        for v in value:  # any(_nonfinite_number(v) for v in value), the common members without a call
+            tv = type(v)
+            if tv in _FLOATS:
+                if not math.isfinite(v):
+                    return True
+            elif tv not in _PLAIN and _nonfinite_number(v):
+                return True
+        return False
+    if not issubclass(t, _LOOKED_AT):
+        _OPAQUE.add(t)  # never a number nor a sequence of them: the guard passes it at a glance
     return False
+
+
+#: Types whose values :func:`_nonfinite_number` looks into; any other type it passes, and once
+#: seen it is kept in :data:`_OPAQUE` for the guard's first glance.
+_LOOKED_AT = (float, complex, np.number, np.ndarray, list, tuple, str, bytes, bool, type(None), int)
+_OPAQUE: set[type] = set()
 
 
 def first_nonfinite(obj: Any, _depth: int = 0) -> str | None:
@@ -187,6 +212,17 @@ def _finite_tree(obj: Any, _depth: int = 0) -> bool:
         if tv in _FLOATS:
             if not math.isfinite(v):
                 return False
+        elif tv is np.ndarray:  # _finite_tree(v) of an array, without the call
+            if v.dtype.kind in "fc" and v.size and not _all_finite(v):
+                return False
+        elif (tv is tuple or tv is list) and _depth < 11:  # one of plain numbers, without the call
+            for x in v:
+                tx = type(x)
+                if tx in _FLOATS:
+                    if not math.isfinite(x):
+                        return False
+                elif tx not in _PLAIN and not _finite_tree(x, _depth + 2):
+                    return False
         elif not _finite_tree(v, _depth + 1):
             return False
     return True
@@ -284,14 +320,16 @@ def finite_guard(function: F | None = None, *, check_result: bool = True,
     def wrapper(*args, **kwargs):
         for i, value in enumerate(args):
             t = type(value)  # the common arguments answered here, without a call
-            if (math.isfinite(value) if t in _FLOATS else t in _PLAIN) or not _nonfinite_number(value):
+            if (math.isfinite(value) if t in _FLOATS else (t in _PLAIN or t in _OPAQUE)) \
+                    or not _nonfinite_number(value):
                 continue
             names = parameter_names()
             name = names[i] if i < len(names) else f"argument {i + 1}"
             _refuse(name, value, allow_infinite)
         for name, value in kwargs.items():
             t = type(value)
-            if (math.isfinite(value) if t in _FLOATS else t in _PLAIN) or not _nonfinite_number(value):
+            if (math.isfinite(value) if t in _FLOATS else (t in _PLAIN or t in _OPAQUE)) \
+                    or not _nonfinite_number(value):
                 continue
             _refuse(name, value, allow_infinite)
         try:

@@ -35,6 +35,26 @@ def _scalar(value: object) -> float | None:
     return None
 
 
+def _has_nan(arr: np.ndarray) -> bool:
+    """Whether the float array ``arr`` holds a NaN (a short one in Python floats)."""
+    if arr.size <= 16:
+        return any(map(math.isnan, arr.ravel().tolist()))
+    return bool(np.isnan(arr).any())
+
+
+def _within(arr: np.ndarray, low: float, strict: bool) -> bool:
+    """Whether every element of the NaN-free float array ``arr`` is ``> low`` (``strict``) or
+    ``>= low``, and ``< inf`` (``(arr <= low).any() or not np.isfinite(arr).all()`` negated)."""
+    if not arr.size:
+        return True
+    if arr.size <= 16:
+        values = arr.ravel().tolist()
+        lo, hi = min(values), max(values)
+    else:
+        lo, hi = float(np.minimum.reduce(arr, axis=None)), float(np.maximum.reduce(arr, axis=None))
+    return (lo > low if strict else lo >= low) and hi < math.inf
+
+
 def as_float_array(name: str, value: ArrayLike) -> np.ndarray:
     """Convert ``value`` to a float array, rejecting NaN and non-numbers."""
     x = _scalar(value)
@@ -46,7 +66,7 @@ def as_float_array(name: str, value: ArrayLike) -> np.ndarray:
         arr = np.asarray(value, dtype=float)
     except (TypeError, ValueError) as exc:
         raise InputError(f"{name} must be a number or an array of numbers, got {value!r}") from exc
-    if np.isnan(arr).any():
+    if _has_nan(arr):
         raise InputError(f"{name} must not be NaN")
     return arr
 
@@ -57,7 +77,7 @@ def check_positive(name: str, value: ArrayLike, unit: str = "") -> np.ndarray:
     if x is not None and 0.0 < x < math.inf:
         return np.asarray(x)
     arr = as_float_array(name, value)
-    if (arr <= 0).any() or not np.isfinite(arr).all():
+    if not _within(arr, 0.0, True):
         raise InputError(
             f"{name} must be positive and finite (0 < {name} < inf{' ' + unit if unit else ''}), "
             f"got {_show(arr)}"
@@ -71,7 +91,7 @@ def check_nonnegative(name: str, value: ArrayLike, unit: str = "") -> np.ndarray
     if x is not None and 0.0 <= x < math.inf:
         return np.asarray(x)
     arr = as_float_array(name, value)
-    if (arr < 0).any() or not np.isfinite(arr).all():
+    if not _within(arr, 0.0, False):
         raise InputError(
             f"{name} must be non-negative and finite (0 <= {name} < inf{' ' + unit if unit else ''}), "
             f"got {_show(arr)}"
@@ -95,9 +115,14 @@ def check_range(
             and (x <= high if high_inclusive else x < high)):
         return np.asarray(x)
     arr = as_float_array(name, value)
-    lo_ok = arr >= low if low_inclusive else arr > low
-    hi_ok = arr <= high if high_inclusive else arr < high
-    if not (lo_ok & hi_ok).all():
+    if arr.size <= 16:  # a short array in Python floats (the same comparisons)
+        ok = all((v >= low if low_inclusive else v > low) and (v <= high if high_inclusive else v < high)
+                 for v in arr.ravel().tolist())
+    else:
+        lo_ok = arr >= low if low_inclusive else arr > low
+        hi_ok = arr <= high if high_inclusive else arr < high
+        ok = bool((lo_ok & hi_ok).all())
+    if not ok:
         lb = "[" if low_inclusive else "("
         hb = "]" if high_inclusive else ")"
         raise InputError(
@@ -125,7 +150,11 @@ def warn_outside(name: str, value: ArrayLike, low: float, high: float, source: s
     if x is not None and low <= x <= high:
         return
     arr = np.asarray(value, dtype=float)
-    if np.any(arr < low) or np.any(arr > high):
+    if arr.size <= 16:  # a short array in Python floats (a NaN is outside neither bound, as below)
+        outside = any(v < low or v > high for v in arr.ravel().tolist())
+    else:
+        outside = bool((arr < low).any() or (arr > high).any())
+    if outside:
         warnings.warn(
             f"{name} = {_show(arr)} is outside the validity range [{low:g}, {high:g}] of {source}",
             ValidityRangeWarning,

@@ -110,7 +110,7 @@ def dynamic_tension(drive: Drive, layout: DriveLayout, acceleration_peak: float,
     >>> round(dynamic_tension(d, drive_layout(d), 127.0).value)
     3934
     >>> round(dynamic_tension(d, drive_layout(d), 127.0, tight=2254.09).value)
-    4040
+    2472
     """
     sm = None if moving_mass is not None else polygonal_spring_mass(drive, layout)
     if sm is None:
@@ -138,8 +138,9 @@ def _running_tension(drive: Drive, layout: DriveLayout, tight: float, j: int, m:
     ``n`` strands a simplex chain at ``F_t / n``); a ``ValidityRangeWarning`` outside its
     calibration sweep's input ranges. The steady state of the simulation
     (:func:`chaindrive.simulation.running_tension.simulated_dynamic_tension`) is not taken there instead: on the three drives outside
-    the ranges checked against a run from rest it was −6.7, −7.8 and −39.4 % off, the reduced
-    model −16.0, −9.9 and −18.8 % (``benchmarks/_dynamic_sweep.py --outside``), at 0.1–2 s of
+    the ranges checked against a run from rest its per-period peak was −16.8, −3.9 and −9.4 % off,
+    the reduced model −13.8, −21.2 and −2.7 % (``benchmarks/_dynamic_sweep.py --outside``, the damped
+    simulation), at 0.1–2 s of
     CPU a drive against microseconds (docs/design.md, 'The running peak tension')."""
     import warnings
 

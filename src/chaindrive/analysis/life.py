@@ -198,7 +198,8 @@ def _margins(drive, layout, loads, grid, notes):
             # the grid's points and the jump elongation's search points in one call (pointwise: the same
             # numbers); what lies outside the table said for the grid's
             g = grid.size
-            onset = _onset(drive, i, z, seated, hi, lo, np.concatenate([grid, _jump_points(limit)]))
+            points = _jump_points(limit)
+            onset = _onset(drive, i, z, seated, hi, lo, np.concatenate([grid, points]))
             rho, tight = np.asarray(onset.load_ratio), np.asarray(onset.tight_tension)
             outside = JT._outside(onset.loading, z, np.asarray(onset.fraction)[:g].tolist(),
                                   np.asarray(onset.load_stiffness)[:g].tolist())
@@ -207,7 +208,7 @@ def _margins(drive, layout, loads, grid, notes):
             curves[i] = rho[:g] * lo / hi
             t_jump[i] = float(tight[g - 1]) * float(drive.chain.strands or 1)
             margin[i] = float(curves[i][-1])
-            e_w = _jump_elongation(drive, i, rho[g:] * lo / hi, limit, notes)
+            e_w = _jump_elongation(drive, i, rho[g:] * lo / hi, limit, notes, points)
         if e_w < e_jump:
             e_jump, wheel_jump = e_w, drive.wheels[i].name
     if not wheels:
@@ -226,10 +227,11 @@ def _jump_points(limit):
     return np.linspace(0.0, limit * (1 - 1e-9), _JUMP_POINTS)
 
 
-def _jump_elongation(drive, i, m, limit, notes):
-    """Smallest elongation where the margin ``m = ρ_jump(e) T_2/T_1`` (on :func:`_jump_points`) reaches 1,
+def _jump_elongation(drive, i, m, limit, notes, points=None):
+    """Smallest elongation where the margin ``m = ρ_jump(e) T_2/T_1`` (on :func:`_jump_points`, ``points``
+    when the caller has them) reaches 1,
     or the holding limit: the first crossing on the grid, linear in ``ln`` margin between its points."""
-    e = _jump_points(limit)
+    e = _jump_points(limit) if points is None else points
     below = np.flatnonzero(m <= 1.0)
     if below.size == 0:
         return limit

@@ -294,8 +294,11 @@ def drive_loads(drive: Drive, layout: DriveLayout | None = None, *,
     m, Fd, dsrc, kd = dyn.moving_mass, dyn.value, dyn.model, dyn.stiffness
     ang = lay.wrap.span_angle
     # wheel i: pulled back along incoming span i-1, forward along outgoing span i
-    tens = np.column_stack([np.roll(span_T, 1), span_T])
-    dirs = np.column_stack([np.roll(ang, 1) + np.pi, ang])
+    # (np.column_stack of np.roll(.., 1) and the spans, filled in directly: the same values)
+    tens = np.empty((len(span_T), 2))
+    tens[0, 0], tens[1:, 0], tens[:, 1] = span_T[-1], span_T[:-1], span_T
+    dirs = np.empty((len(ang), 2))
+    dirs[0, 0], dirs[1:, 0], dirs[:, 1] = ang[-1] + np.pi, ang[:-1] + np.pi, ang
     mag, th = F.shaft_load(tens, dirs)
     powers = np.where(shares > 0, -shares * drive.power(), 0.0)
     powers[drive.driving_index] = drive.power()

@@ -80,6 +80,8 @@ from .histories import PaperEntry, PeriodMotion
 from .solver import (
     GuideEnd,
     WheelPolygon,
+    _taut_extremes,
+    _taut_rates,
     _taut_span_length,
     rod_entry,
     rod_seating_schedule,
@@ -272,8 +274,9 @@ def _exact(case: _Case, phi):
 def _period_seats(case: _Case, seats: np.ndarray) -> np.ndarray:
     """The seating angles within one period, sorted (the exact model's ``seats``)."""
     T = case.period
-    s = np.mod(seats[:-1], T)
-    return np.sort(np.where(np.abs(s - T) <= 1e-12, 0.0, s))  # np.isclose(s, T, rtol=0, atol=1e-12)
+    # np.sort(np.where(np.abs(s - T) <= 1e-12, 0.0, s)) of the one or two seatings, in Python floats
+    # (np.isclose(s, T, rtol=0, atol=1e-12) written out)
+    return np.array(sorted(0.0 if abs(x - T) <= 1e-12 else x for x in np.mod(seats[:-1], T).tolist()))
 
 
 @lru_cache(maxsize=64)
@@ -296,8 +299,13 @@ def _checked_seats(case: _Case) -> np.ndarray:
 def _check_reach(case, poly, seats):
     """At every instant the free span must hold at least one whole (longest) link."""
     grid = np.linspace(seats[0], seats[-1], 721)
-    span = _taut_span_length(poly, grid, case.guide(), seats)
     longest = max(poly.links)
+    # every 20th point first: the span changes by at most R per radian (|d|G - S|/dφ| <= |dS/dφ|),
+    # so clear of the longest link there by R times their step, it is clear at every point
+    coarse = grid[::20]
+    if np.min(_taut_span_length(poly, coarse, case.guide(), seats)) - poly.radius * (coarse[1] - coarse[0]) >= longest:
+        return
+    span = _taut_span_length(poly, grid, case.guide(), seats)
     if np.min(span) < longest:
         raise InfeasibleError(
             f"the free span shrinks to {np.min(span):.6g} m, shorter than one link "
@@ -459,42 +467,48 @@ def _explain_infeasible(case: _Case, model: str, exc: Exception):
 
 def _summary(case: _Case, model: str, seats, first: np.ndarray | None = None) -> Any:
     """The summary of the entry (seats: the model's seating angles in one period). With
-    ``first`` (the exact model): also the entry at those angles, from the same call of the
-    model (a pointwise model: the same numbers), as ``(summary, entry)``."""
+    ``first`` (the exact model): also the entry at those angles, as ``(summary, entry)``.
+
+    The exact model's extremes are its true ones (:func:`~chaindrive.kinematics.solver._taut_extremes`:
+    the ends of each stretch between seatings and the roots of the analytic derivative);
+    another model's are taken on a grid of 4,000 angles a period and beside each seating."""
     T = case.period
-    base = np.linspace(0.0, T, 4001)
     eps = 1e-9 * T
-    extra = np.concatenate([seats - eps, seats + eps, [T - eps, eps, T - 1e-4 * T, 1e-4 * T]])
-    extra = extra[(extra > 0) & (extra < T)]
-    grid = np.concatenate([base[:-1], extra])  # unsorted: only its extremes are taken
     s_in = np.asarray(seats, dtype=float)
     s_in = s_in[(s_in > eps) & (s_in < T - eps)]
     # one-sided limits of the acceleration at the period end (left) and start (right), and
     # at the seatings (and resets) inside the period
     ends = np.array([T - 1e-12 * T, 1e-12 * T])
     head = None
-    if model == "exact":  # a pointwise model: every angle in one call (the same numbers)
-        n0 = 0 if first is None else first.size
-        m = n0 + grid.size
-        r = _run(case, model, np.concatenate([[] if first is None else first, grid, ends, s_in - 1e-12 * T,
-                                              s_in + 1e-12 * T]))
-        limits = r.acceleration[m:]
-        v, a, y = r.velocity[n0:m], r.acceleration[n0:m], None if r.y is None else r.y[n0:m]
-        if first is not None:
-            head = dataclasses.replace(r, **{f.name: getattr(r, f.name)[:n0] for f in dataclasses.fields(r)
-                                             if f.name not in ("seats", "advance")
-                                             and isinstance(getattr(r, f.name), np.ndarray)})
+    y_range: tuple[float, float] | None = None
+    if model == "exact":
+        poly = case.polygon()
+        guide = case.guide()
+        full = _checked_seats(case)
+        (v_lo, v_hi), (a_lo, a_hi), y_range = _taut_extremes(poly, guide, full)
+        w = case.w
+        v_range, a_range = (w * v_lo, w * v_hi), (w * w * a_lo, w * w * a_hi)
+        limits = _taut_rates(poly, np.concatenate([ends, s_in - 1e-12 * T, s_in + 1e-12 * T]), w, guide, full)[1]
+        head = _run(case, model, first) if first is not None else None
+        advance = float(poly.advance)
     else:
+        base = np.linspace(0.0, T, 4001)
+        extra = np.concatenate([seats - eps, seats + eps, [T - eps, eps, T - 1e-4 * T, 1e-4 * T]])
+        extra = extra[(extra > 0) & (extra < T)]
+        grid = np.concatenate([base[:-1], extra])  # unsorted: only its extremes are taken
         r = _run(case, model, grid)
         limits = np.concatenate([_run(case, model, ends[:1])["acceleration"],
                                  _run(case, model, ends[1:])["acceleration"]]
                                 + ([_run(case, model, s_in - 1e-12 * T)["acceleration"],
                                     _run(case, model, s_in + 1e-12 * T)["acceleration"]] if s_in.size else []))
         v, a, y = r.velocity, r.acceleration, getattr(r, "y", None)
-    advance = float(r.advance)
+        v_range, a_range = (float(np.min(v)), float(np.max(v))), (float(np.min(a)), float(np.max(a)))
+        if y is not None:
+            y_range = (float(np.min(y)), float(np.max(y)))
+        advance = float(r.advance)
     v_mean = advance / (T / case.w)
     a_left, a_right = float(limits[0]), float(limits[1])
-    amax = float(np.max(np.abs(a)))
+    amax = max(abs(a_range[0]), abs(a_range[1]))
     tol = 1e-6 * amax
     sign_change = bool((abs(a_left) > tol) and (abs(a_right) > tol) and (a_left * a_right < 0))
     jump_list = [a_right - a_left]
@@ -506,17 +520,17 @@ def _summary(case: _Case, model: str, seats, first: np.ndarray | None = None) ->
     jumps = np.asarray(jump_list)
     if case.entry == "free":
         throw = float(case.R - case.R * np.cos(0.5 * max(case.d1, case.d2)))
-        y = cast(np.ndarray, y)  # free entry: every model gives the transverse motion
-        throw = max(throw, float(np.max(y) - np.min(y)))
+        y_range = cast(tuple, y_range)  # free entry: every model gives the transverse motion
+        throw = max(throw, y_range[1] - y_range[0])
     else:
         throw = 0.0
     summary = {
         "v_mean": v_mean,
-        "v_min": float(np.min(v)),
-        "v_max": float(np.max(v)),
-        "nonuniformity": float((np.max(v) - np.min(v)) / v_mean),
-        "a_min": float(np.min(a)),
-        "a_max": float(np.max(a)),
+        "v_min": v_range[0],
+        "v_max": v_range[1],
+        "nonuniformity": (v_range[1] - v_range[0]) / v_mean,
+        "a_min": a_range[0],
+        "a_max": a_range[1],
         "sign_change_at_period_end": sign_change,
         "transverse_throw": throw,
         "advance_per_period": advance,

@@ -60,7 +60,7 @@ import functools
 import math
 from collections.abc import Callable
 from dataclasses import dataclass
-from typing import Any
+from typing import Any, cast
 
 import numpy as np
 from numpy.typing import ArrayLike
@@ -129,14 +129,14 @@ class WheelPolygon:
     angles: tuple[float, ...]
     phase: float
 
-    @property
+    @functools.cached_property
     def period(self) -> float:
-        """Angular period ``2π/z`` [rad]."""
+        """Angular period ``2π/z`` [rad] (kept on the polygon: its fields are frozen)."""
         return float(sum(self.angles))
 
-    @property
+    @functools.cached_property
     def advance(self) -> float:
-        """Chain length per period (``2t`` or ``p``) [m]."""
+        """Chain length per period (``2t`` or ``p``) [m] (kept on the polygon)."""
         return float(sum(self.links))
 
     def _cum(self) -> tuple[np.ndarray, np.ndarray]:
@@ -205,25 +205,26 @@ def _find_crossing(fun: Callable[[Any], Any], estimate: float, what: str) -> flo
     """Root of ``fun`` where it goes from + to -, nearest to ``estimate``.
 
     Bracketed on a 1441-point scan of ``estimate ± π/2``; the scan starts with the
-    ``2 _SCAN_WINDOW + 1`` points about the estimate and takes the whole grid only when
-    a crossing outside them could be as near (``fun`` is pointwise: the same values, the
-    same bracket)."""
-    grid = estimate + np.linspace(-0.5 * np.pi, 0.5 * np.pi, 1441)
+    points about the estimate (``2 w + 1`` of them, ``w`` in :data:`_SCAN_WINDOWS`) and
+    widens only when a crossing outside them could be as near (``fun`` is pointwise: the
+    same values, the same bracket)."""
+    grid = estimate + _SCAN
     centre = 720
-    lo, hi = centre - _SCAN_WINDOW, centre + _SCAN_WINDOW + 1
-    g = fun(grid[lo:hi])
-    idx = np.nonzero((g[:-1] > 0) & (g[1:] <= 0))[0] + lo
-    if idx.size:
-        dist = np.abs(grid[idx] - estimate)
-        k = int(np.argmin(dist))
-        # a crossing not seen starts at index lo - 1 or below, or hi - 1 or above
-        if dist[k] < min(abs(grid[lo - 1] - estimate), abs(grid[hi - 1] - estimate)):
-            i = int(idx[k])
-            if g[i + 1 - lo] == 0.0:
-                return float(grid[i + 1])
-            return float(brentq(fun, grid[i], grid[i + 1], xtol=1e-15, rtol=1e-15, maxiter=200))
+    for window in _SCAN_WINDOWS:
+        lo, hi = centre - window, centre + window + 1
+        g = fun(grid[lo:hi])
+        idx = ((g[:-1] > 0) & (g[1:] <= 0)).nonzero()[0] + lo
+        if idx.size:
+            dist = np.abs(grid[idx] - estimate)
+            k = int(np.argmin(dist))
+            # a crossing not seen starts at index lo - 1 or below, or hi - 1 or above
+            if dist[k] < min(abs(grid[lo - 1] - estimate), abs(grid[hi - 1] - estimate)):
+                i = int(idx[k])
+                if g[i + 1 - lo] == 0.0:
+                    return float(grid[i + 1])
+                return float(brentq(fun, grid[i], grid[i + 1], xtol=1e-15, rtol=1e-15, maxiter=200))
     g = fun(grid)
-    idx = np.nonzero((g[:-1] > 0) & (g[1:] <= 0))[0]
+    idx = ((g[:-1] > 0) & (g[1:] <= 0)).nonzero()[0]
     if idx.size == 0:
         raise InfeasibleError(f"no seating of {what} found: the span never reaches the next hinge")
     i = idx[np.argmin(np.abs(grid[idx] - estimate))]
@@ -232,8 +233,11 @@ def _find_crossing(fun: Callable[[Any], Any], estimate: float, what: str) -> flo
     return float(brentq(fun, grid[i], grid[i + 1], xtol=1e-15, rtol=1e-15, maxiter=200))
 
 
-#: Points either side of the estimate that :func:`_find_crossing` scans first (of 720).
-_SCAN_WINDOW = 180
+#: Points either side of the estimate that :func:`_find_crossing` scans first, then next (of 720).
+_SCAN_WINDOWS = (24, 180)
+#: The offsets of :func:`_find_crossing`'s scan from its estimate [rad] (read only).
+_SCAN = np.linspace(-0.5 * np.pi, 0.5 * np.pi, 1441)
+_SCAN.flags.writeable = False
 
 
 def taut_seating_angles(poly: WheelPolygon, guide: GuideEnd | None = None) -> np.ndarray:
@@ -262,7 +266,8 @@ def taut_seating_angles(poly: WheelPolygon, guide: GuideEnd | None = None) -> np
     Root of ``g(φ) = (V_{k+1} - S_k) × (G - S_k)`` where it changes from + (hinge
     outside the span line) to -, bracketed on a 1441-point scan of ``±π/2`` around the
     estimate "link symmetric about the tangent point seen from ``G``", refined by
-    Brent's method to ``1e-15`` rad. Valid for ``|G| > R``.
+    Brent's method to ``1e-15`` rad. Valid for ``|G| > R``. Free entry: the estimate
+    itself (the link level).
 
     .. math:: (V_{k+1} - S_k) \times (G - S_k) = 0
 
@@ -297,24 +302,34 @@ def taut_seating_angles(poly: WheelPolygon, guide: GuideEnd | None = None) -> np
         def gap(p: np.ndarray, j: int = j, angles: tuple[Any, Any] = (b_prev, b_j)) -> np.ndarray:
             return _taut_gap(poly, j - 1, p, guide, angles)
 
-        out[j] = _find_crossing(gap, est, f"hinge {j}")
+        # free entry: the seating is the estimate itself (the link (j-1, j) level, its ends at
+        # equal heights R cos(±(b_j - b_prev)/2): the root of the gap in closed form)
+        out[j] = est if guide is None else _find_crossing(gap, est, f"hinge {j}")
     out[n] = out[0] + poly.period
-    if np.any(np.diff(out) <= 0):
+    if any(b <= a for a, b in zip(out.tolist(), out[1:].tolist(), strict=False)):  # np.any(np.diff(out) <= 0)
         raise InfeasibleError("seating angles are not increasing: the span cuts the wheel")
     return out
 
 
-def _locate(poly: WheelPolygon, seats: np.ndarray, phi: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """Index k of the last seated vertex and its β at φ = 0 and c_k (vectorised)."""
+def _locate(poly: WheelPolygon, seats: np.ndarray, phi: np.ndarray,
+            index: bool = True) -> tuple[np.ndarray | None, np.ndarray, np.ndarray]:
+    """Index k of the last seated vertex and its β at φ = 0 and c_k (vectorised); ``index=False``:
+    ``None`` for k (β and c alone).
+
+    ``k = q n + j`` with ``0 <= j < n``, so ``poly.vertex(k)`` is ``(β0 + q T + Σδ_{<j}, q a + Σlinks_{<j})``
+    from ``q`` and ``j`` directly (the same operations: ``q`` is a whole number as a float)."""
     n = len(poly.links)
     T = poly.period
     q = np.floor((phi - seats[0]) / T)
     r = phi - q * T
-    j = np.searchsorted(seats[:n], r, side="right") - 1
-    j = np.clip(j, 0, n - 1)
-    k = (q * n + j).astype(np.int64)
-    beta0, c = poly.vertex(k)
-    return k, beta0, c
+    if n > 1:
+        j = np.minimum(np.maximum(seats[:n].searchsorted(r, side="right") - 1, 0), n - 1)  # np.clip(j, 0, n - 1)
+    else:  # one link a period: always the first
+        j = np.zeros(np.shape(r), dtype=np.intp)
+    ca, cl = poly._cum()
+    beta0 = poly.phase + q * T + ca[j]
+    c = q * poly.advance + cl[j]
+    return ((q * n + j).astype(np.int64) if index else None), beta0, c
 
 
 def taut_entry(
@@ -369,7 +384,8 @@ def taut_entry(
     # the angles asked for and φ = 0 (the origin of x) in one pass (a pointwise computation:
     # the same numbers as two)
     both = np.append(phi, 0.0)
-    k, b0, c = _locate(poly, seats, both)
+    k_or_none, b0, c = _locate(poly, seats, both)
+    k = cast(np.ndarray, k_or_none)
     beta = b0 - both
     sb, cb = np.sin(beta), np.cos(beta)
     sx, sy = R * sb, R * cb
@@ -399,10 +415,126 @@ def taut_entry(
                      ay=(-w * w * sy).reshape(shape), k=k[:-1].reshape(shape), seats=seats)
 
 
+def _taut_rates(poly: WheelPolygon, phi: np.ndarray, angular_velocity: float, guide: GuideEnd | None,
+                seats: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """``velocity``, ``acceleration`` and ``y`` of :func:`taut_entry` alone (the same operations,
+    pointwise: the same numbers) at the wheel angles ``phi`` (a 1-d array), for the summary's
+    extremes over its period grid."""
+    _, b0, c = _locate(poly, seats, phi, index=False)
+    beta = b0 - phi
+    R = poly.radius
+    w = angular_velocity
+    sb, cb = np.sin(beta), np.cos(beta)
+    sx, sy = R * sb, R * cb
+    if guide is None:
+        dm = R * cb
+        ddm = sx
+    else:
+        gx, gy = guide
+        wx, wy = gx - sx, gy - sy
+        D = np.hypot(wx, wy)
+        ux, uy = wx / D, wy / D
+        us = ux * (-R * cb) + uy * (R * sb)
+        dm = -us
+        ddm = (R * R - us * us) / D + (ux * sx + uy * sy)
+    return w * dm, w * w * ddm, sy
+
+
+def _taut_motion(R: float, beta: Any, guide: GuideEnd | None) -> tuple[Any, Any, Any, Any, Any]:
+    r"""The chain's motion per unit wheel speed at the seated hinge's angle ``beta`` (floats, or
+    arrays): ``dx/dφ``, ``d²x/dφ²``, ``d³x/dφ³`` [m/rad^k], the hinge's height ``y`` and ``dy/dφ`` [m].
+
+    ``d³x/dφ³`` differentiates :func:`taut_entry`'s ``d²x/dφ²`` once more (``u_φ = (-S_φ + u (u·S_φ))/|G - S|``,
+    ``S_φ·S = 0``, ``|S_φ| = R``):
+
+    .. math:: \frac{d^3x}{dφ^3} = (u\cdot S_φ)\Bigl(\frac{2 x''}{|G - S|} + \frac{R^2 - (u\cdot S_φ)^2}{|G - S|^2}
+              + \frac{u\cdot S}{|G - S|} + 1\Bigr)
+
+    (free entry: ``-dx/dφ``); tested against finite differences."""
+    if isinstance(beta, float):
+        sb, cb = math.sin(beta), math.cos(beta)
+    else:
+        sb, cb = np.sin(beta), np.cos(beta)
+    sx, sy = R * sb, R * cb
+    if guide is None:
+        return R * cb, sx, -R * cb, sy, sx
+    wx, wy = guide[0] - sx, guide[1] - sy
+    D = math.hypot(wx, wy) if isinstance(beta, float) else np.hypot(wx, wy)
+    ux, uy = wx / D, wy / D
+    us = ux * (-R * cb) + uy * (R * sb)
+    us_s = ux * sx + uy * sy
+    ddm = (R * R - us * us) / D + us_s
+    return -us, ddm, us * (2.0 * ddm / D + (R * R - us * us) / (D * D) + us_s / D + 1.0), sy, sx
+
+
+_UNIT_33 = np.linspace(0.0, 1.0, 33)  # _taut_extremes' default samples of a stretch (read only)
+_UNIT_33.flags.writeable = False
+
+
+def _taut_extremes(poly: WheelPolygon, guide: GuideEnd | None, seats: np.ndarray,
+                  points: int = 33) -> tuple[tuple[float, float], ...]:
+    r"""Smallest and largest chain speed, acceleration (per unit wheel speed: ``dx/dφ`` [m/rad],
+    ``d²x/dφ²`` [m/rad²]) and seated hinge's height ``y`` [m] over one period of :func:`taut_entry`.
+
+    Each stretch between seatings is smooth: its extremes are at its ends (the one-sided
+    limits at the seatings) or where its derivative vanishes. The derivative is sampled
+    at ``points`` angles per stretch; each sign change that could hold an extreme is refined
+    by Brent's method on the analytic derivative (:func:`_taut_motion`) to ``1e-11`` rad (the
+    value, flat there, to ~1e-22 of itself).
+
+    .. math:: rac{d}{dφ}rac{dx}{dφ} = 0,\qquad rac{d}{dφ}rac{d^2x}{dφ^2} = 0,\qquad
+              rac{dy}{dφ} = R\sin β = 0
+
+    Returns
+    -------
+    tuple
+        ``((v_min, v_max), (a_min, a_max), (y_min, y_max))``, ``v`` per ``ω``, ``a`` per ``ω²``.
+
+    Examples
+    --------
+    Free entry of a roller chain on 12 teeth: ``R cos(π/z) <= dx/dφ <= R``.
+
+    >>> poly = WheelPolygon(1.0, (2 * np.sin(np.pi / 12),), (np.pi / 6,), np.pi / 12)
+    >>> (v_lo, v_hi), _, _ = _taut_extremes(poly, None, taut_seating_angles(poly))
+    >>> round(v_lo, 9) == round(math.cos(math.pi / 12), 9), v_hi
+    (True, 1.0)
+    """
+    R = float(poly.radius)
+    lo, hi = seats[:-1], seats[1:]
+    # each stretch with its own seated hinge (located at its middle), ends included: there the
+    # one-sided limits
+    _, b0, _ = _locate(poly, seats, 0.5 * (lo + hi), index=False)
+    unit = _UNIT_33 if points == 33 else np.linspace(0.0, 1.0, int(points))
+    phi = lo[:, None] + (hi - lo)[:, None] * unit[None, :]  # (n, points)
+    b0 = b0[:, None] + np.zeros(phi.shape)  # each stretch's (+ 0.0: the same numbers)
+    motion = _taut_motion(R, b0 - phi, guide)
+    out = []
+    for f, g, which in ((motion[0], motion[1], 0), (motion[1], motion[2], 1), (motion[3], motion[4], 3)):
+        low, high = float(np.minimum.reduce(f, axis=None)), float(np.maximum.reduce(f, axis=None))
+        rows, cols = (g[:, :-1] * g[:, 1:] < 0).nonzero()
+        for r, c in zip(rows.tolist(), cols.tolist(), strict=True):
+            f0, f1, g0, g1 = float(f[r, c]), float(f[r, c + 1]), float(g[r, c]), float(g[r, c + 1])
+            # within the step f moves less than twice the step times the larger |f'| at its ends
+            reach = 2.0 * float(phi[r, c + 1] - phi[r, c]) * max(abs(g0), abs(g1))
+            if (g0 > 0 and max(f0, f1) + reach < high) or (g0 < 0 and min(f0, f1) - reach > low):
+                continue  # a local extreme that cannot be the period's
+            beta0 = float(b0[r, c])
+
+            def slope(x: float, beta0: float = beta0, which: int = which) -> float:
+                return _taut_motion(R, beta0 - x, guide)[which + 1]
+
+            # at an extreme the value is flat: 1e-11 rad off moves it by ~1e-22 of itself
+            x = brentq(slope, float(phi[r, c]), float(phi[r, c + 1]), xtol=1e-11)
+            value = float(_taut_motion(R, beta0 - x, guide)[which])
+            low, high = min(low, value), max(high, value)
+        out.append((low, high))
+    return tuple(out)
+
+
 def _taut_span_length(poly: WheelPolygon, phi: np.ndarray, guide: GuideEnd, seats: np.ndarray) -> np.ndarray:
     """``taut_entry(poly, phi, ω, guide, seats).span`` alone (the same operations): the free span
     length ``|G - S|`` [m] at the wheel angles ``phi`` (a 1-d array)."""
-    k, b0, c = _locate(poly, seats, phi)
+    _, b0, c = _locate(poly, seats, phi, index=False)
     beta = b0 - phi
     R = poly.radius
     return np.hypot(guide[0] - R * np.sin(beta), guide[1] - R * np.cos(beta))

@@ -67,6 +67,9 @@ def bridge_perimeters(v1: np.ndarray, v2: np.ndarray, cum1: np.ndarray, cum2: np
     nu[0], nu[1] = nu0, -nu0
     rows1 = np.arange(A)[None, :, None]
     rows2 = np.arange(B)[None, None, :]
+    # the vertices gathered by flat indices (row r, vertex k at r n + k: the same elements as x[rows, k])
+    x1f, y1f, x2f, y2f = x1.ravel(), y1.ravel(), x2.ravel(), y2.ravel()
+    base1, base2 = rows1 * n1, rows2 * n2
     k1: Any = None
     k2: Any = None
     settled = np.zeros((2, A, B), dtype=bool)
@@ -87,10 +90,11 @@ def bridge_perimeters(v1: np.ndarray, v2: np.ndarray, cum1: np.ndarray, cum2: np
             if settled.all():
                 break
         k1, k2 = n_k1, n_k2
-        wx = x2[rows2, k2] - x1[rows1, k1]
-        wy = y2[rows2, k2] - y1[rows1, k1]
+        i1, i2 = base1 + k1, base2 + k2
+        wx = x2f[i2] - x1f[i1]
+        wy = y2f[i2] - y1f[i1]
         # outward normal: the upper bridge runs from P2 to P1 (-w), the lower from P1 to P2 (w)
-        nu = np.empty_like(wx)
+        nu = np.empty(wx.shape)
         nu[0] = np.arctan2(wx[0], -wy[0])
         nu[1] = np.arctan2(-wx[1], wy[1])
     bridges = np.hypot(wx, wy).sum(axis=0)

@@ -64,7 +64,8 @@ def _clearance(c: np.ndarray, r: np.ndarray, sides: ArrayLike | None):
     diff = c[:, None, :] - c[None, :, :]
     dist = np.hypot(diff[..., 0], diff[..., 1])
     close = dist < (r[:, None] + r[None, :]) * (1 - 1e-9)
-    for i, j in zip(*np.nonzero(np.triu(close, 1)), strict=True):
+    # each wheel is close to itself: only more than n close pairs name an overlap
+    for i, j in (zip(*np.nonzero(np.triu(close, 1)), strict=True) if np.count_nonzero(close) > n else ()):
         out.append(("overlap", int(i), int(j), float(dist[i, j])))
     if out:
         return out, None
@@ -78,13 +79,16 @@ def _clearance(c: np.ndarray, r: np.ndarray, sides: ArrayLike | None):
     ab = b - a
     den = np.maximum(np.sum(ab * ab, axis=1), 1e-300)
     # distance of every centre k from every span j: (j, k)
-    t = np.clip(np.einsum("jkd,jd->jk", c[None, :, :] - a[:, None, :], ab) / den[:, None], 0.0, 1.0)
+    rel = c[None, :, :] - a[:, None, :]
+    # the dot product over the two coordinates, clipped to the span (np.einsum and np.clip written out)
+    t = np.minimum(np.maximum((rel[..., 0] * ab[:, None, 0] + rel[..., 1] * ab[:, None, 1]) / den[:, None], 0.0), 1.0)
     near = a[:, None, :] + t[..., None] * ab[:, None, :] - c[None, :, :]
-    gap = np.hypot(near[..., 0], near[..., 1])
+    gap = np.hypot(near[..., 0], near[..., 1]).tolist()
+    reach = [float(rk) * (1 - 1e-9) for rk in r.tolist()]
     for j in range(n):
         for k in range(n):
-            if k not in (j, (j + 1) % n) and gap[j, k] < r[k] * (1 - 1e-9):
-                out.append(("crossing", j, k, float(gap[j, k])))
+            if k not in (j, (j + 1) % n) and gap[j][k] < reach[k]:
+                out.append(("crossing", j, k, gap[j][k]))
     return out, wrap
 
 

@@ -84,7 +84,7 @@ def _polygon(pitch: float, teeth: int, bar_diameter: float | None) -> tuple[floa
     the adjustable wheel's search and the studies ask for the same wheels again and again)."""
     R, off = _radius_and_offsets(pitch, teeth, bar_diameter)
     v = np.column_stack([np.cos(off), np.sin(off)]) * R
-    edges = np.hypot(*(np.roll(v, -1, axis=0) - v).T)
+    edges = np.hypot(*(np.concatenate((v[1:], v[:1])) - v).T)  # np.roll(v, -1, axis=0): the same rows
     cum = np.concatenate([[0.0], np.cumsum(edges)[:-1]])
     off.flags.writeable = False
     cum.flags.writeable = False
@@ -118,7 +118,7 @@ def _check_inputs(pitch, centres, teeth, sides, diameters):
     if len(teeth) != n:
         raise InputError(f"teeth must give one entry per wheel ({n}), got {len(teeth)}", field="teeth")
     s = np.ones(n) if sides is None else as_float_array("sides", sides)
-    if s.shape != (n,) or not np.all(np.isin(s, (-1.0, 1.0))):
+    if s.shape != (n,) or not all(x in (-1.0, 1.0) for x in s.tolist()):
         raise InputError(f"sides must be +1 or -1 for each of the {n} wheels, got {sides!r}", field="sides")
     if diameters is not None and len(diameters) != n:
         raise InputError(f"diameters must give one entry per wheel ({n}), got {len(diameters)}",
@@ -135,41 +135,58 @@ def _phase_grid(w: _Wheel, phases: int) -> np.ndarray:
 def _support(w: _Wheel, phase: np.ndarray, alpha: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """Support point of ``w`` for span direction ``alpha``: (polar angle [rad], vertex index or -1)."""
     if w.offsets is None:
-        return alpha - w.side * math.pi / 2, np.full(alpha.shape, -1)
+        none = np.empty(alpha.shape, dtype=int)
+        none.fill(-1)  # np.full(alpha.shape, -1)
+        return alpha - w.side * math.pi / 2, none
     a = phase[..., None] + w.offsets  # (..., K)
-    k = np.argmin(w.side * np.sin(a - alpha[..., None]), axis=-1)
-    # a at k (np.take_along_axis(a, k[..., None], axis=-1)[..., 0]: the same sums, gathered directly)
-    return np.broadcast_to(phase, k.shape) + w.offsets[k], k
+    gap = np.sin(a - alpha[..., None])
+    k = (gap if w.side == 1 else w.side * gap).argmin(axis=-1)
+    # a at k (np.take_along_axis(a, k[..., None], axis=-1)[..., 0]: the same sums, gathered directly;
+    # k has the shape of phase and alpha broadcast)
+    return phase + w.offsets[k], k
 
 
 def _span(wa: _Wheel, wb: _Wheel, pa: np.ndarray, pb: np.ndarray, alpha0: float):
     """Common supporting line of two wheels for every phase pair: (alpha, length, angle_a, k_a, angle_b, k_b, ok)."""
-    alpha = np.full(np.broadcast_shapes(pa.shape, pb.shape), alpha0, dtype=float)
+    alpha = np.empty((pa.shape[0], pb.shape[1]))  # np.full(np.broadcast_shapes(pa.shape, pb.shape), alpha0)
+    alpha.fill(alpha0)
     ok = np.zeros(alpha.shape, dtype=bool)
+    # each support point as a circle: the vertex (radius 0) or the wheel (signed radius); its
+    # coordinates one by one (centre + R (cos, sin): the same sums as the stacked pair)
+    rho_a = 0.0 if wa.offsets is not None else wa.side * wa.radius
+    rho_b = 0.0 if wb.offsets is not None else wb.side * wb.radius
+    drho = rho_b - rho_a
+    ax, ay = float(wa.centre[0]), float(wa.centre[1])
+    bx, by = float(wb.centre[0]), float(wb.centre[1])
+    with np.errstate(invalid="ignore", divide="ignore"):
+        return _span_iterations(wa, wb, pa, pb, alpha, ok, drho, (ax, ay), (bx, by))
+
+
+def _span_iterations(wa, wb, pa, pb, alpha, ok, drho, a_xy, b_xy):
+    """:func:`_span`'s fixed-point iterations (inside its error state)."""
+    ax, ay = a_xy
+    bx, by = b_xy
     ka = kb = None
     for _ in range(_MAX_ITERATIONS):
         ang_a, ka_new = _support(wa, pa, alpha)
         ang_b, kb_new = _support(wb, pb, alpha)
-        # each support point as a circle: the vertex (radius 0) or the wheel (signed radius)
-        if wa.offsets is None:
-            ca, rho_a = np.broadcast_to(wa.centre, alpha.shape + (2,)), wa.side * wa.radius
-        else:
-            ca, rho_a = wa.centre + wa.radius * np.stack([np.cos(ang_a), np.sin(ang_a)], axis=-1), 0.0
-        if wb.offsets is None:
-            cb, rho_b = np.broadcast_to(wb.centre, alpha.shape + (2,)), wb.side * wb.radius
-        else:
-            cb, rho_b = wb.centre + wb.radius * np.stack([np.cos(ang_b), np.sin(ang_b)], axis=-1), 0.0
-        d = cb - ca
-        D = np.hypot(d[..., 0], d[..., 1])
-        drho = rho_b - rho_a
-        with np.errstate(invalid="ignore", divide="ignore"):
-            new = np.arctan2(d[..., 1], d[..., 0]) - np.arcsin(drho / D)
-        new = alpha + np.angle(np.exp(1j * (new - alpha)))  # stay next to the previous direction
-        same = (ka is not None and kb is not None and np.array_equal(ka_new, ka) and np.array_equal(kb_new, kb))
+        if wa.offsets is not None:
+            ax, ay = wa.centre[0] + wa.radius * np.cos(ang_a), wa.centre[1] + wa.radius * np.sin(ang_a)
+        if wb.offsets is not None:
+            bx, by = wb.centre[0] + wb.radius * np.cos(ang_b), wb.centre[1] + wb.radius * np.sin(ang_b)
+        dx, dy = bx - ax, by - ay  # numbers between two circles (the same at every phase pair)
+        D = np.hypot(dx, dy)
+        new = np.arctan2(dy, dx) - np.arcsin(drho / D)
+        turn = np.exp(1j * (new - alpha))
+        new = alpha + np.arctan2(turn.imag, turn.real)  # np.angle: stay next to the previous direction
+        same = (ka is not None and kb is not None and bool((ka_new == ka).all()) and bool((kb_new == kb).all()))
         ka, kb = ka_new, kb_new
         if same:
             ok = np.isfinite(new) & (D > np.abs(drho))
             length = np.sqrt(np.maximum(D**2 - drho**2, 0.0))
+            if np.shape(length) != alpha.shape:  # np.full(alpha.shape, length)
+                length, value = np.empty(alpha.shape), length
+                length.fill(value)
             return new, length, ang_a, ka, ang_b, kb, ok
         alpha = new
     return alpha, np.full(alpha.shape, np.nan), ang_a, ka, ang_b, kb, ok
@@ -177,12 +194,12 @@ def _span(wa: _Wheel, wb: _Wheel, pa: np.ndarray, pb: np.ndarray, alpha0: float)
 
 def _arc_position(w: _Wheel, angle: np.ndarray, index: np.ndarray, phase: np.ndarray, reference: float) -> np.ndarray:
     """Arc position ``A`` of a support point, its angle unwrapped next to ``reference`` [m]."""
-    turns = np.round((angle - reference) / (2 * math.pi))
+    turns = np.rint((angle - reference) / (2 * math.pi))  # np.round(..): the same rounding, half to even
     unwrapped = angle - 2 * math.pi * turns
     if w.offsets is None or w.cumulative is None:
         return w.radius * unwrapped
     # vertex k at phase + offsets[k] + 2π m: A = m P + cumulative[k]
-    m = np.round((unwrapped - phase - w.offsets[index]) / (2 * math.pi))
+    m = np.rint((unwrapped - phase - w.offsets[index]) / (2 * math.pi))
     return m * w.perimeter + w.cumulative[index]
 
 
@@ -203,25 +220,26 @@ def _span_terms(wheels: list[_Wheel], grids: list[np.ndarray], circle) -> tuple[
         out_ref = alpha0 - wa.side * math.pi / 2
         in_ref = float(circle.span_angle[j]) - wb.side * math.pi / 2 - wb.side * float(circle.wrap_angle[j])
         alpha, length, ang_a, ka, ang_b, kb, ok = _span(wa, wb, pa, pb, alpha0)
-        a_out = _arc_position(wa, ang_a, ka, np.broadcast_to(pa, ang_a.shape), out_ref)
-        a_in = _arc_position(wb, ang_b, kb, np.broadcast_to(pb, ang_b.shape), in_ref)
-        exact &= bool(np.all(ok))
+        a_out = _arc_position(wa, ang_a, ka, pa, out_ref)  # the phases broadcast against the angles
+        a_in = _arc_position(wb, ang_b, kb, pb, in_ref)
+        exact &= bool(ok.all())
         terms.append(length + wa.side * a_out - wb.side * a_in)
         outs.append(wa.side * a_out)  # (φ_i, φ_{i+1}) on wheel i
         ins.append(wb.side * a_in)  # (φ_i, φ_{i+1}) on wheel i+1
     if exact and n > 2:
         for i in range(n):
             # the shortest wrap of wheel i over the phases of its neighbours, at each of its phases
-            shortest = outs[i].min(axis=1) - ins[(i - 1) % n].max(axis=0)
-            exact &= bool(np.min(shortest) >= -1e-9)
+            shortest = np.minimum.reduce(outs[i], axis=1) - np.maximum.reduce(ins[(i - 1) % n], axis=0)
+            exact &= bool(np.minimum.reduce(shortest) >= -1e-9)
     return terms, exact
 
 
 def _max_plus_cycle(terms: list[np.ndarray], pick) -> float:
+    reduce = {np.min: np.minimum.reduce, np.max: np.maximum.reduce}.get(pick, pick)  # the same, without the wrapper
     acc = terms[0]
     for m in terms[1:]:
-        acc = pick(acc[:, :, None] + m[None, :, :], axis=1)
-    return float(pick(np.diag(acc)))
+        acc = reduce(acc[:, :, None] + m[None, :, :], axis=1)
+    return float(reduce(acc.diagonal(), axis=0))
 
 
 def loop_length_at_phases(
@@ -322,7 +340,9 @@ def _loop(p, c, teeth, s, diameters, bar_diameter, n, warn=True) -> LoopLength:
                           exact=False)
     return LoopLength(
         links_min=_max_plus_cycle(terms, np.min) / p, links_max=_max_plus_cycle(terms, np.max) / p,
-        links_mean=float(sum(t.mean() for t in terms)) / p, links_circles=circles, exact=True)
+        # t.mean(): its sum over its count (the same division)
+        links_mean=float(sum(np.add.reduce(t, axis=None) / t.size for t in terms)) / p, links_circles=circles,
+        exact=True)
 
 
 def chain_length_loop(

@@ -44,7 +44,7 @@ _DOCS.section("span_parameters", "span_tension")
 def _catenary_parts(chord_length, inclination, tension, mass_per_length, gravity):
     L = check_positive("chord_length", chord_length, "m")
     g = as_float_array("inclination", inclination)
-    if np.any(np.abs(g) >= np.pi / 2):
+    if (np.abs(g) >= np.pi / 2).any():  # g an array (as_float_array)
         raise InputError(f"inclination must lie in (-π/2, π/2) rad (not a vertical span), got {g}")
     H = check_positive("tension", tension, "N")
     q = check_positive("mass_per_length", mass_per_length, "kg/m")
@@ -207,6 +207,7 @@ def _bisect_scalar(lo, hi, span, rise, w, f):
     # same halvings, the same answers, the same result, bit for bit
     root = _log_tension_near(float(lo), float(hi), float(span), float(rise), float(w), float(f))
     near = math.inf if root is None else 1e-11 * max(1.0, abs(root))
+    lo, hi = float(lo), float(hi)  # the halvings in Python floats (the same IEEE sums and products)
     for _ in range(100):
         mid = 0.5 * (lo + hi)
         # lo and hi adjacent (or equal): the midpoint rounds to one of them, and from this

@@ -10,7 +10,7 @@ from .._validation import as_float_array, check_nonnegative, check_positive
 from ..errors import InfeasibleError, InputError
 from .two_wheels import _belt_length
 from .wheels import pitch_radius
-from .wrap import _loop_length, _loop_lengths, _span_scalar, wrap_layout
+from .wrap import MATH_TRIG, _loop_length, _loop_lengths, _span_scalar, wrap_layout
 
 
 @finite_guard
@@ -159,17 +159,18 @@ def tensioner_travel(
         cc[..., k, :] = c[k] + np.asarray(s)[..., None] * u
         return cc
 
-    if c.shape[0] <= 7:  # Python floats for a few wheels (the same numbers, _loop_length)
+    small = c.shape[0] <= 7
+    if small:  # Python floats for a few wheels (_loop_length, the math module's trigonometry)
         xs, ys, rl, sl = c[:, 0].tolist(), c[:, 1].tolist(), r.tolist(), sd.tolist()
         ck, uk = c[k].tolist(), u.tolist()
         n = len(xs)
         rho = [a * b for a, b in zip(sl, rl, strict=True)]
         # the spans that do not touch the moving wheel, once
-        fixed = [None if i in ((k - 1) % n, k) else _span_scalar(xs, ys, rho, i) for i in range(n)]
+        fixed = [None if i in ((k - 1) % n, k) else _span_scalar(xs, ys, rho, i, MATH_TRIG) for i in range(n)]
 
         def length(s):
             xs[k], ys[k] = ck[0] + s * uk[0], ck[1] + s * uk[1]
-            return _loop_length(xs, ys, rl, sl, fixed)
+            return _loop_length(xs, ys, rl, sl, fixed, MATH_TRIG)
     else:
         def length(s):
             return float(_loop_lengths(positions(np.array([s])), r, sd)[0])
@@ -177,20 +178,38 @@ def tensioner_travel(
     out = np.empty(e.size)
     smax = float(np.max(np.hypot(*(c - c[k]).T))) + float(np.max(lay0.radii)) * 4
     grid = np.linspace(0, smax, 120)
-    vals = _loop_lengths(positions(grid), r, sd)  # bracket the roots once for all e
+    vals = None if small else _loop_lengths(positions(grid), r, sd)  # bracket the roots once for all e
+    steps = grid.tolist()
+    seen: dict[int, float] = {}  # a few wheels: the grid's lengths walked from s = 0 as far as a root needs
+
+    def first_reaching(target: float) -> int | None:
+        if vals is not None:
+            idx = np.nonzero(vals >= target)[0]
+            return int(idx[0]) if idx.size else None
+        for j in range(1, len(steps)):
+            if j not in seen:
+                seen[j] = length(steps[j])
+            if seen[j] >= target:
+                return j
+        return None
+
     for i, ei in enumerate(e.ravel()):
         target = lay0.length + extra + ei * Lch
         if target <= lay0.length:
             out[i] = 0.0
             continue
-        idx = np.nonzero(vals >= target)[0]
-        if idx.size == 0:
+        j = first_reaching(target)
+        if j is None:
+            vals = _loop_lengths(positions(grid), r, sd)
             raise InfeasibleError(
                 f"the tensioner cannot take up an elongation of {ei:g} (plus {extra:g} m of "
                 f"initial slack): moving it along "
                 f"{u.tolist()} lengthens the chain path by at most "
                 f"{(np.max(vals[np.isfinite(vals)]) / lay0.length - 1):.4g}"
             )
-        j = int(idx[0])
-        out[i] = brentq(lambda s, t=target: length(s) - t, grid[j - 1], grid[j])
+        try:
+            out[i] = brentq(lambda s, t=target: length(s) - t, grid[j - 1], grid[j])
+        except ValueError:  # the bracket's ends of one sign within a rounding of the grid's: the grid's own numbers
+            out[i] = brentq(lambda s, t=target: float(_loop_lengths(positions(np.array([s])), r, sd)[0]) - t,
+                            grid[j - 1], grid[j])
     return out.reshape(e.shape)

@@ -122,7 +122,7 @@ def centre_distance_approx(pitch: ArrayLike, teeth_1: ArrayLike, teeth_2: ArrayL
     X = check_positive("links", links)
     b = 2.0 * X - z1 - z2
     disc = b**2 - 8.0 / np.pi**2 * (z2 - z1) ** 2
-    if np.any(b <= 0) or np.any(disc < 0):
+    if np.asarray(b <= 0).any() or np.asarray(disc < 0).any():
         raise InfeasibleError(
             f"links = {X} is too short for wheels of {z1} and {z2} teeth: need "
             "2X - z1 - z2 > sqrt(8/pi^2) |z2 - z1| (links must exceed about (z1+z2)/2 + 0.45|z2-z1|)"
@@ -132,6 +132,11 @@ def centre_distance_approx(pitch: ArrayLike, teeth_1: ArrayLike, teeth_2: ArrayL
 
 def _belt_length(a: FloatOrArray, r1: FloatOrArray, r2: FloatOrArray) -> FloatOrArray:
     """Open-belt length on two circles (exact tangents)."""
+    if type(a) is float and type(r1) is float and type(r2) is float:
+        # Python floats (the root searches): numpy's arc sine, the correctly rounded square root,
+        # the same products and sums as below, bit for bit
+        b = float(np.arcsin((r2 - r1) / a))
+        return 2.0 * math.sqrt(a**2 - (r2 - r1) ** 2) + r1 * (math.pi - 2 * b) + r2 * (math.pi + 2 * b)
     beta = np.arcsin((r2 - r1) / a)
     return 2.0 * np.sqrt(a**2 - (r2 - r1) ** 2) + r1 * (np.pi - 2 * beta) + r2 * (np.pi + 2 * beta)
 

@@ -121,15 +121,18 @@ def _radius_and_offsets(pitch, teeth, bar_diameter):
         if z < 3:
             raise InputError(f"teeth must be a whole number >= 3 for a roller chain, got {z}")
         R = t / (2.0 * np.sin(np.pi / z))
-        steps = np.full(z, 2.0 * np.pi / z)
+        steps = np.empty(z)  # np.full(z, 2π/z)
+        steps.fill(2.0 * np.pi / z)
     else:
         from ..geometry.polygon import link_chain_central_angles
 
         d = float(bar_diameter)
         R = cached_pitch_radius(t, z, d)  # float(pitch_radius(t, z, d)), kept
         d1, d2 = (float(x) for x in link_chain_central_angles(t, d, z))
-        steps = np.tile([d1, d2], z)
-    return R, np.concatenate([[0.0], np.cumsum(steps)[:-1]])
+        steps = np.array([d1, d2] * z)  # np.tile([d1, d2], z)
+    offsets = np.zeros(steps.size)  # [0, cumsum(steps)[:-1]] (np.concatenate of the same values)
+    np.cumsum(steps[:-1], out=offsets[1:])
+    return R, offsets
 
 
 @functools.lru_cache(maxsize=256)

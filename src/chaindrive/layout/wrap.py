@@ -121,7 +121,7 @@ def wrap_layout(centres: ArrayLike, radii: ArrayLike, sides: ArrayLike | None = 
     if r.shape != (n,):
         raise InputError(f"radii must have shape ({n},) like centres, got {r.shape}")
     s = np.ones(n) if sides is None else as_float_array("sides", sides)
-    if s.shape != (n,) or not ((s == 1.0) | (s == -1.0)).all():
+    if s.shape != (n,) or not all(x in (1.0, -1.0) for x in s.tolist()):
         raise InputError(f"sides must be +1 or -1 for each of the {n} wheels, got {sides!r}")
     key = (c.tobytes(), r.tobytes(), s.tobytes())
     kept = _KEPT.get(key)
@@ -154,7 +154,7 @@ def _wrap_layout(c: np.ndarray, r: np.ndarray, s: np.ndarray) -> WrapLayout:
     d = c_next - c
     D = np.hypot(d[:, 0], d[:, 1])
     drho = rho_next - rho
-    if np.any(D <= np.abs(drho)):
+    if (D <= np.abs(drho)).any():
         bad = int(np.argmax(D <= np.abs(drho)))
         raise InfeasibleError(
             f"wheels {bad} and {(bad + 1) % n} overlap so that the chain has no common "
@@ -163,14 +163,15 @@ def _wrap_layout(c: np.ndarray, r: np.ndarray, s: np.ndarray) -> WrapLayout:
     delta = np.arctan2(d[:, 1], d[:, 0])
     alpha = delta - np.arcsin(drho / D)
     ell = np.sqrt(D**2 - drho**2)
-    t = np.column_stack([np.cos(alpha), np.sin(alpha)])
-    nrm = np.column_stack([-t[:, 1], t[:, 0]])
+    # the normal (-sin, cos) of each span filled in (np.column_stack of the same columns)
+    nrm = np.empty((n, 2))
+    nrm[:, 0], nrm[:, 1] = -np.sin(alpha), np.cos(alpha)
     start = c - rho[:, None] * nrm
     end = c_next - rho_next[:, None] * nrm
     alpha_in = np.concatenate((alpha[-1:], alpha[:-1]))
     turn = np.mod(s * (alpha - alpha_in), 2 * np.pi)
     wrap = np.where(np.abs(turn) <= 1e-12, 0.0, turn)  # np.isclose(turn, 0, atol=1e-12) written out
-    total_turn = float(np.sum(s * wrap))
+    total_turn = float(np.add.reduce(s * wrap))  # np.sum
     if not abs(total_turn - 2 * np.pi) <= 1e-6 + 1e-5 * 2 * np.pi:  # np.isclose(.., 2π, atol=1e-6)
         raise InfeasibleError(
             "the wheels do not form a simple counter-clockwise loop in the given order "
@@ -180,7 +181,7 @@ def _wrap_layout(c: np.ndarray, r: np.ndarray, s: np.ndarray) -> WrapLayout:
     arc = r * wrap
     return WrapLayout(centres=c, radii=r, sides=s, span_start=start, span_end=end,
                       span_length=ell, span_angle=alpha, wrap_angle=wrap, wrap_length=arc,
-                      length=float(ell.sum() + arc.sum()))
+                      length=float(np.add.reduce(ell) + np.add.reduce(arc)))  # ell.sum() + arc.sum()
 
 
 def span_lengths(centres: np.ndarray, radii: np.ndarray, sides: np.ndarray) -> np.ndarray | None:
@@ -212,12 +213,12 @@ def span_lengths(centres: np.ndarray, radii: np.ndarray, sides: np.ndarray) -> n
     d = c_next - centres
     D = np.hypot(d[:, 0], d[:, 1])
     drho = rho_next - rho
-    if np.any(D <= np.abs(drho)):
+    if (D <= np.abs(drho)).any():  # (the array methods and the ufunc reduction: the same tests and sums)
         return None
     alpha = np.arctan2(d[:, 1], d[:, 0]) - np.arcsin(drho / D)
     turn = np.mod(sides * (alpha - np.concatenate((alpha[:, -1:], alpha[:, :-1]), axis=1)), 2 * np.pi)
     wrap = np.where(np.abs(turn) <= 1e-12, 0.0, turn)
-    if not np.all(np.abs(np.sum(sides * wrap, axis=1) - 2 * np.pi) <= 1e-6 + 1e-5 * 2 * np.pi):
+    if not (np.abs(np.add.reduce(sides * wrap, axis=1) - 2 * np.pi) <= 1e-6 + 1e-5 * 2 * np.pi).all():
         return None
     return np.sqrt(D**2 - drho**2)
 
@@ -244,29 +245,38 @@ def _loop_lengths(centres: np.ndarray, radii: np.ndarray, sides: np.ndarray) -> 
     return np.where(ok, length, -np.inf)
 
 
-def _span_scalar(xs: list[float], ys: list[float], rho: list[float], i: int) -> tuple[float, float] | None:
+#: The hypotenuse, arc tangent and arc sine of :func:`_span_scalar`: numpy's own (the same numbers
+#: as :func:`_loop_lengths`), or the math module's (faster, within a rounding of them).
+NUMPY_TRIG = (np.hypot, np.arctan2, np.arcsin)
+MATH_TRIG = (math.hypot, math.atan2, math.asin)
+
+
+def _span_scalar(xs: list[float], ys: list[float], rho: list[float], i: int,
+                 trig: tuple = NUMPY_TRIG) -> tuple[float, float] | None:
     """Direction and length of span ``i`` as :func:`_loop_lengths` has them, or ``None`` where
     the span has no common tangent."""
+    hypot, atan2, asin = trig
     j = i + 1 if i + 1 < len(xs) else 0
     dx, dy = xs[j] - xs[i], ys[j] - ys[i]
-    D = float(np.hypot(dx, dy))
+    D = float(hypot(dx, dy))
     drho = rho[j] - rho[i]
     if not D > abs(drho):
         return None
-    return float(np.arctan2(dy, dx)) - float(np.arcsin(drho / D)), math.sqrt(D * D - drho * drho)
+    return float(atan2(dy, dx)) - float(asin(drho / D)), math.sqrt(D * D - drho * drho)
 
 
 def _loop_length(xs: list[float], ys: list[float], radii: list[float], sides: list[float],
-                 fixed: list[tuple[float, float] | None] | None = None) -> float:
+                 fixed: list[tuple[float, float] | None] | None = None, trig: tuple = NUMPY_TRIG) -> float:
     """:func:`_loop_lengths` of one layout of up to 7 wheels in Python floats (the same
-    numbers: the same operations, numpy's own arc tangent and arc sine, the sums in order),
-    for the scalar root searches; ``fixed``: the spans (:func:`_span_scalar`) that do not change
-    between the calls, ``None`` for those computed each time."""
+    numbers: the same operations, numpy's own arc tangent and arc sine, the sums in order;
+    ``trig=MATH_TRIG``: the math module's, within a rounding), for the scalar root searches;
+    ``fixed``: the spans (:func:`_span_scalar`) that do not change between the calls, ``None``
+    for those computed each time."""
     n = len(xs)
     rho = [s * r for s, r in zip(sides, radii, strict=True)]
     alpha, ell = [], []
     for i in range(n):
-        span = fixed[i] if fixed is not None and fixed[i] is not None else _span_scalar(xs, ys, rho, i)
+        span = fixed[i] if fixed is not None and fixed[i] is not None else _span_scalar(xs, ys, rho, i, trig)
         if span is None:
             return -math.inf
         alpha.append(span[0])
@@ -311,7 +321,7 @@ def teeth_in_mesh(wrap_angle: ArrayLike, teeth: ArrayLike) -> np.ndarray:
     9
     """
     th = check_nonnegative("wrap_angle", wrap_angle, "rad")
-    if np.any(th > 2 * np.pi + 1e-12):
+    if np.asarray(th > 2 * np.pi + 1e-12).any():
         raise InputError(f"wrap_angle must lie in [0, 2π] rad, got {th}")
     z = check_teeth("teeth", teeth, minimum=2)
     return np.floor(th * z / (2 * np.pi) + 1e-9).astype(int)

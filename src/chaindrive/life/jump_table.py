@@ -92,11 +92,17 @@ def wrap_jump_range(loading: str = "torque") -> dict[str, tuple[float, float]]:
     """
     if loading not in LOADINGS:
         raise InputError(f"loading must be one of {', '.join(LOADINGS)}, got {loading!r}", field="loading")
+    return dict(_range(loading))  # a new dict of the kept (immutable) pairs
+
+
+@functools.cache
+def _range(loading: str) -> tuple[tuple[str, tuple[float, float]], ...]:
+    # wrap_jump_range's items for a checked loading, read from the table once
     t = _table()
     lam = t[loading + "_lambda"]
-    return {"teeth": (float(round(math.exp(t["teeth"][0]))), float(round(math.exp(t["teeth"][-1])))),
-            "fraction": (float(t["fraction"][0]), float(t["fraction"][-1])),
-            "load_stiffness": (float(math.exp(lam[0])), float(math.exp(lam[-1])))}
+    return (("teeth", (float(round(math.exp(t["teeth"][0]))), float(round(math.exp(t["teeth"][-1]))))),
+            ("fraction", (float(t["fraction"][0]), float(t["fraction"][-1]))),
+            ("load_stiffness", (float(math.exp(lam[0])), float(math.exp(lam[-1])))))
 
 
 def _interp(x: float, xp: list[float], fp: list[float]) -> float:
@@ -296,7 +302,7 @@ def jump_onset(pitch: float, teeth: int, roller_diameter: float, elongation: Arr
                       stacklevel=2)
 
     def shaped(v):
-        return float(v[0]) if e.ndim == 0 else np.reshape(np.array(v, float), e.shape)
+        return float(v[0]) if e.ndim == 0 else np.array(v, float).reshape(e.shape)
 
     return JumpOnset(shaped(rho_l), shaped(tight_l), loading, shaped(rigid_l), shaped(c_l), outside, shaped(s_l),
                      shaped(lam_l))

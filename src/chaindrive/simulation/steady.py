@@ -60,8 +60,12 @@ from .run import INTEGRATORS, State, assemble
 
 __all__ = ["SteadyState", "span_period", "steady_state", "warm_start"]
 
-#: settling step: at most this many times the measuring step and ...
-SETTLE_FACTOR = 2.0
+#: settling step: at most this many times the measuring step and ... (1 since the spans are
+#: damped by default: a slow drive's slack-span vibration, which raises its mean tension, then
+#: relaxes over ``2/α`` (0.6 s on a 16B 40-link drive at 5 rad/s), and settling at twice the step
+#: left it at the coarse step's level: mean 2668 N against 2826 N settled at the measuring step and
+#: 2815-2833 N from long explicit runs; the 16B benchmark drive: 3077 against 3078 N)
+SETTLE_FACTOR = 1.0
 #: ... at least this many steps per tooth period
 SETTLE_PER_PERIOD = 50
 #: the implicit step is not halved below this many explicit stable steps: the measurement
@@ -358,10 +362,12 @@ def steady_state(drive_or_model: Any, *, periods: int = 12, bins: int = 16, wind
     samples : int
         Samples per tooth period, at least 4.
     min_settle_time : float, optional
-        Simulated time [s] run before the settling test may pass; default two periods of
-        the slowest first transverse mode of the tight and the slack span
-        (:func:`span_period`; at most 100 tooth periods): a span's vibration builds up
-        over its own periods, and the mean tension with it.
+        Simulated time [s] run before the settling test may pass; default the longer of two
+        periods of the slowest first transverse mode of the tight and the slack span
+        (:func:`span_period`) and three time constants ``2/α`` of the spans' damping
+        (:meth:`SimulationModel.span_damping_rate`: every transverse mode decays as
+        ``exp(−α t/2)``; 24 tooth periods at the default ``α``), at most 100 tooth periods:
+        a span's vibration builds up over its own periods, and the mean tension with it.
     state : State, optional
         Static state to start from (default a fresh assembly).
 
@@ -417,7 +423,7 @@ def steady_state(drive_or_model: Any, *, periods: int = 12, bins: int = 16, wind
         settle_dt = max(dt, min(SETTLE_FACTOR * dt, period / SETTLE_PER_PERIOD, 0.5 * transverse))
     run = _Runner(model, start, method, settle_dt, period, samples, drv)
     if min_settle_time is None:
-        min_settle_time = min(2.0 * span_period(model, start), MAX_AUTO_SETTLE * period)
+        min_settle_time = default_settle_time(model, start, period)
     elif not min_settle_time >= 0.0:
         raise InputError(f"min_settle_time must be >= 0 s, got {min_settle_time!r}",
                          field="min_settle_time")
@@ -525,6 +531,17 @@ def check_counts(**values: Any) -> None:
                                  field=name)
         elif not 0.0 < value < 1.0:
             raise InputError(f"{name} must be in (0, 1), e.g. 0.02, got {value!r}", field=name)
+
+
+def default_settle_time(model: SimulationModel, start: State, period: float) -> float:
+    """``steady_state``'s default ``min_settle_time`` [s]: the longer of two periods of the
+    slowest first span mode (:func:`span_period`) and three time constants ``2/α`` of the
+    spans' damping (mass-proportional: every transverse mode's envelope decays as
+    ``exp(−α t/2)``, so a start transient is down to 5 %; ``3/(2π ζ)`` = 24 tooth periods at
+    the default ``α = 2 ζ Ω``), at most ``MAX_AUTO_SETTLE`` tooth periods of ``period`` [s]."""
+    alpha = model.span_damping_rate()
+    decay = 6.0 / alpha if alpha > 0.0 else 0.0
+    return min(max(2.0 * span_period(model, start), decay), MAX_AUTO_SETTLE * period)
 
 
 def span_period(model: SimulationModel, state: State) -> float:

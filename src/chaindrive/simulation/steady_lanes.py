@@ -31,7 +31,6 @@ from .results import default_probes, slack_span, tight_span
 from .run import INTEGRATORS, State, assemble
 from .steady import (
     EXPLICIT_BELOW,
-    MAX_AUTO_SETTLE,
     SETTLE_FACTOR,
     SETTLE_PER_PERIOD,
     SteadyState,
@@ -41,7 +40,7 @@ from .steady import (
     _Runner,
     _span_tension,
     check_counts,
-    span_period,
+    default_settle_time,
     summarise,
     warm_start,
 )
@@ -83,7 +82,7 @@ def _program(model: SimulationModel, start: State, drv: int, period: float, dt: 
     run = _Steps(settle_dt, period, samples)
     min_settle_time = o["min_settle_time"]
     if min_settle_time is None:
-        min_settle_time = min(2.0 * span_period(model, start), MAX_AUTO_SETTLE * period)
+        min_settle_time = default_settle_time(model, start, period)
     means: list[float] = []
     peaks: list[float] = []
     settled = False

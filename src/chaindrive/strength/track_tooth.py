@@ -101,7 +101,8 @@ def track_design_force(weight: ArrayLike, adhesion: ArrayLike = 1.0, rims: int =
     """
     g = check_positive("weight", weight, "N")
     phi = check_range("adhesion", adhesion, 0.0, 1.5, low_inclusive=False)
-    if np.any(~np.isin(np.asarray(rims), (1, 2))):
+    rims_array = np.asarray(rims)
+    if not ((rims_array == 1) | (rims_array == 2)).all():  # np.isin(rims, (1, 2)), without its overhead
         raise InputError(f"rims must be 1 or 2 (Sharipov: i = 1 single-rim, 2 double-rim wheel), got {rims!r}")
     return _out(DESIGN_WEIGHT_SHARE * g * phi / np.asarray(rims, dtype=float))
 

@@ -185,7 +185,7 @@ def unequal_link_amplitude(pitch: float, teeth: int, *, tolerance: float = LENGT
 
 @finite_guard
 def polygon_transverse_harmonics(radius: float, side_angles: ArrayLike, harmonics: int = 2,
-                                 samples: int = 4096) -> np.ndarray:
+                                 samples: int | None = None) -> np.ndarray:
     r"""Fourier amplitudes [m] of the transverse motion of the point where a span leaves a polygon.
 
     Parameters
@@ -197,8 +197,9 @@ def polygon_transverse_harmonics(radius: float, side_angles: ArrayLike, harmonic
         ``[δ1, δ2]`` for a round link chain (Dolipiński et al., δ1 + δ2 = 2π/z).
     harmonics : int
         Amplitudes returned: of the period's 1st, 2nd, ... harmonic.
-    samples : int
-        Samples of one period.
+    samples : int, optional
+        Samples of one period for a discrete transform instead of the integral (the
+        amplitudes of the sampled motion; default: the integral in closed form).
 
     Returns
     -------
@@ -207,12 +208,18 @@ def polygon_transverse_harmonics(radius: float, side_angles: ArrayLike, harmonic
 
     .. math:: y(\theta) = R\cos(\theta - \theta_c), \ |\theta - \theta_c| \le \delta/2 \text{ on each side}
 
+    .. math:: a_k = \frac{2R}{P}\Bigl|\sum_j e^{-i\omega_k\theta_{c,j}}\,h_j\bigl(
+              \operatorname{sinc}\tfrac{(1-\omega_k)h_j}{\pi} + \operatorname{sinc}\tfrac{(1+\omega_k)h_j}{\pi}\bigr)\Bigr|,
+              \qquad \omega_k = \frac{2\pi k}{P},\ h_j = \frac{\delta_j}{2}
+
     Notes
     -----
     The span leaves from the last seated hinge; while a side of central angle δ turns
     through δ, the hinge's distance from the line through the axis parallel to the span
-    is R cos φ, φ from −δ/2 to δ/2 (the chordal action without a guide). Sampled
-    uniformly in the wheel angle, then FFT.
+    is R cos φ, φ from −δ/2 to δ/2 (the chordal action without a guide). Its Fourier
+    coefficients over the period ``P = Σδ`` are integrated side by side in closed form
+    (``∫ cos u cos ωu du`` over ``|u| <= h``; the odd part vanishes); tested against the
+    transform of 2²⁰ samples. With ``samples``: sampled uniformly in the wheel angle, then FFT.
 
     Examples
     --------
@@ -228,6 +235,13 @@ def polygon_transverse_harmonics(radius: float, side_angles: ArrayLike, harmonic
     r = float(check_positive("radius", radius, "m"))
     sides = np.asarray(check_positive("side_angles", side_angles, "rad"), dtype=float).ravel()
     period = sides.sum()
+    if samples is None:
+        half = 0.5 * sides
+        centre = np.cumsum(sides) - half  # (j,)
+        omega = 2.0 * np.pi / period * np.arange(1, int(harmonics) + 1)[:, None]  # (k, 1)
+        terms = np.exp(-1j * omega * centre) * half * (np.sinc((1.0 - omega) * half / np.pi)
+                                                       + np.sinc((1.0 + omega) * half / np.pi))
+        return 2.0 * r / period * np.abs(terms.sum(axis=1))
     theta = (np.arange(samples) + 0.5) / samples * period
     edges = np.concatenate([[0.0], np.cumsum(sides)])
     j = np.clip(np.searchsorted(edges, theta, side="right") - 1, 0, sides.size - 1)
@@ -335,8 +349,12 @@ def _span_response(span: TensionerSpan, om: np.ndarray, y1: Any, y2: Any, zeta: 
         sa = s_unit * ell[a]
         ka = k[a][:, None]                                                             # (F, 1)
         kda = kd[a][:, None]
-        wa = (yc * rows(np.cos(kda * sa)))[None] + ((gg[a] * u[..., None] - (yc * np.cos(ka * ell[a])))
-                                                    / np.sin(ka * ell[a])) * rows(np.sin(kda * sa))[None]
+        # cos and sin of the complex k s from one exponential (cos z = (e^iz + e^-iz)/2, sin z =
+        # (e^iz - e^-iz)/2i; within a few roundings of np.cos and np.sin at these damped k)
+        turn = np.exp(1j * (kda * sa))
+        back = 1.0 / turn
+        wa = (yc * rows(0.5 * (turn + back)))[None] + ((gg[a] * u[..., None] - (yc * np.cos(ka * ell[a])))
+                                                       / np.sin(ka * ell[a])) * rows(-0.5j * (turn - back))[None]
         sb = s_unit * ell[b]
         kdb = kd[b][:, None]
         wb = gg[b] * u[..., None] * rows(np.sin(kdb * (ell[b] - sb)) / np.sin(kdb * ell[b]))[None]

@@ -358,7 +358,7 @@ def resonance_check(natural_frequencies: ArrayLike, excitations: Mapping[str, Ar
     w = np.array([float(check_positive(f"excitation {k!r}", excitations[k], "rad/s")) for k in names])
     mode = np.repeat(np.arange(1, p.size + 1), len(names))
     pp = np.repeat(p, len(names))
-    ww = np.tile(w, p.size)
+    ww = np.concatenate([w] * p.size) if p.size else w[:0]  # np.tile(w, p.size)
     r = pp / ww
     mu = np.asarray(resonance_margin(r))
     ok = mu > 0

@@ -126,7 +126,7 @@ def moving_string_frequencies(tension: ArrayLike, mass_per_length: ArrayLike, le
     v = check_nonnegative("chain_speed", chain_speed, "m/s")
     if not isinstance(modes, (int, np.integer)) or not 1 <= modes <= MAX_MODES:
         raise InputError(f"modes must be a whole number in [1, {MAX_MODES}], got {modes!r}")
-    if np.any(v >= c):
+    if np.asarray(v >= c).any():
         raise InfeasibleError(
             "chain_speed must be below the wave speed c = sqrt(S/(q cos β)) "
             "(0 <= v < c m/s): the moving string diverges at v >= c")

@@ -89,7 +89,7 @@ def _check_common(tension: ArrayLike, mass_per_length: ArrayLike, length_1: Arra
     b2 = check_range("angle_2", angle_2, 0.0, _HALF_PI, high_inclusive=False, unit="rad")
     m = check_nonnegative("mass", mass, "kg")
     c = np.asarray(stiffness, dtype=float)
-    if np.any(np.isnan(c)) or np.any(c < 0):
+    if np.isnan(c).any() or (c < 0).any():  # c an array
         raise InputError("stiffness must be non-negative (0 <= stiffness <= inf N/m; inf = fixed tensioner)")
     return s, q, l1, l2, b1, b2, m, c
 
